@@ -1,0 +1,1 @@
+//! cg-scene: the scene format (TOML) and file loading (OBJ, PNG).
