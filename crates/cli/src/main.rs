@@ -1,1 +1,2 @@
+//! `cg`: the kit's command line.
 fn main() {}

@@ -32,11 +32,7 @@ impl Lang {
             .iter()
             .find_map(|k| std::env::var(k).ok().filter(|v| !v.is_empty()))
             .map_or(Lang::En, |v| {
-                if v.to_ascii_lowercase().starts_with("ja") {
-                    Lang::Ja
-                } else {
-                    Lang::En
-                }
+                if v.to_ascii_lowercase().starts_with("ja") { Lang::Ja } else { Lang::En }
             })
     }
 }
@@ -52,7 +48,9 @@ impl fmt::Display for Lang {
 
 /// The error of parsing a [`Lang`] from text.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("unknown language {0:?}: use \"ja\" or \"en\" / 言語は \"ja\" か \"en\" で指定してください")]
+#[error(
+    "unknown language {0:?}: use \"ja\" or \"en\" / 言語は \"ja\" か \"en\" で指定してください"
+)]
 pub struct UnknownLang(pub String);
 
 impl FromStr for Lang {

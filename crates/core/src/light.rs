@@ -50,9 +50,15 @@ pub struct Attenuation {
 pub enum LightKind {
     /// 平行光源: light from one direction, infinitely far away (GL position `(x, y, z, 0)`).
     /// `to_light` points from the surface *towards* the light; it need not be unit length.
-    Directional { to_light: Vec3 },
+    Directional {
+        /// From the surface towards the light (GL_POSITION's xyz with w = 0).
+        to_light: Vec3,
+    },
     /// 点光源: light from a position, in all directions, attenuated with distance.
-    Point { position: Vec3 },
+    Point {
+        /// Where the light is.
+        position: Vec3,
+    },
     /// スポットライト光源: a point light that shines only inside a cone around `direction`.
     Spot {
         /// Where the light is.
@@ -70,7 +76,16 @@ pub enum LightKind {
     /// 面光源: a parallelogram `corner + s·edge_u + t·edge_v` (s, t in [0, 1]) approximated, as the
     /// lecture says, by a grid of `samples[0] × samples[1]` point lights, each carrying
     /// `1 / (samples[0]·samples[1])` of the light's colours.
-    Area { corner: Vec3, edge_u: Vec3, edge_v: Vec3, samples: [u32; 2] },
+    Area {
+        /// One corner of the parallelogram.
+        corner: Vec3,
+        /// The first edge from `corner`.
+        edge_u: Vec3,
+        /// The second edge from `corner`; the light shines to the side of `edge_u × edge_v`.
+        edge_v: Vec3,
+        /// Point lights along `edge_u` and `edge_v` (each ≥ 1).
+        samples: [u32; 2],
+    },
 }
 
 /// A light source in world space (the course sets the light after the camera, so it stays fixed in

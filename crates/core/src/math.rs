@@ -152,10 +152,17 @@ mod tests {
                 continue;
             }
             let n = try_normalize(v).unwrap_or_else(|| panic!("None for {v:?}"));
-            assert!((n.length() - 1.0).abs() <= 2.0 * f32::EPSILON, "|n| = {} for 1e{e}", n.length());
+            assert!(
+                (n.length() - 1.0).abs() <= 2.0 * f32::EPSILON,
+                "|n| = {} for 1e{e}",
+                n.length()
+            );
             // Below 1e-37 the input itself is subnormal and has lost its direction to rounding.
             if e >= -37 {
-                assert!(n.dot(Vec3::new(3.0, -4.0, 12.0) / 13.0) > 0.99999, "direction kept for 1e{e}");
+                assert!(
+                    n.dot(Vec3::new(3.0, -4.0, 12.0) / 13.0) > 0.99999,
+                    "direction kept for 1e{e}"
+                );
             }
         }
         assert_eq!(try_normalize(Vec3::ZERO), None);

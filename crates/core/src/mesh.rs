@@ -74,7 +74,12 @@ impl Mesh {
         for (face, f) in self.faces.iter().enumerate() {
             for (corner, &index) in f.iter().enumerate() {
                 if index as usize >= n {
-                    return Err(MeshError::IndexOutOfRange { face, corner, index, vertex_count: n });
+                    return Err(MeshError::IndexOutOfRange {
+                        face,
+                        corner,
+                        index,
+                        vertex_count: n,
+                    });
                 }
             }
         }
@@ -88,11 +93,32 @@ impl Mesh {
 pub enum MeshError {
     /// A face refers to a vertex that does not exist.
     #[error("face F{face} corner {corner} refers to vertex {index}, but the mesh has only {vertex_count} vertices (V0..V{})", vertex_count.saturating_sub(1))]
-    IndexOutOfRange { face: usize, corner: usize, index: u32, vertex_count: usize },
+    IndexOutOfRange {
+        /// The face (F-number).
+        face: usize,
+        /// Which corner of the face, 0..3.
+        corner: usize,
+        /// The index found there.
+        index: u32,
+        /// How many vertices the mesh has.
+        vertex_count: usize,
+    },
     /// An attribute vector does not have one entry per vertex.
     #[error("the mesh has {expected} vertices but {len} {attribute}")]
-    AttributeLength { attribute: &'static str, len: usize, expected: usize },
+    AttributeLength {
+        /// `normals`, `uvs` or `colors`.
+        attribute: &'static str,
+        /// How many entries it has.
+        len: usize,
+        /// How many it should have (the vertex count).
+        expected: usize,
+    },
     /// A position has an infinite or NaN coordinate.
     #[error("vertex V{vertex} has a non-finite position {position}")]
-    NonFinitePosition { vertex: usize, position: Vec3 },
+    NonFinitePosition {
+        /// The vertex (V-number).
+        vertex: usize,
+        /// Its position.
+        position: Vec3,
+    },
 }

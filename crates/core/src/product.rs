@@ -37,14 +37,35 @@ pub enum Factor {
     Translate([Param; 3]),
     /// R(angle) about an axis, angle in degrees, counter-clockwise looking down the axis towards
     /// the origin — glRotatef.
-    Rotate { axis: Axis, angle_deg: Param },
+    Rotate {
+        /// The axis.
+        axis: Axis,
+        /// The angle in degrees.
+        angle_deg: Param,
+    },
     /// S(x, y, z) — glScalef.
     Scale([Param; 3]),
     /// P(fovy, aspect, near, far) — gluPerspective, with depth mapped to `[0, 1]` (wgpu) or, when
     /// `gl_depth`, to `[-1, 1]` (OpenGL).
-    Perspective { fovy_deg: f32, aspect: f32, near: f32, far: f32, gl_depth: bool },
+    Perspective {
+        /// Vertical field of view in degrees.
+        fovy_deg: f32,
+        /// Width / height.
+        aspect: f32,
+        /// Near plane distance (> 0).
+        near: f32,
+        /// Far plane distance (> near).
+        far: f32,
+        /// `true`: OpenGL's `[-1, 1]` depth; `false`: wgpu's `[0, 1]`.
+        gl_depth: bool,
+    },
     /// Any matrix, printed by name (`M`, `V`, `LookAt`).
-    Matrix { name: String, matrix: Mat4 },
+    Matrix {
+        /// The name printed in products (`V`, `LookAt`).
+        name: String,
+        /// The matrix.
+        matrix: Mat4,
+    },
 }
 
 /// A product of named factors, left to right in program order.

@@ -30,7 +30,12 @@ pub enum NormalSource {
     Face,
     /// Vertex normals averaged from face normals with `weighting`; edges whose dihedral angle
     /// exceeds `crease_deg` stay hard (`None`: no crease splitting).
-    Vertex { weighting: crate::normals::Weighting, crease_deg: Option<f32> },
+    Vertex {
+        /// How face normals are weighted.
+        weighting: crate::normals::Weighting,
+        /// Dihedral angle in degrees above which an edge stays hard; `None`: never.
+        crease_deg: Option<f32>,
+    },
     /// The normals stored in the mesh (from an OBJ file, or set by a student).
     Given,
 }
@@ -41,7 +46,14 @@ pub enum Camera {
     /// The sample program's camera.
     Orbit(OrbitCamera),
     /// gluLookAt(eye, target, up).
-    LookAt { eye: Vec3, target: Vec3, up: Vec3 },
+    LookAt {
+        /// Where the eye is.
+        eye: Vec3,
+        /// The point looked at.
+        target: Vec3,
+        /// Which way is up (not parallel to `target − eye`).
+        up: Vec3,
+    },
 }
 
 /// gluPerspective's parameters; the aspect ratio comes from the viewport.

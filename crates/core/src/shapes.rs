@@ -20,7 +20,11 @@ pub struct ShapeError {
     pub expected: &'static str,
 }
 
-pub(crate) fn check_positive(shape: &'static str, parameter: &'static str, v: f32) -> Result<f32, ShapeError> {
+pub(crate) fn check_positive(
+    shape: &'static str,
+    parameter: &'static str,
+    v: f32,
+) -> Result<f32, ShapeError> {
     if v.is_finite() && v > 0.0 {
         Ok(v)
     } else {

@@ -25,5 +25,8 @@ pub enum StackError {
     Underflow,
     /// Push beyond the depth limit: usually a push without its pop inside a loop.
     #[error("GL_STACK_OVERFLOW: push beyond the maximum depth {max_depth}")]
-    Overflow { max_depth: usize },
+    Overflow {
+        /// The depth limit of this stack.
+        max_depth: usize,
+    },
 }

@@ -226,7 +226,11 @@ impl Inputs {
     /// A uniformly distributed unit vector (f64 sampling, rounded to f32 and renormalised).
     pub fn unit_vec3(&mut self) -> Vec3 {
         loop {
-            let v = DVec3::new(self.uniform(-1.0, 1.0), self.uniform(-1.0, 1.0), self.uniform(-1.0, 1.0));
+            let v = DVec3::new(
+                self.uniform(-1.0, 1.0),
+                self.uniform(-1.0, 1.0),
+                self.uniform(-1.0, 1.0),
+            );
             let l = v.length();
             if l > 1e-3 && l <= 1.0 {
                 return (v / l).as_vec3().normalize();
