@@ -117,9 +117,7 @@ macro_rules! assert_approx_eq {
         if !$crate::approx_eq(actual, expected, abs, rel) {
             let diff = $crate::Approx::max_abs_diff(actual, expected);
             let tol = abs + rel * $crate::Approx::max_abs(expected);
-            #[allow(unused_mut)]
-            let mut note = String::new();
-            $( note = format!(": {}", format!($($msg)+)); )?
+            let note: String = [$(format!(": {}", format!($($msg)+)))?].concat();
             panic!(
                 "assert_approx_eq failed{}\n  expected: {:?}\n    actual: {:?}\n      diff: {:e} (max component)\n tolerance: {:e} (abs {:e} + rel {:e})\n  at {}:{}",
                 note, expected, actual, diff, tol, abs, rel, file!(), line!()
