@@ -117,7 +117,7 @@ macro_rules! assert_approx_eq {
         if !$crate::approx_eq(actual, expected, abs, rel) {
             let diff = $crate::Approx::max_abs_diff(actual, expected);
             let tol = abs + rel * $crate::Approx::max_abs(expected);
-            let note: String = [$(format!(": {}", format!($($msg)+)))?].concat();
+            let note: String = String::new() $(+ &format!(": {}", format!($($msg)+)))?;
             panic!(
                 "assert_approx_eq failed{}\n  expected: {:?}\n    actual: {:?}\n      diff: {:e} (max component)\n tolerance: {:e} (abs {:e} + rel {:e})\n  at {}:{}",
                 note, expected, actual, diff, tol, abs, rel, file!(), line!()
