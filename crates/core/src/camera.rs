@@ -57,3 +57,18 @@ pub enum MouseButton {
     /// GLUT_RIGHT_BUTTON
     Right,
 }
+
+impl Default for CameraLimits {
+    /// The course's: pitch in [-90°, 0°], distance ≥ 2, 1° per pixel, 0.2 units per pixel, yaw on.
+    fn default() -> CameraLimits {
+        CameraLimits {
+            pitch_min_deg: -90.0,
+            pitch_max_deg: 0.0,
+            distance_min: 2.0,
+            distance_max: f32::INFINITY,
+            rotate_deg_per_px: 1.0,
+            zoom_per_px: 0.2,
+            yaw_enabled: true,
+        }
+    }
+}

@@ -133,3 +133,36 @@ pub enum LightModel {
         local_viewer: bool,
     },
 }
+
+impl Default for Material {
+    /// OpenGL's default material: k_a 0.2, k_d 0.8, k_s 0, n 0, no emission; and the kit's
+    /// defaults for the global terms: k_r = k_t = 0, η = 1.
+    fn default() -> Material {
+        Material {
+            ka: Rgb::splat(0.2),
+            kd: Rgb::splat(0.8),
+            ks: Rgb::ZERO,
+            shininess: 0.0,
+            kr: Rgb::ZERO,
+            kt: Rgb::ZERO,
+            eta: 1.0,
+            emission: Rgb::ZERO,
+        }
+    }
+}
+
+impl Material {
+    /// The material glColor3f gives under GL_COLOR_MATERIAL (GL_AMBIENT_AND_DIFFUSE): k_a = k_d =
+    /// `color`, everything else [`Material::default`].
+    #[must_use]
+    pub fn from_color(color: Rgb) -> Material {
+        Material { ka: color, kd: color, ..Material::default() }
+    }
+}
+
+impl Default for Attenuation {
+    /// No attenuation: kc = 1, kl = kq = 0 (OpenGL's default).
+    fn default() -> Attenuation {
+        Attenuation { constant: 1.0, linear: 0.0, quadratic: 0.0 }
+    }
+}

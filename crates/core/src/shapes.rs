@@ -142,3 +142,112 @@ mod tests {
         assert!(grid(4, -1.0).is_err());
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// The shapes below are centred on the origin with +Y as their axis, closed, manifold, welded
+// (no duplicated vertices) and counter-clockwise seen from outside.
+
+/// A box `size.x × size.y × size.z` centred on the origin: 8 vertices, 12 triangles.
+///
+/// # Errors
+/// A size component not finite and positive.
+pub fn cuboid(size: Vec3) -> Result<Mesh, ShapeError> {
+    let _ = size;
+    todo!("shapes: cuboid")
+}
+
+/// A UV sphere: `slices` meridians (≥ 3), `stacks` bands between the poles (≥ 2), one vertex at
+/// each pole.
+///
+/// # Errors
+/// `radius` not finite and positive, or counts out of range.
+pub fn uv_sphere(radius: f32, slices: u32, stacks: u32) -> Result<Mesh, ShapeError> {
+    let _ = (radius, slices, stacks);
+    todo!("shapes: uv_sphere")
+}
+
+/// An icosahedron subdivided `subdivisions` times (each time every triangle becomes four),
+/// vertices pushed onto the sphere: 20·4^s faces.
+///
+/// # Errors
+/// `radius` not finite and positive, or `subdivisions` above the documented limit.
+pub fn icosphere(radius: f32, subdivisions: u32) -> Result<Mesh, ShapeError> {
+    let _ = (radius, subdivisions);
+    todo!("shapes: icosphere")
+}
+
+/// A capped cylinder from y = −height/2 to +height/2 with `slices` ≥ 3 sides.
+///
+/// # Errors
+/// Non-positive or non-finite sizes, or `slices` out of range.
+pub fn cylinder(radius: f32, height: f32, slices: u32) -> Result<Mesh, ShapeError> {
+    let _ = (radius, height, slices);
+    todo!("shapes: cylinder")
+}
+
+/// A capped cone: base circle at y = −height/2, apex at +height/2, `slices` ≥ 3 sides.
+///
+/// # Errors
+/// Non-positive or non-finite sizes, or `slices` out of range.
+pub fn cone(radius: f32, height: f32, slices: u32) -> Result<Mesh, ShapeError> {
+    let _ = (radius, height, slices);
+    todo!("shapes: cone")
+}
+
+/// A torus around +Y in the XZ plane: ring radius `major`, tube radius `minor` (< `major`).
+///
+/// # Errors
+/// Non-positive or non-finite radii, `minor ≥ major`, or segment counts below 3.
+pub fn torus(
+    major: f32,
+    minor: f32,
+    major_segments: u32,
+    minor_segments: u32,
+) -> Result<Mesh, ShapeError> {
+    let _ = (major, minor, major_segments, minor_segments);
+    todo!("shapes: torus")
+}
+
+/// A right prism over a regular `sides`-gon (≥ 3) with circumradius `radius`, from y = −height/2
+/// to +height/2.
+///
+/// # Errors
+/// Non-positive or non-finite sizes, or `sides` out of range.
+pub fn prism(sides: u32, radius: f32, height: f32) -> Result<Mesh, ShapeError> {
+    let _ = (sides, radius, height);
+    todo!("shapes: prism")
+}
+
+/// A pyramid over a regular `sides`-gon (≥ 3) with circumradius `radius`: base at y = −height/2,
+/// apex at +height/2.
+///
+/// # Errors
+/// Non-positive or non-finite sizes, or `sides` out of range.
+pub fn pyramid(sides: u32, radius: f32, height: f32) -> Result<Mesh, ShapeError> {
+    let _ = (sides, radius, height);
+    todo!("shapes: pyramid")
+}
+
+/// A frustum (truncated pyramid) over a regular `sides`-gon: circumradius `bottom_radius` at
+/// y = −height/2 and `top_radius` at +height/2.
+///
+/// # Errors
+/// Non-positive or non-finite sizes, or `sides` out of range.
+pub fn frustum(
+    sides: u32,
+    bottom_radius: f32,
+    top_radius: f32,
+    height: f32,
+) -> Result<Mesh, ShapeError> {
+    let _ = (sides, bottom_radius, top_radius, height);
+    todo!("shapes: frustum")
+}
+
+/// A regular octahedron with its six vertices at distance `radius` on the axes.
+///
+/// # Errors
+/// `radius` not finite and positive.
+pub fn octahedron(radius: f32) -> Result<Mesh, ShapeError> {
+    let _ = radius;
+    todo!("shapes: octahedron")
+}
