@@ -1,2 +1,70 @@
-//! `cg`: the kit's command line.
-fn main() {}
+//! `cg` — the kit's command line.
+//!
+//! A thin front: parse the arguments, load what they name, call the libraries, print. Every
+//! command prints Japanese or English (`--lang ja|en`, default from `CG_LANG` / `LANG`).
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use cg_core::lang::Lang;
+use clap::{Parser, Subcommand};
+
+mod inspect;
+
+/// The course's sample scene, relative to the kit's root.
+const COURSE_SAMPLE: &str = "assets/scenes/course-sample.toml";
+
+#[derive(Parser)]
+#[command(
+    name = "cg",
+    version,
+    about = "Computer-graphics teaching kit (lecture 11: shading) / CG 演習キット（第11回 シェーディング）",
+    long_about = "Computer-graphics teaching kit (lecture 11: shading).\n\
+                  CG 演習キット（第11回 シェーディング）。\n\n\
+                  Without a command, inspects the course's sample scene.\n\
+                  コマンドを省略すると、授業のサンプルシーンを表示します。"
+)]
+struct Cli {
+    /// Language of the output: ja or en (default: from CG_LANG or LANG) / 出力の言語
+    #[arg(long, global = true, value_name = "ja|en")]
+    lang: Option<Lang>,
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Print a scene: mesh checks, vertex and face tables with face normals, model-view matrices
+    /// as named products / シーンの頂点・面・法線・変換行列を表示
+    Inspect(inspect::Args),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let lang = cli.lang.unwrap_or_else(Lang::from_env);
+    let result = match cli.command {
+        Some(Command::Inspect(args)) => inspect::run(&args, lang),
+        None => inspect::run(&inspect::Args::default(), lang),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("{}: {message}", lang.pick("エラー", "error"));
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// Resolves a path the user gave; for the kit's own default files, falls back to the kit's root
+/// when the command runs from another directory.
+fn kit_path(given: Option<&Path>, default: &str) -> PathBuf {
+    if let Some(p) = given {
+        return p.to_path_buf();
+    }
+    let here = PathBuf::from(default);
+    if here.exists() {
+        return here;
+    }
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    root.join(default)
+}

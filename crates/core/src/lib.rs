@@ -35,6 +35,7 @@ pub mod light;
 pub mod math;
 pub mod mesh;
 pub mod normals;
+pub mod notation;
 pub mod optics;
 pub mod product;
 pub mod scene;

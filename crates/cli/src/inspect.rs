@@ -1,0 +1,328 @@
+//! `cg inspect [SCENE]`: what the report's first assignment asks for, derived from a scene —
+//! for every object the mesh check, the vertex table, the face table with face normals, and the
+//! model-view matrix as a product of named factors.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+use cg_core::camera::OrbitCamera;
+use cg_core::lang::Lang;
+use cg_core::light::{LightKind, LightModel, Specular};
+use cg_core::mesh::Orientation;
+use cg_core::normals::face_normal;
+use cg_core::notation::{braces, decimal, face, tuple, vertex_line};
+use cg_core::product::{Factor, MatrixProduct};
+use cg_core::scene::{Camera, NormalSource, Object, Scene, Shading};
+
+/// Options of `cg inspect`.
+#[derive(clap::Args, Default)]
+pub struct Args {
+    /// The scene file (default: the course's sample scene) / シーンファイル
+    scene: Option<PathBuf>,
+    /// Only this object / このオブジェクトだけ表示
+    #[arg(long, value_name = "NAME")]
+    object: Option<String>,
+    /// Rows per table before "… more" (0 = all) / 表の最大行数（0 で全部）
+    #[arg(long, default_value_t = 24, value_name = "N")]
+    max_rows: usize,
+    /// Print every row of every table / 全行を表示
+    #[arg(long)]
+    all: bool,
+    /// Decimals of printed numbers / 小数点以下の桁数
+    #[arg(long, default_value_t = 4, value_name = "N")]
+    decimals: usize,
+}
+
+/// Loads the scene and prints the inspection.
+pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
+    let path = crate::kit_path(args.scene.as_deref(), crate::COURSE_SAMPLE);
+    let scene = cg_scene::load(&path).map_err(|e| e.describe(lang))?;
+    if let Some(name) = &args.object {
+        if !scene.objects.iter().any(|o| &o.name == name) {
+            let names: Vec<&str> = scene.objects.iter().map(|o| o.name.as_str()).collect();
+            return Err(format!(
+                "{} \"{name}\" ({}: {})",
+                lang.pick("オブジェクトがありません", "no object named"),
+                lang.pick("あるもの", "there are"),
+                names.join(", ")
+            ));
+        }
+    }
+    let rows = if args.all || args.max_rows == 0 { usize::MAX } else { args.max_rows };
+    let text = report(&scene, &path.display().to_string(), args.object.as_deref(), rows, args.decimals, lang)?;
+    print!("{text}");
+    Ok(())
+}
+
+/// The whole inspection as text.
+fn report(
+    scene: &Scene,
+    path: &str,
+    only: Option<&str>,
+    rows: usize,
+    decimals: usize,
+    lang: Lang,
+) -> Result<String, String> {
+    let t = |ja, en| lang.pick(ja, en);
+    let d = decimals;
+    let mut out = String::new();
+    let w = &mut out;
+    let _ = writeln!(w, "{} \"{}\" — {path}", t("シーン", "Scene"), scene.name);
+    let _ = writeln!(
+        w,
+        "  {}: {} × {}, {} {}",
+        t("ウィンドウ", "window"),
+        scene.width,
+        scene.height,
+        t("背景色", "clear colour"),
+        tuple(scene.clear_color, d)
+    );
+    let _ = writeln!(w, "  {}: {}", t("カメラ", "camera"), describe_camera(&scene.camera, d, lang));
+    let p = &scene.projection;
+    let _ = writeln!(
+        w,
+        "  {}: gluPerspective({}°, {}/{}, {}, {})",
+        t("投影", "projection"),
+        decimal(p.fovy_deg, d),
+        scene.width,
+        scene.height,
+        decimal(p.near, d),
+        decimal(p.far, d)
+    );
+    let _ = writeln!(w, "  {}: {}", t("光のモデル", "light model"), describe_model(scene.light_model, lang));
+    let _ = writeln!(w, "  {}: {}", t("環境光", "global ambient"), tuple(scene.global_ambient, d));
+    let shading = match scene.shading {
+        Shading::Flat => t("フラットシェーディング", "flat"),
+        Shading::Gouraud => t("グローシェーディング", "Gouraud"),
+        Shading::Phong => t("フォンシェーディング", "Phong"),
+    };
+    let cull = if scene.cull_back_faces {
+        t("裏面は描画しない", "back faces culled")
+    } else {
+        t("裏面も描画する", "back faces drawn")
+    };
+    let _ = writeln!(w, "  {}: {shading}, {cull}", t("シェーディング", "shading"));
+    let _ = writeln!(w, "  {}:", t("光源", "lights"));
+    for (i, light) in scene.lights.iter().enumerate() {
+        let _ = writeln!(
+            w,
+            "    L{i} {}  {} {}  {} {}  {} {}",
+            describe_light(&light.kind, d, lang),
+            t("環境光", "ambient"),
+            tuple(light.ambient, d),
+            t("拡散", "diffuse"),
+            tuple(light.diffuse, d),
+            t("鏡面", "specular"),
+            tuple(light.specular, d)
+        );
+    }
+    let view = view_product(&scene.camera)?;
+    let _ = writeln!(w, "  {}:", t("視野変換行列（ワールド座標系→カメラ座標系）", "view matrix (world → camera)"));
+    let _ = writeln!(w, "    V = {}", view.simplified());
+    let _ = writeln!(w, "      = {}", view.symbolic());
+
+    for (k, object) in scene.objects.iter().enumerate() {
+        if only.is_some_and(|name| name != object.name) {
+            continue;
+        }
+        let _ = writeln!(w);
+        object_report(w, k, scene.objects.len(), object, &view, rows, d, lang)?;
+    }
+    Ok(out)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn object_report(
+    w: &mut String,
+    k: usize,
+    count: usize,
+    object: &Object,
+    view: &MatrixProduct,
+    rows: usize,
+    d: usize,
+    lang: Lang,
+) -> Result<(), String> {
+    let t = |ja, en| lang.pick(ja, en);
+    let mesh = &object.mesh;
+    let normals = match object.normals {
+        NormalSource::Face => t("面の法線（面ごと）", "face normals (per face)").to_owned(),
+        NormalSource::Vertex { weighting, crease_deg } => format!(
+            "{} ({weighting:?}{})",
+            t("頂点の法線", "vertex normals"),
+            crease_deg.map_or(String::new(), |c| format!(", crease {}°", decimal(c, 1)))
+        ),
+        NormalSource::Given => t("ファイルの法線", "normals from the file").to_owned(),
+    };
+    let _ = writeln!(
+        w,
+        "{} {}/{count} \"{}\": {} {}, {} {}; {}",
+        t("オブジェクト", "Object"),
+        k + 1,
+        object.name,
+        mesh.vertex_count(),
+        t("頂点", "vertices"),
+        mesh.face_count(),
+        t("面", "faces"),
+        normals
+    );
+
+    // Mesh check
+    let v = mesh.validate();
+    let yes_no = |b: bool, ja_yes, en_yes, ja_no, en_no| if b { t(ja_yes, en_yes) } else { t(ja_no, en_no) };
+    let orientation = match v.orientation() {
+        Some(Orientation::Outward) => t("外向き", "outward"),
+        Some(Orientation::Inward) => t("内向き（全ての面が裏返し）", "INWARD (every face reversed)"),
+        None => t("判定なし（閉じていない）", "n/a (not closed)"),
+    };
+    let _ = writeln!(
+        w,
+        "  {}: {}, {}, {}, {} {}",
+        t("メッシュの検査", "mesh check"),
+        yes_no(v.is_closed(), "閉じている", "closed", "開いている", "open"),
+        yes_no(v.is_manifold(), "多様体", "manifold", "非多様体", "NOT manifold"),
+        yes_no(v.is_consistently_wound(), "向きが揃っている", "consistent winding", "向きが不揃い", "INCONSISTENT winding"),
+        t("面の向き", "orientation"),
+        orientation
+    );
+    let problems = v.problems();
+    if !problems.is_empty() {
+        let _ = writeln!(w, "  {} ({}):", t("指摘", "findings"), problems.len());
+        for p in problems.iter().take(rows) {
+            let _ = writeln!(w, "    - {}", p.describe(lang));
+        }
+        more(w, problems.len(), rows, lang);
+    }
+
+    // Vertex table
+    let _ = writeln!(w, "  {}:", t("頂点座標", "vertices"));
+    for (i, p) in mesh.positions.iter().enumerate().take(rows) {
+        let _ = writeln!(w, "    {}", vertex_line(i, *p, d));
+    }
+    more(w, mesh.vertex_count(), rows, lang);
+
+    // Face table with normals
+    let _ = writeln!(w, "  {}:", t("三角面と面の法線 normalise((Vb−Va)×(Vc−Va))", "faces and face normals normalise((Vb−Va)×(Vc−Va))"));
+    let width = (0..mesh.face_count().min(rows)).map(|f| face(f, mesh.faces[f]).chars().count()).max().unwrap_or(0);
+    for (f, &idx) in mesh.faces.iter().enumerate().take(rows) {
+        let label = face(f, idx);
+        let normal = if idx.iter().all(|&i| (i as usize) < mesh.vertex_count()) {
+            let [a, b, c] = mesh.triangle(f);
+            face_normal(a, b, c).map_or_else(|| t("縮退（法線なし）", "degenerate (no normal)").to_owned(), |n| braces(n, d))
+        } else {
+            t("頂点番号が範囲外", "index out of range").to_owned()
+        };
+        let _ = writeln!(w, "    {label:<width$}  {normal}");
+    }
+    more(w, mesh.face_count(), rows, lang);
+
+    // Model and model-view matrices
+    let model_view = view.concat(&object.transform);
+    let _ = writeln!(w, "  {}:", t("モデル変換（モデル座標系→ワールド座標系）", "model transform (model → world)"));
+    let _ = writeln!(w, "    M = {}", object.transform.simplified());
+    let _ = writeln!(w, "  {}:", t("モデルビュー行列（モデル座標系→カメラ座標系）", "model-view matrix (model → camera)"));
+    let _ = writeln!(w, "    V·M = {}", model_view.simplified());
+    let _ = writeln!(w, "        = {}", model_view.symbolic());
+    model_view.matrix().map_err(|e| format!("{}: {e}", object.name))?;
+    for line in model_view.simplified().matrices_text().lines() {
+        let _ = writeln!(w, "      {line}");
+    }
+    Ok(())
+}
+
+fn more(w: &mut String, total: usize, shown: usize, lang: Lang) {
+    if total > shown {
+        let _ = writeln!(
+            w,
+            "    … {} {}",
+            total - shown,
+            lang.pick("行省略（--all で全部表示）", "more (--all prints every row)")
+        );
+    }
+}
+
+fn view_product(camera: &Camera) -> Result<MatrixProduct, String> {
+    match camera {
+        Camera::Orbit(orbit) => Ok(orbit.view_product()),
+        Camera::LookAt { eye, target, up } => {
+            let matrix = cg_core::transform::look_at(*eye, *target, *up).map_err(|e| e.to_string())?;
+            Ok(MatrixProduct::identity().then(Factor::Matrix { name: "LookAt".into(), matrix }))
+        }
+    }
+}
+
+fn describe_camera(camera: &Camera, d: usize, lang: Lang) -> String {
+    match camera {
+        Camera::Orbit(OrbitCamera { yaw_deg, pitch_deg, distance, target, .. }) => format!(
+            "{} — {} {}, {} {}°, {} {}°, {} {}",
+            lang.pick("注視点のまわりを回るカメラ", "orbit"),
+            lang.pick("距離", "distance"),
+            decimal(*distance, d),
+            lang.pick("仰角 pitch", "pitch"),
+            decimal(*pitch_deg, d),
+            lang.pick("方位角 yaw", "yaw"),
+            decimal(*yaw_deg, d),
+            lang.pick("注視点", "target"),
+            tuple(*target, d)
+        ),
+        Camera::LookAt { eye, target, up } => format!(
+            "gluLookAt — eye {}, target {}, up {}",
+            tuple(*eye, d),
+            tuple(*target, d),
+            tuple(*up, d)
+        ),
+    }
+}
+
+fn describe_model(model: LightModel, lang: Lang) -> String {
+    match model {
+        LightModel::OpenGl { local_viewer } => format!(
+            "{}, {}",
+            lang.pick("OpenGL 1.x 固定機能と同じ式", "OpenGL 1.x fixed-function equation"),
+            if local_viewer {
+                lang.pick("視点は有限の距離", "local viewer")
+            } else {
+                lang.pick("視点は無限遠", "infinite viewer")
+            }
+        ),
+        LightModel::Lecture { specular, local_viewer } => format!(
+            "{} I = Ia·ka + Σ Ii·[kd (N·L) + ks ({})^n], {}",
+            lang.pick("講義の式", "the lecture's"),
+            match specular {
+                Specular::Phong => "R·V",
+                Specular::Blinn => "N·H",
+            },
+            if local_viewer {
+                lang.pick("視点は有限の距離", "local viewer")
+            } else {
+                lang.pick("視点は無限遠", "infinite viewer")
+            }
+        ),
+    }
+}
+
+fn describe_light(kind: &LightKind, d: usize, lang: Lang) -> String {
+    match kind {
+        LightKind::Directional { to_light } => {
+            format!("{} {}", lang.pick("平行光源 光源の方向", "directional, towards"), tuple(*to_light, d))
+        }
+        LightKind::Point { position } => format!("{} {}", lang.pick("点光源", "point at"), tuple(*position, d)),
+        LightKind::Spot { position, direction, cutoff_deg, exponent, .. } => format!(
+            "{} {} → {}, cutoff {}°, exponent {}",
+            lang.pick("スポットライト光源", "spot at"),
+            tuple(*position, d),
+            tuple(*direction, d),
+            decimal(*cutoff_deg, d),
+            decimal(*exponent, d)
+        ),
+        LightKind::Area { corner, edge_u, edge_v, samples } => format!(
+            "{} {} + s·{} + t·{}, {}×{} {}",
+            lang.pick("面光源", "area"),
+            tuple(*corner, d),
+            tuple(*edge_u, d),
+            tuple(*edge_v, d),
+            samples[0],
+            samples[1],
+            lang.pick("個の点光源", "point lights")
+        ),
+    }
+}

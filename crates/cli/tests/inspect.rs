@@ -1,0 +1,127 @@
+//! End-to-end tests of `cg inspect` on the course's sample scene: the numbers the lecture's first
+//! assignment asks for, derived independently here and found in the command's output.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn cg(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_cg"))
+        .args(args)
+        .current_dir(root())
+        .env_remove("CG_LANG")
+        .env_remove("LANG")
+        .env_remove("LC_ALL")
+        .env_remove("LC_MESSAGES")
+        .output()
+        .expect("the cg binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    assert!(
+        o.status.success(),
+        "cg failed ({}):\n{}",
+        o.status,
+        String::from_utf8_lossy(&o.stderr)
+    );
+    String::from_utf8(o.stdout.clone()).expect("utf-8 output")
+}
+
+/// The lecture's pyramid, from the slides (not from the kit).
+const V: [[f64; 3]; 5] =
+    [[0.0, 1.0, 0.0], [1.0, -0.8, 1.0], [1.0, -0.8, -1.0], [-1.0, -0.8, 1.0], [-1.0, -0.8, -1.0]];
+const F: [[usize; 3]; 6] = [[0, 3, 1], [0, 2, 4], [0, 1, 2], [0, 4, 3], [1, 3, 2], [4, 2, 3]];
+
+/// normalise((Vb − Va) × (Vc − Va)) in f64, printed with 4 decimals the lecture's way.
+fn expected_normal(f: [usize; 3]) -> String {
+    let [a, b, c] = f.map(|i| V[i]);
+    let e1 = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+    let e2 = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+    let n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
+    let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    let fmt = |x: f64| {
+        let mut s = format!("{:.4}", x / l);
+        while s.ends_with('0') && !s.ends_with(".0") {
+            s.pop();
+        }
+        if s == "-0.0" { "0.0".to_owned() } else { s }
+    };
+    format!("{{ {}, {}, {} }}", fmt(n[0]), fmt(n[1]), fmt(n[2]))
+}
+
+#[test]
+fn course_sample_prints_the_pyramid_tables_and_normals() {
+    let out = stdout(&cg(&["inspect", "assets/scenes/course-sample.toml", "--lang", "en"]));
+    // The issue's own number: F0's side normal (0, 0.4856, 0.8742).
+    assert_eq!(expected_normal(F[0]), "{ 0.0, 0.4856, 0.8742 }");
+    for (i, v) in V.iter().enumerate() {
+        let line = format!("V{i} ({:.1}, {:.1}, {:.1})", v[0], v[1], v[2]);
+        assert!(out.contains(&line), "vertex line {line:?} missing from:\n{out}");
+    }
+    for (i, f) in F.iter().enumerate() {
+        let label = format!("F{i} {{ V{}, V{}, V{} }}", f[0], f[1], f[2]);
+        let normal = expected_normal(*f);
+        let found = out.lines().any(|l| l.contains(&label) && l.trim_end().ends_with(&normal));
+        assert!(found, "face line {label} with normal {normal} missing from:\n{out}");
+    }
+}
+
+#[test]
+fn course_sample_prints_the_model_view_matrix_as_a_product() {
+    let out = stdout(&cg(&["inspect", "--object", "pyramid", "--lang", "en"]));
+    assert!(out.contains("T(0, 0, -15) · Rx(30°) · T(0, 1, 0)"), "numeric product missing:\n{out}");
+    assert!(out.contains("camera_pitch"), "symbolic product missing:\n{out}");
+    assert!(out.contains("mesh check: closed, manifold, consistent winding, orientation outward"), "{out}");
+    assert!(!out.contains("Object 1/2 \"ground\""), "--object filters:\n{out}");
+}
+
+#[test]
+fn the_main_job_without_arguments_inspects_the_course_sample() {
+    let out = stdout(&cg(&["--lang", "en"]));
+    assert!(out.contains("Scene \"course-sample\""), "{out}");
+    assert!(out.contains("ground") && out.contains("pyramid"), "{out}");
+    // The ground is an open grid: 10 × 10 squares have 40 boundary edges.
+    assert!(out.contains("open"), "{out}");
+}
+
+#[test]
+fn japanese_output_uses_the_lectures_terms() {
+    let out = stdout(&cg(&["inspect", "--lang", "ja"]));
+    for term in ["頂点座標", "三角面と面の法線", "モデルビュー行列", "グローシェーディング", "点光源"] {
+        assert!(out.contains(term), "{term} missing from:\n{out}");
+    }
+}
+
+#[test]
+fn a_missing_scene_is_a_clear_error_not_a_panic() {
+    let o = cg(&["inspect", "no/such/scene.toml", "--lang", "en"]);
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("no/such/scene.toml"), "the error names the file: {err}");
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+#[test]
+fn a_malformed_scene_names_the_line() {
+    let dir = std::env::temp_dir().join(format!("cg-inspect-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("bad.toml");
+    std::fs::write(&path, "format = 1\nname = \"bad\"\n[window]\nwidth = \"wide\"\n").unwrap();
+    let o = cg(&["inspect", path.to_str().unwrap(), "--lang", "en"]);
+    std::fs::remove_dir_all(&dir).ok();
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("bad.toml:4"), "the error names file and line 4: {err}");
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+#[test]
+fn an_unknown_object_lists_the_objects() {
+    let o = cg(&["inspect", "--object", "teapot", "--lang", "en"]);
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("teapot") && err.contains("pyramid"), "{err}");
+}

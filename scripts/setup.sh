@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs what the kit's tests need from the system, idempotently. Safe to run many times.
+# キットのテストに必要なシステムのパッケージを入れます（何度実行しても同じ結果になります）。
+set -euo pipefail
+
+need_cmd() {
+  if ! command -v "$1" >/dev/null 2>&1; then
+    echo "setup: '$1' not found. Install Rust with rustup (https://rustup.rs) first." >&2
+    echo "setup: '$1' が見つかりません。rustup (https://rustup.rs) で Rust を入れてください。" >&2
+    exit 1
+  fi
+}
+need_cmd cargo
+need_cmd rustc
+
+# Debian packages the tests use. Empty for now: the core library, the scene loader and the CLI
+# need nothing beyond cargo. Later parts add e.g. mesa-vulkan-drivers (wgpu on lavapipe) here.
+PACKAGES=()
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  if [ "$(id -u)" -ne 0 ]; then SUDO=sudo; else SUDO=; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y --no-install-recommends "${missing[@]}"
+fi
+
+# rustfmt and clippy for .ci/run (no-ops when present).
+if ! cargo fmt --version >/dev/null 2>&1 || ! cargo clippy --version >/dev/null 2>&1; then
+  rustup component add rustfmt clippy
+fi
