@@ -49,7 +49,14 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         }
     }
     let rows = if args.all || args.max_rows == 0 { usize::MAX } else { args.max_rows };
-    let text = report(&scene, &path.display().to_string(), args.object.as_deref(), rows, args.decimals, lang)?;
+    let text = report(
+        &scene,
+        &path.display().to_string(),
+        args.object.as_deref(),
+        rows,
+        args.decimals,
+        lang,
+    )?;
     print!("{text}");
     Ok(())
 }
@@ -89,7 +96,12 @@ fn report(
         decimal(p.near, d),
         decimal(p.far, d)
     );
-    let _ = writeln!(w, "  {}: {}", t("光のモデル", "light model"), describe_model(scene.light_model, lang));
+    let _ = writeln!(
+        w,
+        "  {}: {}",
+        t("光のモデル", "light model"),
+        describe_model(scene.light_model, lang)
+    );
     let _ = writeln!(w, "  {}: {}", t("環境光", "global ambient"), tuple(scene.global_ambient, d));
     let shading = match scene.shading {
         Shading::Flat => t("フラットシェーディング", "flat"),
@@ -117,7 +129,11 @@ fn report(
         );
     }
     let view = view_product(&scene.camera)?;
-    let _ = writeln!(w, "  {}:", t("視野変換行列（ワールド座標系→カメラ座標系）", "view matrix (world → camera)"));
+    let _ = writeln!(
+        w,
+        "  {}:",
+        t("視野変換行列（ワールド座標系→カメラ座標系）", "view matrix (world → camera)")
+    );
     let _ = writeln!(w, "    V = {}", view.simplified());
     let _ = writeln!(w, "      = {}", view.symbolic());
 
@@ -168,10 +184,13 @@ fn object_report(
 
     // Mesh check
     let v = mesh.validate();
-    let yes_no = |b: bool, ja_yes, en_yes, ja_no, en_no| if b { t(ja_yes, en_yes) } else { t(ja_no, en_no) };
+    let yes_no =
+        |b: bool, ja_yes, en_yes, ja_no, en_no| if b { t(ja_yes, en_yes) } else { t(ja_no, en_no) };
     let orientation = match v.orientation() {
         Some(Orientation::Outward) => t("外向き", "outward"),
-        Some(Orientation::Inward) => t("内向き（全ての面が裏返し）", "INWARD (every face reversed)"),
+        Some(Orientation::Inward) => {
+            t("内向き（全ての面が裏返し）", "INWARD (every face reversed)")
+        }
         None => t("判定なし（閉じていない）", "n/a (not closed)"),
     };
     let _ = writeln!(
@@ -180,7 +199,13 @@ fn object_report(
         t("メッシュの検査", "mesh check"),
         yes_no(v.is_closed(), "閉じている", "closed", "開いている", "open"),
         yes_no(v.is_manifold(), "多様体", "manifold", "非多様体", "NOT manifold"),
-        yes_no(v.is_consistently_wound(), "向きが揃っている", "consistent winding", "向きが不揃い", "INCONSISTENT winding"),
+        yes_no(
+            v.is_consistently_wound(),
+            "向きが揃っている",
+            "consistent winding",
+            "向きが不揃い",
+            "INCONSISTENT winding"
+        ),
         t("面の向き", "orientation"),
         orientation
     );
@@ -201,13 +226,26 @@ fn object_report(
     more(w, mesh.vertex_count(), rows, lang);
 
     // Face table with normals
-    let _ = writeln!(w, "  {}:", t("三角面と面の法線 normalise((Vb−Va)×(Vc−Va))", "faces and face normals normalise((Vb−Va)×(Vc−Va))"));
-    let width = (0..mesh.face_count().min(rows)).map(|f| face(f, mesh.faces[f]).chars().count()).max().unwrap_or(0);
+    let _ = writeln!(
+        w,
+        "  {}:",
+        t(
+            "三角面と面の法線 normalise((Vb−Va)×(Vc−Va))",
+            "faces and face normals normalise((Vb−Va)×(Vc−Va))"
+        )
+    );
+    let width = (0..mesh.face_count().min(rows))
+        .map(|f| face(f, mesh.faces[f]).chars().count())
+        .max()
+        .unwrap_or(0);
     for (f, &idx) in mesh.faces.iter().enumerate().take(rows) {
         let label = face(f, idx);
         let normal = if idx.iter().all(|&i| (i as usize) < mesh.vertex_count()) {
             let [a, b, c] = mesh.triangle(f);
-            face_normal(a, b, c).map_or_else(|| t("縮退（法線なし）", "degenerate (no normal)").to_owned(), |n| braces(n, d))
+            face_normal(a, b, c).map_or_else(
+                || t("縮退（法線なし）", "degenerate (no normal)").to_owned(),
+                |n| braces(n, d),
+            )
         } else {
             t("頂点番号が範囲外", "index out of range").to_owned()
         };
@@ -217,9 +255,17 @@ fn object_report(
 
     // Model and model-view matrices
     let model_view = view.concat(&object.transform);
-    let _ = writeln!(w, "  {}:", t("モデル変換（モデル座標系→ワールド座標系）", "model transform (model → world)"));
+    let _ = writeln!(
+        w,
+        "  {}:",
+        t("モデル変換（モデル座標系→ワールド座標系）", "model transform (model → world)")
+    );
     let _ = writeln!(w, "    M = {}", object.transform.simplified());
-    let _ = writeln!(w, "  {}:", t("モデルビュー行列（モデル座標系→カメラ座標系）", "model-view matrix (model → camera)"));
+    let _ = writeln!(
+        w,
+        "  {}:",
+        t("モデルビュー行列（モデル座標系→カメラ座標系）", "model-view matrix (model → camera)")
+    );
     let _ = writeln!(w, "    V·M = {}", model_view.simplified());
     let _ = writeln!(w, "        = {}", model_view.symbolic());
     model_view.matrix().map_err(|e| format!("{}: {e}", object.name))?;
@@ -244,7 +290,8 @@ fn view_product(camera: &Camera) -> Result<MatrixProduct, String> {
     match camera {
         Camera::Orbit(orbit) => Ok(orbit.view_product()),
         Camera::LookAt { eye, target, up } => {
-            let matrix = cg_core::transform::look_at(*eye, *target, *up).map_err(|e| e.to_string())?;
+            let matrix =
+                cg_core::transform::look_at(*eye, *target, *up).map_err(|e| e.to_string())?;
             Ok(MatrixProduct::identity().then(Factor::Matrix { name: "LookAt".into(), matrix }))
         }
     }
@@ -303,9 +350,15 @@ fn describe_model(model: LightModel, lang: Lang) -> String {
 fn describe_light(kind: &LightKind, d: usize, lang: Lang) -> String {
     match kind {
         LightKind::Directional { to_light } => {
-            format!("{} {}", lang.pick("平行光源 光源の方向", "directional, towards"), tuple(*to_light, d))
+            format!(
+                "{} {}",
+                lang.pick("平行光源 光源の方向", "directional, towards"),
+                tuple(*to_light, d)
+            )
         }
-        LightKind::Point { position } => format!("{} {}", lang.pick("点光源", "point at"), tuple(*position, d)),
+        LightKind::Point { position } => {
+            format!("{} {}", lang.pick("点光源", "point at"), tuple(*position, d))
+        }
         LightKind::Spot { position, direction, cutoff_deg, exponent, .. } => format!(
             "{} {} → {}, cutoff {}°, exponent {}",
             lang.pick("スポットライト光源", "spot at"),

@@ -40,7 +40,11 @@ fn expected_normal(f: [usize; 3]) -> String {
     let [a, b, c] = f.map(|i| V[i]);
     let e1 = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
     let e2 = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-    let n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
+    let n = [
+        e1[1] * e2[2] - e1[2] * e2[1],
+        e1[2] * e2[0] - e1[0] * e2[2],
+        e1[0] * e2[1] - e1[1] * e2[0],
+    ];
     let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
     let fmt = |x: f64| {
         let mut s = format!("{:.4}", x / l);
@@ -74,7 +78,10 @@ fn course_sample_prints_the_model_view_matrix_as_a_product() {
     let out = stdout(&cg(&["inspect", "--object", "pyramid", "--lang", "en"]));
     assert!(out.contains("T(0, 0, -15) · Rx(30°) · T(0, 1, 0)"), "numeric product missing:\n{out}");
     assert!(out.contains("camera_pitch"), "symbolic product missing:\n{out}");
-    assert!(out.contains("mesh check: closed, manifold, consistent winding, orientation outward"), "{out}");
+    assert!(
+        out.contains("mesh check: closed, manifold, consistent winding, orientation outward"),
+        "{out}"
+    );
     assert!(!out.contains("Object 1/2 \"ground\""), "--object filters:\n{out}");
 }
 
@@ -90,7 +97,9 @@ fn the_main_job_without_arguments_inspects_the_course_sample() {
 #[test]
 fn japanese_output_uses_the_lectures_terms() {
     let out = stdout(&cg(&["inspect", "--lang", "ja"]));
-    for term in ["頂点座標", "三角面と面の法線", "モデルビュー行列", "グローシェーディング", "点光源"] {
+    for term in
+        ["頂点座標", "三角面と面の法線", "モデルビュー行列", "グローシェーディング", "点光源"]
+    {
         assert!(out.contains(term), "{term} missing from:\n{out}");
     }
 }

@@ -76,6 +76,19 @@ impl Approx for glam::Vec4 {
     }
 }
 
+impl Approx for glam::DMat4 {
+    fn max_abs_diff(&self, other: &Self) -> f64 {
+        self.to_cols_array()
+            .iter()
+            .zip(other.to_cols_array().iter())
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, |m, d| if d.is_nan() || m.is_nan() { f64::NAN } else { m.max(d) })
+    }
+    fn max_abs(&self) -> f64 {
+        self.to_cols_array().iter().map(|a| a.abs()).fold(0.0, f64::max)
+    }
+}
+
 impl Approx for glam::Mat4 {
     fn max_abs_diff(&self, other: &Self) -> f64 {
         self.to_cols_array()
@@ -102,28 +115,43 @@ pub fn approx_eq<T: Approx>(actual: &T, expected: &T, abs: f64, rel: f64) -> boo
 /// use cg_testkit::assert_approx_eq;
 /// assert_approx_eq!(0.1_f32 + 0.2, 0.3, abs = 1e-7);
 /// assert_approx_eq!(1.0e6_f64 + 0.5, 1.0e6, rel = 1e-6, "offset {}", 0.5);
+/// assert_approx_eq!(2.0_f32, 2.0 + 1e-6, abs = 1e-6, rel = 1e-6, "both tolerances");
 /// ```
 #[macro_export]
 macro_rules! assert_approx_eq {
-    ($actual:expr, $expected:expr, abs = $abs:expr $(, rel = $rel:expr)? $(, $($msg:tt)+)?) => {
-        $crate::assert_approx_eq!(@impl $actual, $expected, $abs, 0.0 $(+ $rel)? $(, $($msg)+)?)
+    ($actual:expr, $expected:expr, abs = $abs:expr, rel = $rel:expr $(, $fmt:literal $(, $arg:expr)*)? $(,)?) => {
+        $crate::assert_approx_eq!(@impl $actual, $expected, $abs, $rel, [$($fmt $(, $arg)*)?])
     };
-    ($actual:expr, $expected:expr, rel = $rel:expr $(, $($msg:tt)+)?) => {
-        $crate::assert_approx_eq!(@impl $actual, $expected, 0.0, $rel $(, $($msg)+)?)
+    ($actual:expr, $expected:expr, abs = $abs:expr $(, $fmt:literal $(, $arg:expr)*)? $(,)?) => {
+        $crate::assert_approx_eq!(@impl $actual, $expected, $abs, 0.0, [$($fmt $(, $arg)*)?])
     };
-    (@impl $actual:expr, $expected:expr, $abs:expr, $rel:expr $(, $($msg:tt)+)?) => {{
+    ($actual:expr, $expected:expr, rel = $rel:expr $(, $fmt:literal $(, $arg:expr)*)? $(,)?) => {
+        $crate::assert_approx_eq!(@impl $actual, $expected, 0.0, $rel, [$($fmt $(, $arg)*)?])
+    };
+    (@impl $actual:expr, $expected:expr, $abs:expr, $rel:expr, [$($msg:tt)*]) => {{
         let (actual, expected) = (&$actual, &$expected);
         let (abs, rel): (f64, f64) = ($abs as f64, $rel as f64);
         if !$crate::approx_eq(actual, expected, abs, rel) {
             let diff = $crate::Approx::max_abs_diff(actual, expected);
             let tol = abs + rel * $crate::Approx::max_abs(expected);
-            let note: String = String::new() $(+ &format!(": {}", format!($($msg)+)))?;
+            let note: String = $crate::__note!($($msg)*);
             panic!(
                 "assert_approx_eq failed{}\n  expected: {:?}\n    actual: {:?}\n      diff: {:e} (max component)\n tolerance: {:e} (abs {:e} + rel {:e})\n  at {}:{}",
                 note, expected, actual, diff, tol, abs, rel, file!(), line!()
             );
         }
     }};
+}
+
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __note {
+    () => {
+        String::new()
+    };
+    ($($msg:tt)+) => {
+        format!(": {}", format!($($msg)+))
+    };
 }
 
 /// The distance between two finite f32 values in units in the last place (0 when equal; +0 and −0
@@ -262,6 +290,12 @@ mod tests {
     #[should_panic(expected = "expected")]
     fn assert_approx_eq_explains_failures() {
         assert_approx_eq!(1.5f32, 1.0, abs = 0.1, "a note {}", 1);
+    }
+
+    #[test]
+    #[should_panic(expected = "both tolerances 3")]
+    fn assert_approx_eq_takes_both_tolerances_and_a_message() {
+        assert_approx_eq!(1.5f32, 1.0, abs = 0.1, rel = 0.1, "both tolerances {}", 3);
     }
 
     #[test]
