@@ -23,9 +23,10 @@
 //! | スポット | [`spot_factor`] | `0` outside the cone, `max(−L·S, 0)^e` inside (× an optional smooth step) |
 //!
 //! The kit's rule for the specular power: a cosine `≤ 0` (or `N·L ≤ 0`) gives **no** specular,
-//! whatever the exponent — also for `n = 0`, where `0⁰ = 1` would light the whole back side.
-//! The cosine is clamped *before* `powf` (`(-0.5f32).powf(2.5)` is NaN). Mesa's fixed-function
-//! path does the same (it evaluates the power only when `N·H > 0`).
+//! whatever the exponent — also for `n = 0`, where `0⁰ = 1` would give full specular wherever
+//! the cosine is ≤ 0. The cosine is clamped *before* `powf` (`(-0.5f32).powf(2.5)` is NaN). The
+//! OpenGL specification leaves `0⁰` open; Mesa's fixed-function path follows the same rule (it
+//! evaluates the power only when `N·H > 0`).
 //!
 //! ## The two models of [`shade`]
 //!
@@ -53,10 +54,11 @@
 //! | per-light ambient `ka·Ia,ᵢ` | not attenuated, not spot-scaled (環境光は明るさ一定) | multiplied by `attᵢ·spotᵢ` |
 //! | spot cone | GL's cone and exponent × the smooth step of `inner_deg` | GL's cone and exponent; `inner_deg` ignored |
 //! | attenuation | on diffuse and specular | on ambient, diffuse and specular |
-//! | global ambient, emission, diffuse | the same | the same |
+//! | global ambient, emission, the diffuse formula | the same | the same |
 //!
 //! With Blinn specular, no attenuation (kc = 1, kl = kq = 0) and no spot lights, the two models
-//! give the same colour.
+//! give the same colour. In both, an area light is shaded as its [`Light::point_lights`] (which
+//! shine only to the front side of the parallelogram).
 //!
 //! Both take `V` from the caller: the unit vector from the point to the eye for a local viewer,
 //! the camera's backward axis (eye space `(0, 0, 1)`) for OpenGL's default infinite viewer

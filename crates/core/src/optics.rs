@@ -169,6 +169,10 @@ pub fn fresnel_dielectric(cos_i: f32, eta_i: f32, eta_t: f32) -> f32 {
 /// internal reflection and at the critical angle. At normal incidence it equals the exact value,
 /// `R₀`. Always in `[0, 1]`: NaN input gives 1. Computed in f32, except `cos θ_t` (f64).
 ///
+/// Error against the exact value for glass (η = 1.5), measured by the row 13 test: at most 0.036
+/// absolute and 23.3 % relative, near 85° going in and near 41.6° coming out (the same curve,
+/// since the exact F of θ_i inside equals F of θ_t outside).
+///
 /// See also [`fresnel_dielectric`].
 #[must_use]
 pub fn schlick(cos_i: f32, eta_i: f32, eta_t: f32) -> f32 {

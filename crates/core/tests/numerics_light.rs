@@ -152,6 +152,9 @@ fn row15_blinn_with_light_opposite_the_viewer_is_zero() {
     let (n, l) = (Vec3::Y, Vec3::Y);
     let v = -l;
     assert!((l + v).normalize().is_nan(), "premise: glam's normalize is NaN here");
+    // … and the usual pow(max(N·H, 0), n) turns that NaN into max(NaN, 0) = 0 (Rust's f32::max;
+    // NaN in many shader compilers), then 0⁰ = 1: full specular at n = 0 from an undefined H.
+    assert_eq!(n.dot((l + v).normalize()).max(0.0).powf(0.0), 1.0, "premise");
     for shininess in [0.0, 0.5, 1.0, 30.0] {
         let s = specular_blinn(WHITE, WHITE, n, l, v, shininess);
         assert_eq!(s, Rgb::ZERO, "n = {shininess}");
@@ -379,6 +382,10 @@ fn row17_spot_with_inner_equal_to_cutoff_is_a_hard_step() {
             assert!(inside_count > 29_000, "{inside_count}");
         }
     }
+    // Exactly on the rim, where the plain step is 0/0: a zero-width cone (cutoff = inner = 0°)
+    // lights exactly its axis (cos α = 1 = cos 0° in f64), with 1 and not NaN.
+    assert_eq!(spot_factor(Vec3::Y, -Vec3::Y, 0.0, 0.0, Some(0.0)), 1.0);
+    assert_eq!(spot_factor(unit(1e-3, 1.0, 0.0), -Vec3::Y, 0.0, 0.0, Some(0.0)), 0.0);
     // Just inside and just outside the rim: full and nothing.
     assert_eq!(spot_factor(l_at(30.0 - 1e-4), -Vec3::Y, 30.0, 0.0, Some(30.0)), 1.0);
     assert_eq!(spot_factor(l_at(30.0 + 1e-4), -Vec3::Y, 30.0, 0.0, Some(30.0)), 0.0);
