@@ -590,16 +590,23 @@ impl Mesh {
     /// Structural errors (an index out of range, an attribute of the wrong length, a NaN or
     /// infinite position) are all reported, and then the other checks are skipped; nothing
     /// panics. Faces with a repeated index are reported and take no part in the edge checks.
-    /// A T-junction is a vertex at a distance of at most [`T_JUNCTION_TOLERANCE`] times the
-    /// length of a boundary edge from it, away from both ends. The orientation comes from the
-    /// signed volume `Σ (a−c)·((b−c)×(d−c))/6` over the faces, in f64 relative to the vertex
-    /// centroid `c` (no cancellation far from the origin); it counts as zero when it is at most
-    /// 1e-9 of `Σ |(a−c)·((b−c)×(d−c))|/6`.
+    ///
+    /// T-junctions are searched on boundary edges (a vertex inside another face's edge always
+    /// leaves some): a vertex counts when it is within [`T_JUNCTION_TOLERANCE`] times the edge's
+    /// length of it (plus the f32 rounding of the positions) and farther than that from both ends.
+    ///
+    /// The orientation comes from the signed volume `Σ (a−o)·((b−o)×(c−o))/6` over the faces
+    /// `{a, b, c}` (divergence theorem), in f64 relative to the centroid `o` of the vertices, so
+    /// the terms stay small far from the origin. It is the whole mesh's: one part turned inside
+    /// out within a larger outward part is not noticed. The volume counts as zero when it is at
+    /// most 1e-9 of `Σ |(a−o)·((b−o)×(c−o))|/6` (faces back to back).
     ///
     /// An open mesh such as [`crate::shapes::grid`] legitimately has boundary edges: the caller
     /// decides whether [`Validation::is_closed`] matters.
     ///
-    /// O(n log n) in the number of faces (sorting); 100k faces take milliseconds in release.
+    /// O(n log n) in the number of faces (sorting edges; grid hashing for T-junctions): 100k
+    /// faces take tens of milliseconds in release, a 100k-face triangle soup (every edge open)
+    /// about 0.3 s.
     ///
     /// See also [`Mesh::check_indices`] (cheap, first structural error only) and
     /// [`Mesh::weld_by_position`] (fixes duplicated vertices).

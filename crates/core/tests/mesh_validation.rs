@@ -244,6 +244,47 @@ fn t_junction_far_from_the_origin_is_found() {
 }
 
 #[test]
+fn t_junctions_along_a_long_edge_are_all_found_among_many_candidates() {
+    // A 40×40 grid over x ∈ [−10, 0] meets a single quad {A, B, C, D} over x ∈ [0, 10] along
+    // x = 0: they share only the ends A, B of the quad's edge A–B (length 10), so the grid's 39
+    // other border vertices on x = 0 are T-junctions on it. Far away, 3000 tiny loose triangles
+    // add 9000 boundary edges: with that many candidates the search must use its grid (cells
+    // ~0.06 long), walking along A–B when it is turned diagonal, visiting its box when not.
+    let mut inputs = Inputs::seeded(0x7a0c);
+    let mut m = grid(40, 10.0).unwrap();
+    m.normals = None;
+    m.uvs = None;
+    m.positions.iter_mut().for_each(|p| p.x -= 5.0);
+    let seam: Vec<u32> = (0..=40).map(|j| j * 41 + 40).collect();
+    let (a, b) = (seam[0], seam[40]);
+    let (c, d) = (m.positions.len() as u32, m.positions.len() as u32 + 1);
+    m.positions.extend([Vec3::new(10.0, 0.0, 5.0), Vec3::new(10.0, 0.0, -5.0)]);
+    let quad = m.faces.len();
+    m.faces.extend([[a, b, c], [a, c, d]]);
+    for _ in 0..3000 {
+        let base = m.positions.len() as u32;
+        let centre = Vec3::new(40.0, 0.0, 0.0) + inputs.vec3_in_cube(10.0);
+        m.positions.extend((0..3).map(|_| centre + inputs.vec3_in_cube(0.03)));
+        m.faces.push([base, base + 1, base + 2]);
+    }
+    for turned in [false, true] {
+        let mut m = m.clone();
+        if turned {
+            let q = DQuat::from_axis_angle(DVec3::new(1.0, -2.0, 0.5).normalize(), 1.1);
+            m.positions.iter_mut().for_each(|p| *p = (q * p.as_dvec3()).as_vec3());
+        }
+        let v = m.validate();
+        let found: Vec<&Problem> =
+            v.problems().iter().filter(|p| matches!(p, Problem::TJunction { .. })).collect();
+        let expected: Vec<Problem> = seam[1..40]
+            .iter()
+            .map(|&vertex| Problem::TJunction { vertex, edge: [a, b], face: quad })
+            .collect();
+        assert_eq!(found, expected.iter().collect::<Vec<_>>(), "turned: {turned}");
+    }
+}
+
+#[test]
 fn fin_is_a_non_manifold_edge_naming_all_three_faces() {
     // F12 hangs off the cube's edge V0–V1 (shared by F1 and F4) into the outside.
     let mut m = cube();
