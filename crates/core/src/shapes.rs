@@ -2,6 +2,8 @@
 //! tori, prisms and pyramids with k sides. Every closed shape is counter-clockwise seen from
 //! outside and passes [`crate::mesh::Mesh::validate`].
 
+use std::collections::HashMap;
+
 use glam::{Vec2, Vec3};
 
 use crate::mesh::Mesh;
@@ -109,6 +111,411 @@ pub fn grid(divisions: u32, size: f32) -> Result<Mesh, ShapeError> {
     Ok(mesh)
 }
 
+// ---------------------------------------------------------------------------------------------
+// The shapes below are centred on the origin with +Y as their axis, closed, manifold, welded
+// (no duplicated vertices) and counter-clockwise seen from outside.
+//
+// A "ring" of n vertices at height y and radius r has vertex k at angle θ_k = 360°·k/n about +Y,
+// starting at +X: (r·cos θ_k, y, −r·sin θ_k). That is +X rotated by θ_k about +Y (glRotatef(θ_k,
+// 0, 1, 0)), so the ring runs counter-clockwise seen from above.
+
+/// The largest `slices`, `stacks`, `sides` and segment counts.
+const MAX_SEGMENTS: u32 = 4096;
+/// The largest icosphere subdivision level (20·4⁸ = 1 310 720 faces).
+const MAX_SUBDIVISIONS: u32 = 8;
+const SEGMENTS: &str = "an integer in 3..=4096";
+
+/// `(cos, sin)` of the angle `turn · numerator / denominator` turns, in f64, exact at multiples
+/// of a quarter turn (so a square's corners have exact zeros, not 6e-17).
+fn cos_sin_turn(numerator: u32, denominator: u32) -> (f64, f64) {
+    let (k, n) = (u64::from(numerator), u64::from(denominator));
+    if (4 * k) % n == 0 {
+        return match (4 * k / n) % 4 {
+            0 => (1.0, 0.0),
+            1 => (0.0, 1.0),
+            2 => (-1.0, 0.0),
+            _ => (0.0, -1.0),
+        };
+    }
+    let angle = std::f64::consts::TAU * k as f64 / n as f64;
+    (angle.cos(), angle.sin())
+}
+
+/// `p` rounded to f32, with −0 written as +0 (vertex tables should not print `-0.0`).
+fn no_negative_zero(p: glam::DVec3) -> Vec3 {
+    p.as_vec3() + Vec3::ZERO
+}
+
+/// Appends a ring of `n` vertices at height `y` and radius `r`, vertex k at 360°·k/n from +X.
+fn push_ring(positions: &mut Vec<Vec3>, n: u32, r: f64, y: f64) {
+    for k in 0..n {
+        let (c, s) = cos_sin_turn(k, n);
+        positions.push(no_negative_zero(glam::DVec3::new(r * c, y, -r * s)));
+    }
+}
+
+/// The side quads between ring `bottom..bottom+n` and ring `top..top+n`, each as the triangles
+/// `{B_k, B_k+1, T_k+1}` and `{B_k, T_k+1, T_k}` (k + 1 taken modulo n).
+fn push_band(faces: &mut Vec<[u32; 3]>, n: u32, bottom: u32, top: u32) {
+    for k in 0..n {
+        let k1 = (k + 1) % n;
+        faces.push([bottom + k, bottom + k1, top + k1]);
+        faces.push([bottom + k, top + k1, top + k]);
+    }
+}
+
+/// A closed solid over two rings of `n` vertices, `bottom` (V0..V(n−1)) and `top` (Vn..V(2n−1)),
+/// with side quads and caps fanned from each ring's first vertex.
+fn ring_solid(positions: Vec<Vec3>, n: u32) -> Mesh {
+    let mut faces = Vec::with_capacity(4 * n as usize - 4);
+    push_band(&mut faces, n, 0, n);
+    for k in 1..n - 1 {
+        faces.push([0, k + 1, k]);
+    }
+    for k in 1..n - 1 {
+        faces.push([n, n + k, n + k + 1]);
+    }
+    Mesh::new(positions, faces)
+}
+
+/// A box `size.x × size.y × size.z` centred on the origin (直方体; a "box" elsewhere): 8
+/// vertices, 12 triangles. With `(x, y, z) = size / 2`:
+///
+/// | vertex | position | | vertex | position |
+/// |---|---|---|---|---|
+/// | V0 | (−x, −y, +z) | | V4 | (−x, +y, +z) |
+/// | V1 | (+x, −y, +z) | | V5 | (+x, +y, +z) |
+/// | V2 | (+x, −y, −z) | | V6 | (+x, +y, −z) |
+/// | V3 | (−x, −y, −z) | | V7 | (−x, +y, −z) |
+///
+/// Bottom ring first (front-left, front-right, back-right, back-left: counter-clockwise seen
+/// from above), then the top ring above it. Faces: the sides F0–F7 (`{V0, V1, V5}`,
+/// `{V0, V5, V4}` at the front (+Z), then right, back, left), the bottom F8 `{V0, V2, V1}`, F9
+/// `{V0, V3, V2}` and the top F10 `{V4, V5, V6}`, F11 `{V4, V6, V7}`.
+///
+/// # Errors
+/// A size component not finite and positive.
+#[doc(alias = "box")]
+pub fn cuboid(size: Vec3) -> Result<Mesh, ShapeError> {
+    let x = check_positive("cuboid", "size.x", size.x)? / 2.0;
+    let y = check_positive("cuboid", "size.y", size.y)? / 2.0;
+    let z = check_positive("cuboid", "size.z", size.z)? / 2.0;
+    let corners = [(-x, z), (x, z), (x, -z), (-x, -z)];
+    let positions =
+        [-y, y].iter().flat_map(|&h| corners.map(|(cx, cz)| Vec3::new(cx, h, cz))).collect();
+    Ok(ring_solid(positions, 4))
+}
+
+/// A UV sphere (球) of radius `radius`: `slices` meridians and `stacks` bands from pole to pole,
+/// `slices·(stacks − 1) + 2` vertices and `2·slices·(stacks − 1)` triangles.
+///
+/// Numbering from the bottom up: V0 is the south pole (0, −r, 0); then `stacks − 1` rings of
+/// `slices` vertices, ring j = 1, 2, … at polar angle φ_j = 180°·j/stacks from the south pole
+/// (height −r·cos φ_j, radius r·sin φ_j), its vertex k at V(1 + (j−1)·slices + k) and at angle
+/// 360°·k/slices about +Y from +X; the last vertex is the north pole (0, r, 0). Faces from the
+/// bottom up: the `slices` triangles around the south pole, then two per quad band by band, then
+/// the `slices` triangles around the north pole.
+///
+/// # Errors
+/// `radius` not finite and positive; `slices` outside 3..=4096; `stacks` outside 2..=4096.
+pub fn uv_sphere(radius: f32, slices: u32, stacks: u32) -> Result<Mesh, ShapeError> {
+    let r = f64::from(check_positive("uv_sphere", "radius", radius)?);
+    let n = check_count("uv_sphere", "slices", slices, 3, MAX_SEGMENTS, SEGMENTS)?;
+    let m = check_count("uv_sphere", "stacks", stacks, 2, MAX_SEGMENTS, "an integer in 2..=4096")?;
+    let rings = m - 1;
+    let north = 1 + rings * n;
+    let mut positions = Vec::with_capacity(north as usize + 1);
+    positions.push(Vec3::new(0.0, -radius, 0.0));
+    for j in 1..m {
+        // φ_j = 180°·j/m = 360°·j/(2m) from the south pole.
+        let (c, s) = cos_sin_turn(j, 2 * m);
+        push_ring(&mut positions, n, r * s, -r * c);
+    }
+    positions.push(Vec3::new(0.0, radius, 0.0));
+
+    let ring = |j: u32| 1 + (j - 1) * n;
+    let mut faces = Vec::with_capacity(2 * (n * rings) as usize);
+    for k in 0..n {
+        faces.push([0, ring(1) + (k + 1) % n, ring(1) + k]);
+    }
+    for j in 1..rings {
+        push_band(&mut faces, n, ring(j), ring(j + 1));
+    }
+    for k in 0..n {
+        faces.push([ring(rings) + k, ring(rings) + (k + 1) % n, north]);
+    }
+    Ok(Mesh::new(positions, faces))
+}
+
+/// An icosahedron (正二十面体) subdivided `subdivisions` times, each time every triangle split
+/// into four by its edge midpoints, every vertex pushed onto the sphere of radius `radius`:
+/// `10·4^s + 2` vertices and `20·4^s` triangles.
+///
+/// Numbering: the icosahedron first — V0 the south pole (0, −r, 0); V1–V5 a ring at height
+/// −r/√5, radius 2r/√5, at 0°, 72°, … about +Y from +X; V6–V10 a ring at +r/√5 turned by 36°;
+/// V11 the north pole — then each level's edge midpoints in order of creation (face by face,
+/// edges `ab`, `bc`, `ca`). Face `{a, b, c}` becomes `{a, ab, ca}`, `{ab, b, bc}`, `{ca, bc, c}`,
+/// `{ab, bc, ca}`, in that order.
+///
+/// # Errors
+/// `radius` not finite and positive, or `subdivisions` above 8 (1 310 720 faces).
+pub fn icosphere(radius: f32, subdivisions: u32) -> Result<Mesh, ShapeError> {
+    use glam::DVec3;
+    let r = f64::from(check_positive("icosphere", "radius", radius)?);
+    let levels = check_count(
+        "icosphere",
+        "subdivisions",
+        subdivisions,
+        0,
+        MAX_SUBDIVISIONS,
+        "an integer in 0..=8",
+    )?;
+    let (h, rho) = (1.0 / 5f64.sqrt(), 2.0 / 5f64.sqrt());
+    let mut unit = vec![DVec3::NEG_Y];
+    for (y, phase) in [(-h, 0), (h, 1)] {
+        for k in 0..5 {
+            let (c, s) = cos_sin_turn(2 * k + phase, 10);
+            unit.push(DVec3::new(rho * c, y, -rho * s));
+        }
+    }
+    unit.push(DVec3::Y);
+    let (lower, upper) = (|k: u32| 1 + k % 5, |k: u32| 6 + k % 5);
+    let mut faces = Vec::with_capacity(20 << (2 * levels));
+    for k in 0..5 {
+        faces.push([0, lower(k + 1), lower(k)]);
+    }
+    for k in 0..5 {
+        faces.push([lower(k), lower(k + 1), upper(k)]);
+        faces.push([lower(k + 1), upper(k + 1), upper(k)]);
+    }
+    for k in 0..5 {
+        faces.push([upper(k), upper(k + 1), 11]);
+    }
+
+    for _ in 0..levels {
+        let mut midpoints: HashMap<(u32, u32), u32> = HashMap::with_capacity(faces.len() * 3 / 2);
+        let mut midpoint = |a: u32, b: u32, unit: &mut Vec<DVec3>| {
+            *midpoints.entry((a.min(b), a.max(b))).or_insert_with(|| {
+                unit.push((unit[a as usize] + unit[b as usize]).normalize());
+                (unit.len() - 1) as u32
+            })
+        };
+        let mut finer = Vec::with_capacity(faces.len() * 4);
+        for [a, b, c] in faces {
+            let ab = midpoint(a, b, &mut unit);
+            let bc = midpoint(b, c, &mut unit);
+            let ca = midpoint(c, a, &mut unit);
+            finer.extend([[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]]);
+        }
+        faces = finer;
+    }
+    Ok(Mesh::new(unit.iter().map(|&u| no_negative_zero(u * r)).collect(), faces))
+}
+
+/// A capped cylinder (円柱) of radius `radius` from y = −height/2 to +height/2 with `slices` sides:
+/// `2·slices + 2` vertices and `4·slices` triangles.
+///
+/// Numbering: V0..V(n−1) the bottom ring (vertex k at 360°·k/n about +Y from +X), Vn..V(2n−1)
+/// the top ring above it, V(2n) the bottom centre, V(2n+1) the top centre. Faces: the sides
+/// (`{Vk, Vk+1, Vn+k+1}`, `{Vk, Vn+k+1, Vn+k}` for k = 0..n), then the bottom cap fanned from
+/// its centre, then the top cap. (A [`prism`] has no centre vertices.)
+///
+/// # Errors
+/// `radius` or `height` not finite and positive, or `slices` outside 3..=4096.
+pub fn cylinder(radius: f32, height: f32, slices: u32) -> Result<Mesh, ShapeError> {
+    let r = f64::from(check_positive("cylinder", "radius", radius)?);
+    let y = f64::from(check_positive("cylinder", "height", height)?) / 2.0;
+    let n = check_count("cylinder", "slices", slices, 3, MAX_SEGMENTS, SEGMENTS)?;
+    let mut positions = Vec::with_capacity(2 * n as usize + 2);
+    push_ring(&mut positions, n, r, -y);
+    push_ring(&mut positions, n, r, y);
+    positions.push(Vec3::new(0.0, -y as f32, 0.0));
+    positions.push(Vec3::new(0.0, y as f32, 0.0));
+    let (bottom, top) = (2 * n, 2 * n + 1);
+    let mut faces = Vec::with_capacity(4 * n as usize);
+    push_band(&mut faces, n, 0, n);
+    for k in 0..n {
+        faces.push([bottom, (k + 1) % n, k]);
+    }
+    for k in 0..n {
+        faces.push([top, n + k, n + (k + 1) % n]);
+    }
+    Ok(Mesh::new(positions, faces))
+}
+
+/// A capped cone (円すい): base circle of radius `radius` at y = −height/2, apex at +height/2,
+/// `slices` sides: `slices + 2` vertices and `2·slices` triangles.
+///
+/// Numbering: V0..V(n−1) the base ring (vertex k at 360°·k/n about +Y from +X), Vn the base
+/// centre, V(n+1) the apex. Faces: the sides `{Vk, Vk+1, V(n+1)}` for k = 0..n, then the base
+/// fanned from its centre. (A [`pyramid`] has no centre vertex.)
+///
+/// # Errors
+/// `radius` or `height` not finite and positive, or `slices` outside 3..=4096.
+pub fn cone(radius: f32, height: f32, slices: u32) -> Result<Mesh, ShapeError> {
+    let r = f64::from(check_positive("cone", "radius", radius)?);
+    let y = check_positive("cone", "height", height)? / 2.0;
+    let n = check_count("cone", "slices", slices, 3, MAX_SEGMENTS, SEGMENTS)?;
+    let mut positions = Vec::with_capacity(n as usize + 2);
+    push_ring(&mut positions, n, r, f64::from(-y));
+    positions.push(Vec3::new(0.0, -y, 0.0));
+    positions.push(Vec3::new(0.0, y, 0.0));
+    let (centre, apex) = (n, n + 1);
+    let mut faces = Vec::with_capacity(2 * n as usize);
+    for k in 0..n {
+        faces.push([k, (k + 1) % n, apex]);
+    }
+    for k in 0..n {
+        faces.push([centre, (k + 1) % n, k]);
+    }
+    Ok(Mesh::new(positions, faces))
+}
+
+/// A torus (トーラス) around +Y in the XZ plane: ring radius `major`, tube radius `minor`
+/// (< `major`), `major_segments · minor_segments` vertices and twice as many triangles (genus 1:
+/// V − E + F = 0).
+///
+/// Numbering: vertex (i, j) is V(i·minor_segments + j): i around the ring, at θ_i =
+/// 360°·i/major_segments about +Y from +X; j around the tube, at φ_j = 360°·j/minor_segments from
+/// the outer equator, upward first. Its position is `c + minor·(cos φ_j·d + sin φ_j·Y)` with
+/// `d = (cos θ_i, 0, −sin θ_i)` and `c = major·d`. Quad (i, j) is the triangles
+/// `{(i,j), (i+1,j), (i+1,j+1)}` and `{(i,j), (i+1,j+1), (i,j+1)}`, ordered by i, then j.
+///
+/// # Errors
+/// A radius not finite and positive, `minor ≥ major`, or a segment count outside 3..=4096.
+pub fn torus(
+    major: f32,
+    minor: f32,
+    major_segments: u32,
+    minor_segments: u32,
+) -> Result<Mesh, ShapeError> {
+    let big = f64::from(check_positive("torus", "major", major)?);
+    let small = f64::from(check_positive("torus", "minor", minor)?);
+    if minor >= major {
+        return Err(ShapeError {
+            shape: "torus",
+            parameter: "minor",
+            value: minor.to_string(),
+            expected: "finite, > 0 and < major",
+        });
+    }
+    let n = check_count("torus", "major_segments", major_segments, 3, MAX_SEGMENTS, SEGMENTS)?;
+    let m = check_count("torus", "minor_segments", minor_segments, 3, MAX_SEGMENTS, SEGMENTS)?;
+    let mut positions = Vec::with_capacity((n * m) as usize);
+    for i in 0..n {
+        let (ct, st) = cos_sin_turn(i, n);
+        for j in 0..m {
+            let (cp, sp) = cos_sin_turn(j, m);
+            let rho = big + small * cp;
+            positions.push(no_negative_zero(glam::DVec3::new(rho * ct, small * sp, -rho * st)));
+        }
+    }
+    let at = |i: u32, j: u32| (i % n) * m + j % m;
+    let mut faces = Vec::with_capacity(2 * (n * m) as usize);
+    for i in 0..n {
+        for j in 0..m {
+            faces.push([at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
+            faces.push([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
+        }
+    }
+    Ok(Mesh::new(positions, faces))
+}
+
+/// A right prism (角柱) over a regular `sides`-gon with circumradius `radius`, from y = −height/2
+/// to +height/2: `2·sides` vertices and `4·sides − 4` triangles.
+///
+/// Numbering: V0..V(n−1) the bottom polygon (vertex k at 360°·k/n about +Y from +X, so V0 is
+/// at (radius, −height/2, 0)), Vn..V(2n−1) the top polygon above it. Faces: the sides
+/// (`{Vk, Vk+1, Vn+k+1}`, `{Vk, Vn+k+1, Vn+k}` for k = 0..n), then the bottom fanned from V0
+/// (`{V0, Vk+1, Vk}`, k = 1, …, n−2), then the top fanned from Vn (`{Vn, Vn+k, Vn+k+1}`, k = 1, …, n−2).
+///
+/// # Errors
+/// `radius` or `height` not finite and positive, or `sides` outside 3..=4096.
+pub fn prism(sides: u32, radius: f32, height: f32) -> Result<Mesh, ShapeError> {
+    frustum_named("prism", sides, radius, radius, height)
+}
+
+/// A pyramid (角すい) over a regular `sides`-gon with circumradius `radius`: base at
+/// y = −height/2, apex at +height/2, `sides + 1` vertices and `2·sides − 2` triangles.
+///
+/// Numbering: V0..V(n−1) the base polygon (vertex k at 360°·k/n about +Y from +X), Vn the apex
+/// (0, height/2, 0). Faces: the sides `{Vk, Vk+1, Vn}` for k = 0..n, then the base fanned from
+/// V0 (`{V0, Vk+1, Vk}`, k = 1, …, n−2). (The lecture's pyramid, [`lecture_pyramid`], numbers its
+/// apex V0 instead.)
+///
+/// # Errors
+/// `radius` or `height` not finite and positive, or `sides` outside 3..=4096.
+pub fn pyramid(sides: u32, radius: f32, height: f32) -> Result<Mesh, ShapeError> {
+    let r = f64::from(check_positive("pyramid", "radius", radius)?);
+    let y = check_positive("pyramid", "height", height)? / 2.0;
+    let n = check_count("pyramid", "sides", sides, 3, MAX_SEGMENTS, SEGMENTS)?;
+    let mut positions = Vec::with_capacity(n as usize + 1);
+    push_ring(&mut positions, n, r, f64::from(-y));
+    positions.push(Vec3::new(0.0, y, 0.0));
+    let mut faces = Vec::with_capacity(2 * n as usize - 2);
+    for k in 0..n {
+        faces.push([k, (k + 1) % n, n]);
+    }
+    for k in 1..n - 1 {
+        faces.push([0, k + 1, k]);
+    }
+    Ok(Mesh::new(positions, faces))
+}
+
+/// A frustum (角すい台, a truncated pyramid) over a regular `sides`-gon: circumradius
+/// `bottom_radius` at y = −height/2 and `top_radius` at +height/2, `2·sides` vertices and
+/// `4·sides − 4` triangles, numbered as a [`prism`].
+///
+/// # Errors
+/// A radius or `height` not finite and positive (a zero top radius is a [`pyramid`]), or
+/// `sides` outside 3..=4096.
+pub fn frustum(
+    sides: u32,
+    bottom_radius: f32,
+    top_radius: f32,
+    height: f32,
+) -> Result<Mesh, ShapeError> {
+    frustum_named("frustum", sides, bottom_radius, top_radius, height)
+}
+
+/// [`frustum`] and [`prism`], with the shape's name for errors.
+fn frustum_named(
+    shape: &'static str,
+    sides: u32,
+    bottom_radius: f32,
+    top_radius: f32,
+    height: f32,
+) -> Result<Mesh, ShapeError> {
+    let (bottom_name, top_name) =
+        if shape == "prism" { ("radius", "radius") } else { ("bottom_radius", "top_radius") };
+    let bottom = f64::from(check_positive(shape, bottom_name, bottom_radius)?);
+    let top = f64::from(check_positive(shape, top_name, top_radius)?);
+    let y = f64::from(check_positive(shape, "height", height)?) / 2.0;
+    let n = check_count(shape, "sides", sides, 3, MAX_SEGMENTS, SEGMENTS)?;
+    let mut positions = Vec::with_capacity(2 * n as usize);
+    push_ring(&mut positions, n, bottom, -y);
+    push_ring(&mut positions, n, top, y);
+    Ok(ring_solid(positions, n))
+}
+
+/// A regular octahedron (正八面体) with its six vertices at distance `radius` on the axes:
+/// V0 (0, −r, 0); the ring V1 (r, 0, 0), V2 (0, 0, −r), V3 (−r, 0, 0), V4 (0, 0, r); V5 (0, r, 0).
+/// Faces: the bottom F0 `{V0, V2, V1}`, F1 `{V0, V3, V2}`, F2 `{V0, V4, V3}`, F3 `{V0, V1, V4}`,
+/// then the top F4 `{V1, V2, V5}`, F5 `{V2, V3, V5}`, F6 `{V3, V4, V5}`, F7 `{V4, V1, V5}`.
+///
+/// # Errors
+/// `radius` not finite and positive.
+pub fn octahedron(radius: f32) -> Result<Mesh, ShapeError> {
+    let r = check_positive("octahedron", "radius", radius)?;
+    let mut positions = vec![Vec3::new(0.0, -r, 0.0)];
+    push_ring(&mut positions, 4, f64::from(r), 0.0);
+    positions.push(Vec3::new(0.0, r, 0.0));
+    let ring = |k: u32| 1 + k % 4;
+    let mut faces: Vec<[u32; 3]> = (0..4).map(|k| [0, ring(k + 1), ring(k)]).collect();
+    faces.extend((0..4).map(|k| [ring(k), ring(k + 1), 5]));
+    Ok(Mesh::new(positions, faces))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -141,113 +548,4 @@ mod tests {
         assert!(grid(4, f32::NAN).is_err());
         assert!(grid(4, -1.0).is_err());
     }
-}
-
-// ---------------------------------------------------------------------------------------------
-// The shapes below are centred on the origin with +Y as their axis, closed, manifold, welded
-// (no duplicated vertices) and counter-clockwise seen from outside.
-
-/// A box `size.x × size.y × size.z` centred on the origin: 8 vertices, 12 triangles.
-///
-/// # Errors
-/// A size component not finite and positive.
-pub fn cuboid(size: Vec3) -> Result<Mesh, ShapeError> {
-    let _ = size;
-    todo!("shapes: cuboid")
-}
-
-/// A UV sphere: `slices` meridians (≥ 3), `stacks` bands between the poles (≥ 2), one vertex at
-/// each pole.
-///
-/// # Errors
-/// `radius` not finite and positive, or counts out of range.
-pub fn uv_sphere(radius: f32, slices: u32, stacks: u32) -> Result<Mesh, ShapeError> {
-    let _ = (radius, slices, stacks);
-    todo!("shapes: uv_sphere")
-}
-
-/// An icosahedron subdivided `subdivisions` times (each time every triangle becomes four),
-/// vertices pushed onto the sphere: 20·4^s faces.
-///
-/// # Errors
-/// `radius` not finite and positive, or `subdivisions` above the documented limit.
-pub fn icosphere(radius: f32, subdivisions: u32) -> Result<Mesh, ShapeError> {
-    let _ = (radius, subdivisions);
-    todo!("shapes: icosphere")
-}
-
-/// A capped cylinder from y = −height/2 to +height/2 with `slices` ≥ 3 sides.
-///
-/// # Errors
-/// Non-positive or non-finite sizes, or `slices` out of range.
-pub fn cylinder(radius: f32, height: f32, slices: u32) -> Result<Mesh, ShapeError> {
-    let _ = (radius, height, slices);
-    todo!("shapes: cylinder")
-}
-
-/// A capped cone: base circle at y = −height/2, apex at +height/2, `slices` ≥ 3 sides.
-///
-/// # Errors
-/// Non-positive or non-finite sizes, or `slices` out of range.
-pub fn cone(radius: f32, height: f32, slices: u32) -> Result<Mesh, ShapeError> {
-    let _ = (radius, height, slices);
-    todo!("shapes: cone")
-}
-
-/// A torus around +Y in the XZ plane: ring radius `major`, tube radius `minor` (< `major`).
-///
-/// # Errors
-/// Non-positive or non-finite radii, `minor ≥ major`, or segment counts below 3.
-pub fn torus(
-    major: f32,
-    minor: f32,
-    major_segments: u32,
-    minor_segments: u32,
-) -> Result<Mesh, ShapeError> {
-    let _ = (major, minor, major_segments, minor_segments);
-    todo!("shapes: torus")
-}
-
-/// A right prism over a regular `sides`-gon (≥ 3) with circumradius `radius`, from y = −height/2
-/// to +height/2.
-///
-/// # Errors
-/// Non-positive or non-finite sizes, or `sides` out of range.
-pub fn prism(sides: u32, radius: f32, height: f32) -> Result<Mesh, ShapeError> {
-    let _ = (sides, radius, height);
-    todo!("shapes: prism")
-}
-
-/// A pyramid over a regular `sides`-gon (≥ 3) with circumradius `radius`: base at y = −height/2,
-/// apex at +height/2.
-///
-/// # Errors
-/// Non-positive or non-finite sizes, or `sides` out of range.
-pub fn pyramid(sides: u32, radius: f32, height: f32) -> Result<Mesh, ShapeError> {
-    let _ = (sides, radius, height);
-    todo!("shapes: pyramid")
-}
-
-/// A frustum (truncated pyramid) over a regular `sides`-gon: circumradius `bottom_radius` at
-/// y = −height/2 and `top_radius` at +height/2.
-///
-/// # Errors
-/// Non-positive or non-finite sizes, or `sides` out of range.
-pub fn frustum(
-    sides: u32,
-    bottom_radius: f32,
-    top_radius: f32,
-    height: f32,
-) -> Result<Mesh, ShapeError> {
-    let _ = (sides, bottom_radius, top_radius, height);
-    todo!("shapes: frustum")
-}
-
-/// A regular octahedron with its six vertices at distance `radius` on the axes.
-///
-/// # Errors
-/// `radius` not finite and positive.
-pub fn octahedron(radius: f32) -> Result<Mesh, ShapeError> {
-    let _ = radius;
-    todo!("shapes: octahedron")
 }
