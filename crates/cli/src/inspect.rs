@@ -11,7 +11,7 @@ use cg_core::light::{LightKind, LightModel, Specular};
 use cg_core::mesh::Orientation;
 use cg_core::normals::face_normal;
 use cg_core::notation::{braces, decimal, face, tuple, vertex_line};
-use cg_core::product::{Factor, MatrixProduct};
+use cg_core::product::MatrixProduct;
 use cg_core::scene::{Camera, NormalSource, Object, Scene, Shading};
 
 /// Options of `cg inspect`.
@@ -128,7 +128,7 @@ fn report(
             tuple(light.specular, d)
         );
     }
-    let view = view_product(&scene.camera)?;
+    let view = scene.view_product().map_err(|e| e.to_string())?;
     let _ = writeln!(
         w,
         "  {}:",
@@ -268,8 +268,8 @@ fn object_report(
     );
     let _ = writeln!(w, "    V·M = {}", model_view.simplified());
     let _ = writeln!(w, "        = {}", model_view.symbolic());
-    model_view.matrix().map_err(|e| format!("{}: {e}", object.name))?;
-    for line in model_view.simplified().matrices_text().lines() {
+    let matrices = model_view.simplified().matrices_text().map_err(|e| format!("{}: {e}", object.name))?;
+    for line in matrices.lines() {
         let _ = writeln!(w, "      {line}");
     }
     Ok(())
@@ -283,17 +283,6 @@ fn more(w: &mut String, total: usize, shown: usize, lang: Lang) {
             total - shown,
             lang.pick("行省略（--all で全部表示）", "more (--all prints every row)")
         );
-    }
-}
-
-fn view_product(camera: &Camera) -> Result<MatrixProduct, String> {
-    match camera {
-        Camera::Orbit(orbit) => Ok(orbit.view_product()),
-        Camera::LookAt { eye, target, up } => {
-            let matrix =
-                cg_core::transform::look_at(*eye, *target, *up).map_err(|e| e.to_string())?;
-            Ok(MatrixProduct::identity().then(Factor::Matrix { name: "LookAt".into(), matrix }))
-        }
     }
 }
 

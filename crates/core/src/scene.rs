@@ -1,14 +1,15 @@
 //! The in-memory scene (シーン): what every renderer draws. Pure data; the TOML format that
 //! describes it, and the loading of OBJ and PNG files, live in the `cg-scene` crate.
 
-use glam::Vec3;
+use glam::{Mat4, Vec3};
 
 use crate::Rgb;
 use crate::camera::OrbitCamera;
 use crate::light::{Light, LightModel, Material};
 use crate::mesh::Mesh;
-use crate::product::MatrixProduct;
+use crate::product::{Factor, MatrixProduct, format_number};
 use crate::texture::{Sampler, TexEnv, Texture};
+use crate::transform::{TransformError, look_at};
 
 /// Flat, Gouraud or Phong shading (フラット／グロー／フォンシェーディング).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -124,4 +125,133 @@ pub struct Scene {
     pub objects: Vec<Object>,
     /// Textures referred to by [`TextureUse::texture`].
     pub textures: Vec<Texture>,
+}
+
+impl Camera {
+    /// The view transform (ワールド座標系→カメラ座標系) as named factors: the orbit camera's
+    /// `T(0, 0, -camera_distance) · Rx(-camera_pitch) · Ry(-camera_yaw)`, or one `LookAt(…)` factor.
+    ///
+    /// # Errors
+    /// A look-at camera whose eye equals its target, whose up is parallel to the view direction,
+    /// or with non-finite input (see [`crate::transform::look_at`]).
+    pub fn view_product(&self) -> Result<MatrixProduct, TransformError> {
+        match self {
+            Camera::Orbit(orbit) => Ok(orbit.view_product()),
+            Camera::LookAt { eye, target, up } => {
+                let matrix = look_at(*eye, *target, *up)?;
+                let v = |v: &Vec3| {
+                    format!("{}, {}, {}", format_number(v.x), format_number(v.y), format_number(v.z))
+                };
+                let name = format!("LookAt(eye {}; target {}; up {})", v(eye), v(target), v(up));
+                Ok(MatrixProduct::identity().then(Factor::named(name, matrix)))
+            }
+        }
+    }
+
+    /// Where the eye is, in world space.
+    #[must_use]
+    pub fn eye_position(&self) -> Vec3 {
+        match self {
+            Camera::Orbit(orbit) => orbit.eye_position(),
+            Camera::LookAt { eye, .. } => *eye,
+        }
+    }
+}
+
+impl Scene {
+    /// Width / height of the image (gluPerspective's aspect). A zero height counts as 1.
+    #[must_use]
+    pub fn aspect(&self) -> f32 {
+        self.width as f32 / self.height.max(1) as f32
+    }
+
+    /// The projection as a factor, `P(fovy°, aspect, near, far)` with wgpu's `[0, 1]` depth.
+    #[must_use]
+    pub fn projection_factor(&self) -> Factor {
+        let p = &self.projection;
+        Factor::perspective(p.fovy_deg, self.aspect(), p.near, p.far)
+    }
+
+    /// The projection matrix (`[0, 1]` depth).
+    ///
+    /// # Errors
+    /// An invalid projection (near ≤ 0, far ≤ near, fovy outside (0°, 180°), zero aspect).
+    pub fn projection_matrix(&self) -> Result<Mat4, TransformError> {
+        self.projection_factor().matrix()
+    }
+
+    /// The view transform as named factors; see [`Camera::view_product`].
+    ///
+    /// # Errors
+    /// As [`Camera::view_product`].
+    pub fn view_product(&self) -> Result<MatrixProduct, TransformError> {
+        self.camera.view_product()
+    }
+
+    /// The model-view transform of `object` (モデル座標系→カメラ座標系): the view product followed
+    /// by the object's own factors.
+    ///
+    /// # Errors
+    /// As [`Camera::view_product`].
+    pub fn model_view_product(&self, object: &Object) -> Result<MatrixProduct, TransformError> {
+        Ok(self.view_product()?.concat(&object.transform))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::camera::OrbitCamera;
+    use crate::light::Material;
+    use crate::mesh::Mesh;
+    use crate::transform::{perspective, rotate_x_deg, translate};
+
+    fn scene(camera: Camera) -> Scene {
+        Scene {
+            name: "t".into(),
+            width: 640,
+            height: 480,
+            clear_color: Rgb::ZERO,
+            camera,
+            projection: Projection { fovy_deg: 45.0, near: 1.0, far: 500.0 },
+            light_model: LightModel::OpenGl { local_viewer: false },
+            global_ambient: Rgb::splat(0.2),
+            lights: vec![],
+            shading: Shading::Gouraud,
+            cull_back_faces: true,
+            objects: vec![Object {
+                name: "o".into(),
+                mesh: Mesh::default(),
+                normals: NormalSource::Face,
+                material: Material::default(),
+                transform: MatrixProduct::identity().then(Factor::translate(Vec3::Y)),
+                texture: None,
+            }],
+            textures: vec![],
+        }
+    }
+
+    #[test]
+    fn the_course_camera_gives_the_sample_programs_matrices() {
+        let s = scene(Camera::Orbit(OrbitCamera::course_sample()));
+        // glTranslatef(0, 0, -15); glRotatef(30, 1, 0, 0); glTranslatef(0, 1, 0)
+        let expected = translate(Vec3::new(0.0, 0.0, -15.0)) * rotate_x_deg(30.0) * translate(Vec3::Y);
+        let mv = s.model_view_product(&s.objects[0]).unwrap().matrix().unwrap();
+        assert!(mv.abs_diff_eq(expected, 1e-6), "{mv} vs {expected}");
+        let p = s.projection_matrix().unwrap();
+        assert_eq!(p, perspective(45.0, 640.0 / 480.0, 1.0, 500.0).unwrap());
+        assert!((s.aspect() - 4.0 / 3.0).abs() < 1e-7);
+    }
+
+    #[test]
+    fn a_look_at_camera_is_one_named_factor_and_fails_cleanly() {
+        let s = scene(Camera::LookAt { eye: Vec3::new(0.0, 0.0, 5.0), target: Vec3::ZERO, up: Vec3::Y });
+        let v = s.view_product().unwrap();
+        assert_eq!(v.factors.len(), 1);
+        assert!(v.symbolic().starts_with("LookAt(eye 0, 0, 5"), "{}", v.symbolic());
+        assert!(v.matrix().unwrap().abs_diff_eq(translate(Vec3::new(0.0, 0.0, -5.0)), 1e-6));
+        assert_eq!(s.camera.eye_position(), Vec3::new(0.0, 0.0, 5.0));
+        let bad = scene(Camera::LookAt { eye: Vec3::ONE, target: Vec3::ONE, up: Vec3::Y });
+        assert!(bad.view_product().is_err(), "eye == target is an error, not NaN");
+    }
 }
