@@ -268,7 +268,8 @@ fn object_report(
     );
     let _ = writeln!(w, "    V·M = {}", model_view.simplified());
     let _ = writeln!(w, "        = {}", model_view.symbolic());
-    let matrices = model_view.simplified().matrices_text().map_err(|e| format!("{}: {e}", object.name))?;
+    let matrices =
+        model_view.simplified().matrices_text().map_err(|e| format!("{}: {e}", object.name))?;
     for line in matrices.lines() {
         let _ = writeln!(w, "      {line}");
     }

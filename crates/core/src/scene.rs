@@ -140,7 +140,12 @@ impl Camera {
             Camera::LookAt { eye, target, up } => {
                 let matrix = look_at(*eye, *target, *up)?;
                 let v = |v: &Vec3| {
-                    format!("{}, {}, {}", format_number(v.x), format_number(v.y), format_number(v.z))
+                    format!(
+                        "{}, {}, {}",
+                        format_number(v.x),
+                        format_number(v.y),
+                        format_number(v.z)
+                    )
                 };
                 let name = format!("LookAt(eye {}; target {}; up {})", v(eye), v(target), v(up));
                 Ok(MatrixProduct::identity().then(Factor::named(name, matrix)))
@@ -235,7 +240,8 @@ mod tests {
     fn the_course_camera_gives_the_sample_programs_matrices() {
         let s = scene(Camera::Orbit(OrbitCamera::course_sample()));
         // glTranslatef(0, 0, -15); glRotatef(30, 1, 0, 0); glTranslatef(0, 1, 0)
-        let expected = translate(Vec3::new(0.0, 0.0, -15.0)) * rotate_x_deg(30.0) * translate(Vec3::Y);
+        let expected =
+            translate(Vec3::new(0.0, 0.0, -15.0)) * rotate_x_deg(30.0) * translate(Vec3::Y);
         let mv = s.model_view_product(&s.objects[0]).unwrap().matrix().unwrap();
         assert!(mv.abs_diff_eq(expected, 1e-6), "{mv} vs {expected}");
         let p = s.projection_matrix().unwrap();
@@ -245,7 +251,11 @@ mod tests {
 
     #[test]
     fn a_look_at_camera_is_one_named_factor_and_fails_cleanly() {
-        let s = scene(Camera::LookAt { eye: Vec3::new(0.0, 0.0, 5.0), target: Vec3::ZERO, up: Vec3::Y });
+        let s = scene(Camera::LookAt {
+            eye: Vec3::new(0.0, 0.0, 5.0),
+            target: Vec3::ZERO,
+            up: Vec3::Y,
+        });
         let v = s.view_product().unwrap();
         assert_eq!(v.factors.len(), 1);
         assert!(v.symbolic().starts_with("LookAt(eye 0, 0, 5"), "{}", v.symbolic());

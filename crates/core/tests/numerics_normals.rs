@@ -779,3 +779,83 @@ fn row19_normal_transform_mirror_nonuniform_singular() {
     assert_eq!(n.x, n.z);
     assert_eq!(transform_normal(m, n), None);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Row 3: duplicated seam vertices
+
+/// A UV sphere whose seam column is duplicated, as a textured sphere is stored: columns
+/// `0..=slices`, column `slices` a bit-exact copy of column 0 (a different index, the same
+/// position), one vertex at each pole. Rows `1..stacks`, ring vertex `(row, col)` at
+/// `1 + (row − 1)·(slices + 1) + col`.
+fn seam_sphere(slices: u32, stacks: u32) -> Mesh {
+    let cols = slices + 1;
+    let mut positions = vec![Vec3::Y];
+    for row in 1..stacks {
+        let theta = PI * f64::from(row) / f64::from(stacks);
+        for col in 0..cols {
+            let phi = 2.0 * PI * f64::from(col % slices) / f64::from(slices);
+            let p = DVec3::new(theta.sin() * phi.cos(), theta.cos(), -theta.sin() * phi.sin());
+            positions.push(p.as_vec3());
+        }
+    }
+    let south = positions.len() as u32;
+    positions.push(-Vec3::Y);
+    let ring = |row: u32, col: u32| 1 + (row - 1) * cols + col;
+    let mut faces = Vec::new();
+    for col in 0..slices {
+        faces.push([0, ring(1, col), ring(1, col + 1)]);
+        for row in 1..stacks - 1 {
+            let (a, b) = (ring(row, col), ring(row, col + 1));
+            let (c, d) = (ring(row + 1, col), ring(row + 1, col + 1));
+            faces.push([a, c, d]);
+            faces.push([a, d, b]);
+        }
+        faces.push([south, ring(stacks - 1, col + 1), ring(stacks - 1, col)]);
+    }
+    Mesh::new(positions, faces)
+}
+
+#[test]
+fn row03_duplicated_seam_vertices_crease_until_welded() {
+    let (slices, stacks) = (24, 12);
+    let mesh = seam_sphere(slices, stacks);
+    let cols = slices + 1;
+    let ring = |row: u32, col: u32| (1 + (row - 1) * cols + col) as usize;
+    // Premise: the two seam copies share their position exactly but not their index.
+    assert_eq!(mesh.positions[ring(3, 0)], mesh.positions[ring(3, slices)]);
+    assert!(!mesh.validate().is_closed(), "an unwelded seam leaves boundary edges");
+
+    for weighting in ALL {
+        let unwelded = vertex_normals(&mesh, weighting).normals;
+        let welded_mesh = mesh.weld_by_position(0.0);
+        assert_eq!(welded_mesh.removed_faces, Vec::<usize>::new());
+        assert!(welded_mesh.mesh.validate().is_clean(), "welding closes the sphere");
+        let welded = vertex_normals(&welded_mesh.mesh, weighting).normals;
+        for row in 1..stacks {
+            let (a, b) = (ring(row, 0), ring(row, slices));
+            // Without welding each copy sees only the faces on its side of the seam, so the two
+            // normals part by about one slice of azimuth, 360°/slices, scaled by the ring's
+            // radius sin θ (the normals' horizontal part). That is the visible crease.
+            let crease = angle(unwelded[a].as_dvec3(), unwelded[b].as_dvec3());
+            let theta = PI * f64::from(row) / f64::from(stacks);
+            let expected = 2.0 * PI / f64::from(slices) * theta.sin();
+            assert!(
+                (0.5 * expected..=1.5 * expected).contains(&crease),
+                "{weighting:?} row {row}: crease {:.3}° not near {:.3}°",
+                crease.to_degrees(),
+                expected.to_degrees()
+            );
+            // Welded, the seam vertex is like every other vertex of its ring: the mesh is symmetric
+            // under a half turn about Y (slices is even), which takes column slices/2 to the
+            // seam, so the two normals are equal after that rotation, up to f32 rounding.
+            let seam = welded_mesh.remap[a] as usize;
+            assert_eq!(seam, welded_mesh.remap[b] as usize, "both copies become one vertex");
+            let other = welded_mesh.remap[ring(row, slices / 2)] as usize;
+            let n = welded[other].as_dvec3();
+            let turned = DVec3::new(-n.x, n.y, -n.z);
+            let gap = angle(welded[seam].as_dvec3(), turned);
+            assert!(gap < 1e-6, "{weighting:?} row {row}: seam normal {gap} rad from its ring's");
+            assert!(gap < 1e-3 * crease, "welding removed the crease ({weighting:?} row {row})");
+        }
+    }
+}
