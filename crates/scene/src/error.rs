@@ -639,8 +639,8 @@ impl Found {
 }
 
 impl Rule {
-    /// Whether `x` satisfies a rule about one number (rules about vectors and other keys are
-    /// checked where they are used and accept every number here).
+    /// Whether `x` satisfies a rule about one number (rules about integers, vectors and other
+    /// keys are checked where they are used and accept every number here).
     pub(crate) fn accepts(self, x: f64) -> bool {
         match self {
             Rule::Finite => x.is_finite(),
@@ -649,7 +649,6 @@ impl Rule {
             Rule::Between { min, max } => (min..=max).contains(&x),
             Rule::Inside { min, max } => min < x && x < max,
             Rule::SpotCutoff => (x > 0.0 && x <= 90.0) || x == 180.0,
-            Rule::Integer { min, max } => x.fract() == 0.0 && min as f64 <= x && x <= max as f64,
             Rule::GreaterThan { value, .. } => x > value,
             Rule::NotAbove { value, .. } => x <= value,
             _ => true,

@@ -29,6 +29,12 @@ const MAX_WINDOW: i64 = 16_384;
 /// Most point lights along one edge of an area light.
 const MAX_AREA_SAMPLES: u32 = 256;
 
+/// The course's window: 640 × 640 pixels, glClearColor(0.5, 0.5, 0.8).
+const COURSE_WINDOW: (u32, u32, Rgb) = (640, 640, Rgb::new(0.5, 0.5, 0.8));
+
+/// The course's gluPerspective(45°, w/h, 1, 500).
+const COURSE_PROJECTION: Projection = Projection { fovy_deg: 45.0, near: 1.0, far: 500.0 };
+
 /// A scene read and checked, before meshes are built and files are loaded.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct SceneSpec {
@@ -104,7 +110,7 @@ pub(crate) fn read(src: &Source<'_>, base: &Path) -> Result<SceneSpec, SceneErro
 
     let (width, height, clear_color) = match root.get("window") {
         Some(v) => read_window(&v.table()?)?,
-        None => (640, 640, Rgb::new(0.5, 0.5, 0.8)),
+        None => COURSE_WINDOW,
     };
     let camera = match root.get("camera") {
         Some(v) => read_camera(&v.table()?)?,
@@ -112,7 +118,7 @@ pub(crate) fn read(src: &Source<'_>, base: &Path) -> Result<SceneSpec, SceneErro
     };
     let projection = match root.get("projection") {
         Some(v) => read_projection(&v.table()?)?,
-        None => Projection { fovy_deg: 45.0, near: 1.0, far: 500.0 },
+        None => COURSE_PROJECTION,
     };
     let render = match root.get("render") {
         Some(v) => read_render(&v.table()?)?,
@@ -219,10 +225,11 @@ fn read_window(t: &Table<'_>) -> Result<(u32, u32, Rgb), SceneError> {
     t.only(&["width", "height", "clear_color"])?;
     // In range 1..=16384, so the casts are exact.
     let side = |v: &Value<'_>| v.integer(1, MAX_WINDOW).map(|n| n as u32);
+    let (width, height, clear_color) = COURSE_WINDOW;
     Ok((
-        t.or("width", 640, side)?,
-        t.or("height", 640, side)?,
-        t.or("clear_color", Rgb::new(0.5, 0.5, 0.8), Value::color)?,
+        t.or("width", width, side)?,
+        t.or("height", height, side)?,
+        t.or("clear_color", clear_color, Value::color)?,
     ))
 }
 
@@ -255,46 +262,15 @@ fn read_camera(t: &Table<'_>) -> Result<Camera, SceneError> {
                 Some(v) => read_limits(&v.table()?)?,
                 None => course.limits,
             };
-            let within = |key: &str, default: f32, rule: Rule, min: f32, max: f32| {
-                let Some(v) = t.get(key) else {
-                    return if (min..=max).contains(&default) {
-                        Ok(default)
-                    } else {
-                        // The default lies outside limits the file set: say so at the limits.
-                        let min = f64::from(min);
-                        let max = f64::from(max);
-                        Err(t.error(ErrorKind::BadValue {
-                            rule: Rule::Between { min, max },
-                            got: format!("{key} = {default} (the default)"),
-                        }))
-                    };
-                };
-                let x = v.f32(rule)?;
-                if (min..=max).contains(&x) {
-                    Ok(x)
-                } else {
-                    Err(v.bad(Rule::Between { min: f64::from(min), max: f64::from(max) }))
-                }
-            };
-            let pitch_deg = within(
-                "pitch_deg",
-                course.pitch_deg,
-                Rule::Finite,
-                limits.pitch_min_deg,
-                limits.pitch_max_deg,
-            )?;
-            let distance = within(
-                "distance",
-                course.distance,
-                Rule::Positive,
-                limits.distance_min,
-                limits.distance_max,
-            )?;
+            let pitch_deg = t.or("pitch_deg", course.pitch_deg, |v| v.f32(Rule::Finite))?;
+            within_limits(t, "pitch_deg", pitch_deg, limits.pitch_min_deg, limits.pitch_max_deg)?;
+            let distance = t.or("distance", course.distance, |v| v.f32(Rule::Positive))?;
+            within_limits(t, "distance", distance, limits.distance_min, limits.distance_max)?;
             Ok(Camera::Orbit(OrbitCamera {
-                yaw_deg: wrap_degrees(t.or("yaw_deg", 0.0, |v| v.f32(Rule::Finite))?),
+                yaw_deg: wrap_degrees(t.or("yaw_deg", course.yaw_deg, |v| v.f32(Rule::Finite))?),
                 pitch_deg,
                 distance,
-                target: t.or("target", Vec3::ZERO, Value::vec3)?,
+                target: t.or("target", course.target, Value::vec3)?,
                 limits,
             }))
         }
@@ -317,6 +293,19 @@ fn read_camera(t: &Table<'_>) -> Result<Camera, SceneError> {
     }
 }
 
+/// `Ok` when `x`, the value of `key` in `t` (or its default), lies in `[min, max]`.
+fn within_limits(t: &Table<'_>, key: &str, x: f32, min: f32, max: f32) -> Result<(), SceneError> {
+    if (min..=max).contains(&x) {
+        return Ok(());
+    }
+    let rule = Rule::Between { min: f64::from(min), max: f64::from(max) };
+    Err(match t.get(key) {
+        Some(v) => v.bad(rule),
+        // The default lies outside limits the file set: say so at the camera table.
+        None => t.error(ErrorKind::BadValue { rule, got: format!("{key} = {x} (the default)") }),
+    })
+}
+
 fn read_limits(t: &Table<'_>) -> Result<CameraLimits, SceneError> {
     t.only(&[
         "pitch_min_deg",
@@ -332,13 +321,9 @@ fn read_limits(t: &Table<'_>) -> Result<CameraLimits, SceneError> {
     let pitch_min_deg = t.or("pitch_min_deg", d.pitch_min_deg, pitch)?;
     let pitch_max_deg = t.or("pitch_max_deg", d.pitch_max_deg, pitch)?;
     if pitch_min_deg > pitch_max_deg {
-        // One of the two is given: the defaults (−90, 0) are in order.
+        // The defaults are in order and every allowed maximum is ≥ −90, so `pitch_min_deg` is given.
         let rule = Rule::NotAbove { key: "pitch_max_deg", value: f64::from(pitch_max_deg) };
-        let v = t.get("pitch_min_deg").or_else(|| t.get("pitch_max_deg"));
-        return Err(v.map_or_else(
-            || t.error(ErrorKind::BadValue { rule, got: String::new() }),
-            |v| v.bad(rule),
-        ));
+        return Err(t.require("pitch_min_deg")?.bad(rule));
     }
     let distance_min = t.or("distance_min", d.distance_min, |v| v.f32(Rule::Positive))?;
     // May be `inf` (no limit, the default); with the default, it exceeds every finite minimum.
@@ -359,9 +344,11 @@ fn read_limits(t: &Table<'_>) -> Result<CameraLimits, SceneError> {
 
 fn read_projection(t: &Table<'_>) -> Result<Projection, SceneError> {
     t.only(&["fovy_deg", "near", "far"])?;
-    let fovy_deg = t.or("fovy_deg", 45.0, |v| v.f32(Rule::Inside { min: 0.0, max: 180.0 }))?;
-    let near = t.or("near", 1.0, |v| v.f32(Rule::Positive))?;
-    let far = t.or("far", 500.0, |v| {
+    let d = COURSE_PROJECTION;
+    let fovy_deg =
+        t.or("fovy_deg", d.fovy_deg, |v| v.f32(Rule::Inside { min: 0.0, max: 180.0 }))?;
+    let near = t.or("near", d.near, |v| v.f32(Rule::Positive))?;
+    let far = t.or("far", d.far, |v| {
         let far = v.f32(Rule::Positive)?;
         if far > near {
             Ok(far)
@@ -462,7 +449,7 @@ fn read_light(t: &Table<'_>) -> Result<Light, SceneError> {
         ("spot", LightType::Spot),
         ("area", LightType::Area),
     ])?;
-    let colors = ["kind", "ambient", "diffuse", "specular"];
+    let common = ["kind", "ambient", "diffuse", "specular"];
     let keys: &[&str] = match kind {
         LightType::Directional => &["to_light"],
         LightType::Point => &["position", "attenuation"],
@@ -471,7 +458,7 @@ fn read_light(t: &Table<'_>) -> Result<Light, SceneError> {
         }
         LightType::Area => &["corner", "edge_u", "edge_v", "samples", "attenuation"],
     };
-    t.only(&[&colors[..], keys].concat())?;
+    t.only(&[&common[..], keys].concat())?;
     let kind = match kind {
         LightType::Directional => {
             LightKind::Directional { to_light: t.require("to_light")?.direction()? }

@@ -206,6 +206,35 @@ shape = { kind = "uv_sphere", radius = -1, slices = 16, stacks = 8 }
             Rule::Between { min: -90.0, max: 0.0 },
         ),
         ("format = 1\n[camera]\ndistance = 1e39\n", 3, "1e39", "camera.distance", Rule::Positive),
+        // Limits that leave out the default pitch (−30°) are reported at the camera table.
+        (
+            "format = 1\n[camera]\nlimits = { pitch_max_deg = -40 }\n",
+            2,
+            "[camera]",
+            "camera",
+            Rule::Between { min: -90.0, max: -40.0 },
+        ),
+        (
+            "format = 1\n[camera]\nlimits = { pitch_min_deg = 20, pitch_max_deg = 10 }\n",
+            3,
+            "20",
+            "camera.limits.pitch_min_deg",
+            Rule::NotAbove { key: "pitch_max_deg", value: 10.0 },
+        ),
+        (
+            "format = 1\n[camera]\nlimits = { distance_min = 5, distance_max = 3 }\n",
+            3,
+            "3 }",
+            "camera.limits.distance_max",
+            Rule::GreaterThan { key: "distance_min", value: 5.0 },
+        ),
+        (
+            "format = 1\n[projection]\nnear = 600\n",
+            3,
+            "600",
+            "projection.near",
+            Rule::Inside { min: 0.0, max: 500.0 },
+        ),
         (
             "format = 1\n[[lights]]\nkind = \"directional\"\nto_light = [0, 0, 0]\n",
             4,
