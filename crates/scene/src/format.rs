@@ -1,0 +1,719 @@
+//! The scene format, version 1 (docs/scene-format.md): reading a TOML document into a
+//! [`SceneSpec`] (every value checked, nothing loaded yet), then building the [`Scene`] (shape
+//! meshes made, OBJ and PNG files loaded).
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use cg_core::Rgb;
+use cg_core::camera::{CameraLimits, OrbitCamera};
+use cg_core::glam::{DVec3, Vec3};
+use cg_core::light::{Attenuation, Light, LightKind, LightModel, Material, Specular};
+use cg_core::math::{try_normalize_f64, wrap_degrees};
+use cg_core::normals::Weighting;
+use cg_core::product::{Axis, Factor, MatrixProduct, Param};
+use cg_core::scene::{Camera, NormalSource, Object, Projection, Scene, Shading, TextureUse};
+use cg_core::texture::{Filter, Sampler, TexEnv, Wrap};
+
+use crate::error::{ErrorKind, Expected, Rule, SceneError};
+use crate::reader::{At, Source, Table, Value};
+use crate::shape::ShapeSpec;
+use crate::{load_obj, load_texture};
+
+/// The only version of the format this kit reads.
+pub(crate) const FORMAT_VERSION: i64 = 1;
+
+/// Largest window side accepted, in pixels.
+const MAX_WINDOW: i64 = 16_384;
+
+/// Most point lights along one edge of an area light.
+const MAX_AREA_SAMPLES: u32 = 256;
+
+/// The course's window: 640 × 640 pixels, glClearColor(0.5, 0.5, 0.8).
+const COURSE_WINDOW: (u32, u32, Rgb) = (640, 640, Rgb::new(0.5, 0.5, 0.8));
+
+/// The course's gluPerspective(45°, w/h, 1, 500).
+const COURSE_PROJECTION: Projection = Projection { fovy_deg: 45.0, near: 1.0, far: 500.0 };
+
+/// A scene read and checked, before meshes are built and files are loaded.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct SceneSpec {
+    /// Everything but `objects` and `textures`, which stay empty until [`SceneSpec::build`].
+    pub scene: Scene,
+    /// The objects, in file order.
+    pub objects: Vec<ObjectSpec>,
+}
+
+/// One `[[objects]]` entry, checked.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct ObjectSpec {
+    pub name: String,
+    pub geometry: Geometry,
+    pub normals: NormalSource,
+    /// Where `normals` is (or the object, when it is left out).
+    pub normals_at: At,
+    pub material: Material,
+    pub transform: MatrixProduct,
+    pub texture: Option<TextureSpec>,
+}
+
+/// Where an object's mesh comes from.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Geometry {
+    /// A built-in shape; `At` is the shape table.
+    Shape(ShapeSpec, At),
+    /// An OBJ file, resolved against the scene's folder; `At` is the `mesh` value.
+    Obj(PathBuf, At),
+}
+
+/// `texture = { image = "...", ... }`, checked.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct TextureSpec {
+    /// The PNG file, resolved against the scene's folder.
+    pub image: PathBuf,
+    /// Where `image` is.
+    pub image_at: At,
+    /// Where the texture table is.
+    pub at: At,
+    pub sampler: Sampler,
+    pub env: TexEnv,
+}
+
+/// Reads and checks a whole document. `base` is the folder relative file names start from.
+pub(crate) fn read(src: &Source<'_>, base: &Path) -> Result<SceneSpec, SceneError> {
+    let doc = toml::de::DeTable::parse(src.text).map_err(|e| {
+        let span = e.span().unwrap_or(0..0);
+        src.error(&span, "", ErrorKind::Syntax { message: e.message().to_owned() })
+    })?;
+    let root = Table::root(src, &doc);
+
+    // The version first: a newer file may have keys this reader does not know.
+    let format = root.require("format")?;
+    if format.integer(i64::MIN, i64::MAX)? != FORMAT_VERSION {
+        return Err(format.error(ErrorKind::UnsupportedFormat { found: format.written() }));
+    }
+    root.only(&[
+        "format",
+        "name",
+        "window",
+        "camera",
+        "projection",
+        "render",
+        "lights",
+        "materials",
+        "objects",
+    ])?;
+
+    let default_name =
+        src.file.file_stem().map_or_else(String::new, |s| s.to_string_lossy().into());
+    let name = root.or("name", default_name, |v| v.str().map(str::to_owned))?;
+
+    let (width, height, clear_color) = match root.get("window") {
+        Some(v) => read_window(&v.table()?)?,
+        None => COURSE_WINDOW,
+    };
+    let camera = match root.get("camera") {
+        Some(v) => read_camera(&v.table()?)?,
+        None => Camera::Orbit(course_camera()),
+    };
+    let projection = match root.get("projection") {
+        Some(v) => read_projection(&v.table()?)?,
+        None => COURSE_PROJECTION,
+    };
+    let render = match root.get("render") {
+        Some(v) => read_render(&v.table()?)?,
+        None => Render::default(),
+    };
+    let lights = match root.get("lights") {
+        Some(v) => tables(&v)?.iter().map(read_light).collect::<Result<_, _>>()?,
+        None => Vec::new(),
+    };
+    let materials = match root.get("materials") {
+        Some(v) => read_materials(&v.table()?)?,
+        None => HashMap::new(),
+    };
+    let mut objects = Vec::new();
+    let mut first_line: HashMap<String, usize> = HashMap::new();
+    if let Some(v) = root.get("objects") {
+        for table in tables(&v)? {
+            let object = read_object(&table, &materials, base)?;
+            let line = src.position(table.at().span.start).line;
+            if let Some(&first_line) = first_line.get(&object.name) {
+                let name = table.require("name")?;
+                return Err(name.error(ErrorKind::DuplicateName { name: object.name, first_line }));
+            }
+            first_line.insert(object.name.clone(), line);
+            objects.push(object);
+        }
+    }
+
+    let scene = Scene {
+        name,
+        width,
+        height,
+        clear_color,
+        camera,
+        projection,
+        light_model: render.light_model,
+        global_ambient: render.global_ambient,
+        lights,
+        shading: render.shading,
+        cull_back_faces: render.cull_back_faces,
+        objects: Vec::new(),
+        textures: Vec::new(),
+    };
+    Ok(SceneSpec { scene, objects })
+}
+
+impl SceneSpec {
+    /// Builds every mesh and loads every file the objects name; each texture file is loaded once
+    /// however many objects use it.
+    pub(crate) fn build(self, src: &Source<'_>) -> Result<Scene, SceneError> {
+        let mut scene = self.scene;
+        let mut texture_index: HashMap<PathBuf, usize> = HashMap::new();
+        for spec in self.objects {
+            let mesh = match &spec.geometry {
+                Geometry::Shape(shape, at) => shape.mesh().map_err(|e| {
+                    let key = format!("{}.{}", at.key, e.parameter);
+                    src.error(&at.span, &key, ErrorKind::Shape(e))
+                })?,
+                Geometry::Obj(path, at) => {
+                    load_obj(path).map_err(|e| at.error(src, ErrorKind::File(Box::new(e))))?
+                }
+            };
+            if spec.normals == NormalSource::Given && mesh.normals.is_none() {
+                return Err(spec.normals_at.error(src, ErrorKind::NeedsNormals));
+            }
+            let texture = match spec.texture {
+                None => None,
+                Some(t) => {
+                    if mesh.uvs.is_none() {
+                        return Err(t.at.error(src, ErrorKind::NeedsUvs));
+                    }
+                    let index = match texture_index.get(&t.image) {
+                        Some(&i) => i,
+                        None => {
+                            let texture = load_texture(&t.image)
+                                .map_err(|e| t.image_at.error(src, ErrorKind::File(Box::new(e))))?;
+                            scene.textures.push(texture);
+                            texture_index.insert(t.image.clone(), scene.textures.len() - 1);
+                            scene.textures.len() - 1
+                        }
+                    };
+                    Some(TextureUse { texture: index, sampler: t.sampler, env: t.env })
+                }
+            };
+            scene.objects.push(Object {
+                name: spec.name,
+                mesh,
+                normals: spec.normals,
+                material: spec.material,
+                transform: spec.transform,
+                texture,
+            });
+        }
+        Ok(scene)
+    }
+}
+
+/// The elements of an array of tables (`[[lights]]`, `[[objects]]`).
+fn tables<'a>(value: &Value<'a>) -> Result<Vec<Table<'a>>, SceneError> {
+    value.array(Expected::ArrayOfTables)?.iter().map(Value::table).collect()
+}
+
+fn read_window(t: &Table<'_>) -> Result<(u32, u32, Rgb), SceneError> {
+    t.only(&["width", "height", "clear_color"])?;
+    // In range 1..=16384, so the casts are exact.
+    let side = |v: &Value<'_>| v.integer(1, MAX_WINDOW).map(|n| n as u32);
+    let (width, height, clear_color) = COURSE_WINDOW;
+    Ok((
+        t.or("width", width, side)?,
+        t.or("height", height, side)?,
+        t.or("clear_color", clear_color, Value::color)?,
+    ))
+}
+
+/// The course's camera: distance 15, pitch −30°, yaw 0°, looking at the origin.
+fn course_camera() -> OrbitCamera {
+    OrbitCamera {
+        yaw_deg: 0.0,
+        pitch_deg: -30.0,
+        distance: 15.0,
+        target: Vec3::ZERO,
+        limits: CameraLimits::default(),
+    }
+}
+
+#[derive(Clone, Copy)]
+enum CameraKind {
+    Orbit,
+    LookAt,
+}
+
+fn read_camera(t: &Table<'_>) -> Result<Camera, SceneError> {
+    let kind = t.or("kind", CameraKind::Orbit, |v| {
+        v.choice(&[("orbit", CameraKind::Orbit), ("look_at", CameraKind::LookAt)])
+    })?;
+    match kind {
+        CameraKind::Orbit => {
+            t.only(&["kind", "distance", "pitch_deg", "yaw_deg", "target", "limits"])?;
+            let course = course_camera();
+            let limits = match t.get("limits") {
+                Some(v) => read_limits(&v.table()?)?,
+                None => course.limits,
+            };
+            let pitch_deg = t.or("pitch_deg", course.pitch_deg, |v| v.f32(Rule::Finite))?;
+            within_limits(t, "pitch_deg", pitch_deg, limits.pitch_min_deg, limits.pitch_max_deg)?;
+            let distance = t.or("distance", course.distance, |v| v.f32(Rule::Positive))?;
+            within_limits(t, "distance", distance, limits.distance_min, limits.distance_max)?;
+            Ok(Camera::Orbit(OrbitCamera {
+                yaw_deg: wrap_degrees(t.or("yaw_deg", course.yaw_deg, |v| v.f32(Rule::Finite))?),
+                pitch_deg,
+                distance,
+                target: t.or("target", course.target, Value::vec3)?,
+                limits,
+            }))
+        }
+        CameraKind::LookAt => {
+            t.only(&["kind", "eye", "target", "up"])?;
+            let eye_value = t.require("eye")?;
+            let eye = eye_value.vec3()?;
+            let target = t.or("target", Vec3::ZERO, Value::vec3)?;
+            let up = t.or("up", Vec3::Y, Value::direction)?;
+            let view = target.as_dvec3() - eye.as_dvec3();
+            if view == DVec3::ZERO {
+                return Err(eye_value.bad(Rule::DifferentFromTarget));
+            }
+            if try_normalize_f64(view.cross(up.as_dvec3())).is_none() {
+                let at = t.get("up").unwrap_or(eye_value);
+                return Err(at.bad(Rule::NotParallelToView));
+            }
+            Ok(Camera::LookAt { eye, target, up })
+        }
+    }
+}
+
+/// `Ok` when `x`, the value of `key` in `t` (or its default), lies in `[min, max]`.
+fn within_limits(t: &Table<'_>, key: &str, x: f32, min: f32, max: f32) -> Result<(), SceneError> {
+    if (min..=max).contains(&x) {
+        return Ok(());
+    }
+    let rule = Rule::Between { min: f64::from(min), max: f64::from(max) };
+    Err(match t.get(key) {
+        Some(v) => v.bad(rule),
+        // The default lies outside limits the file set: say so at the camera table.
+        None => t.error(ErrorKind::BadValue { rule, got: format!("{key} = {x} (the default)") }),
+    })
+}
+
+fn read_limits(t: &Table<'_>) -> Result<CameraLimits, SceneError> {
+    t.only(&[
+        "pitch_min_deg",
+        "pitch_max_deg",
+        "distance_min",
+        "distance_max",
+        "rotate_deg_per_px",
+        "zoom_per_px",
+        "yaw_enabled",
+    ])?;
+    let d = CameraLimits::default();
+    let pitch = |v: &Value<'_>| v.f32(Rule::Between { min: -90.0, max: 90.0 });
+    let pitch_min_deg = t.or("pitch_min_deg", d.pitch_min_deg, pitch)?;
+    let pitch_max_deg = t.or("pitch_max_deg", d.pitch_max_deg, pitch)?;
+    if pitch_min_deg > pitch_max_deg {
+        // The defaults are in order and every allowed maximum is ≥ −90, so `pitch_min_deg` is given.
+        let rule = Rule::NotAbove { key: "pitch_max_deg", value: f64::from(pitch_max_deg) };
+        return Err(t.require("pitch_min_deg")?.bad(rule));
+    }
+    let distance_min = t.or("distance_min", d.distance_min, |v| v.f32(Rule::Positive))?;
+    // May be `inf` (no limit, the default); with the default, it exceeds every finite minimum.
+    let distance_max = t.or("distance_max", d.distance_max, |v| {
+        v.f32(Rule::GreaterThan { key: "distance_min", value: f64::from(distance_min) })
+    })?;
+    Ok(CameraLimits {
+        pitch_min_deg,
+        pitch_max_deg,
+        distance_min,
+        distance_max,
+        rotate_deg_per_px: t
+            .or("rotate_deg_per_px", d.rotate_deg_per_px, |v| v.f32(Rule::Finite))?,
+        zoom_per_px: t.or("zoom_per_px", d.zoom_per_px, |v| v.f32(Rule::Finite))?,
+        yaw_enabled: t.or("yaw_enabled", d.yaw_enabled, Value::bool)?,
+    })
+}
+
+fn read_projection(t: &Table<'_>) -> Result<Projection, SceneError> {
+    t.only(&["fovy_deg", "near", "far"])?;
+    let d = COURSE_PROJECTION;
+    let fovy_deg =
+        t.or("fovy_deg", d.fovy_deg, |v| v.f32(Rule::Inside { min: 0.0, max: 180.0 }))?;
+    let near = t.or("near", d.near, |v| v.f32(Rule::Positive))?;
+    let far = t.or("far", d.far, |v| {
+        let far = v.f32(Rule::Positive)?;
+        if far > near {
+            Ok(far)
+        } else {
+            Err(v.bad(Rule::GreaterThan { key: "near", value: f64::from(near) }))
+        }
+    })?;
+    if far <= near {
+        // `far` left at its default of 500 with `near` ≥ 500.
+        let rule = Rule::Inside { min: 0.0, max: f64::from(far) };
+        return Err(t.require("near")?.bad(rule));
+    }
+    Ok(Projection { fovy_deg, near, far })
+}
+
+/// `[render]`.
+struct Render {
+    shading: Shading,
+    light_model: LightModel,
+    global_ambient: Rgb,
+    cull_back_faces: bool,
+}
+
+impl Default for Render {
+    /// The course's: Gouraud, OpenGL's lighting with an infinite viewer, global ambient 0.2, culling.
+    fn default() -> Render {
+        Render {
+            shading: Shading::Gouraud,
+            light_model: LightModel::OpenGl { local_viewer: false },
+            global_ambient: Rgb::splat(0.2),
+            cull_back_faces: true,
+        }
+    }
+}
+
+#[derive(Clone, Copy)]
+enum ModelKind {
+    OpenGl,
+    Lecture,
+}
+
+fn read_render(t: &Table<'_>) -> Result<Render, SceneError> {
+    t.only(&[
+        "shading",
+        "light_model",
+        "specular",
+        "local_viewer",
+        "global_ambient",
+        "cull_back_faces",
+    ])?;
+    let d = Render::default();
+    let shading = t.or("shading", d.shading, |v| {
+        v.choice(&[
+            ("flat", Shading::Flat),
+            ("gouraud", Shading::Gouraud),
+            ("phong", Shading::Phong),
+        ])
+    })?;
+    let model = t.or("light_model", ModelKind::OpenGl, |v| {
+        v.choice(&[("opengl", ModelKind::OpenGl), ("lecture", ModelKind::Lecture)])
+    })?;
+    let local_viewer = t.or("local_viewer", false, Value::bool)?;
+    let specular = t.get("specular");
+    let light_model = match model {
+        ModelKind::OpenGl => {
+            if let Some(v) = specular {
+                return Err(v.error(ErrorKind::SpecularNeedsLectureModel));
+            }
+            LightModel::OpenGl { local_viewer }
+        }
+        ModelKind::Lecture => LightModel::Lecture {
+            specular: specular.map_or(Ok(Specular::default()), |v| {
+                v.choice(&[("phong", Specular::Phong), ("blinn", Specular::Blinn)])
+            })?,
+            local_viewer,
+        },
+    };
+    Ok(Render {
+        shading,
+        light_model,
+        global_ambient: t.or("global_ambient", d.global_ambient, Value::color)?,
+        cull_back_faces: t.or("cull_back_faces", d.cull_back_faces, Value::bool)?,
+    })
+}
+
+#[derive(Clone, Copy)]
+enum LightType {
+    Directional,
+    Point,
+    Spot,
+    Area,
+}
+
+fn read_light(t: &Table<'_>) -> Result<Light, SceneError> {
+    let kind = t.require("kind")?.choice(&[
+        ("directional", LightType::Directional),
+        ("point", LightType::Point),
+        ("spot", LightType::Spot),
+        ("area", LightType::Area),
+    ])?;
+    let common = ["kind", "ambient", "diffuse", "specular"];
+    let keys: &[&str] = match kind {
+        LightType::Directional => &["to_light"],
+        LightType::Point => &["position", "attenuation"],
+        LightType::Spot => {
+            &["position", "direction", "cutoff_deg", "exponent", "inner_deg", "attenuation"]
+        }
+        LightType::Area => &["corner", "edge_u", "edge_v", "samples", "attenuation"],
+    };
+    t.only(&[&common[..], keys].concat())?;
+    let kind = match kind {
+        LightType::Directional => {
+            LightKind::Directional { to_light: t.require("to_light")?.direction()? }
+        }
+        LightType::Point => LightKind::Point { position: t.require("position")?.vec3()? },
+        LightType::Spot => {
+            let cutoff_deg = t.require("cutoff_deg")?.f32(Rule::SpotCutoff)?;
+            let inner_deg = t.optional("inner_deg", |v| {
+                let inner = v.f32(Rule::NonNegative)?;
+                if inner <= cutoff_deg {
+                    Ok(inner)
+                } else {
+                    Err(v.bad(Rule::NotAbove { key: "cutoff_deg", value: f64::from(cutoff_deg) }))
+                }
+            })?;
+            LightKind::Spot {
+                position: t.require("position")?.vec3()?,
+                direction: t.require("direction")?.direction()?,
+                cutoff_deg,
+                exponent: t.or("exponent", 0.0, |v| v.f32(Rule::NonNegative))?,
+                inner_deg,
+            }
+        }
+        LightType::Area => {
+            let edge_u = t.require("edge_u")?.vec3()?;
+            let edge_v_value = t.require("edge_v")?;
+            let edge_v = edge_v_value.vec3()?;
+            if try_normalize_f64(edge_u.as_dvec3().cross(edge_v.as_dvec3())).is_none() {
+                return Err(edge_v_value.bad(Rule::NonZeroArea));
+            }
+            let [nu, nv] = t.require("samples")?.array_of(Expected::Samples)?;
+            let count = |v: Value<'_>| {
+                // In 1..=MAX_AREA_SAMPLES, so the cast is exact.
+                v.integer(1, MAX_AREA_SAMPLES.into()).map(|n| n as u32)
+            };
+            LightKind::Area {
+                corner: t.require("corner")?.vec3()?,
+                edge_u,
+                edge_v,
+                samples: [count(nu)?, count(nv)?],
+            }
+        }
+    };
+    Ok(Light {
+        kind,
+        // GL_LIGHT0's defaults.
+        ambient: t.or("ambient", Rgb::ZERO, Value::color)?,
+        diffuse: t.or("diffuse", Rgb::ONE, Value::color)?,
+        specular: t.or("specular", Rgb::ONE, Value::color)?,
+        attenuation: t.or("attenuation", Attenuation::default(), read_attenuation)?,
+    })
+}
+
+fn read_attenuation(v: &Value<'_>) -> Result<Attenuation, SceneError> {
+    let [kc, kl, kq] = v.array_of(Expected::Attenuation)?;
+    let [constant, linear, quadratic] = [kc, kl, kq].map(|k| k.f32(Rule::NonNegative));
+    let a = Attenuation { constant: constant?, linear: linear?, quadratic: quadratic? };
+    if a.constant == 0.0 && a.linear == 0.0 && a.quadratic == 0.0 {
+        return Err(v.bad(Rule::SomeAttenuation));
+    }
+    Ok(a)
+}
+
+fn read_materials(t: &Table<'_>) -> Result<HashMap<String, Material>, SceneError> {
+    t.entries()
+        .into_iter()
+        .map(|(name, v)| Ok((name.to_owned(), read_material(&v.table()?)?)))
+        .collect()
+}
+
+/// A material table: `color`, or `ka`/`kd`, and the rest; [`Material::default`] elsewhere.
+fn read_material(t: &Table<'_>) -> Result<Material, SceneError> {
+    t.only(&["color", "ka", "kd", "ks", "shininess", "kr", "kt", "eta", "emission"])?;
+    let base = match t.get("color") {
+        Some(color) => {
+            if let Some((other, v)) = ["ka", "kd"].into_iter().find_map(|k| Some((k, t.get(k)?))) {
+                return Err(v.error(ErrorKind::ColorWithReflectance { other }));
+            }
+            Material::from_color(color.color()?)
+        }
+        None => Material::default(),
+    };
+    Ok(Material {
+        ka: t.or("ka", base.ka, Value::color)?,
+        kd: t.or("kd", base.kd, Value::color)?,
+        ks: t.or("ks", base.ks, Value::color)?,
+        shininess: t.or("shininess", base.shininess, |v| v.f32(Rule::NonNegative))?,
+        kr: t.or("kr", base.kr, Value::color)?,
+        kt: t.or("kt", base.kt, Value::color)?,
+        eta: t.or("eta", base.eta, |v| v.f32(Rule::Positive))?,
+        emission: t.or("emission", base.emission, Value::color)?,
+    })
+}
+
+fn read_object(
+    t: &Table<'_>,
+    materials: &HashMap<String, Material>,
+    base: &Path,
+) -> Result<ObjectSpec, SceneError> {
+    t.only(&["name", "shape", "mesh", "normals", "material", "transform", "texture"])?;
+    let name = t.require("name")?.str()?.to_owned();
+    let geometry = match (t.get("shape"), t.get("mesh")) {
+        (Some(_), Some(mesh)) => return Err(mesh.error(ErrorKind::ShapeAndMesh)),
+        (None, None) => return Err(t.error(ErrorKind::NoGeometry)),
+        (Some(shape), None) => Geometry::Shape(ShapeSpec::read(&shape)?, shape.at()),
+        (None, Some(mesh)) => Geometry::Obj(base.join(mesh.str()?), mesh.at()),
+    };
+    let normals = t.or("normals", NormalSource::Face, read_normals)?;
+    let normals_at = t.get("normals").map_or_else(|| t.at(), |v| v.at());
+    let material = match t.get("material") {
+        None => Material::default(),
+        Some(v) if v.is_str() => {
+            let name = v.str()?;
+            materials.get(name).cloned().ok_or_else(|| {
+                v.error(ErrorKind::UnknownMaterial {
+                    name: name.to_owned(),
+                    suggestion: crate::error::closest(name, materials.keys().map(String::as_str))
+                        .map(str::to_owned),
+                })
+            })?
+        }
+        Some(v) if v.is_table() => read_material(&v.table()?)?,
+        Some(v) => return Err(v.wrong_type(Expected::Material)),
+    };
+    let transform = match t.get("transform") {
+        None => MatrixProduct::default(),
+        Some(v) => MatrixProduct {
+            factors: v
+                .array(Expected::ArrayOfTables)?
+                .iter()
+                .map(read_step)
+                .collect::<Result<_, _>>()?,
+        },
+    };
+    let texture = t.optional("texture", |v| read_texture(v, base))?;
+    Ok(ObjectSpec { name, geometry, normals, normals_at, material, transform, texture })
+}
+
+fn read_normals(v: &Value<'_>) -> Result<NormalSource, SceneError> {
+    if v.is_table() {
+        let t = v.table()?;
+        t.only(&["weighting", "crease_deg"])?;
+        return Ok(NormalSource::Vertex {
+            weighting: t.or("weighting", Weighting::Angle, |w| {
+                w.choice(&[
+                    ("uniform", Weighting::Uniform),
+                    ("area", Weighting::Area),
+                    ("angle", Weighting::Angle),
+                    ("max", Weighting::Max),
+                ])
+            })?,
+            crease_deg: t
+                .optional("crease_deg", |c| c.f32(Rule::Between { min: 0.0, max: 180.0 }))?,
+        });
+    }
+    if !v.is_str() {
+        return Err(v.wrong_type(Expected::Normals));
+    }
+    let smooth = NormalSource::Vertex { weighting: Weighting::Angle, crease_deg: None };
+    v.choice(&[("face", NormalSource::Face), ("given", NormalSource::Given), ("smooth", smooth)])
+}
+
+/// One transform step: `{ translate = [x, y, z] }`, `{ rotate_deg = a, axis = [x, y, z] }`,
+/// `{ rotate_x_deg = a }` (and y, z) or `{ scale = [x, y, z] }`.
+fn read_step(v: &Value<'_>) -> Result<Factor, SceneError> {
+    let t = v.table()?;
+    t.only(&[
+        "translate",
+        "rotate_deg",
+        "axis",
+        "rotate_x_deg",
+        "rotate_y_deg",
+        "rotate_z_deg",
+        "scale",
+    ])?;
+    let keys = t.keys();
+    let ops: Vec<&str> = keys.iter().copied().filter(|&k| k != "axis").collect();
+    let axis_allowed = ops == ["rotate_deg"];
+    if ops.len() != 1 || (t.has("axis") && !axis_allowed) {
+        return Err(t.error(ErrorKind::TransformStep {
+            found: keys.iter().map(|k| (*k).to_owned()).collect(),
+        }));
+    }
+    let param = |value: f32| Param { value, symbol: None };
+    let xyz = |key: &str| t.require(key)?.vec3().map(|v| v.to_array().map(param));
+    let angle = |key: &str| t.require(key)?.f32(Rule::Finite).map(param);
+    Ok(match ops[0] {
+        "translate" => Factor::Translate(xyz("translate")?),
+        "scale" => Factor::Scale(xyz("scale")?),
+        "rotate_deg" => Factor::Rotate {
+            axis: Axis::Any(t.require("axis")?.direction()?),
+            angle_deg: angle("rotate_deg")?,
+        },
+        "rotate_x_deg" => Factor::Rotate { axis: Axis::X, angle_deg: angle("rotate_x_deg")? },
+        "rotate_y_deg" => Factor::Rotate { axis: Axis::Y, angle_deg: angle("rotate_y_deg")? },
+        _ => Factor::Rotate { axis: Axis::Z, angle_deg: angle("rotate_z_deg")? },
+    })
+}
+
+fn read_texture(v: &Value<'_>, base: &Path) -> Result<TextureSpec, SceneError> {
+    let t = v.table()?;
+    t.only(&["image", "filter", "wrap", "env"])?;
+    let image = t.require("image")?;
+    let filter = t.or("filter", Filter::Bilinear, |f| {
+        f.choice(&[("nearest", Filter::Nearest), ("bilinear", Filter::Bilinear)])
+    })?;
+    let wraps = [("repeat", Wrap::Repeat), ("clamp", Wrap::Clamp)];
+    let (wrap_u, wrap_v) = t.or("wrap", (Wrap::Repeat, Wrap::Repeat), |w| {
+        if w.is_str() {
+            let both = w.choice(&wraps)?;
+            return Ok((both, both));
+        }
+        let [u, v] = w.array_of(Expected::Wrap)?;
+        Ok((u.choice(&wraps)?, v.choice(&wraps)?))
+    })?;
+    let env = t.or("env", TexEnv::Modulate, |e| {
+        e.choice(&[("modulate", TexEnv::Modulate), ("replace", TexEnv::Replace)])
+    })?;
+    Ok(TextureSpec {
+        image: base.join(image.str()?),
+        image_at: image.at(),
+        at: t.at(),
+        sampler: Sampler { filter, wrap_u, wrap_v },
+        env,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every shipped scene passes every check that does not build a mesh. (The integration test
+    /// `every_shipped_scene_loads` builds them too, which needs every shape constructor.)
+    #[test]
+    fn every_shipped_scene_reads() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/scenes");
+        let mut count = 0;
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_some_and(|e| e == "toml") {
+                let text = std::fs::read_to_string(&path).unwrap();
+                let src = Source { text: &text, file: &path };
+                let spec = read(&src, path.parent().unwrap()).unwrap_or_else(|e| panic!("{e}"));
+                assert!(!spec.objects.is_empty(), "{}", path.display());
+                for object in &spec.objects {
+                    if let Geometry::Obj(file, _) = &object.geometry {
+                        assert!(file.exists(), "{}", file.display());
+                    }
+                    if let Some(t) = &object.texture {
+                        assert!(t.image.exists(), "{}", t.image.display());
+                    }
+                }
+                count += 1;
+            }
+        }
+        assert!(count >= 6, "found {count} scenes in {}", dir.display());
+    }
+}

@@ -1,0 +1,494 @@
+//! Every class of mistake names the file, the line and column, and the key path — in English and
+//! in Japanese. Line numbers are counted by hand from the fixture texts below (line 1 is the line
+//! with `format = 1`); columns are found by searching the fixture's own line for the offending text.
+
+use std::path::{Path, PathBuf};
+
+use cg_core::lang::Lang;
+use cg_scene::{ErrorKind, Expected, Found, Rule, SceneError};
+
+const FILE: &str = "fixtures/mistake.toml";
+
+fn error(text: &str) -> SceneError {
+    match cg_scene::parse(text, Path::new(FILE)) {
+        Ok(_) => panic!("expected an error for:\n{text}"),
+        Err(e) => e,
+    }
+}
+
+/// Checks the place and key of `e`: `line` as counted by hand, the column of `needle`'s first
+/// occurrence on that line (in characters, from 1), and the key path.
+#[track_caller]
+fn assert_at(e: &SceneError, text: &str, line: usize, needle: &str, key: Option<&str>) {
+    let line_text = text.lines().nth(line - 1).unwrap_or_else(|| panic!("no line {line}"));
+    let byte = line_text.find(needle).unwrap_or_else(|| panic!("{needle:?} not on line {line}"));
+    let column = 1 + line_text[..byte].chars().count();
+    let p = e.position.unwrap_or_else(|| panic!("no position in {e}"));
+    assert_eq!((p.line, p.column), (line, column), "{e}");
+    assert_eq!(e.key.as_deref(), key, "{e}");
+    assert_eq!(e.file, Path::new(FILE));
+    // Both languages name the same place and key; the Japanese text is Japanese.
+    let prefix = match key {
+        Some(k) => format!("{FILE}:{line}:{column}: {k}: "),
+        None => format!("{FILE}:{line}:{column}: "),
+    };
+    assert!(e.to_string().starts_with(&prefix), "{e}\nshould start with {prefix}");
+    let ja = e.describe(Lang::Ja);
+    assert!(ja.starts_with(&prefix), "{ja}");
+    assert!(ja.chars().any(|c| ('\u{3040}'..='\u{30ff}').contains(&c)), "no kana in {ja}");
+    assert_eq!(e.describe(Lang::En), e.to_string());
+}
+
+#[test]
+fn syntax_errors_name_the_line() {
+    let text = r#"format = 1
+[camera]
+distance = 15.0
+pitch_deg = -30.0 x
+"#;
+    let e = error(text);
+    assert_at(&e, text, 4, "-30.0", None);
+    assert!(matches!(*e.kind, ErrorKind::Syntax { .. }), "{e}");
+
+    let text = "format = 1\nname = \"unclosed\n";
+    let e = error(text);
+    assert_eq!(e.position.map(|p| p.line), Some(2), "{e}");
+    assert!(matches!(*e.kind, ErrorKind::Syntax { .. }), "{e}");
+
+    // A key given twice is a TOML error too.
+    let text = "format = 1\n[window]\nwidth = 640\nwidth = 320\n";
+    let e = error(text);
+    assert_at(&e, text, 4, "width", None);
+}
+
+#[test]
+fn unknown_keys_are_errors_with_the_closest_key_suggested() {
+    let text = r#"format = 1
+[[objects]]
+name = "ball"
+shape = { kind = "grid", divisions = 2, size = 1 }
+materal = "green"
+"#;
+    let e = error(text);
+    assert_at(&e, text, 5, "materal", Some("objects[0].materal"));
+    assert!(
+        matches!(&*e.kind, ErrorKind::UnknownKey { key, suggestion: Some(s), .. } if key == "materal" && s == "material"),
+        "{e}"
+    );
+    assert!(e.to_string().ends_with("unknown key `materal` (did you mean `material`?)"), "{e}");
+
+    // With nothing close, the message lists the keys of the table instead.
+    let text = "format = 1\n[[lights]]\nkind = \"directional\"\nto_light = [0, 1, 0]\nattenuation = [1, 0, 0]\n";
+    let e = error(text);
+    assert_at(&e, text, 5, "attenuation", Some("lights[0].attenuation"));
+    assert!(e.to_string().contains("`to_light`"), "{e}");
+
+    // At the top level and in a section header's table.
+    let text = "format = 1\nwindows = {}\n";
+    assert_at(&error(text), text, 2, "windows", Some("windows"));
+    let text = "format = 1\n[render]\nshadding = \"flat\"\n";
+    let e = error(text);
+    assert_at(&e, text, 3, "shadding", Some("render.shadding"));
+    assert!(
+        matches!(*e.kind, ErrorKind::UnknownKey { suggestion: Some(ref s), .. } if s == "shading")
+    );
+}
+
+#[test]
+fn wrong_types_name_what_the_key_takes() {
+    let text = r#"format = 1
+[camera]
+kind = "orbit"
+distance = "far"
+"#;
+    let e = error(text);
+    assert_at(&e, text, 4, "\"far\"", Some("camera.distance"));
+    assert_eq!(*e.kind, ErrorKind::WrongType { expected: Expected::Number, found: Found::String });
+    assert!(e.to_string().ends_with("expected a number, found a string"), "{e}");
+
+    // An element of an array is named by its index.
+    let text = "format = 1\n[[lights]]\nkind = \"point\"\nposition = [1, \"2\", 3]\n";
+    let e = error(text);
+    assert_at(&e, text, 4, "\"2\"", Some("lights[0].position[1]"));
+    // Two numbers where three belong.
+    let text = "format = 1\n[window]\nclear_color = [0.5, 0.5]\n";
+    let e = error(text);
+    assert_at(&e, text, 3, "[0.5", Some("window.clear_color"));
+    assert_eq!(
+        *e.kind,
+        ErrorKind::WrongType { expected: Expected::Color, found: Found::Array { len: 2 } }
+    );
+    // A float where an integer belongs.
+    let text = "format = 1\n[window]\nwidth = 640.0\n";
+    let e = error(text);
+    assert_at(&e, text, 3, "640.0", Some("window.width"));
+    assert_eq!(*e.kind, ErrorKind::WrongType { expected: Expected::Integer, found: Found::Float });
+    // `[[objects]]` written as `[objects]`.
+    let text = "format = 1\n[objects]\nname = \"x\"\n";
+    let e = error(text);
+    assert_at(&e, text, 2, "[objects]", Some("objects"));
+    assert!(matches!(
+        *e.kind,
+        ErrorKind::WrongType { expected: Expected::ArrayOfTables, found: Found::Table }
+    ));
+    // A word where a choice belongs, and a number where a word belongs.
+    let text = "format = 1\n[render]\ncull_back_faces = \"yes\"\n";
+    assert_at(&error(text), text, 3, "\"yes\"", Some("render.cull_back_faces"));
+    let text = "format = 1\n[render]\nshading = 2\n";
+    assert_at(&error(text), text, 3, "2", Some("render.shading"));
+}
+
+#[test]
+fn bad_values_say_the_rule_and_quote_the_value() {
+    // The example of the brief, character for character.
+    let text = r#"format = 1
+[[objects]]
+name = "ground"
+shape = { kind = "grid", divisions = 10, size = 10.0 }
+
+[[objects]]
+name = "ball"
+shape = { kind = "uv_sphere", radius = -1, slices = 16, stacks = 8 }
+"#;
+    let e = error(text);
+    assert_at(&e, text, 8, "-1", Some("objects[1].shape.radius"));
+    assert_eq!(
+        e.to_string(),
+        "fixtures/mistake.toml:8:40: objects[1].shape.radius: must be finite and > 0, got -1"
+    );
+    assert_eq!(
+        e.describe(Lang::Ja),
+        "fixtures/mistake.toml:8:40: objects[1].shape.radius: 0 より大きい有限の数でなければなりません（書かれている値: -1）"
+    );
+
+    let cases: &[(&str, usize, &str, &str, Rule)] = &[
+        (
+            "format = 1\n[projection]\nnear = 10\nfar = 5\n",
+            4,
+            "5",
+            "projection.far",
+            Rule::GreaterThan { key: "near", value: 10.0 },
+        ),
+        (
+            "format = 1\n[projection]\nfovy_deg = 180\n",
+            3,
+            "180",
+            "projection.fovy_deg",
+            Rule::Inside { min: 0.0, max: 180.0 },
+        ),
+        ("format = 1\n[projection]\nnear = nan\n", 3, "nan", "projection.near", Rule::Positive),
+        (
+            "format = 1\n[window]\nwidth = 0\n",
+            3,
+            "0",
+            "window.width",
+            Rule::Integer { min: 1, max: 16384 },
+        ),
+        (
+            "format = 1\n[window]\nclear_color = [0.5, -0.5, 0.8]\n",
+            3,
+            "-0.5",
+            "window.clear_color[1]",
+            Rule::NonNegative,
+        ),
+        (
+            "format = 1\n[render]\nglobal_ambient = [inf, 0, 0]\n",
+            3,
+            "inf",
+            "render.global_ambient[0]",
+            Rule::NonNegative,
+        ),
+        (
+            "format = 1\n[camera]\npitch_deg = 10\n",
+            3,
+            "10",
+            "camera.pitch_deg",
+            Rule::Between { min: -90.0, max: 0.0 },
+        ),
+        ("format = 1\n[camera]\ndistance = 1e39\n", 3, "1e39", "camera.distance", Rule::Positive),
+        // Limits that leave out the default pitch (−30°) are reported at the camera table.
+        (
+            "format = 1\n[camera]\nlimits = { pitch_max_deg = -40 }\n",
+            2,
+            "[camera]",
+            "camera",
+            Rule::Between { min: -90.0, max: -40.0 },
+        ),
+        (
+            "format = 1\n[camera]\nlimits = { pitch_min_deg = 20, pitch_max_deg = 10 }\n",
+            3,
+            "20",
+            "camera.limits.pitch_min_deg",
+            Rule::NotAbove { key: "pitch_max_deg", value: 10.0 },
+        ),
+        (
+            "format = 1\n[camera]\nlimits = { distance_min = 5, distance_max = 3 }\n",
+            3,
+            "3 }",
+            "camera.limits.distance_max",
+            Rule::GreaterThan { key: "distance_min", value: 5.0 },
+        ),
+        (
+            "format = 1\n[projection]\nnear = 600\n",
+            3,
+            "600",
+            "projection.near",
+            Rule::Inside { min: 0.0, max: 500.0 },
+        ),
+        (
+            "format = 1\n[[lights]]\nkind = \"directional\"\nto_light = [0, 0, 0]\n",
+            4,
+            "[0, 0, 0]",
+            "lights[0].to_light",
+            Rule::NonZeroVector,
+        ),
+        (
+            "format = 1\n[[lights]]\nkind = \"spot\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0]\ncutoff_deg = 95\n",
+            6,
+            "95",
+            "lights[0].cutoff_deg",
+            Rule::SpotCutoff,
+        ),
+        (
+            "format = 1\n[[lights]]\nkind = \"spot\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0]\ncutoff_deg = 30\ninner_deg = 40\n",
+            7,
+            "40",
+            "lights[0].inner_deg",
+            Rule::NotAbove { key: "cutoff_deg", value: 30.0 },
+        ),
+        (
+            "format = 1\n[[lights]]\nkind = \"point\"\nposition = [0, 1, 0]\nattenuation = [0, 0, 0]\n",
+            5,
+            "[0, 0, 0]",
+            "lights[0].attenuation",
+            Rule::SomeAttenuation,
+        ),
+        (
+            "format = 1\n[[lights]]\nkind = \"area\"\ncorner = [0, 4, 0]\nedge_u = [1, 0, 0]\nedge_v = [2, 0, 0]\nsamples = [2, 2]\n",
+            6,
+            "[2, 0, 0]",
+            "lights[0].edge_v",
+            Rule::NonZeroArea,
+        ),
+        (
+            "format = 1\n[[lights]]\nkind = \"area\"\ncorner = [0, 4, 0]\nedge_u = [1, 0, 0]\nedge_v = [0, 0, 1]\nsamples = [0, 2]\n",
+            7,
+            "0",
+            "lights[0].samples[0]",
+            Rule::Integer { min: 1, max: 256 },
+        ),
+        (
+            "format = 1\n[camera]\nkind = \"look_at\"\neye = [0, 0, 0]\n",
+            4,
+            "[0, 0, 0]",
+            "camera.eye",
+            Rule::DifferentFromTarget,
+        ),
+        (
+            "format = 1\n[camera]\nkind = \"look_at\"\neye = [0, 5, 0]\nup = [0, -3, 0]\n",
+            5,
+            "[0, -3, 0]",
+            "camera.up",
+            Rule::NotParallelToView,
+        ),
+        ("format = 1\n[materials.m]\neta = 0\n", 3, "0", "materials.m.eta", Rule::Positive),
+        (
+            "format = 1\n[materials.m]\nshininess = -2\n",
+            3,
+            "-2",
+            "materials.m.shininess",
+            Rule::NonNegative,
+        ),
+        (
+            "format = 1\n[[objects]]\nname = \"x\"\nshape = { kind = \"lecture_pyramid\" }\ntransform = [{ rotate_deg = 30, axis = [0, 0, 0] }]\n",
+            5,
+            "[0, 0, 0]",
+            "objects[0].transform[0].axis",
+            Rule::NonZeroVector,
+        ),
+        (
+            "format = 1\n[[objects]]\nname = \"x\"\nshape = { kind = \"lecture_pyramid\" }\ntransform = [{ scale = [1, nan, 1] }]\n",
+            5,
+            "nan",
+            "objects[0].transform[0].scale[1]",
+            Rule::Finite,
+        ),
+        (
+            "format = 1\n[[objects]]\nname = \"x\"\nshape = { kind = \"lecture_pyramid\" }\nnormals = { crease_deg = 200 }\n",
+            5,
+            "200",
+            "objects[0].normals.crease_deg",
+            Rule::Between { min: 0.0, max: 180.0 },
+        ),
+    ];
+    for &(text, line, needle, key, rule) in cases {
+        let e = error(text);
+        assert_at(&e, text, line, needle, Some(key));
+        assert!(
+            matches!(*e.kind, ErrorKind::BadValue { rule: r, .. } if r == rule),
+            "{e}\nexpected {rule:?}"
+        );
+    }
+}
+
+#[test]
+fn material_mistakes() {
+    let text = r#"format = 1
+[materials.ground]
+color = [0.5, 0.8, 0.5]
+
+[[objects]]
+name = "ground"
+shape = { kind = "grid", divisions = 10, size = 10.0 }
+material = "grund"
+"#;
+    let e = error(text);
+    assert_at(&e, text, 8, "\"grund\"", Some("objects[0].material"));
+    assert_eq!(
+        *e.kind,
+        ErrorKind::UnknownMaterial { name: "grund".into(), suggestion: Some("ground".into()) }
+    );
+
+    // `color` and `ka` together: the error says why.
+    let text = "format = 1\n[materials.m]\ncolor = [1, 1, 1]\nka = [0.2, 0.2, 0.2]\n";
+    let e = error(text);
+    assert_at(&e, text, 4, "[0.2", Some("materials.m.ka"));
+    assert_eq!(*e.kind, ErrorKind::ColorWithReflectance { other: "ka" });
+    assert!(e.to_string().contains("sets both ka and kd"), "{e}");
+
+    // An inline material is checked like a named one.
+    let text = "format = 1\n[[objects]]\nname = \"x\"\nshape = { kind = \"lecture_pyramid\" }\nmaterial = { colour = [1, 0, 0] }\n";
+    let e = error(text);
+    assert_at(&e, text, 5, "colour", Some("objects[0].material.colour"));
+    assert!(
+        matches!(*e.kind, ErrorKind::UnknownKey { suggestion: Some(ref s), .. } if s == "color")
+    );
+    let text = "format = 1\n[[objects]]\nname = \"x\"\nshape = { kind = \"lecture_pyramid\" }\nmaterial = 3\n";
+    let e = error(text);
+    assert_at(&e, text, 5, "3", Some("objects[0].material"));
+    assert!(matches!(*e.kind, ErrorKind::WrongType { expected: Expected::Material, .. }));
+}
+
+fn beside_assets() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/scenes/mistake.toml")
+}
+
+#[test]
+fn files_that_cannot_be_loaded_are_named_with_the_scene_line() {
+    let text = r#"format = 1
+[[objects]]
+name = "model"
+mesh = "models/missing.obj"
+"#;
+    let e = error(text);
+    assert_at(&e, text, 4, "\"models/missing.obj\"", Some("objects[0].mesh"));
+    let ErrorKind::File(inner) = &*e.kind else { panic!("{e}") };
+    assert_eq!(
+        inner.file,
+        Path::new("fixtures/models/missing.obj"),
+        "relative to the scene's folder"
+    );
+    assert!(matches!(*inner.kind, ErrorKind::Read { .. }), "{e}");
+    assert!(e.to_string().contains("fixtures/models/missing.obj: cannot read the file"), "{e}");
+    assert!(e.describe(Lang::Ja).contains("ファイルを読めません"), "{}", e.describe(Lang::Ja));
+
+    // A texture image that is missing: the line of `image`.
+    let text = "format = 1\n[[objects]]\nname = \"地面\"\nshape = { kind = \"grid\", divisions = 1, size = 1 }\ntexture = { filter = \"nearest\", image = \"テクスチャ.png\" }\n";
+    let e = error(text);
+    assert_at(&e, text, 5, "\"テクスチャ.png\"", Some("objects[0].texture.image"));
+    assert!(
+        matches!(&*e.kind, ErrorKind::File(inner) if matches!(*inner.kind, ErrorKind::Read { .. }))
+    );
+    // Columns count characters: the Japanese file name before the mistake counts 6, not 18 bytes.
+    let text = "format = 1\n[[objects]]\nname = \"地面\"\nshape = { kind = \"grid\", divisions = 1, size = 1 }\ntexture = { image = \"テクスチャ.png\", filter = \"nearst\" }\n";
+    let e = error(text);
+    assert_at(&e, text, 5, "\"nearst\"", Some("objects[0].texture.filter"));
+    assert_eq!(e.position.map(|p| p.column), Some(43));
+
+    // The texture needs texture coordinates; `normals = "given"` needs normals.
+    let text = "format = 1\n[[objects]]\nname = \"p\"\nmesh = \"../models/pyramid.obj\"\ntexture = { image = \"../textures/orientation.png\" }\n";
+    let e = cg_scene::parse(text, &beside_assets()).unwrap_err();
+    assert_eq!((e.position.unwrap().line, e.key.as_deref()), (5, Some("objects[0].texture")));
+    assert_eq!(*e.kind, ErrorKind::NeedsUvs);
+    let text = "format = 1\n[[objects]]\nname = \"p\"\nmesh = \"../models/pyramid.obj\"\nnormals = \"given\"\n";
+    let e = cg_scene::parse(text, &beside_assets()).unwrap_err();
+    assert_eq!((e.position.unwrap().line, e.key.as_deref()), (5, Some("objects[0].normals")));
+    assert_eq!(*e.kind, ErrorKind::NeedsNormals);
+}
+
+#[test]
+fn structural_mistakes() {
+    // A missing key points at its table.
+    let text = "format = 1\n[[objects]]\nshape = { kind = \"lecture_pyramid\" }\n";
+    let e = error(text);
+    assert_at(&e, text, 2, "[[objects]]", Some("objects[0]"));
+    assert_eq!(*e.kind, ErrorKind::MissingKey { key: "name".into() });
+    let e = error("name = \"no version\"\n");
+    assert_eq!((e.position.map(|p| (p.line, p.column)), e.key.as_deref()), (Some((1, 1)), None));
+    assert_eq!(*e.kind, ErrorKind::MissingKey { key: "format".into() });
+
+    // An unknown version is refused before anything else is looked at.
+    let text = "format = 2\nsomething_new = true\n";
+    let e = error(text);
+    assert_at(&e, text, 1, "2", Some("format"));
+    assert_eq!(*e.kind, ErrorKind::UnsupportedFormat { found: "2".into() });
+
+    // A misspelt choice.
+    let text = "format = 1\n[render]\nshading = \"goraud\"\n";
+    let e = error(text);
+    assert_at(&e, text, 3, "\"goraud\"", Some("render.shading"));
+    assert!(matches!(*e.kind, ErrorKind::UnknownChoice { suggestion: Some("gouraud"), .. }), "{e}");
+
+    // Conflicting keys.
+    let text = "format = 1\n[render]\nspecular = \"blinn\"\n";
+    let e = error(text);
+    assert_at(&e, text, 3, "\"blinn\"", Some("render.specular"));
+    assert_eq!(*e.kind, ErrorKind::SpecularNeedsLectureModel);
+    let text = "format = 1\n[[objects]]\nname = \"x\"\nshape = { kind = \"lecture_pyramid\" }\nmesh = \"a.obj\"\n";
+    let e = error(text);
+    assert_at(&e, text, 5, "\"a.obj\"", Some("objects[0].mesh"));
+    assert_eq!(*e.kind, ErrorKind::ShapeAndMesh);
+    let text = "format = 1\n[[objects]]\nname = \"x\"\n";
+    let e = error(text);
+    assert_at(&e, text, 2, "[[objects]]", Some("objects[0]"));
+    assert_eq!(*e.kind, ErrorKind::NoGeometry);
+
+    // Transform steps hold exactly one operation; `axis` belongs to `rotate_deg`.
+    let text = "format = 1\n[[objects]]\nname = \"x\"\nshape = { kind = \"lecture_pyramid\" }\ntransform = [{ translate = [0, 1, 0] }, { translate = [1, 0, 0], scale = [2, 2, 2] }]\n";
+    let e = error(text);
+    assert_at(&e, text, 5, "{ translate = [1", Some("objects[0].transform[1]"));
+    assert_eq!(
+        *e.kind,
+        ErrorKind::TransformStep { found: vec!["translate".into(), "scale".into()] }
+    );
+    let text = "format = 1\n[[objects]]\nname = \"x\"\nshape = { kind = \"lecture_pyramid\" }\ntransform = [{ rotate_x_deg = 30, axis = [1, 0, 0] }]\n";
+    assert!(matches!(*error(text).kind, ErrorKind::TransformStep { .. }));
+    let text = "format = 1\n[[objects]]\nname = \"x\"\nshape = { kind = \"lecture_pyramid\" }\ntransform = [{ rotate_deg = 30 }]\n";
+    let e = error(text);
+    assert_at(&e, text, 5, "{ rotate_deg", Some("objects[0].transform[0]"));
+    assert_eq!(*e.kind, ErrorKind::MissingKey { key: "axis".into() });
+
+    // Two objects with one name.
+    let text = "format = 1\n[[objects]]\nname = \"a\"\nshape = { kind = \"lecture_pyramid\" }\n[[objects]]\nname = \"a\"\nshape = { kind = \"lecture_pyramid\" }\n";
+    let e = error(text);
+    assert_at(&e, text, 6, "\"a\"", Some("objects[1].name"));
+    assert_eq!(*e.kind, ErrorKind::DuplicateName { name: "a".into(), first_line: 2 });
+
+    // A count a shape constructor rejects is reported at the shape, under the parameter's key.
+    let text = "format = 1\n[[objects]]\nname = \"g\"\nshape = { kind = \"grid\", divisions = 5000, size = 1 }\n";
+    let e = error(text);
+    assert_at(&e, text, 4, "{ kind", Some("objects[0].shape.divisions"));
+    assert!(matches!(*e.kind, ErrorKind::Shape(_)), "{e}");
+}
+
+#[test]
+fn reading_a_missing_scene_file_names_it() {
+    let e = cg_scene::load(Path::new("fixtures/does-not-exist.toml")).unwrap_err();
+    assert_eq!(e.file, Path::new("fixtures/does-not-exist.toml"));
+    assert_eq!((e.position, e.key.as_deref()), (None, None));
+    assert!(matches!(*e.kind, ErrorKind::Read { .. }));
+    assert!(
+        e.to_string().starts_with("fixtures/does-not-exist.toml: cannot read the file: "),
+        "{e}"
+    );
+}

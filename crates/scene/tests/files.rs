@@ -1,0 +1,264 @@
+//! OBJ models and PNG textures: what loads, what is kept, and what each broken file says.
+
+use std::path::{Path, PathBuf};
+
+use cg_core::glam::{Vec2, Vec3};
+use cg_core::mesh::MeshError;
+use cg_scene::{ErrorKind, SceneError, load_obj, load_texture, parse_obj};
+
+/// A fresh folder for this test's files.
+fn folder(test: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cg-scene-files").join(test);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn obj_error(text: &str) -> SceneError {
+    parse_obj(text, Path::new("model.obj")).expect_err(text)
+}
+
+/// A unit square in y = 0 facing +Y, as a quad with texture coordinates and normals.
+const QUAD: &str = "\
+v 0 0 0
+v 1 0 0
+v 1 0 -1
+v 0 0 -1
+vt 0 0
+vt 1 0
+vt 1 1
+vt 0 1
+vn 0 2 0
+f 1/1/1 2/2/1 3/3/1 4/4/1
+";
+
+#[test]
+fn quads_are_split_and_attributes_kept() {
+    let m = parse_obj(QUAD, Path::new("quad.obj")).unwrap();
+    assert_eq!(m.positions, [Vec3::ZERO, Vec3::X, Vec3::new(1.0, 0.0, -1.0), Vec3::NEG_Z]);
+    // A fan from the first corner, counter-clockwise as written.
+    assert_eq!(m.faces, [[0, 1, 2], [0, 2, 3]]);
+    assert_eq!(m.uvs.as_deref(), Some(&[Vec2::ZERO, Vec2::X, Vec2::ONE, Vec2::Y][..]));
+    // Normals come back unit length.
+    assert_eq!(m.normals.as_deref(), Some(&[Vec3::Y; 4][..]));
+    m.check_indices().unwrap();
+}
+
+#[test]
+fn groups_merge_into_one_mesh_in_the_files_vertex_order() {
+    // Two groups whose faces use the vertices out of order; the second reuses vertex 1.
+    let text = "\
+o first
+v 0 0 0
+v 1 0 0
+v 0 1 0
+v 0 0 1
+f 3 1 2
+o second
+f 4 1 3
+";
+    let m = parse_obj(text, Path::new("two.obj")).unwrap();
+    // File vertices 1 and 3 are used by both groups: they appear once per group, both copies
+    // where their `v` line puts them.
+    assert_eq!(m.positions, [Vec3::ZERO, Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Y, Vec3::Z]);
+    let triangles: Vec<[Vec3; 3]> = (0..m.face_count()).map(|f| m.triangle(f)).collect();
+    assert_eq!(triangles, [[Vec3::Y, Vec3::ZERO, Vec3::X], [Vec3::Z, Vec3::ZERO, Vec3::Y]]);
+    assert_eq!(m.normals, None);
+    assert_eq!(m.uvs, None);
+
+    // One position with two texture coordinates becomes two vertices, next to each other.
+    let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvt 0.5 0.5\nf 1/1 2/2 3/3\nf 1/4 3/3 2/2\n";
+    let m = parse_obj(text, Path::new("seam.obj")).unwrap();
+    assert_eq!(m.positions, [Vec3::ZERO, Vec3::ZERO, Vec3::X, Vec3::Y]);
+    assert_eq!(m.uvs.unwrap()[..2], [Vec2::ZERO, Vec2::splat(0.5)]);
+    assert_eq!(m.faces, [[0, 2, 3], [1, 3, 2]]);
+}
+
+#[test]
+fn negative_indices_count_back() {
+    let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n";
+    let m = parse_obj(text, Path::new("relative.obj")).unwrap();
+    assert_eq!(m.faces, [[0, 1, 2]]);
+}
+
+#[test]
+fn face_indices_out_of_range_are_errors_naming_the_line() {
+    let cases = [
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", 4, 7, "v", 9, 3),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 2 3\n", 4, 3, "v", -4, 3),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", 4, 3, "v", 0, 3),
+        // Negative indices count only what came before the face.
+        ("v 0 0 0\nv 1 0 0\nf 1 2 -3\nv 0 1 0\n", 3, 7, "v", -3, 2),
+        // Texture coordinates and normals are checked too, even when the file has none.
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//2 3//1\n", 5, 8, "vn", 2, 1),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2/1 3/1\n", 4, 3, "vt", 1, 0),
+        // Huge numbers: tobj 4.0.5 alone panics on this one in debug builds (`vn * 3` overflows).
+        (
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//9223372036854775807 2//1 3//1\n",
+            5,
+            3,
+            "vn",
+            i64::MAX,
+            1,
+        ),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9223372036854775807\n", 4, 7, "v", i64::MAX, 3),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/-9223372036854775808 2 3\n", 4, 3, "vt", i64::MIN, 0),
+        // Points and lines are dropped, but their indices are still checked.
+        ("v 0 0 0\nl 1 5\n", 2, 5, "v", 5, 1),
+    ];
+    for (text, line, column, element, index, count) in cases {
+        let e = obj_error(text);
+        assert_eq!(*e.kind, ErrorKind::ObjIndex { element, index, count }, "{text}");
+        assert_eq!(e.position.map(|p| (p.line, p.column)), Some((line, column)), "{text}");
+        assert!(e.to_string().starts_with(&format!("model.obj:{line}:{column}: ")), "{e}");
+    }
+}
+
+#[test]
+fn malformed_obj_files_say_what_is_wrong() {
+    let e = obj_error("v 0 0 0\nv 1 0 x\nv 0 1 0\nf 1 2 3\n");
+    assert_eq!(*e.kind, ErrorKind::Obj(tobj::LoadError::PositionParseError));
+    assert_eq!(e.to_string(), "model.obj: not a valid OBJ file: position parse error");
+    assert!(matches!(*obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n").kind, ErrorKind::Obj(_)));
+    assert!(matches!(*obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/x 2 3\n").kind, ErrorKind::Obj(_)));
+    let four_parts = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1/1 2/1/1 3/1/1\n";
+    assert_eq!(*obj_error(four_parts).kind, ErrorKind::Obj(tobj::LoadError::FaceParseError));
+    assert_eq!(*obj_error("v 0 0 0\nv 1 0 0\n").kind, ErrorKind::ObjNoFaces);
+    assert_eq!(*obj_error("").kind, ErrorKind::ObjNoFaces);
+    assert_eq!(*obj_error("v 0 0 0\nf 1 1\n").kind, ErrorKind::ObjNoFaces, "a line is not a face");
+    // Normals on some corners only.
+    let e = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n");
+    assert_eq!(*e.kind, ErrorKind::ObjPartial { element: "vn" });
+    // Values that parse but cannot be used.
+    let e = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n");
+    assert_eq!(*e.kind, ErrorKind::ObjBadNormal { vertex: 0 });
+    let e = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 nan\nf 1/1 2/1 3/1\n");
+    assert_eq!(*e.kind, ErrorKind::ObjBadUv { vertex: 0 });
+    let e = obj_error("v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n");
+    assert!(
+        matches!(*e.kind, ErrorKind::Mesh(MeshError::NonFinitePosition { vertex: 1, .. })),
+        "{e}"
+    );
+}
+
+#[test]
+fn missing_obj_file_is_named() {
+    let dir = folder("missing_obj");
+    let path = dir.join("nowhere.obj");
+    let e = load_obj(&path).unwrap_err();
+    assert_eq!(e.file, path);
+    assert!(matches!(*e.kind, ErrorKind::Read { .. }));
+    assert!(e.to_string().contains("nowhere.obj: cannot read the file"), "{e}");
+}
+
+#[test]
+fn missing_or_broken_mtl_files_do_not_stop_the_model() {
+    let dir = folder("mtl");
+    let body = "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n";
+    std::fs::write(dir.join("missing.obj"), format!("mtllib nowhere.mtl\n{body}")).unwrap();
+    std::fs::write(dir.join("broken.mtl"), "newmtl red\nKd 1 x\n\u{0}\u{1}garbage\n").unwrap();
+    std::fs::write(dir.join("broken.obj"), format!("mtllib broken.mtl\n{body}")).unwrap();
+    for name in ["missing.obj", "broken.obj"] {
+        let m = load_obj(&dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(m.face_count(), 1, "{name}");
+    }
+}
+
+#[test]
+fn scene_names_the_obj_error_inside_the_model_file() {
+    let dir = folder("scene_obj");
+    std::fs::write(dir.join("bad.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n").unwrap();
+    let scene = dir.join("scene.toml");
+    std::fs::write(&scene, "format = 1\n[[objects]]\nname = \"m\"\nmesh = \"bad.obj\"\n").unwrap();
+    let e = cg_scene::load(&scene).unwrap_err();
+    assert_eq!((e.position.unwrap().line, e.key.as_deref()), (4, Some("objects[0].mesh")));
+    let ErrorKind::File(inner) = &*e.kind else { panic!("{e}") };
+    assert_eq!(inner.file, dir.join("bad.obj"));
+    assert_eq!(inner.position.map(|p| p.line), Some(4));
+    let shown = e.to_string();
+    assert!(
+        shown.contains("scene.toml:4:8: objects[0].mesh: ") && shown.contains("bad.obj:4:7: "),
+        "{shown}"
+    );
+}
+
+/// Writes an RGBA image, rows listed top to bottom as PNG stores them.
+fn write_png(path: &Path, width: u32, rows_top_down: &[[u8; 4]]) {
+    let height = rows_top_down.len() as u32 / width;
+    let bytes: Vec<u8> = rows_top_down.iter().flatten().copied().collect();
+    image::save_buffer(path, &bytes, width, height, image::ColorType::Rgba8).unwrap();
+}
+
+#[test]
+fn png_rows_are_flipped_so_row_0_is_the_bottom() {
+    let dir = folder("png_flip");
+    let path = dir.join("two-by-three.png");
+    let (red, green, blue, white, black, grey) = (
+        [255, 0, 0, 255],
+        [0, 255, 0, 255],
+        [0, 0, 255, 255],
+        [255; 4],
+        [0, 0, 0, 255],
+        [9, 9, 9, 128],
+    );
+    // As an image: red green / blue white / black grey, the top row first.
+    write_png(&path, 2, &[red, green, blue, white, black, grey]);
+    let t = load_texture(&path).unwrap();
+    assert_eq!((t.width, t.height), (2, 3));
+    assert_eq!(t.texel(0, 2), red, "the image's top-left corner is texture coordinate (0, 1)");
+    assert_eq!(t.texel(1, 2), green);
+    assert_eq!(t.texel(0, 0), black, "the image's bottom-left corner is (0, 0)");
+    assert_eq!(t.texel(1, 0), grey);
+}
+
+#[test]
+fn png_colour_types_become_rgba8() {
+    let dir = folder("png_types");
+    let path = dir.join("grey.png");
+    image::save_buffer(&path, &[0, 128, 255, 7], 2, 2, image::ColorType::L8).unwrap();
+    let t = load_texture(&path).unwrap();
+    assert_eq!(
+        t.texels,
+        [[255, 255, 255, 255], [7, 7, 7, 255], [0, 0, 0, 255], [128, 128, 128, 255]]
+    );
+    let path = dir.join("deep.png");
+    let rgb16: Vec<u8> = [0xffffu16, 0x8080, 0x0000].iter().flat_map(|c| c.to_be_bytes()).collect();
+    image::save_buffer(&path, &rgb16, 1, 1, image::ColorType::Rgb16).unwrap();
+    assert_eq!(load_texture(&path).unwrap().texels, [[255, 128, 0, 255]]);
+}
+
+#[test]
+fn broken_images_say_so_and_name_the_file() {
+    let dir = folder("png_broken");
+    let good = dir.join("good.png");
+    write_png(&good, 4, &[[1, 2, 3, 4]; 16]);
+    let bytes = std::fs::read(&good).unwrap();
+
+    let truncated = dir.join("truncated.png");
+    std::fs::write(&truncated, &bytes[..bytes.len() / 2]).unwrap();
+    let e = load_texture(&truncated).unwrap_err();
+    assert!(matches!(*e.kind, ErrorKind::Png { .. }), "{e}");
+    assert!(
+        e.to_string()
+            .starts_with(&format!("{}: corrupt or truncated PNG image: ", truncated.display())),
+        "{e}"
+    );
+
+    let corrupt = dir.join("corrupt.png");
+    let mut flipped = bytes.clone();
+    for b in &mut flipped[16..] {
+        *b ^= 0x5a;
+    }
+    std::fs::write(&corrupt, &flipped).unwrap();
+    assert!(matches!(*load_texture(&corrupt).unwrap_err().kind, ErrorKind::Png { .. }));
+
+    let not_png = dir.join("photo.png");
+    std::fs::write(&not_png, b"\xff\xd8\xff\xe0\x00\x10JFIF\x00").unwrap();
+    let e = load_texture(&not_png).unwrap_err();
+    assert_eq!(*e.kind, ErrorKind::NotPng);
+    assert!(e.to_string().starts_with(&format!("{}: not a PNG image", not_png.display())), "{e}");
+    assert!(e.describe(cg_core::lang::Lang::Ja).contains("PNG 画像ではありません"));
+
+    let e = load_texture(&dir.join("absent.png")).unwrap_err();
+    assert!(matches!(*e.kind, ErrorKind::Read { .. }));
+}
