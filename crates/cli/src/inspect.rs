@@ -15,7 +15,7 @@ use cg_core::product::MatrixProduct;
 use cg_core::scene::{Camera, NormalSource, Object, Scene, Shading};
 
 /// Options of `cg inspect`.
-#[derive(clap::Args, Default)]
+#[derive(clap::Args)]
 pub struct Args {
     /// The scene file (default: the course's sample scene) / シーンファイル
     scene: Option<PathBuf>,
@@ -33,20 +33,30 @@ pub struct Args {
     decimals: usize,
 }
 
+impl Args {
+    /// The options of a bare `cg inspect`, with clap's defaults (the main job uses them).
+    pub fn defaults() -> Args {
+        use clap::{Args as _, FromArgMatches as _};
+        let command = Args::augment_args(clap::Command::new("inspect"));
+        Args::from_arg_matches(&command.get_matches_from(["inspect"]))
+            .expect("a bare `inspect` parses with its defaults")
+    }
+}
+
 /// Loads the scene and prints the inspection.
 pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let path = crate::kit_path(args.scene.as_deref(), crate::COURSE_SAMPLE);
     let scene = cg_scene::load(&path).map_err(|e| e.describe(lang))?;
-    if let Some(name) = &args.object {
-        if !scene.objects.iter().any(|o| &o.name == name) {
-            let names: Vec<&str> = scene.objects.iter().map(|o| o.name.as_str()).collect();
-            return Err(format!(
-                "{} \"{name}\" ({}: {})",
-                lang.pick("オブジェクトがありません", "no object named"),
-                lang.pick("あるもの", "there are"),
-                names.join(", ")
-            ));
-        }
+    if let Some(name) = &args.object
+        && !scene.objects.iter().any(|o| &o.name == name)
+    {
+        let names: Vec<&str> = scene.objects.iter().map(|o| o.name.as_str()).collect();
+        return Err(format!(
+            "{} \"{name}\" ({}: {})",
+            lang.pick("オブジェクトがありません", "no object named"),
+            lang.pick("あるもの", "there are"),
+            names.join(", ")
+        ));
     }
     let rows = if args.all || args.max_rows == 0 { usize::MAX } else { args.max_rows };
     let text = report(
@@ -212,10 +222,35 @@ fn object_report(
     let problems = v.problems();
     if !problems.is_empty() {
         let _ = writeln!(w, "  {} ({}):", t("指摘", "findings"), problems.len());
-        for p in problems.iter().take(rows) {
-            let _ = writeln!(w, "    - {}", p.describe(lang));
+        // Grouped by kind, in order of first appearance: an open grid's 40 border edges are one
+        // line with a few examples, not 40 lines.
+        let mut kinds: Vec<(std::mem::Discriminant<_>, Vec<&_>)> = Vec::new();
+        for p in problems {
+            let d = std::mem::discriminant(p);
+            match kinds.iter_mut().find(|(k, _)| *k == d) {
+                Some((_, list)) => list.push(p),
+                None => kinds.push((d, vec![p])),
+            }
         }
-        more(w, problems.len(), rows, lang);
+        let examples = if rows == usize::MAX { usize::MAX } else { 3 };
+        for (_, list) in &kinds {
+            for p in list.iter().take(examples) {
+                let _ = writeln!(w, "    - {}", p.describe(lang));
+            }
+            if list.len() > examples {
+                let _ = writeln!(
+                    w,
+                    "      … {} {}",
+                    list.len() - examples,
+                    t(
+                        "件の同じ種類の指摘（--all で全部表示）",
+                        "more of this kind (--all lists them)"
+                    )
+                );
+            }
+            let _ =
+                writeln!(w, "      {}: {}", t("よくある原因", "usual cause"), list[0].hint(lang));
+        }
     }
 
     // Vertex table

@@ -44,7 +44,7 @@ fn main() -> ExitCode {
     let lang = cli.lang.unwrap_or_else(Lang::from_env);
     let result = match cli.command {
         Some(Command::Inspect(args)) => inspect::run(&args, lang),
-        None => inspect::run(&inspect::Args::default(), lang),
+        None => inspect::run(&inspect::Args::defaults(), lang),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

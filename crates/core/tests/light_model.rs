@@ -74,7 +74,7 @@ fn gl_equation(
         };
         let spot = match light.spot {
             None => 1.0,
-            Some((_, _, cutoff)) if cutoff == 180.0 => 1.0,
+            Some((_, _, 180.0)) => 1.0,
             Some((direction, exponent, cutoff)) => {
                 let c = dot_plus(-vp, direction.normalize());
                 if c >= cutoff.to_radians().cos() { c.powf(exponent) } else { 0.0 }
@@ -533,8 +533,8 @@ fn lecture_and_opengl_modes_differ_exactly_where_documented() {
     for (p, n) in receivers() {
         let a = shade(GL, global, &plain, &material, p, n, v);
         let b = shade(BLINN, global, &plain, &material, p, n, v);
-        for k in 0..4 {
-            tol(terms_array(&a)[k], terms_array(&b)[k], TERM_NAMES[k]);
+        for ((x, y), name) in terms_array(&a).into_iter().zip(terms_array(&b)).zip(TERM_NAMES) {
+            tol(x, y, name);
         }
         // 2. Phong instead of Blinn changes the specular only, to the lecture's (R·V)ⁿ.
         let c = shade(PHONG, global, &plain, &material, p, n, v);

@@ -291,7 +291,8 @@ fn row16_point_and_spot_lights_on_the_point_are_finite() {
                 LightModel::OpenGl { local_viewer: false },
                 LightModel::Lecture { specular: Specular::Blinn, local_viewer: false },
             ] {
-                let t = shade(model, global, &[light.clone()], &material, Vec3::ZERO, n, v);
+                let t =
+                    shade(model, global, std::slice::from_ref(&light), &material, Vec3::ZERO, n, v);
                 assert_finite(&t, &format!("d = {d}, {model:?}"));
                 // Relative 8ε: a handful of f32 operations on each term.
                 let tol = |x: f64| 8.0 * EPS * x;
