@@ -192,6 +192,21 @@ fn object_report(
         normals
     );
 
+    // Welding (NUMERICS row 3: say which was used)
+    let weld = match object.weld {
+        None => t("位置による頂点の統合: なし", "welded by position: no").to_owned(),
+        Some(r) => format!(
+            "{} {}: {} {}, {} {}",
+            t("位置による頂点の統合: あり 許容値", "welded by position: yes, tolerance"),
+            decimal(r.tolerance, d),
+            r.merged_vertices,
+            t("頂点を統合", "vertices merged"),
+            r.removed_faces,
+            t("面を削除", "faces removed")
+        ),
+    };
+    let _ = writeln!(w, "  {weld}");
+
     // Mesh check
     let v = mesh.validate();
     let yes_no =

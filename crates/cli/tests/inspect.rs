@@ -134,3 +134,33 @@ fn an_unknown_object_lists_the_objects() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("teapot") && err.contains("pyramid"), "{err}");
 }
+
+#[test]
+fn inspect_says_whether_the_mesh_was_welded() {
+    let dir = std::env::temp_dir().join(format!("cg-inspect-weld-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    // Two triangles of a square, each with its own copies of the shared diagonal's corners.
+    std::fs::write(
+        dir.join("square.obj"),
+        "v 0 0 0\nv 1 0 0\nv 1 0 -1\nv 0 0 0\nv 1 0 -1\nv 0 0 -1\nf 1 2 3\nf 4 5 6\n",
+    )
+    .unwrap();
+    let scene = |weld: &str| {
+        let path = dir.join(format!("scene-{}.toml", weld.len()));
+        let text =
+            format!("format = 1\n[[objects]]\nname = \"sq\"\nmesh = \"square.obj\"\n{weld}\n");
+        std::fs::write(&path, text).unwrap();
+        stdout(&cg(&["inspect", path.to_str().unwrap(), "--lang", "en"]))
+    };
+    let welded = scene("weld = true");
+    let plain = scene("");
+    std::fs::remove_dir_all(&dir).ok();
+    assert!(
+        welded
+            .contains("welded by position: yes, tolerance 0.0: 2 vertices merged, 0 faces removed"),
+        "{welded}"
+    );
+    assert!(welded.contains("4 vertices, 2 faces"), "{welded}");
+    assert!(plain.contains("welded by position: no"), "{plain}");
+    assert!(plain.contains("6 vertices, 2 faces"), "{plain}");
+}

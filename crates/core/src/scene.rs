@@ -94,6 +94,20 @@ pub struct Object {
     pub transform: MatrixProduct,
     /// An optional texture.
     pub texture: Option<TextureUse>,
+    /// Whether the mesh was welded by position when it was loaded, and what that did
+    /// (NUMERICS.md row 3: an unwelded seam shows a crease; the report says which was used).
+    pub weld: Option<WeldRecord>,
+}
+
+/// What welding by position ([`Mesh::weld_by_position`]) did to an object's mesh.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WeldRecord {
+    /// Vertices closer than this were merged (0 = only bit-equal positions).
+    pub tolerance: f32,
+    /// How many vertices disappeared into others.
+    pub merged_vertices: usize,
+    /// How many faces collapsed and were removed.
+    pub removed_faces: usize,
 }
 
 /// Everything a renderer needs to draw one image.
@@ -231,6 +245,7 @@ mod tests {
                 material: Material::default(),
                 transform: MatrixProduct::identity().then(Factor::translate(Vec3::Y)),
                 texture: None,
+                weld: None,
             }],
             textures: vec![],
         }

@@ -207,6 +207,8 @@ pub enum Expected {
     Normals,
     /// A material's name or an inline material table.
     Material,
+    /// `true`, `false` or a tolerance ≥ 0.
+    Weld,
 }
 
 /// What was written, for [`ErrorKind::WrongType`].
@@ -585,6 +587,7 @@ impl Expected {
                 "\"face\", \"given\", \"smooth\" or { weighting = ..., crease_deg = ... }"
             }
             Expected::Material => "a material name in quotes or an inline table { ... }",
+            Expected::Weld => "true, false or a distance tolerance ≥ 0",
         }
     }
 
@@ -607,6 +610,7 @@ impl Expected {
                 "\"face\", \"given\", \"smooth\" または { weighting = ..., crease_deg = ... }"
             }
             Expected::Material => "引用符で囲んだ材質名かインラインテーブル { ... }",
+            Expected::Weld => "true、false、または 0 以上の距離の許容値",
         }
     }
 }

@@ -12,7 +12,9 @@ use cg_core::light::{Attenuation, Light, LightKind, LightModel, Material, Specul
 use cg_core::math::{try_normalize_f64, wrap_degrees};
 use cg_core::normals::Weighting;
 use cg_core::product::{Axis, Factor, MatrixProduct, Param};
-use cg_core::scene::{Camera, NormalSource, Object, Projection, Scene, Shading, TextureUse};
+use cg_core::scene::{
+    Camera, NormalSource, Object, Projection, Scene, Shading, TextureUse, WeldRecord,
+};
 use cg_core::texture::{Filter, Sampler, TexEnv, Wrap};
 
 use crate::error::{ErrorKind, Expected, Rule, SceneError};
@@ -49,6 +51,8 @@ pub(crate) struct SceneSpec {
 pub(crate) struct ObjectSpec {
     pub name: String,
     pub geometry: Geometry,
+    /// `weld`: the tolerance, when the mesh is to be welded by position.
+    pub weld: Option<f32>,
     pub normals: NormalSource,
     /// Where `normals` is (or the object, when it is left out).
     pub normals_at: At,
@@ -181,6 +185,19 @@ impl SceneSpec {
                     load_obj(path).map_err(|e| at.error(src, ErrorKind::File(Box::new(e))))?
                 }
             };
+            let (mesh, weld) = match spec.weld {
+                None => (mesh, None),
+                Some(tolerance) => {
+                    let before = mesh.vertex_count();
+                    let welded = mesh.weld_by_position(tolerance);
+                    let record = WeldRecord {
+                        tolerance,
+                        merged_vertices: before - welded.mesh.vertex_count(),
+                        removed_faces: welded.removed_faces.len(),
+                    };
+                    (welded.mesh, Some(record))
+                }
+            };
             if spec.normals == NormalSource::Given && mesh.normals.is_none() {
                 return Err(spec.normals_at.error(src, ErrorKind::NeedsNormals));
             }
@@ -210,6 +227,7 @@ impl SceneSpec {
                 material: spec.material,
                 transform: spec.transform,
                 texture,
+                weld,
             });
         }
         Ok(scene)
@@ -558,7 +576,7 @@ fn read_object(
     materials: &HashMap<String, Material>,
     base: &Path,
 ) -> Result<ObjectSpec, SceneError> {
-    t.only(&["name", "shape", "mesh", "normals", "material", "transform", "texture"])?;
+    t.only(&["name", "shape", "mesh", "weld", "normals", "material", "transform", "texture"])?;
     let name = t.require("name")?.str()?.to_owned();
     let geometry = match (t.get("shape"), t.get("mesh")) {
         (Some(_), Some(mesh)) => return Err(mesh.error(ErrorKind::ShapeAndMesh)),
@@ -594,7 +612,19 @@ fn read_object(
         },
     };
     let texture = t.optional("texture", |v| read_texture(v, base))?;
-    Ok(ObjectSpec { name, geometry, normals, normals_at, material, transform, texture })
+    let weld = t.optional("weld", read_weld)?.flatten();
+    Ok(ObjectSpec { name, geometry, weld, normals, normals_at, material, transform, texture })
+}
+
+/// `weld = true` (bit-equal positions), `weld = false`, or `weld = <tolerance ≥ 0>`.
+fn read_weld(v: &Value<'_>) -> Result<Option<f32>, SceneError> {
+    if v.is_bool() {
+        return Ok(v.bool()?.then_some(0.0));
+    }
+    if v.is_number() {
+        return v.f32(Rule::NonNegative).map(Some);
+    }
+    Err(v.wrong_type(Expected::Weld))
 }
 
 fn read_normals(v: &Value<'_>) -> Result<NormalSource, SceneError> {

@@ -286,6 +286,16 @@ impl<'a> Value<'a> {
         matches!(self.value.get_ref(), DeValue::Table(_))
     }
 
+    /// Whether this value is `true` or `false`.
+    pub fn is_bool(&self) -> bool {
+        matches!(self.value.get_ref(), DeValue::Boolean(_))
+    }
+
+    /// Whether this value is an integer or a float.
+    pub fn is_number(&self) -> bool {
+        matches!(self.value.get_ref(), DeValue::Integer(_) | DeValue::Float(_))
+    }
+
     /// Whether this value is a string.
     pub fn is_str(&self) -> bool {
         matches!(self.value.get_ref(), DeValue::String(_))

@@ -182,6 +182,60 @@ fn scene_names_the_obj_error_inside_the_model_file() {
     );
 }
 
+/// A cube stored as six separate quads, each with its own four `v` lines, as exporters that split
+/// vertices at every hard edge write it: 24 vertices where 8 positions are meant (NUMERICS row 3).
+fn split_cube_obj() -> String {
+    let corner = |i: u32| [(i & 1) as f32, ((i >> 1) & 1) as f32, ((i >> 2) & 1) as f32];
+    // Corners of each face, counter-clockwise seen from outside (bit 0 = x, 1 = y, 2 = z).
+    let faces =
+        [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
+    let mut text = String::new();
+    for (f, quad) in faces.iter().enumerate() {
+        for &c in quad {
+            let [x, y, z] = corner(c);
+            text += &format!("v {x} {y} {z}\n");
+        }
+        let b = 4 * f + 1;
+        text += &format!("f {} {} {} {}\n", b, b + 1, b + 2, b + 3);
+    }
+    text
+}
+
+#[test]
+fn weld_merges_split_vertices_and_the_scene_records_it() {
+    let dir = folder("weld");
+    std::fs::write(dir.join("cube.obj"), split_cube_obj()).unwrap();
+    let scene_with = |weld: &str| {
+        let path = dir.join("scene.toml");
+        let text =
+            format!("format = 1\n[[objects]]\nname = \"cube\"\nmesh = \"cube.obj\"\n{weld}\n");
+        std::fs::write(&path, text).unwrap();
+        cg_scene::load(&path)
+    };
+    // Not welded: every face is an island, so the cube is open along all 12 edges (twice).
+    let plain = scene_with("").unwrap();
+    let o = &plain.objects[0];
+    assert_eq!((o.mesh.vertex_count(), o.weld), (24, None));
+    assert!(!o.mesh.validate().is_closed());
+    assert_eq!(scene_with("weld = false").unwrap().objects[0].weld, None);
+    // Welded exactly: 8 corners, closed, and the scene says what welding did.
+    for key in ["weld = true", "weld = 0", "weld = 1e-4"] {
+        let s = scene_with(key).unwrap();
+        let o = &s.objects[0];
+        assert_eq!(o.mesh.vertex_count(), 8, "{key}");
+        assert!(o.mesh.validate().is_clean(), "{key}: {:?}", o.mesh.validate().problems());
+        let record = o.weld.unwrap_or_else(|| panic!("{key}: no weld record"));
+        assert_eq!((record.merged_vertices, record.removed_faces), (16, 0), "{key}");
+    }
+    // Mistakes name line 5, the key and what is allowed.
+    for (key, needle) in [("weld = -1", "weld"), ("weld = \"yes\"", "true, false or a distance")] {
+        let e = scene_with(key).unwrap_err();
+        assert_eq!(e.position.map(|p| p.line), Some(5), "{key}: {e}");
+        assert_eq!(e.key.as_deref(), Some("objects[0].weld"), "{key}: {e}");
+        assert!(e.to_string().contains(needle), "{key}: {e}");
+    }
+}
+
 /// Writes an RGBA image, rows listed top to bottom as PNG stores them.
 fn write_png(path: &Path, width: u32, rows_top_down: &[[u8; 4]]) {
     let height = rows_top_down.len() as u32 / width;
