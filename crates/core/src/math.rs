@@ -42,6 +42,29 @@ pub fn cross_kahan(a: Vec3, b: Vec3) -> Vec3 {
     )
 }
 
+/// The f64 sibling of [`difference_of_products`]: `a·b − c·d` within 1.5 ulp, and exactly 0 when
+/// `a·b = c·d` exactly.
+#[must_use]
+#[inline]
+pub fn difference_of_products_f64(a: f64, b: f64, c: f64, d: f64) -> f64 {
+    let cd = c * d;
+    // err is exactly c·d − round(c·d)
+    let err = (-c).mul_add(d, cd);
+    let dop = a.mul_add(b, -cd);
+    dop + err
+}
+
+/// The f64 sibling of [`cross_kahan`]: every component from [`difference_of_products_f64`].
+#[must_use]
+#[inline]
+pub fn cross_kahan_f64(a: DVec3, b: DVec3) -> DVec3 {
+    DVec3::new(
+        difference_of_products_f64(a.y, b.z, a.z, b.y),
+        difference_of_products_f64(a.z, b.x, a.x, b.z),
+        difference_of_products_f64(a.x, b.y, a.y, b.x),
+    )
+}
+
 /// The cross product `a × b` computed in f64 and rounded once to f32.
 ///
 /// The products of two f32 values are exact in f64, so each component is the correctly rounded

@@ -21,7 +21,7 @@
 use glam::{DMat3, DVec3, Mat3, Mat4, Vec3};
 
 use crate::lang::Lang;
-use crate::math::{cross_f64, try_normalize, try_normalize_f64};
+use crate::math::{cross_f64, cross_kahan_f64, try_normalize, try_normalize_f64};
 use crate::mesh::{Mesh, MeshError};
 use crate::scene::NormalSource;
 
@@ -48,28 +48,6 @@ const DEGENERATE_SINE: f64 = 1.0 / (1u128 << 70) as f64;
 /// off by at most `4ε₆₄·Σ|terms|` = 2⁻⁵⁰·Σ. A sum longer than 2⁻²⁶·Σ therefore has a direction
 /// correct to 2⁻²⁴ (one f32 ulp); a shorter one is rounding noise, not a direction.
 const CANCEL_FRACTION: f64 = 1.0 / (1u64 << 26) as f64;
-
-/// `a·b − c·d` in f64 by Kahan's algorithm with a fused multiply-add: within 1.5 ulp of the exact
-/// value, and exactly 0 when `a·b = c·d` exactly. (The f64 sibling of
-/// [`crate::math::difference_of_products`].)
-#[inline]
-fn difference_of_products_f64(a: f64, b: f64, c: f64, d: f64) -> f64 {
-    let cd = c * d;
-    // err is exactly c·d − round(c·d)
-    let err = (-c).mul_add(d, cd);
-    let dop = a.mul_add(b, -cd);
-    dop + err
-}
-
-/// `a × b` in f64 with every component from [`difference_of_products_f64`] (≤ 1.5 ulp each).
-#[inline]
-fn cross_kahan_f64(a: DVec3, b: DVec3) -> DVec3 {
-    DVec3::new(
-        difference_of_products_f64(a.y, b.z, a.z, b.y),
-        difference_of_products_f64(a.z, b.x, a.x, b.z),
-        difference_of_products_f64(a.x, b.y, a.y, b.x),
-    )
-}
 
 /// The edge `to − from` as an unevaluated f64 sum `hi + lo` that is *exact* (Knuth's TwoSum).
 ///

@@ -6,7 +6,6 @@ use cg_core::glam::{DVec3, Vec3};
 use cg_core::optics::{Interface, fresnel_dielectric, reflect, refract, schlick};
 use cg_testkit::{Inputs, assert_approx_eq, ulps};
 use proptest::prelude::*;
-use proptest::test_runner::RngSeed;
 
 const EPS: f64 = f32::EPSILON as f64;
 
@@ -449,12 +448,7 @@ fn fresnel_handles_its_edges() {
 // Property tests (seeded)
 
 fn config() -> ProptestConfig {
-    ProptestConfig {
-        rng_seed: RngSeed::Fixed(0x0b71c5),
-        failure_persistence: None,
-        cases: if cfg!(debug_assertions) { 2_000 } else { 20_000 },
-        ..ProptestConfig::default()
-    }
+    cg_testkit::prop::config(2_000, 0x0b71c5)
 }
 
 /// A unit vector from a uniform point in the cube, normalised in f64 and rounded once.

@@ -10,23 +10,11 @@ use cg_core::camera::{CameraLimits, MouseButton, MouseState, OrbitCamera};
 use cg_core::glam::{DMat4, DVec3, DVec4, Mat4, Vec3};
 use cg_core::transform::{look_at, transform_point};
 use cg_testkit::assert_approx_eq;
+use cg_testkit::prop::log_uniform;
 use proptest::prelude::*;
-use proptest::test_runner::RngSeed;
 
 fn config(cases: u32) -> ProptestConfig {
-    ProptestConfig {
-        cases: if cfg!(debug_assertions) { cases } else { cases * 4 },
-        rng_seed: RngSeed::Fixed(0xca4e_0a10),
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
-
-fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f32> {
-    (lo..=hi, any::<bool>()).prop_map(|(e, neg)| {
-        let m = 10f64.powf(e) as f32;
-        if neg { -m } else { m }
-    })
+    cg_testkit::prop::config(cases, 0xca4e_0a10)
 }
 
 /// The view matrix from the GL calls, in f64 from the same f32 fields: rows of

@@ -7,28 +7,11 @@ use cg_core::glam::{DMat4, DVec3, Mat4, Vec3};
 use cg_core::product::{Axis, Factor, MatrixProduct, Param, format_number};
 use cg_core::transform::{self, TransformError};
 use cg_testkit::assert_approx_eq;
+use cg_testkit::prop::vec3;
 use proptest::prelude::*;
-use proptest::test_runner::RngSeed;
 
 fn config(cases: u32) -> ProptestConfig {
-    ProptestConfig {
-        cases: if cfg!(debug_assertions) { cases } else { cases * 4 },
-        rng_seed: RngSeed::Fixed(0x9a0d_0c75),
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
-
-fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f32> {
-    (lo..=hi, any::<bool>()).prop_map(|(e, neg)| {
-        let m = 10f64.powf(e) as f32;
-        if neg { -m } else { m }
-    })
-}
-
-fn vec3(lo: f64, hi: f64) -> impl Strategy<Value = Vec3> {
-    (log_uniform(lo, hi), log_uniform(lo, hi), log_uniform(lo, hi))
-        .prop_map(|(x, y, z)| Vec3::new(x, y, z))
+    cg_testkit::prop::config(cases, 0x9a0d_0c75)
 }
 
 /// Valid factors of moderate size (translations ≤ 10, scales in [0.1, 10] with either sign).

@@ -11,30 +11,11 @@ use cg_core::transform::{
     scale, transform_point, transform_vector, translate,
 };
 use cg_testkit::assert_approx_eq;
+use cg_testkit::prop::{log_uniform, vec3};
 use proptest::prelude::*;
-use proptest::test_runner::RngSeed;
 
 fn config(cases: u32) -> ProptestConfig {
-    ProptestConfig {
-        cases: if cfg!(debug_assertions) { cases } else { cases * 4 },
-        rng_seed: RngSeed::Fixed(0x7a11_5f0e),
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
-
-/// A magnitude `10^e`, `e` uniform in `[lo, hi]`, with either sign (NUMERICS.md: log-uniform,
-/// both signs).
-fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f32> {
-    (lo..=hi, any::<bool>()).prop_map(|(e, neg)| {
-        let m = 10f64.powf(e) as f32;
-        if neg { -m } else { m }
-    })
-}
-
-fn vec3(lo: f64, hi: f64) -> impl Strategy<Value = Vec3> {
-    (log_uniform(lo, hi), log_uniform(lo, hi), log_uniform(lo, hi))
-        .prop_map(|(x, y, z)| Vec3::new(x, y, z))
+    cg_testkit::prop::config(cases, 0x7a11_5f0e)
 }
 
 /// Angles in degrees: small, typical and huge (animation angles that were never reduced).

@@ -118,7 +118,7 @@ pub(crate) fn read(src: &Source<'_>, base: &Path) -> Result<SceneSpec, SceneErro
     };
     let camera = match root.get("camera") {
         Some(v) => read_camera(&v.table()?)?,
-        None => Camera::Orbit(course_camera()),
+        None => Camera::Orbit(OrbitCamera::course_sample()),
     };
     let projection = match root.get("projection") {
         Some(v) => read_projection(&v.table()?)?,
@@ -251,17 +251,6 @@ fn read_window(t: &Table<'_>) -> Result<(u32, u32, Rgb), SceneError> {
     ))
 }
 
-/// The course's camera: distance 15, pitch −30°, yaw 0°, looking at the origin.
-fn course_camera() -> OrbitCamera {
-    OrbitCamera {
-        yaw_deg: 0.0,
-        pitch_deg: -30.0,
-        distance: 15.0,
-        target: Vec3::ZERO,
-        limits: CameraLimits::default(),
-    }
-}
-
 #[derive(Clone, Copy)]
 enum CameraKind {
     Orbit,
@@ -275,7 +264,7 @@ fn read_camera(t: &Table<'_>) -> Result<Camera, SceneError> {
     match kind {
         CameraKind::Orbit => {
             t.only(&["kind", "distance", "pitch_deg", "yaw_deg", "target", "limits"])?;
-            let course = course_camera();
+            let course = OrbitCamera::course_sample();
             let limits = match t.get("limits") {
                 Some(v) => read_limits(&v.table()?)?,
                 None => course.limits,
