@@ -159,6 +159,14 @@ mod tests {
     }
 
     #[test]
+    fn kahan_f64_is_exactly_zero_for_equal_products() {
+        let (a, b) = (0.1f64, 0.3f64);
+        assert_eq!(difference_of_products_f64(a, b, b, a), 0.0);
+        // The plain fused form is not: fma(a, b, −round(b·a)) is the rounding error of b·a.
+        assert_ne!(a.mul_add(b, -(b * a)), 0.0, "premise: the fused form leaves a residual");
+    }
+
+    #[test]
     fn crosses_of_parallel_vectors_are_exactly_zero() {
         let v = Vec3::new(0.1, -3.7e5, 2.5e-7);
         for w in [v, -v, v * 2.0] {

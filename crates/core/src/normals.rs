@@ -686,14 +686,6 @@ mod tests {
     use super::*;
 
     #[test]
-    fn kahan_f64_is_exactly_zero_for_equal_products() {
-        let (a, b) = (0.1f64, 0.3f64);
-        assert_eq!(difference_of_products_f64(a, b, b, a), 0.0);
-        // The plain fused form is not: fma(a, b, −round(b·a)) is the rounding error of b·a.
-        assert_ne!(a.mul_add(b, -(b * a)), 0.0, "premise: the fused form leaves a residual");
-    }
-
-    #[test]
     fn exact_edge_is_exact() {
         // 1 − 1e-12 (with 1e-12 rounded to f32) needs 64 bits: hi + lo must still be exact.
         let (from, to) = (Vec3::splat(1e-12), Vec3::ONE);
