@@ -9,7 +9,7 @@ use cg_core::camera::OrbitCamera;
 use cg_core::lang::Lang;
 use cg_core::light::{LightKind, LightModel, Specular};
 use cg_core::mesh::Orientation;
-use cg_core::normals::face_normal;
+use cg_core::normals::{Weighting, face_normal};
 use cg_core::notation::{braces, decimal, face, tuple, vertex_line};
 use cg_core::product::MatrixProduct;
 use cg_core::scene::{Camera, NormalSource, Object, Scene, Shading};
@@ -173,9 +173,19 @@ fn object_report(
     let normals = match object.normals {
         NormalSource::Face => t("面の法線（面ごと）", "face normals (per face)").to_owned(),
         NormalSource::Vertex { weighting, crease_deg } => format!(
-            "{} ({weighting:?}{})",
+            "{} ({}{})",
             t("頂点の法線", "vertex normals"),
-            crease_deg.map_or(String::new(), |c| format!(", crease {}°", decimal(c, 1)))
+            match weighting {
+                Weighting::Uniform => t("面の法線の単純平均", "uniform average of face normals"),
+                Weighting::Area => t("面積で重み付け", "area-weighted"),
+                Weighting::Angle => t("角度で重み付け", "angle-weighted"),
+                Weighting::Max => t("Max の重み付け", "Max-weighted"),
+            },
+            crease_deg.map_or(String::new(), |c| format!(
+                ", {} {}°",
+                t("稜線とみなす角度", "crease angle"),
+                decimal(c, 1)
+            ))
         ),
         NormalSource::Given => t("ファイルの法線", "normals from the file").to_owned(),
     };
