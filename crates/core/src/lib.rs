@@ -30,6 +30,8 @@
 //! tests in `crates/core/tests/`.
 
 pub mod camera;
+pub mod features;
+pub mod image;
 pub mod lang;
 pub mod light;
 pub mod math;

@@ -1,12 +1,14 @@
 //! The in-memory scene (シーン): what every renderer draws. Pure data; the TOML format that
 //! describes it, and the loading of OBJ and PNG files, live in the `cg-scene` crate.
 
-use glam::{Mat4, Vec3};
+use glam::{Mat3, Mat4, Vec3};
 
 use crate::Rgb;
 use crate::camera::OrbitCamera;
+use crate::lang::Lang;
 use crate::light::{Light, LightModel, Material};
 use crate::mesh::Mesh;
+use crate::normals::{NormalsError, normal_matrix, prepare_normals};
 use crate::product::{Factor, MatrixProduct, format_number};
 use crate::texture::{Sampler, TexEnv, Texture};
 use crate::transform::{TransformError, look_at};
@@ -97,6 +99,25 @@ pub struct Object {
     /// Whether the mesh was welded by position when it was loaded, and what that did
     /// (NUMERICS.md row 3: an unwelded seam shows a crease; the report says which was used).
     pub weld: Option<WeldRecord>,
+    /// The exact surface the mesh approximates, when there is one: the ray tracer intersects it
+    /// instead of the triangles; rasterizers draw the mesh.
+    pub analytic: Option<Analytic>,
+}
+
+/// An exact surface in model space, for renderers that can draw it without triangles.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Analytic {
+    /// The sphere of this radius about the model-space origin (the mesh is a tessellation of it).
+    Sphere {
+        /// Radius (> 0).
+        radius: f32,
+    },
+    /// The square `[-size/2, size/2]²` in the plane y = 0, facing +Y, with texture coordinate
+    /// `((x + size/2)/size, (z + size/2)/size)`, exactly as [`crate::shapes::grid`] lays it out.
+    Plane {
+        /// Side length (> 0).
+        size: f32,
+    },
 }
 
 /// What welding by position ([`Mesh::weld_by_position`]) did to an object's mesh.
@@ -217,12 +238,102 @@ impl Scene {
     }
 }
 
+/// An object made ready to draw: its shading normals made (per [`Object::normals`]) and its
+/// model matrix multiplied out. Every renderer starts from these.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Prepared<'a> {
+    /// The object as the scene gives it.
+    pub object: &'a Object,
+    /// The mesh to draw, in model space, with `normals` set (face normals split per face,
+    /// smoothed vertex normals, or the given ones checked and normalised).
+    pub mesh: Mesh,
+    /// Model matrix (モデル座標系→ワールド座標系).
+    pub model: Mat4,
+    /// The cofactor matrix of `model`'s upper 3×3: transforms normals to world space, correct
+    /// under mirroring and non-uniform scale (normalise after use).
+    pub normal_matrix: Mat3,
+    /// `det(model) < 0`: the model transform mirrors, so counter-clockwise faces become clockwise
+    /// on screen and the cofactor normals point inwards; renderers flip both back.
+    pub mirrored: bool,
+}
+
+/// Why an object could not be made ready to draw, naming it.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum PrepareError {
+    /// Its transform has an invalid factor.
+    #[error("object \"{object}\": {source}")]
+    Transform {
+        /// The object's name.
+        object: String,
+        /// What is wrong with the transform.
+        source: TransformError,
+    },
+    /// Its shading normals cannot be made.
+    #[error("object \"{object}\": {source}")]
+    Normals {
+        /// The object's name.
+        object: String,
+        /// What is wrong with the normals.
+        source: NormalsError,
+    },
+}
+
+impl PrepareError {
+    /// The message for a student in `lang`.
+    #[must_use]
+    pub fn message(&self, lang: Lang) -> String {
+        match self {
+            PrepareError::Transform { object, source } => {
+                format!("{} \"{object}\": {source}", lang.pick("オブジェクト", "object"))
+            }
+            PrepareError::Normals { object, source } => {
+                format!(
+                    "{} \"{object}\": {}",
+                    lang.pick("オブジェクト", "object"),
+                    source.message(lang)
+                )
+            }
+        }
+    }
+}
+
+impl Object {
+    /// This object made ready to draw; see [`Prepared`].
+    ///
+    /// # Errors
+    /// An invalid transform factor, or normals that cannot be made (see [`prepare_normals`]).
+    pub fn prepare(&self) -> Result<Prepared<'_>, PrepareError> {
+        let model = self
+            .transform
+            .matrix()
+            .map_err(|source| PrepareError::Transform { object: self.name.clone(), source })?;
+        let mesh = prepare_normals(&self.mesh, self.normals)
+            .map_err(|source| PrepareError::Normals { object: self.name.clone(), source })?;
+        Ok(Prepared {
+            object: self,
+            mesh,
+            model,
+            normal_matrix: normal_matrix(model),
+            mirrored: model.determinant() < 0.0,
+        })
+    }
+}
+
+impl Scene {
+    /// Every object made ready to draw, in drawing order.
+    ///
+    /// # Errors
+    /// The first object that cannot be prepared, named.
+    pub fn prepare(&self) -> Result<Vec<Prepared<'_>>, PrepareError> {
+        self.objects.iter().map(Object::prepare).collect()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::camera::OrbitCamera;
     use crate::light::Material;
-    use crate::mesh::Mesh;
     use crate::transform::{perspective, rotate_x_deg, translate};
 
     fn scene(camera: Camera) -> Scene {
@@ -246,6 +357,7 @@ mod tests {
                 transform: MatrixProduct::identity().then(Factor::translate(Vec3::Y)),
                 texture: None,
                 weld: None,
+                analytic: None,
             }],
             textures: vec![],
         }
@@ -262,6 +374,28 @@ mod tests {
         let p = s.projection_matrix().unwrap();
         assert_eq!(p, perspective(45.0, 640.0 / 480.0, 1.0, 500.0).unwrap());
         assert!((s.aspect() - 4.0 / 3.0).abs() < 1e-7);
+    }
+
+    #[test]
+    fn prepared_objects_carry_normals_and_the_model_matrix() {
+        let mut s = scene(Camera::Orbit(OrbitCamera::course_sample()));
+        s.objects[0].mesh = crate::shapes::lecture_pyramid();
+        s.objects[0].transform.push(Factor::scale(Vec3::new(-1.0, 1.0, 1.0)));
+        let p = s.objects[0].prepare().unwrap();
+        // Face normals: every face gets its own three vertices.
+        assert_eq!(p.mesh.vertex_count(), 18);
+        assert!(p.mesh.normals.is_some());
+        let expected = translate(Vec3::Y) * crate::transform::scale(Vec3::new(-1.0, 1.0, 1.0));
+        assert_eq!(p.model, expected);
+        assert!(p.mirrored, "a negative scale mirrors");
+        // The cofactor of diag(-1, 1, 1) is diag(1, -1, -1).
+        assert_eq!(p.normal_matrix, Mat3::from_diagonal(Vec3::new(1.0, -1.0, -1.0)));
+        s.objects[0].normals = NormalSource::Given;
+        let e = s.prepare().unwrap_err();
+        assert!(matches!(e, PrepareError::Normals { ref object, .. } if object == "o"), "{e}");
+        assert!(e.message(Lang::Ja).contains("オブジェクト \"o\""));
+        s.objects[0].transform.push(Factor::rotate_deg(30.0, Vec3::ZERO));
+        assert!(matches!(s.prepare(), Err(PrepareError::Transform { .. })));
     }
 
     #[test]

@@ -172,6 +172,11 @@ pub enum ErrorKind {
     },
     /// The image cannot be a texture.
     Texture(TextureError),
+    /// An image could not be written.
+    Write {
+        /// The operating system's or the encoder's reason.
+        reason: String,
+    },
 }
 
 /// What a key takes, for [`ErrorKind::WrongType`].
@@ -326,6 +331,13 @@ impl ErrorKind {
     pub fn describe(&self, lang: Lang) -> String {
         let ja = lang == Lang::Ja;
         match self {
+            ErrorKind::Write { reason } => {
+                if ja {
+                    format!("ファイルに書き込めません: {reason}")
+                } else {
+                    format!("cannot write the file: {reason}")
+                }
+            }
             ErrorKind::Read { reason } => {
                 if ja {
                     format!("ファイルを読めません: {reason}")

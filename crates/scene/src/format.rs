@@ -176,6 +176,10 @@ impl SceneSpec {
         let mut scene = self.scene;
         let mut texture_index: HashMap<PathBuf, usize> = HashMap::new();
         for spec in self.objects {
+            let analytic = match &spec.geometry {
+                Geometry::Shape(shape, _) => shape.analytic(),
+                Geometry::Obj(..) => None,
+            };
             let mesh = match &spec.geometry {
                 Geometry::Shape(shape, at) => shape.mesh().map_err(|e| {
                     let key = format!("{}.{}", at.key, e.parameter);
@@ -228,6 +232,8 @@ impl SceneSpec {
                 transform: spec.transform,
                 texture,
                 weld,
+                // Welding cannot change the surface a built-in shape stands for.
+                analytic,
             });
         }
         Ok(scene)

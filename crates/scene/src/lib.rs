@@ -38,6 +38,7 @@ mod shape;
 
 use std::path::Path;
 
+use cg_core::image::Image;
 use cg_core::mesh::Mesh;
 use cg_core::scene::Scene;
 use cg_core::texture::Texture;
@@ -113,6 +114,15 @@ pub fn load_texture(path: &Path) -> Result<Texture, SceneError> {
 /// As [`load_texture`], except for reading the file.
 pub fn decode_png(bytes: &[u8], path: &Path) -> Result<Texture, SceneError> {
     png::decode_png(bytes, path)
+}
+
+/// Writes a rendered [`Image`] to `path` as an 8-bit RGBA PNG (row 0 at the top; colours clamped
+/// to `[0, 1]` and rounded as OpenGL does, see [`cg_core::image::to_unorm8`]).
+///
+/// # Errors
+/// The file cannot be created or written; the error names the file and says why.
+pub fn save_png(path: &Path, image: &Image) -> Result<(), SceneError> {
+    png::save_png(path, image)
 }
 
 fn read_error(path: &Path, e: &std::io::Error) -> SceneError {

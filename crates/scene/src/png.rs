@@ -1,7 +1,9 @@
-//! PNG textures via the image crate, converted to RGBA8 and flipped so row 0 is the bottom row.
+//! PNG files via the image crate: textures are read as RGBA8 and flipped so row 0 is the bottom
+//! row; rendered images are written as RGBA8, row 0 at the top.
 
 use std::path::Path;
 
+use cg_core::image::Image;
 use cg_core::texture::Texture;
 
 use crate::error::{ErrorKind, SceneError};
@@ -22,4 +24,18 @@ pub(crate) fn decode_png(bytes: &[u8], path: &Path) -> Result<Texture, SceneErro
     // PNG rows run top to bottom; a texture's row 0 is the bottom one (OpenGL's (0, 0)).
     let texels = image.rows().rev().flat_map(|row| row.map(|p| p.0)).collect();
     Texture::new(width, height, texels).map_err(|e| error(ErrorKind::Texture(e)))
+}
+
+/// Writes a rendered image as an 8-bit RGBA PNG. See [`crate::save_png`].
+pub(crate) fn save_png(path: &Path, image: &Image) -> Result<(), SceneError> {
+    let bytes: Vec<u8> = image.to_rgba8().into_iter().flatten().collect();
+    image::save_buffer_with_format(
+        path,
+        &bytes,
+        image.width,
+        image.height,
+        image::ExtendedColorType::Rgba8,
+        image::ImageFormat::Png,
+    )
+    .map_err(|e| SceneError::in_file(path, ErrorKind::Write { reason: e.to_string() }))
 }

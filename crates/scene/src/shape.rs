@@ -3,6 +3,7 @@
 
 use cg_core::glam::Vec3;
 use cg_core::mesh::Mesh;
+use cg_core::scene::Analytic;
 use cg_core::shapes::{self, ShapeError};
 
 use crate::error::{Rule, SceneError};
@@ -34,6 +35,12 @@ pub enum ShapeSpec {
         slices: u32,
         /// Bands between the poles (≥ 2).
         stacks: u32,
+    },
+    /// `sphere`: the exact sphere, for the ray tracer; rasterizers draw its
+    /// [`SPHERE_SLICES`] × [`SPHERE_STACKS`] UV tessellation.
+    Sphere {
+        /// Radius (> 0).
+        radius: f32,
     },
     /// `icosphere`: a subdivided icosahedron.
     Icosphere {
@@ -107,6 +114,11 @@ pub enum ShapeSpec {
     },
 }
 
+/// Meridians of the mesh that stands for a `sphere` in rasterizers.
+pub const SPHERE_SLICES: u32 = 64;
+/// Bands of the mesh that stands for a `sphere` in rasterizers.
+pub const SPHERE_STACKS: u32 = 32;
+
 /// Every `kind` with the keys it takes besides `kind`.
 pub(crate) const KINDS: &[(&str, &[&str])] = &[
     ("grid", &["divisions", "size"]),
@@ -114,6 +126,7 @@ pub(crate) const KINDS: &[(&str, &[&str])] = &[
     ("cuboid", &["size"]),
     ("box", &["size"]),
     ("uv_sphere", &["radius", "slices", "stacks"]),
+    ("sphere", &["radius"]),
     ("icosphere", &["radius", "subdivisions"]),
     ("cylinder", &["radius", "height", "slices"]),
     ("cone", &["radius", "height", "slices"]),
@@ -157,6 +170,7 @@ impl ShapeSpec {
                 slices: count("slices", 3)?,
                 stacks: count("stacks", 2)?,
             },
+            "sphere" => ShapeSpec::Sphere { radius: length("radius")? },
             "icosphere" => ShapeSpec::Icosphere {
                 radius: length("radius")?,
                 subdivisions: count("subdivisions", 0)?,
@@ -205,6 +219,7 @@ impl ShapeSpec {
             ShapeSpec::LecturePyramid => "lecture_pyramid",
             ShapeSpec::Cuboid { .. } => "cuboid",
             ShapeSpec::UvSphere { .. } => "uv_sphere",
+            ShapeSpec::Sphere { .. } => "sphere",
             ShapeSpec::Icosphere { .. } => "icosphere",
             ShapeSpec::Cylinder { .. } => "cylinder",
             ShapeSpec::Cone { .. } => "cone",
@@ -213,6 +228,17 @@ impl ShapeSpec {
             ShapeSpec::Pyramid { .. } => "pyramid",
             ShapeSpec::Frustum { .. } => "frustum",
             ShapeSpec::Octahedron { .. } => "octahedron",
+        }
+    }
+
+    /// The exact surface this shape stands for, when there is one: a `sphere`, and the `grid`'s
+    /// square. Other shapes are polygon models in their own right.
+    #[must_use]
+    pub fn analytic(&self) -> Option<Analytic> {
+        match *self {
+            ShapeSpec::Sphere { radius } => Some(Analytic::Sphere { radius }),
+            ShapeSpec::Grid { size, .. } => Some(Analytic::Plane { size }),
+            _ => None,
         }
     }
 
@@ -229,6 +255,7 @@ impl ShapeSpec {
             ShapeSpec::UvSphere { radius, slices, stacks } => {
                 shapes::uv_sphere(radius, slices, stacks)
             }
+            ShapeSpec::Sphere { radius } => shapes::uv_sphere(radius, SPHERE_SLICES, SPHERE_STACKS),
             ShapeSpec::Icosphere { radius, subdivisions } => {
                 shapes::icosphere(radius, subdivisions)
             }
@@ -282,6 +309,7 @@ mod tests {
                 r#"{ kind = "uv_sphere", radius = 1.5, slices = 32, stacks = 16 }"#,
                 ShapeSpec::UvSphere { radius: 1.5, slices: 32, stacks: 16 },
             ),
+            (r#"{ kind = "sphere", radius = 0.5 }"#, ShapeSpec::Sphere { radius: 0.5 }),
             (
                 r#"{ kind = "icosphere", radius = 2, subdivisions = 0 }"#,
                 ShapeSpec::Icosphere { radius: 2.0, subdivisions: 0 },
@@ -371,7 +399,7 @@ mod tests {
             "{e}"
         );
         assert_eq!(e.key.as_deref(), Some("shape.kind"));
-        let e = read(r#"{ kind = "sphere", radius = 1 }"#).unwrap_err();
+        let e = read(r#"{ kind = "sphre", radius = 1 }"#).unwrap_err();
         assert!(
             matches!(&*e.kind, ErrorKind::UnknownChoice { allowed, .. } if allowed.len() == KINDS.len()),
             "{e}"
@@ -387,6 +415,19 @@ mod tests {
         ));
         let e = read(r#"{ kind = "lecture_pyramid", size = 2 }"#).unwrap_err();
         assert!(matches!(*e.kind, ErrorKind::UnknownKey { .. }), "{e}");
+    }
+
+    #[test]
+    fn spheres_and_grids_stand_for_exact_surfaces() {
+        let sphere = read(r#"{ kind = "sphere", radius = 2 }"#).unwrap();
+        assert_eq!(sphere.analytic(), Some(Analytic::Sphere { radius: 2.0 }));
+        // Its mesh is the UV tessellation, every vertex on the exact sphere.
+        let mesh = sphere.mesh().unwrap();
+        assert_eq!(mesh, shapes::uv_sphere(2.0, SPHERE_SLICES, SPHERE_STACKS).unwrap());
+        let grid = read(r#"{ kind = "grid", divisions = 4, size = 6 }"#).unwrap();
+        assert_eq!(grid.analytic(), Some(Analytic::Plane { size: 6.0 }));
+        let uv = read(r#"{ kind = "uv_sphere", radius = 2, slices = 8, stacks = 4 }"#).unwrap();
+        assert_eq!(uv.analytic(), None, "a uv_sphere is a polygon model, not a sphere");
     }
 
     #[test]

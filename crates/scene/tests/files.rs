@@ -316,3 +316,24 @@ fn broken_images_say_so_and_name_the_file() {
     let e = load_texture(&dir.join("absent.png")).unwrap_err();
     assert!(matches!(*e.kind, ErrorKind::Read { .. }));
 }
+
+#[test]
+fn rendered_images_are_saved_as_png_top_row_first() {
+    use cg_core::image::Image;
+    let dir = folder("save_png");
+    let mut image = Image::new(2, 3, Vec3::new(0.5, 0.5, 0.8));
+    image.set(1, 0, Vec3::new(1.0, 0.0, 0.0)); // top right
+    image.set(0, 2, Vec3::new(2.0, -1.0, 0.2)); // bottom left, clamped
+    let path = dir.join("out.png");
+    cg_scene::save_png(&path, &image).unwrap();
+    let back = ::image::open(&path).unwrap().to_rgba8();
+    assert_eq!(back.dimensions(), (2, 3));
+    assert_eq!(back.get_pixel(1, 0).0, [255, 0, 0, 255], "row 0 of the PNG is the image's top");
+    assert_eq!(back.get_pixel(0, 2).0, [255, 0, 51, 255]);
+    assert_eq!(back.get_pixel(0, 0).0, [128, 128, 204, 255]);
+    // A folder that does not exist: an error naming the file, not a panic.
+    let missing = dir.join("no/such/dir/out.png");
+    let e = cg_scene::save_png(&missing, &image).unwrap_err();
+    assert!(matches!(*e.kind, ErrorKind::Write { .. }), "{e}");
+    assert!(e.to_string().contains("out.png"), "{e}");
+}

@@ -3,11 +3,15 @@
 //! - [`assert_approx_eq!`]: compares numbers or vectors with an absolute and a relative tolerance
 //!   and, on failure, prints expected, actual, the difference and the tolerance that was used.
 //! - [`ulps`]: the distance between two f32 values in units in the last place.
+//! - [`images`]: image comparison with stated tolerances that writes the actual, expected and
+//!   difference images when it fails, and committed reference images that only a bless run
+//!   (`CG_BLESS=1`) may create.
 //! - [`prop`]: the seeded proptest configuration and log-uniform strategies every property test
 //!   uses.
 //! - [`Inputs`]: a seeded source of hard inputs — magnitudes drawn log-uniformly with both signs,
 //!   unit vectors, large offsets — so every random test is reproducible from its seed.
 
+pub mod images;
 pub mod prop;
 
 use glam::{DVec3, Vec3};
