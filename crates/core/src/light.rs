@@ -549,6 +549,29 @@ pub fn shade(
     n: Vec3,
     v: Vec3,
 ) -> Terms {
+    shade_with_visibility(model, global_ambient, lights, material, p, n, v, |_, _, _| 1.0)
+}
+
+/// [`shade`] with shadows: `visibility(light, l, d)` is called once per point light (each sample
+/// of an area light) that reaches `p` with a non-zero attenuation and spot factor, with the unit
+/// direction `l` from `p` towards it and its distance `d` (∞ for directional lights), and
+/// returns the fraction of it that is not blocked, in `[0, 1]` (a ray tracer casts a shadow ray
+/// there). It scales that light's diffuse and specular terms; ambient light is never shadowed.
+/// A visibility of exactly 0 skips the light's diffuse and specular work.
+///
+/// `shade(..)` is `shade_with_visibility(.., |_, _, _| 1.0)`.
+#[must_use]
+#[allow(clippy::too_many_arguments)]
+pub fn shade_with_visibility(
+    model: LightModel,
+    global_ambient: Rgb,
+    lights: &[Light],
+    material: &Material,
+    p: Vec3,
+    n: Vec3,
+    v: Vec3,
+    mut visibility: impl FnMut(&Light, Vec3, f32) -> f32,
+) -> Terms {
     let (lecture, specular_kind) = match model {
         LightModel::Lecture { specular, .. } => (true, specular),
         LightModel::OpenGl { .. } => (false, Specular::Blinn),
@@ -581,6 +604,11 @@ pub fn shade(
         if !lecture {
             terms.ambient += scale * ambient(light.ambient, material.ka);
         }
+        let seen = visibility(&light, l, d);
+        if seen <= 0.0 || seen.is_nan() {
+            continue;
+        }
+        let scale = scale * seen.min(1.0);
         terms.diffuse += scale * diffuse(light.diffuse, material.kd, n, l);
         if with_specular {
             let (ks, shininess) = (material.ks, material.shininess);

@@ -634,3 +634,68 @@ fn terms_total_is_the_unclamped_sum() {
     };
     assert_eq!(t.total(), Rgb::splat(2.25), "not clamped: the renderer clamps at the end");
 }
+
+#[test]
+fn visibility_scales_diffuse_and_specular_but_never_ambient() {
+    use cg_core::light::shade_with_visibility;
+    let material = Material {
+        ks: Vec3::splat(0.5),
+        shininess: 10.0,
+        emission: Vec3::splat(0.05),
+        ..Material::from_color(Vec3::new(0.5, 0.8, 0.5))
+    };
+    let light = course_light();
+    let (p, n) = (Vec3::new(0.5, 0.0, 0.5), Vec3::Y);
+    let v = Vec3::new(0.0, 0.5, 0.866).normalize();
+    for model in [GL, PHONG] {
+        let full = shade(model, Vec3::splat(0.2), std::slice::from_ref(&light), &material, p, n, v);
+        let mut calls = Vec::new();
+        let half = shade_with_visibility(
+            model,
+            Vec3::splat(0.2),
+            std::slice::from_ref(&light),
+            &material,
+            p,
+            n,
+            v,
+            |_, l, d| {
+                calls.push((l, d));
+                0.5
+            },
+        );
+        // One call, with the direction and distance to the light at (10, 10, 10).
+        assert_eq!(calls.len(), 1);
+        let to_light = Vec3::splat(10.0) - p;
+        assert!(
+            (calls[0].0 - to_light.normalize()).length() < 1e-6
+                && (calls[0].1 - to_light.length()).abs() < 1e-4
+        );
+        assert_eq!(half.ambient, full.ambient, "ambient is never shadowed");
+        assert_eq!(half.emission, full.emission);
+        assert!((half.diffuse - 0.5 * full.diffuse).abs().max_element() < 1e-6);
+        assert!((half.specular - 0.5 * full.specular).abs().max_element() < 1e-6);
+        let dark = shade_with_visibility(
+            model,
+            Vec3::splat(0.2),
+            std::slice::from_ref(&light),
+            &material,
+            p,
+            n,
+            v,
+            |_, _, _| 0.0,
+        );
+        assert_eq!((dark.diffuse, dark.specular), (Vec3::ZERO, Vec3::ZERO));
+        assert_eq!(dark.ambient, full.ambient);
+        let nan = shade_with_visibility(
+            model,
+            Vec3::splat(0.2),
+            std::slice::from_ref(&light),
+            &material,
+            p,
+            n,
+            v,
+            |_, _, _| f32::NAN,
+        );
+        assert!(nan.total().is_finite(), "a NaN visibility counts as blocked");
+    }
+}
