@@ -330,11 +330,11 @@ impl Problem {
                 let v = face_vertices(*vertices);
                 if ja {
                     format!(
-                        "面 F{face} {v} の面積が 0 です（3 頂点が一致するか一直線上にあります）"
+                        "面 F{face} {v} の面積が 0 です（3 頂点が一致するか、座標の精度の範囲で一直線上にあります）"
                     )
                 } else {
                     format!(
-                        "face F{face} {v} has zero area: its vertices coincide or lie on one line"
+                        "face F{face} {v} has zero area: its vertices coincide or lie on one line (within the precision of their coordinates)"
                     )
                 }
             }
