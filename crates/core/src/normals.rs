@@ -99,13 +99,14 @@ const F32_UNIT_ROUNDOFF: f64 = 1.0 / (1u32 << 24) as f64;
 /// `|δe₁| ×ₐ |e₂| + |e₁| ×ₐ |δe₂|` where `×ₐ` is the cross product's pattern with every term
 /// added in absolute value (the second-order term `δe₁ ×ₐ δe₂` is below `u` of these).
 ///
-/// A face whose area vector is no longer than twice this bound is collinear *within the precision
-/// of its own coordinates* — a sliver whose third corner is the f32-rounded midpoint of an edge,
+/// A face whose area vector is no longer than this bound is collinear *within the precision of
+/// its own coordinates* (rounding could turn its normal any way at all) — a sliver whose third corner is the f32-rounded midpoint of an edge,
 /// say: its "normal" is rounding noise and may point anywhere, and weighted like a real face it
 /// tilts its neighbours' vertex normals by tens of degrees (NUMERICS.md row 1). The bound is
 /// per component, so an axis-aligned triangle whose small coordinate is exact — `(0,0,0)`,
-/// `(1,0,0)`, `(1,1e-20,0)` — is not affected; a needle of height 1e-6 and base 1 is about ten
-/// times above it (row 6), and a unit triangle keeps its normal up to 1e6 from the origin (row 7).
+/// `(1,0,0)`, `(1,1e-20,0)` — is not affected; a needle of height 1e-6 and base 1 stays
+/// above it even rotated and moved by its own size (row 6), and a unit triangle keeps its normal up
+/// to 1e6 from the origin (row 7).
 fn rounding_noise(a: Vec3, b: Vec3, c: Vec3, e1: DVec3, e2: DVec3) -> f64 {
     let (a, b, c) = (a.as_dvec3().abs(), b.as_dvec3().abs(), c.as_dvec3().abs());
     let (d1, d2) = ((a + b) * F32_UNIT_ROUNDOFF, (a + c) * F32_UNIT_ROUNDOFF);
@@ -125,7 +126,7 @@ fn usable_area_vector(a: Vec3, b: Vec3, c: Vec3) -> Option<DVec3> {
     let n = face_area_vector(a, b, c);
     let (e1, e2) = (b.as_dvec3() - a.as_dvec3(), c.as_dvec3() - a.as_dvec3());
     let exact_noise = DEGENERATE_SINE * e1.length() * e2.length();
-    let noise = exact_noise.max(2.0 * rounding_noise(a, b, c, e1, e2));
+    let noise = exact_noise.max(rounding_noise(a, b, c, e1, e2));
     if n.length() <= noise { None } else { Some(n) }
 }
 
@@ -135,7 +136,7 @@ fn usable_area_vector(a: Vec3, b: Vec3, c: Vec3) -> Option<DVec3> {
 /// Returns `None` for a degenerate triangle — a repeated corner, coincident or collinear corners,
 /// collinear also within the precision of their f32 coordinates (a sliver whose third corner is
 /// a rounded edge midpoint) — that is, when `|(b−a)×(c−a)|` is at most
-/// `max(2⁻⁷⁰·|b−a|·|c−a|, 2·R)` — the first bound is the f64 computation's own rounding, `R` the
+/// `max(2⁻⁷⁰·|b−a|·|c−a|, R)` — the first bound is the f64 computation's own rounding, `R` the
 /// most that rounding the corners to f32 can move the vector, component by component — and for
 /// non-finite corners. Needle triangles (height 1e-6, base 1) are *not* degenerate and get a
 /// normal correct to f32 rounding.
