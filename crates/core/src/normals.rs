@@ -349,7 +349,7 @@ pub fn vertex_normals(mesh: &Mesh, weighting: Weighting) -> VertexNormals {
 /// The mesh with its vertices split at hard edges (稜線), carrying vertex normals: where the
 /// dihedral angle between two faces that share an edge exceeds `crease_deg`, the two faces get
 /// separate copies of the edge's vertices, so hard edges keep their face normals and smooth
-/// regions share averaged normals (面の法線と頂点の法線の使い分け). The kit's scenes use 30°.
+/// regions share averaged normals (面の法線と頂点の法線の使い分け). A scene's `normals = "smooth"` uses 30°.
 ///
 /// Around each vertex, the faces are grouped: two faces sharing an edge at the vertex are in the
 /// same group when the angle between their normals is at most `crease_deg`; each group becomes one
@@ -366,7 +366,8 @@ pub fn vertex_normals(mesh: &Mesh, weighting: Weighting) -> VertexNormals {
 ///
 /// Degenerate faces join the group of the first usable face at each corner. A negative or NaN
 /// `crease_deg` joins no two faces (every edge hard, vertices shared only by a face with itself).
-/// Faces that refer to a missing vertex are left out and attributes whose length is not the
+/// Faces that refer to a missing vertex are left out (the faces after one then move down a
+/// number) and attributes whose length is not the
 /// vertex count are dropped (call [`Mesh::check_indices`] first; [`prepare_normals`] does).
 ///
 /// See also [`face_split`] (every edge hard), [`prepare_normals`].
@@ -519,11 +520,12 @@ fn group_corners(
 /// flat faces, as `glNormal` once per face in the course's sample program).
 ///
 /// Face `i` of the result is face `i` of `mesh`, on vertices `3i, 3i+1, 3i+2` (so F-numbers
-/// stay). Positions are copied exactly, and uvs and colours go with each corner. A degenerate
+/// stay, as long as every face's indices are in range). Positions are copied exactly, and uvs and colours go with each corner. A degenerate
 /// face is kept, with the zero vector as its normal at all three corners: it covers no pixel,
 /// and the zero normal marks it (see [`face_normals`] for which ones).
 ///
-/// Faces that refer to a missing vertex are left out and attributes whose length is not the
+/// Faces that refer to a missing vertex are left out (the faces after one then move down a
+/// number) and attributes whose length is not the
 /// vertex count are dropped (call [`Mesh::check_indices`] first; [`prepare_normals`] does).
 ///
 /// See also [`smooth_normals`], [`prepare_normals`].
