@@ -15,7 +15,9 @@ need_cmd rustc
 
 # Debian packages the tests use. Empty for now: the core library, the scene loader and the CLI
 # need nothing beyond cargo. Later parts add e.g. mesa-vulkan-drivers (wgpu on lavapipe) here.
-PACKAGES=()
+PACKAGES=(
+  gcc libc6-dev libosmesa6-dev   # the OpenGL reference (crates/glref): a C compiler and Mesa's OSMesa
+)
 
 missing=()
 for p in "${PACKAGES[@]}"; do
