@@ -13,8 +13,8 @@ need_cmd() {
 need_cmd cargo
 need_cmd rustc
 
-# Debian packages the tests use. Empty for now: the core library, the scene loader and the CLI
-# need nothing beyond cargo. Later parts add e.g. mesa-vulkan-drivers (wgpu on lavapipe) here.
+# Debian packages the tests use: a C compiler and Mesa's off-screen OpenGL (OSMesa) for the
+# OpenGL reference renderer (crates/glref) that the CPU rasterizer is compared with.
 PACKAGES=(
   gcc libc6-dev libosmesa6-dev   # the OpenGL reference (crates/glref): a C compiler and Mesa's OSMesa
 )
