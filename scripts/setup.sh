@@ -13,6 +13,11 @@ need_cmd() {
 need_cmd cargo
 need_cmd rustc
 
+# rustfmt and clippy for .ci/run (no-ops when present).
+if ! cargo fmt --version >/dev/null 2>&1 || ! cargo clippy --version >/dev/null 2>&1; then
+  rustup component add rustfmt clippy
+fi
+
 # Debian packages the tests use: a C compiler and Mesa's off-screen OpenGL (OSMesa) for the
 # OpenGL reference renderer (crates/glref) that the CPU rasterizer is compared with.
 PACKAGES=(
@@ -35,9 +40,4 @@ if [ "${#missing[@]}" -gt 0 ]; then
   export DEBIAN_FRONTEND=noninteractive
   $SUDO apt-get update -qq
   $SUDO apt-get install -y --no-install-recommends "${missing[@]}"
-fi
-
-# rustfmt and clippy for .ci/run (no-ops when present).
-if ! cargo fmt --version >/dev/null 2>&1 || ! cargo clippy --version >/dev/null 2>&1; then
-  rustup component add rustfmt clippy
 fi
