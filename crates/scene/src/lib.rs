@@ -44,7 +44,7 @@ use cg_core::scene::Scene;
 use cg_core::texture::Texture;
 
 pub use error::{ErrorKind, Expected, Found, Position, Rule, SceneError};
-pub use shape::ShapeSpec;
+pub use shape::{MAX_SHAPE_FACES, ShapeSpec};
 
 /// The version of the scene format this crate reads (`format = 1`).
 pub const FORMAT_VERSION: i64 = format::FORMAT_VERSION;
