@@ -60,7 +60,7 @@ pub enum ShapeSpec {
         stacks: u32,
     },
     /// `sphere`: the exact sphere, for the ray tracer; rasterizers draw its
-    /// [`SPHERE_SLICES`] × [`SPHERE_STACKS`] UV tessellation.
+    /// `SPHERE_SLICES` × `SPHERE_STACKS` (64 × 32) UV tessellation.
     Sphere {
         /// Radius (> 0).
         radius: f32,
@@ -397,9 +397,9 @@ mod tests {
         ShapeSpec::read(&Table::root(&src, &doc).require("shape")?).map(|(spec, _)| spec)
     }
 
-    #[test]
-    fn every_kind_reads_its_parameters() {
-        let cases = [
+    /// One inline table of every kind (and the alias `box`), with the shape it stands for.
+    fn every_kind() -> [(&'static str, ShapeSpec); KINDS.len()] {
+        [
             (
                 r#"{ kind = "grid", divisions = 10, size = 10.0 }"#,
                 ShapeSpec::Grid { divisions: 10, size: 10.0 },
@@ -444,7 +444,12 @@ mod tests {
                 ShapeSpec::Frustum { sides: 5, bottom_radius: 2.0, top_radius: 1.0, height: 1.0 },
             ),
             (r#"{ kind = "octahedron", radius = 0.75 }"#, ShapeSpec::Octahedron { radius: 0.75 }),
-        ];
+        ]
+    }
+
+    #[test]
+    fn every_kind_reads_its_parameters() {
+        let cases = every_kind();
         for (text, expected) in &cases {
             assert_eq!(read(text).as_ref(), Ok(expected), "{text}");
             // `kind()` names the shape as the file does (`box` is an alias of `cuboid`).
@@ -537,23 +542,7 @@ mod tests {
 
     #[test]
     fn face_count_is_the_built_meshs() {
-        let specs = [
-            ShapeSpec::Grid { divisions: 3, size: 1.0 },
-            ShapeSpec::LecturePyramid,
-            ShapeSpec::Cuboid { size: Vec3::ONE },
-            ShapeSpec::UvSphere { radius: 1.0, slices: 7, stacks: 5 },
-            ShapeSpec::Sphere { radius: 1.0 },
-            ShapeSpec::Icosphere { radius: 1.0, subdivisions: 2 },
-            ShapeSpec::Cylinder { radius: 1.0, height: 1.0, slices: 5 },
-            ShapeSpec::Cone { radius: 1.0, height: 1.0, slices: 5 },
-            ShapeSpec::Torus { major: 2.0, minor: 0.5, major_segments: 5, minor_segments: 4 },
-            ShapeSpec::Prism { sides: 5, radius: 1.0, height: 1.0 },
-            ShapeSpec::Pyramid { sides: 5, radius: 1.0, height: 1.0 },
-            ShapeSpec::Frustum { sides: 5, bottom_radius: 2.0, top_radius: 1.0, height: 1.0 },
-            ShapeSpec::Octahedron { radius: 1.0 },
-        ];
-        assert_eq!(specs.len(), KINDS.len() - 1, "every kind but the alias `box`");
-        for spec in &specs {
+        for (_, spec) in every_kind() {
             assert_eq!(spec.face_count(), spec.mesh().unwrap().face_count() as u64, "{spec:?}");
         }
         // Counts beyond u64 saturate instead of wrapping round to a small number.
