@@ -22,7 +22,7 @@ use glam::{DMat3, DVec3, Mat3, Mat4, Vec3};
 
 use crate::lang::Lang;
 use crate::math::{cross_f64, cross_kahan_f64, try_normalize, try_normalize_f64};
-use crate::mesh::{Mesh, MeshError};
+use crate::mesh::{CornersByVertex, Mesh, MeshError, find_root, gather, union};
 use crate::scene::NormalSource;
 
 // ---------------------------------------------------------------------------------------------
@@ -378,24 +378,9 @@ pub fn smooth_normals(mesh: &Mesh, weighting: Weighting, crease_deg: Option<f32>
     let geometry: Vec<Option<FaceGeometry>> =
         (0..mesh.faces.len()).map(|f| face_geometry(mesh, f)).collect();
 
-    // The corners at every vertex, in face order: corners[start[v]..start[v + 1]] = (face, k).
-    let mut start = vec![0usize; n + 1];
-    for face in mesh.faces.iter().filter(|f| in_range(f)) {
-        for &v in face {
-            start[v as usize + 1] += 1;
-        }
-    }
-    for v in 0..n {
-        start[v + 1] += start[v];
-    }
-    let mut fill = start.clone();
-    let mut at_vertex = vec![(0u32, 0u8); start[n]];
-    for (f, face) in mesh.faces.iter().enumerate().filter(|(_, f)| in_range(f)) {
-        for (k, &v) in face.iter().enumerate() {
-            at_vertex[fill[v as usize]] = (f as u32, k as u8);
-            fill[v as usize] += 1;
-        }
-    }
+    // The corners at every vertex, in face order.
+    let usable = (0..mesh.faces.len()).filter(|&f| in_range(&mesh.faces[f]));
+    let CornersByVertex { start, corners: at_vertex } = CornersByVertex::new(mesh, usable);
 
     // Group the corners of each vertex; `group_of[c]` is the group of corner c within its vertex.
     let crease_rad = crease_deg.map(|d| f64::from(d).to_radians());
@@ -468,13 +453,6 @@ fn group_corners(
     };
     let geometry_of = |c: usize| geometry[corners[c].0 as usize].as_ref();
     let mut parent: Vec<usize> = (0..corners.len()).collect();
-    fn root(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        i
-    }
     // (other end of an edge at v, corner), sorted: corners listing the same end share that edge.
     let mut ends: Vec<(u32, usize)> = Vec::with_capacity(2 * corners.len());
     for (c, &(f, _)) in corners.iter().enumerate() {
@@ -489,8 +467,7 @@ fn group_corners(
                 let (Some(a), Some(b)) = (geometry_of(c), geometry_of(d)) else { continue };
                 // The dihedral angle as the angle between the normals, in the atan2 form.
                 if a.unit.cross(b.unit).length().atan2(a.unit.dot(b.unit)) <= limit {
-                    let (rc, rd) = (root(&mut parent, c), root(&mut parent, d));
-                    parent[rc.max(rd)] = rc.min(rd);
+                    union(&mut parent, c, d);
                 }
             }
         }
@@ -506,7 +483,7 @@ fn group_corners(
     let mut next = 0;
     let mut out = vec![0u32; corners.len()];
     for c in std::iter::once(anchor).chain(0..corners.len()).filter(|&c| c < corners.len()) {
-        let r = root(&mut parent, c);
+        let r = find_root(&mut parent, c);
         if number[r] == u32::MAX {
             number[r] = next;
             next += 1;
@@ -551,16 +528,6 @@ pub fn face_split(mesh: &Mesh) -> Mesh {
     }
 }
 
-/// `attribute[source[i]]` for every `i`, when the attribute is present with one entry per vertex.
-fn gather<T: Copy>(
-    attribute: Option<&[T]>,
-    vertex_count: usize,
-    source: &[usize],
-) -> Option<Vec<T>> {
-    let attribute = attribute.filter(|a| a.len() == vertex_count)?;
-    Some(source.iter().map(|&v| attribute[v]).collect())
-}
-
 /// Why [`prepare_normals`] could not give a mesh its shading normals.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum NormalsError {
@@ -591,7 +558,9 @@ impl NormalsError {
     pub fn message(&self, lang: Lang) -> String {
         match (lang, self) {
             (Lang::En, _) => self.to_string(),
-            (Lang::Ja, NormalsError::Mesh(e)) => format!("メッシュが使えません: {e}"),
+            (Lang::Ja, NormalsError::Mesh(e)) => {
+                format!("メッシュが使えません: {}", e.message(Lang::Ja))
+            }
             (Lang::Ja, NormalsError::Missing) => "法線はメッシュに与えられているはずですが、ありません。頂点ごとに1つずつ法線を与えるか、面の法線か頂点の法線を使ってください".to_owned(),
             (Lang::Ja, NormalsError::Unusable { vertex, normal }) => format!(
                 "頂点 V{vertex} の法線 {normal} は向きを持ちません (ゼロ・無限大・NaN のいずれか)"

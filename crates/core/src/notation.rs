@@ -65,6 +65,12 @@ pub fn face(index: usize, vertices: [u32; 3]) -> String {
     format!("F{index} {{ V{}, V{}, V{} }}", vertices[0], vertices[1], vertices[2])
 }
 
+/// `V3–V5`: the edge from vertex `a` to vertex `b` (an en dash between them).
+#[must_use]
+pub fn edge(a: u32, b: u32) -> String {
+    format!("V{a}–V{b}")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -87,6 +93,7 @@ mod tests {
     fn lines_use_the_lecture_notation() {
         assert_eq!(vertex_line(3, Vec3::new(-1.0, -0.8, 1.0), 4), "V3 (-1.0, -0.8, 1.0)");
         assert_eq!(face(0, [0, 3, 1]), "F0 { V0, V3, V1 }");
+        assert_eq!(edge(3, 5), "V3–V5");
         assert_eq!(braces(Vec3::new(0.0, 0.485_642_93, 0.874_157_3), 4), "{ 0.0, 0.4856, 0.8742 }");
     }
 }
