@@ -159,9 +159,13 @@ impl TransformError {
             }
             TransformError::NearPlane { near } => {
                 if ja {
-                    format!("透視投影: near = {near} は正の有限値でなければなりません")
+                    format!(
+                        "透視投影: near = {near:e} は正の有限値（非正規化数ではない値）でなければなりません"
+                    )
                 } else {
-                    format!("perspective: near = {near} must be a finite number > 0")
+                    format!(
+                        "perspective: near = {near:e} must be a finite, normal (not subnormal) number > 0"
+                    )
                 }
             }
             TransformError::FarPlane { near, far } => {
@@ -196,10 +200,12 @@ impl TransformError {
             TransformError::AspectRatio { aspect } => {
                 if ja {
                     format!(
-                        "透視投影: アスペクト比 aspect = {aspect} は正の有限値でなければなりません"
+                        "透視投影: アスペクト比 aspect = {aspect:e} は正の有限値で、投影行列があふれない大きさでなければなりません"
                     )
                 } else {
-                    format!("perspective: aspect = {aspect} must be a finite number > 0")
+                    format!(
+                        "perspective: aspect = {aspect:e} must be a finite number > 0, not so extreme that the projection overflows"
+                    )
                 }
             }
             TransformError::LookAtNotFinite { eye, target, up } => {
