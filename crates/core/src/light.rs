@@ -237,8 +237,8 @@ impl Default for Attenuation {
     }
 }
 
-/// The largest attenuation denominator the kit does not raise: `kc + kl·d + kq·d²` is clamped to
-/// at least this value, so [`attenuation`] is at most `1e6` (finite when `d → 0` with `kc = 0`).
+/// The smallest attenuation denominator the kit allows: `kc + kl·d + kq·d²` is raised to at
+/// least this value, so [`attenuation`] is at most `1e6` (finite when `d → 0` with `kc = 0`).
 pub const MIN_ATTENUATION_DENOMINATOR: f32 = 1.0e-6;
 
 /// The local terms of the light model at one point, kept apart so the report and the benchmark

@@ -108,12 +108,21 @@ impl Mesh {
     }
 }
 
+/// "no vertices", "only 1 vertex (V0)", "only 5 vertices (V0..V4)".
+fn vertex_range(count: usize) -> String {
+    match count {
+        0 => "no vertices".into(),
+        1 => "only 1 vertex (V0)".into(),
+        n => format!("only {n} vertices (V0..V{})", n - 1),
+    }
+}
+
 /// A structural error that makes a mesh unusable (as opposed to a validation finding such as an
 /// open boundary, which is reported by [`Mesh::validate`]).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum MeshError {
     /// A face refers to a vertex that does not exist.
-    #[error("face F{face} corner {corner} refers to vertex {index}, but the mesh has only {vertex_count} vertices (V0..V{})", vertex_count.saturating_sub(1))]
+    #[error("face F{face} corner {corner} refers to vertex {index}, but the mesh has {}", vertex_range(*vertex_count))]
     IndexOutOfRange {
         /// The face (F-number).
         face: usize,
@@ -330,11 +339,11 @@ impl Problem {
                 let v = face_vertices(*vertices);
                 if ja {
                     format!(
-                        "面 F{face} {v} の面積が 0 です（3 頂点が一致するか一直線上にあります）"
+                        "面 F{face} {v} の面積が 0 です（3 頂点が一致するか、座標の精度の範囲で一直線上にあります）"
                     )
                 } else {
                     format!(
-                        "face F{face} {v} has zero area: its vertices coincide or lie on one line"
+                        "face F{face} {v} has zero area: its vertices coincide or lie on one line (within the precision of their coordinates)"
                     )
                 }
             }

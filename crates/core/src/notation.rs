@@ -18,7 +18,9 @@ pub fn decimal(x: f32, max_decimals: usize) -> String {
     if !x.is_finite() {
         return x.to_string();
     }
-    let max_decimals = max_decimals.max(1);
+    // f32 has at most 9 significant decimal digits, but small values need more places: 45 covers
+    // every decimal place an f32 can have (the smallest subnormal is 1.4e-45).
+    let max_decimals = max_decimals.clamp(1, 45);
     let mut s = format!("{:.*}", max_decimals, f64::from(x));
     while s.ends_with('0') && !s.ends_with(".0") {
         s.pop();
@@ -77,6 +79,8 @@ mod tests {
         assert_eq!(decimal(-0.000_01, 4), "0.0");
         assert_eq!(decimal(15.0, 0), "15.0");
         assert_eq!(decimal(f32::NAN, 4), "NaN");
+        // Any number of decimals is accepted (formatting precision is capped, never a panic).
+        assert_eq!(decimal(0.5, 100_000), "0.5");
     }
 
     #[test]

@@ -433,3 +433,15 @@ fn latex_is_well_formed() {
         assert!(std::panic::catch_unwind(|| assert_valid_latex(broken)).is_err(), "{broken}");
     }
 }
+
+#[test]
+fn a_product_that_overflows_is_an_error_not_infinities() {
+    use cg_core::transform::TransformError;
+    let p = MatrixProduct::identity()
+        .then(Factor::scale(Vec3::splat(3e38)))
+        .then(Factor::translate(Vec3::new(3e38, 0.0, 0.0)));
+    // Each factor alone is fine …
+    assert!(p.factors.iter().all(|f| f.matrix().is_ok()));
+    // … their product is 9e76 in the translation column.
+    assert_eq!(p.matrix(), Err(TransformError::Overflow { what: "the product" }));
+}

@@ -192,8 +192,6 @@ pub enum Expected {
     Boolean,
     /// A table.
     Table,
-    /// An array.
-    Array,
     /// An array of tables (`[[objects]]`, `transform = [{ … }, …]`).
     ArrayOfTables,
     /// `[x, y, z]`.
@@ -587,7 +585,6 @@ impl Expected {
             Expected::String => "a string",
             Expected::Boolean => "true or false",
             Expected::Table => "a table",
-            Expected::Array => "an array",
             Expected::ArrayOfTables => "an array of tables",
             Expected::Vec3 => "an array of 3 numbers [x, y, z]",
             Expected::Color => "an RGB colour [r, g, b]",
@@ -610,7 +607,6 @@ impl Expected {
             Expected::String => "文字列",
             Expected::Boolean => "true か false",
             Expected::Table => "テーブル",
-            Expected::Array => "配列",
             Expected::ArrayOfTables => "テーブルの配列",
             Expected::Vec3 => "3 つの数の配列 [x, y, z]",
             Expected::Color => "RGB の色 [r, g, b]",

@@ -492,3 +492,22 @@ fn reading_a_missing_scene_file_names_it() {
         "{e}"
     );
 }
+
+#[test]
+fn spot_cutoff_accepts_exactly_0_to_90_and_180() {
+    let scene = |cutoff: &str| {
+        let text = format!(
+            "format = 1\n[[lights]]\nkind = \"spot\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0]\ncutoff_deg = {cutoff}\n"
+        );
+        cg_scene::parse(&text, std::path::Path::new("spot.toml"))
+    };
+    for ok in ["0.001", "45", "90", "180"] {
+        assert!(scene(ok).is_ok(), "cutoff {ok} is allowed: {:?}", scene(ok).err());
+    }
+    // 0 is no cone at all (nothing lit), between 90 and 180 OpenGL rejects, above 180 is meaningless.
+    for bad in ["0", "-1", "90.0001", "179.9", "180.1", "nan"] {
+        let e = scene(bad).expect_err(bad);
+        assert_eq!(e.position.map(|p| p.line), Some(6), "{bad}: {e}");
+        assert_eq!(e.key.as_deref(), Some("lights[0].cutoff_deg"), "{bad}: {e}");
+    }
+}
