@@ -3,7 +3,8 @@
 //! Draws a [`cg_core::scene::Scene`] as OpenGL 1.x would (the course's sample program), on the
 //! CPU, on all cores, deterministically: flat, Gouraud and Phong shading
 //! (フラット／グロー／フォンシェーディング), a z-buffer, clipping at the near plane, the top-left
-//! fill rule, perspective-correct attributes, textures, back-face culling.
+//! fill rule (in OpenGL's y-up window coordinates), perspective-correct attributes, textures,
+//! back-face culling.
 //!
 //! ```
 //! use cg_core::lang::Lang;
@@ -28,7 +29,7 @@
 //! | `triangle_setup` | back-face culling by the sign of the window-space area (counter-clockwise in OpenGL's y-up window = front; the other way for mirrored objects), bounding box |
 //! | `flat_color` | flat shading: one lighting evaluation per face, at its **centroid**, with the face normal (OpenGL's GL_FLAT takes the last vertex's colour instead) |
 //! | `bin` | each triangle into the tiles (64 × 64 pixels) its bounding box touches |
-//! | `rasterize` | exact integer edge functions, **top-left fill rule**: a pixel centre on an edge shared by two triangles is drawn exactly once |
+//! | `rasterize` | exact integer edge functions and the **top-left fill rule in OpenGL's y-up window coordinates** (as Mesa's llvmpipe applies it): a pixel centre on an edge belongs to the triangle when the edge is a *left* or a *bottom* edge as the image is seen; on an edge shared by two triangles it is drawn exactly once |
 //! | `depth_test` | GL_LESS against a depth buffer cleared to 1, then the write (early: before shading; the same image) |
 //! | `fragment` | perspective-correct barycentrics for colour, normal, position and uv; Phong lights each pixel here; texture after lighting (GL_MODULATE, GL_REPLACE); clamp to `[0, 1]` |
 //!
@@ -43,6 +44,18 @@
 //! Colours are clamped where OpenGL clamps them: the lit colour per vertex (Gouraud), per face
 //! (flat) or per pixel (Phong), and the final colour. With per-vertex colours in the mesh,
 //! k_a = k_d = the colour (glColor under GL_COLOR_MATERIAL).
+//!
+//! ## As OpenGL draws it
+//!
+//! The conventions follow what Mesa's OpenGL (llvmpipe, through `cg-glref`) does, so the
+//! course's scenes come out within 1/255 of OpenGL's images (`tests/opengl.rs`): pixel centres at
+//! half-integers; 8 sub-pixel bits; the fill rule above (pixel-exact against OpenGL on edges
+//! through pixel centres); lit vertex colours clamped to `[0, 1]` before they are interpolated;
+//! colours and texture coordinates interpolated perspective-correctly; GL_LESS; GL_MODULATE on
+//! the whole lit colour; 8-bit output by [`cg_core::image::to_unorm8`] (OpenGL rounds exact
+//! halves to even, the kit up: they differ on exact ties only). Two documented differences: flat
+//! shading lights the centroid (GL_FLAT takes the last vertex's colour), and lighting happens in
+//! world space (OpenGL's eye space gives the same colours up to rounding, for a rigid view).
 //!
 //! ## Only what the scene needs
 //!
@@ -105,8 +118,9 @@ pub fn render_with<L: Lighting + ?Sized>(
 /// centred at `(x + ½, y + ½)` — of either winding (nothing is culled); zero-area ones cover
 /// nothing, and parts outside the raster are cut off.
 ///
-/// With the top-left fill rule, triangles that tile a region cover each pixel centre of its
-/// interior exactly once.
+/// With the fill rule, triangles that tile a region cover each pixel centre of its interior
+/// exactly once; a centre on the region's own border is covered when the border there is a left
+/// or a bottom edge (as the image is seen).
 ///
 /// Coordinates must stay within ±[`GUARD_BAND_PIXELS`] (the renderer clips to that band first);
 /// non-finite ones are treated as 0 by the fixed-point conversion.

@@ -10,7 +10,7 @@
 //!       │    flat_color       Flat lights here, once per face
 //!       │    bin              the triangle goes to every tile its bounding box touches
 //!       └─ draw_tile, per tile on all cores, triangles in submission order:
-//!            rasterize        edge functions in fixed point, top-left fill rule
+//!            rasterize        edge functions in fixed point, OpenGL's fill rule
 //!            depth_test       GL_LESS against the tile's depth buffer, then the depth write
 //!            fragment         perspective-correct attributes; Phong lights here; texture
 //! ```
@@ -850,11 +850,12 @@ fn draw_tile<L: Lighting + ?Sized>(
 /// to `area2`).
 ///
 /// The edge functions are exact integers on the 1/256-pixel grid (no rounding, so the answer
-/// does not depend on where a tile starts). A centre exactly on an edge belongs to the triangle
-/// only when that edge is a *top* edge (horizontal, the triangle below it) or a *left* edge
-/// (the triangle to its right) — the top-left fill rule of Direct3D and of OpenGL
-/// implementations — so a pixel on an edge shared by two triangles is drawn exactly once, and
-/// none is missed (NUMERICS row 22).
+/// does not depend on where a tile starts). The fill rule is the top-left rule in OpenGL's
+/// window coordinates, whose y runs *up*, as Mesa's llvmpipe applies it: a centre exactly on an
+/// edge belongs to the triangle only when, as the image is seen, the edge is a *left* edge (the
+/// triangle to its right) or a *bottom* edge (horizontal, the triangle above it). So a pixel on
+/// an edge shared by two triangles is drawn exactly once, none is missed (NUMERICS row 22), and
+/// the ties fall as in the course's OpenGL (`tests/opengl.rs` checks it pixel by pixel).
 fn rasterize(edges: &Edges, rect: Rect, mut emit: impl FnMut(u32, u32, [i64; 3])) {
     let [bx0, by0, bx1, by1] = edges.bbox;
     let (x0, y0) = (bx0.max(rect.x0), by0.max(rect.y0));
@@ -872,10 +873,11 @@ fn rasterize(edges: &Edges, rect: Rect, mut emit: impl FnMut(u32, u32, [i64; 3])
         // Edge i runs from corner j to corner k and faces corner i.
         let (j, k) = ((i + 1) % 3, (i + 2) % 3);
         let (dx, dy) = (x[k] - x[j], y[k] - y[j]);
-        // E(p) = (k − j) × (p − j), positive inside. With y down, the interior lies below a top
-        // edge (dx > 0 on a horizontal edge) and right of a left edge (dy < 0).
-        let top_left = dy < 0 || (dy == 0 && dx > 0);
-        bias[i] = if top_left { 0 } else { -1 };
+        // E(p) = (k − j) × (p − j), positive inside (the corners run clockwise as seen, y down):
+        // a left edge runs up (dy < 0), a bottom edge runs right to left (dy = 0, dx < 0).
+        // Their centres are kept (E ≥ 0); on other edges E must be > 0, i.e. E − 1 ≥ 0.
+        let left_or_bottom = dy < 0 || (dy == 0 && dx < 0);
+        bias[i] = if left_or_bottom { 0 } else { -1 };
         row[i] = dx * (py - y[j]) - dy * (px - x[j]) + bias[i];
         step_x[i] = -dy * ONE;
         step_y[i] = dx * ONE;

@@ -1,11 +1,12 @@
-//! NUMERICS row 22, the top-left fill rule: pixels on an edge shared by two triangles are drawn
+//! NUMERICS row 22, the fill rule: pixels on an edge shared by two triangles are drawn
 //! exactly once, none are missed. Pixel-exact on small rasters, through the renderer's own
 //! snapping, setup, tiling and rasterizer ([`cg_raster::coverage`]); and once through the whole
 //! pipeline of a scene.
 //!
 //! The oracle is geometric: triangles that tile a region cover every pixel centre inside it
 //! exactly once, whatever the fill rule's details; and on a region's own border the rule is
-//! "left and top edges belong to the region, right and bottom edges do not".
+//! OpenGL's (the top-left rule in its y-up window coordinates): as the image is seen, "left and
+//! bottom edges belong to the region, right and top edges do not".
 
 mod common;
 
@@ -138,29 +139,38 @@ fn row22_a_fan_around_a_vertex_at_a_pixel_centre_covers_every_pixel_once() {
 }
 
 #[test]
-fn row22_the_border_of_a_region_follows_the_top_left_rule() {
+fn row22_the_border_of_a_region_follows_opengls_fill_rule() {
     // The rectangle [2.5, 12.5] × [3.5, 9.5]: all four sides run through pixel centres. Its left
-    // and top sides belong to it, its right and bottom sides do not: pixel x is covered for
-    // 2.5 ≤ x + ½ < 12.5, pixel y for 3.5 ≤ y + ½ < 9.5.
+    // and bottom sides belong to it, its right and top sides do not: pixel x is covered for
+    // 2.5 ≤ x + ½ < 12.5, pixel y (row 0 at the top) for 3.5 < y + ½ ≤ 9.5.
     for main_diagonal in [true, false] {
         assert_coverage(
             "rectangle on pixel centres",
             16,
             12,
             &rectangle(2.5, 3.5, 12.5, 9.5, main_diagonal),
-            |x, y| u32::from((2..12).contains(&x) && (3..9).contains(&y)),
+            |x, y| u32::from((2..12).contains(&x) && (4..10).contains(&y)),
         );
     }
-    // A single triangle with a top edge and a left edge on pixel centres, and a diagonal right
-    // edge through centres: (2.5, 2.5), (10.5, 2.5), (2.5, 10.5). Centre (x + ½, y + ½) is inside
-    // for x ≥ 2, y ≥ 2 (left, top: kept) and (x + ½) + (y + ½) < 13 (the hypotenuse, a right
-    // edge: left out).
+    // A triangle with a top side and a left side on pixel centres, and a diagonal right side
+    // through centres: (2.5, 2.5), (10.5, 2.5), (2.5, 10.5). Centre (x + ½, y + ½) is covered for
+    // x ≥ 2 (left: kept), y ≥ 3 (top: left out) and (x + ½) + (y + ½) < 13 (right: left out).
     assert_coverage(
-        "right triangle on pixel centres",
+        "right triangle, top-left corner",
         14,
         14,
         &[tri((2.5, 2.5), (10.5, 2.5), (2.5, 10.5))],
-        |x, y| u32::from(x >= 2 && y >= 2 && x + y + 1 < 13),
+        |x, y| u32::from(x >= 2 && y >= 3 && x + y + 1 < 13),
+    );
+    // Its mirror image with the right angle at the bottom right: (11.5, 11.5), (3.5, 11.5),
+    // (11.5, 3.5). Bottom side kept (y + ½ ≤ 11.5), right side left out (x + ½ < 11.5), the
+    // diagonal is a left edge here: kept ((x + ½) + (y + ½) ≥ 15).
+    assert_coverage(
+        "right triangle, bottom-right corner",
+        14,
+        14,
+        &[tri((11.5, 11.5), (3.5, 11.5), (11.5, 3.5))],
+        |x, y| u32::from(x <= 10 && y <= 11 && x + y + 1 >= 15),
     );
 }
 

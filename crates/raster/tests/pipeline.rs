@@ -366,7 +366,10 @@ fn the_size_option_keeps_the_scene_and_follows_its_aspect() {
 #[test]
 fn bad_scenes_give_errors_that_name_the_problem() {
     let scene = load("course-sample.toml");
-    let err = |scene: &Scene, options: &Options| render(scene, options).unwrap_err();
+    let err = |scene: &Scene, options: &Options| match render(scene, options) {
+        Ok(out) => panic!("rendered instead of failing: {}", out.stats),
+        Err(e) => e,
+    };
 
     let e = err(&scene, &small(0));
     assert!(matches!(e, RenderError::ZeroSize { width: 0, height: 0 }), "{e}");
@@ -400,10 +403,11 @@ fn bad_scenes_give_errors_that_name_the_problem() {
     assert!(matches!(e, RenderError::MissingTexture { texture: 3, count: 0, .. }), "{e}");
     assert!(e.message(Lang::Ja).contains("ground"));
 
-    // A scale that overflows f32 in clip space: an error naming the vertex, not NaN pixels.
+    // A scale whose matrix is finite but overflows f32 in clip space (the projection multiplies
+    // by cot(22.5°) ≈ 2.4): an error naming the vertex, not NaN pixels.
     let mut bad = scene.clone();
-    bad.objects[1].transform.push(Factor::scale(Vec3::splat(1e30)));
-    bad.objects[1].transform.push(Factor::scale(Vec3::splat(1e30)));
+    bad.objects[1].transform.push(Factor::scale(Vec3::splat(3e38)));
+    assert!(bad.objects[1].prepare().is_ok(), "premise: the model matrix itself is finite");
     let e = err(&bad, &Options::default());
     assert!(matches!(e, RenderError::NonFinite { ref object, .. } if object == "pyramid"), "{e}");
     assert!(e.message(Lang::Ja).contains("V"), "{}", e.message(Lang::Ja));
