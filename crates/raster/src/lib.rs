@@ -28,7 +28,7 @@
 //! | `viewport` | perspective divide; window x right, y down from the top-left corner, pixel centres at `(x + ½, y + ½)`, depth `[0, 1]`; coordinates snapped to **1/256 pixel** (8 sub-pixel bits) |
 //! | `triangle_setup` | back-face culling by the sign of the window-space area (counter-clockwise in OpenGL's y-up window = front; the other way for mirrored objects), bounding box |
 //! | `flat_color` | flat shading: one lighting evaluation per face, at its **centroid**, with the face normal (OpenGL's GL_FLAT takes the last vertex's colour instead) |
-//! | `bin` | each triangle into the tiles (64 × 64 pixels) its bounding box touches |
+//! | `bin` | each triangle into the tiles (32 × 32 pixels) its bounding box touches; a row of tiles is one task for a thread |
 //! | `rasterize` | exact integer edge functions and the **top-left fill rule in OpenGL's y-up window coordinates** (as Mesa's llvmpipe applies it): a pixel centre on an edge belongs to the triangle when the edge is a *left* or a *bottom* edge as the image is seen; on an edge shared by two triangles it is drawn exactly once |
 //! | `depth_test` | GL_LESS against a depth buffer cleared to 1, then the write (early: before shading; the same image) |
 //! | `fragment` | perspective-correct barycentrics for colour, normal, position and uv; Phong lights each pixel here; texture after lighting (GL_MODULATE, GL_REPLACE); clamp to `[0, 1]` |

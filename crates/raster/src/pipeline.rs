@@ -144,7 +144,8 @@ struct Triangle {
     inv_w: [f32; 3],
     /// The corners' vertices (see [`NEW_VERTEX`]).
     slot: [u32; 3],
-    /// Phong: the face normal in world space, the fallback of [`interpolate_normal`].
+    /// Phong: the face normal in world space, the fallback of [`interpolate_normal`] (zero under
+    /// the other modes, which do not read it).
     face_normal: Vec3,
     /// Flat: the face's colour, clamped to `[0, 1]`.
     flat_color: Rgb,
@@ -275,12 +276,14 @@ impl<'s, L: Lighting + ?Sized> Frame<'s, L> {
             return Err(RenderError::TooLarge { width, height });
         }
         let view = scene.view_product().and_then(|v| v.matrix()).map_err(RenderError::Camera)?;
-        // Scene::projection_matrix with the aspect of the size actually drawn.
+        // The scene's projection; with another size, the same with that size's aspect ratio.
         let p = &scene.projection;
-        let projection =
-            Factor::perspective(p.fovy_deg, width as f32 / height as f32, p.near, p.far)
-                .matrix()
-                .map_err(RenderError::Projection)?;
+        let projection = match options.size {
+            None => scene.projection_matrix(),
+            Some(_) => Factor::perspective(p.fovy_deg, width as f32 / height as f32, p.near, p.far)
+                .matrix(),
+        }
+        .map_err(RenderError::Projection)?;
         // Camera +Z in world space is the third row of the view rotation (rows of an orthonormal
         // matrix are the camera axes); a valid view is orthonormal, so this never falls back.
         let backward = try_normalize(Vec3::new(view.x_axis.z, view.y_axis.z, view.z_axis.z))
@@ -509,7 +512,8 @@ fn primitive_stage<L: Lighting + ?Sized>(
             stats.triangles_outside += 1;
             continue;
         }
-        // The face's own lighting (flat) and normal (Phong), made once when a part is drawn.
+        // The face's normal (flat, and Phong's fallback) and its lighting (flat), made once when
+        // a part of it is drawn.
         let mut face_parts: Option<(Vec3, Rgb)> = None;
         for k in 1..len - 1 {
             let fan = [screen[0], screen[k], screen[k + 1]];
@@ -524,15 +528,15 @@ fn primitive_stage<L: Lighting + ?Sized>(
                     continue;
                 }
             };
-            let (face_normal, flat_color) = *face_parts.get_or_insert_with(|| {
-                let face_normal = world_face_normal(draw, corners);
-                let flat = if frame.shading == Shading::Flat {
-                    flat_color(frame, draw, corners, face_normal, stats)
-                } else {
-                    Rgb::ONE
-                };
-                (face_normal, flat)
-            });
+            let (face_normal, flat_color) =
+                *face_parts.get_or_insert_with(|| match frame.shading {
+                    Shading::Flat => {
+                        let n = world_face_normal(draw, corners);
+                        (n, flat_color(frame, draw, corners, n, stats))
+                    }
+                    Shading::Phong => (world_face_normal(draw, corners), Rgb::ONE),
+                    Shading::Gouraud => (Vec3::ZERO, Rgb::ONE),
+                });
             let s = order.map(|i| fan[i]);
             stats.triangles_drawn += 1;
             chunk.triangles.push(Triangle {

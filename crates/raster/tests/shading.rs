@@ -227,3 +227,85 @@ fn the_three_modes_light_at_faces_vertices_and_pixels() {
     assert!(flat.lighting_evaluations < gouraud.lighting_evaluations);
     assert!(phong.lighting_evaluations > 20 * gouraud.lighting_evaluations, "{phong}");
 }
+
+#[test]
+fn vertex_colours_set_ka_and_kd_and_are_interpolated_perspective_correctly() {
+    // A receding floor triangle with red, green and blue corners (glColor under
+    // GL_COLOR_MATERIAL: k_a = k_d = the colour), lit by a global ambient 0.5 and a light straight
+    // above with diffuse 0.5: every point's colour is 0.5·c + 0.5·c·(N·L) = its vertex-colour
+    // blend c. The oracle: the ray through each pixel centre meets the floor at P, and c(P) is
+    // the blend of the corner colours by P's barycentric coordinates on the floor (in f64). Gouraud
+    // and Phong must show c(P) (perspective-correct, not the screen-space blend); flat shading the
+    // mean of the three corners.
+    let size = 64u32;
+    let mut scene = looking_down_z(size, size, 60.0);
+    scene.light_model = LightModel::OpenGl { local_viewer: false };
+    scene.global_ambient = Rgb::splat(0.5);
+    scene.lights = vec![Light {
+        kind: LightKind::Directional { to_light: Vec3::Y },
+        ambient: Rgb::ZERO,
+        diffuse: Rgb::splat(0.5),
+        specular: Rgb::ZERO,
+        attenuation: Default::default(),
+    }];
+    let corners =
+        [Vec3::new(-5.0, -1.0, -2.5), Vec3::new(5.0, -1.0, -2.5), Vec3::new(0.0, -1.0, -20.0)];
+    let colors = [Rgb::new(1.0, 0.0, 0.0), Rgb::new(0.0, 1.0, 0.0), Rgb::new(0.0, 0.0, 1.0)];
+    let mut mesh = cg_core::mesh::Mesh::new(corners.to_vec(), vec![[0, 1, 2]]);
+    mesh.colors = Some(colors.to_vec());
+    scene.objects.push(object("floor", mesh, Material::default()));
+    let camera = Pinhole::of(&scene);
+    let on_screen: Vec<DVec2> = corners.iter().map(|c| camera.window(c.as_dvec3())).collect();
+    let [a, b, c] = corners.map(Vec3::as_dvec3);
+    let area = (b - a).cross(c - a).y;
+    let blend = |p: DVec3| {
+        let w = [
+            (c - b).cross(p - b).y / area,
+            (a - c).cross(p - c).y / area,
+            (b - a).cross(p - a).y / area,
+        ];
+        colors.iter().zip(w).map(|(k, w)| k.as_dvec3() * w).sum::<DVec3>()
+    };
+    for shading in [Shading::Gouraud, Shading::Phong, Shading::Flat] {
+        let out = draw(&scene, shading);
+        let (mut checked, mut screen_blend_differs) = (0, 0);
+        for y in 0..size {
+            for x in 0..size {
+                let w = DVec2::new(f64::from(x) + 0.5, f64::from(y) + 0.5);
+                if inside_by(&on_screen, w) < 1.0 {
+                    continue;
+                }
+                let d = camera.ray(w);
+                let expected = match shading {
+                    Shading::Flat => colors.iter().map(|k| k.as_dvec3()).sum::<DVec3>() / 3.0,
+                    _ => blend(d * (-1.0 / d.y)),
+                };
+                let got = out.image.pixels[(y * size + x) as usize].as_dvec3();
+                // Snapping corners to 1/256 pixel and f32 interpolation: well under 1e-3.
+                assert!(
+                    (got - expected).abs().max_element() < 1e-3,
+                    "{shading:?}: pixel ({x}, {y}) is {got}, expected {expected}"
+                );
+                checked += 1;
+                // Premise: the screen-space blend differs (a perspective effect to be found).
+                let [sa, sb, sc] = [on_screen[0], on_screen[1], on_screen[2]];
+                let s_area = (sb - sa).perp_dot(sc - sa);
+                let sw = [
+                    (sc - sb).perp_dot(w - sb),
+                    (sa - sc).perp_dot(w - sc),
+                    (sb - sa).perp_dot(w - sa),
+                ];
+                let screen =
+                    colors.iter().zip(sw).map(|(k, x)| k.as_dvec3() * (x / s_area)).sum::<DVec3>();
+                screen_blend_differs += usize::from((screen - expected).abs().max_element() > 0.02);
+            }
+        }
+        assert!(checked > 300, "premise: {checked} pixels");
+        if shading != Shading::Flat {
+            assert!(
+                screen_blend_differs * 2 > checked,
+                "premise: perspective matters ({screen_blend_differs} of {checked})"
+            );
+        }
+    }
+}

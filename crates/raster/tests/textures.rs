@@ -1,6 +1,6 @@
-//! Texture mapping: perspective-correct texture coordinates (the stripes of a receding floor land
-//! where the projection of its grid lines says, not where screen-linear interpolation would put
-//! them), and sampling on a screen-aligned quad — nearest and bilinear, repeat and clamp,
+//! Texture mapping: perspective-correct texture coordinates (the checkerboard of a receding floor
+//! lands where the projection of its grid lines says, not where screen-linear interpolation would
+//! put it), and sampling on a screen-aligned quad — nearest and bilinear, repeat and clamp,
 //! GL_MODULATE and GL_REPLACE — against the OpenGL specification's formulas written out here.
 
 mod common;
@@ -33,37 +33,59 @@ fn textured(
 // Perspective correctness
 
 #[test]
-fn stripes_on_a_receding_floor_land_where_the_perspective_projection_puts_them() {
-    // A floor triangle (y = −1) from z = −3 (its near edge, t = 0) to an apex at z = −27
-    // (t = 1), textured with 8 horizontal stripes (a 1 × 8 texture, nearest). On the floor t is
-    // affine in z: t = (−3 − z)/24, so stripe boundary t = j/8 is the line z = −3 − 3j, which
-    // projects to the window row y_j = (1 + f/(3 + 3j))·H/2 — the oracle. Screen-linear
-    // interpolation would put it at y_0 − (j/8)(y_0 − y_apex) instead.
+fn a_checkerboard_on_a_receding_floor_lands_where_the_projection_of_its_grid_lines_says() {
+    // A floor quad (y = −1, x in [−4, 4], z from −3 to −19) with an 8 × 8 checkerboard (nearest),
+    // u = (x + 4)/8 across and v = (−3 − z)/16 into the distance. The oracle, per pixel centre:
+    // the ray through it meets the floor at P, whose (u, v) give the checker cell. Every pixel
+    // whose centre is more than 1/8 pixel from a projected grid line must show that cell's
+    // colour — so the checker edges land within 1/8 pixel of the projected grid lines.
     let size = 128u32;
     let scene = looking_down_z(size, size, 60.0);
     let camera = Pinhole::of(&scene);
-    let corners =
-        [Vec3::new(-8.0, -1.0, -3.0), Vec3::new(8.0, -1.0, -3.0), Vec3::new(0.0, -1.0, -27.0)];
-    let mut floor = Mesh::new(corners.to_vec(), vec![[0, 1, 2]]);
-    floor.uvs = Some(vec![Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), Vec2::new(0.5, 1.0)]);
-    let stripes =
-        Texture::from_fn(1, 8, |_, y| if y % 2 == 0 { [255; 4] } else { [0, 0, 0, 255] }).unwrap();
+    let corners = [
+        Vec3::new(-4.0, -1.0, -3.0),
+        Vec3::new(4.0, -1.0, -3.0),
+        Vec3::new(4.0, -1.0, -19.0),
+        Vec3::new(-4.0, -1.0, -19.0),
+    ];
+    let uvs = [Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), Vec2::new(1.0, 1.0), Vec2::new(0.0, 1.0)];
+    let faces = [[0usize, 1, 2], [0, 2, 3]];
+    let mut floor =
+        Mesh::new(corners.to_vec(), faces.iter().map(|f| f.map(|i| i as u32)).collect());
+    floor.uvs = Some(uvs.to_vec());
+    let checker =
+        Texture::from_fn(8, 8, |x, y| if (x + y) % 2 == 0 { [255; 4] } else { [0, 0, 0, 255] })
+            .unwrap();
     let sampler = Sampler { filter: Filter::Nearest, wrap_u: Wrap::Clamp, wrap_v: Wrap::Clamp };
-    let scene = textured(scene, floor, Rgb::ONE, stripes, sampler, TexEnv::Replace);
+    let scene = textured(scene, floor, Rgb::ONE, checker, sampler, TexEnv::Replace);
     let out = render(&scene, &Options::default()).unwrap();
     let rgba = out.image.to_rgba8();
 
-    let on_screen: Vec<DVec2> = corners.iter().map(|c| camera.window(c.as_dvec3())).collect();
-    let (y_near, y_apex) = (on_screen[0].y, on_screen[2].y);
-    // t at window row y, by the projection (the oracle) and by screen-linear interpolation.
-    let t_perspective = |y: f64| {
-        // The floor point seen at row y: y_ndc = f·(−1)/(−z).
-        let y_ndc = 1.0 - 2.0 * y / camera.height;
-        let z = camera.f / y_ndc; // negative below the horizon
-        (-3.0 - z) / 24.0
+    // The checker cell seen through window point w, by the projection (the oracle).
+    let cell = |w: DVec2| {
+        let d = camera.ray(w);
+        let p = d * (-1.0 / d.y);
+        let (u, v) = ((p.x + 4.0) / 8.0, (-3.0 - p.z) / 16.0);
+        ((u * 8.0).floor() as i64, (v * 8.0).floor() as i64)
     };
-    let t_affine = |y: f64| (y_near - y) / (y_near - y_apex);
-    let stripe = |t: f64| (t * 8.0).floor() as i64;
+    let white = |(i, j): (i64, i64)| (i + j) % 2 == 0;
+    let on_screen: Vec<DVec2> = corners.iter().map(|c| camera.window(c.as_dvec3())).collect();
+    // What screen-linear (affine) interpolation of (u, v) inside each triangle would show.
+    let affine_white = |w: DVec2| {
+        for face in faces {
+            let [a, b, c] = face.map(|i| on_screen[i]);
+            let area = (b - a).perp_dot(c - a);
+            let weights =
+                [(c - b).perp_dot(w - b), (a - c).perp_dot(w - c), (b - a).perp_dot(w - a)]
+                    .map(|x| x / area);
+            if weights.iter().all(|&x| x >= 0.0) {
+                let uv =
+                    face.iter().zip(weights).map(|(&i, x)| uvs[i].as_dvec2() * x).sum::<DVec2>();
+                return white(((uv.x * 8.0).floor() as i64, (uv.y * 8.0).floor() as i64));
+            }
+        }
+        false
+    };
     let (mut checked, mut affine_wrong) = (0, 0);
     for y in 0..size {
         for x in 0..size {
@@ -71,36 +93,30 @@ fn stripes_on_a_receding_floor_land_where_the_perspective_projection_puts_them()
             if inside_by(&on_screen, centre) < 1.0 {
                 continue;
             }
-            let t = t_perspective(centre.y);
-            // Skip centres within 1/8 pixel of a stripe boundary (rounding may go either way).
-            let near_boundary =
-                [-0.125, 0.125].iter().any(|d| stripe(t_perspective(centre.y + d)) != stripe(t));
-            if near_boundary {
-                continue;
+            let here = cell(centre);
+            let eighth = 1.0 / 8.0;
+            let offsets =
+                [DVec2::X * eighth, -DVec2::X * eighth, DVec2::Y * eighth, -DVec2::Y * eighth];
+            if offsets.iter().any(|&o| cell(centre + o) != here) {
+                continue; // within 1/8 pixel of a grid line
             }
             checked += 1;
-            let white = stripe(t) % 2 == 0;
             let got = rgba[(y * size + x) as usize];
             assert_eq!(
                 got[0] == 255,
-                white,
-                "pixel ({x}, {y}): stripe {} (t = {t:.4}) should be {}, got {got:?}",
-                stripe(t),
-                if white { "white" } else { "black" }
+                white(here),
+                "pixel ({x}, {y}): checker cell {here:?} is {}, got {got:?}",
+                if white(here) { "white" } else { "black" }
             );
-            affine_wrong += usize::from((stripe(t_affine(centre.y)) % 2 == 0) != white);
+            affine_wrong += usize::from(affine_white(centre) != white(here));
         }
     }
-    assert!(checked > 1000, "premise: many pixels checked ({checked})");
-    // The premise: screen-linear interpolation would get a good part of them wrong.
+    assert!(checked > 2000, "premise: many pixels checked ({checked})");
+    // The premise: screen-linear interpolation would put many checker edges elsewhere.
     assert!(
         affine_wrong * 5 > checked,
-        "premise: affine interpolation would misplace the stripes ({affine_wrong} of {checked} pixels)"
+        "premise: affine interpolation would show other cells ({affine_wrong} of {checked} pixels)"
     );
-    // The boundaries themselves: where stripe 1 begins (t = 1/8) by the projection vs affinely.
-    let y1 = (1.0 + camera.f / 6.0) / 2.0 * camera.height;
-    let y1_affine = y_near - (y_near - y_apex) / 8.0;
-    assert!((y1 - y1_affine).abs() > 10.0, "premise: {y1:.1} vs {y1_affine:.1}");
 }
 
 // ---------------------------------------------------------------------------------------------
