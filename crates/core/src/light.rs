@@ -587,10 +587,9 @@ pub fn shade_with_visibility(
     let with_specular = material.ks != Rgb::ZERO;
     for light in lights.iter().flat_map(Light::point_lights) {
         let (l, d) = light.direction_from(p).unwrap_or((n, 0.0));
-        let att = match light.kind {
-            LightKind::Directional { .. } => 1.0,
-            _ => attenuation(light.attenuation, d),
-        };
+        // Only what the light needs: no attenuation arithmetic for directional lights and for
+        // OpenGL's default (1, 0, 0), whose factor is exactly 1.
+        let att = if light.needs_attenuation() { attenuation(light.attenuation, d) } else { 1.0 };
         let spot = match light.kind {
             LightKind::Spot { direction, cutoff_deg, exponent, inner_deg, .. } => {
                 spot_factor(l, direction, cutoff_deg, exponent, inner_deg.filter(|_| lecture))
