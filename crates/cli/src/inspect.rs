@@ -33,16 +33,6 @@ pub struct Args {
     decimals: u8,
 }
 
-impl Args {
-    /// The options of a bare `cg inspect`, with clap's defaults (the main job uses them).
-    pub fn defaults() -> Args {
-        use clap::{Args as _, FromArgMatches as _};
-        let command = Args::augment_args(clap::Command::new("inspect"));
-        Args::from_arg_matches(&command.get_matches_from(["inspect"]))
-            .expect("a bare `inspect` parses with its defaults")
-    }
-}
-
 /// Loads the scene and prints the inspection.
 pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let path = crate::kit_path(args.scene.as_deref(), crate::COURSE_SAMPLE);

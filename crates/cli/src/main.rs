@@ -10,6 +10,7 @@ use cg_core::lang::Lang;
 use clap::{Parser, Subcommand};
 
 mod inspect;
+mod render;
 
 /// The course's sample scene, relative to the kit's root.
 const COURSE_SAMPLE: &str = "assets/scenes/course-sample.toml";
@@ -21,8 +22,8 @@ const COURSE_SAMPLE: &str = "assets/scenes/course-sample.toml";
     about = "Computer-graphics teaching kit (lecture 11: shading) / CG 演習キット（第11回 シェーディング）",
     long_about = "Computer-graphics teaching kit (lecture 11: shading).\n\
                   CG 演習キット（第11回 シェーディング）。\n\n\
-                  Without a command, inspects the course's sample scene.\n\
-                  コマンドを省略すると、授業のサンプルシーンを表示します。"
+                  Without a command, draws the course's sample scene in every shading mode to out/.\n\
+                  コマンドを省略すると、授業のサンプルシーンを 3 種類のシェーディングで描画して out/ に保存します。"
 )]
 struct Cli {
     /// Language of the output: ja or en (default: from CG_LANG or LANG) / 出力の言語
@@ -37,6 +38,8 @@ enum Command {
     /// Print a scene: mesh checks, vertex and face tables with face normals, model-view matrices
     /// as named products / シーンの頂点・面・法線・変換行列を表示
     Inspect(inspect::Args),
+    /// Draw a scene to a PNG file and say what it cost / シーンを PNG に描画
+    Render(render::Args),
 }
 
 fn main() -> ExitCode {
@@ -44,7 +47,8 @@ fn main() -> ExitCode {
     let lang = cli.lang.unwrap_or_else(Lang::from_env);
     let result = match cli.command {
         Some(Command::Inspect(args)) => inspect::run(&args, lang),
-        None => inspect::run(&inspect::Args::defaults(), lang),
+        Some(Command::Render(args)) => render::run(&args, lang),
+        None => render::main_job(lang),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -66,5 +70,6 @@ fn kit_path(given: Option<&Path>, default: &str) -> PathBuf {
         return here;
     }
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let root = root.canonicalize().unwrap_or(root);
     root.join(default)
 }

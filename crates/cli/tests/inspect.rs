@@ -86,8 +86,8 @@ fn course_sample_prints_the_model_view_matrix_as_a_product() {
 }
 
 #[test]
-fn the_main_job_without_arguments_inspects_the_course_sample() {
-    let out = stdout(&cg(&["--lang", "en"]));
+fn inspect_without_a_scene_inspects_the_course_sample() {
+    let out = stdout(&cg(&["inspect", "--lang", "en"]));
     assert!(out.contains("Scene \"course-sample\""), "{out}");
     assert!(out.contains("ground") && out.contains("pyramid"), "{out}");
     // The ground is an open grid: 10 × 10 squares have 40 border edges, reported as what they

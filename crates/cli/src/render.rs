@@ -1,0 +1,213 @@
+//! `cg render [SCENE]`: draws a scene to a PNG file with one of the kit's renderers and says what
+//! it cost and what it enabled; and the kit's main job, the course's sample scene in every
+//! shading mode.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use cg_core::image::Image;
+use cg_core::lang::Lang;
+use cg_core::scene::{Scene, Shading};
+
+/// Which renderer draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Renderer {
+    /// The CPU rasterizer (flat, Gouraud, Phong; the local light model) / CPU ラスタライザ
+    Raster,
+}
+
+/// A shading mode on the command line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum ShadingArg {
+    /// フラットシェーディング
+    Flat,
+    /// グローシェーディング
+    Gouraud,
+    /// フォンシェーディング
+    Phong,
+}
+
+impl From<ShadingArg> for Shading {
+    fn from(s: ShadingArg) -> Shading {
+        match s {
+            ShadingArg::Flat => Shading::Flat,
+            ShadingArg::Gouraud => Shading::Gouraud,
+            ShadingArg::Phong => Shading::Phong,
+        }
+    }
+}
+
+/// Options of `cg render`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// The scene file (default: the course's sample scene) / シーンファイル
+    scene: Option<PathBuf>,
+    /// Which renderer / レンダラ
+    #[arg(long, value_enum, default_value_t = Renderer::Raster)]
+    renderer: Renderer,
+    /// Shading mode instead of the scene's / シェーディングの方法（省略時はシーンの指定）
+    #[arg(long, value_enum)]
+    shading: Option<ShadingArg>,
+    /// The PNG file to write (default: out/<scene>-<renderer>-<shading>.png) / 出力する PNG ファイル
+    #[arg(short, long, value_name = "PNG")]
+    output: Option<PathBuf>,
+    /// Image width in pixels (default: the scene's; the height follows its aspect if not given) / 幅
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=16384))]
+    width: Option<u32>,
+    /// Image height in pixels / 高さ
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=16384))]
+    height: Option<u32>,
+    /// Threads (default: all cores) / スレッド数
+    #[arg(long)]
+    threads: Option<usize>,
+}
+
+/// One rendering, done.
+struct Rendered {
+    image: Image,
+    shading: Shading,
+    millis: f64,
+    report: String,
+}
+
+/// `cg render`: loads, draws, writes, reports.
+pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
+    let path = crate::kit_path(args.scene.as_deref(), crate::COURSE_SAMPLE);
+    let scene = cg_scene::load(&path).map_err(|e| e.describe(lang))?;
+    let size = size(&scene, args.width, args.height);
+    let r = draw(&scene, args.renderer, args.shading.map(Shading::from), size, args.threads, lang)?;
+    let output = match &args.output {
+        Some(p) => p.clone(),
+        None => PathBuf::from("out").join(format!(
+            "{}-{}-{}.png",
+            scene.name,
+            renderer_name(args.renderer),
+            shading_name(r.shading, Lang::En).to_lowercase()
+        )),
+    };
+    write(&output, &r.image, lang)?;
+    println!(
+        "{} {} — {}, {}, {} × {}, {:.1} ms",
+        lang.pick("描画しました", "rendered"),
+        path.display(),
+        renderer_label(args.renderer, lang),
+        shading_name(r.shading, lang),
+        r.image.width,
+        r.image.height,
+        r.millis
+    );
+    print!("{}", r.report);
+    println!("{}: {}", lang.pick("出力", "wrote"), output.display());
+    Ok(())
+}
+
+/// The kit's main job: the course's sample scene drawn in every shading mode to PNG files.
+pub fn main_job(lang: Lang) -> Result<(), String> {
+    let path = crate::kit_path(None, crate::COURSE_SAMPLE);
+    let scene = cg_scene::load(&path).map_err(|e| e.describe(lang))?;
+    let dir = PathBuf::from("out");
+    println!(
+        "{} {} ({} × {}):",
+        lang.pick("授業のサンプルシーンを描画します", "Drawing the course's sample scene"),
+        path.display(),
+        scene.width,
+        scene.height
+    );
+    for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+        let r = draw(&scene, Renderer::Raster, Some(shading), None, None, lang)?;
+        let file = dir
+            .join(format!("course-sample-{}.png", shading_name(shading, Lang::En).to_lowercase()));
+        write(&file, &r.image, lang)?;
+        println!("  {:<24} {:>7.1} ms  {}", shading_name(shading, lang), r.millis, file.display());
+    }
+    println!(
+        "{}",
+        lang.pick(
+            "次に: cargo run --release -- inspect（頂点・面・法線・変換行列）、… render --help（ほかのシーンや設定）",
+            "Next: cargo run --release -- inspect (vertices, faces, normals, matrices), … render --help (other scenes and settings)"
+        )
+    );
+    Ok(())
+}
+
+/// The image size: the scene's, or the given width and/or height (one alone keeps the aspect).
+fn size(scene: &Scene, width: Option<u32>, height: Option<u32>) -> Option<(u32, u32)> {
+    let keep = |given: u32, this: u32, other: u32| {
+        // Rounded, at least 1 pixel; `this` ≥ 1 because the scene loader checks sizes.
+        ((u64::from(given) * u64::from(other) + u64::from(this) / 2) / u64::from(this.max(1)))
+            .clamp(1, 16384) as u32
+    };
+    match (width, height) {
+        (None, None) => None,
+        (Some(w), Some(h)) => Some((w, h)),
+        (Some(w), None) => Some((w, keep(w, scene.width, scene.height))),
+        (None, Some(h)) => Some((keep(h, scene.height, scene.width), h)),
+    }
+}
+
+fn draw(
+    scene: &Scene,
+    renderer: Renderer,
+    shading: Option<Shading>,
+    size: Option<(u32, u32)>,
+    threads: Option<usize>,
+    lang: Lang,
+) -> Result<Rendered, String> {
+    let start = Instant::now();
+    match renderer {
+        Renderer::Raster => {
+            let options =
+                cg_raster::Options { shading, size, threads, ..cg_raster::Options::default() };
+            let out = cg_raster::render(scene, &options).map_err(|e| e.message(lang))?;
+            let millis = start.elapsed().as_secs_f64() * 1e3;
+            let mut report = String::new();
+            for line in out.features.describe(lang).lines() {
+                let _ = writeln!(report, "  {line}");
+            }
+            let counts: Vec<String> = out
+                .stats
+                .list(lang)
+                .into_iter()
+                .filter(|(_, n)| *n > 0)
+                .map(|(name, n)| format!("{name} {n}"))
+                .collect();
+            let _ = writeln!(report, "  {}: {}", lang.pick("処理", "work"), counts.join(", "));
+            Ok(Rendered { image: out.image, shading: out.shading, millis, report })
+        }
+    }
+}
+
+fn write(path: &Path, image: &Image, lang: Lang) -> Result<(), String> {
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|e| {
+            format!(
+                "{} {}: {e}",
+                lang.pick("フォルダを作れません", "cannot create the folder"),
+                dir.display()
+            )
+        })?;
+    }
+    cg_scene::save_png(path, image).map_err(|e| e.describe(lang))
+}
+
+fn renderer_name(r: Renderer) -> &'static str {
+    match r {
+        Renderer::Raster => "raster",
+    }
+}
+
+fn renderer_label(r: Renderer, lang: Lang) -> &'static str {
+    match r {
+        Renderer::Raster => lang.pick("CPU ラスタライザ", "CPU rasterizer"),
+    }
+}
+
+/// The shading mode's name as the lecture says it.
+pub fn shading_name(s: Shading, lang: Lang) -> &'static str {
+    match s {
+        Shading::Flat => lang.pick("フラットシェーディング", "Flat"),
+        Shading::Gouraud => lang.pick("グローシェーディング", "Gouraud"),
+        Shading::Phong => lang.pick("フォンシェーディング", "Phong"),
+    }
+}

@@ -1,0 +1,133 @@
+//! End-to-end tests of `cg render` and of the kit's main job (no arguments): the files they write
+//! are exactly what the renderer library draws, and mistakes get clear errors.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use cg_core::scene::Shading;
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").canonicalize().unwrap()
+}
+
+fn cg_in(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_cg"))
+        .args(args)
+        .current_dir(dir)
+        .env_remove("CG_LANG")
+        .env_remove("LANG")
+        .env_remove("LC_ALL")
+        .env_remove("LC_MESSAGES")
+        .output()
+        .expect("the cg binary runs")
+}
+
+fn scratch(test: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cg-render").join(test);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn png(path: &Path) -> (Vec<[u8; 4]>, u32, u32) {
+    let img = image::open(path).unwrap_or_else(|e| panic!("{}: {e}", path.display())).to_rgba8();
+    let (w, h) = img.dimensions();
+    (img.pixels().map(|p| p.0).collect(), w, h)
+}
+
+fn library(scene: &str, shading: Shading, size: Option<(u32, u32)>) -> Vec<[u8; 4]> {
+    let scene = cg_scene::load(&root().join(scene)).unwrap();
+    let options =
+        cg_raster::Options { shading: Some(shading), size, ..cg_raster::Options::default() };
+    cg_raster::render(&scene, &options).unwrap().image.to_rgba8()
+}
+
+#[test]
+fn render_writes_exactly_what_the_rasterizer_draws() {
+    let dir = scratch("render");
+    let out = dir.join("sub/sphere.png");
+    let o = cg_in(
+        &root(),
+        &[
+            "render",
+            "assets/scenes/sphere-phong.toml",
+            "--shading",
+            "gouraud",
+            "--width",
+            "80",
+            "--height",
+            "60",
+            "-o",
+            out.to_str().unwrap(),
+            "--lang",
+            "en",
+        ],
+    );
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{text}\n{}", String::from_utf8_lossy(&o.stderr));
+    let (pixels, w, h) = png(&out);
+    assert_eq!((w, h), (80, 60));
+    assert_eq!(
+        pixels,
+        library("assets/scenes/sphere-phong.toml", Shading::Gouraud, Some((80, 60)))
+    );
+    // It says what it drew, what it enabled and skipped, and where the file is.
+    assert!(text.contains("CPU rasterizer, Gouraud, 80 × 60"), "{text}");
+    assert!(text.contains("enabled: ") && text.contains("specular"), "{text}");
+    assert!(text.contains("skipped: ") && text.contains("textures"), "{text}");
+    assert!(text.contains(&format!("wrote: {}", out.display())), "{text}");
+}
+
+#[test]
+fn a_width_alone_keeps_the_scenes_aspect() {
+    let dir = scratch("aspect");
+    let out = dir.join("a.png");
+    let o = cg_in(&root(), &["render", "--width", "64", "-o", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // The course scene is 640 × 640, so 64 wide is 64 high.
+    let (_, w, h) = png(&out);
+    assert_eq!((w, h), (64, 64));
+}
+
+#[test]
+fn the_main_job_draws_the_course_sample_in_every_shading_mode() {
+    let dir = scratch("main-job");
+    let o = cg_in(&dir, &["--lang", "en"]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{text}\n{}", String::from_utf8_lossy(&o.stderr));
+    let mut images = Vec::new();
+    for (name, shading) in
+        [("flat", Shading::Flat), ("gouraud", Shading::Gouraud), ("phong", Shading::Phong)]
+    {
+        let file = dir.join(format!("out/course-sample-{name}.png"));
+        let (pixels, w, h) = png(&file);
+        assert_eq!((w, h), (640, 640), "{name}");
+        assert_eq!(pixels, library("assets/scenes/course-sample.toml", shading, None), "{name}");
+        assert!(text.contains(&format!("out/course-sample-{name}.png")), "says where: {text}");
+        images.push(pixels);
+    }
+    assert_ne!(images[0], images[1], "flat and Gouraud differ");
+}
+
+#[test]
+fn mistakes_are_clear_errors() {
+    let dir = scratch("errors");
+    // A folder in the way of the output file.
+    std::fs::create_dir_all(dir.join("taken.png")).unwrap();
+    let o = cg_in(
+        &root(),
+        &["render", "-o", dir.join("taken.png").to_str().unwrap(), "--width", "8", "--lang", "en"],
+    );
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("taken.png") && !err.contains("panicked"), "{err}");
+    // Unknown renderer and a zero width are refused by the argument parser (exit code 2).
+    for args in [&["render", "--renderer", "opengl"][..], &["render", "--width", "0"][..]] {
+        let o = cg_in(&root(), args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+    }
+    // Japanese messages.
+    let o = cg_in(&root(), &["render", "no/such.toml", "--lang", "ja"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.starts_with("エラー") && err.contains("no/such.toml"), "{err}");
+}
