@@ -206,3 +206,43 @@ fn glass_mirror_matches_its_reference_image() {
         Tolerance::percent_within(99.5, 2),
     );
 }
+
+#[test]
+fn the_exact_ground_and_its_grid_give_the_same_image() {
+    // The exact square computes its texture coordinate from the hit point; the grid interpolates
+    // its vertices' coordinates. Same geometry, same texture: the images agree except where
+    // a pixel centre falls within rounding of a texel border (nearest filtering).
+    let scene = shipped("textured-ground");
+    let exact = cg_trace::render(&scene, &small(64)).unwrap();
+    let grid = cg_trace::render(&scene, &Options { analytic: false, ..small(64) }).unwrap();
+    cg_testkit::images::assert_images_match(
+        "trace-textured-ground-exact-vs-grid",
+        &exact.image.to_rgba8(),
+        &grid.image.to_rgba8(),
+        64,
+        64,
+        Tolerance::percent_within(99.5, 1),
+    );
+    assert!(exact.stats.bvh_nodes_visited < grid.stats.bvh_nodes_visited);
+}
+
+#[test]
+fn a_mirrored_model_transform_keeps_faces_and_normals_outward() {
+    // The 48 × 24 sphere is symmetric under x → −x, so scale(−1, 1, 1) must not change the
+    // image — unless the mirror's reversed winding or inward cofactor normals are not flipped
+    // back (back-face culling would then remove the front, and the lighting would turn inside out).
+    let scene = shipped("sphere-phong");
+    assert!(scene.cull_back_faces);
+    let mut mirrored = scene.clone();
+    mirrored.objects[0].transform.push(cg_core::product::Factor::scale(Vec3::new(-1.0, 1.0, 1.0)));
+    let a = cg_trace::render(&scene, &small(64)).unwrap();
+    let b = cg_trace::render(&mirrored, &small(64)).unwrap();
+    cg_testkit::images::assert_images_match(
+        "trace-sphere-mirrored",
+        &b.image.to_rgba8(),
+        &a.image.to_rgba8(),
+        64,
+        64,
+        Tolerance::percent_within(99.5, 1),
+    );
+}
