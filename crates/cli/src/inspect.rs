@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use cg_core::camera::OrbitCamera;
 use cg_core::lang::Lang;
 use cg_core::light::{LightKind, LightModel, Specular};
-use cg_core::mesh::Orientation;
+use cg_core::mesh::{Orientation, Problem};
 use cg_core::normals::{Weighting, face_normal};
 use cg_core::notation::{braces, decimal, face, tuple, vertex_line};
 use cg_core::product::MatrixProduct;
@@ -28,9 +28,9 @@ pub struct Args {
     /// Print every row of every table / 全行を表示
     #[arg(long)]
     all: bool,
-    /// Decimals of printed numbers / 小数点以下の桁数
-    #[arg(long, default_value_t = 4, value_name = "N")]
-    decimals: usize,
+    /// Decimals of printed numbers, 1 to 9 / 小数点以下の桁数（1〜9）
+    #[arg(long, default_value_t = 4, value_name = "N", value_parser = clap::value_parser!(u8).range(1..=9))]
+    decimals: u8,
 }
 
 impl Args {
@@ -64,7 +64,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         &path.display().to_string(),
         args.object.as_deref(),
         rows,
-        args.decimals,
+        usize::from(args.decimals),
         lang,
     )?;
     print!("{text}");
@@ -138,7 +138,7 @@ fn report(
             tuple(light.specular, d)
         );
     }
-    let view = scene.view_product().map_err(|e| e.to_string())?;
+    let view = scene.view_product().map_err(|e| e.message(lang))?;
     let _ = writeln!(
         w,
         "  {}:",
@@ -245,7 +245,20 @@ fn object_report(
         orientation
     );
     let problems = v.problems();
-    if !problems.is_empty() {
+    let border_only = problems.iter().all(|p| matches!(p, Problem::BoundaryEdge { .. }));
+    if !problems.is_empty() && border_only {
+        // An open surface such as the ground: its border is not a mistake.
+        let _ = writeln!(
+            w,
+            "  {}: {} {}",
+            t("開いた面", "open surface"),
+            problems.len(),
+            t(
+                "本の境界辺（地面のような面なら正常。閉じた立体には境界辺はありません）",
+                "border edges (fine for a surface such as the ground; a closed solid has none)"
+            )
+        );
+    } else if !problems.is_empty() {
         let _ = writeln!(w, "  {} ({}):", t("指摘", "findings"), problems.len());
         // Grouped by kind, in order of first appearance: an open grid's 40 border edges are one
         // line with a few examples, not 40 lines.
@@ -362,9 +375,12 @@ fn describe_camera(camera: &Camera, d: usize, lang: Lang) -> String {
             tuple(*target, d)
         ),
         Camera::LookAt { eye, target, up } => format!(
-            "gluLookAt — eye {}, target {}, up {}",
+            "gluLookAt — {} {}, {} {}, {} {}",
+            lang.pick("視点", "eye"),
             tuple(*eye, d),
+            lang.pick("注視点", "target"),
             tuple(*target, d),
+            lang.pick("上方向", "up"),
             tuple(*up, d)
         ),
     }
@@ -410,11 +426,13 @@ fn describe_light(kind: &LightKind, d: usize, lang: Lang) -> String {
             format!("{} {}", lang.pick("点光源", "point at"), tuple(*position, d))
         }
         LightKind::Spot { position, direction, cutoff_deg, exponent, .. } => format!(
-            "{} {} → {}, cutoff {}°, exponent {}",
+            "{} {} → {}, {} {}°, {} {}",
             lang.pick("スポットライト光源", "spot at"),
             tuple(*position, d),
             tuple(*direction, d),
+            lang.pick("照射角（半角）", "cutoff"),
             decimal(*cutoff_deg, d),
+            lang.pick("集光指数", "exponent"),
             decimal(*exponent, d)
         ),
         LightKind::Area { corner, edge_u, edge_v, samples } => format!(

@@ -90,8 +90,10 @@ fn the_main_job_without_arguments_inspects_the_course_sample() {
     let out = stdout(&cg(&["--lang", "en"]));
     assert!(out.contains("Scene \"course-sample\""), "{out}");
     assert!(out.contains("ground") && out.contains("pyramid"), "{out}");
-    // The ground is an open grid: 10 × 10 squares have 40 boundary edges.
-    assert!(out.contains("open"), "{out}");
+    // The ground is an open grid: 10 × 10 squares have 40 border edges, reported as what they
+    // are rather than as 40 mistakes.
+    assert!(out.contains("open surface: 40 border edges"), "{out}");
+    assert!(!out.contains("findings"), "{out}");
 }
 
 #[test]

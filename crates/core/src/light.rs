@@ -237,8 +237,8 @@ impl Default for Attenuation {
     }
 }
 
-/// The largest attenuation denominator the kit does not raise: `kc + kl·d + kq·d²` is clamped to
-/// at least this value, so [`attenuation`] is at most `1e6` (finite when `d → 0` with `kc = 0`).
+/// The smallest attenuation denominator the kit allows: `kc + kl·d + kq·d²` is raised to at
+/// least this value, so [`attenuation`] is at most `1e6` (finite when `d → 0` with `kc = 0`).
 pub const MIN_ATTENUATION_DENOMINATOR: f32 = 1.0e-6;
 
 /// The local terms of the light model at one point, kept apart so the report and the benchmark
@@ -587,10 +587,9 @@ pub fn shade_with_visibility(
     let with_specular = material.ks != Rgb::ZERO;
     for light in lights.iter().flat_map(Light::point_lights) {
         let (l, d) = light.direction_from(p).unwrap_or((n, 0.0));
-        let att = match light.kind {
-            LightKind::Directional { .. } => 1.0,
-            _ => attenuation(light.attenuation, d),
-        };
+        // Only what the light needs: no attenuation arithmetic for directional lights and for
+        // OpenGL's default (1, 0, 0), whose factor is exactly 1.
+        let att = if light.needs_attenuation() { attenuation(light.attenuation, d) } else { 1.0 };
         let spot = match light.kind {
             LightKind::Spot { direction, cutoff_deg, exponent, inner_deg, .. } => {
                 spot_factor(l, direction, cutoff_deg, exponent, inner_deg.filter(|_| lecture))

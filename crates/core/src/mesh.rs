@@ -10,6 +10,7 @@ use std::ops::ControlFlow;
 use glam::{DVec3, Vec2, Vec3};
 
 use crate::lang::Lang;
+use crate::notation;
 
 /// An indexed triangle mesh. Vertex `i` has `positions[i]` and, where present, `normals[i]`,
 /// `uvs[i]` and `colors[i]`; every attribute vector present has one entry per vertex.
@@ -110,10 +111,11 @@ impl Mesh {
 
 /// A structural error that makes a mesh unusable (as opposed to a validation finding such as an
 /// open boundary, which is reported by [`Mesh::validate`]).
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+///
+/// `Display` gives the English message; [`MeshError::message`] gives it in either language.
+#[derive(Clone, Debug, PartialEq)]
 pub enum MeshError {
     /// A face refers to a vertex that does not exist.
-    #[error("face F{face} corner {corner} refers to vertex {index}, but the mesh has only {vertex_count} vertices (V0..V{})", vertex_count.saturating_sub(1))]
     IndexOutOfRange {
         /// The face (F-number).
         face: usize,
@@ -125,7 +127,6 @@ pub enum MeshError {
         vertex_count: usize,
     },
     /// An attribute vector does not have one entry per vertex.
-    #[error("the mesh has {expected} vertices but {len} {attribute}")]
     AttributeLength {
         /// `normals`, `uvs` or `colors`.
         attribute: &'static str,
@@ -135,7 +136,6 @@ pub enum MeshError {
         expected: usize,
     },
     /// A position has an infinite or NaN coordinate.
-    #[error("vertex V{vertex} has a non-finite position {position}")]
     NonFinitePosition {
         /// The vertex (V-number).
         vertex: usize,
@@ -143,6 +143,62 @@ pub enum MeshError {
         position: Vec3,
     },
 }
+
+impl MeshError {
+    /// The message for a student in `lang`, in the lecture's V/F notation: `face F6 corner 2
+    /// refers to V9, but the mesh has only 5 vertices, V0–V4` / `面 F6 の 2 番目 …`. The English
+    /// one is the `Display` text.
+    #[must_use]
+    pub fn message(&self, lang: Lang) -> String {
+        let ja = lang == Lang::Ja;
+        match self {
+            MeshError::IndexOutOfRange { face, corner, index, vertex_count } => {
+                let range = match (ja, vertex_count) {
+                    (true, 0) => "頂点が 1 つもありません".to_owned(),
+                    (false, 0) => "the mesh has no vertices".to_owned(),
+                    (true, n) => format!("頂点は V0–V{} の {n} 個です", n - 1),
+                    (false, n) => format!("the mesh has only {n} vertices, V0–V{}", n - 1),
+                };
+                if ja {
+                    format!(
+                        "面 F{face} の {corner} 番目 (0 から数えて) の頂点番号 V{index} は存在しません（{range}）"
+                    )
+                } else {
+                    format!("face F{face} corner {corner} refers to V{index}, but {range}")
+                }
+            }
+            MeshError::AttributeLength { attribute, len, expected } => {
+                if ja {
+                    let name = match *attribute {
+                        "normals" => "法線",
+                        "uvs" => "テクスチャ座標",
+                        "colors" => "色",
+                        other => other,
+                    };
+                    format!("頂点は {expected} 個ですが、{name} ({attribute}) が {len} 個あります")
+                } else {
+                    format!("the mesh has {expected} vertices but {len} {attribute}")
+                }
+            }
+            MeshError::NonFinitePosition { vertex, position } => {
+                let p = format!("({}, {}, {})", position.x, position.y, position.z);
+                if ja {
+                    format!("頂点 V{vertex} の座標 {p} に無限大または NaN が含まれています")
+                } else {
+                    format!("vertex V{vertex} has a non-finite position {p}")
+                }
+            }
+        }
+    }
+}
+
+impl std::fmt::Display for MeshError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message(Lang::En))
+    }
+}
+
+impl std::error::Error for MeshError {}
 
 // ---------------------------------------------------------------------------------------------
 // Validation (ポリゴンモデルの検査)
@@ -249,16 +305,6 @@ pub enum Problem {
     },
 }
 
-/// `V3–V5`
-fn edge_name(edge: [u32; 2]) -> String {
-    format!("V{}–V{}", edge[0], edge[1])
-}
-
-/// `{ V0, V3, V1 }`, the lecture's notation.
-fn face_vertices(v: [u32; 3]) -> String {
-    format!("{{ V{}, V{}, V{} }}", v[0], v[1], v[2])
-}
-
 /// `F0, F3 and F6` / `F0・F3・F6`
 fn face_list(faces: &[usize], lang: Lang) -> String {
     let names: Vec<String> = faces.iter().map(|f| format!("F{f}")).collect();
@@ -277,69 +323,29 @@ impl Problem {
     pub fn describe(&self, lang: Lang) -> String {
         let ja = lang == Lang::Ja;
         match self {
-            Problem::Structure(MeshError::IndexOutOfRange {
-                face,
-                corner,
-                index,
-                vertex_count,
-            }) => {
-                let range = match (ja, vertex_count) {
-                    (true, 0) => "頂点が 1 つもありません".to_owned(),
-                    (false, 0) => "the mesh has no vertices".to_owned(),
-                    (true, n) => format!("頂点は V0–V{} の {n} 個です", n - 1),
-                    (false, n) => format!("the mesh has only {n} vertices, V0–V{}", n - 1),
-                };
-                if ja {
-                    format!(
-                        "面 F{face} の {corner} 番目 (0 から数えて) の頂点番号 V{index} は存在しません（{range}）"
-                    )
-                } else {
-                    format!("face F{face} corner {corner} refers to V{index}, but {range}")
-                }
-            }
-            Problem::Structure(MeshError::AttributeLength { attribute, len, expected }) => {
-                if ja {
-                    let name = match *attribute {
-                        "normals" => "法線",
-                        "uvs" => "テクスチャ座標",
-                        "colors" => "色",
-                        other => other,
-                    };
-                    format!("頂点は {expected} 個ですが、{name} ({attribute}) が {len} 個あります")
-                } else {
-                    format!("the mesh has {expected} vertices but {len} {attribute}")
-                }
-            }
-            Problem::Structure(MeshError::NonFinitePosition { vertex, position }) => {
-                let p = format!("({}, {}, {})", position.x, position.y, position.z);
-                if ja {
-                    format!("頂点 V{vertex} の座標 {p} に無限大または NaN が含まれています")
-                } else {
-                    format!("vertex V{vertex} has a non-finite position {p}")
-                }
-            }
+            Problem::Structure(e) => e.message(lang),
             Problem::RepeatedIndex { face, vertices } => {
-                let v = face_vertices(*vertices);
+                let f = notation::face(*face, *vertices);
                 if ja {
-                    format!("面 F{face} {v} は同じ頂点を 2 回使っています（面積 0 の面）")
+                    format!("面 {f} は同じ頂点を 2 回使っています（面積 0 の面）")
                 } else {
-                    format!("face F{face} {v} uses the same vertex twice: it has no area")
+                    format!("face {f} uses the same vertex twice: it has no area")
                 }
             }
             Problem::ZeroArea { face, vertices } => {
-                let v = face_vertices(*vertices);
+                let f = notation::face(*face, *vertices);
                 if ja {
                     format!(
-                        "面 F{face} {v} の面積が 0 です（3 頂点が一致するか一直線上にあります）"
+                        "面 {f} の面積が 0 です（3 頂点が一致するか、座標の精度の範囲で一直線上にあります）"
                     )
                 } else {
                     format!(
-                        "face F{face} {v} has zero area: its vertices coincide or lie on one line"
+                        "face {f} has zero area: its vertices coincide or lie on one line (within the precision of their coordinates)"
                     )
                 }
             }
             Problem::BoundaryEdge { edge, face } => {
-                let e = edge_name(*edge);
+                let e = notation::edge(edge[0], edge[1]);
                 if ja {
                     format!(
                         "面 F{face} の辺 {e} を共有する面がありません（モデルがここで閉じていません）"
@@ -351,7 +357,7 @@ impl Problem {
                 }
             }
             Problem::NonManifoldEdge { edge, faces } => {
-                let e = edge_name(*edge);
+                let e = notation::edge(edge[0], edge[1]);
                 let n = faces.len();
                 if ja {
                     format!(
@@ -366,7 +372,7 @@ impl Problem {
                 }
             }
             Problem::InconsistentWinding { edge, faces } => {
-                let e = edge_name(*edge);
+                let e = notation::edge(edge[0], edge[1]);
                 let [f, g] = faces;
                 if ja {
                     format!(
@@ -390,7 +396,7 @@ impl Problem {
                 }
             }
             Problem::TJunction { vertex, edge, face } => {
-                let e = edge_name(*edge);
+                let e = notation::edge(edge[0], edge[1]);
                 if ja {
                     format!(
                         "頂点 V{vertex} が面 F{face} の辺 {e} の途中にありますが、F{face} はこの頂点を使っていません（T 字接合: 隣接する面が辺を共有していません）"
@@ -753,37 +759,18 @@ impl Mesh {
     /// Vertices whose faces form more than one fan. Two faces around vertex `v` are in the same
     /// fan when a chain of faces joins them, each sharing an edge `v–w` with the next.
     fn non_manifold_vertices(&self, topology: &[usize]) -> Vec<Problem> {
-        let n = self.positions.len();
-        // Faces around each vertex, as a compressed adjacency list.
-        let mut start = vec![0usize; n + 1];
-        for &face in topology {
-            for &v in &self.faces[face] {
-                start[v as usize + 1] += 1;
-            }
-        }
-        for v in 0..n {
-            start[v + 1] += start[v];
-        }
-        let mut fill = start.clone();
-        let mut around = vec![0usize; start[n]];
-        for &face in topology {
-            for &v in &self.faces[face] {
-                around[fill[v as usize]] = face;
-                fill[v as usize] += 1;
-            }
-        }
-
+        let around = CornersByVertex::new(self, topology.iter().copied());
         let mut problems = Vec::new();
         let mut pairs: Vec<(u32, usize)> = Vec::new();
         let mut parent: Vec<usize> = Vec::new();
-        for v in 0..n {
-            let faces = &around[start[v]..start[v + 1]];
-            if faces.len() < 2 {
+        for v in 0..self.positions.len() {
+            let corners = around.at(v);
+            if corners.len() < 2 {
                 continue;
             }
             pairs.clear();
-            for (local, &face) in faces.iter().enumerate() {
-                for &w in &self.faces[face] {
+            for (local, &(face, _)) in corners.iter().enumerate() {
+                for &w in &self.faces[face as usize] {
                     if w as usize != v {
                         pairs.push((w, local));
                     }
@@ -791,15 +778,11 @@ impl Mesh {
             }
             pairs.sort_unstable();
             parent.clear();
-            parent.extend(0..faces.len());
-            let mut fans = faces.len();
+            parent.extend(0..corners.len());
+            let mut fans = corners.len();
             for pair in pairs.windows(2) {
-                if pair[0].0 == pair[1].0 {
-                    let (x, y) = (find(&mut parent, pair[0].1), find(&mut parent, pair[1].1));
-                    if x != y {
-                        parent[x.max(y)] = x.min(y);
-                        fans -= 1;
-                    }
+                if pair[0].0 == pair[1].0 && union(&mut parent, pair[0].1, pair[1].1) {
+                    fans -= 1;
                 }
             }
             if fans > 1 {
@@ -952,13 +935,72 @@ fn sorted_edge([a, b]: [u32; 2]) -> [u32; 2] {
     [a.min(b), a.max(b)]
 }
 
-/// Union-find root with path halving.
-fn find(parent: &mut [usize], mut x: usize) -> usize {
+/// The root of `x`'s set in a union-find forest (`parent[r] == r` at a root), with path halving.
+pub(crate) fn find_root(parent: &mut [usize], mut x: usize) -> usize {
     while parent[x] != x {
         parent[x] = parent[parent[x]];
         x = parent[x];
     }
     x
+}
+
+/// Joins the sets of `a` and `b` in a union-find forest, the smaller root becoming the root of
+/// both; `true` when they were different sets.
+pub(crate) fn union(parent: &mut [usize], a: usize, b: usize) -> bool {
+    let (x, y) = (find_root(parent, a), find_root(parent, b));
+    parent[x.max(y)] = x.min(y);
+    x != y
+}
+
+/// The corners of some faces grouped by vertex, as a compressed adjacency list (頂点に隣接する面):
+/// the corners at vertex `v` are `corners[start[v]..start[v + 1]]`, each `(face, k)` with
+/// `faces[face][k] == v`, in face order.
+pub(crate) struct CornersByVertex {
+    /// Where each vertex's corners begin; `start[vertex_count]` is the number of corners.
+    pub start: Vec<usize>,
+    /// `(face, corner)` pairs, grouped by vertex.
+    pub corners: Vec<(u32, u8)>,
+}
+
+impl CornersByVertex {
+    /// The corners of `faces` (face numbers, increasing, each face's indices in range).
+    pub(crate) fn new(mesh: &Mesh, faces: impl Iterator<Item = usize> + Clone) -> Self {
+        let n = mesh.positions.len();
+        let mut start = vec![0usize; n + 1];
+        for f in faces.clone() {
+            for &v in &mesh.faces[f] {
+                start[v as usize + 1] += 1;
+            }
+        }
+        for v in 0..n {
+            start[v + 1] += start[v];
+        }
+        let mut fill = start.clone();
+        let mut corners = vec![(0u32, 0u8); start[n]];
+        for f in faces {
+            for (k, &v) in mesh.faces[f].iter().enumerate() {
+                corners[fill[v as usize]] = (f as u32, k as u8);
+                fill[v as usize] += 1;
+            }
+        }
+        CornersByVertex { start, corners }
+    }
+
+    /// The corners at vertex `v`.
+    pub(crate) fn at(&self, v: usize) -> &[(u32, u8)] {
+        &self.corners[self.start[v]..self.start[v + 1]]
+    }
+}
+
+/// `attribute[source[i]]` for every `i`, when the attribute is present with one entry per vertex
+/// (`vertex_count`); `None` otherwise.
+pub(crate) fn gather<T: Copy>(
+    attribute: Option<&[T]>,
+    vertex_count: usize,
+    source: &[usize],
+) -> Option<Vec<T>> {
+    let attribute = attribute.filter(|a| a.len() == vertex_count)?;
+    Some(source.iter().map(|&v| attribute[v]).collect())
 }
 
 /// The boundary edges (unordered) that lie along the edge of a T-junction: both ends are the
@@ -1092,15 +1134,12 @@ impl Mesh {
                 faces.push([a, b, c]);
             }
         }
-        fn pick<T: Copy>(attribute: Option<&Vec<T>>, kept: &[usize], n: usize) -> Option<Vec<T>> {
-            attribute.filter(|a| a.len() == n).map(|a| kept.iter().map(|&old| a[old]).collect())
-        }
         let mesh = Mesh {
             positions: kept.iter().map(|&old| self.positions[old]).collect(),
             faces,
-            normals: pick(self.normals.as_ref(), &kept, n),
-            uvs: pick(self.uvs.as_ref(), &kept, n),
-            colors: pick(self.colors.as_ref(), &kept, n),
+            normals: gather(self.normals.as_deref(), n, &kept),
+            uvs: gather(self.uvs.as_deref(), n, &kept),
+            colors: gather(self.colors.as_deref(), n, &kept),
         };
         Welded { mesh, remap, removed_faces }
     }

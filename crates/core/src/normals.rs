@@ -22,7 +22,7 @@ use glam::{DMat3, DVec3, Mat3, Mat4, Vec3};
 
 use crate::lang::Lang;
 use crate::math::{cross_f64, cross_kahan_f64, try_normalize, try_normalize_f64};
-use crate::mesh::{Mesh, MeshError};
+use crate::mesh::{CornersByVertex, Mesh, MeshError, find_root, gather, union};
 use crate::scene::NormalSource;
 
 // ---------------------------------------------------------------------------------------------
@@ -90,6 +90,33 @@ pub fn face_area_vector(a: Vec3, b: Vec3, c: Vec3) -> DVec3 {
     cross_kahan_f64(e1, e2) + correction
 }
 
+/// Half an ulp of f32, relative: rounding a real number to f32 moves it by at most `u·|x|`.
+const F32_UNIT_ROUNDOFF: f64 = 1.0 / (1u32 << 24) as f64;
+
+/// How far rounding the corners to f32 can move the area vector `(b−a)×(c−a)`, component-wise:
+/// each coordinate is within `u·|x|` of the value it stands for, so edge component `k` is within
+/// `δe_k = u·(|from_k| + |to_k|)`, and the cross product within
+/// `|δe₁| ×ₐ |e₂| + |e₁| ×ₐ |δe₂|` where `×ₐ` is the cross product's pattern with every term
+/// added in absolute value (the second-order term `δe₁ ×ₐ δe₂` is below `u` of these).
+///
+/// A face whose area vector is no longer than this bound is collinear *within the precision of
+/// its own coordinates* (rounding could turn its normal any way at all) — a sliver whose third corner is the f32-rounded midpoint of an edge,
+/// say: its "normal" is rounding noise and may point anywhere, and weighted like a real face it
+/// tilts its neighbours' vertex normals by tens of degrees (NUMERICS.md row 1). The bound is
+/// per component, so an axis-aligned triangle whose small coordinate is exact — `(0,0,0)`,
+/// `(1,0,0)`, `(1,1e-20,0)` — is not affected; a needle of height 1e-6 and base 1 stays
+/// above it even rotated and moved by its own size (row 6), and a unit triangle keeps its normal up
+/// to 1e6 from the origin (row 7).
+fn rounding_noise(a: Vec3, b: Vec3, c: Vec3, e1: DVec3, e2: DVec3) -> f64 {
+    let (a, b, c) = (a.as_dvec3().abs(), b.as_dvec3().abs(), c.as_dvec3().abs());
+    let (d1, d2) = ((a + b) * F32_UNIT_ROUNDOFF, (a + c) * F32_UNIT_ROUNDOFF);
+    let (e1, e2) = (e1.abs(), e2.abs());
+    let abs_cross = |x: DVec3, y: DVec3| {
+        DVec3::new(x.y * y.z + x.z * y.y, x.z * y.x + x.x * y.z, x.x * y.y + x.y * y.x)
+    };
+    (abs_cross(d1, e2) + abs_cross(e1, d2)).length()
+}
+
 /// The area vector of a usable face: `None` for a degenerate face (see [`face_normal`]).
 #[inline]
 fn usable_area_vector(a: Vec3, b: Vec3, c: Vec3) -> Option<DVec3> {
@@ -97,18 +124,22 @@ fn usable_area_vector(a: Vec3, b: Vec3, c: Vec3) -> Option<DVec3> {
         return None;
     }
     let n = face_area_vector(a, b, c);
-    let scale = (b.as_dvec3() - a.as_dvec3()).length() * (c.as_dvec3() - a.as_dvec3()).length();
-    if n.length() <= DEGENERATE_SINE * scale { None } else { Some(n) }
+    let (e1, e2) = (b.as_dvec3() - a.as_dvec3(), c.as_dvec3() - a.as_dvec3());
+    let exact_noise = DEGENERATE_SINE * e1.length() * e2.length();
+    let noise = exact_noise.max(rounding_noise(a, b, c, e1, e2));
+    if n.length() <= noise { None } else { Some(n) }
 }
 
 /// The unit normal of triangle `(a, b, c)` (面の法線), counter-clockwise front:
 /// `normalise((b−a)×(c−a))`.
 ///
-/// Returns `None` for a degenerate triangle — a repeated corner, coincident or exactly collinear
-/// corners — that is, when `|(b−a)×(c−a)|` is at most `2⁻⁷⁰·|b−a|·|c−a|` (the sine of the angle at
-/// `a` below 8.5·10⁻²², far below anything an f32 mesh means as a surface but 2³¹ times above the
-/// rounding of the f64 computation), and for non-finite corners. Needle triangles (height 1e-6,
-/// base 1) are *not* degenerate and get a normal correct to f32 rounding.
+/// Returns `None` for a degenerate triangle — a repeated corner, coincident or collinear corners,
+/// collinear also within the precision of their f32 coordinates (a sliver whose third corner is
+/// a rounded edge midpoint) — that is, when `|(b−a)×(c−a)|` is at most
+/// `max(2⁻⁷⁰·|b−a|·|c−a|, R)` — the first bound is the f64 computation's own rounding, `R` the
+/// most that rounding the corners to f32 can move the vector, component by component — and for
+/// non-finite corners. Needle triangles (height 1e-6, base 1) are *not* degenerate and get a
+/// normal correct to f32 rounding.
 ///
 /// Edge vectors are taken exactly in f64 from the first corner, so a unit triangle translated to
 /// 1e6 keeps its normal to within what its f32 positions still say (never from the position form
@@ -318,7 +349,7 @@ pub fn vertex_normals(mesh: &Mesh, weighting: Weighting) -> VertexNormals {
 /// The mesh with its vertices split at hard edges (稜線), carrying vertex normals: where the
 /// dihedral angle between two faces that share an edge exceeds `crease_deg`, the two faces get
 /// separate copies of the edge's vertices, so hard edges keep their face normals and smooth
-/// regions share averaged normals (面の法線と頂点の法線の使い分け). The kit's scenes use 30°.
+/// regions share averaged normals (面の法線と頂点の法線の使い分け). A scene's `normals = "smooth"` uses 30°.
 ///
 /// Around each vertex, the faces are grouped: two faces sharing an edge at the vertex are in the
 /// same group when the angle between their normals is at most `crease_deg`; each group becomes one
@@ -335,7 +366,8 @@ pub fn vertex_normals(mesh: &Mesh, weighting: Weighting) -> VertexNormals {
 ///
 /// Degenerate faces join the group of the first usable face at each corner. A negative or NaN
 /// `crease_deg` joins no two faces (every edge hard, vertices shared only by a face with itself).
-/// Faces that refer to a missing vertex are left out and attributes whose length is not the
+/// Faces that refer to a missing vertex are left out (the faces after one then move down a
+/// number) and attributes whose length is not the
 /// vertex count are dropped (call [`Mesh::check_indices`] first; [`prepare_normals`] does).
 ///
 /// See also [`face_split`] (every edge hard), [`prepare_normals`].
@@ -346,24 +378,9 @@ pub fn smooth_normals(mesh: &Mesh, weighting: Weighting, crease_deg: Option<f32>
     let geometry: Vec<Option<FaceGeometry>> =
         (0..mesh.faces.len()).map(|f| face_geometry(mesh, f)).collect();
 
-    // The corners at every vertex, in face order: corners[start[v]..start[v + 1]] = (face, k).
-    let mut start = vec![0usize; n + 1];
-    for face in mesh.faces.iter().filter(|f| in_range(f)) {
-        for &v in face {
-            start[v as usize + 1] += 1;
-        }
-    }
-    for v in 0..n {
-        start[v + 1] += start[v];
-    }
-    let mut fill = start.clone();
-    let mut at_vertex = vec![(0u32, 0u8); start[n]];
-    for (f, face) in mesh.faces.iter().enumerate().filter(|(_, f)| in_range(f)) {
-        for (k, &v) in face.iter().enumerate() {
-            at_vertex[fill[v as usize]] = (f as u32, k as u8);
-            fill[v as usize] += 1;
-        }
-    }
+    // The corners at every vertex, in face order.
+    let usable = (0..mesh.faces.len()).filter(|&f| in_range(&mesh.faces[f]));
+    let CornersByVertex { start, corners: at_vertex } = CornersByVertex::new(mesh, usable);
 
     // Group the corners of each vertex; `group_of[c]` is the group of corner c within its vertex.
     let crease_rad = crease_deg.map(|d| f64::from(d).to_radians());
@@ -436,13 +453,6 @@ fn group_corners(
     };
     let geometry_of = |c: usize| geometry[corners[c].0 as usize].as_ref();
     let mut parent: Vec<usize> = (0..corners.len()).collect();
-    fn root(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        i
-    }
     // (other end of an edge at v, corner), sorted: corners listing the same end share that edge.
     let mut ends: Vec<(u32, usize)> = Vec::with_capacity(2 * corners.len());
     for (c, &(f, _)) in corners.iter().enumerate() {
@@ -457,8 +467,7 @@ fn group_corners(
                 let (Some(a), Some(b)) = (geometry_of(c), geometry_of(d)) else { continue };
                 // The dihedral angle as the angle between the normals, in the atan2 form.
                 if a.unit.cross(b.unit).length().atan2(a.unit.dot(b.unit)) <= limit {
-                    let (rc, rd) = (root(&mut parent, c), root(&mut parent, d));
-                    parent[rc.max(rd)] = rc.min(rd);
+                    union(&mut parent, c, d);
                 }
             }
         }
@@ -474,7 +483,7 @@ fn group_corners(
     let mut next = 0;
     let mut out = vec![0u32; corners.len()];
     for c in std::iter::once(anchor).chain(0..corners.len()).filter(|&c| c < corners.len()) {
-        let r = root(&mut parent, c);
+        let r = find_root(&mut parent, c);
         if number[r] == u32::MAX {
             number[r] = next;
             next += 1;
@@ -488,11 +497,12 @@ fn group_corners(
 /// flat faces, as `glNormal` once per face in the course's sample program).
 ///
 /// Face `i` of the result is face `i` of `mesh`, on vertices `3i, 3i+1, 3i+2` (so F-numbers
-/// stay). Positions are copied exactly, and uvs and colours go with each corner. A degenerate
+/// stay, as long as every face's indices are in range). Positions are copied exactly, and uvs and colours go with each corner. A degenerate
 /// face is kept, with the zero vector as its normal at all three corners: it covers no pixel,
 /// and the zero normal marks it (see [`face_normals`] for which ones).
 ///
-/// Faces that refer to a missing vertex are left out and attributes whose length is not the
+/// Faces that refer to a missing vertex are left out (the faces after one then move down a
+/// number) and attributes whose length is not the
 /// vertex count are dropped (call [`Mesh::check_indices`] first; [`prepare_normals`] does).
 ///
 /// See also [`smooth_normals`], [`prepare_normals`].
@@ -516,16 +526,6 @@ pub fn face_split(mesh: &Mesh) -> Mesh {
         uvs: gather(mesh.uvs.as_deref(), n, &corner_ids),
         colors: gather(mesh.colors.as_deref(), n, &corner_ids),
     }
-}
-
-/// `attribute[source[i]]` for every `i`, when the attribute is present with one entry per vertex.
-fn gather<T: Copy>(
-    attribute: Option<&[T]>,
-    vertex_count: usize,
-    source: &[usize],
-) -> Option<Vec<T>> {
-    let attribute = attribute.filter(|a| a.len() == vertex_count)?;
-    Some(source.iter().map(|&v| attribute[v]).collect())
 }
 
 /// Why [`prepare_normals`] could not give a mesh its shading normals.
@@ -558,7 +558,9 @@ impl NormalsError {
     pub fn message(&self, lang: Lang) -> String {
         match (lang, self) {
             (Lang::En, _) => self.to_string(),
-            (Lang::Ja, NormalsError::Mesh(e)) => format!("メッシュが使えません: {e}"),
+            (Lang::Ja, NormalsError::Mesh(e)) => {
+                format!("メッシュが使えません: {}", e.message(Lang::Ja))
+            }
             (Lang::Ja, NormalsError::Missing) => "法線はメッシュに与えられているはずですが、ありません。頂点ごとに1つずつ法線を与えるか、面の法線か頂点の法線を使ってください".to_owned(),
             (Lang::Ja, NormalsError::Unusable { vertex, normal }) => format!(
                 "頂点 V{vertex} の法線 {normal} は向きを持ちません (ゼロ・無限大・NaN のいずれか)"

@@ -18,7 +18,9 @@ pub fn decimal(x: f32, max_decimals: usize) -> String {
     if !x.is_finite() {
         return x.to_string();
     }
-    let max_decimals = max_decimals.max(1);
+    // f32 has at most 9 significant decimal digits, but small values need more places: 45 covers
+    // every decimal place an f32 can have (the smallest subnormal is 1.4e-45).
+    let max_decimals = max_decimals.clamp(1, 45);
     let mut s = format!("{:.*}", max_decimals, f64::from(x));
     while s.ends_with('0') && !s.ends_with(".0") {
         s.pop();
@@ -63,6 +65,12 @@ pub fn face(index: usize, vertices: [u32; 3]) -> String {
     format!("F{index} {{ V{}, V{}, V{} }}", vertices[0], vertices[1], vertices[2])
 }
 
+/// `V3–V5`: the edge from vertex `a` to vertex `b` (an en dash between them).
+#[must_use]
+pub fn edge(a: u32, b: u32) -> String {
+    format!("V{a}–V{b}")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -77,12 +85,15 @@ mod tests {
         assert_eq!(decimal(-0.000_01, 4), "0.0");
         assert_eq!(decimal(15.0, 0), "15.0");
         assert_eq!(decimal(f32::NAN, 4), "NaN");
+        // Any number of decimals is accepted (formatting precision is capped, never a panic).
+        assert_eq!(decimal(0.5, 100_000), "0.5");
     }
 
     #[test]
     fn lines_use_the_lecture_notation() {
         assert_eq!(vertex_line(3, Vec3::new(-1.0, -0.8, 1.0), 4), "V3 (-1.0, -0.8, 1.0)");
         assert_eq!(face(0, [0, 3, 1]), "F0 { V0, V3, V1 }");
+        assert_eq!(edge(3, 5), "V3–V5");
         assert_eq!(braces(Vec3::new(0.0, 0.485_642_93, 0.874_157_3), 4), "{ 0.0, 0.4856, 0.8742 }");
     }
 }

@@ -60,8 +60,8 @@ pub fn refract(i: Vec3, n: Vec3, eta: f32) -> Option<Vec3> {
         cos_i = -cos_i;
     }
     let eta = f64::from(eta);
-    // 1 − η²(1 − cos²) rearranged: no cancellation of 1 − cos² near normal incidence.
-    let cos2_t = (1.0 - eta) * (1.0 + eta) + eta * eta * cos_i * cos_i;
+    // η_t = 1 relative to η_i = eta, so this is cos²θ_t itself.
+    let cos2_t = scaled_cos2_transmitted(cos_i, eta, 1.0);
     if cos2_t < 0.0 {
         return None;
     }
@@ -118,6 +118,23 @@ impl Interface {
     }
 }
 
+/// `η_t²·cos²θ_t = η_t² − η_i²·sin²θ_i` (Snell's law) as `(η_t − η_i)(η_t + η_i) + η_i²·cos²θ_i`:
+/// without `1 − cos²θ_i`, so nothing cancels near normal incidence, and accurate near grazing
+/// incidence and the critical angle. Negative under total internal reflection, zero at the
+/// critical angle.
+#[inline]
+fn scaled_cos2_transmitted(cos_i: f64, eta_i: f64, eta_t: f64) -> f64 {
+    (eta_t - eta_i) * (eta_t + eta_i) + eta_i * eta_i * cos_i * cos_i
+}
+
+/// `cos θ_t` on the transmitted side; `None` under total internal reflection, at the critical
+/// angle (`cos θ_t = 0`) and for NaN input.
+#[inline]
+fn cos_transmitted(cos_i: f64, eta_i: f64, eta_t: f64) -> Option<f64> {
+    let nt2_cos2_t = scaled_cos2_transmitted(cos_i, eta_i, eta_t);
+    (nt2_cos2_t > 0.0).then(|| nt2_cos2_t.sqrt() / eta_t)
+}
+
 /// `|cos|` clamped to `[0, 1]`, NaN taken as 0 (grazing).
 #[inline]
 fn clean_cos(cos: f32) -> f32 {
@@ -145,12 +162,9 @@ pub fn fresnel_dielectric(cos_i: f32, eta_i: f32, eta_t: f32) -> f32 {
     }
     let c = f64::from(clean_cos(cos_i));
     let (ni, nt) = (f64::from(eta_i), f64::from(eta_t));
-    // η_t²·cos²θ_t = η_t² − η_i²·sin²θ_i, rearranged without 1 − cos² (see `refract`).
-    let nt2_cos2_t = (nt - ni) * (nt + ni) + ni * ni * c * c;
-    if nt2_cos2_t.is_nan() || nt2_cos2_t <= 0.0 {
+    let Some(cos_t) = cos_transmitted(c, ni, nt) else {
         return 1.0;
-    }
-    let cos_t = nt2_cos2_t.sqrt() / nt;
+    };
     let r_s = (ni * c - nt * cos_t) / (ni * c + nt * cos_t);
     let r_p = (nt * c - ni * cos_t) / (nt * c + ni * cos_t);
     let f = 0.5 * (r_s * r_s + r_p * r_p);
@@ -181,12 +195,10 @@ pub fn schlick(cos_i: f32, eta_i: f32, eta_t: f32) -> f32 {
     let cos = if eta_i > eta_t {
         // cos θ_t in f64 (as in `fresnel_dielectric`): near the critical angle cos²θ_t is a
         // small difference of O(1) numbers, and an f32 rounding there would move F by ~1e-3.
-        let (ni, nt, c) = (f64::from(eta_i), f64::from(eta_t), f64::from(c));
-        let nt2_cos2_t = (nt - ni) * (nt + ni) + ni * ni * c * c;
-        if nt2_cos2_t.is_nan() || nt2_cos2_t <= 0.0 {
-            return 1.0;
+        match cos_transmitted(f64::from(c), f64::from(eta_i), f64::from(eta_t)) {
+            Some(cos_t) => cos_t as f32,
+            None => return 1.0,
         }
-        (nt2_cos2_t.sqrt() / nt) as f32
     } else {
         c
     };

@@ -105,8 +105,8 @@ impl Param {
 /// at most 4 decimals and no trailing zeros (`0.4856`, `-0.8`), `-0` (and anything that rounds to
 /// it) as `0`, non-finite values as `NaN`, `inf`, `-inf`. Never panics.
 ///
-/// Every number the kit prints for a student goes through here, so tables, products and the
-/// report agree digit for digit.
+/// Every number inside a printed matrix product goes through here. (Vertex and normal tables
+/// use the lecture's notation instead, with at least one decimal: [`crate::notation::decimal`].)
 #[must_use]
 pub fn format_number(x: f32) -> String {
     if x.is_nan() {
@@ -438,13 +438,17 @@ impl MatrixProduct {
     /// so a stack's top equals its product's matrix exactly). The empty product is the identity.
     ///
     /// # Errors
-    /// [`TransformError::InFactor`] with the index of the first invalid factor and its error.
+    /// [`TransformError::InFactor`] with the index of the first invalid factor and its error;
+    /// [`TransformError::Overflow`] when valid factors multiply out of f32's range.
     pub fn matrix(&self) -> Result<Mat4, TransformError> {
-        self.factors.iter().enumerate().try_fold(Mat4::IDENTITY, |acc, (index, f)| {
+        let m = self.factors.iter().enumerate().try_fold(Mat4::IDENTITY, |acc, (index, f)| {
             f.matrix()
                 .map(|m| acc * m)
                 .map_err(|e| TransformError::InFactor { index, source: Box::new(e) })
-        })
+        })?;
+        // Valid factors can still multiply out of f32's range (a scale of 3e38 times a
+        // translation of 3e38): an error, never a matrix of infinities and NaNs.
+        if m.is_finite() { Ok(m) } else { Err(TransformError::Overflow { what: "the product" }) }
     }
 
     /// The same product without its identity factors ([`Factor::is_identity`]): for the course

@@ -6,9 +6,12 @@ use std::collections::HashMap;
 
 use glam::{Vec2, Vec3};
 
+use crate::lang::Lang;
 use crate::mesh::Mesh;
 
 /// A shape parameter out of range, naming the shape and the parameter.
+///
+/// `Display` gives the English message; [`ShapeError::message`] gives it in either language.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error("{shape}: {parameter} = {value} is out of range ({expected})")]
 pub struct ShapeError {
@@ -18,8 +21,67 @@ pub struct ShapeError {
     pub parameter: &'static str,
     /// The value given, as text.
     pub value: String,
-    /// What is allowed (`an integer ≥ 1`, `finite and > 0`).
-    pub expected: &'static str,
+    /// What is allowed (`Display`: `an integer in 1..=4096`, `finite and > 0`).
+    pub expected: Allowed,
+}
+
+/// The values a shape parameter allows, for [`ShapeError`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Allowed {
+    /// A finite length > 0.
+    Positive,
+    /// An integer in `min..=max`.
+    Count {
+        /// The smallest allowed.
+        min: u32,
+        /// The largest allowed.
+        max: u32,
+    },
+    /// A finite length > 0 and below another parameter's value (a torus's `minor < major`).
+    PositiveBelow {
+        /// The other parameter.
+        other: &'static str,
+    },
+}
+
+impl Allowed {
+    /// What is allowed, in `lang`: `an integer in 3..=4096` / `3 以上 4096 以下の整数`.
+    #[must_use]
+    pub fn describe(self, lang: Lang) -> String {
+        match (self, lang) {
+            (Allowed::Positive, Lang::En) => "finite and > 0".into(),
+            (Allowed::Positive, Lang::Ja) => "0 より大きい有限の数".into(),
+            (Allowed::Count { min, max }, Lang::En) => format!("an integer in {min}..={max}"),
+            (Allowed::Count { min, max }, Lang::Ja) => format!("{min} 以上 {max} 以下の整数"),
+            (Allowed::PositiveBelow { other }, Lang::En) => format!("finite, > 0 and < {other}"),
+            (Allowed::PositiveBelow { other }, Lang::Ja) => {
+                format!("0 より大きく {other} より小さい有限の数")
+            }
+        }
+    }
+}
+
+impl std::fmt::Display for Allowed {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.describe(Lang::En))
+    }
+}
+
+impl ShapeError {
+    /// The message for a student in `lang`: `grid: divisions = 5000 is out of range (an integer
+    /// in 1..=4096)` / `grid の divisions = 5000 は範囲外です（1 以上 4096 以下の整数でなければなりません）`.
+    /// The English one is the `Display` text.
+    #[must_use]
+    pub fn message(&self, lang: Lang) -> String {
+        let ShapeError { shape, parameter, value, expected } = self;
+        match lang {
+            Lang::En => self.to_string(),
+            Lang::Ja => format!(
+                "{shape} の {parameter} = {value} は範囲外です（{}でなければなりません）",
+                expected.describe(Lang::Ja)
+            ),
+        }
+    }
 }
 
 pub(crate) fn check_positive(
@@ -30,7 +92,7 @@ pub(crate) fn check_positive(
     if v.is_finite() && v > 0.0 {
         Ok(v)
     } else {
-        Err(ShapeError { shape, parameter, value: v.to_string(), expected: "finite and > 0" })
+        Err(ShapeError { shape, parameter, value: v.to_string(), expected: Allowed::Positive })
     }
 }
 
@@ -40,11 +102,11 @@ pub(crate) fn check_count(
     v: u32,
     min: u32,
     max: u32,
-    expected: &'static str,
 ) -> Result<u32, ShapeError> {
     if (min..=max).contains(&v) {
         Ok(v)
     } else {
+        let expected = Allowed::Count { min, max };
         Err(ShapeError { shape, parameter, value: v.to_string(), expected })
     }
 }
@@ -84,7 +146,7 @@ pub fn lecture_pyramid() -> Mesh {
 /// # Errors
 /// `divisions` outside `1..=4096`, or `size` not finite and positive.
 pub fn grid(divisions: u32, size: f32) -> Result<Mesh, ShapeError> {
-    let n = check_count("grid", "divisions", divisions, 1, 4096, "an integer in 1..=4096")?;
+    let n = check_count("grid", "divisions", divisions, 1, MAX_SEGMENTS)?;
     let size = check_positive("grid", "size", size)?;
     let row = n + 1;
     let mut positions = Vec::with_capacity((row * row) as usize);
@@ -119,11 +181,10 @@ pub fn grid(divisions: u32, size: f32) -> Result<Mesh, ShapeError> {
 // starting at +X: (r·cos θ_k, y, −r·sin θ_k). That is +X rotated by θ_k about +Y (glRotatef(θ_k,
 // 0, 1, 0)), so the ring runs counter-clockwise seen from above.
 
-/// The largest `slices`, `stacks`, `sides` and segment counts.
+/// The largest grid `divisions`, and the largest `slices`, `stacks`, `sides` and segment counts.
 const MAX_SEGMENTS: u32 = 4096;
 /// The largest icosphere subdivision level (20·4⁸ = 1 310 720 faces).
 const MAX_SUBDIVISIONS: u32 = 8;
-const SEGMENTS: &str = "an integer in 3..=4096";
 
 /// `(cos, sin)` of the angle `turn · numerator / denominator` turns, in f64, exact at multiples
 /// of a quarter turn (so a square's corners have exact zeros, not 6e-17).
@@ -220,8 +281,8 @@ pub fn cuboid(size: Vec3) -> Result<Mesh, ShapeError> {
 /// `radius` not finite and positive; `slices` outside 3..=4096; `stacks` outside 2..=4096.
 pub fn uv_sphere(radius: f32, slices: u32, stacks: u32) -> Result<Mesh, ShapeError> {
     let r = f64::from(check_positive("uv_sphere", "radius", radius)?);
-    let n = check_count("uv_sphere", "slices", slices, 3, MAX_SEGMENTS, SEGMENTS)?;
-    let m = check_count("uv_sphere", "stacks", stacks, 2, MAX_SEGMENTS, "an integer in 2..=4096")?;
+    let n = check_count("uv_sphere", "slices", slices, 3, MAX_SEGMENTS)?;
+    let m = check_count("uv_sphere", "stacks", stacks, 2, MAX_SEGMENTS)?;
     let rings = m - 1;
     let north = 1 + rings * n;
     let mut positions = Vec::with_capacity(north as usize + 1);
@@ -262,14 +323,7 @@ pub fn uv_sphere(radius: f32, slices: u32, stacks: u32) -> Result<Mesh, ShapeErr
 pub fn icosphere(radius: f32, subdivisions: u32) -> Result<Mesh, ShapeError> {
     use glam::DVec3;
     let r = f64::from(check_positive("icosphere", "radius", radius)?);
-    let levels = check_count(
-        "icosphere",
-        "subdivisions",
-        subdivisions,
-        0,
-        MAX_SUBDIVISIONS,
-        "an integer in 0..=8",
-    )?;
+    let levels = check_count("icosphere", "subdivisions", subdivisions, 0, MAX_SUBDIVISIONS)?;
     let (h, rho) = (1.0 / 5f64.sqrt(), 2.0 / 5f64.sqrt());
     let mut unit = vec![DVec3::NEG_Y];
     for (y, phase) in [(-h, 0), (h, 1)] {
@@ -325,7 +379,7 @@ pub fn icosphere(radius: f32, subdivisions: u32) -> Result<Mesh, ShapeError> {
 pub fn cylinder(radius: f32, height: f32, slices: u32) -> Result<Mesh, ShapeError> {
     let r = f64::from(check_positive("cylinder", "radius", radius)?);
     let y = f64::from(check_positive("cylinder", "height", height)?) / 2.0;
-    let n = check_count("cylinder", "slices", slices, 3, MAX_SEGMENTS, SEGMENTS)?;
+    let n = check_count("cylinder", "slices", slices, 3, MAX_SEGMENTS)?;
     let mut positions = Vec::with_capacity(2 * n as usize + 2);
     push_ring(&mut positions, n, r, -y);
     push_ring(&mut positions, n, r, y);
@@ -355,7 +409,7 @@ pub fn cylinder(radius: f32, height: f32, slices: u32) -> Result<Mesh, ShapeErro
 pub fn cone(radius: f32, height: f32, slices: u32) -> Result<Mesh, ShapeError> {
     let r = f64::from(check_positive("cone", "radius", radius)?);
     let y = check_positive("cone", "height", height)? / 2.0;
-    let n = check_count("cone", "slices", slices, 3, MAX_SEGMENTS, SEGMENTS)?;
+    let n = check_count("cone", "slices", slices, 3, MAX_SEGMENTS)?;
     let mut positions = Vec::with_capacity(n as usize + 2);
     push_ring(&mut positions, n, r, f64::from(-y));
     positions.push(Vec3::new(0.0, -y, 0.0));
@@ -396,11 +450,11 @@ pub fn torus(
             shape: "torus",
             parameter: "minor",
             value: minor.to_string(),
-            expected: "finite, > 0 and < major",
+            expected: Allowed::PositiveBelow { other: "major" },
         });
     }
-    let n = check_count("torus", "major_segments", major_segments, 3, MAX_SEGMENTS, SEGMENTS)?;
-    let m = check_count("torus", "minor_segments", minor_segments, 3, MAX_SEGMENTS, SEGMENTS)?;
+    let n = check_count("torus", "major_segments", major_segments, 3, MAX_SEGMENTS)?;
+    let m = check_count("torus", "minor_segments", minor_segments, 3, MAX_SEGMENTS)?;
     let mut positions = Vec::with_capacity((n * m) as usize);
     for i in 0..n {
         let (ct, st) = cos_sin_turn(i, n);
@@ -448,7 +502,7 @@ pub fn prism(sides: u32, radius: f32, height: f32) -> Result<Mesh, ShapeError> {
 pub fn pyramid(sides: u32, radius: f32, height: f32) -> Result<Mesh, ShapeError> {
     let r = f64::from(check_positive("pyramid", "radius", radius)?);
     let y = check_positive("pyramid", "height", height)? / 2.0;
-    let n = check_count("pyramid", "sides", sides, 3, MAX_SEGMENTS, SEGMENTS)?;
+    let n = check_count("pyramid", "sides", sides, 3, MAX_SEGMENTS)?;
     let mut positions = Vec::with_capacity(n as usize + 1);
     push_ring(&mut positions, n, r, f64::from(-y));
     positions.push(Vec3::new(0.0, y, 0.0));
@@ -491,7 +545,7 @@ fn frustum_named(
     let bottom = f64::from(check_positive(shape, bottom_name, bottom_radius)?);
     let top = f64::from(check_positive(shape, top_name, top_radius)?);
     let y = f64::from(check_positive(shape, "height", height)?) / 2.0;
-    let n = check_count(shape, "sides", sides, 3, MAX_SEGMENTS, SEGMENTS)?;
+    let n = check_count(shape, "sides", sides, 3, MAX_SEGMENTS)?;
     let mut positions = Vec::with_capacity(2 * n as usize);
     push_ring(&mut positions, n, bottom, -y);
     push_ring(&mut positions, n, top, y);

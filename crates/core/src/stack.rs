@@ -17,6 +17,7 @@
 
 use glam::{Mat4, Vec3};
 
+use crate::lang::Lang;
 use crate::product::{Factor, MatrixProduct};
 use crate::transform::TransformError;
 
@@ -48,6 +49,23 @@ pub enum StackError {
     /// value, a bad perspective. The stack is unchanged.
     #[error("GL_INVALID_VALUE: {0}")]
     Transform(#[from] TransformError),
+}
+
+impl StackError {
+    /// The message for a student in `lang` (`Display` is the English one), with OpenGL's error
+    /// name and the usual cause.
+    #[must_use]
+    pub fn message(&self, lang: Lang) -> String {
+        match (self, lang) {
+            (StackError::Underflow, Lang::Ja) => "GL_STACK_UNDERFLOW: 対応する push のない pop です（深さはすでに 1）。push と pop の数と位置を確認してください".into(),
+            (StackError::Underflow, Lang::En) => self.to_string(),
+            (StackError::Overflow { max_depth }, Lang::Ja) => format!(
+                "GL_STACK_OVERFLOW: 最大の深さ {max_depth} を超えて push しました（ループの中で pop を忘れていませんか）"
+            ),
+            (StackError::Overflow { .. }, Lang::En) => self.to_string(),
+            (StackError::Transform(e), _) => format!("GL_INVALID_VALUE: {}", e.message(lang)),
+        }
+    }
 }
 
 impl Default for MatrixStack {

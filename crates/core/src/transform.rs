@@ -23,6 +23,7 @@
 
 use glam::{DVec3, Mat4, Vec3, Vec4};
 
+use crate::lang::Lang;
 use crate::math::{angle_between, try_normalize, try_normalize_f64};
 
 /// [`look_at`] refuses an `up` vector closer than this to the view direction (or its opposite),
@@ -34,20 +35,16 @@ use crate::math::{angle_between, try_normalize, try_normalize_f64};
 /// NaN there).
 pub const LOOK_AT_MIN_UP_ANGLE_DEG: f64 = 0.01;
 
-/// Why a transform could not be built. Each message names the offending value, in English and
-/// Japanese.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+/// Why a transform could not be built. Each message names the offending value;
+/// [`TransformError::message`] gives it in Japanese or English (`Display` is the English one).
+#[derive(Clone, Debug, PartialEq)]
 pub enum TransformError {
     /// A rotation axis that is zero or not finite (glRotatef needs a direction).
-    #[error(
-        "rotation axis {axis} is zero or not finite: glRotatef needs a non-zero direction / 回転軸 {axis} がゼロまたは有限でない値です"
-    )]
     RotationAxis {
         /// The axis as given.
         axis: Vec3,
     },
     /// A parameter that must be finite is ±∞ or NaN.
-    #[error("{what} = {value} is not finite / {what} = {value} が有限の値ではありません")]
     NotFinite {
         /// Which parameter (`translation`, `rotation angle`, `scale`, …).
         what: &'static str,
@@ -55,9 +52,6 @@ pub enum TransformError {
         value: f32,
     },
     /// A named matrix factor with a non-finite entry.
-    #[error(
-        "matrix {name} has a non-finite entry {value} / 行列 {name} に有限でない要素 {value} があります"
-    )]
     MatrixNotFinite {
         /// The factor's name.
         name: String,
@@ -65,17 +59,11 @@ pub enum TransformError {
         value: f32,
     },
     /// Perspective: `near` is not a positive (normal) finite number.
-    #[error(
-        "perspective: near = {near} must be a finite number > 0 / 透視投影: near = {near} は正の有限値でなければなりません"
-    )]
     NearPlane {
         /// The near plane distance as given.
         near: f32,
     },
     /// Perspective: `far` is not finite or not beyond `near`.
-    #[error(
-        "perspective: far = {far} must be finite and greater than near = {near} / 透視投影: far = {far} は有限で near = {near} より大きくなければなりません"
-    )]
     FarPlane {
         /// The near plane distance.
         near: f32,
@@ -84,9 +72,6 @@ pub enum TransformError {
     },
     /// Perspective: the depth mapping of `near` and `far` overflows f32 (far only a few ulps
     /// beyond a huge near).
-    #[error(
-        "perspective: near = {near} and far = {far} are too close for an f32 depth mapping / 透視投影: near = {near} と far = {far} が近すぎて奥行きを表せません"
-    )]
     DepthRange {
         /// The near plane distance.
         near: f32,
@@ -94,26 +79,17 @@ pub enum TransformError {
         far: f32,
     },
     /// Perspective: the vertical field of view is not strictly between 0° and 180°.
-    #[error(
-        "perspective: fovy = {fovy_deg}° must lie strictly between 0° and 180° / 透視投影: 視野角 fovy = {fovy_deg}° は 0° より大きく 180° より小さくなければなりません"
-    )]
     FieldOfView {
         /// The field of view in degrees as given.
         fovy_deg: f32,
     },
     /// Perspective: the aspect ratio is not a positive finite number (or so extreme that the
     /// x scale over- or underflows).
-    #[error(
-        "perspective: aspect = {aspect} must be a finite number > 0 / 透視投影: アスペクト比 aspect = {aspect} は正の有限値でなければなりません"
-    )]
     AspectRatio {
         /// Width / height as given.
         aspect: f32,
     },
     /// Look-at: a non-finite eye, target or up.
-    #[error(
-        "look_at: eye {eye}, target {target} and up {up} must be finite / look_at: 視点 {eye}・注視点 {target}・上方向 {up} は有限の値でなければなりません"
-    )]
     LookAtNotFinite {
         /// The eye as given.
         eye: Vec3,
@@ -123,18 +99,11 @@ pub enum TransformError {
         up: Vec3,
     },
     /// Look-at: the eye is at the target, so there is no view direction.
-    #[error(
-        "look_at: eye and target are the same point {eye}: no view direction / look_at: 視点と注視点が同じ点 {eye} です"
-    )]
     EyeAtTarget {
         /// The common point.
         eye: Vec3,
     },
     /// Look-at: `up` is zero or (nearly) parallel to the view direction, so the roll is undefined.
-    #[error(
-        "look_at: up {up} is within {angle_deg}° of the view direction {direction} (minimum {min}°) / look_at: 上方向 {up} が視線方向 {direction} とほぼ平行です（{angle_deg}°、最小 {min}°）",
-        min = LOOK_AT_MIN_UP_ANGLE_DEG
-    )]
     UpParallelToView {
         /// The up vector as given.
         up: Vec3,
@@ -144,19 +113,159 @@ pub enum TransformError {
         angle_deg: f64,
     },
     /// A result entry overflows f32 although every input was valid.
-    #[error("{what} overflows f32 / {what} が f32 の範囲を超えます")]
     Overflow {
         /// What overflowed.
         what: &'static str,
     },
     /// A factor of a [`crate::product::MatrixProduct`] is invalid.
-    #[error("factor {index} of the product: {source} / 積の {index} 番目の因子: {source}")]
     InFactor {
         /// The factor's index, 0 = leftmost.
         index: usize,
         /// What is wrong with it.
         source: Box<TransformError>,
     },
+}
+
+impl TransformError {
+    /// The message for a student in `lang`, naming the offending value.
+    #[must_use]
+    pub fn message(&self, lang: Lang) -> String {
+        let ja = lang == Lang::Ja;
+        match self {
+            TransformError::RotationAxis { axis } => {
+                if ja {
+                    format!(
+                        "回転軸 {axis} がゼロまたは有限でない値です（glRotatef には長さのある方向が必要です）"
+                    )
+                } else {
+                    format!(
+                        "rotation axis {axis} is zero or not finite: glRotatef needs a non-zero direction"
+                    )
+                }
+            }
+            TransformError::NotFinite { what, value } => {
+                if ja {
+                    format!("{what} = {value} が有限の値ではありません")
+                } else {
+                    format!("{what} = {value} is not finite")
+                }
+            }
+            TransformError::MatrixNotFinite { name, value } => {
+                if ja {
+                    format!("行列 {name} に有限でない要素 {value} があります")
+                } else {
+                    format!("matrix {name} has a non-finite entry {value}")
+                }
+            }
+            TransformError::NearPlane { near } => {
+                if ja {
+                    format!(
+                        "透視投影: near = {near:e} は正の有限値（非正規化数ではない値）でなければなりません"
+                    )
+                } else {
+                    format!(
+                        "perspective: near = {near:e} must be a finite, normal (not subnormal) number > 0"
+                    )
+                }
+            }
+            TransformError::FarPlane { near, far } => {
+                if ja {
+                    format!(
+                        "透視投影: far = {far} は有限で near = {near} より大きくなければなりません"
+                    )
+                } else {
+                    format!(
+                        "perspective: far = {far} must be finite and greater than near = {near}"
+                    )
+                }
+            }
+            TransformError::DepthRange { near, far } => {
+                if ja {
+                    format!("透視投影: near = {near} と far = {far} が近すぎて奥行きを表せません")
+                } else {
+                    format!(
+                        "perspective: near = {near} and far = {far} are too close for an f32 depth mapping"
+                    )
+                }
+            }
+            TransformError::FieldOfView { fovy_deg } => {
+                if ja {
+                    format!(
+                        "透視投影: 視野角 fovy = {fovy_deg}° は 0° より大きく 180° より小さくなければなりません"
+                    )
+                } else {
+                    format!("perspective: fovy = {fovy_deg}° must lie strictly between 0° and 180°")
+                }
+            }
+            TransformError::AspectRatio { aspect } => {
+                if ja {
+                    format!(
+                        "透視投影: アスペクト比 aspect = {aspect:e} は正の有限値で、投影行列があふれない大きさでなければなりません"
+                    )
+                } else {
+                    format!(
+                        "perspective: aspect = {aspect:e} must be a finite number > 0, not so extreme that the projection overflows"
+                    )
+                }
+            }
+            TransformError::LookAtNotFinite { eye, target, up } => {
+                if ja {
+                    format!(
+                        "look_at: 視点 {eye}・注視点 {target}・上方向 {up} は有限の値でなければなりません"
+                    )
+                } else {
+                    format!("look_at: eye {eye}, target {target} and up {up} must be finite")
+                }
+            }
+            TransformError::EyeAtTarget { eye } => {
+                if ja {
+                    format!("look_at: 視点と注視点が同じ点 {eye} です（視線の方向が決まりません）")
+                } else {
+                    format!("look_at: eye and target are the same point {eye}: no view direction")
+                }
+            }
+            TransformError::UpParallelToView { up, direction, angle_deg } => {
+                if ja {
+                    format!(
+                        "look_at: 上方向 {up} が視線方向 {direction} とほぼ平行です（{angle_deg}°、最小 {LOOK_AT_MIN_UP_ANGLE_DEG}°）"
+                    )
+                } else {
+                    format!(
+                        "look_at: up {up} is within {angle_deg}° of the view direction {direction} (minimum {LOOK_AT_MIN_UP_ANGLE_DEG}°)"
+                    )
+                }
+            }
+            TransformError::Overflow { what } => {
+                if ja {
+                    format!("{what} が f32 の範囲を超えます")
+                } else {
+                    format!("{what} overflows f32")
+                }
+            }
+            TransformError::InFactor { index, source } => {
+                if ja {
+                    format!("積の {index} 番目の因子: {}", source.message(lang))
+                } else {
+                    format!("factor {index} of the product: {}", source.message(lang))
+                }
+            }
+        }
+    }
+}
+
+impl std::fmt::Display for TransformError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message(Lang::En))
+    }
+}
+
+impl std::error::Error for TransformError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            TransformError::InFactor { source, .. } => Some(source.as_ref()),
+            _ => None,
+        }
+    }
 }
 
 /// T(v): the translation by `v` (glTranslatef).

@@ -234,6 +234,48 @@ fn row01_zero_area_triangles() {
         tilt.to_degrees()
     );
 
+    // A sliver: the third corner is the f32-rounded midpoint of an edge of a flat, tilted fan,
+    // so the three corners are collinear in intent but not exactly (rounding moved m off the
+    // line). Its exact normal is rounding noise; the kit treats it as degenerate, so no
+    // weighting — not even uniform or angle, which give it a full weight — lets it tilt the
+    // vertex normals around it.
+    let tilt = DQuat::from_axis_angle(DVec3::new(1.0, 2.0, 0.5).normalize(), 0.7);
+    let flat = {
+        let center = DVec3::new(0.31, -0.17, 0.23);
+        let mut positions = vec![center.as_vec3()];
+        for k in 0..6 {
+            let t = f64::from(k) * PI / 3.0 + 0.2;
+            positions.push((center + tilt * DVec3::new(t.cos(), t.sin(), 0.0)).as_vec3());
+        }
+        Mesh::new(positions, (0..6).map(|k| [0, 1 + k, 1 + (k + 1) % 6]).collect())
+    };
+    let plane = (tilt * DVec3::Z).normalize();
+    let (c0, r0) = (flat.positions[0], flat.positions[1]);
+    let m = (c0 + r0) * 0.5;
+    assert_ne!(exact_cross(c0, r0, m), [0; 3], "premise: rounding moved m off the line");
+    let noise_normal = exact_normal(c0, r0, m).unwrap();
+    let off = angle(noise_normal, plane).min(angle(-noise_normal, plane));
+    assert!(off > 10f64.to_radians(), "premise: its exact normal is {}° off", off.to_degrees());
+    assert_eq!(face_normal(c0, r0, m), None, "collinear within rounding: no normal");
+    let mut sliver = flat.clone();
+    sliver.positions.push(m); // V7
+    sliver.faces.push([0, 1, 7]);
+    for w in ALL {
+        let want = vertex_normals(&flat, w).normals;
+        let got = vertex_normals(&sliver, w);
+        assert_eq!(got.normals[..7], want[..], "{w:?}: the sliver tilts nothing");
+        assert_eq!(got.fallbacks, [(7, Fallback::Degenerate)], "{w:?}");
+        assert!(error(got.normals[0], plane) < F32_DIRECTION * 4.0, "{w:?}: centre normal");
+    }
+    assert!(
+        sliver
+            .validate()
+            .problems()
+            .iter()
+            .any(|p| p.describe(cg_core::lang::Lang::En).contains("F6")),
+        "validation names the sliver"
+    );
+
     // A face with an index out of range has no normal and contributes nothing; nothing panics.
     let mut broken = clean.clone();
     broken.faces.push([0, 1, 99]);

@@ -9,8 +9,8 @@
 use cg_core::camera::{CameraLimits, MouseButton, MouseState, OrbitCamera};
 use cg_core::glam::{DMat4, DVec3, DVec4, Mat4, Vec3};
 use cg_core::transform::{look_at, transform_point};
-use cg_testkit::assert_approx_eq;
 use cg_testkit::prop::log_uniform;
+use cg_testkit::{Approx, assert_approx_eq};
 use proptest::prelude::*;
 
 fn config(cases: u32) -> ProptestConfig {
@@ -44,16 +44,10 @@ fn view_f64(c: &OrbitCamera) -> DMat4 {
     t * rx * ry * tt
 }
 
-fn max_diff(a: DMat4, b: DMat4) -> f64 {
-    (a - b)
-        .to_cols_array()
-        .iter()
-        .fold(0.0f64, |m, x| if x.is_nan() { f64::NAN } else { m.max(x.abs()) })
-}
-
 fn rotation_error(m: Mat4) -> f64 {
     let r = cg_core::glam::DMat3::from_mat4(m.as_dmat4());
-    max_diff(DMat4::from_mat3(r.transpose() * r), DMat4::IDENTITY)
+    DMat4::from_mat3(r.transpose() * r)
+        .max_abs_diff(&DMat4::IDENTITY)
         .max((r.determinant() - 1.0).abs())
 }
 
@@ -116,11 +110,11 @@ proptest! {
         // magnitude involved (distance + |target|).
         let scale = f64::from(distance) + c.target.as_dvec3().length();
         let tol = 8.0 * f64::from(f32::EPSILON) * scale.max(1.0);
-        let d = max_diff(v.as_dmat4(), view_f64(&c));
+        let d = v.as_dmat4().max_abs_diff(&view_f64(&c));
         prop_assert!(d <= tol, "view vs f64 oracle: {d:e} > {tol:e}");
         prop_assert!(rotation_error(v) <= 1e-6, "rotation part not orthonormal");
         let vp = c.view_product().matrix().unwrap();
-        prop_assert!(max_diff(vp.as_dmat4(), v.as_dmat4()) <= tol, "view_product ≠ view_matrix");
+        prop_assert!(vp.as_dmat4().max_abs_diff(&v.as_dmat4()) <= tol, "view_product ≠ view_matrix");
         // The eye is where the inverse view sends the origin (f64 inverse of the f64 oracle).
         let eye = view_f64(&c).inverse().transform_point3(DVec3::ZERO);
         let got = c.eye_position().as_dvec3();
@@ -313,7 +307,7 @@ fn row10_orbit_camera_crosses_the_pole_without_roll_flip() {
     for i in 1..=n {
         let pitch = -80.0 - step * i as f32;
         let v = wide(pitch).view_matrix();
-        let d = max_diff(v.as_dmat4(), prev.as_dmat4());
+        let d = v.as_dmat4().max_abs_diff(&prev.as_dmat4());
         assert!(d <= bound, "jump of {d} at pitch {pitch}");
         prev = v;
     }
@@ -323,6 +317,9 @@ fn row10_orbit_camera_crosses_the_pole_without_roll_flip() {
     let eye = |p: f32| wide(p).eye_position();
     let a = look_at(eye(-89.9), Vec3::ZERO, Vec3::Y).unwrap();
     let b = look_at(eye(-90.1), Vec3::ZERO, Vec3::Y).unwrap();
-    assert!(max_diff(a.as_dmat4(), b.as_dmat4()) > 1.0, "premise: look_at flips across the pole");
+    assert!(
+        a.as_dmat4().max_abs_diff(&b.as_dmat4()) > 1.0,
+        "premise: look_at flips across the pole"
+    );
     assert!(look_at(eye(-90.0), Vec3::ZERO, Vec3::Y).is_err(), "and has no answer on it");
 }

@@ -6,8 +6,8 @@ use cg_core::camera::OrbitCamera;
 use cg_core::glam::{DMat4, DVec3, Mat4, Vec3};
 use cg_core::product::{Axis, Factor, MatrixProduct, Param, format_number};
 use cg_core::transform::{self, TransformError};
-use cg_testkit::assert_approx_eq;
 use cg_testkit::prop::vec3;
+use cg_testkit::{Approx, assert_approx_eq};
 use proptest::prelude::*;
 
 fn config(cases: u32) -> ProptestConfig {
@@ -51,12 +51,6 @@ fn norm(m: DMat4) -> f64 {
     (0..4).map(|r| m.row(r).abs().element_sum()).fold(0.0, f64::max)
 }
 
-/// `max |aᵢⱼ − bᵢⱼ|` (NaN if either has a NaN).
-fn max_diff(a: DMat4, b: DMat4) -> f64 {
-    let d = (a - b).to_cols_array().map(f64::abs);
-    if d.iter().any(|x| x.is_nan()) { f64::NAN } else { d.into_iter().fold(0.0, f64::max) }
-}
-
 proptest! {
     #![proptest_config(config(256))]
 
@@ -88,7 +82,7 @@ proptest! {
         let oracle = factors.iter().fold(DMat4::IDENTITY, |acc, f| acc * factor_f64(f));
         let bound: f64 = factors.iter().map(|f| norm(factor_f64(f))).product();
         let tol = (factors.len() as f64 + 1.0) * 8.0 * f64::from(f32::EPSILON) * bound;
-        let diff = max_diff(got.as_dmat4(), oracle);
+        let diff = got.as_dmat4().max_abs_diff(&oracle);
         prop_assert!(diff <= tol, "|product − f64 oracle| = {diff:e} > {tol:e} for {product}");
 
         // Simplification never changes the matrix.
@@ -106,7 +100,7 @@ proptest! {
         let oracle = a.matrix().unwrap().as_dmat4() * b.matrix().unwrap().as_dmat4();
         let bound = norm(a.matrix().unwrap().as_dmat4()) * norm(b.matrix().unwrap().as_dmat4());
         let tol = 64.0 * f64::from(f32::EPSILON) * bound;
-        let diff = max_diff(ab.matrix().unwrap().as_dmat4(), oracle);
+        let diff = ab.matrix().unwrap().as_dmat4().max_abs_diff(&oracle);
         prop_assert!(diff <= tol, "|concat − f64 oracle| = {diff:e} > {tol:e} for {ab}");
     }
 }
@@ -432,4 +426,16 @@ fn latex_is_well_formed() {
     {
         assert!(std::panic::catch_unwind(|| assert_valid_latex(broken)).is_err(), "{broken}");
     }
+}
+
+#[test]
+fn a_product_that_overflows_is_an_error_not_infinities() {
+    use cg_core::transform::TransformError;
+    let p = MatrixProduct::identity()
+        .then(Factor::scale(Vec3::splat(3e38)))
+        .then(Factor::translate(Vec3::new(3e38, 0.0, 0.0)));
+    // Each factor alone is fine …
+    assert!(p.factors.iter().all(|f| f.matrix().is_ok()));
+    // … their product is 9e76 in the translation column.
+    assert_eq!(p.matrix(), Err(TransformError::Overflow { what: "the product" }));
 }

@@ -174,3 +174,16 @@ fn the_warm_up_boxes_share_the_view_through_push_and_pop() {
     assert_eq!(tops[2], "T(0, 0, -15) · Rx(30°) · T(4, 0, 0) · Ry(30°)");
     assert_eq!(stack.depth(), 1);
 }
+
+#[test]
+fn stack_and_transform_errors_read_in_both_languages() {
+    use cg_core::lang::Lang;
+    let mut stack = MatrixStack::new();
+    let e = stack.pop().unwrap_err();
+    assert!(e.message(Lang::Ja).contains("対応する push のない pop"), "{}", e.message(Lang::Ja));
+    assert_eq!(e.message(Lang::En), e.to_string());
+    let e = stack.rotate_deg(30.0, Vec3::ZERO).unwrap_err();
+    let (ja, en) = (e.message(Lang::Ja), e.message(Lang::En));
+    assert!(ja.contains("回転軸") && !ja.contains("rotation axis"), "{ja}");
+    assert!(en.contains("rotation axis") && !en.contains("回転軸"), "{en}");
+}

@@ -334,7 +334,7 @@ fn row20_perspective_near_not_positive_is_an_error() {
             matches!(err, TransformError::NearPlane { near: n } if n.to_bits() == near.to_bits()),
             "near = {near}: {err:?}"
         );
-        assert!(err.to_string().contains(&format!("near = {near}")), "{err}");
+        assert!(err.to_string().contains(&format!("near = {near:e}")), "{err}");
         assert!(matches!(
             perspective_gl(45.0, 1.0, near, 500.0),
             Err(TransformError::NearPlane { .. })

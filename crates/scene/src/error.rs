@@ -8,6 +8,7 @@ use cg_core::lang::Lang;
 use cg_core::mesh::MeshError;
 use cg_core::shapes::ShapeError;
 use cg_core::texture::TextureError;
+use cg_core::transform::TransformError;
 
 /// A problem with a scene file or a file it refers to, naming the file, the place and the key:
 ///
@@ -131,18 +132,61 @@ pub enum ErrorKind {
     NeedsUvs,
     /// A built-in shape rejected its parameters.
     Shape(ShapeError),
+    /// A built-in shape would have more faces than one shape may have (the error's key is the
+    /// parameter that sets the count).
+    TooManyFaces {
+        /// The shape (`grid`, `uv_sphere`, …).
+        shape: &'static str,
+        /// How many triangles it would have.
+        faces: u64,
+        /// The most a shape may have ([`crate::MAX_SHAPE_FACES`]).
+        max: u64,
+    },
+    /// The camera or the projection is one that `cg_core::transform` cannot build (`look_at`'s
+    /// up nearly parallel to the view, a subnormal `near`, …).
+    Transform(TransformError),
     /// A problem inside a file the scene refers to (an OBJ model, a PNG texture).
     File(Box<SceneError>),
     /// The OBJ parser (tobj) rejected the file.
     Obj(tobj::LoadError),
-    /// A face of an OBJ file refers to an element that does not exist.
+    /// A face of an OBJ file refers to an element that does not exist (yet): indices count the
+    /// elements on the lines before the face.
     ObjIndex {
         /// `v`, `vt` or `vn`.
         element: &'static str,
         /// The index as written (1-based; negative counts back from the last one read).
         index: i64,
-        /// How many such elements the file has (for negative indices: before this face).
+        /// How many such elements the lines before the face define.
         count: usize,
+    },
+    /// A word of an OBJ file that should be a number is not one (`v 1 0 x`, `f 1 2 x`, an
+    /// index too large for any file).
+    ObjNumber {
+        /// The line's keyword: `v`, `vt`, `vn`, `f` or `l`.
+        element: &'static str,
+        /// The word as written.
+        word: String,
+    },
+    /// A `v`, `vt` or `vn` line of an OBJ file has too few numbers (or, for `v`, a count that is
+    /// neither x y z, x y z w nor x y z r g b), or an `f` or `l` line has no corners.
+    ObjValues {
+        /// `v`, `vt`, `vn`, `f` or `l`.
+        element: &'static str,
+        /// How many values the line has.
+        found: usize,
+    },
+    /// A face corner of an OBJ file is not `v`, `v/vt`, `v//vn` or `v/vt/vn`.
+    ObjCorner {
+        /// The corner as written.
+        corner: String,
+    },
+    /// A `v` line of an OBJ file has w = 0, or a coordinate that is not finite (after the
+    /// division by w).
+    ObjPosition {
+        /// The position after the division by w.
+        position: [f32; 3],
+        /// The homogeneous w (1 when not written).
+        w: f32,
     },
     /// The OBJ file has no faces.
     ObjNoFaces,
@@ -165,6 +209,13 @@ pub enum ErrorKind {
     Mesh(MeshError),
     /// The file is not a PNG image.
     NotPng,
+    /// The PNG image is larger than the decoder's memory limit allows.
+    PngTooLarge {
+        /// Width in pixels, from the PNG header.
+        width: u32,
+        /// Height in pixels, from the PNG header.
+        height: u32,
+    },
     /// The PNG image is corrupt or truncated.
     Png {
         /// The decoder's reason.
@@ -192,8 +243,6 @@ pub enum Expected {
     Boolean,
     /// A table.
     Table,
-    /// An array.
-    Array,
     /// An array of tables (`[[objects]]`, `transform = [{ … }, …]`).
     ArrayOfTables,
     /// `[x, y, z]`.
@@ -286,9 +335,10 @@ pub enum Rule {
         /// Its value.
         value: f64,
     },
-    /// `up` parallel to the view direction `target − eye`.
+    /// `up` parallel to the view direction `target − eye`. (The reader now reports a look-at
+    /// camera's problems as [`ErrorKind::Transform`], from `cg_core::transform::look_at`.)
     NotParallelToView,
-    /// `eye` equal to `target`.
+    /// `eye` equal to `target`. (Reported as [`ErrorKind::Transform`] now, as above.)
     DifferentFromTarget,
     /// `edge_u × edge_v` is zero: the area light has no area.
     NonZeroArea,
@@ -492,20 +542,23 @@ impl ErrorKind {
                     "a texture needs texture coordinates and this mesh has none (grid has them; an OBJ needs `vt` lines)".into()
                 }
             }
-            ErrorKind::Shape(e) => {
+            ErrorKind::Shape(e) => e.message(lang),
+            ErrorKind::TooManyFaces { shape, faces, max } => {
                 if ja {
                     format!(
-                        "{} の {} = {} は範囲外です（{}）",
-                        e.shape, e.parameter, e.value, e.expected
+                        "この {shape} は面（三角形）が {faces} 個になります。1 つの形の面は {max} 個までです。分割数を減らしてください"
                     )
                 } else {
-                    e.to_string()
+                    format!(
+                        "this {shape} would have {faces} faces (triangles), more than the {max} one shape may have: use fewer segments"
+                    )
                 }
             }
+            ErrorKind::Transform(e) => e.message(lang),
             ErrorKind::File(inner) => inner.describe(lang),
             ErrorKind::Obj(e) => {
                 if ja {
-                    format!("OBJ ファイルとして読めません（{e}）")
+                    format!("OBJ ファイルとして読めません（{}）", obj_error_ja(*e))
                 } else {
                     format!("not a valid OBJ file: {e}")
                 }
@@ -513,12 +566,76 @@ impl ErrorKind {
             ErrorKind::ObjIndex { element, index, count } => {
                 if ja {
                     format!(
-                        "面が {element} の {index} 番を参照していますが、{element} は {count} 個しかありません（番号は 1 から、負の数は後ろから数えます）"
+                        "面が {element} の {index} 番を参照していますが、この行より前の {element} 行は {count} 個です（番号は 1 から、負の数はこの行から後ろ向きに数えます）"
                     )
                 } else {
                     format!(
-                        "a face refers to {element} number {index}, but the file has {count} `{element}` lines (indices count from 1; negative ones count back)"
+                        "a face refers to {element} number {index}, but the lines before it define {count} `{element}` (indices count from 1; negative ones count back from this line)"
                     )
+                }
+            }
+            ErrorKind::ObjNumber { element: element @ ("f" | "l"), word } => {
+                if ja {
+                    format!(
+                        "`{word}` は {element} 行の頂点番号として使えません（1 から数える整数か、後ろから数える負の整数を書きます）"
+                    )
+                } else {
+                    format!(
+                        "`{word}` is not a usable index on an `{element}` line (a whole number counted from 1, or a negative one counting back)"
+                    )
+                }
+            }
+            ErrorKind::ObjNumber { element, word } => {
+                if ja {
+                    format!("{element} 行の `{word}` は数ではありません")
+                } else {
+                    format!("`{word}` on a `{element}` line is not a number")
+                }
+            }
+            ErrorKind::ObjValues { element: element @ ("f" | "l"), .. } => {
+                if ja {
+                    format!("{element} 行に頂点番号がありません")
+                } else {
+                    format!("an `{element}` line without vertex numbers")
+                }
+            }
+            ErrorKind::ObjValues { element, found } => {
+                let (en, ja_text) = match *element {
+                    "v" => (
+                        "3 coordinates x y z, optionally followed by w or by a colour r g b",
+                        "3 つの座標 x y z（その後に w、または色 r g b を続けてもかまいません）",
+                    ),
+                    "vt" => ("at least 2 coordinates u v", "少なくとも 2 つの座標 u v"),
+                    _ => ("3 components x y z", "3 つの成分 x y z"),
+                };
+                if ja {
+                    format!("{element} 行には{ja_text}が必要ですが、{found} 個の値が書かれています")
+                } else {
+                    format!("a `{element}` line needs {en}; this one has {found} values")
+                }
+            }
+            ErrorKind::ObjCorner { corner } => {
+                if ja {
+                    format!(
+                        "面の頂点 `{corner}` の書き方が違います（v、v/vt、v//vn、v/vt/vn のどれかで書きます）"
+                    )
+                } else {
+                    format!("face corner `{corner}` is not one of v, v/vt, v//vn, v/vt/vn")
+                }
+            }
+            ErrorKind::ObjPosition { position: [x, y, z], w } => {
+                if ja {
+                    if *w == 0.0 {
+                        "同次座標 w が 0 です（頂点が無限遠になります）".into()
+                    } else {
+                        format!(
+                            "頂点の座標 ({x}, {y}, {z}) が有限ではありません（無限大または NaN）"
+                        )
+                    }
+                } else if *w == 0.0 {
+                    "the homogeneous coordinate w is 0: the vertex would be at infinity".into()
+                } else {
+                    format!("the vertex position ({x}, {y}, {z}) is not finite (infinite or NaN)")
                 }
             }
             ErrorKind::ObjNoFaces => {
@@ -555,9 +672,9 @@ impl ErrorKind {
             }
             ErrorKind::Mesh(e) => {
                 if ja {
-                    format!("メッシュとして使えません: {e}")
+                    format!("メッシュとして使えません: {}", e.message(lang))
                 } else {
-                    format!("unusable mesh: {e}")
+                    format!("unusable mesh: {}", e.message(lang))
                 }
             }
             ErrorKind::NotPng => {
@@ -565,6 +682,13 @@ impl ErrorKind {
                     "PNG 画像ではありません（PNG の先頭 8 バイトがありません）".into()
                 } else {
                     "not a PNG image (the file does not start with the PNG signature)".into()
+                }
+            }
+            ErrorKind::PngTooLarge { width, height } => {
+                if ja {
+                    format!("PNG 画像が大きすぎます（{width}×{height}）")
+                } else {
+                    format!("PNG image too large ({width}×{height})")
                 }
             }
             ErrorKind::Png { reason } => {
@@ -579,6 +703,33 @@ impl ErrorKind {
     }
 }
 
+/// tobj's error in Japanese (its `Display` is English).
+fn obj_error_ja(e: tobj::LoadError) -> &'static str {
+    use tobj::LoadError as E;
+    match e {
+        E::OpenFileFailed => "ファイルを開けません",
+        E::ReadError => "読み込みに失敗しました",
+        E::UnrecognizedCharacter => "読めない文字があります",
+        E::PositionParseError => "頂点の座標（v 行）が読めません",
+        E::ScalingByZeroError => "同次座標 w が 0 です",
+        E::ColorParseError => "頂点の色（v 行の r g b）の数が合いません",
+        E::NormalParseError => "法線（vn 行）が読めません",
+        E::TexcoordParseError => "テクスチャ座標（vt 行）が読めません",
+        E::FaceParseError => "面（f 行）が読めません",
+        E::MaterialParseError => "材質（usemtl 行）が読めません",
+        E::InvalidObjectName => "物体の名前（o 行）が正しくありません",
+        E::InvalidPolygon => "多角形が正しくありません",
+        E::FaceVertexOutOfBounds => "面が存在しない頂点を参照しています",
+        E::FaceTexCoordOutOfBounds => "面が存在しないテクスチャ座標を参照しています",
+        E::FaceNormalOutOfBounds => "面が存在しない法線を参照しています",
+        E::FaceColorOutOfBounds => {
+            "色のない頂点があります（v 行の色は全部に付けるか、全部外します）"
+        }
+        E::InvalidLoadOptionConfig => "読み込みの設定が矛盾しています",
+        E::GenericFailure => "原因不明の失敗です",
+    }
+}
+
 impl Expected {
     fn en(self) -> &'static str {
         match self {
@@ -587,7 +738,6 @@ impl Expected {
             Expected::String => "a string",
             Expected::Boolean => "true or false",
             Expected::Table => "a table",
-            Expected::Array => "an array",
             Expected::ArrayOfTables => "an array of tables",
             Expected::Vec3 => "an array of 3 numbers [x, y, z]",
             Expected::Color => "an RGB colour [r, g, b]",
@@ -610,7 +760,6 @@ impl Expected {
             Expected::String => "文字列",
             Expected::Boolean => "true か false",
             Expected::Table => "テーブル",
-            Expected::Array => "配列",
             Expected::ArrayOfTables => "テーブルの配列",
             Expected::Vec3 => "3 つの数の配列 [x, y, z]",
             Expected::Color => "RGB の色 [r, g, b]",

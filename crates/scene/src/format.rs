@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use cg_core::Rgb;
 use cg_core::camera::{CameraLimits, OrbitCamera};
-use cg_core::glam::{DVec3, Vec3};
+use cg_core::glam::Vec3;
 use cg_core::light::{Attenuation, Light, LightKind, LightModel, Material, Specular};
 use cg_core::math::{try_normalize_f64, wrap_degrees};
 use cg_core::normals::Weighting;
@@ -16,10 +16,11 @@ use cg_core::scene::{
     Camera, NormalSource, Object, Projection, Scene, Shading, TextureUse, WeldRecord,
 };
 use cg_core::texture::{Filter, Sampler, TexEnv, Wrap};
+use cg_core::transform::{TransformError, look_at, perspective};
 
 use crate::error::{ErrorKind, Expected, Rule, SceneError};
 use crate::reader::{At, Source, Table, Value};
-use crate::shape::ShapeSpec;
+use crate::shape::{ShapeAt, ShapeSpec};
 use crate::{load_obj, load_texture};
 
 /// The only version of the format this kit reads.
@@ -64,8 +65,8 @@ pub(crate) struct ObjectSpec {
 /// Where an object's mesh comes from.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) enum Geometry {
-    /// A built-in shape; `At` is the shape table.
-    Shape(ShapeSpec, At),
+    /// A built-in shape, and where its table and parameters are.
+    Shape(ShapeSpec, ShapeAt),
     /// An OBJ file, resolved against the scene's folder; `At` is the `mesh` value.
     Obj(PathBuf, At),
 }
@@ -121,7 +122,7 @@ pub(crate) fn read(src: &Source<'_>, base: &Path) -> Result<SceneSpec, SceneErro
         None => Camera::Orbit(OrbitCamera::course_sample()),
     };
     let projection = match root.get("projection") {
-        Some(v) => read_projection(&v.table()?)?,
+        Some(v) => read_projection(&v.table()?, width as f32 / height as f32)?,
         None => COURSE_PROJECTION,
     };
     let render = match root.get("render") {
@@ -181,10 +182,9 @@ impl SceneSpec {
                 Geometry::Obj(..) => None,
             };
             let mesh = match &spec.geometry {
-                Geometry::Shape(shape, at) => shape.mesh().map_err(|e| {
-                    let key = format!("{}.{}", at.key, e.parameter);
-                    src.error(&at.span, &key, ErrorKind::Shape(e))
-                })?,
+                Geometry::Shape(shape, at) => {
+                    shape.mesh().map_err(|e| at.of(e.parameter).error(src, ErrorKind::Shape(e)))?
+                }
                 Geometry::Obj(path, at) => {
                     load_obj(path).map_err(|e| at.error(src, ErrorKind::File(Box::new(e))))?
                 }
@@ -293,14 +293,15 @@ fn read_camera(t: &Table<'_>) -> Result<Camera, SceneError> {
             let eye = eye_value.vec3()?;
             let target = t.or("target", Vec3::ZERO, Value::vec3)?;
             let up = t.or("up", Vec3::Y, Value::direction)?;
-            let view = target.as_dvec3() - eye.as_dvec3();
-            if view == DVec3::ZERO {
-                return Err(eye_value.bad(Rule::DifferentFromTarget));
-            }
-            if try_normalize_f64(view.cross(up.as_dvec3())).is_none() {
-                let at = t.get("up").unwrap_or(eye_value);
-                return Err(at.bad(Rule::NotParallelToView));
-            }
+            // The core's own checks, so that every camera that loads is one gluLookAt can build
+            // (an up vector within LOOK_AT_MIN_UP_ANGLE_DEG of the view is refused there).
+            look_at(eye, target, up).map_err(|e| {
+                let at = match e {
+                    TransformError::UpParallelToView { .. } => t.get("up"),
+                    _ => None,
+                };
+                at.unwrap_or(eye_value).error(ErrorKind::Transform(e))
+            })?;
             Ok(Camera::LookAt { eye, target, up })
         }
     }
@@ -355,7 +356,8 @@ fn read_limits(t: &Table<'_>) -> Result<CameraLimits, SceneError> {
     })
 }
 
-fn read_projection(t: &Table<'_>) -> Result<Projection, SceneError> {
+/// `[projection]`; `aspect` is the window's width / height, which gluPerspective takes too.
+fn read_projection(t: &Table<'_>, aspect: f32) -> Result<Projection, SceneError> {
     t.only(&["fovy_deg", "near", "far"])?;
     let d = COURSE_PROJECTION;
     let fovy_deg =
@@ -374,6 +376,21 @@ fn read_projection(t: &Table<'_>) -> Result<Projection, SceneError> {
         let rule = Rule::Inside { min: 0.0, max: f64::from(far) };
         return Err(t.require("near")?.bad(rule));
     }
+    // The core's own checks (a subnormal `near`, a matrix entry that over- or underflows f32), so
+    // every projection that loads is one gluPerspective can build for this window.
+    perspective(fovy_deg, aspect, near, far).map_err(|e| {
+        let key = match e {
+            TransformError::NearPlane { .. } => "near",
+            TransformError::FarPlane { .. } | TransformError::DepthRange { .. } => "far",
+            // The field of view, or an aspect ratio that only an extreme field of view makes
+            // overflow.
+            _ => "fovy_deg",
+        };
+        match t.get(key) {
+            Some(v) => v.error(ErrorKind::Transform(e)),
+            None => t.error(ErrorKind::Transform(e)),
+        }
+    })?;
     Ok(Projection { fovy_deg, near, far })
 }
 
@@ -576,7 +593,10 @@ fn read_object(
     let geometry = match (t.get("shape"), t.get("mesh")) {
         (Some(_), Some(mesh)) => return Err(mesh.error(ErrorKind::ShapeAndMesh)),
         (None, None) => return Err(t.error(ErrorKind::NoGeometry)),
-        (Some(shape), None) => Geometry::Shape(ShapeSpec::read(&shape)?, shape.at()),
+        (Some(shape), None) => {
+            let (spec, at) = ShapeSpec::read(&shape)?;
+            Geometry::Shape(spec, at)
+        }
         (None, Some(mesh)) => Geometry::Obj(base.join(mesh.str()?), mesh.at()),
     };
     let normals = t.or("normals", NormalSource::Face, read_normals)?;
@@ -622,6 +642,11 @@ fn read_weld(v: &Value<'_>) -> Result<Option<f32>, SceneError> {
     Err(v.wrong_type(Expected::Weld))
 }
 
+/// The crease angle of `normals = "smooth"` and of the table form without `crease_deg`: edges
+/// whose faces meet at more than 30° stay hard (NUMERICS.md row 5). `crease_deg = 180` smooths
+/// every edge.
+const DEFAULT_CREASE_DEG: f32 = 30.0;
+
 fn read_normals(v: &Value<'_>) -> Result<NormalSource, SceneError> {
     if v.is_table() {
         let t = v.table()?;
@@ -635,14 +660,16 @@ fn read_normals(v: &Value<'_>) -> Result<NormalSource, SceneError> {
                     ("max", Weighting::Max),
                 ])
             })?,
-            crease_deg: t
-                .optional("crease_deg", |c| c.f32(Rule::Between { min: 0.0, max: 180.0 }))?,
+            crease_deg: Some(t.or("crease_deg", DEFAULT_CREASE_DEG, |c| {
+                c.f32(Rule::Between { min: 0.0, max: 180.0 })
+            })?),
         });
     }
     if !v.is_str() {
         return Err(v.wrong_type(Expected::Normals));
     }
-    let smooth = NormalSource::Vertex { weighting: Weighting::Angle, crease_deg: None };
+    let smooth =
+        NormalSource::Vertex { weighting: Weighting::Angle, crease_deg: Some(DEFAULT_CREASE_DEG) };
     v.choice(&[("face", NormalSource::Face), ("given", NormalSource::Given), ("smooth", smooth)])
 }
 
@@ -673,10 +700,11 @@ fn read_step(v: &Value<'_>) -> Result<Factor, SceneError> {
     Ok(match ops[0] {
         "translate" => Factor::Translate(xyz("translate")?),
         "scale" => Factor::Scale(xyz("scale")?),
-        "rotate_deg" => Factor::Rotate {
-            axis: Axis::Any(t.require("axis")?.direction()?),
-            angle_deg: angle("rotate_deg")?,
-        },
+        // Through Factor::rotate_deg, so an axis along +X, +Y or +Z prints as Rx, Ry or Rz.
+        "rotate_deg" => {
+            let axis = t.require("axis")?.direction()?;
+            Factor::rotate_deg(angle("rotate_deg")?.value, axis)
+        }
         "rotate_x_deg" => Factor::Rotate { axis: Axis::X, angle_deg: angle("rotate_x_deg")? },
         "rotate_y_deg" => Factor::Rotate { axis: Axis::Y, angle_deg: angle("rotate_y_deg")? },
         _ => Factor::Rotate { axis: Axis::Z, angle_deg: angle("rotate_z_deg")? },
@@ -716,7 +744,7 @@ mod tests {
     use super::*;
 
     /// Every shipped scene passes every check that does not build a mesh. (The integration test
-    /// `every_shipped_scene_loads` builds them too, which needs every shape constructor.)
+    /// `every_shipped_scene_loads` builds the meshes too.)
     #[test]
     fn every_shipped_scene_reads() {
         let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/scenes");

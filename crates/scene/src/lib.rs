@@ -44,7 +44,7 @@ use cg_core::scene::Scene;
 use cg_core::texture::Texture;
 
 pub use error::{ErrorKind, Expected, Found, Position, Rule, SceneError};
-pub use shape::ShapeSpec;
+pub use shape::{MAX_SHAPE_FACES, ShapeSpec};
 
 /// The version of the scene format this crate reads (`format = 1`).
 pub const FORMAT_VERSION: i64 = format::FORMAT_VERSION;
@@ -53,8 +53,9 @@ pub const FORMAT_VERSION: i64 = format::FORMAT_VERSION;
 ///
 /// # Errors
 /// A [`SceneError`] for the first problem found: the file cannot be read, is not TOML, has an
-/// unknown key, a wrong type, a value out of range, an unknown material, or names a file that
-/// cannot be loaded.
+/// unknown key, a wrong type, a value out of range (including a camera or projection that
+/// `cg_core::transform::look_at` or `perspective` refuses, and a shape with more than
+/// [`MAX_SHAPE_FACES`] faces), an unknown material, or names a file that cannot be loaded.
 ///
 /// See also [`parse`] for text already in memory.
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
@@ -82,9 +83,11 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
 /// materials come from the scene.
 ///
 /// # Errors
-/// The file cannot be read, tobj rejects it, a face index is 0 or out of range (naming the
-/// line), the file has no faces, some corners have `vn` or `vt` and others do not, or a position,
-/// normal or texture coordinate is not usable (non-finite, zero normal).
+/// The file cannot be read; a line is malformed (a word that is not a number, too few
+/// coordinates, a face corner that is not `v`, `v/vt`, `v//vn` or `v/vt/vn`, a position at
+/// infinity); a face index is 0 or refers to an element not defined on the lines before the face
+/// — each of these naming the line and column; the file has no faces; some corners have `vn` or
+/// `vt` and others do not; or a normal or texture coordinate is not usable (zero or non-finite).
 pub fn load_obj(path: &Path) -> Result<Mesh, SceneError> {
     parse_obj(&read_text(path)?, path)
 }
@@ -101,7 +104,8 @@ pub fn parse_obj(text: &str, path: &Path) -> Result<Mesh, SceneError> {
 /// bottom row (texture coordinate `(0, 0)` is the bottom-left corner, as in OpenGL).
 ///
 /// # Errors
-/// The file cannot be read, is not a PNG ([`ErrorKind::NotPng`]), or is corrupt or truncated
+/// The file cannot be read, is not a PNG ([`ErrorKind::NotPng`]), is larger than the decoder
+/// will allocate ([`ErrorKind::PngTooLarge`], naming its size), or is corrupt or truncated
 /// ([`ErrorKind::Png`]).
 pub fn load_texture(path: &Path) -> Result<Texture, SceneError> {
     let bytes = std::fs::read(path).map_err(|e| read_error(path, &e))?;

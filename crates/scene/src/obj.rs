@@ -16,10 +16,10 @@ pub(crate) fn parse_obj(text: &str, path: &Path) -> Result<Mesh, SceneError> {
         position,
         ..SceneError::in_file(path, kind)
     };
-    // Before tobj sees the file: huge face indices make tobj 4.0.5's index arithmetic overflow
-    // (`vn * 3 + 2`, a panic in debug builds); here every out-of-range index is an error that
-    // names the line.
-    let file_order = scan_faces(text).map_err(|(position, kind)| error(Some(position), kind))?;
+    // Before tobj sees the file: tobj's own errors name no line, and huge face indices make
+    // tobj 4.0.5's index arithmetic overflow (`vn * 3 + 2`, a panic in debug builds); here every
+    // line tobj would reject is an error that names the line and column.
+    let file_order = scan(text).map_err(|(position, kind)| error(Some(position), kind))?;
 
     let options = tobj::LoadOptions {
         triangulate: true,
@@ -52,10 +52,11 @@ pub(crate) fn parse_obj(text: &str, path: &Path) -> Result<Mesh, SceneError> {
     let mut mesh = Mesh::new(positions, faces);
     mesh.normals = normals.finish().map_err(|kind| error(None, kind))?;
     mesh.uvs = uvs.finish().map_err(|kind| error(None, kind))?;
+    // Before the faces are renumbered (which indexes with them).
+    mesh.check_indices().map_err(|e| error(None, ErrorKind::Mesh(e)))?;
     if file_order.len() == mesh.vertex_count() {
         mesh = in_file_order(mesh, &file_order);
     }
-    mesh.check_indices().map_err(|e| error(None, ErrorKind::Mesh(e)))?;
     if let Some(normals) = &mut mesh.normals {
         for (vertex, n) in normals.iter_mut().enumerate() {
             *n =
@@ -115,64 +116,59 @@ fn in_file_order(mesh: Mesh, file_order: &[usize]) -> Mesh {
     out
 }
 
-/// What tobj does with face lines, in the order it does it: checks every index of every `f` and
-/// `l` line (1-based; negative ones count back from the elements read so far; 0 does not exist),
-/// and returns, for each vertex tobj will create, the 0-based `v` line it takes its position
-/// from. tobj creates one vertex per distinct `v/vt/vn` triple of each group (`o`/`g`), in order
-/// of first use.
-fn scan_faces(text: &str) -> Result<Vec<usize>, (Position, ErrorKind)> {
-    const ELEMENTS: [&str; 3] = ["v", "vt", "vn"];
-    let mut totals = [0usize; 3];
-    for line in text.lines() {
-        if let Some(k) =
-            line.split_whitespace().next().and_then(|w| ELEMENTS.iter().position(|e| *e == w))
-        {
-            totals[k] += 1;
-        }
-    }
+/// The elements that face corners refer to, in the order `v/vt/vn`.
+const ELEMENTS: [&str; 3] = ["v", "vt", "vn"];
 
+/// An error of [`scan`]: where, and what.
+type ScanError = (Position, ErrorKind);
+
+/// Reads the file as tobj will, line by line, and reports with its line and column every line
+/// that tobj would reject (or mis-read) without saying where: `v`, `vt` and `vn` lines with too
+/// few numbers or a word that is not a number, a position at infinity (w = 0, or a coordinate
+/// that is not finite), face corners that are not `v`, `v/vt`, `v//vn` or `v/vt/vn`, indices
+/// that are not numbers, and indices that refer to no element read so far (1-based; negative
+/// ones count back from the last element read; 0 does not exist; an element defined further
+/// down the file does not count, as in the OBJ specification).
+///
+/// Returns, for each vertex tobj will create, the 0-based `v` line it takes its position from.
+/// tobj creates one vertex per distinct `v/vt/vn` triple of each group (`o`/`g`), in order of
+/// first use.
+fn scan(text: &str) -> Result<Vec<usize>, ScanError> {
     let mut read = [0usize; 3];
     let mut file_order = Vec::new();
     let mut seen: HashSet<[usize; 3]> = HashSet::new();
     let mut group_has_faces = false;
     for (line_index, line) in text.lines().enumerate() {
+        // The place of `word`, a slice of `line`.
+        let at = |word: &str| {
+            let offset = word.as_ptr() as usize - line.as_ptr() as usize;
+            Position { line: line_index + 1, column: 1 + line[..offset].chars().count() }
+        };
         let mut words = line.split_whitespace();
-        match words.next() {
-            Some(word @ ("v" | "vt" | "vn")) => {
-                // Lines tobj cannot parse stop the whole load, so counting every one is right.
-                let k = ELEMENTS.iter().position(|e| *e == word).unwrap_or(0);
+        let Some(keyword) = words.next() else { continue };
+        match keyword {
+            "v" | "vt" | "vn" => {
+                let k = ELEMENTS.iter().position(|e| *e == keyword).unwrap_or(0);
+                let values: Vec<&str> = words.collect();
+                check_values(ELEMENTS[k], keyword, &values)
+                    .map_err(|(word, kind)| (at(word), kind))?;
                 read[k] += 1;
             }
-            Some("o" | "g") if group_has_faces => {
+            "o" | "g" if group_has_faces => {
                 seen.clear();
                 group_has_faces = false;
             }
-            Some("f" | "l") => {
-                group_has_faces = true;
+            "f" | "l" => {
+                let element = if keyword == "f" { "f" } else { "l" };
                 let corners: Vec<&str> = words.collect();
+                if corners.is_empty() {
+                    return Err((at(keyword), ErrorKind::ObjValues { element, found: 0 }));
+                }
+                group_has_faces = true;
                 let mut triples = Vec::with_capacity(corners.len());
-                for corner in &corners {
-                    let mut triple = [usize::MAX; 3];
-                    for (k, part) in corner.split('/').enumerate().take(3) {
-                        // Malformed numbers are tobj's to report (FaceParseError).
-                        let Ok(index) = part.parse::<i64>() else { continue };
-                        let count = if index < 0 { read[k] } else { totals[k] };
-                        let resolved = if index < 0 {
-                            count.checked_sub(index.unsigned_abs() as usize)
-                        } else {
-                            (index as usize).checked_sub(1).filter(|&i| i < count)
-                        };
-                        let Some(resolved) = resolved else {
-                            let offset = corner.as_ptr() as usize - line.as_ptr() as usize;
-                            let column = 1 + line[..offset].chars().count();
-                            let position = Position { line: line_index + 1, column };
-                            return Err((
-                                position,
-                                ErrorKind::ObjIndex { element: ELEMENTS[k], index, count },
-                            ));
-                        };
-                        triple[k] = resolved;
-                    }
+                for corner in corners {
+                    let triple =
+                        resolve(element, corner, &read).map_err(|(word, kind)| (at(word), kind))?;
                     triples.push(triple);
                 }
                 // Points and 2-point lines are ignored (LoadOptions::ignore_points/ignore_lines).
@@ -188,4 +184,73 @@ fn scan_faces(text: &str) -> Result<Vec<usize>, (Position, ErrorKind)> {
         }
     }
     Ok(file_order)
+}
+
+/// Checks the values of a `v`, `vt` or `vn` line (`keyword` is the line's first word); an error
+/// names the word it is about. tobj reads `x y z` (then `w`, or `r g b`) for `v`, the first two
+/// for `vt` and the first three for `vn`, ignoring the rest of those two.
+fn check_values<'a>(
+    element: &'static str,
+    keyword: &'a str,
+    values: &[&'a str],
+) -> Result<(), (&'a str, ErrorKind)> {
+    let number = |word: &'a str| {
+        word.parse::<f32>()
+            .map_err(|_| (word, ErrorKind::ObjNumber { element, word: word.to_owned() }))
+    };
+    let needed = if element == "vt" { 2 } else { 3 };
+    let read: Vec<f32> = values.iter().take(needed).map(|w| number(w)).collect::<Result<_, _>>()?;
+    let too_few_or_many = || (keyword, ErrorKind::ObjValues { element, found: values.len() });
+    if read.len() < needed {
+        return Err(too_few_or_many());
+    }
+    if element != "v" {
+        return Ok(());
+    }
+    let w = match values.len() {
+        3 => 1.0,
+        4 => number(values[3])?,
+        6 => {
+            values[3..].iter().try_for_each(|c| number(c).map(|_| ()))?;
+            1.0
+        }
+        _ => return Err(too_few_or_many()),
+    };
+    // As tobj does it: each coordinate divided by w, in f32.
+    let position = [read[0] / w, read[1] / w, read[2] / w];
+    if w == 0.0 || !position.iter().all(|c| c.is_finite()) {
+        return Err((values[0], ErrorKind::ObjPosition { position, w }));
+    }
+    Ok(())
+}
+
+/// The `v`, `vt` and `vn` indices (0-based, `usize::MAX` when left out) of one face corner
+/// `v/vt/vn`, checked against the elements `read` so far; an error names the word it is about.
+fn resolve<'a>(
+    element: &'static str,
+    corner: &'a str,
+    read: &[usize; 3],
+) -> Result<[usize; 3], (&'a str, ErrorKind)> {
+    let parts: Vec<&str> = corner.split('/').collect();
+    if parts.len() > 3 || parts[0].is_empty() {
+        return Err((corner, ErrorKind::ObjCorner { corner: corner.to_owned() }));
+    }
+    let mut triple = [usize::MAX; 3];
+    for (k, part) in parts.into_iter().enumerate() {
+        if part.is_empty() {
+            continue;
+        }
+        let index: i64 = part
+            .parse()
+            .map_err(|_| (part, ErrorKind::ObjNumber { element, word: part.to_owned() }))?;
+        let count = read[k];
+        let resolved = if index < 0 {
+            usize::try_from(index.unsigned_abs()).ok().and_then(|back| count.checked_sub(back))
+        } else {
+            usize::try_from(index).ok().and_then(|i| i.checked_sub(1)).filter(|&i| i < count)
+        };
+        triple[k] =
+            resolved.ok_or((corner, ErrorKind::ObjIndex { element: ELEMENTS[k], index, count }))?;
+    }
+    Ok(triple)
 }

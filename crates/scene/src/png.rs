@@ -18,12 +18,28 @@ pub(crate) fn decode_png(bytes: &[u8], path: &Path) -> Result<Texture, SceneErro
         return Err(error(ErrorKind::NotPng));
     }
     let image = image::load_from_memory_with_format(bytes, image::ImageFormat::Png)
-        .map_err(|e| error(ErrorKind::Png { reason: e.to_string() }))?
+        .map_err(|e| match (&e, header_size(bytes)) {
+            // The decoder refuses to allocate it (image's default limit is 512 MiB): the file
+            // may be fine, it is just too large to be a texture.
+            (image::ImageError::Limits(_), Some((width, height))) => {
+                error(ErrorKind::PngTooLarge { width, height })
+            }
+            _ => error(ErrorKind::Png { reason: e.to_string() }),
+        })?
         .to_rgba8();
     let (width, height) = image.dimensions();
     // PNG rows run top to bottom; a texture's row 0 is the bottom one (OpenGL's (0, 0)).
     let texels = image.rows().rev().flat_map(|row| row.map(|p| p.0)).collect();
     Texture::new(width, height, texels).map_err(|e| error(ErrorKind::Texture(e)))
+}
+
+/// Width and height from the PNG header (the IHDR chunk, which must come first), if present.
+fn header_size(bytes: &[u8]) -> Option<(u32, u32)> {
+    if bytes.get(12..16)? != b"IHDR" {
+        return None;
+    }
+    let be = |at: usize| Some(u32::from_be_bytes(bytes.get(at..at + 4)?.try_into().ok()?));
+    Some((be(16)?, be(20)?))
 }
 
 /// Writes a rendered image as an 8-bit RGBA PNG. See [`crate::save_png`].

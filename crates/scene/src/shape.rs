@@ -6,8 +6,31 @@ use cg_core::mesh::Mesh;
 use cg_core::scene::Analytic;
 use cg_core::shapes::{self, ShapeError};
 
-use crate::error::{Rule, SceneError};
-use crate::reader::Value;
+use crate::error::{ErrorKind, Expected, Rule, SceneError};
+use crate::reader::{At, Value};
+
+/// The most faces (triangles) one built-in shape may have: 4 000 000, about 200 MB of mesh,
+/// normals and texture coordinates at most, where `uv_sphere` with 4096 × 4096 segments would
+/// take gigabytes. (An `icosphere` with 8 subdivisions has 1 310 720.)
+pub const MAX_SHAPE_FACES: u64 = 4_000_000;
+
+/// Where a shape's table and parameters are in the file, for the errors found when its mesh is
+/// built.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct ShapeAt {
+    /// The shape table.
+    pub table: At,
+    /// Each parameter's value, by the name `cg_core::shapes` gives it in a [`ShapeError`]
+    /// (`radius`, `slices`, `size.x`, …).
+    pub params: Vec<(&'static str, At)>,
+}
+
+impl ShapeAt {
+    /// Where `parameter` (as a [`ShapeError`] names it) is; the table if it is not known.
+    pub fn of(&self, parameter: &str) -> &At {
+        self.params.iter().find(|(name, _)| *name == parameter).map_or(&self.table, |(_, at)| at)
+    }
+}
 
 /// A built-in shape and its parameters, as a scene file names it. Lengths are in scene units;
 /// every closed shape is centred on the origin with +Y as its axis (see `cg_core::shapes`).
@@ -37,7 +60,7 @@ pub enum ShapeSpec {
         stacks: u32,
     },
     /// `sphere`: the exact sphere, for the ray tracer; rasterizers draw its
-    /// [`SPHERE_SLICES`] × [`SPHERE_STACKS`] UV tessellation.
+    /// `SPHERE_SLICES` × `SPHERE_STACKS` (64 × 32) UV tessellation.
     Sphere {
         /// Radius (> 0).
         radius: f32,
@@ -139,8 +162,11 @@ pub(crate) const KINDS: &[(&str, &[&str])] = &[
 
 impl ShapeSpec {
     /// Reads `shape = { kind = "...", ... }`: the kind, then exactly the keys that kind takes,
-    /// every one required; lengths finite and > 0, counts integers at or above their minimum.
-    pub(crate) fn read(value: &Value<'_>) -> Result<ShapeSpec, SceneError> {
+    /// every one required; lengths finite and > 0, counts integers at or above their minimum,
+    /// and at most [`MAX_SHAPE_FACES`] faces (counted before anything is built, so a huge count
+    /// is an error naming the parameter, not gigabytes of memory). Returns the shape and where
+    /// its parameters are.
+    pub(crate) fn read(value: &Value<'_>) -> Result<(ShapeSpec, ShapeAt), SceneError> {
         let table = value.table()?;
         let kind_value = table.require("kind")?;
         let choices: Vec<(&'static str, &'static [&'static str])> = KINDS.to_vec();
@@ -151,12 +177,12 @@ impl ShapeSpec {
         table.only(&allowed)?;
         let length = |key: &str| table.require(key)?.f32(Rule::Positive);
         let count = |key: &str, min: u32| table.require(key)?.u32(min);
-        Ok(match kind {
+        let spec = match kind {
             "grid" => ShapeSpec::Grid { divisions: count("divisions", 1)?, size: length("size")? },
             "lecture_pyramid" => ShapeSpec::LecturePyramid,
             "cuboid" | "box" => {
                 let size = table.require("size")?;
-                let [x, y, z] = size.array_of(crate::error::Expected::Vec3)?;
+                let [x, y, z] = size.array_of(Expected::Vec3)?;
                 ShapeSpec::Cuboid {
                     size: Vec3::new(
                         x.f32(Rule::Positive)?,
@@ -208,7 +234,86 @@ impl ShapeSpec {
                 height: length("height")?,
             },
             _ => ShapeSpec::Octahedron { radius: length("radius")? },
-        })
+        };
+
+        let faces = spec.face_count();
+        if faces > MAX_SHAPE_FACES {
+            // Only shapes with a count parameter can have this many faces.
+            let key = spec.count_parameter().unwrap_or("kind");
+            let shape = spec.kind();
+            let kind = ErrorKind::TooManyFaces { shape, faces, max: MAX_SHAPE_FACES };
+            return Err(table.require(key)?.error(kind));
+        }
+
+        let mut at = ShapeAt { table: table.at(), params: Vec::new() };
+        for &key in params {
+            let v = table.require(key)?;
+            if let ShapeSpec::Cuboid { .. } = spec {
+                let [x, y, z] = v.array_of(Expected::Vec3)?;
+                at.params.extend([("size.x", x.at()), ("size.y", y.at()), ("size.z", z.at())]);
+            } else {
+                at.params.push((key, v.at()));
+            }
+        }
+        Ok((spec, at))
+    }
+
+    /// The number of faces (triangles) the mesh of this shape has, from the formulas documented
+    /// in `cg_core::shapes` (`2·divisions²` for a grid, `2·slices·(stacks − 1)` for a UV sphere,
+    /// `20·4^subdivisions` for an icosphere, …), in u64 and saturating, so it can be checked
+    /// before the mesh is built. Parameters out of the constructors' ranges are counted as given.
+    #[must_use]
+    pub fn face_count(&self) -> u64 {
+        let n = |count: u32| u64::from(count);
+        match *self {
+            ShapeSpec::Grid { divisions, .. } => (2 * n(divisions)).saturating_mul(n(divisions)),
+            ShapeSpec::LecturePyramid => 6,
+            ShapeSpec::Cuboid { .. } => 12,
+            ShapeSpec::UvSphere { slices, stacks, .. } => {
+                (2 * n(slices)).saturating_mul(n(stacks).saturating_sub(1))
+            }
+            ShapeSpec::Sphere { .. } => 2 * n(SPHERE_SLICES) * (n(SPHERE_STACKS) - 1),
+            ShapeSpec::Icosphere { subdivisions, .. } => {
+                4u64.checked_pow(subdivisions).map_or(u64::MAX, |p| p.saturating_mul(20))
+            }
+            ShapeSpec::Cylinder { slices, .. } => 4 * n(slices),
+            ShapeSpec::Cone { slices, .. } => 2 * n(slices),
+            ShapeSpec::Torus { major_segments, minor_segments, .. } => {
+                (2 * n(major_segments)).saturating_mul(n(minor_segments))
+            }
+            ShapeSpec::Prism { sides, .. } | ShapeSpec::Frustum { sides, .. } => {
+                (4 * n(sides)).saturating_sub(4)
+            }
+            ShapeSpec::Pyramid { sides, .. } => (2 * n(sides)).saturating_sub(2),
+            ShapeSpec::Octahedron { .. } => 8,
+        }
+    }
+
+    /// The parameter that sets the face count (the larger of two), named in
+    /// [`ErrorKind::TooManyFaces`]; `None` for shapes with a fixed count.
+    fn count_parameter(&self) -> Option<&'static str> {
+        match *self {
+            ShapeSpec::Grid { .. } => Some("divisions"),
+            ShapeSpec::UvSphere { slices, stacks, .. } => {
+                Some(if slices >= stacks { "slices" } else { "stacks" })
+            }
+            ShapeSpec::Icosphere { .. } => Some("subdivisions"),
+            ShapeSpec::Cylinder { .. } | ShapeSpec::Cone { .. } => Some("slices"),
+            ShapeSpec::Torus { major_segments, minor_segments, .. } => {
+                Some(if major_segments >= minor_segments {
+                    "major_segments"
+                } else {
+                    "minor_segments"
+                })
+            }
+            ShapeSpec::Prism { .. } | ShapeSpec::Pyramid { .. } | ShapeSpec::Frustum { .. } => {
+                Some("sides")
+            }
+            ShapeSpec::LecturePyramid
+            | ShapeSpec::Cuboid { .. }
+            | ShapeSpec::Sphere { .. }
+            | ShapeSpec::Octahedron { .. } => None,
+        }
     }
 
     /// The `kind` that names this shape in a scene file.
@@ -289,12 +394,12 @@ mod tests {
         let text = format!("shape = {inline}");
         let src = Source { text: &text, file: Path::new("t.toml") };
         let doc = toml::de::DeTable::parse(&text).expect("valid TOML");
-        ShapeSpec::read(&Table::root(&src, &doc).require("shape")?)
+        ShapeSpec::read(&Table::root(&src, &doc).require("shape")?).map(|(spec, _)| spec)
     }
 
-    #[test]
-    fn every_kind_reads_its_parameters() {
-        let cases = [
+    /// One inline table of every kind (and the alias `box`), with the shape it stands for.
+    fn every_kind() -> [(&'static str, ShapeSpec); KINDS.len()] {
+        [
             (
                 r#"{ kind = "grid", divisions = 10, size = 10.0 }"#,
                 ShapeSpec::Grid { divisions: 10, size: 10.0 },
@@ -339,7 +444,12 @@ mod tests {
                 ShapeSpec::Frustum { sides: 5, bottom_radius: 2.0, top_radius: 1.0, height: 1.0 },
             ),
             (r#"{ kind = "octahedron", radius = 0.75 }"#, ShapeSpec::Octahedron { radius: 0.75 }),
-        ];
+        ]
+    }
+
+    #[test]
+    fn every_kind_reads_its_parameters() {
+        let cases = every_kind();
         for (text, expected) in &cases {
             assert_eq!(read(text).as_ref(), Ok(expected), "{text}");
             // `kind()` names the shape as the file does (`box` is an alias of `cuboid`).
@@ -428,6 +538,27 @@ mod tests {
         assert_eq!(grid.analytic(), Some(Analytic::Plane { size: 6.0 }));
         let uv = read(r#"{ kind = "uv_sphere", radius = 2, slices = 8, stacks = 4 }"#).unwrap();
         assert_eq!(uv.analytic(), None, "a uv_sphere is a polygon model, not a sphere");
+    }
+
+    #[test]
+    fn face_count_is_the_built_meshs() {
+        for (_, spec) in every_kind() {
+            assert_eq!(spec.face_count(), spec.mesh().unwrap().face_count() as u64, "{spec:?}");
+        }
+        // Counts beyond u64 saturate instead of wrapping round to a small number.
+        let huge = ShapeSpec::Grid { divisions: u32::MAX, size: 1.0 };
+        assert_eq!(huge.face_count(), u64::MAX);
+    }
+
+    #[test]
+    fn the_face_limit_is_checked_before_building() {
+        // 2·1414² = 3 998 792 faces is allowed, 2·1415² = 4 004 450 is not.
+        let grid = |n: u32| read(&format!(r#"{{ kind = "grid", divisions = {n}, size = 1 }}"#));
+        assert_eq!(grid(1414), Ok(ShapeSpec::Grid { divisions: 1414, size: 1.0 }));
+        let e = grid(1415).unwrap_err();
+        let max = MAX_SHAPE_FACES;
+        assert_eq!(*e.kind, ErrorKind::TooManyFaces { shape: "grid", faces: 4_004_450, max });
+        assert_eq!(e.key.as_deref(), Some("shape.divisions"));
     }
 
     #[test]

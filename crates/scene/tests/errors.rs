@@ -4,8 +4,12 @@
 
 use std::path::{Path, PathBuf};
 
+use cg_core::glam::Vec3;
 use cg_core::lang::Lang;
-use cg_scene::{ErrorKind, Expected, Found, Rule, SceneError};
+use cg_core::mesh::MeshError;
+use cg_core::shapes::Allowed;
+use cg_core::transform::{LOOK_AT_MIN_UP_ANGLE_DEG, TransformError};
+use cg_scene::{ErrorKind, Expected, Found, MAX_SHAPE_FACES, Rule, SceneError};
 
 const FILE: &str = "fixtures/mistake.toml";
 
@@ -277,20 +281,6 @@ shape = { kind = "uv_sphere", radius = -1, slices = 16, stacks = 8 }
             "lights[0].samples[0]",
             Rule::Integer { min: 1, max: 256 },
         ),
-        (
-            "format = 1\n[camera]\nkind = \"look_at\"\neye = [0, 0, 0]\n",
-            4,
-            "[0, 0, 0]",
-            "camera.eye",
-            Rule::DifferentFromTarget,
-        ),
-        (
-            "format = 1\n[camera]\nkind = \"look_at\"\neye = [0, 5, 0]\nup = [0, -3, 0]\n",
-            5,
-            "[0, -3, 0]",
-            "camera.up",
-            Rule::NotParallelToView,
-        ),
         ("format = 1\n[materials.m]\neta = 0\n", 3, "0", "materials.m.eta", Rule::Positive),
         (
             "format = 1\n[materials.m]\nshininess = -2\n",
@@ -473,12 +463,6 @@ fn structural_mistakes() {
     let e = error(text);
     assert_at(&e, text, 6, "\"a\"", Some("objects[1].name"));
     assert_eq!(*e.kind, ErrorKind::DuplicateName { name: "a".into(), first_line: 2 });
-
-    // A count a shape constructor rejects is reported at the shape, under the parameter's key.
-    let text = "format = 1\n[[objects]]\nname = \"g\"\nshape = { kind = \"grid\", divisions = 5000, size = 1 }\n";
-    let e = error(text);
-    assert_at(&e, text, 4, "{ kind", Some("objects[0].shape.divisions"));
-    assert!(matches!(*e.kind, ErrorKind::Shape(_)), "{e}");
 }
 
 #[test]
@@ -490,5 +474,220 @@ fn reading_a_missing_scene_file_names_it() {
     assert!(
         e.to_string().starts_with("fixtures/does-not-exist.toml: cannot read the file: "),
         "{e}"
+    );
+}
+
+#[test]
+fn spot_cutoff_accepts_exactly_0_to_90_and_180() {
+    let scene = |cutoff: &str| {
+        let text = format!(
+            "format = 1\n[[lights]]\nkind = \"spot\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0]\ncutoff_deg = {cutoff}\n"
+        );
+        cg_scene::parse(&text, std::path::Path::new("spot.toml"))
+    };
+    for ok in ["0.001", "45", "90", "180"] {
+        assert!(scene(ok).is_ok(), "cutoff {ok} is allowed: {:?}", scene(ok).err());
+    }
+    // 0 is no cone at all (nothing lit), between 90 and 180 OpenGL rejects, above 180 is meaningless.
+    for bad in ["0", "-1", "90.0001", "179.9", "180.1", "nan"] {
+        let e = scene(bad).expect_err(bad);
+        assert_eq!(e.position.map(|p| p.line), Some(6), "{bad}: {e}");
+        assert_eq!(e.key.as_deref(), Some("lights[0].cutoff_deg"), "{bad}: {e}");
+    }
+}
+
+/// The error of `text`, which must be a [`ErrorKind::Transform`] at `line`, at `needle`, under
+/// `key`, whose Japanese text is the core's `TransformError::message(Ja)` after the place.
+#[track_caller]
+fn assert_transform_error(text: &str, line: usize, needle: &str, key: &str) -> TransformError {
+    let e = error(text);
+    assert_at(&e, text, line, needle, Some(key));
+    let ErrorKind::Transform(t) = &*e.kind else { panic!("not a transform error: {e}") };
+    let ja = e.describe(Lang::Ja);
+    assert!(ja.ends_with(&format!("{key}: {}", t.message(Lang::Ja))), "{ja}");
+    assert!(e.to_string().ends_with(&format!("{key}: {}", t.message(Lang::En))), "{e}");
+    t.clone()
+}
+
+#[test]
+fn cameras_and_projections_are_checked_as_the_core_builds_them() {
+    // gluLookAt has no answer when eye = target, or up is parallel to the view.
+    let text = "format = 1\n[camera]\nkind = \"look_at\"\neye = [0, 0, 0]\n";
+    let t = assert_transform_error(text, 4, "[0, 0, 0]", "camera.eye");
+    assert_eq!(t, TransformError::EyeAtTarget { eye: Vec3::ZERO });
+    let text = "format = 1\n[camera]\nkind = \"look_at\"\neye = [0, 5, 0]\nup = [0, -3, 0]\n";
+    let t = assert_transform_error(text, 5, "[0, -3, 0]", "camera.up");
+    assert!(matches!(t, TransformError::UpParallelToView { .. }), "{t}");
+    // With up left out (+Y), the eye straight above the target is the mistake.
+    let text = "format = 1\n[camera]\nkind = \"look_at\"\neye = [0, 5, 0]\n";
+    assert_transform_error(text, 4, "[0, 5, 0]", "camera.eye");
+
+    // Not exactly parallel, but within LOOK_AT_MIN_UP_ANGLE_DEG: atan(1e-4) = 0.0057° < 0.01°.
+    // (The scene reader used to accept it, its cross product with the view being non-zero, and
+    // the renderer's look_at then failed with no file, line or key.)
+    let up_angle_deg = |x: f64| x.atan().to_degrees();
+    assert!(up_angle_deg(1e-4) < LOOK_AT_MIN_UP_ANGLE_DEG);
+    let text = "format = 1\n[camera]\nkind = \"look_at\"\neye = [0, 5, 0]\nup = [0.0001, 1, 0]\n";
+    let t = assert_transform_error(text, 5, "[0.0001", "camera.up");
+    let TransformError::UpParallelToView { angle_deg, .. } = t else { panic!("{t}") };
+    assert!((angle_deg - up_angle_deg(1e-4)).abs() < 1e-6, "{angle_deg}");
+    // Ten times farther from the view (0.057°) it loads.
+    assert!(up_angle_deg(1e-3) > LOOK_AT_MIN_UP_ANGLE_DEG);
+    let text = "format = 1\n[camera]\nkind = \"look_at\"\neye = [0, 5, 0]\nup = [0.001, 1, 0]\n";
+    assert!(cg_scene::parse(text, Path::new(FILE)).is_ok());
+
+    // A subnormal near plane is > 0, but gluPerspective's matrix cannot be built from it.
+    let text = "format = 1\n[projection]\nnear = 1e-45\n";
+    let t = assert_transform_error(text, 3, "1e-45", "projection.near");
+    assert_eq!(t, TransformError::NearPlane { near: 1e-45 });
+    assert!(!1e-45f32.is_normal() && 1e-45f32 > 0.0, "premise: 1e-45 is a positive subnormal");
+    // cot(fovy/2) overflows f32 for fovy = 1e-40°: 1/tan(0.5e-40°) ≈ 1.1e42 > f32::MAX.
+    let text = "format = 1\n[projection]\nfovy_deg = 1e-40\n";
+    let t = assert_transform_error(text, 3, "1e-40", "projection.fovy_deg");
+    assert!(matches!(t, TransformError::FieldOfView { .. }), "{t}");
+    // The window's aspect ratio goes in too: 1/tan(0.5e-33°) ≈ 1.1e35 fits f32, but divided by
+    // 1/16384 (a 1 × 16384 window) it is 1.9e39, which does not.
+    let fovy = 1e-33f64;
+    let f = 1.0 / (fovy / 2.0).to_radians().tan();
+    assert!(f < f64::from(f32::MAX) && f * 16384.0 > f64::from(f32::MAX), "premise: {f:e}");
+    let text = "format = 1\n[window]\nwidth = 1\nheight = 16384\n[projection]\nfovy_deg = 1e-33\n";
+    let t = assert_transform_error(text, 6, "1e-33", "projection.fovy_deg");
+    assert!(matches!(t, TransformError::AspectRatio { .. }), "{t}");
+    // In a square window the same field of view is fine.
+    assert!(
+        cg_scene::parse("format = 1\n[projection]\nfovy_deg = 1e-33\n", Path::new(FILE)).is_ok()
+    );
+    // far a few percent beyond a near of 3e38: the depth entry far·near/(near − far) overflows.
+    let text = "format = 1\n[projection]\nnear = 3e38\nfar = 3.1e38\n";
+    let t = assert_transform_error(text, 4, "3.1e38", "projection.far");
+    assert!(matches!(t, TransformError::DepthRange { .. }), "{t}");
+}
+
+#[test]
+fn shape_errors_point_at_the_bad_value() {
+    // A count above the constructor's limit (4096) that stays below the face limit.
+    let text = "format = 1\n[[objects]]\nname = \"c\"\nshape = { kind = \"cylinder\", radius = 1,\n  height = 2, slices = 5000 }\n";
+    let e = error(text);
+    assert_at(&e, text, 5, "5000", Some("objects[0].shape.slices"));
+    let ErrorKind::Shape(shape) = &*e.kind else { panic!("{e}") };
+    assert_eq!(shape.expected, Allowed::Count { min: 3, max: 4096 });
+    assert_eq!(shape.parameter, "slices");
+    // A parameter valid alone but not with another: the torus's tube must be thinner than its ring.
+    let text = "format = 1\n[[objects]]\nname = \"t\"\nshape = { kind = \"torus\", major = 1, minor = 2, major_segments = 8, minor_segments = 8 }\n";
+    let e = error(text);
+    assert_at(&e, text, 4, "2,", Some("objects[0].shape.minor"));
+    assert!(
+        e.describe(Lang::Ja).ends_with(
+            ": objects[0].shape.minor: torus の minor = 2 は範囲外です（0 より大きく major より小さい有限の数でなければなりません）"
+        ),
+        "{e}"
+    );
+}
+
+#[test]
+fn shapes_with_too_many_faces_are_refused_before_anything_is_built() {
+    // Four lines that used to take gigabytes: 2·4096·4095 = 33 546 240 triangles.
+    let text = "format = 1\n[[objects]]\nname = \"ball\"\nshape = { kind = \"uv_sphere\", radius = 1, slices = 4096, stacks = 4096 }\n";
+    let e = error(text);
+    assert_at(&e, text, 4, "4096,", Some("objects[0].shape.slices"));
+    let expected =
+        ErrorKind::TooManyFaces { shape: "uv_sphere", faces: 33_546_240, max: 4_000_000 };
+    assert_eq!(*e.kind, expected);
+    assert_eq!(MAX_SHAPE_FACES, 4_000_000);
+    assert!(e.to_string().contains("33546240 faces"), "{e}");
+    assert!(e.describe(Lang::Ja).contains("33546240 個"), "{e}");
+
+    // The parameter named is the one that sets the count (the larger of two).
+    let cases = [
+        ("{ kind = \"grid\", divisions = 4096, size = 1 }", "divisions", "grid", 2 * 4096 * 4096),
+        (
+            "{ kind = \"uv_sphere\", radius = 1, slices = 600, stacks = 4096 }",
+            "stacks",
+            "uv_sphere",
+            2 * 600 * 4095,
+        ),
+        (
+            "{ kind = \"torus\", major = 2, minor = 1, major_segments = 500, minor_segments = 4096 }",
+            "minor_segments",
+            "torus",
+            2 * 500 * 4096,
+        ),
+        // 20·4⁹ = 5 242 880: refused here, before the constructor's own limit (8) is looked at.
+        (
+            "{ kind = \"icosphere\", radius = 1, subdivisions = 9 }",
+            "subdivisions",
+            "icosphere",
+            20 << 18,
+        ),
+        // 20·4^40 does not fit u64: counted as u64::MAX, not wrapped round to a small number.
+        (
+            "{ kind = \"icosphere\", radius = 1, subdivisions = 40 }",
+            "subdivisions",
+            "icosphere",
+            u64::MAX,
+        ),
+    ];
+    for (shape, key, kind, faces) in cases {
+        let text = format!("format = 1\n[[objects]]\nname = \"x\"\nshape = {shape}\n");
+        let e = error(&text);
+        let value = &shape[shape.find(&format!("{key} = ")).unwrap() + key.len() + 3..];
+        assert_at(&e, &text, 4, value, Some(&format!("objects[0].shape.{key}")));
+        assert_eq!(
+            *e.kind,
+            ErrorKind::TooManyFaces { shape: kind, faces, max: MAX_SHAPE_FACES },
+            "{shape}"
+        );
+    }
+}
+
+/// Runs of two or more ASCII words with only spaces between them (`has a non`, `out of range`): an
+/// English sentence fragment. Names inside a Japanese sentence (`grid の divisions`, `V3`,
+/// `(NaN, 0, 0)`) stand alone between Japanese words or punctuation; single letters (`r g b`,
+/// `x y z`) are coordinates, not words.
+fn english_fragments(text: &str) -> Vec<String> {
+    let is_word = |w: &str| w.chars().filter(char::is_ascii_alphabetic).count() >= 2;
+    let mut found = Vec::new();
+    for segment in text.split(|c: char| !(c == ' ' || c == '_' || c.is_ascii_alphanumeric())) {
+        let words: Vec<&str> = segment.split_whitespace().collect();
+        for pair in words.windows(2).filter(|w| is_word(w[0]) && is_word(w[1])) {
+            found.push(pair.join(" "));
+        }
+    }
+    found
+}
+
+#[test]
+fn japanese_messages_have_no_english_fragments() {
+    let shape = cg_core::shapes::grid(5000, 1.0).unwrap_err();
+    let position = Vec3::new(f32::NAN, 0.0, 0.0);
+    let kinds = [
+        // These two embedded the English Display text of the core's errors.
+        ErrorKind::Shape(shape),
+        ErrorKind::Mesh(MeshError::NonFinitePosition { vertex: 0, position }),
+        ErrorKind::Transform(TransformError::NearPlane { near: 1e-45 }),
+        ErrorKind::TooManyFaces { shape: "grid", faces: 33_554_432, max: MAX_SHAPE_FACES },
+        ErrorKind::PngTooLarge { width: 100_000, height: 100_000 },
+        ErrorKind::Obj(tobj::LoadError::ColorParseError),
+        ErrorKind::ObjIndex { element: "vn", index: 2, count: 1 },
+        ErrorKind::ObjNumber { element: "f", word: "x".into() },
+        ErrorKind::ObjNumber { element: "v", word: "x".into() },
+        ErrorKind::ObjValues { element: "v", found: 2 },
+        ErrorKind::ObjCorner { corner: "1/1/1/1".into() },
+        ErrorKind::ObjPosition { position: [f32::INFINITY, 0.0, 0.0], w: 1.0 },
+    ];
+    for kind in &kinds {
+        let (ja, en) = (kind.describe(Lang::Ja), kind.describe(Lang::En));
+        assert_eq!(english_fragments(&ja), Vec::<String>::new(), "English inside: {ja}");
+        assert!(ja.chars().any(|c| ('\u{3040}'..='\u{30ff}').contains(&c)), "no kana in {ja}");
+        // The check would catch the English text.
+        assert!(!english_fragments(&en).is_empty(), "premise: {en}");
+    }
+    assert_eq!(
+        kinds[0].describe(Lang::Ja),
+        "grid の divisions = 5000 は範囲外です（1 以上 4096 以下の整数でなければなりません）"
+    );
+    assert_eq!(
+        kinds[1].describe(Lang::Ja),
+        "メッシュとして使えません: 頂点 V0 の座標 (NaN, 0, 0) に無限大または NaN が含まれています"
     );
 }

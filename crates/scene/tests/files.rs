@@ -3,7 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use cg_core::glam::{Vec2, Vec3};
-use cg_core::mesh::MeshError;
+use cg_core::lang::Lang;
 use cg_scene::{ErrorKind, SceneError, load_obj, load_texture, parse_obj};
 
 /// A fresh folder for this test's files.
@@ -116,13 +116,6 @@ fn face_indices_out_of_range_are_errors_naming_the_line() {
 
 #[test]
 fn malformed_obj_files_say_what_is_wrong() {
-    let e = obj_error("v 0 0 0\nv 1 0 x\nv 0 1 0\nf 1 2 3\n");
-    assert_eq!(*e.kind, ErrorKind::Obj(tobj::LoadError::PositionParseError));
-    assert_eq!(e.to_string(), "model.obj: not a valid OBJ file: position parse error");
-    assert!(matches!(*obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n").kind, ErrorKind::Obj(_)));
-    assert!(matches!(*obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/x 2 3\n").kind, ErrorKind::Obj(_)));
-    let four_parts = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1/1 2/1/1 3/1/1\n";
-    assert_eq!(*obj_error(four_parts).kind, ErrorKind::Obj(tobj::LoadError::FaceParseError));
     assert_eq!(*obj_error("v 0 0 0\nv 1 0 0\n").kind, ErrorKind::ObjNoFaces);
     assert_eq!(*obj_error("").kind, ErrorKind::ObjNoFaces);
     assert_eq!(*obj_error("v 0 0 0\nf 1 1\n").kind, ErrorKind::ObjNoFaces, "a line is not a face");
@@ -134,10 +127,150 @@ fn malformed_obj_files_say_what_is_wrong() {
     assert_eq!(*e.kind, ErrorKind::ObjBadNormal { vertex: 0 });
     let e = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 nan\nf 1/1 2/1 3/1\n");
     assert_eq!(*e.kind, ErrorKind::ObjBadUv { vertex: 0 });
-    let e = obj_error("v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n");
-    assert!(
-        matches!(*e.kind, ErrorKind::Mesh(MeshError::NonFinitePosition { vertex: 1, .. })),
-        "{e}"
+}
+
+/// What tobj alone makes of `text`: its error has no line (and sometimes names the wrong cause).
+fn tobj_alone(text: &str) -> Result<usize, tobj::LoadError> {
+    let options = tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };
+    let (models, _) =
+        tobj::load_obj_buf(&mut text.as_bytes(), &options, |_| Ok(Default::default()))?;
+    Ok(models.len())
+}
+
+#[test]
+fn lines_tobj_rejects_are_named_with_their_line_and_column() {
+    const TRI: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    // (text, line, column, what is wrong)
+    let cases: Vec<(String, usize, usize, ErrorKind)> = vec![
+        // An index too large for any file: tobj says "face parse error".
+        (
+            format!("{TRI}f 1 2 99999999999999999999\n"),
+            4,
+            7,
+            ErrorKind::ObjNumber { element: "f", word: "99999999999999999999".into() },
+        ),
+        (format!("{TRI}f 1 2 x\n"), 4, 7, ErrorKind::ObjNumber { element: "f", word: "x".into() }),
+        (
+            format!("{TRI}f 1/x 2 3\n"),
+            4,
+            5,
+            ErrorKind::ObjNumber { element: "f", word: "x".into() },
+        ),
+        (format!("{TRI}l 1 y\n"), 4, 5, ErrorKind::ObjNumber { element: "l", word: "y".into() }),
+        // Too few coordinates: tobj says "position parse error".
+        (
+            "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n".into(),
+            1,
+            1,
+            ErrorKind::ObjValues { element: "v", found: 2 },
+        ),
+        (
+            "v 0 0 0\nv 1 0 x\nv 0 1 0\nf 1 2 3\n".into(),
+            2,
+            7,
+            ErrorKind::ObjNumber { element: "v", word: "x".into() },
+        ),
+        (
+            format!("{TRI}vt 0.5\nf 1/1 2/1 3/1\n"),
+            4,
+            1,
+            ErrorKind::ObjValues { element: "vt", found: 1 },
+        ),
+        (
+            format!("{TRI}vn 0 0 z\nf 1//1 2//1 3//1\n"),
+            4,
+            8,
+            ErrorKind::ObjNumber { element: "vn", word: "z".into() },
+        ),
+        // x y z w r? tobj: "color parse error".
+        (
+            format!("{TRI}v 0 0 0 1 1\nf 1 2 3\n"),
+            4,
+            1,
+            ErrorKind::ObjValues { element: "v", found: 5 },
+        ),
+        // Positions at infinity.
+        (
+            format!("{TRI}v 1 2 3 0\nf 1 2 3\n"),
+            4,
+            3,
+            ErrorKind::ObjPosition {
+                position: [f32::INFINITY, f32::INFINITY, f32::INFINITY],
+                w: 0.0,
+            },
+        ),
+        (
+            "v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n".into(),
+            2,
+            3,
+            ErrorKind::ObjPosition { position: [f32::INFINITY, 0.0, 0.0], w: 1.0 },
+        ),
+        // 1e30 / 1e-30 overflows f32, as tobj computes it.
+        (
+            format!("{TRI}v 1e30 0 0 1e-30\nf 1 2 3\n"),
+            4,
+            3,
+            ErrorKind::ObjPosition { position: [f32::INFINITY, 0.0, 0.0], w: 1e-30 },
+        ),
+        // Corners that are not v, v/vt, v//vn or v/vt/vn.
+        (
+            format!("{TRI}vt 0 0\nvn 0 0 1\nf 1/1/1/1 2/1/1 3/1/1\n"),
+            6,
+            3,
+            ErrorKind::ObjCorner { corner: "1/1/1/1".into() },
+        ),
+        (format!("{TRI}f /1 2 3\n"), 4, 3, ErrorKind::ObjCorner { corner: "/1".into() }),
+        (format!("{TRI}f\n"), 4, 1, ErrorKind::ObjValues { element: "f", found: 0 }),
+        // A face referring forward, past an `o` line: tobj says "face vertex index out of bounds".
+        (
+            "o first\nv 0 0 0\nv 1 0 0\nf 1 2 3\no second\nv 0 1 0\n".into(),
+            4,
+            7,
+            ErrorKind::ObjIndex { element: "v", index: 3, count: 2 },
+        ),
+        // A normal referred to forward across `o`: tobj drops it from the first group, and the
+        // loader used to say "some face corners have vn and others do not".
+        (
+            format!("{TRI}o first\nf 1//1 2//1 3//1\no second\nvn 0 0 1\nf 1//1 2//1 3//1\n"),
+            5,
+            3,
+            ErrorKind::ObjIndex { element: "vn", index: 1, count: 0 },
+        ),
+        // Forward within one group is an error too (indices count what the lines before define).
+        (
+            "v 0 0 0\nv 1 0 0\nf 1 2 3\nv 0 1 0\n".into(),
+            3,
+            7,
+            ErrorKind::ObjIndex { element: "v", index: 3, count: 2 },
+        ),
+    ];
+    for (text, line, column, kind) in cases {
+        let e = obj_error(&text);
+        assert_eq!(*e.kind, kind, "{text}");
+        assert_eq!(e.position.map(|p| (p.line, p.column)), Some((line, column)), "{text}");
+        assert!(e.to_string().starts_with(&format!("model.obj:{line}:{column}: ")), "{e}");
+        let ja = e.describe(Lang::Ja);
+        assert!(ja.starts_with(&format!("model.obj:{line}:{column}: ")), "{ja}");
+        assert!(ja.chars().any(|c| ('\u{3040}'..='\u{30ff}').contains(&c)), "{ja}");
+    }
+
+    // The premise: tobj alone names no line for these, or the wrong cause.
+    let forward = "o first\nv 0 0 0\nv 1 0 0\nf 1 2 3\no second\nv 0 1 0\n";
+    assert_eq!(tobj_alone(forward), Err(tobj::LoadError::FaceVertexOutOfBounds));
+    assert_eq!(
+        tobj_alone(&format!("{TRI}f 1 2 99999999999999999999\n")),
+        Err(tobj::LoadError::FaceParseError)
+    );
+    assert_eq!(
+        tobj_alone("v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+        Err(tobj::LoadError::PositionParseError)
+    );
+    let normal_forward =
+        format!("{TRI}o first\nf 1//1 2//1 3//1\no second\nvn 0 0 1\nf 1//1 2//1 3//1\n");
+    assert_eq!(
+        tobj_alone(&normal_forward),
+        Ok(2),
+        "tobj loads it, the first group without normals"
     );
 }
 
@@ -315,6 +448,55 @@ fn broken_images_say_so_and_name_the_file() {
 
     let e = load_texture(&dir.join("absent.png")).unwrap_err();
     assert!(matches!(*e.kind, ErrorKind::Read { .. }));
+}
+
+/// CRC-32 of a PNG chunk's type and data (ISO 3309, the polynomial PNG uses), bit by bit.
+fn crc32(bytes: &[u8]) -> u32 {
+    let mut crc = !0u32;
+    for &b in bytes {
+        crc ^= u32::from(b);
+        for _ in 0..8 {
+            crc = if crc & 1 == 1 { (crc >> 1) ^ 0xEDB8_8320 } else { crc >> 1 };
+        }
+    }
+    !crc
+}
+
+/// A PNG file whose header claims `width × height` RGBA pixels, with one (empty) data chunk.
+fn png_claiming(width: u32, height: u32) -> Vec<u8> {
+    let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
+    let mut chunk = |kind: &[u8; 4], data: &[u8]| {
+        png.extend((data.len() as u32).to_be_bytes());
+        let typed: Vec<u8> = kind.iter().chain(data).copied().collect();
+        png.extend(&typed);
+        png.extend(crc32(&typed).to_be_bytes());
+    };
+    let mut ihdr = [width.to_be_bytes(), height.to_be_bytes()].concat();
+    ihdr.extend([8, 6, 0, 0, 0]); // 8 bits, RGBA, deflate, no filter, no interlace
+    chunk(b"IHDR", &ihdr);
+    chunk(b"IDAT", &[0x78, 0x9c, 0x03, 0x00, 0x00, 0x00, 0x00, 0x01]); // zlib of nothing
+    chunk(b"IEND", &[]);
+    png
+}
+
+#[test]
+fn a_png_too_large_to_decode_says_so_with_its_size() {
+    // 100 000 × 100 000 RGBA is 40 GB, far above the decoder's 512 MiB limit.
+    let e =
+        cg_scene::decode_png(&png_claiming(100_000, 100_000), Path::new("huge.png")).unwrap_err();
+    assert_eq!(*e.kind, ErrorKind::PngTooLarge { width: 100_000, height: 100_000 });
+    assert_eq!(e.to_string(), "huge.png: PNG image too large (100000×100000)");
+    assert_eq!(e.describe(Lang::Ja), "huge.png: PNG 画像が大きすぎます（100000×100000）");
+    // Premise: the image crate reports this as a limit, not as corrupt data (its message,
+    // "Memory limit exceeded", used to be shown as "corrupt or truncated PNG image").
+    let raw = image::load_from_memory_with_format(
+        &png_claiming(100_000, 100_000),
+        image::ImageFormat::Png,
+    );
+    assert!(matches!(raw, Err(image::ImageError::Limits(_))), "{raw:?}");
+    // The same file with a small size in its header is merely truncated (no pixel data).
+    let e = cg_scene::decode_png(&png_claiming(4, 4), Path::new("small.png")).unwrap_err();
+    assert!(matches!(*e.kind, ErrorKind::Png { .. }), "{e}");
 }
 
 #[test]

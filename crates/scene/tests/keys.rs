@@ -207,7 +207,8 @@ fn every_key_reads_into_its_field() {
     let p = |value| Param { value, symbol: None };
     let factors = [
         Factor::Translate([p(1.0), p(2.0), p(3.0)]),
-        Factor::Rotate { axis: Axis::Any(Vec3::new(0.0, 0.0, 2.0)), angle_deg: p(90.0) },
+        // glRotatef(90, 0, 0, 2) is a rotation about +Z, so the report prints Rz(90°).
+        Factor::Rotate { axis: Axis::Z, angle_deg: p(90.0) },
         Factor::Rotate { axis: Axis::X, angle_deg: p(10.0) },
         Factor::Rotate { axis: Axis::Y, angle_deg: p(20.0) },
         Factor::Rotate { axis: Axis::Z, angle_deg: p(-30.0) },
@@ -217,15 +218,16 @@ fn every_key_reads_into_its_field() {
 
     assert_eq!(pyramid.mesh, shapes::lecture_pyramid(), "from the OBJ file");
     assert_eq!(
+        // "smooth" and the table without crease_deg keep edges over 30° hard (NUMERICS row 5).
         pyramid.normals,
-        NormalSource::Vertex { weighting: Weighting::Angle, crease_deg: None }
+        NormalSource::Vertex { weighting: Weighting::Angle, crease_deg: Some(30.0) }
     );
     assert_eq!(pyramid.material, Material { kd: Vec3::new(0.0, 0.0, 1.0), ..Material::default() });
     assert!(pyramid.transform.factors.is_empty());
 
     assert_eq!(
         again.normals,
-        NormalSource::Vertex { weighting: Weighting::Uniform, crease_deg: None }
+        NormalSource::Vertex { weighting: Weighting::Uniform, crease_deg: Some(30.0) }
     );
     let full = Material {
         ka: Rgb::splat(0.1),

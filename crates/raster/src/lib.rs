@@ -1,0 +1,130 @@
+//! # cg-raster — the kit's CPU rasterizer, the renderer the tests trust
+//!
+//! Draws a [`cg_core::scene::Scene`] as OpenGL 1.x would (the course's sample program), on the
+//! CPU, on all cores, deterministically: flat, Gouraud and Phong shading
+//! (フラット／グロー／フォンシェーディング), a z-buffer, clipping at the near plane, the top-left
+//! fill rule (in OpenGL's y-up window coordinates), perspective-correct attributes, textures,
+//! back-face culling.
+//!
+//! ```
+//! use cg_core::lang::Lang;
+//! use cg_raster::{Options, render};
+//!
+//! let scene = cg_scene::load(std::path::Path::new("../../assets/scenes/course-sample.toml")).unwrap();
+//! let out = render(&scene, &Options { size: Some((64, 64)), ..Options::default() }).unwrap();
+//! assert_eq!(out.image.width, 64);
+//! assert_eq!(out.stats.specular_evaluations, 0); // every k_s is 0: no specular work
+//! println!("{}", out.features.describe(Lang::Ja));
+//! ```
+//!
+//! ## The pipeline
+//!
+//! The stages are one function each, in `src/pipeline.rs`, named as a GPU's:
+//!
+//! | stage | what it does |
+//! |---|---|
+//! | `vertex` | model → world (normals by the cofactor normal matrix, normalised, flipped back for mirrored objects) → view → clip (`[0, 1]` depth); Gouraud lights each vertex here |
+//! | `clip` | Sutherland–Hodgman in homogeneous clip space against the near plane `z ≥ 0`, the far plane and a guard band ±2²⁰ pixels wide; attributes linear in clip space; never a division by `w ≤ 0` |
+//! | `viewport` | perspective divide; window x right, y down from the top-left corner, pixel centres at `(x + ½, y + ½)`, depth `[0, 1]`; coordinates snapped to **1/256 pixel** (8 sub-pixel bits) |
+//! | `triangle_setup` | back-face culling by the sign of the window-space area (counter-clockwise in OpenGL's y-up window = front; the other way for mirrored objects), bounding box |
+//! | `flat_color` | flat shading: one lighting evaluation per face, at its **centroid**, with the face normal (OpenGL's GL_FLAT takes the last vertex's colour instead) |
+//! | `bin` | each triangle into the tiles (32 × 32 pixels) its bounding box touches; a row of tiles is one task for a thread |
+//! | `rasterize` | exact integer edge functions and the **top-left fill rule in OpenGL's y-up window coordinates** (as Mesa's llvmpipe applies it): a pixel centre on an edge belongs to the triangle when the edge is a *left* or a *bottom* edge as the image is seen; on an edge shared by two triangles it is drawn exactly once |
+//! | `depth_test` | GL_LESS against a depth buffer cleared to 1, then the write (early: before shading; the same image) |
+//! | `fragment` | perspective-correct barycentrics for colour, normal, position and uv; Phong lights each pixel here; texture after lighting (GL_MODULATE, GL_REPLACE); clamp to `[0, 1]` |
+//!
+//! Triangles are set up once and binned; each tile is drawn by one thread, its triangles in
+//! submission order, so the output is bit-identical for every thread count and tile size.
+//!
+//! ## Shading and lighting
+//!
+//! Lighting happens in world space through the [`Lighting`] hook; the default,
+//! [`SceneLighting`], is the scene's light model by [`cg_core::light::shade`], with V from
+//! [`cg_core::light::LightModel::view_vector`] (the infinite viewer's V is the camera's +Z).
+//! Colours are clamped where OpenGL clamps them: the lit colour per vertex (Gouraud), per face
+//! (flat) or per pixel (Phong), and the final colour. With per-vertex colours in the mesh,
+//! k_a = k_d = the colour (glColor under GL_COLOR_MATERIAL).
+//!
+//! ## As OpenGL draws it
+//!
+//! The conventions follow what Mesa's OpenGL (llvmpipe, through `cg-glref`) does, so the
+//! course's scenes come out within 1/255 of OpenGL's images (`tests/opengl.rs`): pixel centres at
+//! half-integers; 8 sub-pixel bits; the fill rule above (pixel-exact against OpenGL on edges
+//! through pixel centres); lit vertex colours clamped to `[0, 1]` before they are interpolated;
+//! colours and texture coordinates interpolated perspective-correctly; GL_LESS; GL_MODULATE on
+//! the whole lit colour; 8-bit output by [`cg_core::image::to_unorm8`] (OpenGL rounds exact
+//! halves to even, the kit up: they differ on exact ties only). Two documented differences: flat
+//! shading lights the centroid (GL_FLAT takes the last vertex's colour), and lighting happens in
+//! world space (OpenGL's eye space gives the same colours up to rounding, for a rigid view).
+//!
+//! ## Only what the scene needs
+//!
+//! [`Scene::features`](cg_core::scene::Scene::features) decides what is computed: no specular
+//! term when no light or no material has one (k_s is passed as 0), no texture sampling for
+//! untextured objects, no lighting under GL_REPLACE. [`Output::stats`] counts what each stage
+//! did; [`Output::features`] says what was enabled.
+
+mod error;
+mod lighting;
+mod output;
+mod pipeline;
+
+use cg_core::glam::Vec2;
+use cg_core::scene::Scene;
+
+pub use error::RenderError;
+pub use lighting::{Lighting, SceneLighting, SurfacePoint};
+pub use output::{DEFAULT_TILE_SIZE, MAX_SIZE, Options, Output, Stats};
+pub use pipeline::{GUARD_BAND_PIXELS, SUBPIXEL_BITS};
+
+/// Renders `scene` with its own light model ([`SceneLighting`]).
+///
+/// # Errors
+/// A [`RenderError`] for a zero or too large image size, an invalid camera or projection, an
+/// object that cannot be prepared (transform, normals, mesh), a missing texture, or a vertex
+/// whose transformed position is not finite. Nothing in the scene makes it panic.
+///
+/// See also [`render_with`].
+pub fn render(scene: &Scene, options: &Options) -> Result<Output, RenderError> {
+    render_with(scene, options, &SceneLighting)
+}
+
+/// Renders `scene`, lighting every point with `lighting` (the hook of the shading exercises):
+/// the same pipeline as [`render`], which is `render_with(scene, options, &SceneLighting)`.
+///
+/// # Errors
+/// As [`render`], and [`RenderError::Threads`] when `options.threads` threads cannot be started.
+pub fn render_with<L: Lighting + ?Sized>(
+    scene: &Scene,
+    options: &Options,
+    lighting: &L,
+) -> Result<Output, RenderError> {
+    match options.threads {
+        None | Some(0) => pipeline::draw(scene, options, lighting),
+        Some(threads) => {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .map_err(|e| RenderError::Threads { threads, message: e.to_string() })?;
+            pool.install(|| pipeline::draw(scene, options, lighting))
+        }
+    }
+}
+
+/// The rasterizer alone, for coverage tests: how many of `triangles` cover each pixel of a
+/// `width × height` raster (row by row from the top), through the renderer's own sub-pixel
+/// snapping, triangle setup, tiling (`tile` × `tile` pixels) and fill rule. Triangles are in
+/// window coordinates — pixels, x right, y down from the top-left corner, pixel `(x, y)`
+/// centred at `(x + ½, y + ½)` — of either winding (nothing is culled); zero-area ones cover
+/// nothing, and parts outside the raster are cut off.
+///
+/// With the fill rule, triangles that tile a region cover each pixel centre of its interior
+/// exactly once; a centre on the region's own border is covered when the border there is a left
+/// or a bottom edge (as the image is seen).
+///
+/// Coordinates must stay within ±[`GUARD_BAND_PIXELS`] (the renderer clips to that band first);
+/// non-finite ones are treated as 0 by the fixed-point conversion.
+#[must_use]
+pub fn coverage(width: u32, height: u32, tile: u32, triangles: &[[Vec2; 3]]) -> Vec<u32> {
+    pipeline::coverage(width, height, tile, triangles)
+}

@@ -1,0 +1,81 @@
+//! The lighting stage as a hook (光源処理): the one function the shading modes call, at a face,
+//! a vertex or a pixel depending on the mode.
+//!
+//! | shading | where [`Lighting::light`] is called | what is interpolated |
+//! |---|---|---|
+//! | [`Shading::Flat`] (フラットシェーディング) | once per face, at its centroid, with the face normal | nothing: one colour per face |
+//! | [`Shading::Gouraud`] (グローシェーディング) | once per vertex, with the vertex normal | the colours, clamped to `[0, 1]` per vertex |
+//! | [`Shading::Phong`] (フォンシェーディング) | once per pixel, with the interpolated, renormalised normal | normals and positions |
+//!
+//! The renderer decides *where* to light; a [`Lighting`] decides *how*. [`SceneLighting`], the
+//! default, evaluates the scene's own light model with [`cg_core::light::shade`]. An exercise can
+//! pass its own implementation to [`crate::render_with`] — a closure
+//! `|scene: &Scene, point: &SurfacePoint| -> Rgb` is one — and the renderer draws the same image
+//! with it, by the same path.
+
+use cg_core::Rgb;
+use cg_core::glam::Vec3;
+use cg_core::light::{Material, shade};
+use cg_core::scene::{Scene, Shading};
+
+/// A point of a surface to be lit, everything in world space (ワールド座標系), where the lights are.
+#[derive(Clone, Copy, Debug)]
+pub struct SurfacePoint<'a> {
+    /// Where the point is: a face's centroid (flat), a vertex (Gouraud) or the point seen through
+    /// a pixel centre (Phong).
+    pub p_world: Vec3,
+    /// The unit normal N, pointing out of the front face (mirrored objects are already flipped
+    /// back). The zero vector when the surface has no usable normal there (a degenerate face):
+    /// then only the ambient and emitted light remain.
+    pub n_world: Vec3,
+    /// The unit vector V towards the viewer ([`cg_core::light::LightModel::view_vector`]: for
+    /// OpenGL's infinite viewer, the camera's backward axis).
+    pub v_world: Vec3,
+    /// The surface's material. With per-vertex colours, k_a and k_d are the colour there
+    /// (glColor under GL_COLOR_MATERIAL); k_s is 0 when the scene has no specular light at all
+    /// ("only what the scene needs").
+    pub material: &'a Material,
+    /// Which shading mode asks (tells a face, a vertex and a pixel apart).
+    pub shading: Shading,
+}
+
+/// The lighting stage: the colour of a lit point, *not* clamped (the renderer clamps to
+/// `[0, 1]` where OpenGL does: per vertex for Gouraud, per face for flat, per pixel for Phong;
+/// a NaN channel becomes 0 there).
+///
+/// `Sync` because tiles are shaded on all cores at once.
+///
+/// Closures `Fn(&Scene, &SurfacePoint) -> Rgb` implement it.
+pub trait Lighting: Sync {
+    /// The colour that `scene`'s lights give `point`.
+    fn light(&self, scene: &Scene, point: &SurfacePoint<'_>) -> Rgb;
+}
+
+/// The default lighting: the scene's light model ([`Scene::light_model`], its global ambient and
+/// lights) evaluated term by term by [`cg_core::light::shade`], summed.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SceneLighting;
+
+impl Lighting for SceneLighting {
+    fn light(&self, scene: &Scene, point: &SurfacePoint<'_>) -> Rgb {
+        shade(
+            scene.light_model,
+            scene.global_ambient,
+            &scene.lights,
+            point.material,
+            point.p_world,
+            point.n_world,
+            point.v_world,
+        )
+        .total()
+    }
+}
+
+impl<F> Lighting for F
+where
+    F: Fn(&Scene, &SurfacePoint<'_>) -> Rgb + Sync,
+{
+    fn light(&self, scene: &Scene, point: &SurfacePoint<'_>) -> Rgb {
+        self(scene, point)
+    }
+}

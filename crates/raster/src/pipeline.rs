@@ -1,0 +1,998 @@
+//! The pipeline, one function per stage, in the order a GPU runs them (read it top to bottom, as
+//! tinyrenderer's `our_gl.cpp`):
+//!
+//! ```text
+//! draw ─┬─ vertex             model → world → view → clip; Gouraud lights here, per vertex
+//!       ├─ per face, in chunks of faces on all cores:
+//!       │    clip             Sutherland–Hodgman in clip space: near (z ≥ 0), far, guard band
+//!       │    viewport         perspective divide, then window coordinates snapped to 1/256 pixel
+//!       │    triangle_setup   back-face culling by the signed area, edge orientation, bounding box
+//!       │    flat_color       Flat lights here, once per face
+//!       │    bin              the triangle goes to every tile its bounding box touches
+//!       └─ draw_tile, per tile on all cores, triangles in submission order:
+//!            rasterize        edge functions in fixed point, OpenGL's fill rule
+//!            depth_test       GL_LESS against the tile's depth buffer, then the depth write
+//!            fragment         perspective-correct attributes; Phong lights here; texture
+//! ```
+//!
+//! Each tile is drawn by one thread from start to end, its triangles in the order they were
+//! submitted, so the image is the same bits whatever the thread count or the tile size.
+//!
+//! Spaces and names: `p_model`, `p_world` (lighting happens here), `p_view`, `p_clip` (homogeneous,
+//! `[0, 1]` depth), `p_ndc`, `p_screen` (window: pixels, x right, y *down* from the image's top-left
+//! corner, pixel `(x, y)` centred at `(x + ½, y + ½)`, depth in `[0, 1]`).
+
+use cg_core::Rgb;
+use cg_core::features::Features;
+use cg_core::glam::{Mat4, Vec2, Vec3, Vec4, Vec4Swizzles};
+use cg_core::image::Image;
+use cg_core::light::Material;
+use cg_core::math::try_normalize;
+use cg_core::normals::{face_normal, interpolate_normal};
+use cg_core::product::Factor;
+use cg_core::scene::{Prepared, Scene, Shading};
+use cg_core::texture::{Sampler, TexEnv, Texture};
+use cg_core::transform::transform_point;
+use rayon::prelude::*;
+
+use crate::error::RenderError;
+use crate::lighting::{Lighting, SurfacePoint};
+use crate::output::{DEFAULT_TILE_SIZE, MAX_SIZE, Options, Output, Stats};
+
+/// Bits of sub-pixel precision: window coordinates are snapped to multiples of `1/256` pixel
+/// (as Direct3D 10+ requires, and as Mesa's llvmpipe does) before the edge functions are set up.
+pub const SUBPIXEL_BITS: u32 = 8;
+/// One pixel in fixed point.
+const ONE: i64 = 1 << SUBPIXEL_BITS;
+/// A pixel centre's offset in fixed point (½ pixel).
+const HALF: i64 = ONE / 2;
+
+/// How far beyond the image edges (in pixels) a triangle may reach before it is clipped at the
+/// sides: the guard band. Inside it, the bounding box clipped to the tile does the work; beyond it
+/// Sutherland–Hodgman clipping keeps window coordinates below 2²¹ pixels, so fixed-point
+/// coordinates fit `i32` and the edge functions (products of two 30-bit differences) fit `i64`.
+pub const GUARD_BAND_PIXELS: f32 = (1u32 << 20) as f32;
+
+/// Faces per unit of parallel work in the primitive stages.
+const FACES_PER_CHUNK: usize = 8192;
+
+/// The most vertices a triangle can have after clipping by six planes (each adds at most one).
+const MAX_POLYGON: usize = 9;
+
+// ---------------------------------------------------------------------------------------------
+// What every stage reads
+
+/// Everything fixed for one frame: the camera, the projection, the window and the scene's needs.
+struct Frame<'s, L: ?Sized> {
+    scene: &'s Scene,
+    lighting: &'s L,
+    shading: Shading,
+    width: u32,
+    height: u32,
+    tile: u32,
+    /// ワールド座標系→カメラ座標系.
+    view: Mat4,
+    /// カメラ座標系→クリップ座標系, `[0, 1]` depth.
+    projection: Mat4,
+    /// The eye in world space (for a local viewer's V).
+    eye: Vec3,
+    /// The camera's backward axis (+Z of camera space) in world space: the infinite viewer's V.
+    backward: Vec3,
+    features: Features,
+    /// The guard band in NDC units along x and y (≥ 1).
+    guard: Vec2,
+    /// Point lights per lighting evaluation (an area light counts its samples).
+    point_lights: u64,
+    /// Of those, the ones with distance attenuation.
+    attenuating_lights: u64,
+}
+
+/// One object made ready to draw.
+struct Draw<'s> {
+    prepared: Prepared<'s>,
+    /// The object's material, with k_s = 0 when the scene has no specular light at all.
+    material: Material,
+    texture: Option<Texturing<'s>>,
+    /// Whether the lit colour is used at all (not under GL_REPLACE, which shows the bare texel).
+    lit: bool,
+}
+
+/// A texture bound to an object.
+#[derive(Clone, Copy)]
+struct Texturing<'s> {
+    texture: &'s Texture,
+    sampler: Sampler,
+    env: TexEnv,
+}
+
+/// The vertex stage's output for one vertex (a GPU's varyings plus the clip position).
+#[derive(Clone, Copy, Debug, Default)]
+struct Vertex {
+    p_clip: Vec4,
+    p_world: Vec3,
+    n_world: Vec3,
+    /// Gouraud: the lit colour, clamped to `[0, 1]`; otherwise the vertex colour (or white).
+    color: Rgb,
+    uv: Vec2,
+}
+
+impl Vertex {
+    /// `self + t·(other − self)` for every attribute: linear in clip space, which is what keeps
+    /// attributes of clipped vertices right under perspective.
+    fn lerp(&self, other: &Vertex, t: f32) -> Vertex {
+        Vertex {
+            p_clip: self.p_clip + (other.p_clip - self.p_clip) * t,
+            p_world: self.p_world + (other.p_world - self.p_world) * t,
+            n_world: self.n_world + (other.n_world - self.n_world) * t,
+            color: self.color + (other.color - self.color) * t,
+            uv: self.uv + (other.uv - self.uv) * t,
+        }
+    }
+}
+
+/// Where a triangle's corner lives: below [`NEW_VERTEX`], an index into its object's vertex
+/// buffer; from it up, an index into its chunk's vertices made by clipping.
+const NEW_VERTEX: u32 = 1 << 31;
+
+/// A triangle set up for the rasterizer.
+#[derive(Clone, Copy, Debug)]
+struct Triangle {
+    edges: Edges,
+    /// Window depth of each corner.
+    z: [f32; 3],
+    /// 1/w of each corner (for perspective-correct interpolation).
+    inv_w: [f32; 3],
+    /// The corners' vertices (see [`NEW_VERTEX`]).
+    slot: [u32; 3],
+    /// Phong: the face normal in world space, the fallback of [`interpolate_normal`] (zero under
+    /// the other modes, which do not read it).
+    face_normal: Vec3,
+    /// Flat: the face's colour, clamped to `[0, 1]`.
+    flat_color: Rgb,
+}
+
+/// The fixed-point corners of a triangle, ordered so that every edge function is positive inside.
+#[derive(Clone, Copy, Debug)]
+struct Edges {
+    /// x of each corner in 1/256 pixel.
+    x: [i32; 3],
+    /// y of each corner (down) in 1/256 pixel.
+    y: [i32; 3],
+    /// Twice the area in (1/256 pixel)², > 0.
+    area2: i64,
+    /// The pixels whose centres the bounding box holds, clipped to the image: `[x0, y0, x1, y1]`,
+    /// inclusive.
+    bbox: [u32; 4],
+}
+
+/// A corner after the viewport transform.
+#[derive(Clone, Copy, Debug, Default)]
+struct ScreenVertex {
+    x: i32,
+    y: i32,
+    z: f32,
+    inv_w: f32,
+    slot: u32,
+}
+
+/// The output of the primitive stages for one chunk of faces of one object.
+struct Chunk {
+    object: usize,
+    triangles: Vec<Triangle>,
+    /// Vertices made by clipping, referred to by `NEW_VERTEX | index`.
+    new_vertices: Vec<Vertex>,
+    /// For each tile, the triangles (indices into `triangles`) that touch it, in order.
+    bins: Vec<Vec<u32>>,
+    stats: Stats,
+}
+
+/// A rectangle of pixels `[x0, x1) × [y0, y1)`.
+#[derive(Clone, Copy, Debug)]
+struct Rect {
+    x0: u32,
+    y0: u32,
+    x1: u32,
+    y1: u32,
+}
+
+// ---------------------------------------------------------------------------------------------
+// The draw call
+
+/// Renders `scene` with `lighting`; see [`crate::render_with`].
+pub(crate) fn draw<L: Lighting + ?Sized>(
+    scene: &Scene,
+    options: &Options,
+    lighting: &L,
+) -> Result<Output, RenderError> {
+    let frame = Frame::new(scene, options, lighting)?;
+    let draws = prepare_draws(scene, &frame.features)?;
+
+    let mut stats = Stats::default();
+    let mut buffers = Vec::with_capacity(draws.len());
+    for draw in &draws {
+        let (vertices, s) = vertex_stage(&frame, draw)?;
+        buffers.push(vertices);
+        stats += s;
+    }
+
+    let jobs: Vec<(usize, usize, usize)> = draws
+        .iter()
+        .enumerate()
+        .flat_map(|(object, draw)| {
+            let faces = draw.prepared.mesh.faces.len();
+            (0..faces)
+                .step_by(FACES_PER_CHUNK)
+                .map(move |start| (object, start, (start + FACES_PER_CHUNK).min(faces)))
+        })
+        .collect();
+    let chunks: Vec<Chunk> = jobs
+        .par_iter()
+        .map(|&(object, start, end)| {
+            primitive_stage(&frame, &draws[object], &buffers[object], object, start..end)
+        })
+        .collect();
+    for chunk in &chunks {
+        stats += chunk.stats;
+    }
+
+    // Tiles are drawn a row of tiles (a band) at a time; each band owns its rows of the colour
+    // and depth buffers, so tiles write straight into the image.
+    let mut image = Image::new(frame.width, frame.height, scene.clear_color);
+    let mut depth = vec![1.0f32; frame.width as usize * frame.height as usize];
+    let band = frame.width as usize * frame.tile as usize;
+    let band_stats: Vec<Stats> = image
+        .pixels
+        .par_chunks_mut(band)
+        .zip(depth.par_chunks_mut(band))
+        .enumerate()
+        .map(|(row, (color, depth))| {
+            let mut stats = Stats::default();
+            let mut target =
+                Target { color, depth, stride: frame.width as usize, y0: row as u32 * frame.tile };
+            let columns = frame.width.div_ceil(frame.tile);
+            for column in 0..columns {
+                let rect = frame.tile_rect(column, row as u32);
+                let index = (row as u32 * columns + column) as usize;
+                stats += draw_tile(&frame, &draws, &buffers, &chunks, index, rect, &mut target);
+            }
+            stats
+        })
+        .collect();
+    for s in band_stats {
+        stats += s;
+    }
+    debug_assert!(image.pixels.iter().all(|c| c.is_finite()), "no NaN in the image");
+    debug_assert!(depth.iter().all(|z| (0.0..=1.0).contains(z)), "depths in [0, 1]");
+    Ok(Output { image, depth, stats, features: frame.features, shading: frame.shading })
+}
+
+impl<'s, L: Lighting + ?Sized> Frame<'s, L> {
+    fn new(scene: &'s Scene, options: &Options, lighting: &'s L) -> Result<Self, RenderError> {
+        let (width, height) = options.size.unwrap_or((scene.width, scene.height));
+        if width == 0 || height == 0 {
+            return Err(RenderError::ZeroSize { width, height });
+        }
+        if width > MAX_SIZE || height > MAX_SIZE {
+            return Err(RenderError::TooLarge { width, height });
+        }
+        let view = scene.view_product().and_then(|v| v.matrix()).map_err(RenderError::Camera)?;
+        // The scene's projection; with another size, the same with that size's aspect ratio.
+        let p = &scene.projection;
+        let projection = match options.size {
+            None => scene.projection_matrix(),
+            Some(_) => Factor::perspective(p.fovy_deg, width as f32 / height as f32, p.near, p.far)
+                .matrix(),
+        }
+        .map_err(RenderError::Projection)?;
+        // Camera +Z in world space is the third row of the view rotation (rows of an orthonormal
+        // matrix are the camera axes); a valid view is orthonormal, so this never falls back.
+        let backward = try_normalize(Vec3::new(view.x_axis.z, view.y_axis.z, view.z_axis.z))
+            .unwrap_or(Vec3::Z);
+        let point_lights: Vec<_> = scene.lights.iter().flat_map(|l| l.point_lights()).collect();
+        let half = Vec2::new(width as f32, height as f32) * 0.5;
+        Ok(Frame {
+            scene,
+            lighting,
+            shading: options.shading.unwrap_or(scene.shading),
+            width,
+            height,
+            tile: options.tile_size.filter(|&t| t > 0).unwrap_or(DEFAULT_TILE_SIZE).clamp(4, 1024),
+            view,
+            projection,
+            eye: scene.camera.eye_position(),
+            backward,
+            features: scene.features(),
+            guard: (Vec2::splat(GUARD_BAND_PIXELS) / half).max(Vec2::ONE),
+            point_lights: point_lights.len() as u64,
+            attenuating_lights: point_lights.iter().filter(|l| l.needs_attenuation()).count()
+                as u64,
+        })
+    }
+
+    /// Tile `(column, row)`, counted from the top-left; the last column and row may be narrower.
+    fn tile_rect(&self, column: u32, row: u32) -> Rect {
+        let t = self.tile;
+        Rect {
+            x0: column * t,
+            y0: row * t,
+            x1: ((column + 1) * t).min(self.width),
+            y1: ((row + 1) * t).min(self.height),
+        }
+    }
+
+    /// The lighting stage at one point (光源処理); the colour is not clamped. Count it with
+    /// [`Frame::count_lighting`].
+    fn light(&self, p_world: Vec3, n_world: Vec3, material: &Material) -> Rgb {
+        let v_world = self.scene.light_model.view_vector(p_world, self.eye, self.backward);
+        let point = SurfacePoint { p_world, n_world, v_world, material, shading: self.shading };
+        self.lighting.light(self.scene, &point)
+    }
+
+    /// Counts `evaluations` calls of the lighting stage with `material` in `stats`.
+    fn count_lighting(&self, material: &Material, evaluations: u64, stats: &mut Stats) {
+        stats.lighting_evaluations += evaluations;
+        if material.ks != Rgb::ZERO {
+            stats.specular_evaluations += evaluations * self.point_lights;
+        }
+        stats.attenuation_evaluations += evaluations * self.attenuating_lights;
+    }
+}
+
+/// Every object made ready: shading normals, model matrix, material, texture.
+fn prepare_draws<'s>(scene: &'s Scene, features: &Features) -> Result<Vec<Draw<'s>>, RenderError> {
+    scene
+        .objects
+        .iter()
+        .map(|object| {
+            let texture = match &object.texture {
+                None => None,
+                Some(t) => {
+                    let texture = scene.textures.get(t.texture).ok_or_else(|| {
+                        RenderError::MissingTexture {
+                            object: object.name.clone(),
+                            texture: t.texture,
+                            count: scene.textures.len(),
+                        }
+                    })?;
+                    Some(Texturing { texture, sampler: t.sampler, env: t.env })
+                }
+            };
+            let mut material = object.material.clone();
+            if !features.specular {
+                // Only what the scene needs: no light has a specular colour, so no specular work.
+                material.ks = Rgb::ZERO;
+            }
+            Ok(Draw {
+                prepared: object.prepare()?,
+                material,
+                lit: !matches!(texture, Some(Texturing { env: TexEnv::Replace, .. })),
+                texture,
+            })
+        })
+        .collect()
+}
+
+impl Draw<'_> {
+    /// The material at a point: with per-vertex colours, k_a = k_d = the colour there
+    /// (GL_COLOR_MATERIAL with GL_AMBIENT_AND_DIFFUSE).
+    fn material_at(&self, color: Option<Rgb>) -> Material {
+        match color {
+            Some(c) => Material { ka: c, kd: c, ..self.material.clone() },
+            None => self.material.clone(),
+        }
+    }
+
+    fn has_colors(&self) -> bool {
+        self.prepared.mesh.colors.is_some()
+    }
+}
+
+/// A colour clamped to `[0, 1]` per channel, NaN taken as 0 (OpenGL's clamp of the lit colour).
+fn saturate(c: Rgb) -> Rgb {
+    let channel = |x: f32| if x > 0.0 { x.min(1.0) } else { 0.0 };
+    Rgb::new(channel(c.x), channel(c.y), channel(c.z))
+}
+
+// ---------------------------------------------------------------------------------------------
+// Vertex stage (頂点処理)
+
+/// Runs [`vertex`] over every vertex of one object, on all cores.
+///
+/// # Errors
+/// [`RenderError::NonFinite`] naming the first vertex whose clip position is not finite.
+fn vertex_stage<L: Lighting + ?Sized>(
+    frame: &Frame<'_, L>,
+    draw: &Draw<'_>,
+) -> Result<(Vec<Vertex>, Stats), RenderError> {
+    let n = draw.prepared.mesh.positions.len();
+    let vertices: Vec<Vertex> = (0..n).into_par_iter().map(|i| vertex(frame, draw, i)).collect();
+    let mut stats = Stats { vertices: n as u64, ..Stats::default() };
+    if frame.shading == Shading::Gouraud && draw.lit {
+        // Vertex colours change k_a and k_d only, so the counts are the same for every vertex.
+        frame.count_lighting(&draw.material, n as u64, &mut stats);
+    }
+    if let Some(i) = vertices.iter().position(|v| !v.p_clip.is_finite()) {
+        return Err(RenderError::NonFinite {
+            object: draw.prepared.object.name.clone(),
+            vertex: i,
+            position: vertices[i].p_clip.to_array(),
+        });
+    }
+    Ok((vertices, stats))
+}
+
+/// The vertex stage for vertex `i`: model → world (positions by the model matrix, normals by the
+/// cofactor normal matrix, normalised, flipped back for a mirrored object) → view → clip. Under
+/// Gouraud shading the vertex is lit here and its colour clamped to `[0, 1]`, as OpenGL clamps
+/// the lit vertex colour before interpolating it.
+fn vertex<L: Lighting + ?Sized>(frame: &Frame<'_, L>, draw: &Draw<'_>, i: usize) -> Vertex {
+    let prepared = &draw.prepared;
+    let mesh = &prepared.mesh;
+    let p_model = mesh.positions[i];
+    let p_world = transform_point(prepared.model, p_model);
+    let n_model = mesh.normals.as_ref().and_then(|n| n.get(i)).copied().unwrap_or(Vec3::ZERO);
+    let n_world = try_normalize(prepared.normal_matrix * n_model)
+        .map_or(Vec3::ZERO, |n| if prepared.mirrored { -n } else { n });
+    let p_view = transform_point(frame.view, p_world);
+    let p_clip = frame.projection * p_view.extend(1.0);
+    let vertex_color = mesh.colors.as_ref().and_then(|c| c.get(i)).copied();
+    let uv = mesh.uvs.as_ref().and_then(|uv| uv.get(i)).copied().unwrap_or(Vec2::ZERO);
+    let color = if frame.shading == Shading::Gouraud && draw.lit {
+        saturate(frame.light(p_world, n_world, &draw.material_at(vertex_color)))
+    } else {
+        vertex_color.unwrap_or(Rgb::ONE)
+    };
+    debug_assert!(color.is_finite());
+    Vertex { p_clip, p_world, n_world, color, uv }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Primitive stages: clip, viewport, triangle setup, flat colour, binning
+
+/// Assembles, clips, sets up and bins the faces `faces` of object `object`.
+fn primitive_stage<L: Lighting + ?Sized>(
+    frame: &Frame<'_, L>,
+    draw: &Draw<'_>,
+    vertices: &[Vertex],
+    object: usize,
+    faces: std::ops::Range<usize>,
+) -> Chunk {
+    let mut chunk = Chunk {
+        object,
+        triangles: Vec::new(),
+        new_vertices: Vec::new(),
+        bins: Vec::new(),
+        stats: Stats::default(),
+    };
+    let cull = if frame.scene.cull_back_faces {
+        Cull::Back { mirrored: draw.prepared.mirrored }
+    } else {
+        Cull::None
+    };
+    let guard_band = planes(frame.guard);
+    for face in &draw.prepared.mesh.faces[faces] {
+        let stats = &mut chunk.stats;
+        stats.triangles_in += 1;
+        let corners = face.map(|i| &vertices[i as usize]);
+        let codes = corners.map(|v| outcodes(v.p_clip, frame.guard));
+        if codes[0].0 & codes[1].0 & codes[2].0 != 0 {
+            stats.triangles_outside += 1;
+            continue;
+        }
+        // The corners in window coordinates: the triangle itself, or the polygon that clipping
+        // leaves of it.
+        let mut screen = [ScreenVertex::default(); MAX_POLYGON];
+        let mut len = 0;
+        let mut visible = true;
+        let mut to_window = |p_clip: Vec4, slot: u32| match viewport(frame, p_clip) {
+            Some(v) => {
+                screen[len] = ScreenVertex { slot, ..v };
+                len += 1;
+            }
+            None => visible = false,
+        };
+        if codes[0].1 | codes[1].1 | codes[2].1 == 0 {
+            for k in 0..3 {
+                to_window(corners[k].p_clip, face[k]);
+            }
+        } else {
+            stats.triangles_clipped += 1;
+            let polygon = clip(&Polygon::triangle(corners.map(|v| *v), *face), &guard_band);
+            for corner in &polygon.corners[..polygon.len] {
+                let mut slot = corner.slot;
+                if slot == NEW_VERTEX {
+                    slot = NEW_VERTEX | chunk.new_vertices.len() as u32;
+                    chunk.new_vertices.push(corner.vertex);
+                }
+                to_window(corner.vertex.p_clip, slot);
+            }
+        }
+        if !visible || len < 3 {
+            // Clipping left nothing (or, through rounding, a corner at w ≤ 0: never divided by).
+            stats.triangles_outside += 1;
+            continue;
+        }
+        // The face's normal (flat, and Phong's fallback) and its lighting (flat), made once when
+        // a part of it is drawn.
+        let mut face_parts: Option<(Vec3, Rgb)> = None;
+        for k in 1..len - 1 {
+            let fan = [screen[0], screen[k], screen[k + 1]];
+            let (edges, order) = match triangle_setup(fan, cull, frame.width, frame.height) {
+                Ok(t) => t,
+                Err(dropped) => {
+                    match dropped {
+                        Dropped::Degenerate => stats.triangles_degenerate += 1,
+                        Dropped::Culled => stats.triangles_culled += 1,
+                        Dropped::TooSmall => stats.triangles_too_small += 1,
+                    }
+                    continue;
+                }
+            };
+            let (face_normal, flat_color) =
+                *face_parts.get_or_insert_with(|| match frame.shading {
+                    Shading::Flat => {
+                        let n = world_face_normal(draw, corners);
+                        (n, flat_color(frame, draw, corners, n, stats))
+                    }
+                    Shading::Phong => (world_face_normal(draw, corners), Rgb::ONE),
+                    Shading::Gouraud => (Vec3::ZERO, Rgb::ONE),
+                });
+            let s = order.map(|i| fan[i]);
+            stats.triangles_drawn += 1;
+            chunk.triangles.push(Triangle {
+                edges,
+                z: s.map(|v| v.z),
+                inv_w: s.map(|v| v.inv_w),
+                slot: s.map(|v| v.slot),
+                face_normal,
+                flat_color,
+            });
+            bin(frame, &mut chunk.bins, chunk.triangles.len() - 1, &edges.bbox);
+        }
+    }
+    chunk
+}
+
+/// Which planes a clip-space point lies outside, as bits (near, far, −x, +x, −y, +y): of the
+/// view volume, and of the clip volume with the guard band `guard` (in NDC units) at the sides.
+fn outcodes(p: Vec4, guard: Vec2) -> (u8, u8) {
+    let [x, y, z, w] = p.to_array();
+    let depth = u8::from(z < 0.0) | u8::from(z > w) << 1;
+    let sides = |gx: f32, gy: f32| {
+        u8::from(x < -gx * w) << 2
+            | u8::from(x > gx * w) << 3
+            | u8::from(y < -gy * w) << 4
+            | u8::from(y > gy * w) << 5
+    };
+    (depth | sides(1.0, 1.0), depth | sides(guard.x, guard.y))
+}
+
+/// The six clip planes as `(a, b, c, d)` with `a·x + b·y + c·z + d·w ≥ 0` inside: near `z ≥ 0`,
+/// far `z ≤ w`, and `|x| ≤ g.x·w`, `|y| ≤ g.y·w` (the view volume for `g = 1`, the guard band
+/// for larger `g`).
+fn planes(g: Vec2) -> [Vec4; 6] {
+    [
+        Vec4::new(0.0, 0.0, 1.0, 0.0),
+        Vec4::new(0.0, 0.0, -1.0, 1.0),
+        Vec4::new(1.0, 0.0, 0.0, g.x),
+        Vec4::new(-1.0, 0.0, 0.0, g.x),
+        Vec4::new(0.0, 1.0, 0.0, g.y),
+        Vec4::new(0.0, -1.0, 0.0, g.y),
+    ]
+}
+
+/// A corner of a polygon in clip space and where its vertex lives.
+#[derive(Clone, Copy, Debug, Default)]
+struct Corner {
+    vertex: Vertex,
+    slot: u32,
+}
+
+/// A convex polygon in clip space of at most [`MAX_POLYGON`] corners.
+#[derive(Clone, Copy, Debug)]
+struct Polygon {
+    corners: [Corner; MAX_POLYGON],
+    len: usize,
+}
+
+impl Polygon {
+    fn triangle(vertices: [Vertex; 3], indices: [u32; 3]) -> Polygon {
+        let mut corners = [Corner::default(); MAX_POLYGON];
+        for k in 0..3 {
+            corners[k] = Corner { vertex: vertices[k], slot: indices[k] };
+        }
+        Polygon { corners, len: 3 }
+    }
+
+    fn push(&mut self, corner: Corner) {
+        // Clipping a convex polygon by a plane adds at most one corner: never full here.
+        if self.len < MAX_POLYGON {
+            self.corners[self.len] = corner;
+            self.len += 1;
+        }
+    }
+}
+
+/// The clipper (クリッピング): Sutherland–Hodgman against each plane in turn, in homogeneous clip
+/// space, so nothing is ever divided by `w ≤ 0` (NUMERICS row 21). New corners interpolate every
+/// attribute linearly in clip space, from the inside corner towards the outside one — so an edge
+/// shared by two triangles is cut at bit-identical points in both, and no crack opens between
+/// them. Corners made here get the slot [`NEW_VERTEX`].
+fn clip(polygon: &Polygon, planes: &[Vec4; 6]) -> Polygon {
+    let mut current = *polygon;
+    for plane in planes {
+        let mut next = Polygon { corners: [Corner::default(); MAX_POLYGON], len: 0 };
+        for i in 0..current.len {
+            let a = current.corners[i];
+            let b = current.corners[(i + 1) % current.len];
+            let (da, db) = (plane.dot(a.vertex.p_clip), plane.dot(b.vertex.p_clip));
+            if da >= 0.0 {
+                next.push(a);
+            }
+            if (da >= 0.0) != (db >= 0.0) {
+                let (inside, outside, d_in, d_out) =
+                    if da >= 0.0 { (a, b, da, db) } else { (b, a, db, da) };
+                // d_in ≥ 0 > d_out: t in [0, 1).
+                let t = d_in / (d_in - d_out);
+                next.push(Corner {
+                    vertex: inside.vertex.lerp(&outside.vertex, t),
+                    slot: NEW_VERTEX,
+                });
+            }
+        }
+        current = next;
+        if current.len < 3 {
+            break;
+        }
+    }
+    current
+}
+
+/// The perspective divide (透視除算) and the viewport transform: window coordinates of a clip-space
+/// point, x right and y down from the image's top-left corner in pixels, snapped to
+/// `1/256` pixel, and the depth `z_ndc` (glDepthRange(0, 1), clamped to `[0, 1]` against
+/// rounding). `None` for `w ≤ 0` or a non-finite result — never a division by `w ≤ 0`.
+fn viewport<L: ?Sized>(frame: &Frame<'_, L>, p_clip: Vec4) -> Option<ScreenVertex> {
+    if p_clip.w <= 0.0 || p_clip.w.is_nan() {
+        return None;
+    }
+    let inv_w = 1.0 / p_clip.w;
+    let p_ndc = p_clip.xyz() * inv_w;
+    let p_screen = Vec3::new(
+        (p_ndc.x + 1.0) * 0.5 * frame.width as f32,
+        (1.0 - p_ndc.y) * 0.5 * frame.height as f32,
+        p_ndc.z.clamp(0.0, 1.0),
+    );
+    if !(p_screen.is_finite() && inv_w.is_finite()) {
+        return None;
+    }
+    Some(ScreenVertex { x: snap(p_screen.x), y: snap(p_screen.y), z: p_screen.z, inv_w, slot: 0 })
+}
+
+/// A window coordinate in fixed point, rounded to the nearest `1/256` pixel.
+///
+/// Rounds half away from zero, like `f32::round`, without a library call: `|v| ≤
+/// GUARD_BAND_PIXELS + MAX_SIZE` after clipping, so `v · 256 < 2²⁹` and the truncating cast and
+/// the fraction are exact.
+fn snap(v: f32) -> i32 {
+    let r = v * ONE as f32;
+    let i = r as i32;
+    let fraction = r - i as f32;
+    i + i32::from(fraction >= 0.5) - i32::from(fraction <= -0.5)
+}
+
+/// Which triangles to drop by their winding.
+#[derive(Clone, Copy, Debug)]
+enum Cull {
+    /// Draw both sides.
+    None,
+    /// Drop back faces (clockwise on screen; counter-clockwise for a mirrored object).
+    Back {
+        /// The object's model transform mirrors (det < 0).
+        mirrored: bool,
+    },
+}
+
+/// Why a triangle is not drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Dropped {
+    Degenerate,
+    Culled,
+    TooSmall,
+}
+
+/// Triangle setup: the signed area, back-face culling (裏面の除去), the corners reordered so the
+/// edge functions are positive inside (the returned `order` says how), and the bounding box of
+/// pixel centres within `width × height`.
+///
+/// Counter-clockwise in OpenGL's y-up window is the front. Here y runs down, which mirrors the
+/// winding: the front has a *negative* `(b − a) × (c − a)` (flipped again for a mirrored object,
+/// whose model transform turned its counter-clockwise faces clockwise).
+fn triangle_setup(
+    s: [ScreenVertex; 3],
+    cull: Cull,
+    width: u32,
+    height: u32,
+) -> Result<(Edges, [usize; 3]), Dropped> {
+    let [a, b, c] = s.map(|v| (i64::from(v.x), i64::from(v.y)));
+    let area2 = (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
+    if area2 == 0 {
+        return Err(Dropped::Degenerate);
+    }
+    if let Cull::Back { mirrored } = cull
+        && (area2 < 0) == mirrored
+    {
+        return Err(Dropped::Culled);
+    }
+    let order = if area2 > 0 { [0, 1, 2] } else { [0, 2, 1] };
+    let x = order.map(|i| s[i].x);
+    let y = order.map(|i| s[i].y);
+    // Pixel p's centre is p·256 + 128: the first centre at or after min, the last at or before max.
+    // ⌈(min − ½)/1⌉ and ⌊(max − ½)/1⌋ in pixels, as ⌈a/b⌉ = −⌊−a/b⌋.
+    let first = |min: i32| -(HALF - i64::from(min)).div_euclid(ONE);
+    let last = |max: i32| (i64::from(max) - HALF).div_euclid(ONE);
+    let x0 = first(*x.iter().min().unwrap_or(&0)).max(0);
+    let y0 = first(*y.iter().min().unwrap_or(&0)).max(0);
+    let x1 = last(*x.iter().max().unwrap_or(&0)).min(i64::from(width) - 1);
+    let y1 = last(*y.iter().max().unwrap_or(&0)).min(i64::from(height) - 1);
+    if x0 > x1 || y0 > y1 {
+        return Err(Dropped::TooSmall);
+    }
+    // All four lie in 0..MAX_SIZE here.
+    let bbox = [x0 as u32, y0 as u32, x1 as u32, y1 as u32];
+    Ok((Edges { x, y, area2: area2.abs(), bbox }, order))
+}
+
+/// The face normal (面の法線) in world space, from the face's world positions (before clipping),
+/// pointing out of the front face; zero for a degenerate face.
+fn world_face_normal(draw: &Draw<'_>, corners: [&Vertex; 3]) -> Vec3 {
+    let [a, b, c] = corners.map(|v| v.p_world);
+    face_normal(a, b, c).map_or(Vec3::ZERO, |n| if draw.prepared.mirrored { -n } else { n })
+}
+
+/// Flat shading (フラットシェーディング): the face is lit once, at its centroid in world space,
+/// with the face normal, and the colour clamped to `[0, 1]`. (OpenGL's GL_FLAT instead takes the
+/// colour lit at the face's *last* vertex, the provoking vertex; the centroid treats every corner
+/// alike and is what the lecture's "面の法線をもとに面の色を決定" asks.) With per-vertex colours,
+/// the colour material is the mean of the three.
+fn flat_color<L: Lighting + ?Sized>(
+    frame: &Frame<'_, L>,
+    draw: &Draw<'_>,
+    corners: [&Vertex; 3],
+    face_normal: Vec3,
+    stats: &mut Stats,
+) -> Rgb {
+    if !draw.lit {
+        return Rgb::ONE;
+    }
+    let centroid = (corners[0].p_world + corners[1].p_world + corners[2].p_world) / 3.0;
+    let color =
+        draw.has_colors().then(|| (corners[0].color + corners[1].color + corners[2].color) / 3.0);
+    let material = draw.material_at(color);
+    frame.count_lighting(&material, 1, stats);
+    saturate(frame.light(centroid, face_normal, &material))
+}
+
+/// Binning: the triangle goes into the list of every tile its bounding box touches.
+fn bin<L: ?Sized>(
+    frame: &Frame<'_, L>,
+    bins: &mut Vec<Vec<u32>>,
+    triangle: usize,
+    bbox: &[u32; 4],
+) {
+    let columns = frame.width.div_ceil(frame.tile);
+    if bins.is_empty() {
+        bins.resize_with((columns * frame.height.div_ceil(frame.tile)) as usize, Vec::new);
+    }
+    for ty in bbox[1] / frame.tile..=bbox[3] / frame.tile {
+        for tx in bbox[0] / frame.tile..=bbox[2] / frame.tile {
+            bins[(ty * columns + tx) as usize].push(triangle as u32);
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Per tile: rasterize, depth test, fragment
+
+/// The rows of the colour and depth buffers that one band of tiles owns.
+struct Target<'a> {
+    color: &'a mut [Rgb],
+    depth: &'a mut [f32],
+    /// Pixels per row (the image width).
+    stride: usize,
+    /// The image row of the band's first row.
+    y0: u32,
+}
+
+/// Draws one tile: every triangle binned to it, in submission order, into `target` (which holds
+/// the tile's rows, cleared to the clear colour and depth 1).
+fn draw_tile<L: Lighting + ?Sized>(
+    frame: &Frame<'_, L>,
+    draws: &[Draw<'_>],
+    buffers: &[Vec<Vertex>],
+    chunks: &[Chunk],
+    index: usize,
+    rect: Rect,
+    target: &mut Target<'_>,
+) -> Stats {
+    let mut stats = Stats::default();
+    for chunk in chunks {
+        let Some(bin) = chunk.bins.get(index) else { continue };
+        let draw = &draws[chunk.object];
+        let vertices = &buffers[chunk.object];
+        for &t in bin {
+            let triangle = &chunk.triangles[t as usize];
+            let corners = triangle.slot.map(|slot| {
+                if slot & NEW_VERTEX == 0 {
+                    vertices[slot as usize]
+                } else {
+                    chunk.new_vertices[(slot & !NEW_VERTEX) as usize]
+                }
+            });
+            let inv_area = 1.0 / triangle.edges.area2 as f32;
+            let z = Vec3::from(triangle.z);
+            rasterize(&triangle.edges, rect, |x, y, e| {
+                stats.fragments += 1;
+                let at = (y - target.y0) as usize * target.stride + x as usize;
+                // Screen-space (linear) barycentrics: window depth is linear on the screen.
+                let b = Vec3::new(e[0] as f32, e[1] as f32, e[2] as f32) * inv_area;
+                if !depth_test(b.dot(z).clamp(0.0, 1.0), &mut target.depth[at]) {
+                    stats.depth_rejects += 1;
+                    return;
+                }
+                stats.fragments_shaded += 1;
+                target.color[at] = fragment(frame, draw, triangle, &corners, b, &mut stats);
+            });
+        }
+    }
+    stats
+}
+
+/// The rasterizer (ラスタライズ): calls `emit(x, y, e)` for every pixel of `rect` whose centre
+/// `(x + ½, y + ½)` the triangle covers, row by row, with `e` the three edge functions there
+/// (`e[i]` is twice the area of the sub-triangle opposite corner `i`, in (1/256 pixel)²; they sum
+/// to `area2`).
+///
+/// The edge functions are exact integers on the 1/256-pixel grid (no rounding, so the answer
+/// does not depend on where a tile starts). The fill rule is the top-left rule in OpenGL's
+/// window coordinates, whose y runs *up*, as Mesa's llvmpipe applies it: a centre exactly on an
+/// edge belongs to the triangle only when, as the image is seen, the edge is a *left* edge (the
+/// triangle to its right) or a *bottom* edge (horizontal, the triangle above it). So a pixel on
+/// an edge shared by two triangles is drawn exactly once, none is missed (NUMERICS row 22), and
+/// the ties fall as in the course's OpenGL (`tests/opengl.rs` checks it pixel by pixel).
+fn rasterize(edges: &Edges, rect: Rect, mut emit: impl FnMut(u32, u32, [i64; 3])) {
+    let [bx0, by0, bx1, by1] = edges.bbox;
+    let (x0, y0) = (bx0.max(rect.x0), by0.max(rect.y0));
+    let (x1, y1) = (bx1.min(rect.x1.saturating_sub(1)), by1.min(rect.y1.saturating_sub(1)));
+    if x0 > x1 || y0 > y1 {
+        return;
+    }
+    let (x, y) = (edges.x.map(i64::from), edges.y.map(i64::from));
+    let (px, py) = (i64::from(x0) * ONE + HALF, i64::from(y0) * ONE + HALF);
+    let mut row = [0i64; 3];
+    let mut step_x = [0i64; 3];
+    let mut step_y = [0i64; 3];
+    let mut bias = [0i64; 3];
+    for i in 0..3 {
+        // Edge i runs from corner j to corner k and faces corner i.
+        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        let (dx, dy) = (x[k] - x[j], y[k] - y[j]);
+        // E(p) = (k − j) × (p − j), positive inside (the corners run clockwise as seen, y down):
+        // a left edge runs up (dy < 0), a bottom edge runs right to left (dy = 0, dx < 0).
+        // Their centres are kept (E ≥ 0); on other edges E must be > 0, i.e. E − 1 ≥ 0.
+        let left_or_bottom = dy < 0 || (dy == 0 && dx < 0);
+        bias[i] = if left_or_bottom { 0 } else { -1 };
+        row[i] = dx * (py - y[j]) - dy * (px - x[j]) + bias[i];
+        step_x[i] = -dy * ONE;
+        step_y[i] = dx * ONE;
+    }
+    for py in y0..=y1 {
+        let mut e = row;
+        for px in x0..=x1 {
+            // Inside: every biased edge function ≥ 0 (the sign bits of all three are clear).
+            if (e[0] | e[1] | e[2]) >= 0 {
+                emit(px, py, [e[0] - bias[0], e[1] - bias[1], e[2] - bias[2]]);
+            }
+            for i in 0..3 {
+                e[i] += step_x[i];
+            }
+        }
+        for i in 0..3 {
+            row[i] += step_y[i];
+        }
+    }
+}
+
+/// The depth test (隠面消去, Z バッファ法): GL_LESS against the buffer cleared to 1; on a pass the
+/// depth is written. It runs before the fragment stage (early depth test, as GPUs do when a
+/// fragment cannot be discarded): the same image, without shading hidden fragments.
+fn depth_test(z: f32, stored: &mut f32) -> bool {
+    if z < *stored {
+        *stored = z;
+        true
+    } else {
+        false
+    }
+}
+
+/// The fragment stage: perspective-correct barycentrics from the screen-space ones, then the
+/// colour by the shading mode — flat: the face's colour; Gouraud: the vertex colours
+/// interpolated; Phong: the normal (and position) interpolated, renormalised with
+/// [`interpolate_normal`] (falling back to the face normal, NUMERICS row 18) and lit here — and
+/// the texture applied after lighting as OpenGL does (GL_MODULATE: colour × texel; GL_REPLACE:
+/// the texel). The result is clamped to `[0, 1]`.
+fn fragment<L: Lighting + ?Sized>(
+    frame: &Frame<'_, L>,
+    draw: &Draw<'_>,
+    triangle: &Triangle,
+    corners: &[Vertex; 3],
+    screen_barycentric: Vec3,
+    stats: &mut Stats,
+) -> Rgb {
+    // Attributes are linear in the plane of the triangle, not on the screen: weight each corner by
+    // 1/w and renormalise.
+    let weighted = screen_barycentric * Vec3::from(triangle.inv_w);
+    let sum = weighted.x + weighted.y + weighted.z;
+    let b = if sum > 0.0 && sum.is_finite() { weighted / sum } else { screen_barycentric };
+    let interpolate3 =
+        |f: fn(&Vertex) -> Vec3| b.x * f(&corners[0]) + b.y * f(&corners[1]) + b.z * f(&corners[2]);
+    let lit = match frame.shading {
+        Shading::Flat => triangle.flat_color,
+        Shading::Gouraud => interpolate3(|v| v.color),
+        Shading::Phong if draw.lit => {
+            let n_world = interpolate_normal(corners.map(|v| v.n_world), b, triangle.face_normal);
+            let p_world = interpolate3(|v| v.p_world);
+            let color = draw.has_colors().then(|| interpolate3(|v| v.color));
+            let material = draw.material_at(color);
+            frame.count_lighting(&material, 1, stats);
+            saturate(frame.light(p_world, n_world, &material))
+        }
+        Shading::Phong => Rgb::ONE,
+    };
+    let color = match &draw.texture {
+        None => lit,
+        Some(t) => {
+            let uv = b.x * corners[0].uv + b.y * corners[1].uv + b.z * corners[2].uv;
+            let texel = t.texture.sample(uv, t.sampler).xyz();
+            stats.texture_samples += 1;
+            match t.env {
+                TexEnv::Modulate => lit * texel,
+                TexEnv::Replace => texel,
+            }
+        }
+    };
+    debug_assert!(color.is_finite(), "fragment colour {color}");
+    saturate(color)
+}
+
+// ---------------------------------------------------------------------------------------------
+// The rasterizer alone, for coverage tests
+
+/// How many times each pixel of a `width × height` raster is covered by `triangles`, given in
+/// window coordinates (pixels, x right, y down from the top-left corner; pixel `(x, y)` has its
+/// centre at `(x + ½, y + ½)`), drawn through the renderer's own snapping, triangle setup (both
+/// windings, no culling), tiling (`tile` × `tile` pixels) and rasterizer. Row by row from the top.
+pub(crate) fn coverage(width: u32, height: u32, tile: u32, triangles: &[[Vec2; 3]]) -> Vec<u32> {
+    let mut counts = vec![0u32; width as usize * height as usize];
+    let set_up: Vec<Edges> = triangles
+        .iter()
+        .filter_map(|t| {
+            let s =
+                t.map(|p| ScreenVertex { x: snap(p.x), y: snap(p.y), ..ScreenVertex::default() });
+            triangle_setup(s, Cull::None, width, height).ok().map(|(edges, _)| edges)
+        })
+        .collect();
+    let tile = tile.max(1);
+    for ty in (0..height).step_by(tile as usize) {
+        for tx in (0..width).step_by(tile as usize) {
+            let rect =
+                Rect { x0: tx, y0: ty, x1: (tx + tile).min(width), y1: (ty + tile).min(height) };
+            for edges in &set_up {
+                rasterize(edges, rect, |x, y, _| {
+                    counts[y as usize * width as usize + x as usize] += 1
+                });
+            }
+        }
+    }
+    counts
+}
