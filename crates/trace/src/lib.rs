@@ -1,0 +1,123 @@
+//! # cg-trace — the kit's Whitted ray tracer (レイトレーシング)
+//!
+//! Lecture 11's light model has two *global* terms that a rasterizer cannot compute:
+//!
+//! ```text
+//! I = Ia·ka + Σᵢ Iᵢ·[kd (N·L) + ks (R·V)ⁿ] + kr·Ir + kt·It
+//!                                             鏡面反射光   透過光 (大域照明)
+//! ```
+//!
+//! `Ir` is the colour seen in the mirror direction and `It` the colour seen through the surface
+//! along the refracted direction (スネルの法則). This crate traces rays to find both, after
+//! Whitted (1980), together with shadows, on the same scene and camera as the rasterizer:
+//!
+//! ```text
+//! generate_ray ──▶ intersect ──▶ shade ──▶ (colour)
+//!  one per pixel    closest hit    local model with shadow rays
+//!                   BVH + exact    + kr·trace(reflected) + kt·trace(refracted)   ◀── trace
+//! ```
+//!
+//! | stage | where | what |
+//! |---|---|---|
+//! | `generate_ray` | [`RayCamera::generate_ray`] | the primary ray through pixel centre `(x + ½, y + ½)`, row 0 at the top, unprojected by the rasterizer's `(P·V)⁻¹` and limited to the near…far range, so both images align pixel for pixel |
+//! | `intersect` | [`Tracer::intersect`] | exact spheres and planes ([`cg_core::scene::Analytic`]) by the inverse model matrix; triangles through a binned-SAH [`bvh::Bvh`] with the watertight test of Woop et al. 2013 ([`triangle`]) |
+//! | `shade` | [`Tracer::shade`] | [`cg_core::light::shade_with_visibility`] with one shadow ray per point light or area-light sample, the texture, and the global terms |
+//! | `trace` | [`Tracer::trace`] | `intersect` then `shade`, or the background (glClearColor) for a ray that escapes |
+//!
+//! ## How k_r, k_t and Fresnel combine
+//!
+//! At a hit with reflectances k_r, k_t (RGB) and the Fresnel reflectance F of the interface
+//! ([`Fresnel::Exact`] or [`Fresnel::Schlick`], from the cosine on the incident side and the two
+//! refractive indices; the outside is air, η = 1):
+//!
+//! ```text
+//! I = local + (k_r + k_t·F)·I_r + k_t·(1 − F)·I_t
+//! ```
+//!
+//! k_r is a mirror that reflects whatever the interface does; k_t is the share of light that
+//! meets the interface, which Fresnel splits into its reflected part F and its transmitted part
+//! `1 − F`. So the two weights always sum to `k_r + k_t` ([`Weights::split`]). Under total
+//! internal reflection (全反射, [`cg_core::optics::refract`] gives no direction) F = 1: all of
+//! k_t's share goes to the reflected ray and no transmitted ray is cast. A hit from inside an
+//! object (the ray travels along the outward normal) flips the normal and inverts η
+//! ([`cg_core::optics::Interface::at`]). With k_t = 0 no Fresnel is evaluated: a mirror
+//! reflects exactly k_r.
+//!
+//! ## Depth limit
+//!
+//! Primary rays have depth 0; a reflected or refracted ray one more than the ray it came from.
+//! A hit at depth [`Options::max_depth`] (default 5) is shaded by the local model only: its
+//! global terms are 0 (black), not the background, so a surface seen through too many
+//! reflections darkens rather than showing the sky. A ray whose accumulated weight falls below
+//! [`Options::min_weight`] is not cast either (adaptive depth control; see there).
+//!
+//! ## Shadows and the local model
+//!
+//! The local terms are [`cg_core::light::shade_with_visibility`]'s, with V from
+//! [`cg_core::light::LightModel::view_vector`] for primary rays (as the rasterizer) and towards
+//! the previous hit for reflected and refracted rays. Visibility is 0 or 1: one shadow ray towards
+//! each point light and each area-light sample, ending just short of the light
+//! ([`world::SHADOW_EPSILON`]); towards a directional light it runs to infinity. Every surface
+//! blocks light, glass included (Whitted's tracer scaled by k_t; this one does not). Surfaces
+//! are lit from the side the ray arrives on (two-sided lighting).
+//!
+//! ## Only what the scene needs
+//!
+//! - no reflected ray where k_r and k_t are 0, no refracted ray where k_t is 0, and no Fresnel
+//!   work without k_t ([`Stats::reflection_rays`], [`Stats::refraction_rays`] stay 0 for an
+//!   opaque scene, and [`Output::features`] says so);
+//! - no shadow ray for a light that cannot add diffuse or specular light at the point: behind the
+//!   surface (`N·L ≤ 0`), or with colours that meet a zero k_d and k_s;
+//! - no attenuation for directional lights (the core light model's rule);
+//! - no triangles for spheres and the ground: they are intersected exactly (unless
+//!   [`Options::analytic`] is off).
+//!
+//! ## Robustness
+//!
+//! Spawned rays start off their surface by the rounding-error bound of the hit point, scaled to
+//! its magnitude ([`ray`], after pbrt), so they never hit it again; the triangle test is
+//! watertight, so rays do not slip through shared edges; every stage boundary
+//! `debug_assert!`s finiteness, and invalid input is a [`TraceError`] with a message in Japanese
+//! and English. The image and the [`Stats`] are the same whatever the thread count.
+//!
+//! ```
+//! use cg_core::scene::Scene;
+//! # fn scene() -> Scene {
+//! #     cg_scene::parse("format = 1\n[[objects]]\nname = \"ball\"\nshape = { kind = \"sphere\", radius = 1.0 }\nmaterial = { kr = [0.5, 0.5, 0.5] }\n", std::path::Path::new("inline.toml")).unwrap()
+//! # }
+//! let scene: Scene = scene();
+//! let out = cg_trace::render(&scene, &cg_trace::Options { size: Some((32, 32)), ..Default::default() })
+//!     .unwrap();
+//! assert_eq!(out.image.width, 32);
+//! assert!(out.stats.reflection_rays > 0 && out.features.reflection);
+//! assert_eq!(out.stats.refraction_rays, 0);
+//! ```
+
+pub mod bvh;
+pub mod camera;
+mod error;
+mod options;
+pub mod ray;
+mod stats;
+mod tracer;
+pub mod triangle;
+pub mod world;
+
+pub use camera::RayCamera;
+pub use error::TraceError;
+pub use options::{Fresnel, MAX_DEPTH_LIMIT, MAX_SIZE, Options};
+pub use ray::Ray;
+pub use stats::Stats;
+pub use tracer::{GlobalRays, Output, Spawned, Tracer, Weights};
+pub use world::{Hit, Primitive};
+
+use cg_core::scene::Scene;
+
+/// Ray-traces `scene` with `options`: [`Tracer::new`] then [`Tracer::render`].
+///
+/// # Errors
+/// See [`Tracer::new`]: a zero or too large size, a bad option, an invalid camera or projection,
+/// an object that cannot be prepared, placed or textured, or worker threads that cannot start.
+pub fn render(scene: &Scene, options: &Options) -> Result<Output, TraceError> {
+    Ok(Tracer::new(scene, options)?.render())
+}
