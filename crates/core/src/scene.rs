@@ -208,8 +208,16 @@ impl Scene {
     /// The projection as a factor, `P(fovy°, aspect, near, far)` with wgpu's `[0, 1]` depth.
     #[must_use]
     pub fn projection_factor(&self) -> Factor {
+        self.projection_factor_for(self.width, self.height)
+    }
+
+    /// The projection for an image of `width × height` pixels instead of the scene's: the same
+    /// fovy, near and far with that image's aspect ratio (as the course's `reshape` callback
+    /// calls gluPerspective again when the window changes size). A zero height counts as 1.
+    #[must_use]
+    pub fn projection_factor_for(&self, width: u32, height: u32) -> Factor {
         let p = &self.projection;
-        Factor::perspective(p.fovy_deg, self.aspect(), p.near, p.far)
+        Factor::perspective(p.fovy_deg, width as f32 / height.max(1) as f32, p.near, p.far)
     }
 
     /// The projection matrix (`[0, 1]` depth).
@@ -218,6 +226,15 @@ impl Scene {
     /// An invalid projection (near ≤ 0, far ≤ near, fovy outside (0°, 180°), zero aspect).
     pub fn projection_matrix(&self) -> Result<Mat4, TransformError> {
         self.projection_factor().matrix()
+    }
+
+    /// [`Scene::projection_matrix`] for an image of `width × height` pixels; see
+    /// [`Scene::projection_factor_for`].
+    ///
+    /// # Errors
+    /// As [`Scene::projection_matrix`].
+    pub fn projection_matrix_for(&self, width: u32, height: u32) -> Result<Mat4, TransformError> {
+        self.projection_factor_for(width, height).matrix()
     }
 
     /// The view transform as named factors; see [`Camera::view_product`].
@@ -373,6 +390,9 @@ mod tests {
         assert!(mv.abs_diff_eq(expected, 1e-6), "{mv} vs {expected}");
         let p = s.projection_matrix().unwrap();
         assert_eq!(p, perspective(45.0, 640.0 / 480.0, 1.0, 500.0).unwrap());
+        assert_eq!(s.projection_matrix_for(640, 480).unwrap(), p, "the scene's own size");
+        let wide = perspective(45.0, 2.0, 1.0, 500.0).unwrap();
+        assert_eq!(s.projection_matrix_for(320, 160).unwrap(), wide, "reshape: aspect 2");
         assert!((s.aspect() - 4.0 / 3.0).abs() < 1e-7);
     }
 

@@ -29,7 +29,6 @@ use cg_core::image::Image;
 use cg_core::light::Material;
 use cg_core::math::try_normalize;
 use cg_core::normals::{face_normal, interpolate_normal};
-use cg_core::product::Factor;
 use cg_core::scene::{Prepared, Scene, Shading};
 use cg_core::texture::{Sampler, TexEnv, Texture};
 use cg_core::transform::transform_point;
@@ -276,14 +275,9 @@ impl<'s, L: Lighting + ?Sized> Frame<'s, L> {
             return Err(RenderError::TooLarge { width, height });
         }
         let view = scene.view_product().and_then(|v| v.matrix()).map_err(RenderError::Camera)?;
-        // The scene's projection; with another size, the same with that size's aspect ratio.
-        let p = &scene.projection;
-        let projection = match options.size {
-            None => scene.projection_matrix(),
-            Some(_) => Factor::perspective(p.fovy_deg, width as f32 / height as f32, p.near, p.far)
-                .matrix(),
-        }
-        .map_err(RenderError::Projection)?;
+        // The scene's projection, at this image's aspect ratio.
+        let projection =
+            scene.projection_matrix_for(width, height).map_err(RenderError::Projection)?;
         // Camera +Z in world space is the third row of the view rotation (rows of an orthonormal
         // matrix are the camera axes); a valid view is orthonormal, so this never falls back.
         let backward = try_normalize(Vec3::new(view.x_axis.z, view.y_axis.z, view.z_axis.z))

@@ -7,7 +7,6 @@ use cg_core::glam::Vec3;
 use cg_core::image::Image;
 use cg_core::light::{Light, Material, shade_with_visibility};
 use cg_core::optics::{Interface, reflect, refract};
-use cg_core::product::Factor;
 use cg_core::scene::Scene;
 use cg_core::texture::TexEnv;
 use cg_core::transform::TransformError;
@@ -120,13 +119,9 @@ impl<'s> Tracer<'s> {
             return Err(TraceError::MinWeight { value: options.min_weight });
         }
         let view = scene.view_product().and_then(|v| v.matrix()).map_err(TraceError::Camera)?;
-        // The scene's projection factor at this image's aspect (what `Scene::projection_matrix`
-        // gives at the scene's own size).
-        let p = &scene.projection;
-        let aspect = width as f32 / height as f32;
-        let projection = Factor::perspective(p.fovy_deg, aspect, p.near, p.far)
-            .matrix()
-            .map_err(TraceError::Projection)?;
+        // The scene's projection, at this image's aspect ratio (the rasterizer's matrix).
+        let projection =
+            scene.projection_matrix_for(width, height).map_err(TraceError::Projection)?;
         let camera = RayCamera::new(view, projection, width, height, scene.cull_back_faces).ok_or(
             TraceError::Camera(TransformError::Overflow {
                 what: "the inverse of the view-projection matrix",
