@@ -6,6 +6,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use cg_core::features::Features;
 use cg_core::image::Image;
 use cg_core::lang::Lang;
 use cg_core::scene::{Scene, Shading};
@@ -15,6 +16,17 @@ use cg_core::scene::{Scene, Shading};
 pub enum Renderer {
     /// The CPU rasterizer (flat, Gouraud, Phong; the local light model) / CPU ラスタライザ
     Raster,
+    /// The Whitted ray tracer (shadows, k_r·I_r, k_t·I_t) / レイトレーシング
+    Trace,
+}
+
+/// Fresnel reflectance on the command line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum FresnelArg {
+    /// The exact dielectric Fresnel equations / 厳密なフレネルの式
+    Exact,
+    /// Schlick's approximation / Schlick の近似
+    Schlick,
 }
 
 /// A shading mode on the command line.
@@ -61,6 +73,29 @@ pub struct Args {
     /// Threads (default: all cores) / スレッド数
     #[arg(long)]
     threads: Option<usize>,
+    /// Ray tracer: how many reflections/refractions deep rays go / レイの最大の深さ
+    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(0..=64))]
+    max_depth: u32,
+    /// Ray tracer: Fresnel reflectance / フレネル反射率の計算
+    #[arg(long, value_enum, default_value_t = FresnelArg::Exact)]
+    fresnel: FresnelArg,
+    /// Ray tracer: no shadow rays / 影を計算しない
+    #[arg(long)]
+    no_shadows: bool,
+}
+
+/// The ray tracer's settings from the command line.
+#[derive(Clone, Copy)]
+struct TraceSettings {
+    max_depth: u32,
+    fresnel: FresnelArg,
+    shadows: bool,
+}
+
+impl Default for TraceSettings {
+    fn default() -> TraceSettings {
+        TraceSettings { max_depth: 5, fresnel: FresnelArg::Exact, shadows: true }
+    }
 }
 
 /// One rendering, done.
@@ -76,7 +111,20 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let path = crate::kit_path(args.scene.as_deref(), crate::COURSE_SAMPLE);
     let scene = cg_scene::load(&path).map_err(|e| e.describe(lang))?;
     let size = size(&scene, args.width, args.height);
-    let r = draw(&scene, args.renderer, args.shading.map(Shading::from), size, args.threads, lang)?;
+    let settings = TraceSettings {
+        max_depth: args.max_depth,
+        fresnel: args.fresnel,
+        shadows: !args.no_shadows,
+    };
+    let r = draw(
+        &scene,
+        args.renderer,
+        args.shading.map(Shading::from),
+        size,
+        args.threads,
+        settings,
+        lang,
+    )?;
     let output = match &args.output {
         Some(p) => p.clone(),
         None => PathBuf::from("out").join(format!(
@@ -115,7 +163,15 @@ pub fn main_job(lang: Lang) -> Result<(), String> {
         scene.height
     );
     for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
-        let r = draw(&scene, Renderer::Raster, Some(shading), None, None, lang)?;
+        let r = draw(
+            &scene,
+            Renderer::Raster,
+            Some(shading),
+            None,
+            None,
+            TraceSettings::default(),
+            lang,
+        )?;
         let file = dir
             .join(format!("course-sample-{}.png", shading_name(shading, Lang::En).to_lowercase()));
         write(&file, &r.image, lang)?;
@@ -152,6 +208,7 @@ fn draw(
     shading: Option<Shading>,
     size: Option<(u32, u32)>,
     threads: Option<usize>,
+    trace: TraceSettings,
     lang: Lang,
 ) -> Result<Rendered, String> {
     let start = Instant::now();
@@ -161,21 +218,41 @@ fn draw(
                 cg_raster::Options { shading, size, threads, ..cg_raster::Options::default() };
             let out = cg_raster::render(scene, &options).map_err(|e| e.message(lang))?;
             let millis = start.elapsed().as_secs_f64() * 1e3;
-            let mut report = String::new();
-            for line in out.features.describe(lang).lines() {
-                let _ = writeln!(report, "  {line}");
-            }
-            let counts: Vec<String> = out
-                .stats
-                .list(lang)
-                .into_iter()
-                .filter(|(_, n)| *n > 0)
-                .map(|(name, n)| format!("{name} {n}"))
-                .collect();
-            let _ = writeln!(report, "  {}: {}", lang.pick("処理", "work"), counts.join(", "));
+            let report = report(&out.features, out.stats.list(lang), lang);
             Ok(Rendered { image: out.image, shading: out.shading, millis, report })
         }
+        Renderer::Trace => {
+            let options = cg_trace::Options {
+                size,
+                threads,
+                shading,
+                max_depth: trace.max_depth,
+                fresnel: match trace.fresnel {
+                    FresnelArg::Exact => cg_trace::Fresnel::Exact,
+                    FresnelArg::Schlick => cg_trace::Fresnel::Schlick,
+                },
+                shadows: trace.shadows,
+                ..cg_trace::Options::default()
+            };
+            let out = cg_trace::render(scene, &options).map_err(|e| e.message(lang))?;
+            let millis = start.elapsed().as_secs_f64() * 1e3;
+            let report = report(&out.features, out.stats.list(lang), lang);
+            let shading = shading.unwrap_or(scene.shading);
+            Ok(Rendered { image: out.image, shading, millis, report })
+        }
     }
+}
+
+/// What the renderer enabled and skipped (from the scene's features) and the non-zero counters.
+fn report<N: std::fmt::Display>(features: &Features, counts: Vec<(N, u64)>, lang: Lang) -> String {
+    let mut out = String::new();
+    for line in features.describe(lang).lines() {
+        let _ = writeln!(out, "  {line}");
+    }
+    let counts: Vec<String> =
+        counts.into_iter().filter(|(_, n)| *n > 0).map(|(name, n)| format!("{name} {n}")).collect();
+    let _ = writeln!(out, "  {}: {}", lang.pick("処理", "work"), counts.join(", "));
+    out
 }
 
 fn write(path: &Path, image: &Image, lang: Lang) -> Result<(), String> {
@@ -194,12 +271,14 @@ fn write(path: &Path, image: &Image, lang: Lang) -> Result<(), String> {
 fn renderer_name(r: Renderer) -> &'static str {
     match r {
         Renderer::Raster => "raster",
+        Renderer::Trace => "trace",
     }
 }
 
 fn renderer_label(r: Renderer, lang: Lang) -> &'static str {
     match r {
         Renderer::Raster => lang.pick("CPU ラスタライザ", "CPU rasterizer"),
+        Renderer::Trace => lang.pick("レイトレーサ（Whitted）", "Whitted ray tracer"),
     }
 }
 

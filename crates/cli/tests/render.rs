@@ -79,6 +79,49 @@ fn render_writes_exactly_what_the_rasterizer_draws() {
 }
 
 #[test]
+fn the_ray_tracer_draws_through_the_same_command() {
+    let dir = scratch("trace");
+    let out = dir.join("gm.png");
+    let o = cg_in(
+        &root(),
+        &[
+            "render",
+            "assets/scenes/glass-mirror.toml",
+            "--renderer",
+            "trace",
+            "--width",
+            "48",
+            "--max-depth",
+            "2",
+            "--fresnel",
+            "schlick",
+            "--no-shadows",
+            "-o",
+            out.to_str().unwrap(),
+            "--lang",
+            "en",
+        ],
+    );
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{text}\n{}", String::from_utf8_lossy(&o.stderr));
+    let scene = cg_scene::load(&root().join("assets/scenes/glass-mirror.toml")).unwrap();
+    let options = cg_trace::Options {
+        size: Some((48, 48)),
+        max_depth: 2,
+        fresnel: cg_trace::Fresnel::Schlick,
+        shadows: false,
+        ..cg_trace::Options::default()
+    };
+    let expected = cg_trace::render(&scene, &options).unwrap();
+    let (pixels, w, h) = png(&out);
+    assert_eq!((w, h), (48, 48));
+    assert_eq!(pixels, expected.image.to_rgba8());
+    assert!(text.contains("Whitted ray tracer") && text.contains("reflection rays"), "{text}");
+    assert!(!text.contains("shadow rays"), "--no-shadows casts none: {text}");
+    assert!(text.contains("deepest ray 2"), "--max-depth 2: {text}");
+}
+
+#[test]
 fn a_width_alone_keeps_the_scenes_aspect() {
     let dir = scratch("aspect");
     let out = dir.join("a.png");

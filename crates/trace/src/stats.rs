@@ -54,6 +54,26 @@ impl Stats {
         self.bvh_nodes_visited += other.bvh_nodes_visited;
     }
 
+    /// The counters with their names in `lang` (hits per depth as one entry per depth).
+    #[must_use]
+    pub fn list(&self, lang: cg_core::lang::Lang) -> Vec<(String, u64)> {
+        let t = |ja: &str, en: &str| lang.pick(ja, en).to_owned();
+        let mut list = vec![
+            (t("一次レイ", "primary rays"), self.primary_rays),
+            (t("影のレイ", "shadow rays"), self.shadow_rays),
+            (t("反射レイ", "reflection rays"), self.reflection_rays),
+            (t("屈折レイ", "refraction rays"), self.refraction_rays),
+            (t("全反射", "total internal reflections"), self.total_internal_reflections),
+            (t("省略したレイ（重みが小さい）", "pruned rays (small weight)"), self.pruned_rays),
+            (t("最も深いレイ", "deepest ray"), u64::from(self.deepest_ray)),
+            (t("BVH ノードの判定", "BVH nodes visited"), self.bvh_nodes_visited),
+        ];
+        for (depth, hits) in self.hits_per_depth.iter().enumerate() {
+            list.push((format!("{} {depth}", t("交差 深さ", "hits at depth")), *hits));
+        }
+        list
+    }
+
     /// All rays cast: primary, shadow, reflected and refracted.
     #[must_use]
     pub fn total_rays(&self) -> u64 {
