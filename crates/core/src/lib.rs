@@ -31,6 +31,7 @@
 
 pub mod camera;
 pub mod features;
+pub mod gl;
 pub mod image;
 pub mod lang;
 pub mod light;

@@ -346,14 +346,16 @@ impl Scene {
     }
 }
 
+/// Scenes for the core's own unit tests.
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests_support {
     use super::*;
     use crate::camera::OrbitCamera;
-    use crate::light::Material;
-    use crate::transform::{perspective, rotate_x_deg, translate};
+    use crate::light::{Attenuation, Light, LightKind, Material};
 
-    fn scene(camera: Camera) -> Scene {
+    /// A 640 × 480 scene with the given camera, OpenGL lighting, no lights, and one empty object
+    /// translated by (0, 1, 0).
+    pub(crate) fn scene(camera: Camera) -> Scene {
         Scene {
             name: "t".into(),
             width: 640,
@@ -379,6 +381,27 @@ mod tests {
             textures: vec![],
         }
     }
+
+    /// The course's camera and GL_LIGHT0 (ambient 0.1, diffuse 0.8, specular 1.0 at (10, 10, 10)).
+    pub(crate) fn course_like_scene() -> Scene {
+        let mut s = scene(Camera::Orbit(OrbitCamera::course_sample()));
+        s.lights.push(Light {
+            kind: LightKind::Point { position: Vec3::splat(10.0) },
+            ambient: Rgb::splat(0.1),
+            diffuse: Rgb::splat(0.8),
+            specular: Rgb::ONE,
+            attenuation: Attenuation::default(),
+        });
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::tests_support::scene;
+    use super::*;
+    use crate::camera::OrbitCamera;
+    use crate::transform::{perspective, rotate_x_deg, translate};
 
     #[test]
     fn the_course_camera_gives_the_sample_programs_matrices() {

@@ -1,0 +1,437 @@
+//! Checks that explain themselves: what was expected, what was found, where, the usual cause
+//! and a hint — and a runner that never crashes on a student's code.
+//!
+//! ```
+//! use cg_harness::check::{self, Failure};
+//! use cg_harness::text::t;
+//!
+//! let closed = check::run("a1.t2.closed", "a1.t2", t("閉じている", "closed"), || {
+//!     Err(Failure::new("every edge shared by two faces", "edge V1–V3 in F2 only")
+//!         .at("edge V1–V3")
+//!         .cause(t("面が足りない", "a face is missing"))
+//!         .hint(t("F2 の隣の面を確認", "look at F2's neighbours")))
+//! });
+//! assert!(!closed.passed());
+//! let stub = check::run("a1.t3.normals", "a1.t3", t("法線", "normals"), || {
+//!     todo!("a1.t3: write the face normals")
+//! });
+//! assert!(matches!(stub.outcome, check::Outcome::NotDone { .. }));
+//! ```
+
+use std::cell::{Cell, RefCell};
+use std::fmt::Write as _;
+use std::panic::{self, AssertUnwindSafe};
+use std::sync::{Mutex, Once};
+use std::time::{Duration, Instant};
+
+use cg_core::lang::Lang;
+use serde::Serialize;
+
+use crate::text::Text;
+
+/// Why a check failed, in the words a student needs.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Failure {
+    /// What the check expected (numbers, a list, a property).
+    pub expected: String,
+    /// What it found.
+    pub actual: String,
+    /// Where: a vertex `V3`, a face `F2`, an edge `V1–V3`, a time `t = 2.5 s`, a pixel.
+    #[serde(rename = "where")]
+    pub location: Option<String>,
+    /// What usually causes this.
+    pub cause: Text,
+    /// What to try.
+    pub hint: Text,
+}
+
+impl Failure {
+    /// A failure with what was expected and what was found.
+    #[must_use]
+    pub fn new(expected: impl Into<String>, actual: impl Into<String>) -> Failure {
+        Failure { expected: expected.into(), actual: actual.into(), ..Failure::default() }
+    }
+
+    /// Where the problem is.
+    #[must_use]
+    pub fn at(mut self, location: impl Into<String>) -> Failure {
+        self.location = Some(location.into());
+        self
+    }
+
+    /// The usual cause.
+    #[must_use]
+    pub fn cause(mut self, cause: Text) -> Failure {
+        self.cause = cause;
+        self
+    }
+
+    /// A hint.
+    #[must_use]
+    pub fn hint(mut self, hint: Text) -> Failure {
+        self.hint = hint;
+        self
+    }
+}
+
+/// How a check ended.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[serde(tag = "status", rename_all = "snake_case")]
+pub enum Outcome {
+    /// It passed.
+    Pass,
+    /// It ran and found a mistake.
+    Fail(Failure),
+    /// The code it calls is still a stub (`todo!()` / `unimplemented!()`): not done yet.
+    NotDone {
+        /// The stub's message, e.g. `a1.t3: write the face normals`.
+        message: String,
+    },
+    /// The student's code panicked (an index out of range, an `unwrap` on `None`, …).
+    Panicked {
+        /// The panic message.
+        message: String,
+        /// `file:line:column` of the panic, when known.
+        location: Option<String>,
+    },
+}
+
+/// One check's result.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct CheckResult {
+    /// The check's ID, `<task>.<name>`: `a1.t2.closed`.
+    pub id: String,
+    /// The task it belongs to: `a1.t2`.
+    pub task: String,
+    /// What it checks, in a few words.
+    pub title: Text,
+    /// How it ended.
+    #[serde(flatten)]
+    pub outcome: Outcome,
+}
+
+impl CheckResult {
+    /// Whether the check passed.
+    #[must_use]
+    pub fn passed(&self) -> bool {
+        self.outcome == Outcome::Pass
+    }
+}
+
+thread_local! {
+    /// Whether this thread is inside [`run`] (its panics are reported, not printed).
+    static IN_CHECK: Cell<bool> = const { Cell::new(false) };
+    /// The location of the last panic on this thread inside a check.
+    static PANIC_LOCATION: RefCell<Option<String>> = const { RefCell::new(None) };
+}
+
+/// The check now running, and since when (for the [`watchdog`]).
+static CURRENT: Mutex<Option<(String, Instant)>> = Mutex::new(None);
+
+fn install_hook() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        let previous = panic::take_hook();
+        panic::set_hook(Box::new(move |info| {
+            if IN_CHECK.with(Cell::get) {
+                let location =
+                    info.location().map(|l| format!("{}:{}:{}", l.file(), l.line(), l.column()));
+                PANIC_LOCATION.with(|p| *p.borrow_mut() = location);
+            } else {
+                previous(info);
+            }
+        }));
+    });
+}
+
+/// Runs one check. `body` returns `Ok(())` or the [`Failure`] it found; a `todo!()` or
+/// `unimplemented!()` inside it (a stub not written yet) becomes [`Outcome::NotDone`], any other
+/// panic [`Outcome::Panicked`] with its message and location. Nothing is printed for those
+/// panics; other threads' panics print as usual.
+pub fn run(
+    id: &str,
+    task: &str,
+    title: Text,
+    body: impl FnOnce() -> Result<(), Failure>,
+) -> CheckResult {
+    install_hook();
+    if let Ok(mut current) = CURRENT.lock() {
+        *current = Some((id.to_owned(), Instant::now()));
+    }
+    let was_in_check = IN_CHECK.with(|c| c.replace(true));
+    let result = panic::catch_unwind(AssertUnwindSafe(body));
+    IN_CHECK.with(|c| c.set(was_in_check));
+    if let Ok(mut current) = CURRENT.lock() {
+        *current = None;
+    }
+    let outcome = match result {
+        Ok(Ok(())) => Outcome::Pass,
+        Ok(Err(failure)) => Outcome::Fail(failure),
+        Err(payload) => {
+            let message = payload
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| payload.downcast_ref::<&str>().map(|s| (*s).to_owned()))
+                .unwrap_or_else(|| "(no message)".to_owned());
+            let location = PANIC_LOCATION.with(|p| p.borrow_mut().take());
+            if let Some(rest) = message.strip_prefix("not yet implemented") {
+                Outcome::NotDone { message: rest.trim_start_matches(':').trim().to_owned() }
+            } else if let Some(rest) = message.strip_prefix("not implemented") {
+                Outcome::NotDone { message: rest.trim_start_matches(':').trim().to_owned() }
+            } else {
+                Outcome::Panicked { message, location }
+            }
+        }
+    };
+    CheckResult { id: id.to_owned(), task: task.to_owned(), title, outcome }
+}
+
+/// Starts a thread that ends the process when one check runs longer than `limit` (a student's
+/// loop that never ends), after printing which check it was in `lang`. For the command line;
+/// tests do not use it.
+pub fn watchdog(limit: Duration, lang: Lang) {
+    std::thread::spawn(move || {
+        loop {
+            std::thread::sleep(Duration::from_millis(100));
+            let over = CURRENT.lock().ok().and_then(|c| {
+                c.as_ref().filter(|(_, since)| since.elapsed() > limit).map(|(id, _)| id.clone())
+            });
+            if let Some(id) = over {
+                eprintln!(
+                    "{}",
+                    match lang {
+                        Lang::Ja => format!(
+                            "チェック {id} が {} 秒を超えても終わりません。無限ループになっていないか確認してください。",
+                            limit.as_secs()
+                        ),
+                        Lang::En => format!(
+                            "check {id} has run for more than {} s: does your code loop forever?",
+                            limit.as_secs()
+                        ),
+                    }
+                );
+                std::process::exit(3);
+            }
+        }
+    });
+}
+
+/// The results of one assignment's checks for one student.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Report {
+    /// `a1`, `a2`, `a3`, `a4` or `s`.
+    pub assignment: String,
+    /// The student number the variant was drawn for, when there is one.
+    pub student: Option<String>,
+    /// Every check, in order.
+    pub checks: Vec<CheckResult>,
+}
+
+impl Report {
+    /// How many checks passed.
+    #[must_use]
+    pub fn passed(&self) -> usize {
+        self.checks.iter().filter(|c| c.passed()).count()
+    }
+
+    /// How many checks there are.
+    #[must_use]
+    pub fn total(&self) -> usize {
+        self.checks.len()
+    }
+
+    /// Whether every check passed.
+    #[must_use]
+    pub fn all_passed(&self) -> bool {
+        self.passed() == self.total()
+    }
+
+    /// The tasks with at least one check not done yet, in order.
+    #[must_use]
+    pub fn tasks_not_done(&self) -> Vec<&str> {
+        self.tasks_where(|o| matches!(o, Outcome::NotDone { .. }))
+    }
+
+    /// The tasks with at least one failing or panicking check, in order.
+    #[must_use]
+    pub fn tasks_failing(&self) -> Vec<&str> {
+        self.tasks_where(|o| matches!(o, Outcome::Fail(_) | Outcome::Panicked { .. }))
+    }
+
+    fn tasks_where(&self, pick: impl Fn(&Outcome) -> bool) -> Vec<&str> {
+        let mut tasks: Vec<&str> = Vec::new();
+        for c in self.checks.iter().filter(|c| pick(&c.outcome)) {
+            if !tasks.contains(&c.task.as_str()) {
+                tasks.push(&c.task);
+            }
+        }
+        tasks
+    }
+
+    /// A line per check (✓ pass, ✗ fail, … not done yet, ! panicked) with, for each problem, what
+    /// was expected and found, where, the usual cause and a hint; then a progress summary.
+    #[must_use]
+    pub fn render(&self, lang: Lang) -> String {
+        let t = |ja: &'static str, en: &'static str| lang.pick(ja, en);
+        let mut out = String::new();
+        let width = self.checks.iter().map(|c| c.id.chars().count()).max().unwrap_or(0);
+        for c in &self.checks {
+            let (mark, detail) = match &c.outcome {
+                Outcome::Pass => ("✓", None),
+                Outcome::Fail(f) => ("✗", Some(f)),
+                Outcome::NotDone { .. } => ("…", None),
+                Outcome::Panicked { .. } => ("!", None),
+            };
+            let _ = writeln!(out, "  {mark} {:<width$}  {}", c.id, c.title.get(lang));
+            match &c.outcome {
+                Outcome::NotDone { message } => {
+                    let _ = writeln!(out, "      {}: {message}", t("まだです", "not done yet"));
+                }
+                Outcome::Panicked { message, location } => {
+                    let _ = writeln!(
+                        out,
+                        "      {}: {message}",
+                        t("プログラムが異常終了しました（panic）", "your code panicked")
+                    );
+                    if let Some(l) = location {
+                        let _ = writeln!(out, "      {}: {l}", t("場所", "at"));
+                    }
+                }
+                _ => {}
+            }
+            if let Some(f) = detail {
+                let _ = writeln!(out, "      {}: {}", t("期待する値", "expected"), f.expected);
+                let _ = writeln!(out, "      {}: {}", t("実際の値  ", "actual  "), f.actual);
+                if let Some(l) = &f.location {
+                    let _ = writeln!(out, "      {}: {l}", t("場所      ", "where   "));
+                }
+                if !f.cause.is_empty() {
+                    let _ = writeln!(
+                        out,
+                        "      {}: {}",
+                        t("よくある原因", "usual cause"),
+                        f.cause.get(lang)
+                    );
+                }
+                if !f.hint.is_empty() {
+                    let _ = writeln!(out, "      {}: {}", t("ヒント", "hint"), f.hint.get(lang));
+                }
+            }
+        }
+        let _ = write!(
+            out,
+            "{}: {}/{} {}",
+            t("進み具合", "progress"),
+            self.passed(),
+            self.total(),
+            t("個のチェックに合格", "checks pass")
+        );
+        let not_done = self.tasks_not_done();
+        if !not_done.is_empty() {
+            let _ = write!(out, "; {}: {}", t("未完成の課題", "not done yet"), not_done.join(", "));
+        }
+        let failing = self.tasks_failing();
+        if !failing.is_empty() {
+            let _ =
+                write!(out, "; {}: {}", t("直すところのある課題", "to fix"), failing.join(", "));
+        }
+        out.push('\n');
+        out
+    }
+
+    /// The report as JSON: `{assignment, student, passed, total, checks: [{id, task, title,
+    /// status, …}]}`.
+    #[must_use]
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::json!({
+            "assignment": self.assignment,
+            "student": self.student,
+            "passed": self.passed(),
+            "total": self.total(),
+            "checks": self.checks,
+        })
+    }
+}
+
+#[cfg(test)]
+// The stubs students get are `todo!()`s: the runner must understand them.
+#[allow(clippy::todo)]
+mod tests {
+    use super::*;
+    use crate::text::t;
+
+    #[test]
+    fn outcomes_are_told_apart() {
+        let pass = run("x.t1.a", "x.t1", t("a", "a"), || Ok(()));
+        assert!(pass.passed());
+        let fail = run("x.t1.b", "x.t1", t("b", "b"), || Err(Failure::new("1", "2").at("V3")));
+        assert!(matches!(&fail.outcome, Outcome::Fail(f) if f.location.as_deref() == Some("V3")));
+        let stub = run("x.t2.c", "x.t2", t("c", "c"), || todo!("x.t2: write it"));
+        assert_eq!(stub.outcome, Outcome::NotDone { message: "x.t2: write it".into() });
+        let bare = run("x.t2.d", "x.t2", t("d", "d"), || unimplemented!());
+        assert!(matches!(bare.outcome, Outcome::NotDone { .. }), "{bare:?}");
+        let oops = run("x.t3.e", "x.t3", t("e", "e"), || {
+            let v: Vec<u32> = Vec::new();
+            let i = v.len() + 2;
+            Err(Failure::new(v[i].to_string(), ""))
+        });
+        match &oops.outcome {
+            Outcome::Panicked { message, location } => {
+                assert!(message.contains("index out of bounds"), "{message}");
+                assert!(
+                    location.as_deref().is_some_and(|l| l.contains("check.rs")),
+                    "{location:?}"
+                );
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn the_report_explains_and_summarises() {
+        let report = Report {
+            assignment: "a1".into(),
+            student: Some("12345678".into()),
+            checks: vec![
+                run("a1.t1.count", "a1.t1", t("頂点の数", "vertex count"), || Ok(())),
+                run("a1.t2.closed", "a1.t2", t("閉じている", "closed"), || {
+                    Err(Failure::new("every edge in two faces", "V1–V3 in F2 only")
+                        .at("edge V1–V3")
+                        .cause(t("面が足りない", "a missing face"))
+                        .hint(t("F2 の隣を見る", "look next to F2")))
+                }),
+                run("a1.t3.normals", "a1.t3", t("法線", "normals"), || todo!("a1.t3: normals")),
+            ],
+        };
+        assert_eq!((report.passed(), report.total()), (1, 3));
+        let en = report.render(Lang::En);
+        for needle in [
+            "✓ a1.t1.count",
+            "✗ a1.t2.closed",
+            "expected: every edge",
+            "actual  : V1–V3",
+            "where   : edge V1–V3",
+            "usual cause: a missing face",
+            "hint: look next to F2",
+            "… a1.t3.normals",
+            "not done yet: a1.t3: normals",
+            "progress: 1/3 checks pass; not done yet: a1.t3; to fix: a1.t2",
+        ] {
+            assert!(en.contains(needle), "{needle:?} missing from:\n{en}");
+        }
+        let ja = report.render(Lang::Ja);
+        assert!(
+            ja.contains("期待する値")
+                && ja.contains("よくある原因: 面が足りない")
+                && ja.contains("進み具合: 1/3"),
+            "{ja}"
+        );
+        let json = report.to_json();
+        assert_eq!(json["passed"], 1);
+        assert_eq!(json["checks"][1]["status"], "fail");
+        assert_eq!(json["checks"][1]["where"], "edge V1–V3");
+        assert_eq!(json["checks"][1]["cause"]["ja"], "面が足りない");
+        assert_eq!(json["checks"][2]["status"], "not_done");
+        assert_eq!(json["checks"][2]["message"], "a1.t3: normals");
+    }
+}
