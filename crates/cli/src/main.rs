@@ -9,6 +9,7 @@ use std::process::ExitCode;
 use cg_core::lang::Lang;
 use clap::{Parser, Subcommand};
 
+mod assignments;
 mod inspect;
 mod render;
 
@@ -40,18 +41,32 @@ enum Command {
     Inspect(inspect::Args),
     /// Draw a scene to a PNG file and say what it cost / シーンを PNG に描画
     Render(render::Args),
+    /// Print your assignments, from your student number / 学生番号から自分の課題を表示
+    Assignment(assignments::AssignmentArgs),
+    /// Check your exercises against your assignment / 自分の課題をチェック
+    Check(assignments::CheckArgs),
+    /// Draw your result (and the reference) to PNG files / 自分の結果（と参考解答）を描画
+    View(assignments::ViewArgs),
+    /// Regenerate exercises/ from solutions/ (kit maintainers) / solutions/ から exercises/ を生成（管理者用）
+    SyncStubs,
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let lang = cli.lang.unwrap_or_else(Lang::from_env);
     let result = match cli.command {
-        Some(Command::Inspect(args)) => inspect::run(&args, lang),
-        Some(Command::Render(args)) => render::run(&args, lang),
-        None => render::main_job(lang),
+        Some(Command::Inspect(args)) => inspect::run(&args, lang).map(|()| true),
+        Some(Command::Render(args)) => render::run(&args, lang).map(|()| true),
+        Some(Command::Assignment(args)) => assignments::assignment(&args, lang).map(|()| true),
+        Some(Command::Check(args)) => assignments::check(&args, lang),
+        Some(Command::View(args)) => assignments::view(&args, lang).map(|()| true),
+        Some(Command::SyncStubs) => assignments::sync_stubs(lang).map(|()| true),
+        None => render::main_job(lang).map(|()| true),
     };
     match result {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(true) => ExitCode::SUCCESS,
+        // `cg check` ran, and not every check passed.
+        Ok(false) => ExitCode::FAILURE,
         Err(message) => {
             eprintln!("{}: {message}", lang.pick("エラー", "error"));
             ExitCode::FAILURE

@@ -186,6 +186,23 @@ pub fn run(
     CheckResult { id: id.to_owned(), task: task.to_owned(), title, outcome }
 }
 
+/// Calls `f` (a student's function, outside any check) and turns a panic into the [`Outcome`] a
+/// check would report: [`Outcome::NotDone`] for a stub, [`Outcome::Panicked`] otherwise.
+///
+/// # Errors
+/// The outcome when `f` panicked.
+pub fn guarded<T>(f: impl FnOnce() -> T) -> Result<T, Outcome> {
+    let mut value = None;
+    let result = run("guarded", "guarded", crate::text::Text::default(), || {
+        value = Some(f());
+        Ok(())
+    });
+    match (result.outcome, value) {
+        (Outcome::Pass, Some(v)) => Ok(v),
+        (outcome, _) => Err(outcome),
+    }
+}
+
 /// Starts a thread that ends the process when one check runs longer than `limit` (a student's
 /// loop that never ends), after printing which check it was in `lang`. For the command line;
 /// tests do not use it.
@@ -385,6 +402,16 @@ mod tests {
             }
             other => panic!("{other:?}"),
         }
+    }
+
+    #[test]
+    fn guarded_calls_return_values_or_outcomes() {
+        assert_eq!(guarded(|| 41 + 1), Ok(42));
+        assert!(matches!(
+            guarded(|| -> u32 { todo!("x.t1: later") }),
+            Err(Outcome::NotDone { .. })
+        ));
+        assert!(matches!(guarded(|| -> u32 { panic!("boom") }), Err(Outcome::Panicked { .. })));
     }
 
     #[test]

@@ -7,6 +7,8 @@
 //!   or JSON.
 //! - [`variant`]: the student number, the table version, and the frozen random stream each
 //!   assignment draws its variant from — a published table never changes under a student.
+//! - [`course`]: the course's sample scene, compiled into the kit (the base every assignment's
+//!   view draws on).
 //! - [`stubs`]: the student's stubs generated from the reference solutions' `BEGIN SOLUTION` /
 //!   `END SOLUTION` and `BEGIN STUB` / `END STUB` markers, so the two never drift apart.
 //!
@@ -14,6 +16,7 @@
 //! assignment text, the report section and the grade file.
 
 pub mod check;
+pub mod course;
 pub mod stubs;
 pub mod text;
 pub mod variant;

@@ -125,8 +125,7 @@ pub fn generate(solutions: &Path) -> Result<Vec<(PathBuf, String)>, StubError> {
     let manifest = solutions.join("Cargo.toml");
     let text = std::fs::read_to_string(&manifest).map_err(|e| io(&manifest, e))?;
     let text = stub_from_solution(&text, "Cargo.toml", "#")?
-        .replace("name = \"cg-solutions\"", "name = \"cg-exercises\"")
-        .replace("The kit's reference solutions", "The student's exercises");
+        .replace("name = \"cg-solutions\"", "name = \"cg-exercises\"");
     let mut files = vec![(PathBuf::from("Cargo.toml"), text)];
     let mut stack = vec![solutions.join("src")];
     while let Some(dir) = stack.pop() {

@@ -1,0 +1,268 @@
+//! # cg-assign — one student's assignments
+//!
+//! Like the course's `opengl_report2019.exe`: from a student number, every assignment's variant
+//! (which polyhedron, which camera operations, which animations, which texture region), drawn
+//! from the frozen stream of [`cg_harness::variant`] for a [`TableVersion`], printed in Japanese
+//! or English, or as JSON for tools.
+//!
+//! The student records their number once, in `exercises/student.toml`:
+//!
+//! ```toml
+//! student = "12345678"
+//! table = 1
+//! ```
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use cg_core::lang::Lang;
+use cg_harness::{StudentNumber, TableVersion, VariantRng};
+use serde::Serialize;
+
+/// Every assignment's variant for one student.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Assignment {
+    /// The student number.
+    pub student: StudentNumber,
+    /// The table the variants come from.
+    pub table: TableVersion,
+    /// 1. ポリゴンモデルの描画
+    pub a1: cg_a1::Spec,
+    /// 2. 視点操作インターフェースの拡張
+    pub a2: cg_a2::Spec,
+    /// 3. アニメーション
+    pub a3: cg_a3::Spec,
+    /// 4. テクスチャマッピング
+    pub a4: cg_a4::Spec,
+    /// 第11回 シェーディング
+    pub s: cg_shading::Spec,
+}
+
+impl Assignment {
+    /// `student`'s assignments in table `table`. Each assignment draws from its own stream, so
+    /// adding a draw to one never changes another.
+    #[must_use]
+    pub fn for_student(student: &StudentNumber, table: TableVersion) -> Assignment {
+        let rng = |id: &str| VariantRng::new(student, table, id);
+        Assignment {
+            student: student.clone(),
+            table,
+            a1: cg_a1::variant(&mut rng(cg_a1::ID)),
+            a2: cg_a2::variant(&mut rng(cg_a2::ID)),
+            a3: cg_a3::variant(&mut rng(cg_a3::ID)),
+            a4: cg_a4::variant(&mut rng(cg_a4::ID)),
+            s: cg_shading::variant(&mut rng(cg_shading::ID)),
+        }
+    }
+
+    /// The whole assignment text in `lang`, or one assignment's (`only` = `a1`, …).
+    #[must_use]
+    pub fn describe(&self, lang: Lang, only: Option<&str>) -> String {
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "{}: {}  ({} {})",
+            lang.pick("学生番号", "Student ID"),
+            self.student,
+            lang.pick("課題表", "table"),
+            self.table
+        );
+        let _ = writeln!(
+            out,
+            "{}\n",
+            lang.pick(
+                "コンピューターグラフィックス レポート課題",
+                "Computer graphics: report assignments"
+            )
+        );
+        let parts = [
+            (cg_a1::ID, self.a1.describe(lang)),
+            (cg_a2::ID, self.a2.describe(lang)),
+            (cg_a3::ID, self.a3.describe(lang)),
+            (cg_a4::ID, self.a4.describe(lang)),
+            (cg_shading::ID, self.s.describe(lang)),
+        ];
+        for (id, text) in parts {
+            if only.is_none_or(|o| o == id) {
+                let _ = writeln!(out, "{}\n", text.trim_end());
+            }
+        }
+        out
+    }
+
+    /// The assignments as JSON (`student`, `table`, and one object per assignment).
+    #[must_use]
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::to_value(self).unwrap_or(serde_json::Value::Null)
+    }
+}
+
+/// What `exercises/student.toml` records.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct StudentFile {
+    /// The student number.
+    pub student: StudentNumber,
+    /// The table the student works from.
+    pub table: TableVersion,
+}
+
+/// Why `exercises/student.toml` could not be read.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{}", self.message(Lang::En))]
+pub enum StudentFileError {
+    /// There is no such file yet.
+    Missing {
+        /// Where it was looked for.
+        path: String,
+    },
+    /// It is not valid, or lacks `student`.
+    Invalid {
+        /// The file.
+        path: String,
+        /// What is wrong (the TOML parser's message, with the line).
+        reason: String,
+    },
+    /// `student` is not an 8-digit number.
+    Number {
+        /// The file.
+        path: String,
+        /// Why.
+        error: cg_harness::variant::StudentNumberError,
+    },
+    /// `table` names no table.
+    Table {
+        /// The file.
+        path: String,
+        /// What was written.
+        given: String,
+    },
+}
+
+impl StudentFileError {
+    /// The message in `lang`, with what to do.
+    #[must_use]
+    pub fn message(&self, lang: Lang) -> String {
+        match (self, lang) {
+            (StudentFileError::Missing { path }, Lang::Ja) => format!(
+                "{path} がありません。最初に一度だけ学生番号を記録してください: cargo run --release -- assignment --student 12345678 --save（12345678 を自分の学生番号に）"
+            ),
+            (StudentFileError::Missing { path }, Lang::En) => format!(
+                "{path} does not exist. Record your student number once: cargo run --release -- assignment --student 12345678 --save (with your own number)"
+            ),
+            (StudentFileError::Invalid { path, reason }, Lang::Ja) => {
+                format!("{path} を読めません: {reason}（例: student = \"12345678\"）")
+            }
+            (StudentFileError::Invalid { path, reason }, Lang::En) => {
+                format!("{path} cannot be read: {reason} (example: student = \"12345678\")")
+            }
+            (StudentFileError::Number { path, error }, _) => {
+                format!("{path}: {}", error.message(lang))
+            }
+            (StudentFileError::Table { path, given }, Lang::Ja) => {
+                format!("{path}: table = {given} という課題表はありません（1 を使ってください）")
+            }
+            (StudentFileError::Table { path, given }, Lang::En) => {
+                format!("{path}: there is no table {given} (use 1)")
+            }
+        }
+    }
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawStudentFile {
+    student: toml::Value,
+    table: Option<toml::Value>,
+}
+
+/// Reads `exercises/student.toml` (or another path).
+///
+/// # Errors
+/// A missing or malformed file, a bad number, an unknown table — each with what to do.
+pub fn read_student_file(path: &Path) -> Result<StudentFile, StudentFileError> {
+    let shown = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .map_err(|_| StudentFileError::Missing { path: shown.clone() })?;
+    let raw: RawStudentFile = toml::from_str(&text)
+        .map_err(|e| StudentFileError::Invalid { path: shown.clone(), reason: e.to_string() })?;
+    let digits = match &raw.student {
+        toml::Value::String(s) => s.clone(),
+        // A number written without quotes loses leading zeros, so it is refused with the reason.
+        other => {
+            return Err(StudentFileError::Invalid {
+                path: shown,
+                reason: format!("student = {other} must be in quotes: student = \"{other}\""),
+            });
+        }
+    };
+    let student =
+        digits.parse().map_err(|error| StudentFileError::Number { path: shown.clone(), error })?;
+    let table = match raw.table {
+        None => TableVersion::LATEST,
+        Some(v) => {
+            let given = v.to_string();
+            given
+                .trim_matches('"')
+                .parse()
+                .map_err(|_| StudentFileError::Table { path: shown, given })?
+        }
+    };
+    Ok(StudentFile { student, table })
+}
+
+/// Writes `exercises/student.toml` (or another path).
+///
+/// # Errors
+/// The file cannot be written; the message says which file and why.
+pub fn write_student_file(path: &Path, record: &StudentFile) -> Result<(), String> {
+    let text = format!(
+        "# Your student number, recorded once (cargo run --release -- assignment --student N --save).\n\
+         # 学生番号（最初に一度だけ記録します）。\n\
+         student = \"{}\"\ntable = {}\n",
+        record.student, record.table
+    );
+    std::fs::write(path, text).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn dir(name: &str) -> std::path::PathBuf {
+        let d = std::env::temp_dir().join(format!("cg-assign-{name}-{}", std::process::id()));
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    }
+
+    #[test]
+    fn the_student_file_round_trips_and_explains_mistakes() {
+        let d = dir("file");
+        let path = d.join("student.toml");
+        let e = read_student_file(&path).unwrap_err();
+        assert!(e.message(Lang::Ja).contains("--save"), "{e}");
+        let record = StudentFile { student: "01234567".parse().unwrap(), table: TableVersion::V1 };
+        write_student_file(&path, &record).unwrap();
+        assert_eq!(read_student_file(&path), Ok(record));
+        for (text, needle) in [
+            ("student = 1234567\n", "in quotes"),
+            ("student = \"1234567\"\n", "8 digits"),
+            ("studnet = \"12345678\"\n", "unknown field"),
+            ("student = \"12345678\"\ntable = 9\n", "no table 9"),
+        ] {
+            std::fs::write(&path, text).unwrap();
+            let e = read_student_file(&path).unwrap_err();
+            assert!(e.message(Lang::En).contains(needle), "{text:?}: {}", e.message(Lang::En));
+        }
+        std::fs::remove_dir_all(&d).ok();
+    }
+
+    #[test]
+    fn assignments_are_deterministic_and_differ_between_students() {
+        let a: StudentNumber = "12345678".parse().unwrap();
+        let one = Assignment::for_student(&a, TableVersion::V1);
+        assert_eq!(one, Assignment::for_student(&a, TableVersion::V1));
+        let text = one.describe(Lang::Ja, None);
+        assert!(text.starts_with("学生番号: 12345678"), "{text}");
+        assert_eq!(one.to_json()["student"], "12345678");
+    }
+}

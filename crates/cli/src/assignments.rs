@@ -1,0 +1,269 @@
+//! `cg assignment`, `cg check`, `cg view` and `cg sync-stubs`: a student's own assignment, their
+//! checks, their result next to the reference, and (for the kit's maintainers) the stubs
+//! regenerated from the solutions.
+
+use std::path::PathBuf;
+use std::time::Duration;
+
+use cg_assign::{Assignment, StudentFile, read_student_file, write_student_file};
+use cg_core::lang::Lang;
+use cg_core::scene::Scene;
+use cg_harness::check::{Outcome, Report, guarded};
+use cg_harness::{StudentNumber, TableVersion, Text};
+
+/// One of the assignments.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Which {
+    /// 1. ポリゴンモデルの描画 / polygon model
+    A1,
+    /// 2. 視点操作インターフェースの拡張 / camera interface
+    A2,
+    /// 3. アニメーション / animation
+    A3,
+    /// 4. テクスチャマッピング / texture mapping
+    A4,
+    /// 第11回 シェーディング / shading
+    S,
+}
+
+impl Which {
+    const ALL: [Which; 5] = [Which::A1, Which::A2, Which::A3, Which::A4, Which::S];
+
+    fn id(self) -> &'static str {
+        match self {
+            Which::A1 => cg_a1::ID,
+            Which::A2 => cg_a2::ID,
+            Which::A3 => cg_a3::ID,
+            Which::A4 => cg_a4::ID,
+            Which::S => cg_shading::ID,
+        }
+    }
+}
+
+/// Where the student's files are: `exercises/` of the kit being run.
+fn exercises_dir() -> PathBuf {
+    crate::kit_path(None, "exercises")
+}
+
+/// The student: `--student` when given, else `exercises/student.toml`.
+fn student(
+    given: Option<&str>,
+    table: Option<TableVersion>,
+    lang: Lang,
+) -> Result<StudentFile, String> {
+    match given {
+        Some(n) => {
+            let student: StudentNumber =
+                n.parse().map_err(|e: cg_harness::variant::StudentNumberError| e.message(lang))?;
+            Ok(StudentFile { student, table: table.unwrap_or(TableVersion::LATEST) })
+        }
+        None => {
+            let mut record = read_student_file(&exercises_dir().join("student.toml"))
+                .map_err(|e| e.message(lang))?;
+            if let Some(t) = table {
+                record.table = t;
+            }
+            Ok(record)
+        }
+    }
+}
+
+/// Options of `cg assignment`.
+#[derive(clap::Args)]
+pub struct AssignmentArgs {
+    /// Your 8-digit student number (default: the one in exercises/student.toml) / 学生番号（8 桁）
+    #[arg(long, value_name = "NUMBER")]
+    student: Option<String>,
+    /// The variant table (default: the newest, or the one in exercises/student.toml) / 課題表の版
+    #[arg(long, value_name = "N")]
+    table: Option<TableVersion>,
+    /// Only this assignment / この課題だけ表示
+    #[arg(long, value_enum)]
+    only: Option<Which>,
+    /// Print JSON for tools / JSON で出力
+    #[arg(long)]
+    json: bool,
+    /// Record the number in exercises/student.toml, once / 学生番号を exercises/student.toml に記録
+    #[arg(long)]
+    save: bool,
+}
+
+/// `cg assignment`: prints one student's assignments.
+pub fn assignment(args: &AssignmentArgs, lang: Lang) -> Result<(), String> {
+    let record = student(args.student.as_deref(), args.table, lang)?;
+    if args.save {
+        let path = exercises_dir().join("student.toml");
+        write_student_file(&path, &record)?;
+        eprintln!("{} {}", lang.pick("記録しました:", "recorded in"), path.display());
+    }
+    let a = Assignment::for_student(&record.student, record.table);
+    if args.json {
+        let value = match args.only {
+            None => a.to_json(),
+            Some(w) => a.to_json()[w.id()].clone(),
+        };
+        println!("{}", serde_json::to_string_pretty(&value).unwrap_or_default());
+    } else {
+        print!("{}", a.describe(lang, args.only.map(Which::id)));
+    }
+    Ok(())
+}
+
+/// Options of `cg check`.
+#[derive(clap::Args)]
+pub struct CheckArgs {
+    /// Which assignment (default: all) / 課題（省略するとすべて）
+    #[arg(value_enum)]
+    which: Option<Which>,
+    /// The student number (default: exercises/student.toml) / 学生番号
+    #[arg(long, value_name = "NUMBER")]
+    student: Option<String>,
+    /// Print JSON for tools / JSON で出力
+    #[arg(long)]
+    json: bool,
+    /// Seconds one check may run before it is taken for an endless loop / 1 つのチェックの制限時間（秒）
+    #[arg(long, default_value_t = 20)]
+    time_limit: u64,
+}
+
+/// The checks of one assignment against the student's exercises.
+fn report(which: Which, a: &Assignment) -> Report {
+    let checks = match which {
+        Which::A1 => cg_a1::checks(&a.a1, &cg_exercises::a1::implementation()),
+        Which::A2 => cg_a2::checks(&a.a2, &cg_exercises::a2::implementation()),
+        Which::A3 => cg_a3::checks(&a.a3, &cg_exercises::a3::implementation()),
+        Which::A4 => cg_a4::checks(&a.a4, &cg_exercises::a4::implementation()),
+        Which::S => cg_shading::checks(&a.s, &cg_exercises::s::implementation()),
+    };
+    Report { assignment: which.id().to_owned(), student: Some(a.student.to_string()), checks }
+}
+
+/// `cg check`: runs the student's checks; fails (exit status 1) unless every check passes.
+pub fn check(args: &CheckArgs, lang: Lang) -> Result<bool, String> {
+    let record = student(args.student.as_deref(), None, lang)?;
+    let a = Assignment::for_student(&record.student, record.table);
+    cg_harness::check::watchdog(Duration::from_secs(args.time_limit.max(1)), lang);
+    let which: Vec<Which> = args.which.map_or_else(|| Which::ALL.to_vec(), |w| vec![w]);
+    let reports: Vec<Report> = which.iter().map(|&w| report(w, &a)).collect();
+    if args.json {
+        let value = serde_json::Value::Array(reports.iter().map(Report::to_json).collect());
+        println!("{}", serde_json::to_string_pretty(&value).unwrap_or_default());
+    } else {
+        for r in &reports {
+            println!(
+                "{} {} — {} {}",
+                lang.pick("課題", "assignment"),
+                r.assignment,
+                lang.pick("学生番号", "student"),
+                record.student
+            );
+            print!("{}", r.render(lang));
+            println!();
+        }
+    }
+    Ok(reports.iter().all(Report::all_passed))
+}
+
+/// Options of `cg view`.
+#[derive(clap::Args)]
+pub struct ViewArgs {
+    /// Which assignment / 課題
+    #[arg(value_enum)]
+    which: Which,
+    /// The student number (default: exercises/student.toml) / 学生番号
+    #[arg(long, value_name = "NUMBER")]
+    student: Option<String>,
+    /// The time in seconds, for animations / 時刻（秒、アニメーション用）
+    #[arg(long, default_value_t = 0.0)]
+    time: f64,
+    /// The folder for the PNG files / PNG を保存するフォルダ
+    #[arg(short, long, default_value = "out")]
+    output: PathBuf,
+}
+
+fn view_scene(
+    which: Which,
+    a: &Assignment,
+    reference: bool,
+    time: f64,
+) -> Result<Result<Scene, Text>, Outcome> {
+    let _ = reference;
+    #[cfg(feature = "reference")]
+    if reference {
+        return guarded(|| match which {
+            Which::A1 => cg_a1::view(&a.a1, &cg_solutions::a1::implementation(), time),
+            Which::A2 => cg_a2::view(&a.a2, &cg_solutions::a2::implementation(), time),
+            Which::A3 => cg_a3::view(&a.a3, &cg_solutions::a3::implementation(), time),
+            Which::A4 => cg_a4::view(&a.a4, &cg_solutions::a4::implementation(), time),
+            Which::S => cg_shading::view(&a.s, &cg_solutions::s::implementation(), time),
+        });
+    }
+    guarded(|| match which {
+        Which::A1 => cg_a1::view(&a.a1, &cg_exercises::a1::implementation(), time),
+        Which::A2 => cg_a2::view(&a.a2, &cg_exercises::a2::implementation(), time),
+        Which::A3 => cg_a3::view(&a.a3, &cg_exercises::a3::implementation(), time),
+        Which::A4 => cg_a4::view(&a.a4, &cg_exercises::a4::implementation(), time),
+        Which::S => cg_shading::view(&a.s, &cg_exercises::s::implementation(), time),
+    })
+}
+
+/// `cg view`: draws the student's result (and the reference beside it when the solutions are
+/// part of this kit) to PNG files.
+pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
+    let record = student(args.student.as_deref(), None, lang)?;
+    let a = Assignment::for_student(&record.student, record.table);
+    let mut sides = vec![(false, lang.pick("あなたの結果", "yours"), "yours")];
+    if cfg!(feature = "reference") {
+        sides.push((true, lang.pick("参考解答", "reference"), "reference"));
+    }
+    println!(
+        "{}",
+        lang.pick(
+            "ウィンドウ表示はビューアの完成後に使えます。いまは PNG に描画します:",
+            "The window arrives with the viewer; for now the views are drawn to PNG files:"
+        )
+    );
+    for (reference, label, file) in sides {
+        let path = args.output.join(format!("view-{}-{file}.png", args.which.id()));
+        match view_scene(args.which, &a, reference, args.time) {
+            Ok(Ok(scene)) => {
+                let image = cg_raster::render(&scene, &cg_raster::Options::default())
+                    .map_err(|e| e.message(lang))?
+                    .image;
+                if let Some(dir) = path.parent() {
+                    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+                }
+                cg_scene::save_png(&path, &image).map_err(|e| e.describe(lang))?;
+                println!("  {label}: {}", path.display());
+            }
+            Ok(Err(why)) => println!("  {label}: {}", why.get(lang)),
+            Err(Outcome::NotDone { message }) => {
+                println!("  {label}: {}: {message}", lang.pick("まだです", "not done yet"));
+            }
+            Err(other) => println!("  {label}: {other:?}"),
+        }
+    }
+    Ok(())
+}
+
+/// `cg sync-stubs`: regenerates exercises/ from solutions/ (the kit's maintainers only).
+pub fn sync_stubs(lang: Lang) -> Result<(), String> {
+    let solutions = crate::kit_path(None, "solutions");
+    if !solutions.join("Cargo.toml").exists() {
+        return Err(lang
+            .pick(
+                "solutions/ がありません（学生用のコピーでは使えないコマンドです）",
+                "there is no solutions/ here (this command is for the kit's own repository)",
+            )
+            .to_owned());
+    }
+    let changed =
+        cg_harness::stubs::write(&solutions, &exercises_dir()).map_err(|e| e.to_string())?;
+    for path in &changed {
+        println!("{} exercises/{}", lang.pick("更新:", "updated"), path.display());
+    }
+    if changed.is_empty() {
+        println!("{}", lang.pick("exercises/ は最新です", "exercises/ is up to date"));
+    }
+    Ok(())
+}

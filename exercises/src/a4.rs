@@ -1,0 +1,7 @@
+//! Assignment `a4`. (Its tasks arrive with the assignment.)
+
+/// The functions of this module, for the checks and the view.
+#[must_use]
+pub fn implementation() -> cg_a4::Impl {
+    cg_a4::Impl {}
+}
