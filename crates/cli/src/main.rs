@@ -10,6 +10,7 @@ use cg_core::lang::Lang;
 use clap::{Parser, Subcommand};
 
 mod assignments;
+mod handout;
 mod inspect;
 mod render;
 
@@ -49,6 +50,8 @@ enum Command {
     View(assignments::ViewArgs),
     /// Regenerate exercises/ from solutions/ (kit maintainers) / solutions/ から exercises/ を生成（管理者用）
     SyncStubs,
+    /// Write the students' copy of the kit, without solutions/ (instructors) / 学生に配るコピーを作る（教員用）
+    Handout(handout::Args),
 }
 
 fn main() -> ExitCode {
@@ -61,6 +64,7 @@ fn main() -> ExitCode {
         Some(Command::Check(args)) => assignments::check(&args, lang),
         Some(Command::View(args)) => assignments::view(&args, lang).map(|()| true),
         Some(Command::SyncStubs) => assignments::sync_stubs(lang).map(|()| true),
+        Some(Command::Handout(args)) => handout::run(&args, lang).map(|()| true),
         None => render::main_job(lang).map(|()| true),
     };
     match result {
