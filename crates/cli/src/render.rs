@@ -32,11 +32,11 @@ pub enum FresnelArg {
 /// A shading mode on the command line.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum ShadingArg {
-    /// フラットシェーディング
+    /// Flat: one colour per face / フラットシェーディング
     Flat,
-    /// グローシェーディング
+    /// Gouraud: vertex colours interpolated / グローシェーディング
     Gouraud,
-    /// フォンシェーディング
+    /// Phong: normals interpolated, lit per pixel / フォンシェーディング
     Phong,
 }
 
@@ -64,15 +64,16 @@ pub struct Args {
     /// The PNG file to write (default: out/<scene>-<renderer>-<shading>.png) / 出力する PNG ファイル
     #[arg(short, long, value_name = "PNG")]
     output: Option<PathBuf>,
-    /// Image width in pixels (default: the scene's; the height follows its aspect if not given) / 幅
+    /// Image width in pixels, 1–16384 (default: the scene's; alone, the height follows the
+    /// scene's aspect ratio) / 画像の幅（画素、1〜16384。省略時はシーンの幅。幅だけ指定すると高さはシーンの縦横比から決まります）
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=16384))]
     width: Option<u32>,
-    /// Image height in pixels / 高さ
+    /// Image height in pixels, 1–16384 / 画像の高さ（画素、1〜16384）
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=16384))]
     height: Option<u32>,
-    /// Threads (default: all cores) / スレッド数
-    #[arg(long)]
-    threads: Option<usize>,
+    /// Threads, 1–256 (default: all cores; the image is the same for any count) / スレッド数（1〜256。省略時はすべてのコア。結果は同じです）
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
+    threads: Option<u16>,
     /// Ray tracer: how many reflections/refractions deep rays go / レイの最大の深さ
     #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(0..=64))]
     max_depth: u32,
@@ -111,6 +112,17 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let path = crate::kit_path(args.scene.as_deref(), crate::COURSE_SAMPLE);
     let scene = cg_scene::load(&path).map_err(|e| e.describe(lang))?;
     let size = size(&scene, args.width, args.height);
+    if args.renderer == Renderer::Raster
+        && (args.max_depth != 5 || args.fresnel != FresnelArg::Exact || args.no_shadows)
+    {
+        eprintln!(
+            "{}",
+            lang.pick(
+                "注意: --max-depth, --fresnel, --no-shadows はレイトレーサ（--renderer trace）の設定です。ラスタライザでは使いません",
+                "note: --max-depth, --fresnel and --no-shadows are ray-tracer settings (--renderer trace); the rasterizer ignores them"
+            )
+        );
+    }
     let settings = TraceSettings {
         max_depth: args.max_depth,
         fresnel: args.fresnel,
@@ -121,7 +133,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         args.renderer,
         args.shading.map(Shading::from),
         size,
-        args.threads,
+        args.threads.map(usize::from),
         settings,
         lang,
     )?;
@@ -129,7 +141,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         Some(p) => p.clone(),
         None => PathBuf::from("out").join(format!(
             "{}-{}-{}.png",
-            scene.name,
+            file_stem(&path),
             renderer_name(args.renderer),
             shading_name(r.shading, Lang::En).to_lowercase()
         )),
@@ -185,6 +197,18 @@ pub fn main_job(lang: Lang) -> Result<(), String> {
         )
     );
     Ok(())
+}
+
+/// A file name made from the scene file's name: only letters, digits, `.`, `_` and `-` (anything
+/// else becomes `_`), so the default output stays inside `out/` whatever the scene is called.
+fn file_stem(path: &Path) -> String {
+    let stem = path.file_stem().map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+    let safe: String = stem
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() || matches!(c, '.' | '_' | '-') { c } else { '_' })
+        .collect();
+    let safe = safe.trim_start_matches('.').to_owned();
+    if safe.is_empty() { "scene".to_owned() } else { safe }
 }
 
 /// The image size: the scene's, or the given width and/or height (one alone keeps the aspect).
@@ -266,6 +290,20 @@ fn write(path: &Path, image: &Image, lang: Lang) -> Result<(), String> {
         })?;
     }
     cg_scene::save_png(path, image).map_err(|e| e.describe(lang))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_output_names_stay_inside_out() {
+        assert_eq!(file_stem(Path::new("assets/scenes/course-sample.toml")), "course-sample");
+        assert_eq!(file_stem(Path::new("../../x/../../escaped.toml")), "escaped");
+        assert_eq!(file_stem(Path::new("/tmp/シーン 1.toml")), "____1");
+        assert_eq!(file_stem(Path::new("..toml")), "scene");
+        assert_eq!(file_stem(Path::new("")), "scene");
+    }
 }
 
 fn renderer_name(r: Renderer) -> &'static str {

@@ -23,7 +23,10 @@ fn the_handout_builds_and_checks_on_its_own_without_solutions() {
     assert!(!dir.join("solutions").exists());
     for file in ["Cargo.toml", "Cargo.lock", "crates/cli/Cargo.toml"] {
         let text = std::fs::read_to_string(dir.join(file)).unwrap();
-        assert!(!text.contains("cg-solutions") && !text.contains("BEGIN SOLUTION"), "{file}:\n{text}");
+        assert!(
+            !text.contains("cg-solutions") && !text.contains("BEGIN SOLUTION"),
+            "{file}:\n{text}"
+        );
     }
     // The stubs are exactly what the solutions generate.
     for (relative, text) in cg_harness::stubs::generate(&root().join("solutions")).unwrap() {
@@ -43,8 +46,22 @@ fn the_handout_builds_and_checks_on_its_own_without_solutions() {
             .unwrap()
     };
     let build = cargo(&["build", "--offline", "--locked", "--quiet"]);
-    assert!(build.status.success(), "the handout does not build:\n{}", String::from_utf8_lossy(&build.stderr));
-    let check = cargo(&["run", "--offline", "--locked", "--quiet", "--", "check", "--student", "12345678", "--json"]);
+    assert!(
+        build.status.success(),
+        "the handout does not build:\n{}",
+        String::from_utf8_lossy(&build.stderr)
+    );
+    let check = cargo(&[
+        "run",
+        "--offline",
+        "--locked",
+        "--quiet",
+        "--",
+        "check",
+        "--student",
+        "12345678",
+        "--json",
+    ]);
     assert!(!check.status.success(), "pristine stubs must not pass every check");
     let reports: serde_json::Value = serde_json::from_slice(&check.stdout)
         .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&check.stdout)));

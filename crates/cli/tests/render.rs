@@ -165,7 +165,12 @@ fn mistakes_are_clear_errors() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("taken.png") && !err.contains("panicked"), "{err}");
     // Unknown renderer and a zero width are refused by the argument parser (exit code 2).
-    for args in [&["render", "--renderer", "opengl"][..], &["render", "--width", "0"][..]] {
+    for args in [
+        &["render", "--renderer", "opengl"][..],
+        &["render", "--width", "0"][..],
+        &["render", "--threads", "0"][..],
+        &["render", "--threads", "100000"][..],
+    ] {
         let o = cg_in(&root(), args);
         assert_eq!(o.status.code(), Some(2), "{args:?}");
     }
