@@ -292,20 +292,6 @@ fn write(path: &Path, image: &Image, lang: Lang) -> Result<(), String> {
     cg_scene::save_png(path, image).map_err(|e| e.describe(lang))
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn default_output_names_stay_inside_out() {
-        assert_eq!(file_stem(Path::new("assets/scenes/course-sample.toml")), "course-sample");
-        assert_eq!(file_stem(Path::new("../../x/../../escaped.toml")), "escaped");
-        assert_eq!(file_stem(Path::new("/tmp/シーン 1.toml")), "____1");
-        assert_eq!(file_stem(Path::new("..toml")), "scene");
-        assert_eq!(file_stem(Path::new("")), "scene");
-    }
-}
-
 fn renderer_name(r: Renderer) -> &'static str {
     match r {
         Renderer::Raster => "raster",
@@ -326,5 +312,19 @@ pub fn shading_name(s: Shading, lang: Lang) -> &'static str {
         Shading::Flat => lang.pick("フラットシェーディング", "Flat"),
         Shading::Gouraud => lang.pick("グローシェーディング", "Gouraud"),
         Shading::Phong => lang.pick("フォンシェーディング", "Phong"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_output_names_stay_inside_out() {
+        assert_eq!(file_stem(Path::new("assets/scenes/course-sample.toml")), "course-sample");
+        assert_eq!(file_stem(Path::new("../../x/../../escaped.toml")), "escaped");
+        assert_eq!(file_stem(Path::new("/tmp/シーン 1.toml")), "____1");
+        assert_eq!(file_stem(Path::new("..toml")), "scene");
+        assert_eq!(file_stem(Path::new("")), "scene");
     }
 }
