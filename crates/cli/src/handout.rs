@@ -20,7 +20,6 @@ fn excluded(path: &Path) -> bool {
     let first = path.components().next().map(|c| c.as_os_str().to_string_lossy().into_owned());
     matches!(first.as_deref(), Some("solutions" | "target" | "out" | ".git"))
         || path == Path::new("exercises/student.toml")
-        || path == Path::new("docs/instructor-guide.md")
 }
 
 /// The kit's files: `git ls-files` when the kit is a git checkout (so ignored files stay out),
