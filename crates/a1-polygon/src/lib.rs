@@ -1,53 +1,58 @@
 //! Assignment `a1` — ポリゴンモデルの描画 (polygon model).
 //!
+//! The course's first report task: "指定されたポリゴンモデルを描画する処理を追加すること" — draw
+//! the polyhedron you were given, and show in the report its vertex table, its face table with
+//! each face's normal, figures of how vertices and faces connect, and how the data was derived.
+//!
 //! Every assignment crate has the same shape (the command line and the tests rely on it):
 //! [`ID`], a per-student [`Spec`] drawn by [`variant`] and described by [`Spec::describe`], the
 //! exercise API [`Impl`] (the functions a student writes, in `exercises/src/a1.rs`),
 //! [`checks`] and [`view`].
+//!
+//! | task | function | what it returns | checks |
+//! |---|---|---|---|
+//! | `a1.t1` | `vertices(spec)` | `Vec<Vec3>`, model space, numbered by the spec's rule | `a1.t1.count`, `a1.t1.positions` |
+//! | `a1.t2` | `faces(spec)` | `Vec<[u32; 3]>`, counter-clockwise seen from outside | `a1.t2.indices`, `.degenerate`, `.closed`, `.manifold`, `.winding`, `.outward`, `.count`, `.surface` |
+//! | `a1.t3` | `face_normals(spec)` | `Vec<Vec3>`, one unit normal per face | `a1.t3.count`, `a1.t3.unit`, `a1.t3.normals` |
+//! | `a1.t4` | `model_transform(spec)` | [`MatrixProduct`] `T(x, y, z) · Ry(θ)` | `a1.t4.placement` |
+//!
+//! The view draws the student's mesh face by face with the student's own normals
+//! ([`NormalSource::Given`](cg_core::scene::NormalSource::Given)) on the course's stage, so a
+//! wrong normal lights its face wrongly and a face wound the wrong way is culled (a hole).
 
-use cg_core::lang::Lang;
-use cg_core::scene::Scene;
-use cg_harness::{CheckResult, Text, VariantRng};
-use serde::Serialize;
+mod checks;
+mod describe;
+mod spec;
+mod view;
+
+use cg_core::glam::Vec3;
+use cg_core::product::{MatrixProduct, format_number};
+
+pub use checks::{
+    MATRIX_TOLERANCE, NORMAL_TOLERANCE, SURFACE_TOLERANCE, UNIT_TOLERANCE, VERTEX_TOLERANCE, checks,
+};
+pub use spec::{FAMILIES, Numbering, Order, Placement, RidgeAxis, Shape, Spec, Turn, variant};
+pub use view::{MODEL_COLOR, view};
 
 /// The assignment's ID, the prefix of its task IDs (`a1.t1`, …).
 pub const ID: &str = "a1";
 
-/// What one student must build.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Spec {}
-
-/// The student's variant, drawn from the frozen stream of their number and table version.
-#[must_use]
-pub fn variant(rng: &mut VariantRng) -> Spec {
-    let _ = rng;
-    Spec {}
-}
-
-impl Spec {
-    /// The assignment text for this variant, in `lang`.
-    #[must_use]
-    pub fn describe(&self, lang: Lang) -> String {
-        lang.pick("ポリゴンモデルの描画", "polygon model").to_owned()
-    }
-}
-
-/// The functions a student writes (see `exercises/src/a1.rs`).
+/// The functions a student writes (see `exercises/src/a1.rs`). Each gets the student's
+/// [`Spec`]; a student may read the numbers from it or write their own numbers by hand.
 #[derive(Clone, Copy, Debug)]
-pub struct Impl {}
-
-/// Every check of this assignment for `spec`, run against `imp`.
-#[must_use]
-pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
-    let _ = (spec, imp);
-    Vec::new()
+pub struct Impl {
+    /// `a1.t1`: the vertex positions in model space, numbered by `spec.numbering`.
+    pub vertices: fn(&Spec) -> Vec<Vec3>,
+    /// `a1.t2`: the triangles as vertex numbers, counter-clockwise seen from outside.
+    pub faces: fn(&Spec) -> Vec<[u32; 3]>,
+    /// `a1.t3`: one unit normal per face, in the order of `faces`.
+    pub face_normals: fn(&Spec) -> Vec<Vec3>,
+    /// `a1.t4`: model space → world space as a product of named factors, in glTranslatef /
+    /// glRotatef order (degrees).
+    pub model_transform: fn(&Spec) -> MatrixProduct,
 }
 
-/// The scene that shows `imp`'s result at time `time_s` (seconds; for animations).
-///
-/// # Errors
-/// What keeps the result from being drawn, in words for the student.
-pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
-    let _ = (spec, imp, time_s);
-    Ok(cg_harness::course::scene())
+/// An angle in degrees as the texts print it: `30`, `-22.5`.
+pub(crate) fn format_deg(x: f32) -> String {
+    format_number(x)
 }
