@@ -1,0 +1,701 @@
+//! The variant: which part of the prepared image goes onto the ground, turned which way, and how
+//! many times it repeats — and the assignment text that says so.
+
+use std::fmt::Write as _;
+
+use cg_core::glam::{DVec2, Vec2};
+use cg_core::lang::Lang;
+use cg_harness::VariantRng;
+use cg_harness::text::{Text, t};
+use serde::{Serialize, Serializer};
+
+use crate::prepared::{CELL_PIXELS, CELLS, IMAGE_PIXELS, cell_name, column_name};
+use crate::{SQUARES, TexRange};
+
+/// How many times the region repeats along each side of the ground, as drawn (table version 1,
+/// frozen): once for half the students, 2 × 2 or 5 × 5 for a quarter each. Each value divides
+/// the 10 squares, so every block of squares shows the whole region.
+const REPEATS: [u32; 4] = [1, 1, 2, 5];
+
+/// Region sizes in cells (each side drawn separately): smaller regions when there are 5 × 5
+/// blocks, so the names stay readable. Frozen (table version 1).
+const SIZES: [u32; 3] = [2, 3, 4];
+/// See [`SIZES`].
+const SIZES_SMALL: [u32; 2] = [1, 2];
+
+/// Orientations `(rotation_deg, mirrored)` as drawn (table version 1, frozen): every rotation
+/// twice unmirrored and once mirrored.
+const ORIENTATIONS: [(u32, bool); 12] = [
+    (0, false),
+    (90, false),
+    (180, false),
+    (270, false),
+    (0, false),
+    (90, false),
+    (180, false),
+    (270, false),
+    (0, true),
+    (90, true),
+    (180, true),
+    (270, true),
+];
+
+/// A rectangle of cells of the prepared image, counted like a spreadsheet: `column` 0 is `A`
+/// (left), `row` 0 is row `1` (**top**).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Region {
+    /// The leftmost column (0 = `A`).
+    pub column: u32,
+    /// The top row (0 = row `1`, the image's top row of cells).
+    pub row: u32,
+    /// How many columns (≥ 1).
+    pub columns: u32,
+    /// How many rows (≥ 1).
+    pub rows: u32,
+}
+
+impl Region {
+    /// The top-left cell's name (`C4`).
+    #[must_use]
+    pub fn first(&self) -> String {
+        cell_name(self.column, self.row)
+    }
+
+    /// The bottom-right cell's name (`D5`).
+    #[must_use]
+    pub fn last(&self) -> String {
+        cell_name(self.column + self.columns - 1, self.row + self.rows - 1)
+    }
+
+    /// The region as a spreadsheet range, `C4–D5` (one cell: `C4`).
+    #[must_use]
+    pub fn name(&self) -> String {
+        if self.columns == 1 && self.rows == 1 {
+            self.first()
+        } else {
+            format!("{}–{}", self.first(), self.last())
+        }
+    }
+
+    /// The cell at one of the region's corners.
+    #[must_use]
+    pub fn corner_cell(&self, corner: Corner) -> String {
+        let (x, y) = corner.xy();
+        let column = self.column + x * (self.columns - 1);
+        // Up in the image (y = 1) is the region's *top* row.
+        let row = self.row + (1 - y) * (self.rows - 1);
+        cell_name(column, row)
+    }
+
+    /// The region in pixels, measured from the image's **top-left** corner as image viewers do:
+    /// `[x_from, y_from, x_to, y_to]` (pixel edges; `x_to − x_from` pixels wide).
+    #[must_use]
+    pub fn pixels(&self) -> [u32; 4] {
+        [
+            self.column * CELL_PIXELS,
+            self.row * CELL_PIXELS,
+            (self.column + self.columns) * CELL_PIXELS,
+            (self.row + self.rows) * CELL_PIXELS,
+        ]
+    }
+
+    /// The region's texture-coordinate range, exact (multiples of 1/8): the oracle of `a4.t1`,
+    /// worked from the pixels (`s = x / 512`, `t = 1 − y / 512` since `y` counts from the top).
+    pub(crate) fn range(&self) -> TexRange {
+        let [x0, y0, x1, y1] = self.pixels();
+        let size = f64::from(IMAGE_PIXELS);
+        let s = |x: u32| (f64::from(x) / size) as f32;
+        let t = |y: u32| (1.0 - f64::from(y) / size) as f32;
+        TexRange { s_min: s(x0), s_max: s(x1), t_min: t(y1), t_max: t(y0) }
+    }
+}
+
+impl Serialize for Region {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        #[derive(Serialize)]
+        struct Json {
+            first: String,
+            last: String,
+            column: u32,
+            row: u32,
+            columns: u32,
+            rows: u32,
+            pixels: [u32; 4],
+        }
+        Json {
+            first: self.first(),
+            last: self.last(),
+            column: self.column,
+            row: self.row,
+            columns: self.columns,
+            rows: self.rows,
+            pixels: self.pixels(),
+        }
+        .serialize(serializer)
+    }
+}
+
+/// A corner of the region, as the image shows it (bottom = towards the image's bottom edge).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Corner {
+    /// 左下
+    BottomLeft,
+    /// 右下
+    BottomRight,
+    /// 右上
+    TopRight,
+    /// 左上
+    TopLeft,
+}
+
+impl Corner {
+    /// All four, counter-clockwise from the bottom-left.
+    pub const ALL: [Corner; 4] =
+        [Corner::BottomLeft, Corner::BottomRight, Corner::TopRight, Corner::TopLeft];
+
+    /// `(x, y)` in the region: `(0, 0)` bottom-left, `(1, 1)` top-right.
+    #[must_use]
+    pub fn xy(self) -> (u32, u32) {
+        match self {
+            Corner::BottomLeft => (0, 0),
+            Corner::BottomRight => (1, 0),
+            Corner::TopRight => (1, 1),
+            Corner::TopLeft => (0, 1),
+        }
+    }
+
+    /// 左下 / bottom-left, …
+    #[must_use]
+    pub fn name(self) -> Text {
+        match self {
+            Corner::BottomLeft => t("左下", "bottom-left"),
+            Corner::BottomRight => t("右下", "bottom-right"),
+            Corner::TopRight => t("右上", "top-right"),
+            Corner::TopLeft => t("左上", "top-left"),
+        }
+    }
+}
+
+/// A corner of the ground: ground vertex `(i, j)` with `i, j ∈ {0, 10}`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum GroundCorner {
+    /// Vertex (0, 0) at (−5, 0, −5): far left, seen from the course's camera.
+    FarLeft,
+    /// Vertex (10, 0) at (5, 0, −5): far right.
+    FarRight,
+    /// Vertex (10, 10) at (5, 0, 5): near right.
+    NearRight,
+    /// Vertex (0, 10) at (−5, 0, 5): near left.
+    NearLeft,
+}
+
+impl GroundCorner {
+    /// All four, in the order vertex (0, 0), (10, 0), (10, 10), (0, 10).
+    pub const ALL: [GroundCorner; 4] = [
+        GroundCorner::FarLeft,
+        GroundCorner::FarRight,
+        GroundCorner::NearRight,
+        GroundCorner::NearLeft,
+    ];
+
+    /// `(p, q)` on the ground or a block: `0` or `1` along i and along j.
+    #[must_use]
+    pub fn pq(self) -> (u32, u32) {
+        match self {
+            GroundCorner::FarLeft => (0, 0),
+            GroundCorner::FarRight => (1, 0),
+            GroundCorner::NearRight => (1, 1),
+            GroundCorner::NearLeft => (0, 1),
+        }
+    }
+
+    /// The ground vertex `(i, j)`.
+    #[must_use]
+    pub fn vertex(self) -> (u32, u32) {
+        let (p, q) = self.pq();
+        (p * SQUARES, q * SQUARES)
+    }
+
+    /// The vertex's position `(x, z)` = `(i·1 − 5, j·1 − 5)`.
+    #[must_use]
+    pub fn position(self) -> (i32, i32) {
+        let (i, j) = self.vertex();
+        (i as i32 - 5, j as i32 - 5)
+    }
+
+    /// 奥の左 / far left, … as seen from the course's camera (in front, above, looking at −z).
+    #[must_use]
+    pub fn name(self) -> Text {
+        match self {
+            GroundCorner::FarLeft => t("奥の左", "far left"),
+            GroundCorner::FarRight => t("奥の右", "far right"),
+            GroundCorner::NearRight => t("手前の右", "near right"),
+            GroundCorner::NearLeft => t("手前の左", "near left"),
+        }
+    }
+
+    /// `vertex (i, j) = (0, 10) at (−5, 0, 5), near left seen from the camera` in `lang`.
+    #[must_use]
+    pub fn describe(self, lang: Lang) -> String {
+        let (i, j) = self.vertex();
+        let (x, z) = self.position();
+        match lang {
+            Lang::Ja => format!(
+                "頂点 (i, j) = ({i}, {j})、位置 ({x}, 0, {z})、カメラから見て{}",
+                self.name().ja
+            ),
+            Lang::En => format!(
+                "vertex (i, j) = ({i}, {j}) at ({x}, 0, {z}), {} seen from the camera",
+                self.name().en
+            ),
+        }
+    }
+}
+
+/// What one student must build: which region of the prepared image goes onto the ground, turned
+/// which way, repeated how often.
+///
+/// As JSON (`cg assignment --json`) it also lists, under `corners`, where each corner of the
+/// region lands — the table the assignment text prints.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Spec {
+    /// The region of the prepared image (cells, counted from the top-left like a spreadsheet).
+    pub region: Region,
+    /// How far the region is turned, counter-clockwise as seen from the course's camera (from
+    /// above): 0, 90, 180 or 270 degrees. At 0 (unmirrored) the region stands upright in front of
+    /// the camera: its top away from the camera (−z), its right to the right (+x).
+    pub rotation_deg: u32,
+    /// Whether the region is mirrored left to right before it is turned (its names then read
+    /// as mirror writing).
+    pub mirrored: bool,
+    /// How many times the region repeats along each side of the ground (1, 2 or 5): the ground's
+    /// 10 × 10 squares form `repeat × repeat` blocks of `10/repeat` squares a side, and each
+    /// block shows the whole region the same way.
+    pub repeat: u32,
+}
+
+impl Serialize for Spec {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        #[derive(Serialize)]
+        struct CornerJson {
+            corner: Corner,
+            cell: String,
+            ground: GroundCorner,
+            vertex: (u32, u32),
+        }
+        #[derive(Serialize)]
+        struct Json {
+            region: Region,
+            rotation_deg: u32,
+            mirrored: bool,
+            repeat: u32,
+            corners: Vec<CornerJson>,
+        }
+        Json {
+            region: self.region,
+            rotation_deg: self.rotation_deg,
+            mirrored: self.mirrored,
+            repeat: self.repeat,
+            corners: Corner::ALL
+                .into_iter()
+                .map(|corner| {
+                    let ground = self.ground_corner_of(corner);
+                    CornerJson {
+                        corner,
+                        cell: self.region.corner_cell(corner),
+                        ground,
+                        vertex: ground.vertex(),
+                    }
+                })
+                .collect(),
+        }
+        .serialize(serializer)
+    }
+}
+
+/// The student's variant, drawn from the frozen stream of their number and table version.
+///
+/// Table version 1 draws, in this order: the repeat count from [1, 1, 2, 5]; the region's width
+/// and then its height in cells from [2, 3, 4] (from [1, 2] with 5 × 5 blocks); its left column
+/// and then its top row, uniformly where it fits; then the orientation from the 12 entries of
+/// every rotation twice unmirrored and once mirrored. Never change this for version 1.
+#[must_use]
+pub fn variant(rng: &mut VariantRng) -> Spec {
+    let repeat = *rng.pick(&REPEATS);
+    let sizes: &[u32] = if repeat == 5 { &SIZES_SMALL } else { &SIZES };
+    let columns = *rng.pick(sizes);
+    let rows = *rng.pick(sizes);
+    let column = rng.below(u64::from(CELLS - columns + 1)) as u32;
+    let row = rng.below(u64::from(CELLS - rows + 1)) as u32;
+    let (rotation_deg, mirrored) = *rng.pick(&ORIENTATIONS);
+    Spec { region: Region { column, row, columns, rows }, rotation_deg, mirrored, repeat }
+}
+
+impl Spec {
+    /// Ground squares along each side of one block (`10 / repeat`).
+    pub(crate) fn block(&self) -> u32 {
+        SQUARES / self.repeat.clamp(1, SQUARES)
+    }
+
+    /// The ground corner (of the ground, and of every block) where the region's `corner` lands:
+    /// the table of the assignment text.
+    ///
+    /// Worked forwards, independently of the solutions: the corner as a vector from the
+    /// region's centre `(±1, ±1)` is mirrored (x → −x), then turned counter-clockwise in quarter
+    /// turns `(x, y) → (−y, x)`, as the camera sees the ground: screen right is +x (i grows),
+    /// screen up is −z (j shrinks).
+    #[must_use]
+    pub fn ground_corner_of(&self, corner: Corner) -> GroundCorner {
+        let (x, y) = corner.xy();
+        let (mut dx, mut dy) = (2 * x as i32 - 1, 2 * y as i32 - 1);
+        if self.mirrored {
+            dx = -dx;
+        }
+        for _ in 0..(self.rotation_deg / 90) % 4 {
+            (dx, dy) = (-dy, dx);
+        }
+        let p = u32::from(dx > 0);
+        let q = u32::from(dy < 0); // screen up is j = 0
+        GroundCorner::ALL.into_iter().find(|g| g.pq() == (p, q)).unwrap_or(GroundCorner::FarLeft)
+    }
+
+    /// The region's corner that lands on ground corner `g` (and on that corner of every block).
+    #[must_use]
+    pub fn corner_at(&self, g: GroundCorner) -> Corner {
+        Corner::ALL
+            .into_iter()
+            .find(|&c| self.ground_corner_of(c) == g)
+            .unwrap_or(Corner::BottomLeft)
+    }
+
+    /// The texture coordinate of the region's `corner`.
+    pub(crate) fn corner_coord(&self, corner: Corner) -> Vec2 {
+        let r = self.region.range();
+        let (x, y) = corner.xy();
+        Vec2::new(if x == 0 { r.s_min } else { r.s_max }, if y == 0 { r.t_min } else { r.t_max })
+    }
+
+    /// The expected texture coordinate at `(p, q)` of a block (`0..=1` along i and j), in f64:
+    /// the bilinear blend of the coordinates its four corners must have.
+    pub(crate) fn expected_at(&self, p: f64, q: f64) -> DVec2 {
+        let at = |g: GroundCorner| self.corner_coord(self.corner_at(g)).as_dvec2();
+        let (c00, c10, c11, c01) = (
+            at(GroundCorner::FarLeft),
+            at(GroundCorner::FarRight),
+            at(GroundCorner::NearRight),
+            at(GroundCorner::NearLeft),
+        );
+        c00 * ((1.0 - p) * (1.0 - q))
+            + c10 * (p * (1.0 - q))
+            + c11 * (p * q)
+            + c01 * ((1.0 - p) * q)
+    }
+
+    /// What `a4.t2` must return for square `(i, j)`: its corners in drawing order, from the
+    /// f64 oracle.
+    #[cfg(test)]
+    pub(crate) fn expected_square(&self, i: u32, j: u32) -> [Vec2; 4] {
+        let k = f64::from(self.block());
+        CORNER_STEPS.map(|(di, dj)| {
+            let p = f64::from(i % self.block() + di) / k;
+            let q = f64::from(j % self.block() + dj) / k;
+            self.expected_at(p, q).as_vec2()
+        })
+    }
+
+    /// The orientation in words: `turned 90° counter-clockwise…`.
+    fn orientation_text(&self, lang: Lang) -> String {
+        let turn = match (self.rotation_deg, lang) {
+            (90, Lang::Ja) => {
+                "カメラから（上から）見て反時計回りに 90° 回す（画像の上が左、−x の向き）"
+            }
+            (90, Lang::En) => {
+                "turned 90° counter-clockwise as seen from the camera (from above): the image's top points left (−x)"
+            }
+            (180, Lang::Ja) => "180° 回す（画像の上が手前、+z の向き）",
+            (180, Lang::En) => "turned 180°: the image's top points towards the camera (+z)",
+            (270, Lang::Ja) => {
+                "カメラから（上から）見て時計回りに 90° 回す（画像の上が右、+x の向き）"
+            }
+            (270, Lang::En) => {
+                "turned 90° clockwise as seen from the camera (from above): the image's top points right (+x)"
+            }
+            (_, Lang::Ja) => "回さない（カメラから見て正立。画像の上が奥、−z の向き）",
+            (_, Lang::En) => {
+                "not turned: upright as seen from the camera, the image's top away from it (−z)"
+            }
+        };
+        match (self.mirrored, lang) {
+            (false, Lang::Ja) => format!("左右反転なし、{turn}"),
+            (false, Lang::En) => format!("not mirrored, {turn}"),
+            (true, Lang::Ja) => format!("左右反転（名前が鏡文字に見える）してから、{turn}"),
+            (true, Lang::En) => {
+                format!("mirrored left to right (the names read as mirror writing), then {turn}")
+            }
+        }
+    }
+
+    /// The assignment text for this variant, in `lang`.
+    #[must_use]
+    pub fn describe(&self, lang: Lang) -> String {
+        let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
+        let r = &self.region;
+        let [x0, y0, x1, y1] = r.pixels();
+        let k = self.block();
+        let n = self.repeat;
+        let mut out = String::new();
+        let _ = writeln!(out, "{}", l("4. テクスチャマッピング (a4)", "4. Texture mapping (a4)"));
+        let _ = writeln!(
+            out,
+            "  {}",
+            l(
+                "指定された通りに、あらかじめ用意されている画像を読み込み、その一部を、地面にマッピングする。",
+                "Load the prepared image and map the part of it given below onto the ground, as specified."
+            )
+        );
+        let _ = writeln!(
+            out,
+            "  {}",
+            l(
+                "レポートには、テクスチャ座標の範囲や計算方法を示すこと。",
+                "The report shows the range of the texture coordinates and how they are computed."
+            )
+        );
+        let _ = writeln!(out);
+        match lang {
+            Lang::Ja => {
+                let _ = writeln!(
+                    out,
+                    "  用意された画像: assets/textures/a4-prepared.png（{IMAGE_PIXELS} × {IMAGE_PIXELS} 画素）。{CELLS} × {CELLS} のマス（各 {CELL_PIXELS} × {CELL_PIXELS} 画素）に"
+                );
+                let _ = writeln!(
+                    out,
+                    "    表計算ソフトのように名前がある: 列 A〜H は左から右、行 1〜8 は上から下（A1 が左上）。各マスの矢印は画像の上を指す。"
+                );
+                let _ = writeln!(
+                    out,
+                    "  地面: 授業の 10 × 10 の四角形。頂点 (i, j)（i, j = 0〜10）の位置は (i*1 - 5, 0, j*1 - 5)。"
+                );
+            }
+            Lang::En => {
+                let _ = writeln!(
+                    out,
+                    "  The prepared image: assets/textures/a4-prepared.png ({IMAGE_PIXELS} × {IMAGE_PIXELS} pixels), {CELLS} × {CELLS} cells of {CELL_PIXELS} × {CELL_PIXELS} pixels"
+                );
+                let _ = writeln!(
+                    out,
+                    "    named like a spreadsheet: columns A–H from left to right, rows 1–8 from top to bottom (A1 is the top-left cell); the arrow in each cell points to the image's top."
+                );
+                let _ = writeln!(
+                    out,
+                    "  The ground: the course's 10 × 10 squares; vertex (i, j) (i, j = 0…10) is at (i*1 - 5, 0, j*1 - 5)."
+                );
+            }
+        }
+        let _ = writeln!(out);
+        let (first_column, last_column) =
+            (column_name(r.column), column_name(r.column + r.columns - 1));
+        let (first_row, last_row) = (r.row + 1, r.row + r.rows);
+        let _ = match lang {
+            Lang::Ja => writeln!(
+                out,
+                "  範囲: {}（列 {first_column}〜{last_column}、行 {first_row}〜{last_row}）= 画像の左上の角から画素 x = {x0}〜{x1}、y = {y0}〜{y1}",
+                r.name()
+            ),
+            Lang::En => writeln!(
+                out,
+                "  Region: {} (columns {first_column}–{last_column}, rows {first_row}–{last_row}) = pixels x = {x0}…{x1}, y = {y0}…{y1} from the image's top-left corner",
+                r.name()
+            ),
+        };
+        let _ = writeln!(out, "  {}: {}", l("向き", "Orientation"), self.orientation_text(lang));
+        for corner in Corner::ALL {
+            let g = self.ground_corner_of(corner);
+            let (name, cell, to) = (corner.name(), r.corner_cell(corner), g.describe(lang));
+            let _ = match lang {
+                Lang::Ja => writeln!(out, "    範囲の{}（マス {cell}）→ {to}", name.ja),
+                Lang::En => writeln!(out, "    the region's {} (cell {cell}) → {to}", name.en),
+            };
+        }
+        if n == 1 {
+            let _ = writeln!(
+                out,
+                "  {}",
+                l(
+                    "繰り返し: なし（地面全体に範囲を 1 回）",
+                    "Repeat: none (the region once, over the whole ground)"
+                )
+            );
+        } else {
+            let _ = match lang {
+                Lang::Ja => writeln!(
+                    out,
+                    "  繰り返し: {n} × {n}。地面を {k} × {k} 個の四角形のまとまり {n} × {n} 個に分け、どのまとまりにも範囲全体を同じ向きで貼る（まとまりの手前の左の角には、上の表で地面の手前の左の隅に来る角、など）"
+                ),
+                Lang::En => writeln!(
+                    out,
+                    "  Repeat: {n} × {n}: the ground is {n} × {n} blocks of {k} × {k} squares, and every block shows the whole region the same way (a block's near-left corner gets what the table gives the ground's near-left corner, and so on)"
+                ),
+            };
+        }
+        let _ = writeln!(out);
+        let _ = writeln!(out, "               {}", l("奥 (-z)", "far (-z)"));
+        let _ = writeln!(out, "      (0, 0) +----------+ (10, 0)");
+        let _ = writeln!(out, "   -x        |{}|        +x", l("   地面   ", "  ground  "));
+        let _ = writeln!(out, "     (0, 10) +----------+ (10, 10)");
+        let _ = writeln!(out, "               {}", l("手前 (+z)、カメラ", "near (+z), camera"));
+        let _ = writeln!(out);
+        let tasks: [(&str, &str, &str); 3] = [
+            (
+                "a4.t1",
+                "tex_range: 範囲のテクスチャ座標 s_min, s_max, t_min, t_max を求める（(s, t) = (0, 0) は画像の左下、(1, 1) は右上。行は上から数えることに注意）",
+                "tex_range: the region's texture-coordinate range s_min, s_max, t_min, t_max ((s, t) = (0, 0) is the image's bottom-left corner, (1, 1) its top-right; mind that rows count from the top)",
+            ),
+            (
+                "a4.t2",
+                "tex_coords: 四角形 (i, j)（i, j = 0〜9）の 4 頂点のテクスチャ座標を、描く順 (i, j), (i, j+1), (i+1, j+1), (i+1, j) で、i と j から計算する",
+                "tex_coords: the texture coordinates of the 4 corners of square (i, j) (i, j = 0…9), in drawing order (i, j), (i, j+1), (i+1, j+1), (i+1, j), computed from i and j",
+            ),
+            (
+                "a4.t3",
+                "sampler: フィルタ（GL_NEAREST か GL_LINEAR、理由をレポートに）と、画像の一部を座標で繰り返すのに合う折り返し（GL_REPEAT か GL_CLAMP_TO_EDGE）",
+                "sampler: the filter (GL_NEAREST or GL_LINEAR; say why in the report) and the wrap modes (GL_REPEAT or GL_CLAMP_TO_EDGE) that suit a part of an image repeated by its coordinates",
+            ),
+        ];
+        for (id, ja, en) in tasks {
+            let _ = writeln!(out, "  {id}  {}", lang.pick(ja, en));
+        }
+        let _ = writeln!(out);
+        let _ = writeln!(out, "  {}", l("レポートに書くこと:", "The report shows:"));
+        let report: [(&str, &str); 5] = [
+            (
+                "テクスチャ座標の範囲（s_min〜s_max、t_min〜t_max の表）と、マス・画素からの求め方（a4.t1）",
+                "the range of the texture coordinates (a table of s_min…s_max, t_min…t_max) and how it follows from the cells and pixels (a4.t1)",
+            ),
+            (
+                "頂点 (i, j) のテクスチャ座標を i と j で表す式と、各変数の説明。繰り返しがあれば i, j をまとまりの大きさで割った余りを使う（a4.t2）",
+                "the formula of the texture coordinates of vertex (i, j) in i and j, each variable explained; with a repeat, in the remainders of i and j divided by the block size (a4.t2)",
+            ),
+            (
+                "地面の 4 隅（と、まとまりの角）のテクスチャ座標の表",
+                "a table of the texture coordinates at the ground's 4 corners (and the blocks' corners)",
+            ),
+            (
+                "図: 画像上の範囲とその 4 隅、地面の 4 隅、どの角がどこへ行くか",
+                "a figure: the region on the image with its 4 corners, the ground's 4 corners, which goes where",
+            ),
+            (
+                "フィルタと折り返しの設定とその理由（a4.t3）、結果の画像（cargo run --release -- view a4）",
+                "the filter and wrap settings and why (a4.t3), and a picture of the result (cargo run --release -- view a4)",
+            ),
+        ];
+        for (ja, en) in report {
+            let _ = writeln!(out, "    - {}", lang.pick(ja, en));
+        }
+        out
+    }
+}
+
+/// The corners of square `(i, j)` in drawing order as `(di, dj)` steps from vertex `(i, j)`:
+/// `(i, j), (i, j+1), (i+1, j+1), (i+1, j)`, counter-clockwise seen from above, as
+/// `cg_core::shapes::grid` splits it into `{0, 1, 2}` and `{0, 2, 3}`.
+pub const CORNER_STEPS: [(u32, u32); 4] = [(0, 0), (0, 1), (1, 1), (1, 0)];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec(rotation_deg: u32, mirrored: bool, repeat: u32) -> Spec {
+        // C4–D5: columns C–D, rows 4–5 from the top: s ∈ [2/8, 4/8], t ∈ [3/8, 5/8].
+        let region = Region { column: 2, row: 3, columns: 2, rows: 2 };
+        Spec { region, rotation_deg, mirrored, repeat }
+    }
+
+    #[test]
+    fn the_region_in_cells_pixels_and_texture_coordinates() {
+        let r = spec(0, false, 1).region;
+        assert_eq!((r.first(), r.last(), r.name()), ("C4".into(), "D5".into(), "C4–D5".into()));
+        assert_eq!(r.pixels(), [128, 192, 256, 320]);
+        assert_eq!(r.range(), TexRange { s_min: 0.25, s_max: 0.5, t_min: 0.375, t_max: 0.625 });
+        assert_eq!(r.corner_cell(Corner::BottomLeft), "C5");
+        assert_eq!(r.corner_cell(Corner::TopRight), "D4");
+        let a8 = Region { column: 0, row: 7, columns: 1, rows: 1 };
+        assert_eq!(a8.range(), TexRange { s_min: 0.0, s_max: 0.125, t_min: 0.0, t_max: 0.125 });
+        assert_eq!(a8.name(), "A8");
+    }
+
+    /// Worked by hand from the picture of the ground seen from the camera (far edge j = 0 at
+    /// the top of the screen, i growing to the right).
+    #[test]
+    fn corners_land_where_the_pictures_say() {
+        use Corner::*;
+        use GroundCorner::*;
+        let cases = [
+            // upright: the region's bottom-left at the near left
+            ((0, false), [(BottomLeft, NearLeft), (TopLeft, FarLeft), (TopRight, FarRight)]),
+            // a quarter turn counter-clockwise: its top points left, its bottom-left near right
+            ((90, false), [(BottomLeft, NearRight), (TopLeft, NearLeft), (TopRight, FarLeft)]),
+            ((180, false), [(BottomLeft, FarRight), (TopLeft, NearRight), (TopRight, NearLeft)]),
+            ((270, false), [(BottomLeft, FarLeft), (TopLeft, FarRight), (TopRight, NearRight)]),
+            // mirrored: left and right swap, top stays away from the camera
+            ((0, true), [(BottomLeft, NearRight), (TopLeft, FarRight), (TopRight, FarLeft)]),
+            // mirrored, then the top turned to the left
+            ((90, true), [(BottomLeft, FarRight), (TopLeft, FarLeft), (TopRight, NearLeft)]),
+        ];
+        for ((rotation, mirrored), pairs) in cases {
+            let s = spec(rotation, mirrored, 1);
+            for (corner, ground) in pairs {
+                assert_eq!(
+                    s.ground_corner_of(corner),
+                    ground,
+                    "{rotation}° {mirrored}: {corner:?}"
+                );
+                assert_eq!(s.corner_at(ground), corner);
+            }
+        }
+    }
+
+    #[test]
+    fn the_oracle_interpolates_each_block() {
+        let s = spec(0, false, 2);
+        // Upright, 2 × 2 blocks of 5 squares: vertex (0, 10) is a block's near-left corner,
+        // vertex (5, 0) a block's far-left corner and the previous block's far-right one.
+        assert_eq!(s.expected_square(0, 9)[1], Vec2::new(0.25, 0.375));
+        assert_eq!(s.expected_square(5, 0)[0], Vec2::new(0.25, 0.625));
+        assert_eq!(s.expected_square(4, 0)[3], Vec2::new(0.5, 0.625));
+        // The middle of the first block, vertex (2.5, 2.5) — between squares: square (2, 2)'s
+        // corner (3, 3) is 3/5 of the way.
+        let c = s.expected_square(2, 2)[2];
+        assert!((c - Vec2::new(0.25 + 0.6 * 0.25, 0.625 - 0.6 * 0.25)).abs().max_element() < 1e-7);
+    }
+
+    #[test]
+    fn variants_are_deterministic_and_within_the_table() {
+        for seed in 0..500 {
+            let s = variant(&mut VariantRng::from_seed(seed));
+            assert_eq!(s, variant(&mut VariantRng::from_seed(seed)));
+            assert!(REPEATS.contains(&s.repeat));
+            assert!(SQUARES.is_multiple_of(s.repeat));
+            let r = s.region;
+            assert!(r.columns >= 1 && r.rows >= 1 && r.columns <= 4 && r.rows <= 4);
+            assert!(r.column + r.columns <= CELLS && r.row + r.rows <= CELLS);
+            assert!(r.columns * r.rows < CELLS * CELLS, "never the whole image");
+            assert!(s.rotation_deg.is_multiple_of(90) && s.rotation_deg < 360);
+        }
+    }
+
+    #[test]
+    fn the_text_names_the_tasks_and_the_region_in_both_languages() {
+        let s = spec(90, true, 2);
+        for (lang, pixels) in [(Lang::Ja, "x = 128〜256"), (Lang::En, "x = 128…256")] {
+            let text = s.describe(lang);
+            for needle in ["a4.t1", "a4.t2", "a4.t3", "C4–D5", pixels, "(10, 10)", "2 × 2"] {
+                assert!(text.contains(needle), "{needle:?} missing from:\n{text}");
+            }
+        }
+        assert!(s.describe(Lang::Ja).contains("鏡文字"));
+        assert!(s.describe(Lang::En).contains("counter-clockwise"));
+    }
+}
