@@ -47,7 +47,7 @@ impl Var {
         }
     }
 
-    /// Whether it is an angle (degrees; compared around the circle for yaw).
+    /// The unit printed after a value: `°` for the angles, nothing for lengths.
     pub(crate) fn unit(self) -> &'static str {
         match self {
             Var::Yaw | Var::Pitch => "°",
