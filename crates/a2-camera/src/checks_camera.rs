@@ -1,0 +1,180 @@
+//! Checks of a2.t2, `camera()`: the view matrix it leaves on the stack equals
+//! `T(0, 0, −camera_distance) · Rx(−camera_pitch) · Ry(−camera_yaw) · T(−target_x, 0, −target_z)`
+//! (by `cg_core::camera::OrbitCamera::view_matrix`) at many states, the poles included; a
+//! mismatch is explained by the usual wrong products ([`oracle::diagnose_view`]).
+
+use cg_core::glam::{Mat4, Vec4};
+use cg_core::lang::Lang;
+use cg_harness::check::{self, Failure};
+use cg_harness::text::t;
+use cg_harness::{CheckResult, Text, VariantRng};
+
+use crate::oracle;
+use crate::show;
+use crate::{CameraState, Gl, Impl, Spec};
+
+const TASK: &str = "a2.t2";
+
+/// The checks of a2.t2.
+pub(crate) fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
+    vec![
+        check::run("a2.t2.view", TASK, t("視点の変換行列", "the view transform"), || {
+            view_matches(spec, imp, &view_states(spec))
+        }),
+        check::run(
+            "a2.t2.pole",
+            TASK,
+            t(
+                "真上・真下から見た視点の変換行列（camera_pitch = ±90°）",
+                "the view transform looking straight down or up (camera_pitch = ±90°)",
+            ),
+            || view_matches(spec, imp, &pole_states(spec)),
+        ),
+    ]
+}
+
+fn state(yaw: f32, pitch: f32, distance: f32, target: (f32, f32)) -> CameraState {
+    CameraState {
+        camera_yaw: yaw,
+        camera_pitch: pitch,
+        camera_distance: distance,
+        target_x: target.0,
+        target_z: target.1,
+    }
+}
+
+/// The states of a2.t2.view: the spec's start, the course's camera, hand-picked ones (every
+/// quadrant of yaw, up to 359.75°, pitch from −60° to +20°) and 8 seeded ones, all in quarter
+/// degrees; with a pan the target moves too, without one it stays at the origin.
+pub(crate) fn view_states(spec: &Spec) -> Vec<CameraState> {
+    let pan = spec.pan.is_some();
+    let target = |x: f32, z: f32| if pan { (x, z) } else { (0.0, 0.0) };
+    let mut states = vec![
+        spec.start,
+        state(0.0, -30.0, 15.0, (0.0, 0.0)),
+        state(30.0, -30.0, 15.0, target(1.5, -2.0)),
+        state(135.0, -60.0, 8.0, target(-3.0, 0.5)),
+        state(200.0, -10.0, 25.0, target(0.25, 4.0)),
+        state(270.0, 20.0, 12.5, target(-1.0, -1.0)),
+        state(359.75, -45.0, 3.0, target(2.0, 2.5)),
+        state(90.0, 0.0, 40.0, target(-4.5, 1.0)),
+    ];
+    let mut rng = VariantRng::from_seed(0x0A27_EE00);
+    for _ in 0..8 {
+        let quarter = |rng: &mut VariantRng, lo: i64, hi: i64| rng.range(lo, hi) as f32 * 0.25;
+        let yaw = quarter(&mut rng, 0, 1439);
+        let pitch = quarter(&mut rng, -356, 356);
+        let distance = quarter(&mut rng, 8, 200);
+        let (x, z) = (quarter(&mut rng, -20, 20), quarter(&mut rng, -20, 20));
+        states.push(state(yaw, pitch, distance, target(x, z)));
+    }
+    states
+}
+
+/// The states of a2.t2.pole: pitch −90° and +90° at several yaws, and just beside the pole.
+pub(crate) fn pole_states(spec: &Spec) -> Vec<CameraState> {
+    let pan = spec.pan.is_some();
+    let target = |x: f32, z: f32| if pan { (x, z) } else { (0.0, 0.0) };
+    vec![
+        state(0.0, -90.0, 15.0, (0.0, 0.0)),
+        state(45.0, -90.0, 10.0, target(1.0, -2.0)),
+        state(180.0, -90.0, 20.0, target(-0.5, 0.5)),
+        state(300.0, 90.0, 12.0, target(2.0, 1.0)),
+        state(0.0, 90.0, 15.0, (0.0, 0.0)),
+        state(120.0, -89.75, 15.0, target(0.0, 3.0)),
+    ]
+}
+
+/// What the student's camera leaves on a fresh context at `s`: the matrix, or what went wrong.
+pub(crate) fn student_view(imp: &Impl, s: &CameraState) -> Result<Mat4, (String, Text)> {
+    let mut gl = Gl::new();
+    (imp.camera)(&mut gl, s);
+    if let Some(e) = gl.errors().first() {
+        return Err((
+            format!("{}: {}", e.function, e.error.message(Lang::En)),
+            Text::new(
+                format!("camera() の {} がエラーです: {}", e.function, e.error.message(Lang::Ja)),
+                format!("{} in camera() is an error: {}", e.function, e.error.message(Lang::En)),
+            ),
+        ));
+    }
+    gl.model_view().matrix().map_err(|e| {
+        (
+            e.message(Lang::En),
+            Text::new(
+                format!("camera() の変換が不正です: {}", e.message(Lang::Ja)),
+                format!("camera() builds an invalid transform: {}", e.message(Lang::En)),
+            ),
+        )
+    })
+}
+
+/// Where the camera is in world space for a view matrix `m` (`m⁻¹ · (0, 0, 0, 1)`), if `m` is
+/// invertible.
+fn eye(m: &Mat4) -> Option<String> {
+    let det = m.determinant();
+    if !det.is_finite() || det.abs() < 1e-6 {
+        return None;
+    }
+    let p = m.inverse() * Vec4::W;
+    Some(format!("({}, {}, {})", show::num(p.x), show::num(p.y), show::num(p.z)))
+}
+
+/// The student's camera gives the spec's view at every state of `states`.
+fn view_matches(spec: &Spec, imp: &Impl, states: &[CameraState]) -> Result<(), Failure> {
+    let with_target = spec.pan.is_some();
+    let mut matrices = Vec::with_capacity(states.len());
+    for s in states {
+        match student_view(imp, s) {
+            Ok(m) => matrices.push(m),
+            Err((actual, cause)) => {
+                return Err(Failure::new("a valid view transform", actual)
+                    .at(show::state(s, with_target))
+                    .cause(cause)
+                    .hint(hint()));
+            }
+        }
+    }
+    let Some((k, (s, m))) = states
+        .iter()
+        .zip(&matrices)
+        .enumerate()
+        .find(|(_, (s, m))| !oracle::matrices_close(m, &oracle::view_matrix(s)))
+    else {
+        return Ok(());
+    };
+    let expected = oracle::view_matrix(s);
+    let product = oracle::view_product(with_target, s);
+    let written = crate::camera_product(imp).map(|p| p.symbolic()).unwrap_or_else(|e| e.en);
+    let mut cause = oracle::diagnose_view(states, &matrices);
+    if !m.is_finite() {
+        cause = t(
+            "行列に NaN か無限大があります。上方向ベクトルを使う look-at は真上・真下（camera_pitch = ±90°）で定まりません。回転と平行移動の積で作ってください",
+            "the matrix has NaN or infinity: a look-at with an up vector is undefined looking straight down or up (camera_pitch = ±90°); build the view from rotations and translations",
+        );
+    }
+    Err(Failure::new(
+        format!(
+            "V = {} = {} = {}; eye at {}",
+            product.symbolic(),
+            product.simplified().numeric(),
+            show::matrix(&expected),
+            eye(&expected).unwrap_or_default()
+        ),
+        format!(
+            "{}; eye at {}; your camera() builds {written}",
+            show::matrix(m),
+            eye(m).unwrap_or_else(|| "-".to_owned())
+        ),
+    )
+    .at(format!("state {} of {}: {}", k + 1, states.len(), show::state(s, with_target)))
+    .cause(cause)
+    .hint(hint()))
+}
+
+fn hint() -> Text {
+    t(
+        "視点の変換は T(0, 0, -camera_distance) · Rx(-camera_pitch) · Ry(-camera_yaw)（注視点があれば · T(-target_x, 0, -target_z)）: この順に左から gl.translate / gl.rotate を呼びます（角度は度、最後に呼んだ変換が最初に頂点に作用）",
+        "the view is T(0, 0, -camera_distance) · Rx(-camera_pitch) · Ry(-camera_yaw) (with a target, · T(-target_x, 0, -target_z)): call gl.translate / gl.rotate in this order, left to right (angles in degrees; the call made last acts on the vertices first)",
+    )
+}

@@ -1,0 +1,314 @@
+//! How the assignment prints things: variables, gestures, drags, states, matrices, and the
+//! student's view transform with the report's names.
+
+use cg_core::glam::{Mat4, Vec4};
+use cg_core::lang::Lang;
+use cg_core::product::{Factor, MatrixProduct, Param, format_number};
+
+use crate::{CameraState, Drag, DragAxis, Gesture, MouseButton, Operation, Spec};
+
+/// A camera variable.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum Var {
+    Yaw,
+    Pitch,
+    Distance,
+    TargetX,
+    TargetZ,
+}
+
+impl Var {
+    pub(crate) const ALL: [Var; 5] =
+        [Var::Yaw, Var::Pitch, Var::Distance, Var::TargetX, Var::TargetZ];
+
+    /// The variable's name in the program and the report.
+    pub(crate) fn name(self) -> &'static str {
+        match self {
+            Var::Yaw => "camera_yaw",
+            Var::Pitch => "camera_pitch",
+            Var::Distance => "camera_distance",
+            Var::TargetX => "target_x",
+            Var::TargetZ => "target_z",
+        }
+    }
+
+    /// What it means, in a few words.
+    pub(crate) fn meaning(self, lang: Lang) -> &'static str {
+        match self {
+            Var::Yaw => {
+                lang.pick("Y 軸まわりのカメラの向き・方位角 [度]", "turn about the Y axis, degrees")
+            }
+            Var::Pitch => lang.pick("カメラの仰角 [度]", "elevation, degrees"),
+            Var::Distance => {
+                lang.pick("注視点からカメラまでの距離", "from the target to the camera")
+            }
+            Var::TargetX => lang.pick("注視点の x 座標", "the target's x"),
+            Var::TargetZ => lang.pick("注視点の z 座標", "the target's z"),
+        }
+    }
+
+    /// The unit printed after a value: `°` for the angles, nothing for lengths.
+    pub(crate) fn unit(self) -> &'static str {
+        match self {
+            Var::Yaw | Var::Pitch => "°",
+            _ => "",
+        }
+    }
+
+    pub(crate) fn get(self, s: &CameraState) -> f32 {
+        match self {
+            Var::Yaw => s.camera_yaw,
+            Var::Pitch => s.camera_pitch,
+            Var::Distance => s.camera_distance,
+            Var::TargetX => s.target_x,
+            Var::TargetZ => s.target_z,
+        }
+    }
+
+    pub(crate) fn set(self, s: &mut CameraState, value: f32) {
+        match self {
+            Var::Yaw => s.camera_yaw = value,
+            Var::Pitch => s.camera_pitch = value,
+            Var::Distance => s.camera_distance = value,
+            Var::TargetX => s.target_x = value,
+            Var::TargetZ => s.target_z = value,
+        }
+    }
+}
+
+/// A number as the kit prints it (`15`, `-0.5`, `0.025`).
+pub(crate) fn num(x: f32) -> String {
+    format_number(x)
+}
+
+/// A number with its sign always shown (`+10`, `-4`).
+pub(crate) fn signed_num(x: f32) -> String {
+    if x > 0.0 { format!("+{}", num(x)) } else { num(x) }
+}
+
+/// `value` of `var` with its unit: `30°`, `15`.
+pub(crate) fn value(var: Var, x: f32) -> String {
+    format!("{}{}", num(x), var.unit())
+}
+
+/// "Left", "Shift+Right": the gesture in the short, language-neutral form used in locations.
+pub(crate) fn gesture_short(g: Gesture) -> String {
+    let b = match g.button {
+        MouseButton::Left => "Left",
+        MouseButton::Middle => "Middle",
+        MouseButton::Right => "Right",
+    };
+    if g.shift { format!("Shift+{b}") } else { b.to_owned() }
+}
+
+/// "右ボタン", "Shift + 左ボタン" / "right button", "Shift + left button".
+pub(crate) fn gesture(g: Gesture, lang: Lang) -> String {
+    let b = match (g.button, lang) {
+        (MouseButton::Left, Lang::Ja) => "左ボタン",
+        (MouseButton::Middle, Lang::Ja) => "中ボタン",
+        (MouseButton::Right, Lang::Ja) => "右ボタン",
+        (MouseButton::Left, Lang::En) => "left button",
+        (MouseButton::Middle, Lang::En) => "middle button",
+        (MouseButton::Right, Lang::En) => "right button",
+    };
+    if g.shift { format!("Shift + {b}") } else { b.to_owned() }
+}
+
+/// "左右に (dx)" / "left and right (dx)".
+pub(crate) fn axis_words(axis: DragAxis, lang: Lang) -> &'static str {
+    match axis {
+        DragAxis::Horizontal => lang.pick("左右に（dx）", "left and right (dx)"),
+        DragAxis::Vertical => lang.pick("上下に（dy）", "up and down (dy)"),
+    }
+}
+
+/// `dx` or `dy`.
+pub(crate) fn axis_symbol(axis: DragAxis) -> &'static str {
+    match axis {
+        DragAxis::Horizontal => "dx",
+        DragAxis::Vertical => "dy",
+    }
+}
+
+/// The C-style update: `camera_yaw -= 0.5 * dx`.
+pub(crate) fn formula(var: Var, op: &Operation) -> String {
+    let (sign, speed) = if op.per_px < 0.0 { ("-=", -op.per_px) } else { ("+=", op.per_px) };
+    format!("{} {sign} {} * {}", var.name(), num(speed), axis_symbol(op.axis))
+}
+
+/// "右へドラッグすると増える" / "dragging right increases it".
+pub(crate) fn direction_words(var: Var, op: &Operation, lang: Lang) -> String {
+    let up = op.per_px > 0.0;
+    let unit = match (var.unit(), lang) {
+        ("°", Lang::Ja) => format!("1 ピクセルで {}°", num(op.per_px.abs())),
+        ("°", Lang::En) => format!("{}° per pixel", num(op.per_px.abs())),
+        (_, Lang::Ja) => format!("1 ピクセルで {}", num(op.per_px.abs())),
+        (_, Lang::En) => format!("{} per pixel", num(op.per_px.abs())),
+    };
+    match (op.axis, lang) {
+        (DragAxis::Horizontal, Lang::Ja) => {
+            format!("右へドラッグすると{}、{unit}", if up { "増える" } else { "減る" })
+        }
+        (DragAxis::Vertical, Lang::Ja) => {
+            format!("下へドラッグすると{}、{unit}", if up { "増える" } else { "減る" })
+        }
+        (DragAxis::Horizontal, Lang::En) => {
+            format!("dragging right {} it, {unit}", if up { "increases" } else { "decreases" })
+        }
+        (DragAxis::Vertical, Lang::En) => {
+            format!("dragging down {} it, {unit}", if up { "increases" } else { "decreases" })
+        }
+    }
+}
+
+/// Every gesture the checks try: the three buttons, each with and without Shift.
+pub(crate) const ALL_GESTURES: [Gesture; 6] = [
+    Gesture { button: MouseButton::Left, shift: false },
+    Gesture { button: MouseButton::Middle, shift: false },
+    Gesture { button: MouseButton::Right, shift: false },
+    Gesture { button: MouseButton::Left, shift: true },
+    Gesture { button: MouseButton::Middle, shift: true },
+    Gesture { button: MouseButton::Right, shift: true },
+];
+
+/// The gestures the spec does not use, listed in words.
+pub(crate) fn unused_gestures(spec: &Spec, lang: Lang) -> String {
+    let used: Vec<Gesture> = spec.operations().iter().map(|(_, op)| op.gesture).collect();
+    let unused: Vec<String> =
+        ALL_GESTURES.iter().filter(|g| !used.contains(g)).map(|&g| gesture(g, lang)).collect();
+    unused.join(lang.pick("、", ", "))
+}
+
+/// `camera_yaw = 30°, camera_pitch = -30°, camera_distance = 15[, target = (1, -0.5)]`.
+pub(crate) fn state(s: &CameraState, with_target: bool) -> String {
+    let mut out = format!(
+        "camera_yaw = {}°, camera_pitch = {}°, camera_distance = {}",
+        num(s.camera_yaw),
+        num(s.camera_pitch),
+        num(s.camera_distance)
+    );
+    if with_target {
+        out.push_str(&format!(", target_x = {}, target_z = {}", num(s.target_x), num(s.target_z)));
+    }
+    out
+}
+
+/// `Right dx = +10 dy = 0`.
+pub(crate) fn drag(d: &Drag) -> String {
+    format!(
+        "{} dx = {} dy = {}",
+        gesture_short(Gesture { button: d.button, shift: d.shift }),
+        signed_num(d.dx),
+        signed_num(d.dy)
+    )
+}
+
+/// The rows of a matrix on one line: `[1 0 0 0; 0 0.866 0.5 0; …]`.
+pub(crate) fn matrix(m: &Mat4) -> String {
+    let rows: Vec<String> = (0..4)
+        .map(|r| {
+            let row = m.row(r);
+            [row.x, row.y, row.z, row.w].iter().map(|&x| num(x)).collect::<Vec<_>>().join(" ")
+        })
+        .collect();
+    format!("[{}]", rows.join("; "))
+}
+
+/// `(x, y, z, w)`.
+pub(crate) fn vec4(v: Vec4) -> String {
+    format!("({}, {}, {}, {})", num(v.x), num(v.y), num(v.z), num(v.w))
+}
+
+/// The serde form of a button: `"left"`, `"middle"`, `"right"`.
+pub(crate) fn serialize_button<S: serde::Serializer>(
+    b: &MouseButton,
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    s.serialize_str(match b {
+        MouseButton::Left => "left",
+        MouseButton::Middle => "middle",
+        MouseButton::Right => "right",
+    })
+}
+
+/// The state [`crate::camera_product`] runs the camera at: every value (and its negative)
+/// different from every other and from 0 and ±1, so each number in the product names one
+/// variable.
+pub(crate) const PROBE: CameraState = CameraState {
+    camera_yaw: 37.0,
+    camera_pitch: -23.0,
+    camera_distance: 13.5,
+    target_x: 1.25,
+    target_z: -0.75,
+};
+
+/// `product` with every parameter that equals a variable of `s` (or its negative) named after
+/// it: `Rx(23°)` becomes `Rx(-camera_pitch)` when `s.camera_pitch` is −23. Parameters that
+/// already have a symbol keep it. Meant for [`PROBE`], whose values are all distinct.
+pub(crate) fn symbolize(product: &MatrixProduct, s: &CameraState) -> MatrixProduct {
+    let name = |p: &Param| -> Param {
+        if p.symbol.is_some() {
+            return p.clone();
+        }
+        for var in Var::ALL {
+            let v = var.get(s);
+            let close = |a: f32, b: f32| (a - b).abs() <= 1e-4 * b.abs().max(1.0);
+            if close(p.value, v) {
+                return Param::sym(var.name(), p.value);
+            }
+            if close(p.value, -v) {
+                return Param::sym(format!("-{}", var.name()), p.value);
+            }
+        }
+        p.clone()
+    };
+    let factors = product
+        .factors
+        .iter()
+        .map(|f| match f {
+            Factor::Translate(p) => Factor::Translate([name(&p[0]), name(&p[1]), name(&p[2])]),
+            Factor::Scale(p) => Factor::Scale([name(&p[0]), name(&p[1]), name(&p[2])]),
+            Factor::Rotate { axis, angle_deg } => {
+                Factor::Rotate { axis: *axis, angle_deg: name(angle_deg) }
+            }
+            other => other.clone(),
+        })
+        .collect();
+    MatrixProduct { factors }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cg_core::product::Axis;
+
+    #[test]
+    fn the_probe_names_each_number_once() {
+        let p = MatrixProduct::identity()
+            .then(Factor::translate(cg_core::glam::Vec3::new(0.0, 0.0, -13.5)))
+            .then(Factor::rotate(Axis::X, Param::num(23.0)))
+            .then(Factor::rotate(Axis::Y, Param::num(-37.0)))
+            .then(Factor::translate(cg_core::glam::Vec3::new(-1.25, 0.0, 0.75)))
+            .then(Factor::rotate(Axis::X, Param::num(0.4014)));
+        assert_eq!(
+            symbolize(&p, &PROBE).symbolic(),
+            "T(0, 0, -camera_distance) · Rx(-camera_pitch) · Ry(-camera_yaw) · T(-target_x, 0, -target_z) · Rx(0.4014°)"
+        );
+    }
+
+    #[test]
+    fn formulas_read_like_c() {
+        let op = Operation {
+            gesture: Gesture { button: MouseButton::Right, shift: false },
+            axis: DragAxis::Vertical,
+            per_px: -1.0,
+        };
+        assert_eq!(formula(Var::Pitch, &op), "camera_pitch -= 1 * dy");
+        assert_eq!(
+            direction_words(Var::Pitch, &op, Lang::En),
+            "dragging down decreases it, 1° per pixel"
+        );
+        let d = Drag { button: MouseButton::Left, shift: true, dx: 10.0, dy: -4.0 };
+        assert_eq!(drag(&d), "Shift+Left dx = +10 dy = -4");
+    }
+}

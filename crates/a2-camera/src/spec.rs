@@ -1,0 +1,281 @@
+//! The per-student variant (table version 1, frozen) and the assignment text.
+
+use std::fmt::Write as _;
+
+use cg_core::lang::Lang;
+use cg_harness::VariantRng;
+
+use crate::show::{self, Var};
+use crate::{CameraState, DragAxis, Gesture, MouseButton, Operation, Pan, Spec};
+
+const fn plain(button: MouseButton) -> Gesture {
+    Gesture { button, shift: false }
+}
+
+const fn shifted(button: MouseButton) -> Gesture {
+    Gesture { button, shift: true }
+}
+
+const L: Gesture = plain(MouseButton::Left);
+const M: Gesture = plain(MouseButton::Middle);
+const R: Gesture = plain(MouseButton::Right);
+const SL: Gesture = shifted(MouseButton::Left);
+const SM: Gesture = shifted(MouseButton::Middle);
+const SR: Gesture = shifted(MouseButton::Right);
+
+/// Table v1 — the gestures of (rotate: yaw on dx and pitch on dy, distance, pan), after
+/// programs students meet: the course's own (right rotates, left zooms), swapped, Blender-like
+/// (middle rotates, Shift + middle pans), Maya-like, and layouts with Shift. Frozen.
+pub(crate) const LAYOUTS: [(Gesture, Gesture, Gesture); 8] =
+    [(R, L, M), (L, R, M), (M, R, SM), (L, M, R), (R, SR, L), (L, SL, R), (R, M, SR), (M, SM, L)];
+
+/// Table v1 — degrees per pixel for yaw and pitch (the course: 1.0). Frozen.
+pub(crate) const ROTATE_DEG_PER_PX: [f32; 5] = [0.25, 0.5, 1.0, 1.5, 2.0];
+/// Table v1 — scene units per pixel for the distance (the course's extension: 0.2). Frozen.
+pub(crate) const DISTANCE_PER_PX: [f32; 5] = [0.05, 0.1, 0.2, 0.25, 0.5];
+/// Table v1 — scene units per pixel for the target. Frozen.
+pub(crate) const PAN_PER_PX: [f32; 4] = [0.01, 0.02, 0.025, 0.05];
+/// Table v1 — (pitch_min, pitch_max) in degrees (the course: −90, 0). Frozen.
+pub(crate) const PITCH_RANGES: [(f32, f32); 6] =
+    [(-90.0, 0.0), (-90.0, 90.0), (-90.0, -10.0), (-80.0, 0.0), (-85.0, 30.0), (-60.0, 60.0)];
+/// Table v1 — closest distance. Frozen.
+pub(crate) const DISTANCE_MIN: [f32; 4] = [1.5, 2.0, 3.0, 5.0];
+/// Table v1 — farthest distance. Frozen.
+pub(crate) const DISTANCE_MAX: [f32; 4] = [25.0, 30.0, 40.0, 50.0];
+/// Table v1 — the target's limit (the ground is ±5). Frozen.
+pub(crate) const PAN_LIMIT: [f32; 3] = [3.0, 4.0, 5.0];
+/// Table v1 — camera_yaw at start. Frozen.
+pub(crate) const START_YAW: [f32; 6] = [0.0, 30.0, 45.0, 90.0, 180.0, 315.0];
+/// Table v1 — camera_pitch at start (inside every pitch range). Frozen.
+pub(crate) const START_PITCH: [f32; 4] = [-20.0, -30.0, -40.0, -45.0];
+/// Table v1 — camera_distance at start (inside every distance range). Frozen.
+pub(crate) const START_DISTANCE: [f32; 4] = [10.0, 12.0, 15.0, 20.0];
+
+/// `sign · value`, from a draw of 0 or 1 (`negative_first`: draw 0 is the negative sign).
+fn signed(rng: &mut VariantRng, value: f32, negative_first: bool) -> f32 {
+    let negative = (rng.below(2) == 0) == negative_first;
+    if negative { -value } else { value }
+}
+
+/// The student's variant, drawn from the frozen stream of their number and table version.
+///
+/// Table version 1 draws, in this order: the layout (8), whether there is a pan (2), the
+/// distance drag's direction (2: up/down as in the course, or left/right), yaw speed (5) and
+/// sign (2: the course's `−=` first), pitch speed and sign (the course's `−=` first), distance
+/// speed and sign (the course's `+=` first), the pitch range (6), the closest (4) and farthest
+/// (4) distance, the start yaw (6), pitch (4) and distance (4); then, with a pan, the speed and
+/// sign of target_x and of target_z and the limit (3). Every number is an exact entry of a
+/// table above: no arithmetic on random bits.
+#[must_use]
+pub fn variant(rng: &mut VariantRng) -> Spec {
+    let (rotate, zoom, pan_gesture) = *rng.pick(&LAYOUTS);
+    let has_pan = rng.below(2) == 1;
+    let zoom_axis = if rng.below(2) == 0 { DragAxis::Vertical } else { DragAxis::Horizontal };
+    let yaw_speed = *rng.pick(&ROTATE_DEG_PER_PX);
+    let yaw = Operation {
+        gesture: rotate,
+        axis: DragAxis::Horizontal,
+        per_px: signed(rng, yaw_speed, true),
+    };
+    let pitch_speed = *rng.pick(&ROTATE_DEG_PER_PX);
+    let pitch = Operation {
+        gesture: rotate,
+        axis: DragAxis::Vertical,
+        per_px: signed(rng, pitch_speed, true),
+    };
+    let distance_speed = *rng.pick(&DISTANCE_PER_PX);
+    let distance =
+        Operation { gesture: zoom, axis: zoom_axis, per_px: signed(rng, distance_speed, false) };
+    let (pitch_min, pitch_max) = *rng.pick(&PITCH_RANGES);
+    let distance_min = *rng.pick(&DISTANCE_MIN);
+    let distance_max = *rng.pick(&DISTANCE_MAX);
+    let start = CameraState {
+        camera_yaw: *rng.pick(&START_YAW),
+        camera_pitch: *rng.pick(&START_PITCH),
+        camera_distance: *rng.pick(&START_DISTANCE),
+        target_x: 0.0,
+        target_z: 0.0,
+    };
+    let pan = has_pan.then(|| {
+        let x_speed = *rng.pick(&PAN_PER_PX);
+        let x = Operation {
+            gesture: pan_gesture,
+            axis: DragAxis::Horizontal,
+            per_px: signed(rng, x_speed, false),
+        };
+        let z_speed = *rng.pick(&PAN_PER_PX);
+        let z = Operation {
+            gesture: pan_gesture,
+            axis: DragAxis::Vertical,
+            per_px: signed(rng, z_speed, false),
+        };
+        Pan { x, z, limit: *rng.pick(&PAN_LIMIT) }
+    });
+    Spec { start, yaw, pitch, pitch_min, pitch_max, distance, distance_min, distance_max, pan }
+}
+
+impl Spec {
+    /// The spec's operations with the variable each one drives, in the report's order.
+    #[must_use]
+    pub(crate) fn operations(&self) -> Vec<(Var, Operation)> {
+        let mut ops =
+            vec![(Var::Yaw, self.yaw), (Var::Pitch, self.pitch), (Var::Distance, self.distance)];
+        if let Some(pan) = &self.pan {
+            ops.push((Var::TargetX, pan.x));
+            ops.push((Var::TargetZ, pan.z));
+        }
+        ops
+    }
+
+    /// The range a variable is kept in, in words: `wrapped into [0, 360)`, `-90 ≤ camera_pitch
+    /// ≤ 0 (clamped)`.
+    pub(crate) fn range_text(&self, var: Var, lang: Lang) -> String {
+        let n = show::num;
+        let name = var.name();
+        let clamp = |lo: f32, hi: f32| match lang {
+            Lang::Ja => format!("{} ≤ {name} ≤ {} に制限", n(lo), n(hi)),
+            Lang::En => format!("clamped to {} ≤ {name} ≤ {}", n(lo), n(hi)),
+        };
+        match var {
+            Var::Yaw => lang
+                .pick(
+                    "0 ≤ camera_yaw < 360 に折り返す（360 → 0、-1 → 359）",
+                    "wrapped into 0 ≤ camera_yaw < 360 (360 → 0, -1 → 359)",
+                )
+                .to_owned(),
+            Var::Pitch => clamp(self.pitch_min, self.pitch_max),
+            Var::Distance => clamp(self.distance_min, self.distance_max),
+            Var::TargetX | Var::TargetZ => {
+                let l = self.pan.map_or(0.0, |p| p.limit);
+                clamp(-l, l)
+            }
+        }
+    }
+
+    /// Each camera variable with what changes it and how, in `lang` — the explanation the
+    /// report gives for every variable of the view transform (各変数の説明: どのような操作により、
+    /// どのように変化する変数か): `("camera_yaw", "右ボタンで左右にドラッグ: camera_yaw -= 0.5 * dx
+    /// [度] …")`.
+    #[must_use]
+    pub fn variables(&self, lang: Lang) -> Vec<(String, String)> {
+        self.operations()
+            .into_iter()
+            .map(|(var, op)| {
+                let text = match lang {
+                    Lang::Ja => format!(
+                        "{}（{}）: {}で{}ドラッグ — {}（{}）。{}",
+                        var.name(),
+                        var.meaning(lang),
+                        show::gesture(op.gesture, lang),
+                        show::axis_words(op.axis, lang),
+                        show::formula(var, &op),
+                        show::direction_words(var, &op, lang),
+                        self.range_text(var, lang),
+                    ),
+                    Lang::En => format!(
+                        "{} ({}): drag the {} {} — {} ({}); {}",
+                        var.name(),
+                        var.meaning(lang),
+                        show::gesture(op.gesture, lang),
+                        show::axis_words(op.axis, lang),
+                        show::formula(var, &op),
+                        show::direction_words(var, &op, lang),
+                        self.range_text(var, lang),
+                    ),
+                };
+                (var.name().to_owned(), text)
+            })
+            .collect()
+    }
+
+    /// The assignment text for this variant, in `lang`: the operations with this student's
+    /// numbers, the tasks a2.t1–a2.t3, and what the report must show.
+    #[must_use]
+    pub fn describe(&self, lang: Lang) -> String {
+        let mut out = String::new();
+        let s = &self.start;
+        let start = show::state(s, self.pan.is_some());
+        match lang {
+            Lang::Ja => {
+                out.push_str("2. 視点操作インターフェースの拡張 (a2)\n\n");
+                out.push_str(
+                    "サンプルプログラムの視点操作を拡張し、次のマウス操作でカメラを動かせるようにすること。\n\
+                     dx, dy は motion() が呼ばれるたびの、前回の位置からのマウスの移動量（ピクセル）: \
+                     dx は右が正、dy は下が正（GLUT のウィンドウ座標）。\n\n",
+                );
+            }
+            Lang::En => {
+                out.push_str("2. Camera interface (a2)\n\n");
+                out.push_str(
+                    "Extend the sample program's camera so that these mouse operations move it.\n\
+                     dx and dy are how far the mouse moved since the last call of motion(), in \
+                     pixels: dx positive to the right, dy positive down (GLUT's window coordinates).\n\n",
+                );
+            }
+        }
+        for (_, text) in self.variables(lang) {
+            let _ = writeln!(out, "  - {text}");
+        }
+        let unused = show::unused_gestures(self, lang);
+        match lang {
+            Lang::Ja => {
+                let _ = writeln!(
+                    out,
+                    "  - 上にない組み合わせ（{unused}、Shift の有無の違い、上にない方向）のドラッグでは、どの変数も変わらない。"
+                );
+                if self.pan.is_none() {
+                    out.push_str(
+                        "  - 注視点は原点 (0, 0, 0) のまま（target_x = target_z = 0）。\n",
+                    );
+                }
+                let _ = writeln!(out, "  - 初期値: {start}\n");
+                out.push_str(
+                    "課題:\n\
+                     \x20 a2.t1  motion(spec, state, drag): 上のとおりに変数を変える（範囲の制限と折り返しを含む）。\n\
+                     \x20 a2.t2  camera(gl, state): 視点の変換（ワールド座標系 → カメラ座標系）を gl.translate / gl.rotate\n\
+                     \x20        （glTranslatef / glRotatef）で設定する。カメラは注視点から camera_distance だけ離れ、\n\
+                     \x20        camera_pitch（仰角）と camera_yaw（Y 軸まわり）だけ回った位置から注視点を見る。\n\
+                     \x20 a2.t3  display(gl, state): 単位行列 → 視点の変換（camera）→ 光源の位置 (10, 10, 10, 1)\n\
+                     \x20        → 地面と四角すい（draw_course_objects）。光源の位置は視点の変換の後に設定して、\n\
+                     \x20        ワールド座標系に固定すること。\n\n\
+                     レポートに書くこと:\n\
+                     \x20 - 視点操作のための変換行列を、回転変換・平行移動変換の積の形で示す（4×4 行列を並べて、\n\
+                     \x20   (x, y, z, 1) → (x', y', z', 1)）。どの行列が何をするかも説明する。\n\
+                     \x20 - 各変数の説明: どのような操作により、どのように変化する変数か（上の各行、範囲を含む）。\n\
+                     \x20 - 光源の位置を視点の変換の後に設定する理由。\n\
+                     確かめ方: cargo run --release -- check a2 / 結果の絵: cargo run --release -- view a2\n",
+                );
+            }
+            Lang::En => {
+                let _ = writeln!(
+                    out,
+                    "  - A drag not listed above ({unused}, with Shift where it is not listed or without it where it is, \
+                     or in a direction not listed) changes no variable."
+                );
+                if self.pan.is_none() {
+                    out.push_str(
+                        "  - The target stays at the origin (0, 0, 0) (target_x = target_z = 0).\n",
+                    );
+                }
+                let _ = writeln!(out, "  - At start: {start}\n");
+                out.push_str(
+                    "Tasks:\n\
+                     \x20 a2.t1  motion(spec, state, drag): change the variables as listed (clamps and wrap included).\n\
+                     \x20 a2.t2  camera(gl, state): the view transform (world → camera coordinates) with gl.translate /\n\
+                     \x20        gl.rotate (glTranslatef / glRotatef). The camera looks at the target from camera_distance\n\
+                     \x20        away, raised by camera_pitch and turned by camera_yaw about the Y axis.\n\
+                     \x20 a2.t3  display(gl, state): identity → the view transform (camera) → the light position\n\
+                     \x20        (10, 10, 10, 1) → the ground and the pyramid (draw_course_objects). Set the light after\n\
+                     \x20        the view transform, so it stays fixed in world coordinates.\n\n\
+                     The report shows:\n\
+                     \x20 - the view transform as a product of rotations and translations (the 4×4 matrices side by\n\
+                     \x20   side, (x, y, z, 1) → (x', y', z', 1)), and what each factor does;\n\
+                     \x20 - each variable: which operation changes it and how (each line above, with its range);\n\
+                     \x20 - why the light position is set after the view transform.\n\
+                     Check with: cargo run --release -- check a2 / see it: cargo run --release -- view a2\n",
+                );
+            }
+        }
+        out
+    }
+}

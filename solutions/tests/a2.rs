@@ -1,0 +1,247 @@
+//! Assignment a2 (camera interface): the reference answers pass every check for students whose
+//! variants cover every option of the table; the pristine stubs fail every check; the variant
+//! table is deterministic, valid and diverse; the texts name the tasks in both languages; the
+//! report's product and the view come out of the student's code.
+
+use std::collections::BTreeSet;
+
+use cg_a2::{CameraState, DragAxis, Gesture, MouseButton, Spec};
+use cg_core::lang::Lang;
+use cg_harness::check::Outcome;
+use cg_harness::{StudentNumber, TableVersion, VariantRng};
+
+/// Students whose variants together cover all 8 layouts, all 6 pitch ranges, both kinds of
+/// distance drag, with and without a pan, and both signs of every operation (asserted below).
+const STUDENTS: [&str; 10] = [
+    "20260001", "20260002", "20260003", "20260004", "20260005", "20260007", "20260009", "20260010",
+    "20260013", "20260021",
+];
+
+fn spec_of(student: &str) -> Spec {
+    let n: StudentNumber = student.parse().expect("a valid student number");
+    cg_a2::variant(&mut VariantRng::new(&n, TableVersion::V1, cg_a2::ID))
+}
+
+fn gesture_name(g: Gesture) -> String {
+    let b = match g.button {
+        MouseButton::Left => "L",
+        MouseButton::Middle => "M",
+        MouseButton::Right => "R",
+    };
+    if g.shift { format!("S{b}") } else { b.to_owned() }
+}
+
+/// The layout of a spec, as (rotate gesture, distance gesture): unique per layout of the table.
+fn layout(spec: &Spec) -> (String, String) {
+    (gesture_name(spec.yaw.gesture), gesture_name(spec.distance.gesture))
+}
+
+#[test]
+fn the_chosen_students_cover_every_option() {
+    let specs: Vec<Spec> = STUDENTS.iter().map(|s| spec_of(s)).collect();
+    let layouts: BTreeSet<_> = specs.iter().map(layout).collect();
+    assert_eq!(layouts.len(), 8, "{layouts:?}");
+    let ranges: BTreeSet<_> =
+        specs.iter().map(|s| (s.pitch_min as i32, s.pitch_max as i32)).collect();
+    assert_eq!(ranges.len(), 6, "{ranges:?}");
+    let has = |f: &dyn Fn(&Spec) -> bool| specs.iter().any(f) && !specs.iter().all(f);
+    assert!(has(&|s| s.pan.is_some()), "with and without a pan");
+    assert!(has(&|s| s.distance.axis == DragAxis::Vertical), "both distance drags");
+    assert!(has(&|s| s.yaw.per_px > 0.0), "both yaw signs");
+    assert!(has(&|s| s.pitch.per_px > 0.0), "both pitch signs");
+    assert!(has(&|s| s.distance.per_px > 0.0), "both distance signs");
+    assert!(has(&|s| s.pitch_min == -90.0), "the pole reachable and not");
+}
+
+#[test]
+fn every_check_passes_on_the_reference_answers() {
+    let solution = cg_solutions::a2::implementation();
+    for student in STUDENTS {
+        let spec = spec_of(student);
+        let results = cg_a2::checks(&spec, &solution);
+        let expected = if spec.pan.is_some() { 16 } else { 14 };
+        assert_eq!(results.len(), expected, "{student}");
+        for r in &results {
+            assert!(r.passed(), "{student}: {} failed on the solution: {:?}", r.id, r.outcome);
+            assert!(r.id.starts_with(&format!("{}.", r.task)), "{}", r.id);
+            assert!(!r.title.ja.is_empty() && !r.title.en.is_empty(), "{}", r.id);
+        }
+    }
+}
+
+#[test]
+fn every_check_fails_on_the_pristine_stubs() {
+    let stub = cg_exercises::a2::implementation();
+    for student in STUDENTS {
+        let spec = spec_of(student);
+        for r in cg_a2::checks(&spec, &stub) {
+            assert!(!r.passed(), "{student}: {} passes on the stubs", r.id);
+            // The stubs are placeholders (the window must still open): they fail, never panic.
+            let Outcome::Fail(f) = &r.outcome else {
+                panic!("{student}: {} is {:?}, not a failure", r.id, r.outcome)
+            };
+            for text in [&f.cause, &f.hint] {
+                assert!(!text.ja.is_empty() && !text.en.is_empty(), "{}: {f:?}", r.id);
+            }
+            assert!(f.location.as_deref().is_some_and(|l| !l.is_empty()), "{}: {f:?}", r.id);
+        }
+    }
+}
+
+#[test]
+fn variants_are_deterministic_valid_and_exact() {
+    for n in 0..300u32 {
+        let student = format!("{:08}", 20_250_000 + n * 7);
+        let spec = spec_of(&student);
+        assert_eq!(spec, spec_of(&student), "deterministic");
+        let s = spec.start;
+        assert!((spec.pitch_min..=spec.pitch_max).contains(&s.camera_pitch), "{student}");
+        assert!((spec.distance_min..=spec.distance_max).contains(&s.camera_distance), "{student}");
+        assert!((0.0..360.0).contains(&s.camera_yaw), "{student}");
+        assert_eq!((s.target_x, s.target_z), (0.0, 0.0));
+        // Yaw and pitch share the rotate gesture, dx and dy; every gesture of a spec is distinct
+        // per operation pair (the distance never shares the rotate gesture).
+        assert_eq!(spec.yaw.gesture, spec.pitch.gesture);
+        assert_eq!((spec.yaw.axis, spec.pitch.axis), (DragAxis::Horizontal, DragAxis::Vertical));
+        assert_ne!(spec.distance.gesture, spec.yaw.gesture, "{student}");
+        if let Some(pan) = spec.pan {
+            assert_eq!(pan.x.gesture, pan.z.gesture);
+            assert_ne!(pan.x.gesture, spec.yaw.gesture, "{student}");
+            assert_ne!(pan.x.gesture, spec.distance.gesture, "{student}");
+            assert!(pan.limit > 0.0 && pan.limit <= 5.0);
+        }
+        // Friendly numbers: every speed times a whole number of pixels is exact in quarter
+        // degrees (angles) or in hundredths (lengths).
+        for per_px in [spec.yaw.per_px, spec.pitch.per_px] {
+            assert_eq!((per_px * 4.0).fract(), 0.0, "{student}: {per_px}");
+        }
+    }
+}
+
+#[test]
+fn the_spec_is_json_for_tools() {
+    for student in STUDENTS {
+        let n: StudentNumber = student.parse().unwrap();
+        let json = cg_assign::Assignment::for_student(&n, TableVersion::V1).to_json();
+        let a2 = &json["a2"];
+        assert!(
+            ["left", "middle", "right"].contains(&a2["yaw"]["gesture"]["button"].as_str().unwrap())
+        );
+        assert!(a2["yaw"]["per_px"].is_number() && a2["pitch_min"].is_number(), "{a2}");
+        assert_eq!(a2["pan"].is_null(), spec_of(student).pan.is_none(), "{a2}");
+        assert!(["horizontal", "vertical"].contains(&a2["distance"]["axis"].as_str().unwrap()));
+    }
+}
+
+#[test]
+fn the_table_is_diverse_among_a_few_dozen_students() {
+    let specs: Vec<Spec> =
+        (1..=48u32).map(|n| spec_of(&format!("{:08}", 20_260_000 + n))).collect();
+    let count =
+        |key: &dyn Fn(&Spec) -> String| specs.iter().map(key).collect::<BTreeSet<_>>().len();
+    assert_eq!(count(&|s| format!("{:?}", layout(s))), 8, "layouts");
+    assert_eq!(count(&|s| s.yaw.per_px.abs().to_string()), 5, "yaw speeds");
+    assert_eq!(count(&|s| s.pitch.per_px.abs().to_string()), 5, "pitch speeds");
+    assert_eq!(count(&|s| s.distance.per_px.abs().to_string()), 5, "distance speeds");
+    assert_eq!(count(&|s| format!("{} {}", s.pitch_min, s.pitch_max)), 6, "pitch ranges");
+    assert_eq!(count(&|s| s.distance_min.to_string()), 4, "closest distances");
+    assert_eq!(count(&|s| s.distance_max.to_string()), 4, "farthest distances");
+    assert_eq!(count(&|s| s.start.camera_yaw.to_string()), 6, "start yaws");
+    assert_eq!(count(&|s| s.start.camera_pitch.to_string()), 4, "start pitches");
+    assert_eq!(count(&|s| s.start.camera_distance.to_string()), 4, "start distances");
+    let pans: Vec<_> = specs.iter().filter_map(|s| s.pan).collect();
+    assert!(pans.len() >= 12, "{} pans", pans.len());
+    let pan_count =
+        |key: &dyn Fn(&cg_a2::Pan) -> String| pans.iter().map(key).collect::<BTreeSet<_>>().len();
+    assert_eq!(pan_count(&|p| p.x.per_px.abs().to_string()), 4, "pan speeds");
+    assert_eq!(pan_count(&|p| p.limit.to_string()), 3, "pan limits");
+    // The whole combination differs between students far more often than not.
+    let distinct: BTreeSet<String> = specs.iter().map(|s| format!("{s:?}")).collect();
+    assert_eq!(distinct.len(), specs.len());
+}
+
+#[test]
+fn the_text_names_every_task_and_the_students_numbers_in_both_languages() {
+    for student in STUDENTS {
+        let spec = spec_of(student);
+        for lang in [Lang::Ja, Lang::En] {
+            let text = spec.describe(lang);
+            for needle in
+                ["a2.t1", "a2.t2", "a2.t3", "camera_yaw", "camera_pitch", "camera_distance"]
+            {
+                assert!(text.contains(needle), "{student} {lang}: no {needle} in\n{text}");
+            }
+            let speed = cg_core::product::format_number(spec.yaw.per_px.abs());
+            assert!(
+                text.contains(&format!(
+                    "camera_yaw {} {speed} * dx",
+                    if spec.yaw.per_px < 0.0 { "-=" } else { "+=" }
+                )),
+                "{text}"
+            );
+            let range = format!(
+                "{} ≤ camera_pitch ≤ {}",
+                cg_core::product::format_number(spec.pitch_min),
+                cg_core::product::format_number(spec.pitch_max)
+            );
+            assert!(text.contains(&range), "{student} {lang}: no {range} in\n{text}");
+            // The target moves with the mouse exactly for the students with a pan.
+            assert_eq!(
+                text.contains("target_x +=") || text.contains("target_x -="),
+                spec.pan.is_some()
+            );
+            assert!(text.contains(lang.pick("レポート", "report")), "{text}");
+        }
+        let vars = spec.variables(Lang::Ja);
+        assert_eq!(vars.len(), if spec.pan.is_some() { 5 } else { 3 });
+        assert!(vars.iter().all(|(name, text)| text.starts_with(name.as_str())));
+    }
+}
+
+#[test]
+fn the_reports_product_comes_from_the_students_camera() {
+    let product = cg_a2::camera_product(&cg_solutions::a2::implementation()).expect("solution");
+    assert_eq!(
+        product.symbolic(),
+        "T(0, 0, -camera_distance) · Rx(-camera_pitch) · Ry(-camera_yaw) · T(-target_x, 0, -target_z)"
+    );
+    assert!(product.latex(true).expect("latex").contains(r"\cos(-camera\_pitch)"));
+    // The stub builds nothing: the identity.
+    assert_eq!(cg_a2::camera_product(&cg_exercises::a2::implementation()).unwrap().symbolic(), "I");
+    // The spec's product has the same matrix as the reference's at any state (independently of
+    // the probe): checked against the core's orbit camera.
+    let s = CameraState {
+        camera_yaw: 123.5,
+        camera_pitch: -67.25,
+        camera_distance: 7.5,
+        target_x: -1.5,
+        target_z: 2.0,
+    };
+    let expected = cg_a2::expected_product(&spec_of("20260021"), &s).matrix().unwrap();
+    let orbit = cg_core::camera::OrbitCamera {
+        yaw_deg: s.camera_yaw,
+        pitch_deg: s.camera_pitch,
+        distance: s.camera_distance,
+        target: cg_core::glam::Vec3::new(s.target_x, 0.0, s.target_z),
+        ..cg_core::camera::OrbitCamera::course_sample()
+    };
+    let eye = expected.inverse() * cg_core::glam::Vec4::W;
+    let oracle_eye = orbit.eye_position();
+    assert!((eye.truncate() - oracle_eye).abs().max_element() < 1e-4, "{eye} vs {oracle_eye}");
+}
+
+#[test]
+fn the_view_draws_the_students_frame() {
+    for student in ["20260004", "20260021", "20260002"] {
+        let spec = spec_of(student);
+        let scene = cg_a2::view(&spec, &cg_solutions::a2::implementation(), 0.0).expect("a scene");
+        let names: Vec<&str> = scene.objects.iter().map(|o| o.name.as_str()).collect();
+        assert_eq!(names, ["ground", "pyramid"]);
+        // The scripted drags turn the camera by 40° from the start (and 30° per second).
+        let later = cg_a2::view(&spec, &cg_solutions::a2::implementation(), 2.0).expect("a scene");
+        assert_ne!(scene.objects[0].transform, later.objects[0].transform, "time turns the view");
+        // The stubs draw nothing yet: the view says so instead of an empty picture.
+        let why = cg_a2::view(&spec, &cg_exercises::a2::implementation(), 0.0).unwrap_err();
+        assert!(why.ja.contains("a2.t3") && why.en.contains("a2.t3"), "{why:?}");
+    }
+}
