@@ -39,7 +39,7 @@ use cg_shading::{Pixel, Shading};
 /// 環境光 Ia·ka を返します（チャンネルごとの積、0〜1 に切り詰めない）。
 /// ヒント: `Vec3` 同士の `*` はチャンネルごとの積です。
 pub fn ambient(ia: Rgb, ka: Rgb) -> Rgb {
-    todo!("s.t1: return the ambient term Ia·ka")
+    todo!("s.t1: 環境光 Ia·ka を返す / return the ambient term Ia·ka")
 }
 
 /// **s.t2 拡散反射光 (diffuse reflection, Lambert's cosine law)**: `Ii·kd·max(N·L, 0)`.
@@ -54,7 +54,7 @@ pub fn ambient(ia: Rgb, ka: Rgb) -> Rgb {
 /// ランバートの余弦則 Id = kd·Ii·cos θ = kd·Ii·(N·L)。光が面の裏から当たる (N·L ≤ 0) ときは 0
 /// （負の光はありません）。ヒント: `n.dot(l).max(0.0)`。
 pub fn diffuse(ii: Rgb, kd: Rgb, n: Vec3, l: Vec3) -> Rgb {
-    todo!("s.t2: return the diffuse term Ii·kd·max(N·L, 0)")
+    todo!("s.t2: 拡散反射光 Ii·kd·max(N·L, 0) を返す / return the diffuse term Ii·kd·max(N·L, 0)")
 }
 
 /// **s.t3 鏡面反射光 (specular reflection, Phong's model)**: `Ii·ks·max(R·V, 0)ⁿ`.
@@ -72,7 +72,9 @@ pub fn diffuse(ii: Rgb, kd: Rgb, n: Vec3, l: Vec3) -> Rgb {
 /// フォンのモデル: R は L の正反射方向 R = 2(N·L)N − L。N·L ≤ 0（裏からの光）や R·V ≤ 0 のときは 0
 /// （n = 0 でも）。powf の前に R·V を調べること（負の数の非整数乗は NaN）。
 pub fn specular(ii: Rgb, ks: Rgb, n: Vec3, l: Vec3, v: Vec3, shininess: f32) -> Rgb {
-    todo!("s.t3: return the specular term Ii·ks·max(R·V, 0)ⁿ (0 where N·L ≤ 0)")
+    todo!(
+        "s.t3: 鏡面反射光 Ii·ks·max(R·V, 0)ⁿ を返す / return the specular term Ii·ks·max(R·V, 0)ⁿ"
+    )
 }
 
 /// **s.t4 点光源の減衰 (attenuation of point and spot lights)**: `1 / (kc + kl·d + kq·d²)`.
@@ -88,7 +90,7 @@ pub fn specular(ii: Rgb, ks: Rgb, n: Vec3, l: Vec3, v: Vec3, shininess: f32) -> 
 /// 距離 d による減衰。分母が 1e-6 より小さいときは 1e-6 を使います（d = 0 で kc = 0 でも無限大に
 /// しない）。ヒント: `d * d` と `f32::max`。
 pub fn attenuation(kc: f32, kl: f32, kq: f32, d: f32) -> f32 {
-    todo!("s.t4: return 1/(kc + kl·d + kq·d²)")
+    todo!("s.t4: 減衰 1/(kc + kl·d + kq·d²) を返す / return the attenuation 1/(kc + kl·d + kq·d²)")
 }
 
 /// **s.t4 スポットライト光源 (spot light)**: the factor of a spot light for a point that sees it
@@ -108,7 +110,7 @@ pub fn attenuation(kc: f32, kl: f32, kq: f32, d: f32) -> f32 {
 /// （円錐の外）なら 0、内側なら max(cos α, 0)^exponent、cutoff = 180° なら 1。
 /// cutoff_deg は度なので、cos の前に `to_radians()`。
 pub fn spot_factor(l: Vec3, spot_direction: Vec3, cutoff_deg: f32, exponent: f32) -> f32 {
-    todo!("s.t4: return the spot light's factor (0 outside the cone)")
+    todo!("s.t4: スポットライトの係数を返す / return the spot light's factor")
 }
 
 /// **s.t5 頂点の法線 (vertex normals)**: at every vertex, the average of the normals of the faces
@@ -141,7 +143,7 @@ pub fn vertex_normals(mesh: &Mesh) -> Vec<Vec3> {
 /// 外積 (b−a)×(c−a) は正規化する前、長さが面の面積の 2 倍です。それをそのまま頂点に足し、
 /// 最後に和を正規化すると、面積に応じた加重平均になります。
 pub fn vertex_normals_area(mesh: &Mesh) -> Vec<Vec3> {
-    todo!("s.t5: the area-weighted average of the adjacent face normals")
+    todo!("s.t5: 面積に応じた加重平均の頂点の法線 / the area-weighted vertex normals")
 }
 
 /// **s.t6 フラット／グロー／フォンシェーディング (flat, Gouraud and Phong shading)**: the colour of
@@ -186,7 +188,7 @@ pub fn shade_pixel(mode: Shading, pixel: &Pixel, light: &dyn Fn(Vec3, Vec3) -> R
 /// i は面へ向かう向き、結果は面から離れる向き（長さは i と同じ）。レイトレーシングで反射先の色 Ir
 /// を求めるときの方向です。
 pub fn reflect(i: Vec3, n: Vec3) -> Vec3 {
-    todo!("s.t7: return the mirror direction i − 2(i·n)n")
+    todo!("s.t7: 正反射方向 i − 2(i·n)n を返す / return the mirror direction i − 2(i·n)n")
 }
 
 /// **s.t8 透過光・屈折 (refraction by Snell's law, n₁ sin θ₁ = n₂ sin θ₂)**: the direction of
@@ -207,7 +209,9 @@ pub fn reflect(i: Vec3, n: Vec3) -> Vec3 {
 /// スネルの法則。n は外向きの法線、n1 が外側、n2 が内側の屈折率。内側からの光 (i·n > 0) では法線を
 /// 反転し屈折率を入れ替えます。k < 0 なら全反射で `None`（平方根の前に調べること）。
 pub fn refract(i: Vec3, n: Vec3, n1: f32, n2: f32) -> Option<Vec3> {
-    todo!("s.t8: the refracted direction, or None under total internal reflection")
+    todo!(
+        "s.t8: 屈折方向（全反射なら None）を返す / the refracted direction, or None under total internal reflection"
+    )
 }
 
 /// The functions of this module, for the checks and the view.

@@ -43,7 +43,7 @@ pub fn ambient(ia: Rgb, ka: Rgb) -> Rgb {
     ia * ka
     // END SOLUTION
     // BEGIN STUB
-    // todo!("s.t1: return the ambient term Ia·ka")
+    // todo!("s.t1: 環境光 Ia·ka を返す / return the ambient term Ia·ka")
     // END STUB
 }
 
@@ -63,7 +63,7 @@ pub fn diffuse(ii: Rgb, kd: Rgb, n: Vec3, l: Vec3) -> Rgb {
     ii * kd * n.dot(l).max(0.0)
     // END SOLUTION
     // BEGIN STUB
-    // todo!("s.t2: return the diffuse term Ii·kd·max(N·L, 0)")
+    // todo!("s.t2: 拡散反射光 Ii·kd·max(N·L, 0) を返す / return the diffuse term Ii·kd·max(N·L, 0)")
     // END STUB
 }
 
@@ -95,7 +95,9 @@ pub fn specular(ii: Rgb, ks: Rgb, n: Vec3, l: Vec3, v: Vec3, shininess: f32) -> 
     ii * ks * rv.min(1.0).powf(shininess)
     // END SOLUTION
     // BEGIN STUB
-    // todo!("s.t3: return the specular term Ii·ks·max(R·V, 0)ⁿ (0 where N·L ≤ 0)")
+    // todo!(
+    //     "s.t3: 鏡面反射光 Ii·ks·max(R·V, 0)ⁿ を返す / return the specular term Ii·ks·max(R·V, 0)ⁿ"
+    // )
     // END STUB
 }
 
@@ -116,7 +118,7 @@ pub fn attenuation(kc: f32, kl: f32, kq: f32, d: f32) -> f32 {
     1.0 / (kc + kl * d + kq * d * d).max(1e-6)
     // END SOLUTION
     // BEGIN STUB
-    // todo!("s.t4: return 1/(kc + kl·d + kq·d²)")
+    // todo!("s.t4: 減衰 1/(kc + kl·d + kq·d²) を返す / return the attenuation 1/(kc + kl·d + kq·d²)")
     // END STUB
 }
 
@@ -148,7 +150,7 @@ pub fn spot_factor(l: Vec3, spot_direction: Vec3, cutoff_deg: f32, exponent: f32
     cos_alpha.clamp(0.0, 1.0).powf(exponent)
     // END SOLUTION
     // BEGIN STUB
-    // todo!("s.t4: return the spot light's factor (0 outside the cone)")
+    // todo!("s.t4: スポットライトの係数を返す / return the spot light's factor")
     // END STUB
 }
 
@@ -208,7 +210,7 @@ pub fn vertex_normals_area(mesh: &Mesh) -> Vec<Vec3> {
     sums.iter().map(|s| s.normalize_or_zero()).collect()
     // END SOLUTION
     // BEGIN STUB
-    // todo!("s.t5: the area-weighted average of the adjacent face normals")
+    // todo!("s.t5: 面積に応じた加重平均の頂点の法線 / the area-weighted vertex normals")
     // END STUB
 }
 
@@ -273,7 +275,7 @@ pub fn reflect(i: Vec3, n: Vec3) -> Vec3 {
     i - 2.0 * i.dot(n) * n
     // END SOLUTION
     // BEGIN STUB
-    // todo!("s.t7: return the mirror direction i − 2(i·n)n")
+    // todo!("s.t7: 正反射方向 i − 2(i·n)n を返す / return the mirror direction i − 2(i·n)n")
     // END STUB
 }
 
@@ -312,7 +314,9 @@ pub fn refract(i: Vec3, n: Vec3, n1: f32, n2: f32) -> Option<Vec3> {
     Some((eta * i + (eta * cos_i - k.sqrt()) * n).normalize())
     // END SOLUTION
     // BEGIN STUB
-    // todo!("s.t8: the refracted direction, or None under total internal reflection")
+    // todo!(
+    //     "s.t8: 屈折方向（全反射なら None）を返す / the refracted direction, or None under total internal reflection"
+    // )
     // END STUB
 }
 

@@ -387,6 +387,7 @@ pub(super) fn image(spec: &Spec, imp: &Impl, mode: Shading) -> Result<(), Failur
     let mut off = 0usize;
     let mut off_in_highlight = 0usize;
     let mut worst: Option<(u8, usize)> = None;
+    let mut bounds = [u32::MAX, u32::MAX, 0, 0];
     for (i, texel) in fx.g.texels.iter().enumerate() {
         if texel.is_none() {
             continue;
@@ -396,6 +397,8 @@ pub(super) fn image(spec: &Spec, imp: &Impl, mode: Shading) -> Result<(), Failur
         if d > IMAGE_TOLERANCE {
             off += 1;
             off_in_highlight += usize::from(fx.highlight[i]);
+            let (x, y) = (i as u32 % w, i as u32 / w);
+            bounds = [bounds[0].min(x), bounds[1].min(y), bounds[2].max(x), bounds[3].max(y)];
             if worst.is_none_or(|(wd, _)| d > wd) {
                 worst = Some((d, i));
             }
@@ -419,12 +422,16 @@ pub(super) fn image(spec: &Spec, imp: &Impl, mode: Shading) -> Result<(), Failur
     let [ar, ag, ab] = rgb8(mine.pixels[i]);
     Err(Failure::new(
         format!(
-            "≥ {:.1} % of the sphere's {seen} pixels within {IMAGE_TOLERANCE}/255 of the kit's {en} image",
-            IMAGE_FRACTION * 100.0
+            "球の {seen} 画素の ≥ {pct:.1} % が kit の{ja}の画像と {IMAGE_TOLERANCE}/255 以内 / ≥ {pct:.1} % of the sphere's {seen} pixels within {IMAGE_TOLERANCE}/255 of the kit's {en} image",
+            pct = IMAGE_FRACTION * 100.0
         ),
         format!(
-            "{within} ({:.1} %) within; {off} differ, {off_in_highlight} of them in the highlight; the largest difference ({d}/255) at pixel ({x}, {y}): kit ({er}, {eg}, {eb}), yours ({ar}, {ag}, {ab})",
-            100.0 * within as f64 / seen as f64
+            "{within} ({:.1} %) within / 以内; {off} differ / 異なる ({off_in_highlight} in the highlight / ハイライト内), x {}–{}, y {}–{}; the largest difference / 最大の差 {d}/255 at pixel ({x}, {y}): kit ({er}, {eg}, {eb}), yours / あなた ({ar}, {ag}, {ab})",
+            100.0 * within as f64 / seen as f64,
+            bounds[0],
+            bounds[2],
+            bounds[1],
+            bounds[3]
         ),
     )
     .at(format!(
@@ -474,7 +481,27 @@ pub(super) fn highlight(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     if kept as f64 >= KEEP_FRACTION * n as f64 {
         return Ok(());
     }
-    let (cause, hint) = if gouraud_shows * 2 > n {
+    let mut placeholder = 0usize;
+    for &i in &region {
+        let (x, y) = (i as u32 % w, i as u32 / w);
+        if let Some((_, px)) = fx.g.pixel(x, y)
+            && (imp.shade_pixel)(Shading::Phong, &px, &light) == PLACEHOLDER
+        {
+            placeholder += 1;
+        }
+    }
+    let (cause, hint) = if placeholder * 2 > n {
+        (
+            t(
+                "shade_pixel はまだ仮の色（マゼンタ (1, 0, 1)）を返しています。",
+                "shade_pixel still returns the placeholder magenta (1, 0, 1).",
+            ),
+            t(
+                "s.t6 を書くと、フォンでだけハイライトが見えるはずです。",
+                "write s.t6: the highlight should then show in your Phong image only.",
+            ),
+        )
+    } else if gouraud_shows * 2 > n {
         (
             t(
                 "グローシェーディングの画像にもハイライトがあります: 画素ごとに光源処理をしていませんか（それはフォンです）。",
@@ -511,15 +538,15 @@ pub(super) fn highlight(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let (x, y) = (brightest.1 as u32 % w, brightest.1 as u32 / w);
     Err(Failure::new(
         format!(
-            "your Phong brighter than your Gouraud by > {KEEP_MARGIN} in ≥ {:.0} % of the {n} highlight pixels",
-            KEEP_FRACTION * 100.0
+            "ハイライトの {n} 画素の ≥ {pct:.0} % でフォンがグローより {KEEP_MARGIN} 以上明るい / your Phong brighter than your Gouraud by > {KEEP_MARGIN} in ≥ {pct:.0} % of the {n} highlight pixels",
+            pct = KEEP_FRACTION * 100.0
         ),
         format!(
-            "{kept} of {n} ({:.0} %); your Gouraud shows the kit's Phong highlight in {gouraud_shows}, your Phong looks like the kit's Gouraud in {phong_loses}",
+            "{kept} / {n} ({:.0} %); your Gouraud shows the kit's Phong highlight / グローにハイライト: {gouraud_shows}, your Phong looks like the kit's Gouraud / フォンがグローのよう: {phong_loses}",
             100.0 * kept as f64 / n as f64
         ),
     )
-    .at(format!("the highlight: {n} pixels around pixel ({x}, {y}) of the {w}×{w} image"))
+    .at(format!("the highlight / ハイライト: {n} pixels around pixel ({x}, {y}) of the {w}×{w} image"))
     .cause(cause)
     .hint(hint))
 }
