@@ -292,6 +292,14 @@ fn flat_with_a_vertex_normal(mode: Shading, px: &Pixel, light: &dyn Fn(Vec3, Vec
     }
 }
 
+fn flat_at_the_last_corner(mode: Shading, px: &Pixel, light: &dyn Fn(Vec3, Vec3) -> Rgb) -> Rgb {
+    // OpenGL's GL_FLAT habit: the colour of the provoking (last) vertex, with the face normal.
+    match mode {
+        Shading::Flat => light(px.positions[2], px.face_normal),
+        _ => shade(px, mode, light),
+    }
+}
+
 fn reflect_wrong_sign(i: Vec3, n: Vec3) -> Vec3 {
     i + 2.0 * i.dot(n) * n
 }
@@ -392,6 +400,11 @@ fn broken() -> Vec<(&'static str, Impl, Vec<&'static str>)> {
         (
             "flat shading with a vertex normal",
             Impl { shade_pixel: flat_with_a_vertex_normal, ..ok },
+            vec!["s.t6.flat", "s.t6.image_flat"],
+        ),
+        (
+            "flat shading lit at the last corner (GL_FLAT's provoking vertex)",
+            Impl { shade_pixel: flat_at_the_last_corner, ..ok },
             vec!["s.t6.flat", "s.t6.image_flat"],
         ),
         (
@@ -504,7 +517,7 @@ fn failures_explain_themselves_in_both_languages() {
 /// The usual cause each broken answer gets (what a student reads first), and where.
 #[test]
 fn causes_name_the_mistake() {
-    let cases: [(&str, &str, &str, &str); 21] = [
+    let cases: [(&str, &str, &str, &str); 22] = [
         ("ambient without Ia", "s.t1.ambient", "Ia is missing", "Ia ="),
         ("N·L not clamped (negative diffuse)", "s.t2.facing_away", "negative", "N·L ="),
         (
@@ -533,10 +546,11 @@ fn causes_name_the_mistake() {
             "mesh \"fan\"",
         ),
         ("degenerate faces normalised (NaN)", "s.t5.degenerate", "NaN", "zero-area"),
+        ("flat shading with a vertex normal", "s.t6.flat", "a vertex normal is used", "face F"),
         (
-            "flat shading with a vertex normal",
+            "flat shading lit at the last corner (GL_FLAT's provoking vertex)",
             "s.t6.flat",
-            "not the colour flat shading gives",
+            "lit at a corner",
             "face F",
         ),
         ("Gouraud lit per pixel (that is Phong)", "s.t6.gouraud", "Phong", "weights"),

@@ -169,6 +169,17 @@ fn explain(
         );
     }
     let cancelled = mix(px.normals).length() <= 1e-6;
+    let centroid = (px.positions[0] + px.positions[1] + px.positions[2]) / 3.0;
+    // Flat shading lit with a vertex normal, at a corner or at the centroid.
+    let vertex_normal_used = (0..3).any(|k| {
+        let lit = [light(px.positions[k], px.normals[k]), light(centroid, px.normals[k])];
+        lit.iter().any(|&c| same(actual, c) && !same(c, expected))
+    });
+    // Flat shading with the face normal, lit at a corner (OpenGL's GL_FLAT takes the last one).
+    let corner_used = (0..3).any(|k| {
+        let c = light(px.positions[k], px.face_normal);
+        same(actual, c) && !same(c, expected)
+    });
     match mode {
         Shading::Phong if cancelled => (
             t(
@@ -198,6 +209,23 @@ fn explain(
             t(
                 "フラットでは面の法線を使います: light(重心, face_normal)。",
                 "flat shading uses the face normal: light(centroid, face_normal).",
+            ),
+        ),
+        Shading::Flat if vertex_normal_used => (
+            t("頂点の法線を使っています。", "a vertex normal is used."),
+            t(
+                "フラットでは面の法線 (pixel.face_normal) で面の色を決めます: light(重心, face_normal)。",
+                "flat shading takes the face normal (pixel.face_normal): light(centroid, face_normal).",
+            ),
+        ),
+        Shading::Flat if corner_used => (
+            t(
+                "面の法線は正しいですが、頂点の位置で光源処理をしています（OpenGL の GL_FLAT は最後の頂点を使います）。",
+                "the face normal is right, but it is lit at a corner (OpenGL's GL_FLAT takes the last vertex).",
+            ),
+            t(
+                "この kit では面の重心 (P₀ + P₁ + P₂)/3 で 1 回だけ計算します。",
+                "the kit lights the face once, at its centroid (P₀ + P₁ + P₂)/3.",
             ),
         ),
         Shading::Flat
