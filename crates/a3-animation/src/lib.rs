@@ -1,53 +1,887 @@
 //! Assignment `a3` — アニメーション (animation).
 //!
+//! 「指定された通りの、複数の物体のアニメーションを実現する。レポートには、課題2と同様、どのような
+//! 変換行列を使用したかを示すこと」: every student animates 3 or 4 objects, each with its own
+//! motion — 回転運動 (spin), 往復回転運動 (back-and-forth rotation), 放物往復移動運動 (parabolic
+//! back-and-forth motion), 公転 (orbit) — one of them carrying a child that moves in its
+//! coordinate system (階層的な運動, which needs nested glPushMatrix/glPopMatrix). The periods are
+//! whole multiples of one unit, so the report can state their ratios (1 : 2, 2 : 3, …).
+//!
 //! Every assignment crate has the same shape (the command line and the tests rely on it):
 //! [`ID`], a per-student [`Spec`] drawn by [`variant`] and described by [`Spec::describe`], the
 //! exercise API [`Impl`] (the functions a student writes, in `exercises/src/a3.rs`),
 //! [`checks`] and [`view`].
+//!
+//! The tasks:
+//!
+//! | task | function | what |
+//! |---|---|---|
+//! | `a3.t0` | `warmup_display(gl, t)` | 演習課題: three boxes, the same for everybody ([`warmup_objects`]) |
+//! | `a3.t1` | `idle(spec, state)` | one frame (1/60 s) on: the motion parameters (媒介変数) from the frame count |
+//! | `a3.t2` | `display(spec, state, gl)` | camera, light, every object with its transform |
+//!
+//! Time: one call of `idle` is one frame, [`FPS`] frames a second; after `n` calls the time is
+//! `t = n / 60` s. NUMERICS.md row 11: the parameters are rebuilt from the integer frame count
+//! each frame and reduced by the period, never accumulated in f32 ([`checks`] runs `idle`
+//! [`DRIFT_FRAMES`] times and compares).
 
-use cg_core::lang::Lang;
+mod checks;
+mod describe;
+mod oracle;
+
+use cg_core::gl::Gl;
+use cg_core::glam::Vec3;
+use cg_core::mesh::Mesh;
+use cg_core::product::{Factor, MatrixProduct};
 use cg_core::scene::Scene;
-use cg_harness::{CheckResult, Text, VariantRng};
+use cg_core::shapes;
+use cg_harness::{Text, VariantRng};
 use serde::Serialize;
+
+pub use checks::checks;
+pub use oracle::{expected_model, model_product, warmup_model};
+
+/// The spec's numbers in JSON by their shortest decimal form (`0.6`, not the f64 widening
+/// `0.6000000238418579`), so tools and the report read the table's numbers.
+mod short {
+    use serde::Serializer;
+
+    fn widen(x: f32) -> f64 {
+        x.to_string().parse().unwrap_or(f64::from(x))
+    }
+
+    pub(crate) fn f32<S: Serializer>(x: &f32, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_f64(widen(*x))
+    }
+
+    pub(crate) fn vec3<S: Serializer>(v: &[f32; 3], s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(v.iter().map(|&x| widen(x)))
+    }
+}
 
 /// The assignment's ID, the prefix of its task IDs (`a3.t1`, …).
 pub const ID: &str = "a3";
 
-/// What one student must build.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Spec {}
+/// Frames per second: one call of `idle` advances the time by 1/60 s.
+pub const FPS: u32 = 60;
 
-/// The student's variant, drawn from the frozen stream of their number and table version.
-#[must_use]
-pub fn variant(rng: &mut VariantRng) -> Spec {
-    let _ = rng;
-    Spec {}
+/// How many frames the drift check (`a3.t1.drift`) runs `idle` for: 10⁶ frames, about 4.6 hours
+/// of animation.
+pub const DRIFT_FRAMES: u64 = 1_000_000;
+
+/// How many motion parameters a [`State`] holds (two per object is enough for every motion).
+pub const PARAMS: usize = 8;
+
+/// The common camera (the sample program's): `glTranslatef(0, 0, -15)`, then
+/// `glRotatef(-camera_pitch, 1, 0, 0)` with `camera_pitch = -30°`.
+pub const CAMERA_DISTANCE: f32 = 15.0;
+
+/// The camera's pitch in degrees (the sample program's `camera_pitch`); the rotation is
+/// `Rx(-camera_pitch) = Rx(30°)`.
+pub const CAMERA_PITCH_DEG: f32 = -30.0;
+
+/// `GL_LIGHT0`'s position, set right after the camera so it stays fixed in the world.
+pub const LIGHT0_POSITION: [f32; 4] = [10.0, 10.0, 10.0, 1.0];
+
+/// A coordinate axis of the world (or of a parent's coordinate system).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum WorldAxis {
+    /// +X
+    X,
+    /// +Y (up)
+    Y,
+    /// +Z (towards the camera at the start)
+    Z,
+}
+
+impl WorldAxis {
+    /// The unit vector along the axis: `glRotatef(angle, x, y, z)` takes its components.
+    #[must_use]
+    pub fn vector(self) -> Vec3 {
+        match self {
+            WorldAxis::X => Vec3::X,
+            WorldAxis::Y => Vec3::Y,
+            WorldAxis::Z => Vec3::Z,
+        }
+    }
+
+    /// `"X"`, `"Y"` or `"Z"`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            WorldAxis::X => "X",
+            WorldAxis::Y => "Y",
+            WorldAxis::Z => "Z",
+        }
+    }
+}
+
+/// Which way a rotation turns, seen from the positive end of its axis looking towards the origin.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Turn {
+    /// Counter-clockwise (反時計回り): the angle grows, as glRotatef with a positive angle.
+    Ccw,
+    /// Clockwise (時計回り): the angle shrinks.
+    Cw,
+}
+
+impl Turn {
+    /// `+1` for [`Turn::Ccw`], `-1` for [`Turn::Cw`]: the sign of the angle's growth.
+    #[must_use]
+    pub fn sign(self) -> f32 {
+        match self {
+            Turn::Ccw => 1.0,
+            Turn::Cw => -1.0,
+        }
+    }
+}
+
+/// A polygon model from the core's shapes, in model space centred on its origin.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Shape {
+    /// 直方体: [`shapes::cuboid`] with these edge lengths along X, Y, Z.
+    Box {
+        /// Edge lengths along X, Y, Z.
+        #[serde(serialize_with = "short::vec3")]
+        size: [f32; 3],
+    },
+    /// 角すい: [`shapes::pyramid`], base at y = −height/2, apex at +height/2.
+    Pyramid {
+        /// Sides of the base polygon.
+        sides: u32,
+        /// Circumradius of the base.
+        #[serde(serialize_with = "short::f32")]
+        radius: f32,
+        /// Height.
+        #[serde(serialize_with = "short::f32")]
+        height: f32,
+    },
+    /// 球: [`shapes::uv_sphere`] with [`SPHERE_SLICES`] × [`SPHERE_STACKS`].
+    Sphere {
+        /// Radius.
+        #[serde(serialize_with = "short::f32")]
+        radius: f32,
+    },
+    /// 正八面体: [`shapes::octahedron`].
+    Octahedron {
+        /// Distance of the vertices from the centre.
+        #[serde(serialize_with = "short::f32")]
+        radius: f32,
+    },
+}
+
+/// Meridians of a [`Shape::Sphere`]'s mesh.
+pub const SPHERE_SLICES: u32 = 16;
+/// Bands of a [`Shape::Sphere`]'s mesh.
+pub const SPHERE_STACKS: u32 = 8;
+
+impl Shape {
+    /// The polygon model to draw: `gl.draw(&object.name, &object.shape.mesh())`.
+    ///
+    /// Every shape of the variant tables is valid; a shape with an invalid parameter (only
+    /// possible when built by hand) gives the lecture's pyramid instead of panicking — see
+    /// [`Shape::try_mesh`].
+    #[must_use]
+    pub fn mesh(&self) -> Mesh {
+        self.try_mesh().unwrap_or_else(|_| shapes::lecture_pyramid())
+    }
+
+    /// The polygon model, or why its parameters are invalid.
+    ///
+    /// # Errors
+    /// A size, radius or height not finite and positive, or too few sides.
+    pub fn try_mesh(&self) -> Result<Mesh, shapes::ShapeError> {
+        match *self {
+            Shape::Box { size } => shapes::cuboid(Vec3::from_array(size)),
+            Shape::Pyramid { sides, radius, height } => shapes::pyramid(sides, radius, height),
+            Shape::Sphere { radius } => shapes::uv_sphere(radius, SPHERE_SLICES, SPHERE_STACKS),
+            Shape::Octahedron { radius } => shapes::octahedron(radius),
+        }
+    }
+
+    /// Half the shape's extent along Y (how high its centre is when it rests on the ground).
+    #[must_use]
+    pub fn half_height(&self) -> f32 {
+        match *self {
+            Shape::Box { size } => size[1] / 2.0,
+            Shape::Pyramid { height, .. } => height / 2.0,
+            Shape::Sphere { radius } | Shape::Octahedron { radius } => radius,
+        }
+    }
+}
+
+/// How an object moves. `t` is the time in seconds, `T` the period, `u = (t mod T) / T ∈ [0, 1)`
+/// the phase (how far into its period the motion is). Every angle is in degrees.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Motion {
+    /// 回転運動 (spin): turns about an axis through `position`, parallel to `axis`:
+    /// `M = T(position) · R_axis(θ)`, `θ = ±360°·u` (0° at t = 0).
+    Spin {
+        /// Where the object's centre stays.
+        #[serde(serialize_with = "short::vec3")]
+        position: [f32; 3],
+        /// The axis it turns about.
+        axis: WorldAxis,
+        /// Which way.
+        turn: Turn,
+        /// One turn takes this long (s).
+        #[serde(serialize_with = "short::f32")]
+        period_s: f32,
+    },
+    /// 往復回転運動 (back-and-forth rotation): hangs `arm` below `pivot` and swings about an axis
+    /// through the pivot: `M = T(pivot) · R_axis(θ) · T(0, −arm, 0)`,
+    /// `θ = amplitude·sin(360°·u)` (0° at t = 0, first towards +amplitude). `arm = 0`: it turns
+    /// back and forth in place.
+    Swing {
+        /// The point it swings about.
+        #[serde(serialize_with = "short::vec3")]
+        pivot: [f32; 3],
+        /// The axis it swings about.
+        axis: WorldAxis,
+        /// The largest angle (°) either way.
+        #[serde(serialize_with = "short::f32")]
+        amplitude_deg: f32,
+        /// How far below the pivot its centre hangs (0: it turns in place).
+        #[serde(serialize_with = "short::f32")]
+        arm: f32,
+        /// One swing there and back takes this long (s).
+        #[serde(serialize_with = "short::f32")]
+        period_s: f32,
+    },
+    /// 放物往復移動運動 (parabolic back-and-forth motion): moves along `along` between the two
+    /// ends `center ∓ span/2`, hopping over a parabola of height `height` on the way there and
+    /// on the way back: `M = T(center) · T(s·along + y·Y)`, with `w = 2u` for `u < 1/2` and
+    /// `w = 2 − 2u` after (0 → 1 → 0, linear in t), `s = span·(w − 1/2)` and
+    /// `y = height·(1 − (2s/span)²) = 4·height·w·(1 − w)`. At t = 0 at the −end, at T/4 on top,
+    /// at T/2 at the +end, at 3T/4 on top again.
+    Hop {
+        /// The middle of the path, on the ground (the object rests there at height 0 + half its size).
+        #[serde(serialize_with = "short::vec3")]
+        center: [f32; 3],
+        /// The horizontal direction it moves along (X or Z).
+        along: WorldAxis,
+        /// The distance between the two ends.
+        #[serde(serialize_with = "short::f32")]
+        span: f32,
+        /// How high it hops above `center`.
+        #[serde(serialize_with = "short::f32")]
+        height: f32,
+        /// There and back takes this long (s).
+        #[serde(serialize_with = "short::f32")]
+        period_s: f32,
+    },
+    /// 公転 (orbit): goes round `center` on a horizontal circle of radius `radius`, turning with
+    /// it (the same face towards the centre): `M = T(center) · Ry(θ) · T(0, 0, radius)`,
+    /// `θ = ±360°·u`; at t = 0 at `center + (0, 0, radius)`, the camera's side.
+    Orbit {
+        /// The centre of the circle.
+        #[serde(serialize_with = "short::vec3")]
+        center: [f32; 3],
+        /// Its radius.
+        #[serde(serialize_with = "short::f32")]
+        radius: f32,
+        /// Which way, seen from above (+Y).
+        turn: Turn,
+        /// One round takes this long (s).
+        #[serde(serialize_with = "short::f32")]
+        period_s: f32,
+    },
+    /// 階層的な運動 (hierarchical motion): goes round its parent in the parent's coordinate
+    /// system (which moves and turns with the parent): `M = M_parent · Ry(φ) · T(0, 0, radius)`,
+    /// `φ = ±360°·u`; at t = 0 at `(0, 0, radius)` in the parent's coordinates.
+    Satellite {
+        /// The parent's index in [`Spec::objects`] (0-based: object 1 is 0). The parent comes
+        /// before its child and is never a satellite itself.
+        parent_index: usize,
+        /// The radius of the circle about the parent's centre.
+        #[serde(serialize_with = "short::f32")]
+        radius: f32,
+        /// Which way, seen from the parent's +Y.
+        turn: Turn,
+        /// One round (relative to the parent) takes this long (s).
+        #[serde(serialize_with = "short::f32")]
+        period_s: f32,
+    },
+}
+
+impl Motion {
+    /// The period in seconds.
+    #[must_use]
+    pub fn period_s(&self) -> f32 {
+        match *self {
+            Motion::Spin { period_s, .. }
+            | Motion::Swing { period_s, .. }
+            | Motion::Hop { period_s, .. }
+            | Motion::Orbit { period_s, .. }
+            | Motion::Satellite { period_s, .. } => period_s,
+        }
+    }
+
+    /// The period in frames, `60 · period_s` (every period of the tables is a whole number of
+    /// frames); at least 1.
+    #[must_use]
+    pub fn period_frames(&self) -> u64 {
+        let frames = (f64::from(self.period_s()) * f64::from(FPS)).round();
+        if frames.is_finite() && frames >= 1.0 { frames as u64 } else { 1 }
+    }
+
+    /// The parent's index for a [`Motion::Satellite`], `None` otherwise.
+    #[must_use]
+    pub fn parent(&self) -> Option<usize> {
+        match *self {
+            Motion::Satellite { parent_index, .. } => Some(parent_index),
+            _ => None,
+        }
+    }
+}
+
+/// One object of the animation.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Object {
+    /// The name to draw it with: `gl.draw("object 1", &mesh)` (`"object 1"` … `"object 4"`).
+    pub name: String,
+    /// Its polygon model.
+    pub shape: Shape,
+    /// The colour to set with `gl.color(r, g, b)` before drawing it (not checked; it tells the
+    /// objects apart in the view).
+    #[serde(serialize_with = "short::vec3")]
+    pub color: [f32; 3],
+    /// How it moves.
+    pub motion: Motion,
+}
+
+/// What one student must build: 3 or 4 objects, one pair of them a parent and its child.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Spec {
+    /// The objects, object 1 first. A child ([`Motion::Satellite`]) comes right after its parent.
+    pub objects: Vec<Object>,
+    /// The unit of time (s): every period is a whole multiple of it (1, 2, 3 or 4 units, each
+    /// used once), so the ratios of the periods are those multiples.
+    #[serde(serialize_with = "short::f32")]
+    pub unit_s: f32,
 }
 
 impl Spec {
-    /// The assignment text for this variant, in `lang`.
+    /// Each object's period as a multiple of the shortest common unit: the ratios the report
+    /// states (`[2, 1, 4]` for 2 : 1 : 4).
     #[must_use]
-    pub fn describe(&self, lang: Lang) -> String {
-        lang.pick("アニメーション", "animation").to_owned()
+    pub fn period_ratios(&self) -> Vec<u64> {
+        let frames: Vec<u64> = self.objects.iter().map(|o| o.motion.period_frames()).collect();
+        let g = frames.iter().copied().fold(0, gcd).max(1);
+        frames.iter().map(|f| f / g).collect()
+    }
+
+    /// After how many seconds the whole animation repeats (the least common multiple of the
+    /// periods).
+    #[must_use]
+    pub fn common_period_s(&self) -> f64 {
+        let l = self.objects.iter().map(|o| o.motion.period_frames()).fold(1, lcm);
+        l as f64 / f64::from(FPS)
+    }
+
+    /// The indices of `parent`'s children.
+    #[must_use]
+    pub fn children(&self, parent: usize) -> Vec<usize> {
+        (0..self.objects.len())
+            .filter(|&i| self.objects[i].motion.parent() == Some(parent))
+            .collect()
+    }
+}
+
+/// Greatest common divisor (`gcd(0, b) = b`).
+pub(crate) fn gcd(a: u64, b: u64) -> u64 {
+    if b == 0 { a } else { gcd(b, a % b) }
+}
+
+/// Least common multiple (saturating).
+pub(crate) fn lcm(a: u64, b: u64) -> u64 {
+    if a == 0 || b == 0 { 0 } else { (a / gcd(a, b)).saturating_mul(b) }
+}
+
+/// The animation's state: what `idle` changes and `display` reads (the course's global
+/// variables). `State::default()` is the start: frame 0, every parameter 0.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct State {
+    /// Frames since the start: `idle` adds 1 each call. The time is `frame / 60` s
+    /// ([`State::time_s`]).
+    pub frame: u64,
+    /// The motion parameters (運動を表す媒介変数) that `idle` computes and `display` reads —
+    /// yours to lay out (the reference uses `params[2·i]` and `params[2·i + 1]` for object
+    /// `i + 1`: an angle in degrees, or the offset and height of a hop).
+    pub params: [f32; PARAMS],
+}
+
+impl State {
+    /// The start: frame 0, every parameter 0.
+    #[must_use]
+    pub fn new() -> State {
+        State::default()
+    }
+
+    /// The time in seconds, `frame / 60`, in f64 (exact enough for 10⁶ frames and far beyond).
+    #[must_use]
+    pub fn time_s(&self) -> f64 {
+        self.frame as f64 / f64::from(FPS)
     }
 }
 
 /// The functions a student writes (see `exercises/src/a3.rs`).
 #[derive(Clone, Copy, Debug)]
-pub struct Impl {}
-
-/// Every check of this assignment for `spec`, run against `imp`.
-#[must_use]
-pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
-    let _ = (spec, imp);
-    Vec::new()
+pub struct Impl {
+    /// a3.t0: draws the warm-up's three boxes at time `t` (s); the camera and light are set.
+    pub warmup_display: fn(&mut Gl, f64),
+    /// a3.t1: advances `state` by one frame and computes its motion parameters.
+    pub idle: fn(&Spec, &mut State),
+    /// a3.t2: draws the frame of `state`: camera, light and every object.
+    pub display: fn(&Spec, &State, &mut Gl),
 }
 
-/// The scene that shows `imp`'s result at time `time_s` (seconds; for animations).
+/// The common camera as the report writes it: `T(0, 0, -15) · Rx(30°)`.
+#[must_use]
+pub fn camera_product() -> MatrixProduct {
+    MatrixProduct::identity()
+        .then(Factor::translate(Vec3::new(0.0, 0.0, -CAMERA_DISTANCE)))
+        .then(Factor::rotate_x_deg(-CAMERA_PITCH_DEG))
+}
+
+/// Sets the common camera and the light, as the warm-up's `display()` does before the boxes:
+/// `glLoadIdentity`, `T(0, 0, -15)`, `Rx(30°)`, `glLightfv(GL_LIGHT0, GL_POSITION, (10, 10, 10, 1))`.
+pub(crate) fn camera_and_light(gl: &mut Gl) {
+    gl.load_identity();
+    gl.translate(0.0, 0.0, -CAMERA_DISTANCE);
+    gl.rotate(-CAMERA_PITCH_DEG, 1.0, 0.0, 0.0);
+    gl.light_position(0, LIGHT0_POSITION);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The variant tables (version 1). FROZEN: every draw below, its order and every table entry must
+// never change, or published assignments change under students. A new table is a new version.
+// ---------------------------------------------------------------------------------------------
+
+/// The unit of time (s); periods are 1–4 units.
+const UNITS_S: [f32; 4] = [1.5, 2.0, 2.5, 3.0];
+/// The four corner slots of fixed-position motions (x, z).
+const CORNERS: [[f32; 2]; 4] = [[-3.5, -3.5], [3.5, -3.5], [-3.5, 3.5], [3.5, 3.5]];
+/// Object colours by number: orange, blue, red, yellow.
+const COLORS: [[f32; 3]; 4] =
+    [[1.0, 0.6, 0.2], [0.3, 0.5, 1.0], [0.9, 0.3, 0.4], [0.95, 0.85, 0.3]];
+
+const SPIN_SHAPES: [Shape; 4] = [
+    Shape::Box { size: [1.2, 0.4, 0.6] },
+    Shape::Box { size: [1.0, 0.6, 0.3] },
+    Shape::Pyramid { sides: 4, radius: 0.6, height: 1.0 },
+    Shape::Pyramid { sides: 3, radius: 0.6, height: 1.0 },
+];
+const SWING_IN_PLACE_SHAPES: [Shape; 2] =
+    [Shape::Box { size: [1.4, 0.3, 0.5] }, Shape::Box { size: [1.2, 0.5, 0.3] }];
+const BOB_SHAPES: [Shape; 3] = [
+    Shape::Box { size: [0.6, 0.6, 0.6] },
+    Shape::Sphere { radius: 0.4 },
+    Shape::Octahedron { radius: 0.45 },
+];
+const HOP_SHAPES: [Shape; 3] = [
+    Shape::Sphere { radius: 0.4 },
+    Shape::Box { size: [0.6, 0.6, 0.6] },
+    Shape::Octahedron { radius: 0.45 },
+];
+const ORBIT_SHAPES: [Shape; 4] = [
+    Shape::Sphere { radius: 0.4 },
+    Shape::Box { size: [0.6, 0.6, 0.6] },
+    Shape::Octahedron { radius: 0.45 },
+    Shape::Pyramid { sides: 4, radius: 0.5, height: 0.8 },
+];
+const PARENT_SHAPES: [Shape; 3] = [
+    Shape::Sphere { radius: 0.5 },
+    Shape::Box { size: [0.7, 0.7, 0.7] },
+    Shape::Octahedron { radius: 0.6 },
+];
+const CHILD_SHAPES: [Shape; 3] = [
+    Shape::Sphere { radius: 0.25 },
+    Shape::Octahedron { radius: 0.3 },
+    Shape::Box { size: [0.4, 0.4, 0.4] },
+];
+const AXES: [WorldAxis; 3] = [WorldAxis::X, WorldAxis::Y, WorldAxis::Z];
+const HORIZONTAL: [WorldAxis; 2] = [WorldAxis::X, WorldAxis::Z];
+const TURNS: [Turn; 2] = [Turn::Ccw, Turn::Cw];
+const AMPLITUDES_DEG: [f32; 3] = [30.0, 45.0, 60.0];
+const ARMS: [f32; 2] = [1.0, 1.5];
+const SPANS: [f32; 3] = [2.0, 2.5, 3.0];
+const HEIGHTS: [f32; 3] = [1.0, 1.5, 2.0];
+const ORBIT_RADII: [f32; 3] = [1.5, 2.0, 2.5];
+const PARENT_ORBIT_RADII: [f32; 2] = [2.0, 2.5];
+const SATELLITE_RADII: [f32; 3] = [1.0, 1.2, 1.4];
+/// The lecture's example: two orbits about the same centre with radii 1.5 and 3.
+const LECTURE_RADII: (f32, f32) = (1.5, 3.0);
+/// Height of orbit centres and spinning objects.
+const LIFT: f32 = 1.0;
+
+/// The kinds of motion an independent object can have.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    Spin,
+    Swing,
+    Hop,
+    Orbit,
+}
+
+/// The student's variant, drawn from the frozen stream of their number and table version.
+///
+/// Draws, in this order (table version 1, frozen): the time unit; the number of independent
+/// objects (1 or 2); the period multipliers (a shuffle of 1–4); the independent motions (a
+/// shuffle of spin, swing, hop, orbit); the parent's motion (orbit or hop); where the parent and
+/// child stand in the list; the corner slots (a shuffle); then each object's parameters in list
+/// order.
+#[must_use]
+pub fn variant(rng: &mut VariantRng) -> Spec {
+    let unit_s = *rng.pick(&UNITS_S);
+    let independent = rng.range(1, 2) as usize;
+    let mut multipliers = [1u32, 2, 3, 4];
+    rng.shuffle(&mut multipliers);
+    let mut kinds = [Kind::Spin, Kind::Swing, Kind::Hop, Kind::Orbit];
+    rng.shuffle(&mut kinds);
+    let parent_kind = *rng.pick(&[Kind::Orbit, Kind::Hop]);
+    let pair_at = rng.range(0, independent as i64) as usize;
+    let mut corners = CORNERS;
+    rng.shuffle(&mut corners);
+
+    // The list: the independent kinds with the (parent, child) pair inserted at `pair_at`.
+    let mut roles: Vec<Option<Kind>> = kinds[..independent].iter().map(|&k| Some(k)).collect();
+    roles.insert(pair_at, Some(parent_kind));
+    roles.insert(pair_at + 1, None); // the child
+    let both_orbit = parent_kind == Kind::Orbit && kinds[..independent].contains(&Kind::Orbit);
+
+    let mut next_corner = 0;
+    let mut corner = |y: f32| {
+        let [x, z] = corners[next_corner % corners.len()];
+        next_corner += 1;
+        [x, y, z]
+    };
+    let mut objects: Vec<Object> = Vec::with_capacity(roles.len());
+    for (i, role) in roles.iter().enumerate() {
+        let period_s = unit_s * multipliers[i] as f32;
+        let is_parent = i == pair_at;
+        let (shape, motion) = match role {
+            None => {
+                let shape = *rng.pick(&CHILD_SHAPES);
+                let radius = *rng.pick(&SATELLITE_RADII);
+                let turn = *rng.pick(&TURNS);
+                (shape, Motion::Satellite { parent_index: pair_at, radius, turn, period_s })
+            }
+            Some(Kind::Spin) => {
+                let shape = *rng.pick(&SPIN_SHAPES);
+                let axis = *rng.pick(&AXES);
+                let turn = *rng.pick(&TURNS);
+                (shape, Motion::Spin { position: corner(LIFT), axis, turn, period_s })
+            }
+            Some(Kind::Swing) => {
+                let axis = *rng.pick(&AXES);
+                let amplitude_deg = *rng.pick(&AMPLITUDES_DEG);
+                let (shape, arm) = if axis == WorldAxis::Y {
+                    (*rng.pick(&SWING_IN_PLACE_SHAPES), 0.0)
+                } else {
+                    (*rng.pick(&BOB_SHAPES), *rng.pick(&ARMS))
+                };
+                let pivot = corner(LIFT + arm);
+                (shape, Motion::Swing { pivot, axis, amplitude_deg, arm, period_s })
+            }
+            Some(Kind::Hop) => {
+                let shape = *rng.pick(if is_parent { &PARENT_SHAPES[..] } else { &HOP_SHAPES[..] });
+                let along = *rng.pick(&HORIZONTAL);
+                let span = *rng.pick(&SPANS);
+                let height = *rng.pick(&HEIGHTS);
+                let center = corner(shape.half_height());
+                (shape, Motion::Hop { center, along, span, height, period_s })
+            }
+            Some(Kind::Orbit) => {
+                let shape =
+                    *rng.pick(if is_parent { &PARENT_SHAPES[..] } else { &ORBIT_SHAPES[..] });
+                let radius = match (both_orbit, is_parent) {
+                    (true, false) => LECTURE_RADII.0,
+                    (true, true) => LECTURE_RADII.1,
+                    (false, false) => *rng.pick(&ORBIT_RADII),
+                    (false, true) => *rng.pick(&PARENT_ORBIT_RADII),
+                };
+                let turn = *rng.pick(&TURNS);
+                (shape, Motion::Orbit { center: [0.0, LIFT, 0.0], radius, turn, period_s })
+            }
+        };
+        objects.push(Object {
+            name: format!("object {}", i + 1),
+            shape,
+            color: COLORS[i % COLORS.len()],
+            motion,
+        });
+    }
+    Spec { objects, unit_s }
+}
+
+/// The warm-up's three boxes (演習課題), the same for everybody: box 1 spins (回転運動), box 2
+/// turns back and forth (往復回転運動), box 3 hops back and forth (放物往復移動運動).
+#[must_use]
+pub fn warmup_objects() -> Vec<Object> {
+    let shape = Shape::Box { size: [1.2, 0.6, 0.6] };
+    vec![
+        Object {
+            name: "box 1".to_owned(),
+            shape,
+            color: COLORS[0],
+            motion: Motion::Spin {
+                position: [-3.0, 1.0, 0.0],
+                axis: WorldAxis::Y,
+                turn: Turn::Ccw,
+                period_s: 4.0,
+            },
+        },
+        Object {
+            name: "box 2".to_owned(),
+            shape,
+            color: COLORS[1],
+            motion: Motion::Swing {
+                pivot: [0.0, 1.0, 0.0],
+                axis: WorldAxis::Z,
+                amplitude_deg: 30.0,
+                arm: 0.0,
+                period_s: 2.0,
+            },
+        },
+        Object {
+            name: "box 3".to_owned(),
+            shape,
+            color: COLORS[2],
+            motion: Motion::Hop {
+                center: [3.0, 0.3, 0.0],
+                along: WorldAxis::X,
+                span: 2.0,
+                height: 1.5,
+                period_s: 2.0,
+            },
+        },
+    ]
+}
+
+/// The state after `frames` calls of `idle` from the start.
+fn run_idle(spec: &Spec, imp: &Impl, frames: u64) -> State {
+    let mut state = State::new();
+    for _ in 0..frames {
+        (imp.idle)(spec, &mut state);
+    }
+    state
+}
+
+/// The frame after `frames` calls of `idle` from the start, as `display` records it: every
+/// draw's model-view matrix as a product of named factors (with the student's symbols where
+/// `gl.mult(Factor::rotate(…, Param::sym(…)))` was used), the light, the stack errors — what a
+/// report derives the transforms from.
+#[must_use]
+pub fn record_frame(spec: &Spec, imp: &Impl, frames: u64) -> Gl {
+    let state = run_idle(spec, imp, frames);
+    let mut gl = Gl::new();
+    (imp.display)(spec, &state, &mut gl);
+    gl
+}
+
+/// The longest time [`view`] animates to (s): 10⁶ frames.
+const VIEW_MAX_S: f64 = DRIFT_FRAMES as f64 / FPS as f64;
+
+/// The scene that shows `imp`'s result at time `time_s` (seconds): `idle` called
+/// `round(60·time_s)` times from the start, then `display` recorded and drawn in eye space on the
+/// course's ground (the ground with the kit's camera, so a wrong camera shows as objects off the
+/// ground). A frame that draws nothing shows the ground alone.
 ///
 /// # Errors
-/// What keeps the result from being drawn, in words for the student.
+/// A time that is negative, not finite or beyond 10⁶ frames.
 pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
-    let _ = (spec, imp, time_s);
-    Ok(cg_harness::course::scene())
+    if !time_s.is_finite() || !(0.0..=VIEW_MAX_S).contains(&time_s) {
+        return Err(Text::new(
+            format!(
+                "時刻は 0 以上 {VIEW_MAX_S:.0} 秒以下にしてください（{time_s} が指定されました）"
+            ),
+            format!("the time must be between 0 and {VIEW_MAX_S:.0} s (got {time_s})"),
+        ));
+    }
+    let frames = (time_s * f64::from(FPS)).round() as u64;
+    Ok(on_ground(&record_frame(spec, imp, frames)))
+}
+
+/// The warm-up's frame at time `t` (s): the camera and light set, then `warmup_display`.
+#[must_use]
+pub fn warmup_frame(imp: &Impl, t: f64) -> Gl {
+    let mut gl = Gl::new();
+    camera_and_light(&mut gl);
+    (imp.warmup_display)(&mut gl, t);
+    gl
+}
+
+/// The warm-up's three boxes at time `t` (s), drawn like [`view`].
+#[must_use]
+pub fn warmup_view(imp: &Impl, t: f64) -> Scene {
+    on_ground(&warmup_frame(imp, t))
+}
+
+/// A recorded frame as a scene on the course's stage, with the course's ground added in eye
+/// space.
+fn on_ground(gl: &Gl) -> Scene {
+    let mut scene = gl.to_scene(&cg_harness::course::stage());
+    let view = cg_harness::course::scene().view_product().unwrap_or_else(|_| camera_product());
+    let mut ground = cg_harness::course::ground_only().objects;
+    for g in &mut ground {
+        g.transform = view.concat(&g.transform);
+    }
+    ground.append(&mut scene.objects);
+    scene.objects = ground;
+    scene
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cg_harness::{StudentNumber, TableVersion};
+
+    fn spec_of(n: u32) -> Spec {
+        let s: StudentNumber = format!("{n:08}").parse().unwrap();
+        variant(&mut VariantRng::new(&s, TableVersion::V1, ID))
+    }
+
+    #[test]
+    fn every_variant_is_well_formed() {
+        for n in 0..500 {
+            let spec = spec_of(20_260_000 + n);
+            let k = spec.objects.len();
+            assert!((3..=4).contains(&k), "{spec:?}");
+            let children: Vec<usize> =
+                (0..k).filter(|&i| spec.objects[i].motion.parent().is_some()).collect();
+            assert_eq!(children.len(), 1, "exactly one child: {spec:?}");
+            let c = children[0];
+            let p = spec.objects[c].motion.parent().unwrap();
+            assert_eq!(p + 1, c, "the child follows its parent");
+            assert!(matches!(spec.objects[p].motion, Motion::Orbit { .. } | Motion::Hop { .. }));
+            let mut periods: Vec<u64> =
+                spec.objects.iter().map(|o| o.motion.period_frames()).collect();
+            for (o, &f) in spec.objects.iter().zip(&periods) {
+                // Every period is a whole number of frames.
+                assert_eq!(f as f64, f64::from(o.motion.period_s()) * 60.0, "{o:?}");
+                assert!(o.shape.try_mesh().is_ok_and(|m| m.validate().is_clean()), "{o:?}");
+            }
+            periods.sort_unstable();
+            periods.dedup();
+            assert_eq!(periods.len(), k, "distinct periods: {spec:?}");
+            let ratios = spec.period_ratios();
+            assert!(ratios.iter().all(|&r| (1..=4).contains(&r)), "{ratios:?}");
+            // Deterministic.
+            assert_eq!(spec, spec_of(20_260_000 + n));
+        }
+    }
+
+    #[test]
+    fn every_option_appears_among_a_few_dozen_students() {
+        let specs: Vec<Spec> = (0..48).map(|n| spec_of(20_260_000 + n)).collect();
+        let mut seen: std::collections::BTreeSet<String> = std::collections::BTreeSet::new();
+        for spec in &specs {
+            seen.insert(format!("n{}", spec.objects.len()));
+            seen.insert(format!("unit{}", spec.unit_s));
+            for (i, o) in spec.objects.iter().enumerate() {
+                let parent = !spec.children(i).is_empty();
+                let tag = match o.motion {
+                    Motion::Spin { axis, turn, .. } => format!("spin-{axis:?}-{turn:?}"),
+                    Motion::Swing { axis, amplitude_deg, .. } => {
+                        seen.insert(format!("amp{amplitude_deg}"));
+                        format!("swing-{axis:?}")
+                    }
+                    Motion::Hop { along, span, height, .. } => {
+                        seen.insert(format!("span{span}"));
+                        seen.insert(format!("height{height}"));
+                        format!("hop-{along:?}-parent{parent}")
+                    }
+                    Motion::Orbit { radius, turn, .. } => {
+                        seen.insert(format!("orbit-r{radius}-parent{parent}"));
+                        format!("orbit-{turn:?}-parent{parent}")
+                    }
+                    Motion::Satellite { radius, turn, .. } => format!("sat-{radius}-{turn:?}"),
+                };
+                seen.insert(tag);
+                seen.insert(format!("{:?}", o.shape));
+            }
+        }
+        let expected = [
+            "n3",
+            "n4",
+            "unit1.5",
+            "unit2",
+            "unit2.5",
+            "unit3",
+            "spin-X-Ccw",
+            "spin-Y-Cw",
+            "spin-Z-Ccw",
+            "swing-X",
+            "swing-Y",
+            "swing-Z",
+            "amp30",
+            "amp45",
+            "amp60",
+            "hop-X-parentfalse",
+            "hop-Z-parentfalse",
+            "hop-X-parenttrue",
+            "hop-Z-parenttrue",
+            "span2",
+            "span2.5",
+            "span3",
+            "height1",
+            "height1.5",
+            "height2",
+            "orbit-Ccw-parentfalse",
+            "orbit-Cw-parenttrue",
+            "orbit-r1.5-parentfalse",
+            "orbit-r3-parenttrue",
+            "orbit-r2-parenttrue",
+            "orbit-r2.5-parentfalse",
+            "sat-1-Ccw",
+            "sat-1.4-Cw",
+            "sat-1.2-Ccw",
+        ];
+        for e in expected {
+            assert!(seen.contains(e), "{e} never appears among 48 students: {seen:?}");
+        }
+        for shape in SPIN_SHAPES
+            .iter()
+            .chain(&PARENT_SHAPES)
+            .chain(&CHILD_SHAPES)
+            .chain(&HOP_SHAPES)
+            .chain(&ORBIT_SHAPES)
+        {
+            assert!(seen.contains(&format!("{shape:?}")), "{shape:?} never appears");
+        }
+    }
+
+    #[test]
+    fn ratios_and_common_period() {
+        let spec = Spec {
+            unit_s: 1.5,
+            objects: warmup_objects(), // periods 4, 2, 2 s
+        };
+        assert_eq!(spec.period_ratios(), vec![2, 1, 1]);
+        assert_eq!(spec.common_period_s(), 4.0);
+        assert_eq!(gcd(0, 7), 7);
+        assert_eq!(lcm(4, 6), 12);
+    }
+
+    #[test]
+    fn the_view_rejects_bad_times() {
+        fn nothing(_: &mut Gl, _: f64) {}
+        fn idle(_: &Spec, s: &mut State) {
+            s.frame += 1;
+        }
+        fn display(_: &Spec, _: &State, _: &mut Gl) {}
+        let imp = Impl { warmup_display: nothing, idle, display };
+        let spec = spec_of(12_345_678);
+        assert!(view(&spec, &imp, -1.0).is_err());
+        assert!(view(&spec, &imp, f64::NAN).is_err());
+        assert!(view(&spec, &imp, 1e9).is_err());
+        let scene = view(&spec, &imp, 1.0).unwrap();
+        assert_eq!(scene.objects.len(), 1, "the ground alone");
+        assert_eq!(warmup_view(&imp, 0.0).objects.len(), 1);
+    }
 }

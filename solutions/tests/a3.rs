@@ -1,0 +1,671 @@
+//! The instructor's proof for assignment a3 (animation): every check passes on the reference
+//! solution for students covering every variant family, every check fails on the pristine stubs,
+//! and each broken answer of a kind students really hand in fails the checks it should (and the
+//! ones that name its mistake) — while every check ID fails for at least one of them.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::f64::consts::TAU;
+
+use cg_a3::{Impl, Motion, Object, Spec, State, WorldAxis};
+use cg_core::gl::Gl;
+use cg_core::glam::Vec3;
+use cg_core::lang::Lang;
+use cg_harness::check::{CheckResult, Outcome, Report};
+use cg_harness::{StudentNumber, TableVersion, VariantRng};
+
+/// Students whose variants together hold every family: 3 and 4 objects; the parent orbiting
+/// or hopping; independent spins about X, Y and Z, swings about X, Y and Z, hops and orbits
+/// (the lecture's 1.5 and 3 radii once); every time unit.
+const STUDENTS: [&str; 8] = [
+    "20260002", "20260005", "20260008", "20260009", "20260013", "20260018", "20260020", "20260023",
+];
+
+fn spec_for(student: &str) -> Spec {
+    let s: StudentNumber = student.parse().unwrap();
+    cg_a3::variant(&mut VariantRng::new(&s, TableVersion::V1, cg_a3::ID))
+}
+
+fn family(spec: &Spec, i: usize) -> String {
+    let o = &spec.objects[i];
+    let parent = if spec.children(i).is_empty() { "" } else { "-parent" };
+    match o.motion {
+        Motion::Spin { axis, .. } => format!("spin-{axis:?}"),
+        Motion::Swing { axis, .. } => format!("swing-{axis:?}"),
+        Motion::Hop { .. } => format!("hop{parent}"),
+        Motion::Orbit { radius: 3.0, .. } => format!("orbit{parent}-lecture"),
+        Motion::Orbit { .. } => format!("orbit{parent}"),
+        Motion::Satellite { .. } => "satellite".to_owned(),
+    }
+}
+
+#[test]
+fn the_sample_students_cover_every_family() {
+    let mut seen = BTreeSet::new();
+    for s in STUDENTS {
+        let spec = spec_for(s);
+        seen.insert(format!("n{}", spec.objects.len()));
+        seen.insert(format!("unit{}", spec.unit_s));
+        for i in 0..spec.objects.len() {
+            seen.insert(family(&spec, i));
+        }
+    }
+    for f in [
+        "n3",
+        "n4",
+        "unit1.5",
+        "unit2",
+        "unit2.5",
+        "unit3",
+        "spin-X",
+        "spin-Y",
+        "spin-Z",
+        "swing-X",
+        "swing-Y",
+        "swing-Z",
+        "hop",
+        "hop-parent",
+        "orbit",
+        "orbit-parent",
+        "orbit-parent-lecture",
+        "satellite",
+    ] {
+        assert!(seen.contains(f), "{f} is not among the sample students: {seen:?}");
+    }
+}
+
+fn run(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
+    cg_a3::checks(spec, imp)
+}
+
+fn failed(results: &[CheckResult]) -> BTreeSet<String> {
+    results.iter().filter(|c| !c.passed()).map(|c| c.id.clone()).collect()
+}
+
+fn report(student: &str, results: &[CheckResult]) -> String {
+    Report { assignment: "a3".into(), student: Some(student.into()), checks: results.to_vec() }
+        .render(Lang::En)
+}
+
+/// Runs `f` for every student on its own thread (each check run spends most of its time on the
+/// 10⁶ frames of the drift check).
+fn for_students<T: Send>(students: &[&str], f: impl Fn(&str) -> T + Sync) -> Vec<T> {
+    std::thread::scope(|s| {
+        let handles: Vec<_> = students.iter().map(|&st| s.spawn(|| f(st))).collect();
+        handles.into_iter().map(|h| h.join().unwrap()).collect()
+    })
+}
+
+#[test]
+fn every_check_passes_on_the_solution() {
+    let imp = cg_solutions::a3::implementation();
+    for_students(&STUDENTS, |s| {
+        let results = run(&spec_for(s), &imp);
+        assert_eq!(results.len(), 13);
+        assert!(failed(&results).is_empty(), "student {s}:\n{}", report(s, &results));
+    });
+}
+
+#[test]
+fn every_check_fails_on_the_pristine_stubs() {
+    let imp = cg_exercises::a3::implementation();
+    for_students(&STUDENTS[..2], |s| {
+        let results = run(&spec_for(s), &imp);
+        for c in &results {
+            assert!(!c.passed(), "{} passes on the stubs for {s}", c.id);
+        }
+    });
+}
+
+// ---------------------------------------------------------------------------------------------
+// Broken answers. They share the reference solution's layout of `state.params` (params[2i]: the
+// angle in degrees or a hop's offset; params[2i + 1]: a hop's height), so each differs from the
+// solution in exactly one realistic mistake.
+// ---------------------------------------------------------------------------------------------
+
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Bug {
+    None,
+    // idle
+    WrongPeriod,
+    Radians,
+    F32Accumulate,
+    OneFrameLate,
+    ThirtyFps,
+    LinearHop,
+    // display
+    NoPushPop,
+    ExtraPop,
+    MissingPop,
+    LightBeforeCamera,
+    ChildReversed,
+    ChildOutsideParent,
+    ChildIgnoresParentRotation,
+    WrongNames,
+    WrongMesh,
+    // warm-up
+    WarmupNoPushPop,
+    WarmupExtraPop,
+    WarmupRadians,
+    WarmupLinearHop,
+    WarmupWrongHeight,
+}
+
+fn idle_with(bug: Bug, spec: &Spec, state: &mut State) {
+    if bug != Bug::OneFrameLate {
+        state.frame += 1;
+    }
+    let n = spec.objects.len();
+    for (i, object) in spec.objects.iter().enumerate() {
+        let own = object.motion.period_frames();
+        // WrongPeriod: the first object runs with the next object's period.
+        let p = if bug == Bug::WrongPeriod && i == 0 {
+            spec.objects[1 % n].motion.period_frames()
+        } else {
+            own
+        };
+        let frame = if bug == Bug::ThirtyFps { 2 * state.frame } else { state.frame };
+        let u = (frame % p) as f64 / p as f64;
+        let (a, b) = match object.motion {
+            Motion::Spin { turn, .. }
+            | Motion::Orbit { turn, .. }
+            | Motion::Satellite { turn, .. } => {
+                if bug == Bug::F32Accumulate {
+                    // θ += ω·Δt in f32, wrapped: the classic GLUT idle().
+                    let step = turn.sign() * 360.0 / object.motion.period_s() * (1.0 / 60.0_f32);
+                    let mut theta = state.params[2 * i] + step;
+                    if theta >= 360.0 {
+                        theta -= 360.0;
+                    } else if theta < 0.0 {
+                        theta += 360.0;
+                    }
+                    (f64::from(theta), 0.0)
+                } else {
+                    (f64::from(turn.sign()) * 360.0 * u, 0.0)
+                }
+            }
+            Motion::Swing { amplitude_deg, .. } => {
+                if bug == Bug::F32Accumulate {
+                    let step = 360.0 / object.motion.period_s() * (1.0 / 60.0_f32);
+                    let phase = (state.params[2 * i + 1] + step) % 360.0;
+                    state.params[2 * i + 1] = phase;
+                    (
+                        f64::from(amplitude_deg) * f64::from(phase).to_radians().sin(),
+                        f64::from(phase),
+                    )
+                } else {
+                    (f64::from(amplitude_deg) * (TAU * u).sin(), 0.0)
+                }
+            }
+            Motion::Hop { span, height, .. } => {
+                let w = if u < 0.5 { 2.0 * u } else { 2.0 - 2.0 * u };
+                let s = f64::from(span) * (w - 0.5);
+                let half = f64::from(span) / 2.0;
+                let y = if bug == Bug::LinearHop {
+                    f64::from(height) * (1.0 - (s / half).abs())
+                } else {
+                    f64::from(height) * (1.0 - (s / half) * (s / half))
+                };
+                (s, y)
+            }
+        };
+        let a = if bug == Bug::Radians && !matches!(object.motion, Motion::Hop { .. }) {
+            a.to_radians()
+        } else {
+            a
+        };
+        state.params[2 * i] = a as f32;
+        state.params[2 * i + 1] = b as f32;
+    }
+    if bug == Bug::OneFrameLate {
+        state.frame += 1;
+    }
+}
+
+fn place(gl: &mut Gl, state: &State, i: usize, object: &Object, bug: Bug) {
+    let (a, b) = (state.params[2 * i], state.params[2 * i + 1]);
+    let v = |w: WorldAxis| w.vector();
+    match object.motion {
+        Motion::Spin { position: [x, y, z], axis, .. } => {
+            gl.translate(x, y, z);
+            let r = v(axis);
+            gl.rotate(a, r.x, r.y, r.z);
+        }
+        Motion::Swing { pivot: [x, y, z], axis, arm, .. } => {
+            gl.translate(x, y, z);
+            let r = v(axis);
+            gl.rotate(a, r.x, r.y, r.z);
+            gl.translate(0.0, -arm, 0.0);
+        }
+        Motion::Hop { center: [x, y, z], along, .. } => {
+            let d = v(along) * a;
+            gl.translate(x + d.x, y + b, z + d.z);
+        }
+        Motion::Orbit { center: [x, y, z], radius, .. } => {
+            gl.translate(x, y, z);
+            gl.rotate(a, 0.0, 1.0, 0.0);
+            gl.translate(0.0, 0.0, radius);
+        }
+        Motion::Satellite { radius, .. } => {
+            if bug == Bug::ChildReversed {
+                gl.translate(0.0, 0.0, radius);
+                gl.rotate(a, 0.0, 1.0, 0.0);
+            } else {
+                gl.rotate(a, 0.0, 1.0, 0.0);
+                gl.translate(0.0, 0.0, radius);
+            }
+        }
+    }
+}
+
+fn draw(gl: &mut Gl, object: &Object, bug: Bug) {
+    let name = if bug == Bug::WrongNames {
+        object.name.replace("object ", "obj")
+    } else {
+        object.name.clone()
+    };
+    let mesh = if bug == Bug::WrongMesh {
+        cg_core::shapes::cuboid(Vec3::ONE).unwrap()
+    } else {
+        object.shape.mesh()
+    };
+    gl.draw(&name, &mesh);
+}
+
+fn display_with(bug: Bug, spec: &Spec, state: &State, gl: &mut Gl) {
+    gl.load_identity();
+    if bug == Bug::LightBeforeCamera {
+        gl.light_position(0, [10.0, 10.0, 10.0, 1.0]);
+    }
+    gl.translate(0.0, 0.0, -15.0);
+    gl.rotate(30.0, 1.0, 0.0, 0.0);
+    if bug != Bug::LightBeforeCamera {
+        gl.light_position(0, [10.0, 10.0, 10.0, 1.0]);
+    }
+    let push = |gl: &mut Gl| {
+        if bug != Bug::NoPushPop {
+            gl.push_matrix();
+        }
+    };
+    let pop = |gl: &mut Gl| {
+        if bug != Bug::NoPushPop {
+            gl.pop_matrix();
+        }
+    };
+    for (i, object) in spec.objects.iter().enumerate() {
+        if object.motion.parent().is_some() {
+            continue;
+        }
+        push(gl);
+        place(gl, state, i, object, bug);
+        draw(gl, object, bug);
+        for c in spec.children(i) {
+            if bug == Bug::ChildOutsideParent {
+                continue;
+            }
+            push(gl);
+            if bug == Bug::ChildIgnoresParentRotation {
+                // Back to the camera, then only the parent's position.
+                gl.load_identity();
+                gl.translate(0.0, 0.0, -15.0);
+                gl.rotate(30.0, 1.0, 0.0, 0.0);
+                let p = cg_a3::expected_model(spec, i, state.frame).w_axis;
+                gl.translate(p.x as f32, p.y as f32, p.z as f32);
+            }
+            place(gl, state, c, &spec.objects[c], bug);
+            draw(gl, &spec.objects[c], bug);
+            pop(gl);
+        }
+        if bug != Bug::MissingPop {
+            pop(gl);
+        }
+    }
+    if bug == Bug::ChildOutsideParent {
+        for (c, object) in
+            spec.objects.iter().enumerate().filter(|(_, o)| o.motion.parent().is_some())
+        {
+            push(gl);
+            place(gl, state, c, object, bug);
+            draw(gl, object, bug);
+            pop(gl);
+        }
+    }
+    if bug == Bug::ExtraPop {
+        gl.pop_matrix();
+    }
+}
+
+fn warmup_with(bug: Bug, gl: &mut Gl, t: f64) {
+    let mesh = cg_core::shapes::cuboid(Vec3::new(1.2, 0.6, 0.6)).unwrap();
+    let push = |gl: &mut Gl| {
+        if bug != Bug::WarmupNoPushPop {
+            gl.push_matrix();
+        }
+    };
+    let pop = |gl: &mut Gl| {
+        if bug != Bug::WarmupNoPushPop {
+            gl.pop_matrix();
+        }
+    };
+    let deg = |d: f64| if bug == Bug::WarmupRadians { d.to_radians() } else { d } as f32;
+    push(gl);
+    gl.translate(-3.0, 1.0, 0.0);
+    gl.rotate(deg(360.0 * (t / 4.0).rem_euclid(1.0)), 0.0, 1.0, 0.0);
+    gl.draw("box 1", &mesh);
+    pop(gl);
+    push(gl);
+    gl.translate(0.0, 1.0, 0.0);
+    gl.rotate(deg(30.0 * (TAU * (t / 2.0).rem_euclid(1.0)).sin()), 0.0, 0.0, 1.0);
+    gl.draw("box 2", &mesh);
+    pop(gl);
+    push(gl);
+    let u = (t / 2.0).rem_euclid(1.0);
+    let w = if u < 0.5 { 2.0 * u } else { 2.0 - 2.0 * u };
+    let x = 2.0 * w - 1.0;
+    let y = match bug {
+        Bug::WarmupLinearHop => 1.5 * (1.0 - x.abs()),
+        Bug::WarmupWrongHeight => 1.0 * (1.0 - x * x),
+        _ => 1.5 * (1.0 - x * x),
+    };
+    gl.translate((3.0 + x) as f32, (0.3 + y) as f32, 0.0);
+    gl.draw("box 3", &mesh);
+    pop(gl);
+    if bug == Bug::WarmupExtraPop {
+        gl.pop_matrix();
+    }
+}
+
+macro_rules! imp_for {
+    ($bug:expr) => {{
+        fn idle(spec: &Spec, state: &mut State) {
+            idle_with($bug, spec, state)
+        }
+        fn display(spec: &Spec, state: &State, gl: &mut Gl) {
+            display_with($bug, spec, state, gl)
+        }
+        fn warmup(gl: &mut Gl, t: f64) {
+            warmup_with($bug, gl, t)
+        }
+        Impl { warmup_display: warmup, idle, display }
+    }};
+}
+
+/// Every broken answer with the checks it must fail and some it must still pass (so the checks
+/// name the mistake instead of failing everything).
+fn broken_answers() -> Vec<(Bug, Impl, &'static [&'static str], &'static [&'static str])> {
+    vec![
+        (Bug::None, imp_for!(Bug::None), &[], &[]),
+        (
+            Bug::WrongPeriod,
+            imp_for!(Bug::WrongPeriod),
+            &["a3.t1.periods", "a3.t1.ratios", "a3.t2.poses"],
+            &["a3.t2.stack", "a3.t2.independent", "a3.t2.light"],
+        ),
+        (
+            Bug::Radians,
+            imp_for!(Bug::Radians),
+            &["a3.t1.periods", "a3.t1.ratios", "a3.t1.drift", "a3.t2.poses"],
+            &["a3.t2.stack", "a3.t2.light", "a3.t2.objects"],
+        ),
+        (
+            Bug::F32Accumulate,
+            imp_for!(Bug::F32Accumulate),
+            &["a3.t1.drift"],
+            &["a3.t2.poses", "a3.t1.periods", "a3.t1.ratios", "a3.t2.hierarchy"],
+        ),
+        (
+            Bug::OneFrameLate,
+            imp_for!(Bug::OneFrameLate),
+            &["a3.t2.poses"],
+            &["a3.t1.periods", "a3.t1.ratios", "a3.t2.stack"],
+        ),
+        (
+            Bug::ThirtyFps,
+            imp_for!(Bug::ThirtyFps),
+            &["a3.t1.periods", "a3.t2.poses", "a3.t1.drift"],
+            &["a3.t1.ratios", "a3.t2.stack"],
+        ),
+        (
+            Bug::LinearHop,
+            imp_for!(Bug::LinearHop),
+            &["a3.t2.poses"],
+            &["a3.t1.periods", "a3.t2.hierarchy"],
+        ),
+        (
+            Bug::NoPushPop,
+            imp_for!(Bug::NoPushPop),
+            &["a3.t2.poses", "a3.t2.independent"],
+            &["a3.t2.stack", "a3.t2.light", "a3.t2.objects"],
+        ),
+        (
+            Bug::ExtraPop,
+            imp_for!(Bug::ExtraPop),
+            &["a3.t2.stack"],
+            &[
+                "a3.t2.poses",
+                "a3.t2.independent",
+                "a3.t2.hierarchy",
+                "a3.t1.periods",
+                "a3.t1.drift",
+            ],
+        ),
+        (Bug::MissingPop, imp_for!(Bug::MissingPop), &["a3.t2.stack"], &["a3.t2.light"]),
+        (
+            Bug::LightBeforeCamera,
+            imp_for!(Bug::LightBeforeCamera),
+            &["a3.t2.light"],
+            &["a3.t2.poses", "a3.t2.stack", "a3.t1.drift"],
+        ),
+        (
+            Bug::ChildReversed,
+            imp_for!(Bug::ChildReversed),
+            &["a3.t2.hierarchy", "a3.t2.poses"],
+            &["a3.t2.independent", "a3.t2.stack", "a3.t1.periods"],
+        ),
+        (
+            Bug::ChildOutsideParent,
+            imp_for!(Bug::ChildOutsideParent),
+            &["a3.t2.hierarchy", "a3.t2.poses"],
+            &["a3.t2.independent", "a3.t2.stack"],
+        ),
+        (
+            Bug::ChildIgnoresParentRotation,
+            imp_for!(Bug::ChildIgnoresParentRotation),
+            &["a3.t2.hierarchy", "a3.t2.poses"],
+            &["a3.t2.independent", "a3.t2.light"],
+        ),
+        (
+            Bug::WrongNames,
+            imp_for!(Bug::WrongNames),
+            &["a3.t2.objects", "a3.t2.poses"],
+            &["a3.t2.light"],
+        ),
+        (
+            Bug::WrongMesh,
+            imp_for!(Bug::WrongMesh),
+            &["a3.t2.objects"],
+            &["a3.t2.poses", "a3.t2.hierarchy", "a3.t1.drift"],
+        ),
+        (
+            Bug::WarmupNoPushPop,
+            imp_for!(Bug::WarmupNoPushPop),
+            &["a3.t0.box2", "a3.t0.box3"],
+            &["a3.t0.box1", "a3.t0.stack"],
+        ),
+        (
+            Bug::WarmupExtraPop,
+            imp_for!(Bug::WarmupExtraPop),
+            &["a3.t0.stack"],
+            &["a3.t0.box1", "a3.t0.box2", "a3.t0.box3"],
+        ),
+        (
+            Bug::WarmupRadians,
+            imp_for!(Bug::WarmupRadians),
+            &["a3.t0.box1", "a3.t0.box2"],
+            &["a3.t0.box3", "a3.t0.stack"],
+        ),
+        (
+            Bug::WarmupLinearHop,
+            imp_for!(Bug::WarmupLinearHop),
+            &["a3.t0.box3"],
+            &["a3.t0.box1", "a3.t0.box2"],
+        ),
+        (
+            Bug::WarmupWrongHeight,
+            imp_for!(Bug::WarmupWrongHeight),
+            &["a3.t0.box3"],
+            &["a3.t0.stack"],
+        ),
+    ]
+}
+
+/// The student each broken answer is run for: 20260002 has the lecture's two orbits (the outer
+/// one the parent), a spin and periods whose f32 steps are inexact (unit 2.5 s); 20260005 has a
+/// hopping parent, a swing and a second hop.
+fn student_for(bug: Bug) -> &'static str {
+    match bug {
+        Bug::LinearHop | Bug::WarmupNoPushPop | Bug::WarmupWrongHeight => "20260005",
+        _ => "20260002",
+    }
+}
+
+#[test]
+fn broken_answers_fail_the_checks_that_name_their_mistake() {
+    let answers = broken_answers();
+    let all_ids: BTreeSet<String> =
+        run(&spec_for(STUDENTS[0]), &cg_solutions::a3::implementation())
+            .into_iter()
+            .map(|c| c.id)
+            .collect();
+    let outcomes: Vec<(Bug, &str, Vec<CheckResult>)> = std::thread::scope(|s| {
+        let handles: Vec<_> = answers
+            .iter()
+            .map(|(bug, imp, _, _)| {
+                let st = student_for(*bug);
+                s.spawn(move || (*bug, st, run(&spec_for(st), imp)))
+            })
+            .collect();
+        handles.into_iter().map(|h| h.join().unwrap()).collect()
+    });
+    let mut caught: BTreeMap<String, Vec<Bug>> = BTreeMap::new();
+    for (bug, student, results) in &outcomes {
+        let (_, _, must_fail, must_pass) = answers.iter().find(|a| a.0 == *bug).unwrap();
+        let failing = failed(results);
+        for id in *must_fail {
+            assert!(
+                failing.contains(*id),
+                "{bug:?} ({student}) should fail {id}:\n{}",
+                report(student, results)
+            );
+        }
+        for id in *must_pass {
+            assert!(
+                !failing.contains(*id),
+                "{bug:?} ({student}) should pass {id}:\n{}",
+                report(student, results)
+            );
+        }
+        if *bug == Bug::None {
+            assert!(
+                failing.is_empty(),
+                "the test's own clean answer fails:\n{}",
+                report(student, results)
+            );
+        }
+        for id in failing {
+            caught.entry(id).or_default().push(*bug);
+        }
+        // Every failure explains itself in both languages and says where.
+        for c in results {
+            if let Outcome::Fail(f) = &c.outcome {
+                assert!(!f.expected.is_empty() && !f.actual.is_empty(), "{}: {f:?}", c.id);
+                assert!(
+                    f.location.as_deref().is_some_and(|l| !l.is_empty()),
+                    "{} has no location: {f:?}",
+                    c.id
+                );
+                for text in [&f.cause, &f.hint] {
+                    assert!(!text.ja.is_empty() && !text.en.is_empty(), "{}: {f:?}", c.id);
+                }
+            } else {
+                assert!(c.passed(), "{} neither passed nor failed: {:?}", c.id, c.outcome);
+            }
+        }
+    }
+    for id in &all_ids {
+        assert!(caught.contains_key(id), "no broken answer fails {id}: {caught:?}");
+    }
+    // The messages name the mistake and the place: (answer, check, words in the cause, expected
+    // or actual, words in the location).
+    let named: [(Bug, &str, &str, &str); 16] = [
+        (Bug::NoPushPop, "a3.t2.independent", "still apply", "object"),
+        (Bug::ExtraPop, "a3.t2.stack", "GL_STACK_UNDERFLOW", "display()"),
+        (Bug::MissingPop, "a3.t2.stack", "glPopMatrix missing", "display()"),
+        (Bug::Radians, "a3.t2.poses", "radians", "t = "),
+        (Bug::F32Accumulate, "a3.t1.drift", "accumulated in f32", "frame 1000000"),
+        (Bug::ChildReversed, "a3.t1.drift", "not drift", "frame 1000000"),
+        (Bug::ChildIgnoresParentRotation, "a3.t2.hierarchy", "not its rotation", "object 3"),
+        (Bug::ThirtyFps, "a3.t2.hierarchy", "twice as fast", "object 3"),
+        (Bug::ChildReversed, "a3.t2.hierarchy", "reversed", "object 3"),
+        (Bug::ChildOutsideParent, "a3.t2.hierarchy", "world's origin", "object 3"),
+        (Bug::LightBeforeCamera, "a3.t2.light", "before the camera", "GL_LIGHT0"),
+        (Bug::OneFrameLate, "a3.t2.poses", "one frame late", "frame"),
+        (Bug::WrongPeriod, "a3.t1.periods", "the period is 10 s instead of 2.5 s", "object 1"),
+        (Bug::WrongPeriod, "a3.t2.poses", "period of 10 s instead of 2.5 s", "object 1"),
+        (Bug::ThirtyFps, "a3.t2.poses", "twice as fast", "t = "),
+        (Bug::WarmupLinearHop, "a3.t0.box3", "parabola", "box 3, t = "),
+    ];
+    for (bug, id, words, place) in named {
+        let (_, _, results) = outcomes.iter().find(|o| o.0 == bug).unwrap();
+        let c = results.iter().find(|c| c.id == id).unwrap();
+        let Outcome::Fail(f) = &c.outcome else {
+            panic!("{bug:?}: {id} does not fail: {:?}", c.outcome)
+        };
+        let text = format!("{} | {} | {}", f.cause.en, f.expected, f.actual);
+        assert!(text.contains(words), "{bug:?}: {id}: {words:?} not in {text:?}");
+        let at = f.location.as_deref().unwrap_or_default();
+        assert!(at.contains(place), "{bug:?}: {id}: {place:?} not in the location {at:?}");
+        assert!(f.cause.ja != f.cause.en && f.hint.ja != f.hint.en, "{id}: {f:?}");
+    }
+}
+
+#[test]
+fn the_view_draws_the_objects_on_the_ground() {
+    let spec = spec_for(STUDENTS[0]);
+    let scene = cg_a3::view(&spec, &cg_solutions::a3::implementation(), 1.5).unwrap();
+    let names: Vec<&str> = scene.objects.iter().map(|o| o.name.as_str()).collect();
+    assert_eq!(names[0], "ground");
+    assert_eq!(names.len(), 1 + spec.objects.len(), "{names:?}");
+    // The stubs draw the ground alone (a window still opens).
+    let stub = cg_a3::view(&spec, &cg_exercises::a3::implementation(), 1.5).unwrap();
+    assert_eq!(stub.objects.len(), 1);
+    // Object 2 (the lecture's outer orbit) at t = 1.5 s sits where the oracle puts it.
+    let at = scene.objects[2].transform.matrix().unwrap().as_dmat4().w_axis.truncate();
+    let model = cg_a3::expected_model(&spec, 1, 90);
+    let camera = cg_a3::camera_product().matrix().unwrap().as_dmat4();
+    let want = (camera * model).w_axis.truncate();
+    assert!((at - want).length() < 1e-4, "{at} vs {want}");
+    assert_eq!(cg_a3::warmup_view(&cg_solutions::a3::implementation(), 0.5).objects.len(), 4);
+    // The reference's frames carry the variables' names for the report.
+    let gl = cg_a3::record_frame(&spec, &cg_solutions::a3::implementation(), 90);
+    let child = gl.draws().iter().find(|d| d.name == "object 3").unwrap();
+    assert_eq!(
+        child.model_view.symbolic(),
+        "T(0, 0, -15) · Rx(30°) · T(0, 1, 0) · Ry(theta_2) · T(0, 0, 3) · Ry(theta_3) · T(0, 0, 1.2)"
+    );
+    assert_eq!(
+        cg_a3::model_product(&spec, 2, 90).symbolic(),
+        "T(0, 1, 0) · Ry(theta_2) · T(0, 0, 3) · Ry(theta_3) · T(0, 0, 1.2)"
+    );
+}
+
+/// The spec's JSON carries the table's numbers (`0.6`, not f32's widening `0.6000000238418579`).
+#[test]
+fn the_spec_json_has_the_tables_numbers() {
+    for s in STUDENTS {
+        let student: StudentNumber = s.parse().unwrap();
+        let json = cg_assign::Assignment::for_student(&student, TableVersion::V1).to_json()["a3"]
+            .to_string();
+        assert!(!json.contains("0000000") && !json.contains("9999999"), "{json}");
+        assert!(json.contains("\"period_s\"") && json.contains("\"unit_s\""), "{json}");
+    }
+}
