@@ -93,7 +93,9 @@ impl Assignment {
     /// The assignments as JSON (`student`, `table`, and one object per assignment).
     #[must_use]
     pub fn to_json(&self) -> serde_json::Value {
-        serde_json::to_value(self).unwrap_or(serde_json::Value::Null)
+        let mut value = serde_json::to_value(self).unwrap_or(serde_json::Value::Null);
+        cg_harness::tidy_f32_numbers(&mut value);
+        value
     }
 }
 

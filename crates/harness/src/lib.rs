@@ -22,5 +22,43 @@ pub mod text;
 pub mod variant;
 
 pub use check::{CheckResult, Failure, Outcome, Report};
+
+/// Rewrites every number in `value` that is exactly an f32 (as every number of the kit's specs
+/// is) as the shortest decimal that reads back as that f32: `0.05000000074505806` becomes
+/// `0.05`. Other numbers are left alone. For JSON a person or a tool reads.
+pub fn tidy_f32_numbers(value: &mut serde_json::Value) {
+    match value {
+        serde_json::Value::Number(n) => {
+            if let Some(x) = n.as_f64().filter(|_| n.is_f64()) {
+                let single = x as f32;
+                if f64::from(single) == x {
+                    if let Some(tidy) = single
+                        .to_string()
+                        .parse::<f64>()
+                        .ok()
+                        .and_then(serde_json::Number::from_f64)
+                    {
+                        *n = tidy;
+                    }
+                }
+            }
+        }
+        serde_json::Value::Array(items) => items.iter_mut().for_each(tidy_f32_numbers),
+        serde_json::Value::Object(map) => map.values_mut().for_each(tidy_f32_numbers),
+        _ => {}
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn f32_numbers_print_as_their_shortest_decimal() {
+        let mut v = serde_json::json!({"a": f64::from(0.05f32), "b": [f64::from(-0.02f32), 1.5, 3], "c": 0.1f64, "d": "x"});
+        tidy_f32_numbers(&mut v);
+        assert_eq!(v.to_string(), r#"{"a":0.05,"b":[-0.02,1.5,3],"c":0.1,"d":"x"}"#);
+    }
+}
 pub use text::Text;
 pub use variant::{StudentNumber, TableVersion, VariantRng};
