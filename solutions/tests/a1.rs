@@ -647,7 +647,7 @@ fn assert_explains(c: &CheckResult, context: &str) {
     match &c.outcome {
         Outcome::Fail(f) => {
             assert!(!f.expected.is_empty() && !f.actual.is_empty(), "{context}: {f:?}");
-            let at = f.location.as_deref().unwrap_or("");
+            let at = f.location.as_ref().map_or("", |l| l.en.as_str());
             assert!(!at.is_empty(), "{context}: no location: {f:?}");
             for text in [&f.cause, &f.hint] {
                 assert!(!text.ja.is_empty() && !text.en.is_empty(), "{context}: {f:?}");
@@ -688,8 +688,12 @@ fn broken_answers_fail_the_checks_meant_to_catch_them() {
             for (id, words) in b.says {
                 let c = results.iter().find(|c| c.id == *id).unwrap();
                 let Outcome::Fail(f) = &c.outcome else { panic!("{context}: {c:?}") };
-                let said =
-                    format!("{} {} {}", f.cause.en, f.actual, f.location.as_deref().unwrap_or(""));
+                let said = format!(
+                    "{} {} {}",
+                    f.cause.en,
+                    f.actual,
+                    f.location.as_ref().map_or("", |l| l.en.as_str())
+                );
                 assert!(said.contains(words), "{context}: {id} does not say {words:?}: {f:#?}");
             }
             caught.extend(failed);
@@ -718,13 +722,13 @@ fn failures_name_the_vertex_the_face_and_the_edge() {
     let c = cg_a1::checks(&spec, &b);
     let Outcome::Fail(f) = &c[1].outcome else { panic!("{:?}", c[1]) };
     // Apex first either way; the base runs the other way round from V1: V2 and V6 swap places.
-    assert_eq!(f.location.as_deref(), Some("V2, V3, V5, V6"), "{f:#?}");
+    assert_eq!(f.location.as_ref().map(|l| l.en.as_str()), Some("V2, V3, V5, V6"), "{f:#?}");
     assert!(f.cause.ja.contains("上から見て時計回り"), "{}", f.cause.ja);
     let missing = solution_with(None, Some(f_missing), Some(n_missing), None);
     let c = cg_a1::checks(&spec, &missing);
     let closed = c.iter().find(|c| c.id == "a1.t2.closed").unwrap();
     let Outcome::Fail(f) = &closed.outcome else { panic!("{closed:?}") };
-    assert!(f.location.as_deref().unwrap().starts_with("edge V"), "{f:#?}");
+    assert!(f.location.as_ref().unwrap().en.as_str().starts_with("edge V"), "{f:#?}");
     let last = *sol::faces(&spec).last().unwrap();
     let mut named = last;
     // The named face is the missing one, up to where the cycle starts.

@@ -83,7 +83,7 @@ fn every_check_fails_on_the_pristine_stubs() {
             for text in [&f.cause, &f.hint] {
                 assert!(!text.ja.is_empty() && !text.en.is_empty(), "{}: {f:?}", r.id);
             }
-            assert!(f.location.as_deref().is_some_and(|l| !l.is_empty()), "{}: {f:?}", r.id);
+            assert!(f.location.as_ref().is_some_and(|l| !l.is_empty()), "{}: {f:?}", r.id);
         }
     }
 }

@@ -341,11 +341,7 @@ fn each_broken_answer_fails_exactly_its_checks_and_says_why() {
             match &r.outcome {
                 Outcome::Fail(f) => {
                     assert!(!f.expected.is_empty() && !f.actual.is_empty(), "{name}: {}", r.id);
-                    assert!(
-                        f.location.as_deref().is_some_and(|l| !l.is_empty()),
-                        "{name}: {}",
-                        r.id
-                    );
+                    assert!(f.location.as_ref().is_some_and(|l| !l.is_empty()), "{name}: {}", r.id);
                     for text in [&f.cause, &f.hint] {
                         assert!(
                             !text.ja.is_empty() && !text.en.is_empty(),

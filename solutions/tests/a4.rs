@@ -392,7 +392,7 @@ fn failures_explain_themselves_in_both_languages_and_say_where() {
                     Outcome::Fail(f) => {
                         let ctx = format!("{} / {who} / {}", broken.name, c.id);
                         assert!(!f.expected.is_empty() && !f.actual.is_empty(), "{ctx}");
-                        assert!(f.location.as_deref().is_some_and(|l| !l.is_empty()), "{ctx}");
+                        assert!(f.location.as_ref().is_some_and(|l| !l.is_empty()), "{ctx}");
                         for text in [&f.cause, &f.hint, &c.title] {
                             assert!(!text.ja.is_empty() && !text.en.is_empty(), "{ctx}: {text:?}");
                             assert!(

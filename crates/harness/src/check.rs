@@ -29,16 +29,17 @@ use serde::Serialize;
 
 use crate::text::Text;
 
-/// Why a check failed, in the words a student needs.
+/// Why a check failed, in the words a student needs — every part in Japanese and English
+/// (numbers and names convert from a plain string, the same in both languages).
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct Failure {
     /// What the check expected (numbers, a list, a property).
-    pub expected: String,
+    pub expected: Text,
     /// What it found.
-    pub actual: String,
+    pub actual: Text,
     /// Where: a vertex `V3`, a face `F2`, an edge `V1–V3`, a time `t = 2.5 s`, a pixel.
     #[serde(rename = "where")]
-    pub location: Option<String>,
+    pub location: Option<Text>,
     /// What usually causes this.
     pub cause: Text,
     /// What to try.
@@ -48,13 +49,13 @@ pub struct Failure {
 impl Failure {
     /// A failure with what was expected and what was found.
     #[must_use]
-    pub fn new(expected: impl Into<String>, actual: impl Into<String>) -> Failure {
+    pub fn new(expected: impl Into<Text>, actual: impl Into<Text>) -> Failure {
         Failure { expected: expected.into(), actual: actual.into(), ..Failure::default() }
     }
 
     /// Where the problem is.
     #[must_use]
-    pub fn at(mut self, location: impl Into<String>) -> Failure {
+    pub fn at(mut self, location: impl Into<Text>) -> Failure {
         self.location = Some(location.into());
         self
     }
@@ -317,10 +318,16 @@ impl Report {
                 _ => {}
             }
             if let Some(f) = detail {
-                let _ = writeln!(out, "      {}: {}", t("期待する値", "expected"), f.expected);
-                let _ = writeln!(out, "      {}: {}", t("実際の値  ", "actual  "), f.actual);
+                let _ = writeln!(
+                    out,
+                    "      {}: {}",
+                    t("期待する値", "expected"),
+                    f.expected.get(lang)
+                );
+                let _ =
+                    writeln!(out, "      {}: {}", t("実際の値  ", "actual  "), f.actual.get(lang));
                 if let Some(l) = &f.location {
-                    let _ = writeln!(out, "      {}: {l}", t("場所      ", "where   "));
+                    let _ = writeln!(out, "      {}: {}", t("場所      ", "where   "), l.get(lang));
                 }
                 if !f.cause.is_empty() {
                     let _ = writeln!(
@@ -382,7 +389,7 @@ mod tests {
         let pass = run("x.t1.a", "x.t1", t("a", "a"), || Ok(()));
         assert!(pass.passed());
         let fail = run("x.t1.b", "x.t1", t("b", "b"), || Err(Failure::new("1", "2").at("V3")));
-        assert!(matches!(&fail.outcome, Outcome::Fail(f) if f.location.as_deref() == Some("V3")));
+        assert!(matches!(&fail.outcome, Outcome::Fail(f) if f.location == Some("V3".into())));
         let stub = run("x.t2.c", "x.t2", t("c", "c"), || todo!("x.t2: write it"));
         assert_eq!(stub.outcome, Outcome::NotDone { message: "x.t2: write it".into() });
         let bare = run("x.t2.d", "x.t2", t("d", "d"), || unimplemented!());
@@ -456,7 +463,7 @@ mod tests {
         let json = report.to_json();
         assert_eq!(json["passed"], 1);
         assert_eq!(json["checks"][1]["status"], "fail");
-        assert_eq!(json["checks"][1]["where"], "edge V1–V3");
+        assert_eq!(json["checks"][1]["where"]["en"], "edge V1–V3");
         assert_eq!(json["checks"][1]["cause"]["ja"], "面が足りない");
         assert_eq!(json["checks"][2]["status"], "not_done");
         assert_eq!(json["checks"][2]["message"], "a1.t3: normals");

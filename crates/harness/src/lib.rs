@@ -31,15 +31,14 @@ pub fn tidy_f32_numbers(value: &mut serde_json::Value) {
         serde_json::Value::Number(n) => {
             if let Some(x) = n.as_f64().filter(|_| n.is_f64()) {
                 let single = x as f32;
-                if f64::from(single) == x {
-                    if let Some(tidy) = single
+                if f64::from(single) == x
+                    && let Some(tidy) = single
                         .to_string()
                         .parse::<f64>()
                         .ok()
                         .and_then(serde_json::Number::from_f64)
-                    {
-                        *n = tidy;
-                    }
+                {
+                    *n = tidy;
                 }
             }
         }
@@ -48,6 +47,9 @@ pub fn tidy_f32_numbers(value: &mut serde_json::Value) {
         _ => {}
     }
 }
+
+pub use text::Text;
+pub use variant::{StudentNumber, TableVersion, VariantRng};
 
 #[cfg(test)]
 mod tests {
@@ -60,5 +62,3 @@ mod tests {
         assert_eq!(v.to_string(), r#"{"a":0.05,"b":[-0.02,1.5,3],"c":0.1,"d":"x"}"#);
     }
 }
-pub use text::Text;
-pub use variant::{StudentNumber, TableVersion, VariantRng};

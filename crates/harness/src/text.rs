@@ -35,6 +35,34 @@ impl Text {
     }
 }
 
+impl From<&str> for Text {
+    /// The same words in both languages: numbers, symbols, names (`V3`, `t = 2.5 s`).
+    fn from(s: &str) -> Text {
+        Text::new(s, s)
+    }
+}
+
+impl From<String> for Text {
+    /// The same words in both languages: numbers, symbols, names (`V3`, `t = 2.5 s`).
+    fn from(s: String) -> Text {
+        Text { ja: s.clone(), en: s }
+    }
+}
+
+impl From<&String> for Text {
+    /// The same words in both languages.
+    fn from(s: &String) -> Text {
+        Text::from(s.as_str())
+    }
+}
+
+impl std::fmt::Display for Text {
+    /// The English version (for logs and test messages; students get [`Text::get`]).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.en)
+    }
+}
+
 /// `t("日本語", "English")`: a [`Text`] from two string slices.
 #[must_use]
 pub fn t(ja: &str, en: &str) -> Text {
