@@ -30,17 +30,18 @@ fn students() -> Vec<StudentNumber> {
 
 #[test]
 fn table_1_never_changes() {
-    let table: serde_json::Value = students()
-        .iter()
-        .map(|s| Assignment::for_student(s, TableVersion::V1).to_json())
-        .collect();
+    let table: serde_json::Value =
+        students().iter().map(|s| Assignment::for_student(s, TableVersion::V1).to_json()).collect();
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/table-v1.json");
     let text = serde_json::to_string_pretty(&table).unwrap() + "\n";
     if !path.exists() && std::env::var("CG_BLESS").is_ok_and(|v| v == "1") {
         std::fs::write(&path, &text).unwrap();
     }
     let frozen = std::fs::read_to_string(&path).unwrap_or_else(|e| {
-        panic!("{}: {e} (create it once with CG_BLESS=1, when a table is published)", path.display())
+        panic!(
+            "{}: {e} (create it once with CG_BLESS=1, when a table is published)",
+            path.display()
+        )
     });
     if frozen != text {
         let first = frozen.lines().zip(text.lines()).position(|(a, b)| a != b);
@@ -59,7 +60,12 @@ fn the_64_students_cover_every_assignment_with_different_variants() {
     let all: Vec<serde_json::Value> =
         students().iter().map(|s| Assignment::for_student(s, TableVersion::V1).to_json()).collect();
     for id in ["a1", "a2", "a3", "a4", "s"] {
-        let distinct: std::collections::BTreeSet<String> = all.iter().map(|a| a[id].to_string()).collect();
-        assert!(distinct.len() >= 32, "{id}: only {} distinct variants among 64 students", distinct.len());
+        let distinct: std::collections::BTreeSet<String> =
+            all.iter().map(|a| a[id].to_string()).collect();
+        assert!(
+            distinct.len() >= 32,
+            "{id}: only {} distinct variants among 64 students",
+            distinct.len()
+        );
     }
 }

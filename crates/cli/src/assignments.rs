@@ -176,6 +176,9 @@ pub struct ViewArgs {
     /// The time in seconds, for animations / 時刻（秒、アニメーション用）
     #[arg(long, default_value_t = 0.0)]
     time: f64,
+    /// a3 only: the in-class warm-up (three boxes) instead of your assignment / a3 のみ: 演習課題（3 つの直方体）を表示
+    #[arg(long)]
+    warmup: bool,
     /// The folder for the PNG files / PNG を保存するフォルダ
     #[arg(short, long, default_value = "out")]
     output: PathBuf,
@@ -186,8 +189,16 @@ fn view_scene(
     a: &Assignment,
     reference: bool,
     time: f64,
+    warmup: bool,
 ) -> Result<Result<Scene, Text>, Outcome> {
     let _ = reference;
+    #[cfg(feature = "reference")]
+    if reference && warmup {
+        return guarded(|| Ok(cg_a3::warmup_view(&cg_solutions::a3::implementation(), time)));
+    }
+    if warmup {
+        return guarded(|| Ok(cg_a3::warmup_view(&cg_exercises::a3::implementation(), time)));
+    }
     #[cfg(feature = "reference")]
     if reference {
         return guarded(|| match which {
@@ -212,6 +223,11 @@ fn view_scene(
 pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
     let record = student(args.student.as_deref(), None, lang)?;
     let a = Assignment::for_student(&record.student, record.table);
+    if args.warmup && args.which != Which::A3 {
+        return Err(lang
+            .pick("--warmup は a3 だけの設定です", "--warmup belongs to a3 only")
+            .to_owned());
+    }
     let mut sides = vec![(false, lang.pick("あなたの結果", "yours"), "yours")];
     if cfg!(feature = "reference") {
         sides.push((true, lang.pick("参考解答", "reference"), "reference"));
@@ -224,8 +240,9 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
         )
     );
     for (reference, label, file) in sides {
-        let path = args.output.join(format!("view-{}-{file}.png", args.which.id()));
-        match view_scene(args.which, &a, reference, args.time) {
+        let name = if args.warmup { "a3-warmup" } else { args.which.id() };
+        let path = args.output.join(format!("view-{name}-{file}.png"));
+        match view_scene(args.which, &a, reference, args.time, args.warmup) {
             Ok(Ok(scene)) => {
                 let image = cg_raster::render(&scene, &cg_raster::Options::default())
                     .map_err(|e| e.message(lang))?

@@ -1,0 +1,117 @@
+//! `cg assignment`, `cg check` and `cg view` end to end: a student's assignment from their
+//! number, the record in exercises/student.toml, the checks on the pristine stubs (none pass),
+//! and the views as PNG files.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").canonicalize().unwrap()
+}
+
+/// A scratch folder with an empty exercises/, so the student file goes there, not into the kit.
+fn scratch(test: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cg-assignments").join(test);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(dir.join("exercises")).unwrap();
+    dir
+}
+
+fn cg(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_cg"))
+        .args(args)
+        .current_dir(dir)
+        .env_remove("CG_LANG")
+        .env_remove("LANG")
+        .env_remove("LC_ALL")
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn the_assignment_follows_from_the_number_and_is_recorded_once() {
+    let dir = scratch("assignment");
+    let o = cg(&dir, &["assignment", "--student", "12345678", "--save", "--lang", "en"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.starts_with("Student ID: 12345678"), "{text}");
+    for task in ["a1.t1", "a2.t1", "a3.t1", "a4.t1", "s.t1"] {
+        assert!(text.contains(task), "{task} missing from the assignment text");
+    }
+    let record = std::fs::read_to_string(dir.join("exercises/student.toml")).unwrap();
+    assert!(record.contains("student = \"12345678\""), "{record}");
+    // Recorded: later commands need no number, and print the same assignment.
+    let again = cg(&dir, &["assignment", "--lang", "en"]);
+    assert_eq!(String::from_utf8_lossy(&again.stdout), text);
+    // JSON, whole and for one assignment, is the library's.
+    let json: serde_json::Value =
+        serde_json::from_slice(&cg(&dir, &["assignment", "--json"]).stdout).unwrap();
+    let expected = cg_assign::Assignment::for_student(
+        &"12345678".parse().unwrap(),
+        cg_harness::TableVersion::V1,
+    );
+    assert_eq!(json, expected.to_json());
+    let a1: serde_json::Value =
+        serde_json::from_slice(&cg(&dir, &["assignment", "--json", "--only", "a1"]).stdout)
+            .unwrap();
+    assert_eq!(a1, expected.to_json()["a1"]);
+}
+
+#[test]
+fn a_bad_or_missing_number_says_what_to_do() {
+    let dir = scratch("missing");
+    let o = cg(&dir, &["check", "a1", "--lang", "ja"]);
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("--save") && err.contains("student.toml"), "{err}");
+    let o = cg(&dir, &["assignment", "--student", "1234567x", "--lang", "en"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success() && err.contains("8 digits") && err.contains("'x'"), "{err}");
+}
+
+#[test]
+fn checks_on_the_pristine_stubs_all_fail_and_say_not_done_yet() {
+    let o = cg(&root(), &["check", "a1", "--student", "12345678", "--json"]);
+    assert!(!o.status.success(), "stubs do not pass");
+    let reports: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let r = &reports[0];
+    assert_eq!(r["assignment"], "a1");
+    assert!(r["total"].as_u64().unwrap() > 5);
+    assert_eq!(r["passed"], 0);
+    assert!(r["checks"].as_array().unwrap().iter().all(|c| c["status"] == "not_done"), "{r}");
+    let o = cg(&root(), &["check", "a1", "--student", "12345678", "--lang", "ja"]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("まだです: a1.t1") && text.contains("進み具合: 0/"), "{text}");
+}
+
+#[test]
+fn views_are_drawn_for_the_student_and_the_reference() {
+    let out = scratch("view").join("png");
+    let o = cg(
+        &root(),
+        &["view", "a1", "--student", "12345678", "-o", out.to_str().unwrap(), "--lang", "en"],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    // The stubs are not done, so only the reference is drawn; the student's side says why.
+    assert!(text.contains("yours: not done yet"), "{text}");
+    assert!(out.join("view-a1-reference.png").exists(), "{text}");
+    let warm = cg(
+        &root(),
+        &[
+            "view",
+            "a3",
+            "--warmup",
+            "--time",
+            "1",
+            "--student",
+            "12345678",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+    );
+    assert!(warm.status.success(), "{}", String::from_utf8_lossy(&warm.stderr));
+    assert!(out.join("view-a3-warmup-reference.png").exists());
+    let wrong = cg(&root(), &["view", "a1", "--warmup", "--student", "12345678"]);
+    assert!(!wrong.status.success(), "--warmup is for a3 only");
+}
