@@ -92,6 +92,16 @@ pub fn without_quoted_code(report: &str) -> String {
         .join("\n")
 }
 
+/// `text` up to the panic message it quotes (after `（panic）: ` or `panicked: `), for the views'
+/// explanations.
+#[allow(dead_code)] // Not every assignment's test needs it.
+pub fn without_panic_message(text: &str) -> &str {
+    ["（panic）: ", "panicked: "]
+        .iter()
+        .find_map(|m| text.find(m).map(|at| &text[..at + m.len()]))
+        .unwrap_or(text)
+}
+
 /// What is wrong with the languages of `ja` (no English word outside `allowed`) and `en` (no
 /// Japanese character): one line per offending word or character, each with the line it is in.
 pub fn language_problems(context: &str, ja: &str, en: &str, allowed: &[&str]) -> Vec<String> {
