@@ -208,7 +208,7 @@ fn objects_in_place(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         ] {
             let draws: Vec<_> = gl.draws().iter().filter(|d| d.name == name).collect();
             let state = show::state(&s, with_target);
-            let at = Text::new(format!("{name_ja}, {state}"), format!("{name}, {state}"));
+            let at = Text::new(format!("{name_ja}、{state}"), format!("{name}, {state}"));
             if draws.len() != 1 {
                 let n = draws.len();
                 return Err(Failure::new(

@@ -485,7 +485,7 @@ pub(super) fn image(spec: &Spec, imp: &Impl, mode: Shading) -> Result<(), Failur
         ),
         Text::new(
             format!(
-                "{within} 画素（{share:.1} %）が以内、{off} 画素が異なる（うちハイライト内 {off_in_highlight}）、x {x0}–{x1}、y {y0}–{y1}; 最大の差 {d}/255（画素 ({x}, {y})）: kit ({er}, {eg}, {eb})、あなた ({ar}, {ag}, {ab})"
+                "{IMAGE_TOLERANCE}/255 以内は {within} 画素（{share:.1} %）、超えるのは {off} 画素（うちハイライト内 {off_in_highlight}）、x {x0}–{x1}、y {y0}–{y1}; 最大の差 {d}/255（画素 ({x}, {y})）: kit ({er}, {eg}, {eb})、あなた ({ar}, {ag}, {ab})"
             ),
             format!(
                 "{within} ({share:.1} %) within; {off} differ ({off_in_highlight} in the highlight), x {x0}–{x1}, y {y0}–{y1}; the largest difference {d}/255 at pixel ({x}, {y}): kit ({er}, {eg}, {eb}), yours ({ar}, {ag}, {ab})"
