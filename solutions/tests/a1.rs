@@ -15,6 +15,8 @@ use cg_harness::check::{CheckResult, Outcome, guarded};
 use cg_harness::{StudentNumber, TableVersion, VariantRng};
 use cg_solutions::a1 as sol;
 
+mod common;
+
 /// Students chosen so that every family, both orders, both ring directions, both ridge axes and
 /// every number of sides 3–8 occur (asserted below).
 const STUDENTS: [&str; 11] = [
@@ -816,4 +818,40 @@ fn the_view_shows_what_is_done_and_explains_what_keeps_it_from_drawing() {
         let why = cg_a1::view(&spec, &imp, 0.0).unwrap_err();
         assert!(!why.ja.is_empty() && !why.en.is_empty(), "{why:?}");
     }
+}
+
+// ---------------------------------------------------------------------------------------------
+// One language at a time
+
+/// The identifiers that are plain words and that the Japanese report and assignment text
+/// really use, as code: the student's functions `vertices(spec)` and `faces`, and the OpenGL
+/// program's `display()`. (Identifiers shaped like code — `face_normals`, `n.normalize`,
+/// `glRotatef` — need no listing; see `common::english_words`.)
+const CODE_WORDS: &[&str] = &["vertices", "faces", "spec", "display"];
+
+#[test]
+fn reports_read_in_one_language() {
+    let mut problems = Vec::new();
+    let answers = std::iter::once(("the stubs", cg_exercises::a1::implementation()))
+        .chain(broken_answers().into_iter().map(|b| (b.name, b.imp)));
+    for (name, imp) in answers {
+        for s in STUDENTS {
+            let report = cg_harness::check::Report {
+                assignment: cg_a1::ID.into(),
+                student: Some(s.into()),
+                checks: cg_a1::checks(&spec_of(s), &imp),
+            };
+            problems.extend(common::report_problems(&format!("{name} / {s}"), &report, CODE_WORDS));
+        }
+    }
+    for s in STUDENTS {
+        let spec = spec_of(s);
+        problems.extend(common::language_problems(
+            &format!("describe / {s}"),
+            &spec.describe(Lang::Ja),
+            &spec.describe(Lang::En),
+            CODE_WORDS,
+        ));
+    }
+    common::assert_no_problems(&problems);
 }

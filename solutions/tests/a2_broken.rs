@@ -7,16 +7,23 @@ use std::collections::BTreeSet;
 
 use cg_a2::{CameraState, Drag, DragAxis, Gl, Impl, LIGHT0_POSITION, MouseButton, Operation, Spec};
 use cg_core::glam::Vec3;
+use cg_core::lang::Lang;
 use cg_core::product::Factor;
 use cg_harness::check::Outcome;
 use cg_harness::{CheckResult, StudentNumber, TableVersion, VariantRng};
+
+mod common;
 
 /// A student with every kind of check: a pan, the pitch range [−90, 90] (both poles), yaw
 /// 1.5°/px, pitch 2°/px, distance on Shift + left dx, rotate on the left button.
 const STUDENT: &str = "20260021";
 
 fn spec() -> Spec {
-    let n: StudentNumber = STUDENT.parse().unwrap();
+    spec_of(STUDENT)
+}
+
+fn spec_of(student: &str) -> Spec {
+    let n: StudentNumber = student.parse().unwrap();
     cg_a2::variant(&mut VariantRng::new(&n, TableVersion::V1, cg_a2::ID))
 }
 
@@ -531,4 +538,50 @@ fn the_causes_name_the_mistake() {
         let text = cause(&imp, id);
         assert!(text.contains(needle), "{id}: {needle:?} not in {text:?}");
     }
+}
+
+/// The identifiers that are plain words and that the Japanese report and assignment text
+/// really use, as code: the student's functions and their parameters (`motion(spec, state,
+/// drag)`, `camera(gl, state)`, `display()`), Rust's `else`, and the `Shift` key. (Identifiers
+/// shaped like code — `camera_pitch`, `gl.translate`, `GL_LIGHT0` — need no listing; see
+/// `common::english_words`.)
+const CODE_WORDS: &[&str] =
+    &["motion", "spec", "state", "drag", "camera", "display", "else", "Shift"];
+
+/// Students of other layouts (Middle and Right buttons, no pan, other ranges), for the texts
+/// that depend on the spec.
+const MORE_STUDENTS: [&str; 4] = ["20260001", "20260002", "20260005", "20260013"];
+
+#[test]
+fn reports_read_in_one_language() {
+    let mut problems = Vec::new();
+    for student in std::iter::once(STUDENT).chain(MORE_STUDENTS) {
+        let spec = spec_of(student);
+        let answers = std::iter::once(("the stubs", cg_exercises::a2::implementation()))
+            .chain(broken().into_iter().map(|(name, imp, _)| (name, imp)));
+        for (name, imp) in answers {
+            let report = cg_harness::check::Report {
+                assignment: cg_a2::ID.into(),
+                student: Some(student.into()),
+                checks: cg_a2::checks(&spec, &imp),
+            };
+            let context = format!("{name} / {student}");
+            problems.extend(common::report_problems(&context, &report, CODE_WORDS));
+            if let Err(why) = cg_a2::view(&spec, &imp, 0.0) {
+                problems.extend(common::language_problems(
+                    &format!("view: {context}"),
+                    &why.ja,
+                    &why.en,
+                    CODE_WORDS,
+                ));
+            }
+        }
+        problems.extend(common::language_problems(
+            &format!("describe / {student}"),
+            &spec.describe(Lang::Ja),
+            &spec.describe(Lang::En),
+            CODE_WORDS,
+        ));
+    }
+    common::assert_no_problems(&problems);
 }

@@ -5,6 +5,7 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::f64::consts::TAU;
+use std::sync::OnceLock;
 
 use cg_a3::{Impl, Motion, Object, Spec, State, WorldAxis};
 use cg_core::gl::Gl;
@@ -12,6 +13,8 @@ use cg_core::glam::Vec3;
 use cg_core::lang::Lang;
 use cg_harness::check::{CheckResult, Outcome, Report};
 use cg_harness::{StudentNumber, TableVersion, VariantRng};
+
+mod common;
 
 /// Students whose variants together hold every family: 3 and 4 objects; the parent orbiting
 /// or hopping; independent spins about X, Y and Z, swings about X, Y and Z, hops and orbits
@@ -528,6 +531,25 @@ fn student_for(bug: Bug) -> &'static str {
     }
 }
 
+/// The checks of every broken answer for its student, run once (each on its own thread) for
+/// the tests below.
+fn broken_outcomes() -> &'static [(Bug, &'static str, Vec<CheckResult>)] {
+    static OUTCOMES: OnceLock<Vec<(Bug, &'static str, Vec<CheckResult>)>> = OnceLock::new();
+    OUTCOMES.get_or_init(|| {
+        let answers = broken_answers();
+        std::thread::scope(|s| {
+            let handles: Vec<_> = answers
+                .iter()
+                .map(|(bug, imp, _, _)| {
+                    let st = student_for(*bug);
+                    s.spawn(move || (*bug, st, run(&spec_for(st), imp)))
+                })
+                .collect();
+            handles.into_iter().map(|h| h.join().unwrap()).collect()
+        })
+    })
+}
+
 #[test]
 fn broken_answers_fail_the_checks_that_name_their_mistake() {
     let answers = broken_answers();
@@ -536,18 +558,9 @@ fn broken_answers_fail_the_checks_that_name_their_mistake() {
             .into_iter()
             .map(|c| c.id)
             .collect();
-    let outcomes: Vec<(Bug, &str, Vec<CheckResult>)> = std::thread::scope(|s| {
-        let handles: Vec<_> = answers
-            .iter()
-            .map(|(bug, imp, _, _)| {
-                let st = student_for(*bug);
-                s.spawn(move || (*bug, st, run(&spec_for(st), imp)))
-            })
-            .collect();
-        handles.into_iter().map(|h| h.join().unwrap()).collect()
-    });
+    let outcomes = broken_outcomes();
     let mut caught: BTreeMap<String, Vec<Bug>> = BTreeMap::new();
-    for (bug, student, results) in &outcomes {
+    for (bug, student, results) in outcomes {
         let (_, _, must_fail, must_pass) = answers.iter().find(|a| a.0 == *bug).unwrap();
         let failing = failed(results);
         for id in *must_fail {
@@ -668,4 +681,56 @@ fn the_spec_json_has_the_tables_numbers() {
         assert!(!json.contains("0000000") && !json.contains("9999999"), "{json}");
         assert!(json.contains("\"period_s\"") && json.contains("\"unit_s\""), "{json}");
     }
+}
+
+// ---------------------------------------------------------------------------------------------
+// One language at a time
+// ---------------------------------------------------------------------------------------------
+
+/// The identifiers that are plain words and that the Japanese report and assignment text
+/// really use, as code: the student's functions and their parameters (`idle(spec, state)`,
+/// `display()`, `gl.draw("box 1", &mesh)`), the names the objects are drawn with
+/// (`"object 1"`), and `push` in the core's message for GL_STACK_UNDERFLOW (「対応する push のない
+/// pop です」). (Identifiers shaped like code — `warmup_display`, `state.frame`, `glPushMatrix`,
+/// `M_parent` — need no listing; see `common::english_words`.)
+const CODE_WORDS: &[&str] = &["display", "idle", "spec", "state", "mesh", "object", "push"];
+
+#[test]
+fn reports_read_in_one_language() {
+    let mut problems = Vec::new();
+    for (bug, student, results) in broken_outcomes() {
+        let report = Report {
+            assignment: "a3".into(),
+            student: Some((*student).into()),
+            checks: results.clone(),
+        };
+        problems.extend(common::report_problems(
+            &format!("{bug:?} / {student}"),
+            &report,
+            CODE_WORDS,
+        ));
+    }
+    let stubs = cg_exercises::a3::implementation();
+    let stub_reports = for_students(&STUDENTS[..2], |s| Report {
+        assignment: "a3".into(),
+        student: Some(s.into()),
+        checks: run(&spec_for(s), &stubs),
+    });
+    for report in &stub_reports {
+        let context = format!("the stubs / {}", report.student.as_deref().unwrap_or_default());
+        problems.extend(common::report_problems(&context, report, CODE_WORDS));
+    }
+    for s in STUDENTS {
+        let spec = spec_for(s);
+        problems.extend(common::language_problems(
+            &format!("describe / {s}"),
+            &spec.describe(Lang::Ja),
+            &spec.describe(Lang::En),
+            CODE_WORDS,
+        ));
+        if let Err(why) = cg_a3::view(&spec, &stubs, -1.0) {
+            problems.extend(common::language_problems("view", &why.ja, &why.en, CODE_WORDS));
+        }
+    }
+    common::assert_no_problems(&problems);
 }

@@ -11,6 +11,8 @@ use cg_core::texture::{Filter, Sampler, Wrap};
 use cg_harness::check::{CheckResult, Outcome};
 use cg_harness::{TableVersion, VariantRng};
 
+mod common;
+
 /// Students chosen so that every option occurs (asserted below): repeat 1, 2 and 5; turns of 0,
 /// 90, 180 and 270°; mirrored and not; regions of 1 × 1 to 4 × 4 cells, touching the image's
 /// edge and not.
@@ -492,4 +494,53 @@ fn every_student_reads_the_tasks_in_both_languages() {
             }
         }
     }
+}
+
+/// The identifiers that are plain words and that the Japanese report and assignment text
+/// really use, as code: the student's `sampler()` and the `Sampler { filter: … }` it returns,
+/// and the prepared image's path `assets/textures/a4-prepared.png`. (Identifiers shaped like
+/// code — `tex_range`, `wrap_u`, `Wrap::Clamp`, `GL_REPEAT` — need no listing; see
+/// `common::english_words`.)
+const CODE_WORDS: &[&str] = &["sampler", "Sampler", "filter", "assets", "textures"];
+
+#[test]
+fn reports_read_in_one_language() {
+    let mut problems = Vec::new();
+    let answers = [("the stubs", cg_exercises::a4::implementation())]
+        .into_iter()
+        .chain(broken_answers().into_iter().map(|b| (b.name, b.imp)))
+        .chain([("a panicking tex_coords", Impl { tex_coords: panicking, ..reference() })]);
+    for (name, imp) in answers {
+        for (who, spec) in specs() {
+            let report = cg_harness::check::Report {
+                assignment: cg_a4::ID.into(),
+                student: Some(who.clone()),
+                checks: cg_a4::checks(&spec, &imp),
+            };
+            let context = format!("{name} / {who}");
+            problems.extend(common::report_problems(&context, &report, CODE_WORDS));
+            if let Err(why) = cg_a4::view(&spec, &imp, 0.0) {
+                // The panic's own message is Rust's, after the words of the view.
+                let (ja, en) = (
+                    common::without_panic_message(&why.ja),
+                    common::without_panic_message(&why.en),
+                );
+                problems.extend(common::language_problems(
+                    &format!("view: {context}"),
+                    ja,
+                    en,
+                    CODE_WORDS,
+                ));
+            }
+        }
+    }
+    for (who, spec) in specs() {
+        problems.extend(common::language_problems(
+            &format!("describe / {who}"),
+            &spec.describe(cg_core::lang::Lang::Ja),
+            &spec.describe(cg_core::lang::Lang::En),
+            CODE_WORDS,
+        ));
+    }
+    common::assert_no_problems(&problems);
 }

@@ -24,6 +24,8 @@ use cg_shading::render::kit_image;
 use cg_shading::{Impl, Pixel, Shading, Spec};
 use cg_solutions::s as solution;
 
+mod common;
+
 /// Students whose variants together use every option of every table (see
 /// `students_cover_every_option`).
 const STUDENTS: [&str; 8] = [
@@ -727,4 +729,71 @@ fn the_view_shows_the_students_shading_on_the_stage() {
             assert_eq!(magenta, seen, "the stub's sphere {object} is magenta");
         }
     }
+}
+
+/// The identifiers that are plain words and that the Japanese report and assignment text
+/// really use, as code: the student's functions and their parameters (`ambient(ia, ka)`,
+/// `diffuse`, `specular(…, shininess)`, `attenuation`, `spot_factor(…, exponent)`,
+/// `vertex_normals(mesh)`, `shade_pixel(mode, pixel, light)`, `reflect`, `refract`), the
+/// methods the hints name (`powf`, `normalize`), Rust's `None`, and the file to edit,
+/// `exercises/src/s.rs`. (Identifiers shaped like code — `cutoff_deg`, `normalize_or_zero`,
+/// `pixel.face_normal` — need no listing; see `common::english_words`.)
+const CODE_WORDS: &[&str] = &[
+    "ambient",
+    "diffuse",
+    "specular",
+    "shininess",
+    "attenuation",
+    "exponent",
+    "mesh",
+    "mode",
+    "pixel",
+    "light",
+    "reflect",
+    "refract",
+    "powf",
+    "normalize",
+    "None",
+    "exercises",
+];
+
+#[test]
+fn reports_read_in_one_language() {
+    let mut problems = Vec::new();
+    // The broken answers on their student, run once above; the stubs and the describe text on
+    // every student; the broken answers again on two other students.
+    for run in broken_runs() {
+        let report = cg_harness::check::Report {
+            assignment: cg_shading::ID.into(),
+            student: Some(STUDENTS[2].into()),
+            checks: run.results.clone(),
+        };
+        problems.extend(common::report_problems(run.name, &report, CODE_WORDS));
+    }
+    for (k, student) in STUDENTS.iter().enumerate() {
+        let spec = spec_of(student);
+        let mut answers = vec![("the stubs", cg_exercises::s::implementation())];
+        if k == 0 || k == 5 {
+            answers.extend(broken().into_iter().map(|(name, imp, _)| (name, imp)));
+        }
+        for (name, imp) in answers {
+            let report = cg_harness::check::Report {
+                assignment: cg_shading::ID.into(),
+                student: Some((*student).into()),
+                checks: cg_shading::checks(&spec, &imp),
+            };
+            problems.extend(common::report_problems(
+                &format!("{name} / {student}"),
+                &report,
+                CODE_WORDS,
+            ));
+        }
+        problems.extend(common::language_problems(
+            &format!("describe / {student}"),
+            &spec.describe(Lang::Ja),
+            &spec.describe(Lang::En),
+            CODE_WORDS,
+        ));
+    }
+    common::assert_no_problems(&problems);
 }

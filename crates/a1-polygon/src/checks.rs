@@ -61,13 +61,23 @@ fn close(a: Vec3, b: Vec3, tol: f32) -> bool {
     a.is_finite() && b.is_finite() && (a - b).abs().cmple(Vec3::splat(tol)).all()
 }
 
-/// `items` joined by `, `, at most [`LIST`] of them, then `… (N in all)`.
-fn listed(items: &[String]) -> String {
+/// `items` joined by `, `, at most [`LIST`] of them, then `…（全 N 件）` / `… (N in all)`.
+fn listed<T: Clone + Into<Text>>(items: &[T]) -> Text {
+    let items: Vec<Text> = items.iter().cloned().map(Into::into).collect();
+    let first = |lang| items.iter().take(LIST).map(|t| t.get(lang)).collect::<Vec<_>>().join(", ");
     if items.len() <= LIST {
-        items.join(", ")
+        Text::new(first(Lang::Ja), first(Lang::En))
     } else {
-        format!("{}, … ({} in all)", items[..LIST].join(", "), items.len())
+        Text::new(
+            format!("{}, …（全 {} 件）", first(Lang::Ja), items.len()),
+            format!("{}, … ({} in all)", first(Lang::En), items.len()),
+        )
     }
+}
+
+/// The message of a core error in both languages.
+fn message(e: &MeshError) -> Text {
+    Text::new(e.message(Lang::Ja), e.message(Lang::En))
 }
 
 /// Sentences joined: the Japanese ones without spaces, the English ones with a space, every
@@ -256,7 +266,7 @@ fn vertex_positions(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let v = (imp.vertices)(spec);
     let e = spec.expected_vertices();
     if v.is_empty() {
-        return Err(Failure::new(format!("V0 {}", v3(e[0])), "no vertices")
+        return Err(Failure::new(format!("V0 {}", v3(e[0])), t("頂点なし", "no vertices"))
             .at("vertices()")
             .cause(t("頂点が 1 つもありません。", "there are no vertices."))
             .hint(t(
@@ -423,7 +433,7 @@ fn student_mesh(spec: &Spec, imp: &Impl) -> Mesh {
 
 /// A failure for an empty face list.
 fn no_faces() -> Failure {
-    Failure::new("F0 { Va, Vb, Vc }, …", "no faces")
+    Failure::new("F0 { Va, Vb, Vc }, …", t("面なし", "no faces"))
         .at("faces()")
         .cause(t("面が 1 つもありません。", "there are no faces."))
         .hint(t(
@@ -440,65 +450,96 @@ fn validated(spec: &Spec, imp: &Impl) -> Result<(Mesh, Validation), Failure> {
         return Err(no_faces());
     }
     if let Err(e) = mesh.check_indices() {
-        return Err(Failure::new("faces that pass a1.t2.indices", e.message(Lang::En))
-            .at("faces()")
-            .cause(Text::new(e.message(Lang::Ja), e.message(Lang::En)))
-            .hint(t(
-                "先に a1.t2.indices（と a1.t1）を直してください。このチェックはそれからです。",
-                "fix a1.t2.indices (and a1.t1) first; this check runs after them.",
-            )));
+        return Err(Failure::new(
+            t("a1.t2.indices に合格する面", "faces that pass a1.t2.indices"),
+            message(&e),
+        )
+        .at("faces()")
+        .cause(message(&e))
+        .hint(t(
+            "先に a1.t2.indices（と a1.t1）を直してください。このチェックはそれからです。",
+            "fix a1.t2.indices (and a1.t1) first; this check runs after them.",
+        )));
     }
     let validation = mesh.validate();
     Ok((mesh, validation))
 }
 
-/// A problem in compact notation, language-neutral, and where it is.
-fn compact(p: &Problem) -> (String, String) {
+/// `辺 V1–V3` / `edge V1–V3`.
+fn edge_at(edge: [u32; 2]) -> Text {
+    let e = notation::edge(edge[0], edge[1]);
+    Text::new(format!("辺 {e}"), format!("edge {e}"))
+}
+
+/// A problem in compact notation (numbers and names, with a few words in each language), and
+/// where it is.
+fn compact(p: &Problem) -> (Text, Text) {
     match p {
         Problem::Structure(MeshError::IndexOutOfRange { face, corner, index, .. }) => {
-            (format!("F{face}[{corner}] = {index}"), format!("F{face}"))
+            (format!("F{face}[{corner}] = {index}").into(), format!("F{face}").into())
         }
-        Problem::Structure(e) => (e.message(Lang::En), "faces()".to_owned()),
+        Problem::Structure(e) => (message(e), "faces()".into()),
         Problem::RepeatedIndex { face, vertices } | Problem::ZeroArea { face, vertices } => {
-            (notation::face(*face, *vertices), format!("F{face}"))
+            (notation::face(*face, *vertices).into(), format!("F{face}").into())
         }
-        Problem::BoundaryEdge { edge, face } => (
-            format!("{} (F{face} only)", notation::edge(edge[0], edge[1])),
-            format!("edge {}", notation::edge(edge[0], edge[1])),
-        ),
-        Problem::TJunction { vertex, edge, face } => (
-            format!("V{vertex} on {} (F{face})", notation::edge(edge[0], edge[1])),
-            format!("V{vertex}"),
-        ),
+        Problem::BoundaryEdge { edge, face } => {
+            let e = notation::edge(edge[0], edge[1]);
+            (
+                Text::new(format!("{e}（F{face} のみ）"), format!("{e} (F{face} only)")),
+                edge_at(*edge),
+            )
+        }
+        Problem::TJunction { vertex, edge, face } => {
+            let e = notation::edge(edge[0], edge[1]);
+            (
+                Text::new(
+                    format!("{e} 上の V{vertex}（F{face}）"),
+                    format!("V{vertex} on {e} (F{face})"),
+                ),
+                format!("V{vertex}").into(),
+            )
+        }
         Problem::NonManifoldEdge { edge, faces } => {
             let f: Vec<String> = faces.iter().map(|f| format!("F{f}")).collect();
             (
-                format!("{} ({})", notation::edge(edge[0], edge[1]), f.join(", ")),
-                format!("edge {}", notation::edge(edge[0], edge[1])),
+                format!("{} ({})", notation::edge(edge[0], edge[1]), f.join(", ")).into(),
+                edge_at(*edge),
             )
         }
-        Problem::NonManifoldVertex { vertex, fans } => {
-            (format!("V{vertex} ({fans} fans)"), format!("V{vertex}"))
-        }
-        Problem::InconsistentWinding { edge, faces } => (
-            format!("V{}→V{} in F{} and F{}", edge[0], edge[1], faces[0], faces[1]),
-            format!("edge {}", notation::edge(edge[0], edge[1])),
+        Problem::NonManifoldVertex { vertex, fans } => (
+            Text::new(
+                format!("V{vertex}（周りの面が {fans} 組に分かれる）"),
+                format!("V{vertex} ({fans} fans)"),
+            ),
+            format!("V{vertex}").into(),
         ),
-        Problem::InwardFacing { signed_volume } | Problem::ZeroVolume { signed_volume } => {
-            (format!("signed volume {signed_volume:.4}"), "faces()".to_owned())
-        }
-        Problem::UnreferencedVertex { vertex } => {
-            (format!("V{vertex} (no face)"), format!("V{vertex}"))
-        }
+        Problem::InconsistentWinding { edge, faces } => (
+            Text::new(
+                format!("F{} と F{} の両方で V{}→V{}", faces[0], faces[1], edge[0], edge[1]),
+                format!("V{}→V{} in F{} and F{}", edge[0], edge[1], faces[0], faces[1]),
+            ),
+            edge_at(*edge),
+        ),
+        Problem::InwardFacing { signed_volume } | Problem::ZeroVolume { signed_volume } => (
+            Text::new(
+                format!("符号付き体積 {signed_volume:.4}"),
+                format!("signed volume {signed_volume:.4}"),
+            ),
+            "faces()".into(),
+        ),
+        Problem::UnreferencedVertex { vertex } => (
+            Text::new(format!("V{vertex}（どの面にもない）"), format!("V{vertex} (no face)")),
+            format!("V{vertex}").into(),
+        ),
     }
 }
 
 /// A failure listing `problems` (not empty): compact notation as the actual value, the first
 /// problem's location, its description as the cause (plus `extra`), and its hint.
-fn problems_failure(expected: &str, problems: &[&Problem], extra: Option<Text>) -> Failure {
-    let items: Vec<(String, String)> = problems.iter().map(|p| compact(p)).collect();
-    let actual: Vec<String> = items.iter().map(|(a, _)| a.clone()).collect();
-    let mut locations: Vec<String> = items.iter().map(|(_, l)| l.clone()).collect();
+fn problems_failure(expected: Text, problems: &[&Problem], extra: Option<Text>) -> Failure {
+    let items: Vec<(Text, Text)> = problems.iter().map(|p| compact(p)).collect();
+    let actual: Vec<Text> = items.iter().map(|(a, _)| a.clone()).collect();
+    let mut locations: Vec<Text> = items.iter().map(|(_, l)| l.clone()).collect();
     locations.dedup();
     let first = problems[0];
     let more = problems.len() - 1;
@@ -536,8 +577,9 @@ fn face_indices(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             "the vertex numbers seem to count from 1 (no V0, and the largest equals the number of vertices).",
         )
     });
-    let expected = format!("indices in 0..={}", n.saturating_sub(1));
-    Err(problems_failure(&expected, &problems, extra))
+    let last = n.saturating_sub(1);
+    let expected = Text::new(format!("頂点番号 0..={last}"), format!("indices in 0..={last}"));
+    Err(problems_failure(expected, &problems, extra))
 }
 
 fn degenerate(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
@@ -550,7 +592,14 @@ fn degenerate(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     if problems.is_empty() {
         Ok(())
     } else {
-        Err(problems_failure("three different, non-collinear vertices per face", &problems, None))
+        Err(problems_failure(
+            t(
+                "各面に、一直線上にない異なる 3 頂点",
+                "three different, non-collinear vertices per face",
+            ),
+            &problems,
+            None,
+        ))
     }
 }
 
@@ -594,7 +643,11 @@ fn closed(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             )
         })
     };
-    Err(problems_failure("every edge in exactly two faces", &problems, extra))
+    Err(problems_failure(
+        t("どの辺もちょうど 2 つの面に属する", "every edge in exactly two faces"),
+        &problems,
+        extra,
+    ))
 }
 
 /// When the open edges form exactly one triangle, the face that closes it (wound so that it
@@ -649,7 +702,11 @@ fn manifold(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             &format!("F{i} and F{j} have the same three vertices (one face defined twice)."),
         )
     });
-    Err(problems_failure("no edge in more than two faces", &problems, extra))
+    Err(problems_failure(
+        t("3 つ以上の面に属する辺がない", "no edge in more than two faces"),
+        &problems,
+        extra,
+    ))
 }
 
 /// The faces whose normal points towards the inside: for these convex models, towards the
@@ -681,7 +738,7 @@ fn winding(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let extra = (!inward.is_empty() && inward.len() * 2 < mesh.faces.len()).then(|| {
         let f: Vec<String> = inward.iter().map(|f| format!("F{f}")).collect();
         Text::new(
-            format!("向きが逆なのはおそらく {} です（法線が内側を向いています）。", listed(&f)),
+            format!("向きが逆なのはおそらく {} です（法線が内側を向いています）。", listed(&f).ja),
             if inward.len() == 1 {
                 format!(
                     "the face wound the wrong way is probably {} (its normal points inward).",
@@ -690,13 +747,16 @@ fn winding(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             } else {
                 format!(
                     "the faces wound the wrong way are probably {} (their normals point inward).",
-                    listed(&f)
+                    listed(&f).en
                 )
             },
         )
     });
     Err(problems_failure(
-        "each shared edge traversed in opposite directions by its two faces",
+        t(
+            "共有する辺を 2 つの面が互いに逆向きにたどる",
+            "each shared edge traversed in opposite directions by its two faces",
+        ),
         &problems,
         extra,
     ))
@@ -712,8 +772,14 @@ fn outward(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         Some(Orientation::Inward) => {
             let volume = validation.signed_volume().unwrap_or(0.0);
             return Err(Failure::new(
-                "signed volume > 0 (faces counter-clockwise seen from outside)",
-                format!("signed volume {volume:.4} < 0"),
+                t(
+                    "符号付き体積 > 0（面が外側から見て反時計回り）",
+                    "signed volume > 0 (faces counter-clockwise seen from outside)",
+                ),
+                Text::new(
+                    format!("符号付き体積 {volume:.4} < 0"),
+                    format!("signed volume {volume:.4} < 0"),
+                ),
             )
             .at(format!("F0–F{}", mesh.faces.len().saturating_sub(1)))
             .cause(t(
@@ -724,7 +790,7 @@ fn outward(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         }
         None if validation.problems().iter().any(|p| matches!(p, Problem::ZeroVolume { .. })) => {
             return Err(problems_failure(
-                "a closed surface around a volume",
+                t("体積を囲む閉じた曲面", "a closed surface around a volume"),
                 &validation
                     .problems()
                     .iter()
@@ -741,16 +807,19 @@ fn outward(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     }
     let faces: Vec<String> = inward.iter().map(|&f| notation::face(f, mesh.faces[f])).collect();
     let names: Vec<String> = inward.iter().map(|f| format!("F{f}")).collect();
-    Err(Failure::new("every face's normal pointing away from the inside", listed(&faces))
+    Err(Failure::new(
+        t("どの面の法線も立体の外側を向く", "every face's normal pointing away from the inside"),
+        listed(&faces),
+    )
         .at(listed(&names))
         .cause(Text::new(
             format!(
                 "{} は外側から見て時計回りです（法線 (V_b − V_a) × (V_c − V_a) が立体の内側を向いています）。",
-                listed(&names)
+                listed(&names).ja
             ),
             format!(
                 "{} {} clockwise seen from outside (the normal (V_b − V_a) × (V_c − V_a) points into the solid).",
-                listed(&names),
+                listed(&names).en,
                 if inward.len() == 1 { "is" } else { "are" }
             ),
         ))
@@ -824,7 +893,10 @@ fn surface(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             cutting.iter().map(|&(f, ..)| notation::face(f, mesh.faces[f])).collect();
         let names: Vec<String> = cutting.iter().map(|&(f, ..)| format!("F{f}")).collect();
         return Err(Failure::new(
-            "faces on the surface of the solid (every vertex on one side of each face)",
+            t(
+                "立体の表面上の面（どの面でも、すべての頂点が面の片側にある）",
+                "faces on the surface of the solid (every vertex on one side of each face)",
+            ),
             listed(&faces),
         )
         .at(listed(&names))
@@ -855,7 +927,11 @@ fn surface(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     if unused.is_empty() {
         Ok(())
     } else {
-        Err(problems_failure("every vertex used by a face", &unused, None))
+        Err(problems_failure(
+            t("どの頂点もいずれかの面が使う", "every vertex used by a face"),
+            &unused,
+            None,
+        ))
     }
 }
 
@@ -883,8 +959,11 @@ fn normal_count(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         t("法線が面より多くあります。", "there are more normals than faces.")
     };
     Err(Failure::new(
-        format!("{} normals (one per face, F0–F{})", faces.len(), faces.len() - 1),
-        format!("{} normals", normals.len()),
+        Text::new(
+            format!("法線 {} 個（1 面に 1 つ、F0–F{}）", faces.len(), faces.len() - 1),
+            format!("{} normals (one per face, F0–F{})", faces.len(), faces.len() - 1),
+        ),
+        Text::new(format!("法線 {} 個", normals.len()), format!("{} normals", normals.len())),
     )
     .at("face_normals()")
     .cause(cause)
@@ -897,10 +976,13 @@ fn normal_count(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 fn normal_unit(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let normals = (imp.face_normals)(spec);
     if normals.is_empty() {
-        return Err(Failure::new("one unit normal per face", "no normals")
-            .at("face_normals()")
-            .cause(t("法線が 1 つもありません。", "there are no normals."))
-            .hint(t("面ごとに法線を計算してください。", "compute a normal for each face.")));
+        return Err(Failure::new(
+            t("1 面に 1 つの単位法線", "one unit normal per face"),
+            t("法線なし", "no normals"),
+        )
+        .at("face_normals()")
+        .cause(t("法線が 1 つもありません。", "there are no normals."))
+        .hint(t("面ごとに法線を計算してください。", "compute a normal for each face.")));
     }
     let bad: Vec<usize> = (0..normals.len())
         .filter(|&f| {
@@ -944,16 +1026,22 @@ fn normal_values(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         return Err(no_faces());
     }
     if let Err(e) = mesh.check_indices() {
-        return Err(Failure::new("faces that pass a1.t2.indices", e.message(Lang::En))
-            .at("faces()")
-            .cause(Text::new(e.message(Lang::Ja), e.message(Lang::En)))
-            .hint(t("先に a1.t2.indices を直してください。", "fix a1.t2.indices first.")));
+        return Err(Failure::new(
+            t("a1.t2.indices に合格する面", "faces that pass a1.t2.indices"),
+            message(&e),
+        )
+        .at("faces()")
+        .cause(message(&e))
+        .hint(t("先に a1.t2.indices を直してください。", "fix a1.t2.indices first.")));
     }
     if normals.is_empty() {
-        return Err(Failure::new("one normal per face", "no normals")
-            .at("face_normals()")
-            .cause(t("法線が 1 つもありません。", "there are no normals."))
-            .hint(t("面ごとに法線を計算してください。", "compute a normal for each face.")));
+        return Err(Failure::new(
+            t("1 面に 1 つの法線", "one normal per face"),
+            t("法線なし", "no normals"),
+        )
+        .at("face_normals()")
+        .cause(t("法線が 1 つもありません。", "there are no normals."))
+        .hint(t("面ごとに法線を計算してください。", "compute a normal for each face.")));
     }
     let derived: Vec<Option<Vec3>> = (0..mesh.faces.len())
         .map(|f| {
@@ -1137,8 +1225,8 @@ fn diagnose_normals(
         let names: Vec<String> = wrong.iter().map(|(f, _)| format!("F{f}")).collect();
         return join(&[
             Text::new(
-                format!("{} のすべてで同じ誤りです。", listed(&names)),
-                format!("the same mistake on {}:", listed(&names)),
+                format!("{} のすべてで同じ誤りです。", listed(&names).ja),
+                format!("the same mistake on {}:", listed(&names).en),
             ),
             m.text(derived, f, normals[f]),
         ]);
@@ -1200,9 +1288,10 @@ fn placement(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let m = match product.matrix() {
         Ok(m) => m,
         Err(e) => {
-            return Err(Failure::new(expected_text, e.message(Lang::En))
+            let message = Text::new(e.message(Lang::Ja), e.message(Lang::En));
+            return Err(Failure::new(expected_text, message.clone())
                 .at("model_transform()")
-                .cause(Text::new(e.message(Lang::Ja), e.message(Lang::En)))
+                .cause(message)
                 .hint(hint));
         }
     };

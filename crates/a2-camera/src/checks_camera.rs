@@ -86,12 +86,15 @@ pub(crate) fn pole_states(spec: &Spec) -> Vec<CameraState> {
 }
 
 /// What the student's camera leaves on a fresh context at `s`: the matrix, or what went wrong.
-pub(crate) fn student_view(imp: &Impl, s: &CameraState) -> Result<Mat4, (String, Text)> {
+pub(crate) fn student_view(imp: &Impl, s: &CameraState) -> Result<Mat4, (Text, Text)> {
     let mut gl = Gl::new();
     (imp.camera)(&mut gl, s);
     if let Some(e) = gl.errors().first() {
         return Err((
-            format!("{}: {}", e.function, e.error.message(Lang::En)),
+            Text::new(
+                format!("{}: {}", e.function, e.error.message(Lang::Ja)),
+                format!("{}: {}", e.function, e.error.message(Lang::En)),
+            ),
             Text::new(
                 format!("camera() の {} がエラーです: {}", e.function, e.error.message(Lang::Ja)),
                 format!("{} in camera() is an error: {}", e.function, e.error.message(Lang::En)),
@@ -100,7 +103,7 @@ pub(crate) fn student_view(imp: &Impl, s: &CameraState) -> Result<Mat4, (String,
     }
     gl.model_view().matrix().map_err(|e| {
         (
-            e.message(Lang::En),
+            Text::new(e.message(Lang::Ja), e.message(Lang::En)),
             Text::new(
                 format!("camera() の変換が不正です: {}", e.message(Lang::Ja)),
                 format!("camera() builds an invalid transform: {}", e.message(Lang::En)),
@@ -128,7 +131,7 @@ fn view_matches(spec: &Spec, imp: &Impl, states: &[CameraState]) -> Result<(), F
         match student_view(imp, s) {
             Ok(m) => matrices.push(m),
             Err((actual, cause)) => {
-                return Err(Failure::new("a valid view transform", actual)
+                return Err(Failure::new(t("有効な視点の変換", "a valid view transform"), actual)
                     .at(show::state(s, with_target))
                     .cause(cause)
                     .hint(hint()));
@@ -145,7 +148,7 @@ fn view_matches(spec: &Spec, imp: &Impl, states: &[CameraState]) -> Result<(), F
     };
     let expected = oracle::view_matrix(s);
     let product = oracle::view_product(with_target, s);
-    let written = crate::camera_product(imp).map(|p| p.symbolic()).unwrap_or_else(|e| e.en);
+    let written = crate::camera_product(imp).map_or_else(|e| e, |p| p.symbolic().into());
     let mut cause = oracle::diagnose_view(states, &matrices);
     if !m.is_finite() {
         cause = t(
@@ -153,21 +156,34 @@ fn view_matches(spec: &Spec, imp: &Impl, states: &[CameraState]) -> Result<(), F
             "the matrix has NaN or infinity: a look-at with an up vector is undefined looking straight down or up (camera_pitch = ±90°); build the view from rotations and translations",
         );
     }
+    let v = format!(
+        "V = {} = {} = {}",
+        product.symbolic(),
+        product.simplified().numeric(),
+        show::matrix(&expected)
+    );
+    let (eye_expected, eye_actual) =
+        (eye(&expected).unwrap_or_default(), eye(m).unwrap_or_else(|| "-".to_owned()));
+    let (state, n) = (show::state(s, with_target), states.len());
     Err(Failure::new(
-        format!(
-            "V = {} = {} = {}; eye at {}",
-            product.symbolic(),
-            product.simplified().numeric(),
-            show::matrix(&expected),
-            eye(&expected).unwrap_or_default()
-        ),
-        format!(
-            "{}; eye at {}; your camera() builds {written}",
-            show::matrix(m),
-            eye(m).unwrap_or_else(|| "-".to_owned())
+        Text::new(format!("{v}; 視点の位置 {eye_expected}"), format!("{v}; eye at {eye_expected}")),
+        Text::new(
+            format!(
+                "{}; 視点の位置 {eye_actual}; あなたの camera() の変換は {}",
+                show::matrix(m),
+                written.ja
+            ),
+            format!(
+                "{}; eye at {eye_actual}; your camera() builds {}",
+                show::matrix(m),
+                written.en
+            ),
         ),
     )
-    .at(format!("state {} of {}: {}", k + 1, states.len(), show::state(s, with_target)))
+    .at(Text::new(
+        format!("状態 {}/{n}: {state}", k + 1),
+        format!("state {} of {n}: {state}", k + 1),
+    ))
     .cause(cause)
     .hint(hint()))
 }

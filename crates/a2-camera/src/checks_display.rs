@@ -39,7 +39,7 @@ pub(crate) fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
             "a2.t3.stack",
             TASK,
             t(
-                "描画され、push と pop が対応し、GL のエラーがない",
+                "何かが描かれ、glPushMatrix と glPopMatrix が対応し、GL のエラーがない",
                 "something is drawn, push and pop match, no GL errors",
             ),
             || stack_balanced(spec, imp),
@@ -121,11 +121,15 @@ fn light_after_camera(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             let others: Vec<String> =
                 gl.lights().iter().map(|l| format!("GL_LIGHT{}", l.light)).collect();
             return Err(Failure::new(
-                format!("GL_LIGHT0 at {} in eye space", show::vec4(expected)),
+                Text::new(
+                    format!("視点座標系で GL_LIGHT0 の位置が {}", show::vec4(expected)),
+                    format!("GL_LIGHT0 at {} in eye space", show::vec4(expected)),
+                ),
                 if others.is_empty() {
-                    "no light position set".to_owned()
+                    t("光源の位置の設定なし", "no light position set")
                 } else {
-                    format!("only {} set", others.join(", "))
+                    let others = others.join(", ");
+                    Text::new(format!("{others} だけ設定"), format!("only {others} set"))
                 },
             )
             .at(at)
@@ -171,12 +175,15 @@ fn light_after_camera(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                 "the model-view matrix when the light is set is not the view transform V",
             )
         };
+        let (eye, model_view) = (show::vec4(light.eye), light.model_view.numeric());
         return Err(Failure::new(
-            format!("eye-space position V · (10, 10, 10, 1) = {}", show::vec4(expected)),
-            format!(
-                "{}, set when the model-view matrix was {}",
-                show::vec4(light.eye),
-                light.model_view.numeric()
+            Text::new(
+                format!("視点座標系での位置 V · (10, 10, 10, 1) = {}", show::vec4(expected)),
+                format!("eye-space position V · (10, 10, 10, 1) = {}", show::vec4(expected)),
+            ),
+            Text::new(
+                format!("{eye}（設定したときのモデルビュー行列は {model_view}）"),
+                format!("{eye}, set when the model-view matrix was {model_view}"),
             ),
         )
         .at(at)
@@ -195,15 +202,21 @@ fn objects_in_place(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     for s in display_states(spec) {
         let gl = frame(imp, &s);
         let v = oracle::view_matrix(&s);
-        for (name, model, model_text) in
-            [("ground", Mat4::IDENTITY, "V"), ("pyramid", pyramid_model(), "V · T(0, 1, 0)")]
-        {
+        for (name, name_ja, model, model_text) in [
+            ("ground", "地面", Mat4::IDENTITY, "V"),
+            ("pyramid", "四角すい", pyramid_model(), "V · T(0, 1, 0)"),
+        ] {
             let draws: Vec<_> = gl.draws().iter().filter(|d| d.name == name).collect();
-            let at = format!("{name}, {}", show::state(&s, with_target));
+            let state = show::state(&s, with_target);
+            let at = Text::new(format!("{name_ja}、{state}"), format!("{name}, {state}"));
             if draws.len() != 1 {
+                let n = draws.len();
                 return Err(Failure::new(
-                    format!("{name} drawn once"),
-                    format!("{name} drawn {} times", draws.len()),
+                    Text::new(format!("{name_ja}を 1 回描く"), format!("{name} drawn once")),
+                    Text::new(
+                        format!("{name_ja}を {n} 回描いた"),
+                        format!("{name} drawn {n} times"),
+                    ),
                 )
                 .at(at)
                 .cause(t(
@@ -254,17 +267,29 @@ fn stack_balanced(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let gl = frame(imp, &s);
     let at = show::state(&s, spec.pan.is_some());
     if gl.draws().is_empty() {
-        return Err(Failure::new("the ground and the pyramid drawn", "nothing drawn")
-            .at(at)
-            .cause(t("display() がまだ何も描いていません", "display() draws nothing yet"))
-            .hint(t(
-                "display() の最後で draw_course_objects(gl) を呼びます",
-                "call draw_course_objects(gl) at the end of display()",
-            )));
+        return Err(Failure::new(
+            t("地面と四角すいを描く", "the ground and the pyramid drawn"),
+            t("何も描かれていない", "nothing drawn"),
+        )
+        .at(at)
+        .cause(t("display() がまだ何も描いていません", "display() draws nothing yet"))
+        .hint(t(
+            "display() の最後で draw_course_objects(gl) を呼びます",
+            "call draw_course_objects(gl) at the end of display()",
+        )));
     }
     if let Some(e) = gl.errors().first() {
-        return Err(Failure::new("no GL error", format!("{}: {}", e.function, e.error.message(Lang::En)))
-            .at(format!("{at}; call {} of display()", e.call + 1))
+        return Err(Failure::new(
+            t("GL のエラーなし", "no GL error"),
+            Text::new(
+                format!("{}: {}", e.function, e.error.message(Lang::Ja)),
+                format!("{}: {}", e.function, e.error.message(Lang::En)),
+            ),
+        )
+        .at(Text::new(
+            format!("{at}; display() の {} 番目の呼び出し", e.call + 1),
+            format!("{at}; call {} of display()", e.call + 1),
+        ))
             .cause(Text::new(
                 format!("{} がエラーです: {}", e.function, e.error.message(Lang::Ja)),
                 format!("{} is an error: {}", e.function, e.error.message(Lang::En)),
@@ -275,10 +300,16 @@ fn stack_balanced(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             )));
     }
     if gl.depth() != 1 {
-        return Err(Failure::new("matrix stack depth 1 at the end of display()", format!("depth {}", gl.depth()))
+        return Err(Failure::new(
+            t(
+                "display() の終わりで行列スタックの深さが 1",
+                "matrix stack depth 1 at the end of display()",
+            ),
+            Text::new(format!("深さ {}", gl.depth()), format!("depth {}", gl.depth())),
+        )
             .at(at)
             .cause(t(
-                "pop のない push があります。フレームごとに行列スタックが深くなり、やがてオーバーフローします",
+                "gl.pop_matrix() と対になっていない gl.push_matrix() があります。フレームごとに行列スタックが深くなり、やがてオーバーフローします",
                 "a push without its pop: the matrix stack grows every frame until it overflows",
             ))
             .hint(t(
@@ -303,16 +334,16 @@ fn starts_from_identity(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let at = show::state(&s, spec.pan.is_some());
     let fresh = frame(imp, &s);
     let (Some(ground), light) = fingerprint(&fresh, 0) else {
-        return Err(Failure::new("the ground drawn", "no ground drawn")
-            .at(at)
-            .cause(t(
-                "display() がまだ地面を描いていません",
-                "display() does not draw the ground yet",
-            ))
-            .hint(t(
-                "display() の最後で draw_course_objects(gl) を呼びます",
-                "call draw_course_objects(gl) at the end of display()",
-            )));
+        return Err(Failure::new(
+            t("地面を描く", "the ground drawn"),
+            t("地面が描かれていない", "no ground drawn"),
+        )
+        .at(at)
+        .cause(t("display() がまだ地面を描いていません", "display() does not draw the ground yet"))
+        .hint(t(
+            "display() の最後で draw_course_objects(gl) を呼びます",
+            "call draw_course_objects(gl) at the end of display()",
+        )));
     };
     // The previous frame left a transform on the stack; a second frame runs on the same context.
     let mut leftover = Gl::new();
@@ -324,8 +355,22 @@ fn starts_from_identity(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let first_draws = twice.draws().len();
     (imp.display)(&mut twice, &s);
     for (gl, from, situation) in [
-        (&leftover, 0, "drawn after the model-view was T(3, -2, 7) · Rz(25°)"),
-        (&twice, first_draws, "the second frame drawn on the same context"),
+        (
+            &leftover,
+            0,
+            t(
+                "モデルビュー行列が T(3, -2, 7) · Rz(25°) のまま描いたとき",
+                "drawn after the model-view was T(3, -2, 7) · Rz(25°)",
+            ),
+        ),
+        (
+            &twice,
+            first_draws,
+            t(
+                "同じコンテキストで 2 フレーム目を描いたとき",
+                "the second frame drawn on the same context",
+            ),
+        ),
     ] {
         let (g, l) = fingerprint(gl, from);
         let same_ground = g.is_some_and(|g| matrices_close(&g, &ground));
@@ -337,11 +382,21 @@ fn starts_from_identity(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         if same_ground && same_light {
             continue;
         }
+        let ground = show::matrix(&ground);
         return Err(Failure::new(
-            format!("ground at {} (as on a fresh context)", show::matrix(&ground)),
-            g.map_or_else(|| "no ground drawn".to_owned(), |g| format!("ground at {}", show::matrix(&g))),
+            Text::new(
+                format!("地面の行列 {ground}（新しいコンテキストで描いたときと同じ）"),
+                format!("ground at {ground} (as on a fresh context)"),
+            ),
+            g.map_or_else(
+                || t("地面が描かれていない", "no ground drawn"),
+                |g| {
+                    let g = show::matrix(&g);
+                    Text::new(format!("地面の行列 {g}"), format!("ground at {g}"))
+                },
+            ),
         )
-        .at(format!("{situation}; {at}"))
+        .at(Text::new(format!("{}; {at}", situation.ja), format!("{}; {at}", situation.en)))
         .cause(t(
             "display() が gl.load_identity() で始まっていません。GLUT は display() を毎フレーム呼ぶので、前のフレームの行列に視点の変換が掛け重なり、視点がずれていきます",
             "display() does not start with gl.load_identity(): GLUT calls display() every frame, so the view transform piles up on the previous frame's matrix and the view drifts",

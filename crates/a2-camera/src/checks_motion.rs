@@ -175,20 +175,38 @@ fn changes_by_amount(spec: &Spec, imp: &Impl, var: Var, op: &Operation) -> Resul
                     show::axis_symbol(op.axis),
                     show::signed_num(px)
                 ),
-                format!(
-                    "{} = {}  (changed by {}{})",
-                    var.name(),
-                    show::value(var, a),
-                    show::signed_num(actual_change),
-                    var.unit()
+                Text::new(
+                    format!(
+                        "{} = {}（変化量 {}{}）",
+                        var.name(),
+                        show::value(var, a),
+                        show::signed_num(actual_change),
+                        var.unit()
+                    ),
+                    format!(
+                        "{} = {}  (changed by {}{})",
+                        var.name(),
+                        show::value(var, a),
+                        show::signed_num(actual_change),
+                        var.unit()
+                    ),
                 ),
             )
-            .at(format!(
-                "drag {} ({}) from {} = {}",
-                k + 1,
-                show::drag(&drag),
-                var.name(),
-                show::value(var, var.get(&s))
+            .at(Text::new(
+                format!(
+                    "{} = {} からのドラッグ {}（{}）",
+                    var.name(),
+                    show::value(var, var.get(&s)),
+                    k + 1,
+                    show::drag(&drag).ja
+                ),
+                format!(
+                    "drag {} ({}) from {} = {}",
+                    k + 1,
+                    show::drag(&drag).en,
+                    var.name(),
+                    show::value(var, var.get(&s))
+                ),
             ))
             .cause(amount_cause(spec, imp, var, op, &s, actual_change, expected_change))
             .hint(t(
@@ -319,10 +337,10 @@ fn only_listed_drags(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         .any(|(_, op)| motion(spec, imp, &base, &drag_along(op.gesture, op.axis, 12.0)) != base);
     if !moves_anything {
         return Err(Failure::new(
-            "the listed drags change their variables",
-            "motion() changes nothing for any drag",
+            t("指定のドラッグでそれぞれの変数が変わる", "the listed drags change their variables"),
+            t("motion() がどのドラッグでも何も変えない", "motion() changes nothing for any drag"),
         )
-        .at("every listed drag, 12 px")
+        .at(t("指定のすべてのドラッグ（12 px）", "every listed drag, 12 px"))
         .cause(t("motion() がまだ何もしていません", "motion() does not do anything yet"))
         .hint(t(
             "まず a2.t1.yaw などの変化量のチェックを通してください",
@@ -349,16 +367,30 @@ fn only_listed_drags(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                         .filter(|(_, op)| op.gesture == g && op.axis == axis)
                         .map(|(v, _)| v.name().to_owned())
                         .collect();
-                    let listed = if listed.is_empty() { "-".to_owned() } else { listed.join(", ") };
+                    let (name, stays) = (var.name(), show::value(var, var.get(&base)));
+                    let expected = if listed.is_empty() {
+                        Text::new(
+                            format!("{name} は {stays} のまま（このドラッグでは何も変わらない）"),
+                            format!("{name} stays {stays} (this drag changes only: -)"),
+                        )
+                    } else {
+                        let listed = listed.join(", ");
+                        Text::new(
+                            format!(
+                                "{name} は {stays} のまま（このドラッグで変わるのは {listed} だけ）"
+                            ),
+                            format!("{name} stays {stays} (this drag changes only: {listed})"),
+                        )
+                    };
+                    let from = show::state(&base, spec.pan.is_some());
                     return Err(Failure::new(
-                        format!(
-                            "{} stays {} (this drag changes only: {listed})",
-                            var.name(),
-                            show::value(var, var.get(&base))
-                        ),
+                        expected,
                         format!("{} = {}", var.name(), show::value(var, var.get(&after))),
                     )
-                    .at(format!("{} from {}", show::drag(&drag), show::state(&base, spec.pan.is_some())))
+                    .at(Text::new(
+                        format!("{from} からの {}", show::drag(&drag).ja),
+                        format!("{} from {from}", show::drag(&drag).en),
+                    ))
                     .cause(buttons_cause(spec, var, g, axis))
                     .hint(t(
                         "ドラッグのボタンと Shift の両方（drag.button と drag.shift）を、変数ごとに決められた組み合わせと比べてから変えてください",
@@ -474,15 +506,27 @@ fn yaw_wraps(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                     "values of 360 and more are not wrapped (subtract 360, or use rem_euclid(360.0))",
                 )
             };
+            let (e, unwrapped) = (show::num(e), show::num(unwrapped));
             return Err(Failure::new(
-                format!("camera_yaw = {}° (0 ≤ camera_yaw < 360; {} wrapped)", show::num(e), show::num(unwrapped)),
+                Text::new(
+                    format!("camera_yaw = {e}°（0 ≤ camera_yaw < 360。{unwrapped} を折り返した値）"),
+                    format!("camera_yaw = {e}° (0 ≤ camera_yaw < 360; {unwrapped} wrapped)"),
+                ),
                 format!("camera_yaw = {}°", show::num(a)),
             )
-            .at(format!(
-                "yaw drag {} ({}) from camera_yaw = {}°",
-                k + 1,
-                show::drag(drag),
-                show::num(s.camera_yaw)
+            .at(Text::new(
+                format!(
+                    "camera_yaw = {}° からの camera_yaw のドラッグ {}（{}）",
+                    show::num(s.camera_yaw),
+                    k + 1,
+                    show::drag(drag).ja
+                ),
+                format!(
+                    "yaw drag {} ({}) from camera_yaw = {}°",
+                    k + 1,
+                    show::drag(drag).en,
+                    show::num(s.camera_yaw)
+                ),
             ))
             .cause(cause)
             .hint(t(
@@ -509,35 +553,41 @@ fn clamped(
     let mut s = middle(spec);
     let speed = op.per_px.abs();
     let back = 5.0 * speed;
-    let mut script: Vec<(Drag, &str)> = Vec::new();
-    let push_far = |script: &mut Vec<(Drag, &str)>, from: f32, to: f32, label: &'static str| {
+    // Each drag with what it is for (in Japanese and English), and whether it goes back.
+    let mut script: Vec<(Drag, [&str; 2], bool)> = Vec::new();
+    let push_far = |script: &mut Vec<(Drag, [&str; 2], bool)>,
+                    from: f32,
+                    to: f32,
+                    label: [&'static str; 2]| {
         // Past the limit by the range's width again, in three whole-pixel drags.
         let amount = (to - from) + (to - from).signum() * (hi - lo);
         let px = (amount / op.per_px / 3.0).round();
         for _ in 0..3 {
-            script.push((drag_along(op.gesture, op.axis, px), label));
+            script.push((drag_along(op.gesture, op.axis, px), label, false));
         }
     };
-    push_far(&mut script, var.get(&s), lo, "towards the lower limit");
+    push_far(&mut script, var.get(&s), lo, ["下限に向かう", "towards the lower limit"]);
     script.push((
         drag_along(op.gesture, op.axis, (back / op.per_px).round()),
-        "back from the lower limit",
+        ["下限から戻す", "back from the lower limit"],
+        true,
     ));
-    push_far(&mut script, lo + back, hi, "towards the upper limit");
+    push_far(&mut script, lo + back, hi, ["上限に向かう", "towards the upper limit"]);
     script.push((
         drag_along(op.gesture, op.axis, (-back / op.per_px).round()),
-        "back from the upper limit",
+        ["上限から戻す", "back from the upper limit"],
+        true,
     ));
-    for (k, (drag, label)) in script.iter().enumerate() {
+    for (k, (drag, [label_ja, label_en], back)) in script.iter().enumerate() {
         let mut expected = s;
         oracle::motion(spec, &mut expected, drag);
         let after = motion(spec, imp, &s, drag);
         let (a, e) = (var.get(&after), var.get(&expected));
         if !same(var, a, e) {
             let pole = if var == Var::Pitch && (e == -90.0 || e == 90.0) {
-                " (the pole: looking straight down/up)"
+                ["（極: 真下・真上を見る向き）", " (the pole: looking straight down/up)"]
             } else {
-                ""
+                ["", ""]
             };
             let cause = if a < lo - TOL || a > hi + TOL {
                 t(
@@ -552,7 +602,7 @@ fn clamped(
                         show::num(hi)
                     ),
                 )
-            } else if label.starts_with("back") && (a == lo || a == hi) {
+            } else if *back && (a == lo || a == hi) {
                 t(
                     &format!("限界から戻すドラッグで {name} が動きません"),
                     &format!("dragging back from the limit does not move {name}"),
@@ -579,14 +629,25 @@ fn clamped(
                 )
             };
             return Err(Failure::new(
-                format!("{name} = {}{pole}", show::value(var, e)),
+                Text::new(
+                    format!("{name} = {}{}", show::value(var, e), pole[0]),
+                    format!("{name} = {}{}", show::value(var, e), pole[1]),
+                ),
                 format!("{name} = {}", show::value(var, a)),
             )
-            .at(format!(
-                "drag {} {label} ({}) from {name} = {}",
-                k + 1,
-                show::drag(drag),
-                show::value(var, var.get(&s))
+            .at(Text::new(
+                format!(
+                    "{name} = {} から{label_ja}ドラッグ {}（{}）",
+                    show::value(var, var.get(&s)),
+                    k + 1,
+                    show::drag(drag).ja
+                ),
+                format!(
+                    "drag {} {label_en} ({}) from {name} = {}",
+                    k + 1,
+                    show::drag(drag).en,
+                    show::value(var, var.get(&s))
+                ),
             ))
             .cause(cause)
             .hint(t(
@@ -690,12 +751,21 @@ fn sequence(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             show::state(&expected, spec.pan.is_some()),
             show::state(&s, spec.pan.is_some()),
         )
-        .at(format!(
-            "drag {} of 150 ({}) from {}; off: {}",
-            k + 1,
-            show::drag(&drag),
-            show::state(&before, spec.pan.is_some()),
-            names.join(", ")
+        .at(Text::new(
+            format!(
+                "150 回中 {} 回目のドラッグ（{}）、開始時 {}; ずれた変数: {}",
+                k + 1,
+                show::drag(&drag).ja,
+                show::state(&before, spec.pan.is_some()),
+                names.join(", ")
+            ),
+            format!(
+                "drag {} of 150 ({}) from {}; off: {}",
+                k + 1,
+                show::drag(&drag).en,
+                show::state(&before, spec.pan.is_some()),
+                names.join(", ")
+            ),
         ))
         .cause(cause)
         .hint(t(

@@ -255,10 +255,16 @@ pub fn camera_product(imp: &Impl) -> Result<MatrixProduct, Text> {
         Err(Outcome::NotDone { message }) => {
             Err(Text::new(format!("まだです: {message}"), format!("not done yet: {message}")))
         }
-        Err(other) => Err(Text::new(
-            format!("camera()（a2.t2）が異常終了しました: {other:?}"),
-            format!("camera() (a2.t2) panicked: {other:?}"),
-        )),
+        Err(other) => {
+            let message = match other {
+                Outcome::Panicked { message, .. } => message,
+                _ => String::new(),
+            };
+            Err(Text::new(
+                format!("camera()（a2.t2）が異常終了しました（panic）: {message}"),
+                format!("camera() (a2.t2) panicked: {message}"),
+            ))
+        }
     }
 }
 

@@ -4,6 +4,7 @@
 use cg_core::glam::{Mat4, Vec4};
 use cg_core::lang::Lang;
 use cg_core::product::{Factor, MatrixProduct, Param, format_number};
+use cg_harness::Text;
 
 use crate::{CameraState, Drag, DragAxis, Gesture, MouseButton, Operation, Spec};
 
@@ -91,7 +92,7 @@ pub(crate) fn value(var: Var, x: f32) -> String {
     format!("{}{}", num(x), var.unit())
 }
 
-/// "Left", "Shift+Right": the gesture in the short, language-neutral form used in locations.
+/// "Left", "Shift+Right": the gesture in the short form of the English locations.
 pub(crate) fn gesture_short(g: Gesture) -> String {
     let b = match g.button {
         MouseButton::Left => "Left",
@@ -193,13 +194,13 @@ pub(crate) fn state(s: &CameraState, with_target: bool) -> String {
     out
 }
 
-/// `Right dx = +10 dy = 0`.
-pub(crate) fn drag(d: &Drag) -> String {
-    format!(
-        "{} dx = {} dy = {}",
-        gesture_short(Gesture { button: d.button, shift: d.shift }),
-        signed_num(d.dx),
-        signed_num(d.dy)
+/// `右ボタン dx = +10 dy = 0` / `Right dx = +10 dy = 0`.
+pub(crate) fn drag(d: &Drag) -> Text {
+    let g = Gesture { button: d.button, shift: d.shift };
+    let (dx, dy) = (signed_num(d.dx), signed_num(d.dy));
+    Text::new(
+        format!("{} dx = {dx} dy = {dy}", gesture(g, Lang::Ja)),
+        format!("{} dx = {dx} dy = {dy}", gesture_short(g)),
     )
 }
 
@@ -309,6 +310,7 @@ mod tests {
             "dragging down decreases it, 1° per pixel"
         );
         let d = Drag { button: MouseButton::Left, shift: true, dx: 10.0, dy: -4.0 };
-        assert_eq!(drag(&d), "Shift+Left dx = +10 dy = -4");
+        assert_eq!(drag(&d).en, "Shift+Left dx = +10 dy = -4");
+        assert_eq!(drag(&d).ja, "Shift + 左ボタン dx = +10 dy = -4");
     }
 }

@@ -173,13 +173,27 @@ fn seconds(x: f64) -> String {
     s.to_owned()
 }
 
-fn at_frame(frame: u64) -> String {
-    format!("t = {} s, frame {frame}", seconds(frame as f64 / f64::from(FPS)))
+/// `t = 2.5 s、フレーム 150` / `t = 2.5 s, frame 150`.
+fn at_frame(frame: u64) -> Text {
+    let t = seconds(frame as f64 / f64::from(FPS));
+    Text::new(format!("t = {t} s、フレーム {frame}"), format!("t = {t} s, frame {frame}"))
 }
 
-fn object_label(spec: &Spec, i: usize) -> String {
+/// `物体2` / `object 2` (the name it is drawn with).
+fn object_label(spec: &Spec, i: usize) -> Text {
     let name = spec.objects.get(i).map_or("?", |o| o.name.as_str());
-    format!("{name} (物体{})", i + 1)
+    Text::new(format!("物体{}", i + 1), name)
+}
+
+/// `a` and `b` joined by `sep_ja` / `sep_en`.
+fn pair(a: &Text, sep_ja: &str, sep_en: &str, b: &Text) -> Text {
+    Text::new(format!("{}{sep_ja}{}", a.ja, b.ja), format!("{}{sep_en}{}", a.en, b.en))
+}
+
+/// `texts` joined by `sep` in each language.
+fn joined(texts: &[Text], sep: &str) -> Text {
+    let join = |lang| texts.iter().map(|t| t.get(lang)).collect::<Vec<_>>().join(sep);
+    Text::new(join(Lang::Ja), join(Lang::En))
 }
 
 /// Whether a draw's name means `object`: the same ignoring case, spaces, `_` and `-`; `物体2`
@@ -199,40 +213,49 @@ fn draws_named<'a>(gl: &'a Gl, name: &str) -> Vec<&'a Draw> {
     gl.draws().iter().filter(|d| name_matches(&d.name, name)).collect()
 }
 
-fn names_drawn(gl: &Gl) -> String {
+fn names_drawn(gl: &Gl) -> Text {
     if gl.draws().is_empty() {
-        return "nothing drawn / 何も描かれていない".to_owned();
+        return t("何も描かれていない", "nothing drawn");
     }
     let names: Vec<String> = gl.draws().iter().map(|d| format!("\"{}\"", d.name)).collect();
-    format!("drawn / 描かれたもの: {}", names.join(", "))
+    let names = names.join(", ");
+    Text::new(format!("描かれたもの: {names}"), format!("drawn: {names}"))
+}
+
+/// `1 フレームに 1 回 gl.draw("object 1", …)` / `gl.draw("object 1", …) once per frame`.
+fn once_per_frame(object: &Object) -> Text {
+    Text::new(
+        format!("1 フレームに 1 回 gl.draw(\"{}\", …)", object.name),
+        format!("gl.draw(\"{}\", …) once per frame", object.name),
+    )
 }
 
 /// The one draw of `object` in `gl`, or why there is not exactly one.
-fn the_draw<'a>(gl: &'a Gl, object: &Object, location: &str) -> Result<&'a Draw, Failure> {
+fn the_draw<'a>(gl: &'a Gl, object: &Object, location: &Text) -> Result<&'a Draw, Failure> {
     let found = draws_named(gl, &object.name);
     match found.len() {
         1 => Ok(found[0]),
-        0 => Err(Failure::new(
-            format!("gl.draw(\"{}\", …) once per frame", object.name),
-            names_drawn(gl),
-        )
-        .at(location)
-        .cause(Text::new(
-            format!(
-                "\"{}\" が描かれていません（名前の綴りが違うか、まだ描いていない）",
-                object.name
-            ),
-            format!("\"{}\" is not drawn (a different name, or not drawn yet)", object.name),
-        ))
-        .hint(t(
-            "各物体を gl.draw(&object.name, &object.shape.mesh()) で描いてください",
-            "draw each object with gl.draw(&object.name, &object.shape.mesh())",
-        ))),
+        0 => Err(Failure::new(once_per_frame(object), names_drawn(gl))
+            .at(location.clone())
+            .cause(Text::new(
+                format!(
+                    "\"{}\" が描かれていません（名前の綴りが違うか、まだ描いていない）",
+                    object.name
+                ),
+                format!("\"{}\" is not drawn (a different name, or not drawn yet)", object.name),
+            ))
+            .hint(t(
+                "各物体を gl.draw(&object.name, &object.shape.mesh()) で描いてください",
+                "draw each object with gl.draw(&object.name, &object.shape.mesh())",
+            ))),
         n => Err(Failure::new(
-            format!("gl.draw(\"{}\", …) once per frame", object.name),
-            format!("{n} draws named \"{}\"", object.name),
+            once_per_frame(object),
+            Text::new(
+                format!("\"{}\" という名前の描画が {n} 回", object.name),
+                format!("{n} draws named \"{}\"", object.name),
+            ),
         )
-        .at(location)
+        .at(location.clone())
         .cause(t(
             "同じ物体を 1 フレームに何度も描いています",
             "the same object is drawn more than once in one frame",
@@ -270,17 +293,20 @@ fn each_frame(
     Ok(())
 }
 
-fn nothing_drawn(location: &str, task: &str) -> Failure {
-    Failure::new("the objects drawn / 物体が描かれている", "nothing drawn / 何も描かれていない")
-        .at(location)
-        .cause(Text::new(
-            format!("{task} がまだできていません（何も描かれていません）"),
-            format!("{task} is not done yet: nothing is drawn"),
-        ))
-        .hint(t(
-            "display() でカメラ、光源、各物体を描いてください",
-            "write display(): the camera, the light, then each object",
-        ))
+fn nothing_drawn(location: Text, task: &str) -> Failure {
+    Failure::new(
+        t("物体が描かれている", "the objects drawn"),
+        t("何も描かれていない", "nothing drawn"),
+    )
+    .at(location)
+    .cause(Text::new(
+        format!("{task} がまだできていません（何も描かれていません）"),
+        format!("{task} is not done yet: nothing is drawn"),
+    ))
+    .hint(t(
+        "display() でカメラ、光源、各物体を描いてください",
+        "write display(): the camera, the light, then each object",
+    ))
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -382,7 +408,7 @@ fn diagnose(
             Shift::OneLate,
             t("1 フレーム遅れています", "it is one frame late"),
             t(
-                "idle() では先に state.frame に 1 を足し、その新しい frame から変数を求めてください",
+                "idle() では先に state.frame に 1 を足し、その新しい state.frame から変数を求めてください",
                 "in idle(), add 1 to state.frame first, then compute the parameters from the new frame",
             ),
         ),
@@ -391,7 +417,7 @@ fn diagnose(
             Shift::OneEarly,
             t("1 フレーム進んでいます", "it is one frame early"),
             t(
-                "t = frame/60 秒です。frame + 1 を使っていないか確認してください",
+                "t = state.frame/60 秒です。state.frame + 1 を使っていないか確認してください",
                 "t = frame/60 s: check that you do not use frame + 1",
             ),
         ),
@@ -399,7 +425,10 @@ fn diagnose(
             Variation::EXACT,
             Shift::Twice,
             t("時間が 2 倍の速さで進んでいます", "time runs twice as fast"),
-            t("1 フレームは 1/60 秒です（t = frame/60）", "one frame is 1/60 s (t = frame/60)"),
+            t(
+                "1 フレームは 1/60 秒です（t = state.frame/60）",
+                "one frame is 1/60 s (t = frame/60)",
+            ),
         ),
         (
             Variation::EXACT,
@@ -408,7 +437,10 @@ fn diagnose(
                 "時間が半分の速さで進んでいます（30 fps として計算？）",
                 "time runs at half speed (computed for 30 fps?)",
             ),
-            t("1 フレームは 1/60 秒です（t = frame/60）", "one frame is 1/60 s (t = frame/60)"),
+            t(
+                "1 フレームは 1/60 秒です（t = state.frame/60）",
+                "one frame is 1/60 s (t = frame/60)",
+            ),
         ),
     ];
     for (variation, shift, cause, hint) in checks {
@@ -525,28 +557,28 @@ fn pose_failure(
     expected: DMat4,
     found: DMat4,
     draw: &Draw,
-    location: String,
+    location: Text,
     diagnosis: Diagnosis,
-    others: &[String],
+    others: &[Text],
 ) -> Failure {
     let (rot, pos) = pose_error(found, expected);
-    let also = if others.is_empty() {
-        String::new()
+    let (also_ja, also_en) = if others.is_empty() {
+        (String::new(), String::new())
     } else {
-        format!("; also wrong / ほかにも: {}", others.join(", "))
+        let others = joined(others, ", ");
+        (format!("; ほかに違う物体: {}", others.ja), format!("; also wrong: {}", others.en))
     };
+    let product = camera_product().concat(expected_product).numeric();
+    let (o_expected, o_found) = (v3(origin(expected)), v3(origin(found)));
+    let (mv, rot, pos) = (draw.model_view.numeric(), rot.to_degrees(), format_number(pos as f32));
     Failure::new(
-        format!(
-            "{} → origin {}",
-            camera_product().concat(expected_product).numeric(),
-            v3(origin(expected))
+        Text::new(
+            format!("{product} → 原点 {o_expected}"),
+            format!("{product} → origin {o_expected}"),
         ),
-        format!(
-            "{} → origin {} (off by {:.3}° and {} units{also})",
-            draw.model_view.numeric(),
-            v3(origin(found)),
-            rot.to_degrees(),
-            format_number(pos as f32)
+        Text::new(
+            format!("{mv} → 原点 {o_found}（回転のずれ {rot:.3}°、位置のずれ {pos}{also_ja}）"),
+            format!("{mv} → origin {o_found} (off by {rot:.3}° and {pos} units{also_en})"),
         ),
     )
     .at(location)
@@ -563,14 +595,17 @@ fn warmup_box(imp: &Impl, k: usize) -> Result<(), Failure> {
     let object = &boxes[k];
     for &time in &WARMUP_TIMES {
         let gl = warmup_frame(imp, time);
-        let location = format!("{}, t = {} s", object.name, seconds(time));
+        let location = Text::from(format!("{}, t = {} s", object.name, seconds(time)));
         if gl.draws().is_empty() {
             return Err(Failure::new(
                 format!("gl.draw(\"{}\", …)", object.name),
                 names_drawn(&gl),
             )
             .at(location)
-            .cause(t("a3.t0 がまだできていません（何も描かれていません）", "a3.t0 is not done yet: nothing is drawn"))
+            .cause(t(
+                "a3.t0 がまだできていません（何も描かれていません）",
+                "a3.t0 is not done yet: nothing is drawn",
+            ))
             .hint(t(
                 "warmup_display() で 3 つの直方体を gl.draw(\"box 1\", &mesh) などで描いてください",
                 "draw the three boxes in warmup_display() with gl.draw(\"box 1\", &mesh) and so on",
@@ -605,14 +640,17 @@ fn warmup_product(object: &Object, k: usize, time: f64) -> MatrixProduct {
     crate::oracle::local_product(&object.motion, k + 1, if u >= 1.0 { 0.0 } else { u })
 }
 
-fn stack_failure(gl: &Gl, location: String, task: &str) -> Option<Failure> {
+fn stack_failure(gl: &Gl, location: Text, task: &str) -> Option<Failure> {
     if let Some(e) = gl.errors().first() {
         let msg_ja = e.error.message(Lang::Ja);
         let msg_en = e.error.message(Lang::En);
         return Some(
             Failure::new(
-                "no GL errors / GL のエラーなし",
-                format!("{} (call {}): {msg_en}", e.function, e.call),
+                t("GL のエラーなし", "no GL errors"),
+                Text::new(
+                    format!("{}（{} 回目の呼び出し）: {msg_ja}", e.function, e.call),
+                    format!("{} (call {}): {msg_en}", e.function, e.call),
+                ),
             )
             .at(location)
             .cause(Text::new(
@@ -629,8 +667,17 @@ fn stack_failure(gl: &Gl, location: String, task: &str) -> Option<Failure> {
         let extra = gl.depth() - 1;
         return Some(
             Failure::new(
-                "stack depth 1 at the end of the frame / フレームの終わりでスタックの深さ 1",
-                format!("depth {} ({extra} glPushMatrix without glPopMatrix)", gl.depth()),
+                t(
+                    "フレームの終わりで行列スタックの深さが 1",
+                    "stack depth 1 at the end of the frame",
+                ),
+                Text::new(
+                    format!(
+                        "深さ {}（glPopMatrix と対になっていない glPushMatrix が {extra} 個）",
+                        gl.depth()
+                    ),
+                    format!("depth {} ({extra} glPushMatrix without glPopMatrix)", gl.depth()),
+                ),
             )
             .at(location)
             .cause(Text::new(
@@ -649,18 +696,21 @@ fn stack_failure(gl: &Gl, location: String, task: &str) -> Option<Failure> {
 fn warmup_stack(imp: &Impl) -> Result<(), Failure> {
     for &time in &WARMUP_TIMES {
         let gl = warmup_frame(imp, time);
-        let location = format!("warmup_display, t = {} s", seconds(time));
+        let location = Text::from(format!("warmup_display, t = {} s", seconds(time)));
         if gl.draws().is_empty() {
-            return Err(Failure::new("the three boxes drawn / 3 つの直方体", names_drawn(&gl))
-                .at(location)
-                .cause(t(
-                    "a3.t0 がまだできていません（何も描かれていません）",
-                    "a3.t0 is not done yet: nothing is drawn",
-                ))
-                .hint(t(
-                    "warmup_display() で 3 つの直方体を描いてください",
-                    "draw the three boxes in warmup_display()",
-                )));
+            return Err(Failure::new(
+                t("3 つの直方体を描く", "the three boxes drawn"),
+                names_drawn(&gl),
+            )
+            .at(location)
+            .cause(t(
+                "a3.t0 がまだできていません（何も描かれていません）",
+                "a3.t0 is not done yet: nothing is drawn",
+            ))
+            .hint(t(
+                "warmup_display() で 3 つの直方体を描いてください",
+                "draw the three boxes in warmup_display()",
+            )));
         }
         if let Some(f) = stack_failure(&gl, location, "a3.t0") {
             return Err(f);
@@ -676,7 +726,7 @@ fn warmup_stack(imp: &Impl) -> Result<(), Failure> {
 fn objects(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     each_frame(spec, imp, [1, 60], |frame, gl| {
         for (i, object) in spec.objects.iter().enumerate() {
-            let location = format!("{}, {}", object_label(spec, i), at_frame(frame));
+            let location = pair(&object_label(spec, i), "、", ", ", &at_frame(frame));
             let draw = the_draw(gl, object, &location)?;
             let (want, got) =
                 (bounds(&object.shape.mesh().positions), bounds(&draw.mesh.positions));
@@ -688,18 +738,17 @@ fn objects(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             };
             if !same {
                 let show = |b: Option<(Vec3, Vec3)>| {
-                    b.map_or("no vertices / 頂点なし".to_owned(), |(lo, hi)| {
-                        format!("{} … {}", v3(lo.as_dvec3()), v3(hi.as_dvec3()))
+                    b.map_or(t("頂点なし", "no vertices"), |(lo, hi)| {
+                        format!("{} … {}", v3(lo.as_dvec3()), v3(hi.as_dvec3())).into()
                     })
                 };
+                let (want, got) = (show(want), show(got));
                 return Err(Failure::new(
-                    format!(
-                        "{} / {}: bounds {}",
-                        shape_text(&object.shape, Lang::Ja),
-                        shape_text(&object.shape, Lang::En),
-                        show(want)
+                    Text::new(
+                        format!("{}: 範囲 {}", shape_text(&object.shape, Lang::Ja), want.ja),
+                        format!("{}: bounds {}", shape_text(&object.shape, Lang::En), want.en),
                     ),
-                    format!("bounds {}", show(got)),
+                    Text::new(format!("範囲 {}", got.ja), format!("bounds {}", got.en)),
                 )
                 .at(location)
                 .cause(t(
@@ -725,7 +774,7 @@ fn bounds(points: &[Vec3]) -> Option<(Vec3, Vec3)> {
 
 fn light(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     each_frame(spec, imp, [1], |frame, gl| {
-        let location = format!("GL_LIGHT0, {}", at_frame(frame));
+        let location = pair(&"GL_LIGHT0".into(), "、", ", ", &at_frame(frame));
         let given = cg_core::glam::Vec4::from_array(LIGHT0_POSITION);
         let expected = view() * given.as_dvec4();
         let show = |p: cg_core::glam::DVec4| {
@@ -734,8 +783,11 @@ fn light(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         };
         let Some(l) = gl.lights().iter().find(|l| l.light == 0) else {
             return Err(Failure::new(
-                format!("gl.light_position(0, [10, 10, 10, 1]) → eye {}", show(expected)),
-                "no light set / 光源の位置が設定されていない",
+                Text::new(
+                    format!("gl.light_position(0, [10, 10, 10, 1]) → 視点座標で {}", show(expected)),
+                    format!("gl.light_position(0, [10, 10, 10, 1]) → eye {}", show(expected)),
+                ),
+                t("光源の位置が設定されていない", "no light set"),
             )
             .at(location)
             .cause(t("display() で光源の位置を設定していません", "display() does not set the light's position"))
@@ -765,9 +817,16 @@ fn light(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                 "the model-view matrix when the light is set is not just the camera's (set after an object's transforms?)",
             )
         };
+        let (expected, eye, mv) = (show(expected), show(eye), l.model_view.numeric());
         Err(Failure::new(
-            format!("eye {} (= V · (10, 10, 10, 1))", show(expected)),
-            format!("eye {} (model-view {})", show(eye), l.model_view.numeric()),
+            Text::new(
+                format!("視点座標で {expected}（= V · (10, 10, 10, 1)）"),
+                format!("eye {expected} (= V · (10, 10, 10, 1))"),
+            ),
+            Text::new(
+                format!("視点座標で {eye}（モデルビュー行列 {mv}）"),
+                format!("eye {eye} (model-view {mv})"),
+            ),
         )
         .at(location)
         .cause(cause)
@@ -780,9 +839,9 @@ fn light(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 
 fn stack(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     each_frame(spec, imp, POSE_FRAMES[..4].iter().copied(), |frame, gl| {
-        let location = format!("display(), {}", at_frame(frame));
+        let location = pair(&"display()".into(), "、", ", ", &at_frame(frame));
         if gl.draws().is_empty() {
-            return Err(nothing_drawn(&location, "a3.t2"));
+            return Err(nothing_drawn(location, "a3.t2"));
         }
         stack_failure(gl, location, "a3.t2").map_or(Ok(()), Err)
     })
@@ -811,10 +870,10 @@ fn poses(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let mut wrong: Vec<usize> = Vec::new();
     each_frame(spec, imp, POSE_FRAMES, |frame, gl| {
         if gl.draws().is_empty() {
-            return Err(nothing_drawn(&at_frame(frame), "a3.t2"));
+            return Err(nothing_drawn(at_frame(frame), "a3.t2"));
         }
         for (i, object) in spec.objects.iter().enumerate() {
-            let location = format!("{}, {}", object_label(spec, i), at_frame(frame));
+            let location = pair(&object_label(spec, i), "、", ", ", &at_frame(frame));
             let m = model_of(the_draw(gl, object, &location)?);
             found[i].push((frame, m));
             if !close(m, expected_model_with(spec, i, frame, Variation::EXACT, 0), POSE_TOL) {
@@ -830,7 +889,7 @@ fn poses(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     })?;
     let Some((frame, i, gl)) = first else { return Ok(()) };
     let object = &spec.objects[i];
-    let location = format!("{}, {}", object_label(spec, i), at_frame(frame));
+    let location = pair(&object_label(spec, i), "、", ", ", &at_frame(frame));
     let draw = the_draw(&gl, object, &location)?;
     let (found_now, expected) =
         (model_of(draw), expected_model_with(spec, i, frame, Variation::EXACT, 0));
@@ -877,7 +936,7 @@ fn poses(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         }
         None => diagnose(found_now, expected, &gl, draw, &object.motion, parent, &eval),
     };
-    let others: Vec<String> =
+    let others: Vec<Text> =
         wrong.iter().filter(|&&j| j != i).map(|&j| object_label(spec, j)).collect();
     Err(pose_failure(
         &model_product(spec, i, frame),
@@ -893,13 +952,13 @@ fn poses(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 fn independent(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     each_frame(spec, imp, POSE_FRAMES, |frame, gl| {
         if gl.draws().is_empty() {
-            return Err(nothing_drawn(&at_frame(frame), "a3.t2"));
+            return Err(nothing_drawn(at_frame(frame), "a3.t2"));
         }
         for (i, object) in spec.objects.iter().enumerate() {
             if object.motion.parent().is_some() {
                 continue; // a child depends on its parent: a3.t2.hierarchy
             }
-            let location = format!("{}, {}", object_label(spec, i), at_frame(frame));
+            let location = pair(&object_label(spec, i), "、", ", ", &at_frame(frame));
             let draw = the_draw(gl, object, &location)?;
             let expected = expected_model_with(spec, i, frame, Variation::EXACT, 0);
             let found = model_of(draw);
@@ -908,9 +967,19 @@ fn independent(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             }
             if let Some(earlier) = leaked_from(found, expected, gl, draw, None) {
                 let d = leak_diagnosis(&earlier);
+                let mv = draw.model_view.numeric();
                 return Err(Failure::new(
-                    format!("{} independent of the objects drawn before it / 前に描いた物体の変換の影響を受けない", object.name),
-                    format!("{}: starts with \"{earlier}\"'s transforms / \"{earlier}\" の変換が残っている", draw.model_view.numeric()),
+                    Text::new(
+                        format!(
+                            "{} は前に描いた物体の変換の影響を受けない",
+                            object_label(spec, i).ja
+                        ),
+                        format!("{} independent of the objects drawn before it", object.name),
+                    ),
+                    Text::new(
+                        format!("{mv}: \"{earlier}\" の変換が残っている"),
+                        format!("{mv}: starts with \"{earlier}\"'s transforms"),
+                    ),
                 )
                 .at(location)
                 .cause(d.cause)
@@ -937,15 +1006,10 @@ fn hierarchy(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let mut recorded: Vec<Vec<PairFrame>> = vec![Vec::new(); pairs.len()];
     each_frame(spec, imp, POSE_FRAMES, |frame, gl| {
         if gl.draws().is_empty() {
-            return Err(nothing_drawn(&at_frame(frame), "a3.t2"));
+            return Err(nothing_drawn(at_frame(frame), "a3.t2"));
         }
         for (k, &(p, c)) in pairs.iter().enumerate() {
-            let location = format!(
-                "{} in {}, {}",
-                object_label(spec, c),
-                object_label(spec, p),
-                at_frame(frame)
-            );
+            let location = child_location(spec, c, p, frame);
             let pd = the_draw(gl, &spec.objects[p], &location)?;
             let cd = the_draw(gl, &spec.objects[c], &location)?;
             recorded[k].push((frame, model_of(pd), model_of(cd), cd.model_view.numeric()));
@@ -978,7 +1042,10 @@ fn hierarchy(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             (
                 &|f, mp| mp * own_at(2.0 * f as f64, Variation::EXACT),
                 t("時間が 2 倍の速さで進んでいます", "time runs twice as fast"),
-                t("1 フレームは 1/60 秒です（t = frame/60）", "one frame is 1/60 s (t = frame/60)"),
+                t(
+                    "1 フレームは 1/60 秒です（t = state.frame/60）",
+                    "one frame is 1/60 s (t = frame/60)",
+                ),
             ),
             (
                 &|f, mp| mp * own_at(f as f64 / 2.0, Variation::EXACT),
@@ -986,13 +1053,16 @@ fn hierarchy(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                     "時間が半分の速さで進んでいます（30 fps として計算？）",
                     "time runs at half speed (computed for 30 fps?)",
                 ),
-                t("1 フレームは 1/60 秒です（t = frame/60）", "one frame is 1/60 s (t = frame/60)"),
+                t(
+                    "1 フレームは 1/60 秒です（t = state.frame/60）",
+                    "one frame is 1/60 s (t = frame/60)",
+                ),
             ),
             (
                 &|f, mp| mp * own_at(f as f64 - 1.0, Variation::EXACT),
                 t("子が 1 フレーム遅れています", "the child is one frame late"),
                 t(
-                    "idle() では先に state.frame に 1 を足し、その新しい frame から変数を求めてください",
+                    "idle() では先に state.frame に 1 を足し、その新しい state.frame から変数を求めてください",
                     "in idle(), add 1 to state.frame first, then compute the parameters from the new frame",
                 ),
             ),
@@ -1065,21 +1135,29 @@ fn hierarchy(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             Motion::Satellite { radius, .. } => radius,
             _ => 0.0,
         };
+        let (radius, o_expected) = (format_number(radius), v3(origin(rel_expected)));
+        let (o_found, rot, pos) = (v3(origin(rel)), rot.to_degrees(), format_number(pos as f32));
         return Err(Failure::new(
-            format!(
-                "M_parent⁻¹ · M_child = Ry(θ)·T(0, 0, {}) → origin {} in {}'s coordinates",
-                format_number(radius),
-                v3(origin(rel_expected)),
-                spec.objects[p].name
+            Text::new(
+                format!(
+                    "M_parent⁻¹ · M_child = Ry(θ)·T(0, 0, {radius}) → {}の座標系で原点 {o_expected}",
+                    object_label(spec, p).ja
+                ),
+                format!(
+                    "M_parent⁻¹ · M_child = Ry(θ)·T(0, 0, {radius}) → origin {o_expected} in {}'s coordinates",
+                    spec.objects[p].name
+                ),
             ),
-            format!(
-                "origin {} (off by {:.3}° and {} units); child drawn with {product}",
-                v3(origin(rel)),
-                rot.to_degrees(),
-                format_number(pos as f32)
+            Text::new(
+                format!(
+                    "原点 {o_found}（回転のずれ {rot:.3}°、位置のずれ {pos}）; 子の変換 {product}"
+                ),
+                format!(
+                    "origin {o_found} (off by {rot:.3}° and {pos} units); child drawn with {product}"
+                ),
             ),
         )
-        .at(format!("{} in {}, {}", object_label(spec, c), object_label(spec, p), at_frame(frame)))
+        .at(child_location(spec, c, p, frame))
         .cause(cause)
         .hint(hint));
     }
@@ -1102,10 +1180,10 @@ fn measure_periods(spec: &Spec, imp: &Impl) -> Result<Vec<Option<u64>>, Failure>
         vec![vec![None; last as usize + 1]; spec.objects.len()];
     each_frame(spec, imp, 1..=last, |frame, gl| {
         if gl.draws().is_empty() {
-            return Err(nothing_drawn(&at_frame(frame), "a3.t1 / a3.t2"));
+            return Err(nothing_drawn(at_frame(frame), "a3.t1 / a3.t2"));
         }
         for (i, object) in spec.objects.iter().enumerate() {
-            let location = format!("{}, {}", object_label(spec, i), at_frame(frame));
+            let location = pair(&object_label(spec, i), "、", ", ", &at_frame(frame));
             let draw = the_draw(gl, object, &location)?;
             let mut m = model_of(draw);
             if let Some(p) = object.motion.parent()
@@ -1131,8 +1209,18 @@ fn measure_periods(spec: &Spec, imp: &Impl) -> Result<Vec<Option<u64>>, Failure>
         .collect())
 }
 
-fn frames_text(frames: u64) -> String {
-    format!("{frames} frames ({} s)", seconds(frames as f64 / f64::from(FPS)))
+fn frames_text(frames: u64) -> Text {
+    let s = seconds(frames as f64 / f64::from(FPS));
+    Text::new(format!("{frames} フレーム（{s} 秒）"), format!("{frames} frames ({s} s)"))
+}
+
+/// `物体2 の子の物体3、t = …` / `object 3 in object 2, t = …`: child `c` of parent `p`.
+fn child_location(spec: &Spec, c: usize, p: usize, frame: u64) -> Text {
+    let (c, p, at) = (object_label(spec, c), object_label(spec, p), at_frame(frame));
+    Text::new(
+        format!("{} の子の{}、{}", p.ja, c.ja, at.ja),
+        format!("{} in {}, {}", c.en, p.en, at.en),
+    )
 }
 
 fn periods(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
@@ -1144,13 +1232,16 @@ fn periods(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             continue;
         }
         let relative = if object.motion.parent().is_some() {
-            " (relative to its parent / 親に対して)"
+            ["（親に対して）", " (relative to its parent)"]
         } else {
-            ""
+            ["", ""]
         };
         let (actual, cause, hint) = match *found {
             Some(1) => (
-                "does not move (less than 0.06° or 0.001 per frame) / 動いていない".to_owned(),
+                t(
+                    "動いていない（1 フレームあたり 0.06° または 0.001 未満）",
+                    "does not move (less than 0.06° or 0.001 per frame)",
+                ),
                 t(
                     "物体が動いていません、またはごくわずかしか動きません（idle() で変数を更新していない、角度をラジアンで渡している、など）",
                     "the object does not move, or hardly (idle() does not update its parameters, an angle in radians, …)",
@@ -1161,7 +1252,10 @@ fn periods(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                 ),
             ),
             Some(l) => (
-                format!("repeats every {}", frames_text(l)),
+                Text::new(
+                    format!("{}ごとに繰り返す", frames_text(l).ja),
+                    format!("repeats every {}", frames_text(l).en),
+                ),
                 Text::new(
                     format!(
                         "周期が {} 秒になっています（指定は {} 秒）",
@@ -1180,13 +1274,16 @@ fn periods(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                 ),
             ),
             None => (
-                format!("does not repeat within {} / 繰り返さない", frames_text(2 * longest)),
+                Text::new(
+                    format!("{}以内に繰り返さない", frames_text(2 * longest).ja),
+                    format!("does not repeat within {}", frames_text(2 * longest).en),
+                ),
                 t(
                     "周期的に繰り返していません（角度をラジアンで渡している、周期の式が違う、ほかの物体の変換が残っている、など）",
                     "the motion does not repeat (an angle in radians, a wrong period formula, another object's transforms still applied, …)",
                 ),
                 t(
-                    "θ = 360°·(frame mod P)/P（P = 60·T フレーム）のように、周期で割った余りから作ってください",
+                    "θ = 360°·(state.frame mod P)/P（P = 60·T フレーム）のように、周期で割った余りから作ってください",
                     "build it from the remainder by the period: θ = 360°·(frame mod P)/P with P = 60·T frames",
                 ),
             ),
@@ -1206,7 +1303,10 @@ fn periods(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             cause
         };
         return Err(Failure::new(
-            format!("repeats every {}{relative}", frames_text(expected)),
+            Text::new(
+                format!("{}ごとに繰り返す{}", frames_text(expected).ja, relative[0]),
+                format!("repeats every {}{}", frames_text(expected).en, relative[1]),
+            ),
             actual,
         )
         .at(object_label(spec, i))
@@ -1219,14 +1319,20 @@ fn periods(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 fn ratios(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let measured = measure_periods(spec, imp)?;
     let expected = spec.period_ratios();
-    let names: Vec<String> =
-        (0..spec.objects.len()).map(|i| spec.objects[i].name.clone()).collect();
+    let names: Vec<Text> = (0..spec.objects.len()).map(|i| object_label(spec, i)).collect();
     let join = |v: &[u64]| v.iter().map(u64::to_string).collect::<Vec<_>>().join(" : ");
-    let expected_text = format!("{} = {}", names.join(" : "), join(&expected));
+    let all = joined(&names, " : ");
+    let expected_text = Text::new(
+        format!("{} = {}", all.ja, join(&expected)),
+        format!("{} = {}", all.en, join(&expected)),
+    );
     if let Some(i) = measured.iter().position(|m| m.is_none_or(|l| l <= 1)) {
         return Err(Failure::new(
             expected_text,
-            format!("{}: no period measured / 周期が測れない", names[i]),
+            Text::new(
+                format!("{}: 周期が測れない", names[i].ja),
+                format!("{}: no period measured", names[i].en),
+            ),
         )
         .at(object_label(spec, i))
         .cause(t(
@@ -1241,11 +1347,15 @@ fn ratios(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     if found_ratio == expected {
         return Ok(());
     }
+    let periods = joined(&found.iter().map(|&f| frames_text(f)).collect::<Vec<_>>(), ", ");
     Err(Failure::new(
         expected_text,
-        format!("{} = {} (periods {})", names.join(" : "), join(&found_ratio), found.iter().map(|&f| frames_text(f)).collect::<Vec<_>>().join(", ")),
+        Text::new(
+            format!("{} = {}（周期 {}）", all.ja, join(&found_ratio), periods.ja),
+            format!("{} = {} (periods {})", all.en, join(&found_ratio), periods.en),
+        ),
     )
-    .at(names.join(", "))
+    .at(joined(&names, ", "))
     .cause(t(
         "物体同士の周期の比が指定と違います（「動きの周期（物体同士の回転周期）が異なる」はよくある間違い）",
         "the ratio of the objects' periods is not the specified one (a common mistake in this assignment)",
@@ -1269,11 +1379,11 @@ fn drift(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let mut wrong_early: Vec<usize> = Vec::new();
     each_frame(spec, imp, [early, DRIFT_FRAMES], |frame, gl| {
         if gl.draws().is_empty() {
-            return Err(nothing_drawn(&at_frame(frame), "a3.t2"));
+            return Err(nothing_drawn(at_frame(frame), "a3.t2"));
         }
         let mut worst: Option<(usize, f64, f64, f64)> = None;
         for (i, object) in spec.objects.iter().enumerate() {
-            let location = format!("{}, {}", object_label(spec, i), at_frame(frame));
+            let location = pair(&object_label(spec, i), "、", ", ", &at_frame(frame));
             let draw = the_draw(gl, object, &location)?;
             let found = model_of(draw);
             let expected = expected_model_with(spec, i, frame, Variation::EXACT, 0);
@@ -1298,11 +1408,11 @@ fn drift(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                 Text::new(
                     format!(
                         "ずれではなく、最初から動きが違います（同じ位相の {} でもすでに違う）",
-                        at_frame(early)
+                        at_frame(early).ja
                     ),
                     format!(
                         "this is not drift: the motion is wrong from the start (already wrong at {}, the same phase)",
-                        at_frame(early)
+                        at_frame(early).en
                     ),
                 ),
                 t("先に a3.t2.poses を直してください", "fix a3.t2.poses first"),
@@ -1312,27 +1422,36 @@ fn drift(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                 Text::new(
                     format!(
                         "{} では正しいのに 10⁶ フレーム後にずれています: 角度や位置を毎フレーム f32 で足し続けているため、丸め誤差がたまっています（または周期で割った余りを使っていない）",
-                        at_frame(early)
+                        at_frame(early).ja
                     ),
                     format!(
                         "right at {} (the same phase) but off after 10⁶ frames: the angle or position is accumulated in f32 every frame, so rounding errors pile up (or it is not reduced by the period)",
-                        at_frame(early)
+                        at_frame(early).en
                     ),
                 ),
                 t(
-                    "毎フレーム state.frame（整数）から作り直してください: P = 60·T として θ = 360·(frame % P) as f64 / P as f64",
-                    "rebuild it every frame from state.frame (an integer): with P = 60·T, θ = 360·(frame % P) as f64 / P as f64",
+                    "毎フレーム state.frame（整数）から作り直してください: P = 60·T として θ = 360·(state.frame % P) as f64 / P as f64",
+                    "rebuild it every frame from state.frame (an integer): with P = 60·T, θ = 360·(state.frame % P) as f64 / P as f64",
                 ),
             )
         };
+        let product = camera_product().concat(&model_product(spec, i, frame)).numeric();
+        let (rot_e, deg, pos, det) = (e(rot), rot.to_degrees(), e(pos), e(det));
         Err(Failure::new(
-            format!(
-                "after {DRIFT_FRAMES} frames: pose error < {DRIFT_TOL:.0e} rad and units, |det(R) − 1| < {DRIFT_TOL:.0e}; expected {}",
-                camera_product().concat(&model_product(spec, i, frame)).numeric()
+            Text::new(
+                format!(
+                    "{DRIFT_FRAMES} フレーム後: 回転と位置のずれ < {DRIFT_TOL:.0e}、|det(R) − 1| < {DRIFT_TOL:.0e}; 期待する変換 {product}"
+                ),
+                format!(
+                    "after {DRIFT_FRAMES} frames: pose error < {DRIFT_TOL:.0e} rad and units, |det(R) − 1| < {DRIFT_TOL:.0e}; expected {product}"
+                ),
             ),
-            format!("rotation {} rad ({:.4}°), origin {} units, |det(R) − 1| = {}", e(rot), rot.to_degrees(), e(pos), e(det)),
+            Text::new(
+                format!("回転のずれ {rot_e} rad（{deg:.4}°）、原点のずれ {pos}、|det(R) − 1| = {det}"),
+                format!("rotation {rot_e} rad ({deg:.4}°), origin {pos} units, |det(R) − 1| = {det}"),
+            ),
         )
-        .at(format!("{}, {}", object_label(spec, i), at_frame(frame)))
+        .at(pair(&object_label(spec, i), "、", ", ", &at_frame(frame)))
         .cause(cause)
         .hint(hint))
     })

@@ -148,22 +148,26 @@ fn what_is(spec: &Spec, v: Vec2) -> Text {
     cell_at(v.as_dvec2())
 }
 
-/// A text in both languages for `expected` and `actual` (plain strings): `English / 日本語`, as
-/// every other two-language value of these checks.
-fn both(text: &Text) -> String {
-    if text.ja == text.en { text.en.clone() } else { format!("{} / {}", text.en, text.ja) }
-}
-
 /// `(i, j) = (3, 7)`.
 fn ij(i: u32, j: u32) -> String {
     format!("({i}, {j})")
 }
 
-/// The corner `(i+1, j)` of square `(i, j)` as the location text `corner (i+1, j) of square (9,
-/// 3)`.
-fn corner_of_square(i: u32, j: u32, c: usize) -> String {
+/// The corner `(i+1, j)` of square `(i, j)` as the location text `四角形 (9, 3) の頂点 (i+1, j)` /
+/// `corner (i+1, j) of square (9, 3)`.
+fn corner_of_square(i: u32, j: u32, c: usize) -> Text {
     let names = ["(i, j)", "(i, j+1)", "(i+1, j+1)", "(i+1, j)"];
-    format!("corner {} of square {} / 四角形 {} の頂点 {}", names[c], ij(i, j), ij(i, j), names[c])
+    let (square, corner) = (ij(i, j), names[c]);
+    Text::new(
+        format!("四角形 {square} の頂点 {corner}"),
+        format!("corner {corner} of square {square}"),
+    )
+}
+
+/// `{uv} {words}` in each language (`words` one of [`cell_at`], [`what_is`]), with `sep`
+/// between.
+fn with_words(value: &str, sep: &str, words: &Text) -> Text {
+    Text::new(format!("{value}{sep}{}", words.ja), format!("{value}{sep}{}", words.en))
 }
 
 /// The student's coordinates, refusing NaN and infinities with their place.
@@ -173,7 +177,10 @@ fn finite_coordinates(spec: &Spec, imp: &Impl) -> Result<Coordinates, Failure> {
         for i in 0..SQUARES {
             for (c, v) in table[i as usize][j as usize].iter().enumerate() {
                 if !v.is_finite() {
-                    return Err(Failure::new("finite texture coordinates / 有限のテクスチャ座標", uv(*v))
+                    return Err(Failure::new(
+                        t("有限のテクスチャ座標", "finite texture coordinates"),
+                        uv(*v),
+                    )
                         .at(corner_of_square(i, j, c))
                         .cause(t(
                             "0 で割った（まとまりの大きさや範囲の幅が 0）か、まだ計算していない値",
@@ -232,7 +239,10 @@ fn s_range(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         } else {
             format!("{}–{}", column_name(r.column), column_name(r.column + r.columns - 1))
         };
-        format!("tex_range, region {}: columns {columns} / 範囲 {}、列 {columns}", r.name(), r.name())
+        Text::new(
+            format!("tex_range、範囲 {}、列 {columns}", r.name()),
+            format!("tex_range, region {}: columns {columns}", r.name()),
+        )
     })
     .cause(cause)
     .hint(t(
@@ -281,7 +291,10 @@ fn t_range(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         } else {
             format!("{}–{}", r.row + 1, r.row + r.rows)
         };
-        format!("tex_range, region {}: rows {rows} / 範囲 {}、行 {rows}", r.name(), r.name())
+        Text::new(
+            format!("tex_range、範囲 {}、行 {rows}", r.name()),
+            format!("tex_range, region {}: rows {rows}", r.name()),
+        )
     })
     .cause(cause)
     .hint(t(
@@ -325,17 +338,18 @@ fn corners(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             "the formula's offset or scale is off (at i, j = 0 and 10 it must give the region's edges), it uses the whole image instead of the region, or it is off by one (i*0.1 + 0.1)",
         )
     };
+    let (n, square) = (wrong.len(), corner_of_square(i, j, c));
     Err(Failure::new(
-        format!("{} = {}", uv(want), both(&what_is(spec, want))),
-        format!(
-            "{} = {} — {} of 4 corners wrong / 4 隅のうち {} 個が違う",
-            uv(got),
-            both(&found),
-            wrong.len(),
-            wrong.len()
+        with_words(&uv(want), " = ", &what_is(spec, want)),
+        Text::new(
+            format!("{} = {}（4 隅のうち {n} 個が違う）", uv(got), found.ja),
+            format!("{} = {} — {n} of 4 corners wrong", uv(got), found.en),
         ),
     )
-    .at(format!("{} / {}; {}", g.describe(Lang::En), g.describe(Lang::Ja), corner_of_square(i, j, c)))
+    .at(Text::new(
+        format!("{}、{}", g.describe(Lang::Ja), square.ja),
+        format!("{}; {}", g.describe(Lang::En), square.en),
+    ))
     .cause(cause)
     .hint(t(
         "まず範囲の 4 つの角の (s, t) と、それぞれが地面のどの隅に来るか（課題の表）を書き出し、i, j = 0 と 10 で式がその値になるか確かめる",
@@ -410,24 +424,28 @@ fn block_range(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                 )
             };
             let place = if n == 1 {
-                format!("the whole ground, squares i, j = 0…{} / 地面全体", SQUARES - 1)
+                let last = SQUARES - 1;
+                Text::new(
+                    format!("地面全体（四角形 i, j = 0…{last}）"),
+                    format!("the whole ground, squares i, j = 0…{last}"),
+                )
             } else {
-                format!(
-                    "block ({bi}, {bj}): squares i = {}, j = {} / まとまり ({bi}, {bj})",
-                    squares_text(bi, k),
-                    squares_text(bj, k)
+                let (si, sj) = (squares_text(bi, k), squares_text(bj, k));
+                Text::new(
+                    format!("まとまり ({bi}, {bj}): 四角形 i = {si}, j = {sj}"),
+                    format!("block ({bi}, {bj}): squares i = {si}, j = {sj}"),
                 )
             };
+            let range = format!(
+                "s = {}…{}, t = {}…{}",
+                decimal(want.s_min, 4),
+                decimal(want.s_max, 4),
+                decimal(want.t_min, 4),
+                decimal(want.t_max, 4)
+            );
+            let name = spec.region.name();
             return Err(Failure::new(
-                format!(
-                    "s = {}…{}, t = {}…{} ({} {})",
-                    decimal(want.s_min, 4),
-                    decimal(want.s_max, 4),
-                    decimal(want.t_min, 4),
-                    decimal(want.t_max, 4),
-                    spec.region.name(),
-                    "region / 範囲"
-                ),
+                Text::new(format!("{range}（範囲 {name}）"), format!("{range} ({name} region)")),
                 format!(
                     "s = {}…{}, t = {}…{}",
                     decimal(lo.x as f32, 4),
@@ -475,24 +493,24 @@ fn shared(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                 for &(i2, j2, v2) in &around[a + 1..] {
                     let same_block = (i1 / k, j1 / k) == (i2 / k, j2 / k);
                     if same_block && !near(v1.as_dvec2(), v2.as_dvec2(), TOL) {
+                        let (vertex, a, b) = (ij(vi, vj), ij(i1, j1), ij(i2, j2));
+                        let (u1, u2) = (uv(v1), uv(v2));
                         return Err(Failure::new(
-                            format!(
-                                "the same coordinate from every square of a block at vertex {} / 同じまとまりの四角形どうしで同じ座標",
-                                ij(vi, vj)
+                            Text::new(
+                                format!("頂点 {vertex} で、同じまとまりのどの四角形からも同じ座標"),
+                                format!(
+                                    "the same coordinate from every square of a block at vertex {vertex}"
+                                ),
                             ),
-                            format!(
-                                "square {} gives {}, square {} gives {} / 四角形 {} は {}、{} は {}",
-                                ij(i1, j1),
-                                uv(v1),
-                                ij(i2, j2),
-                                uv(v2),
-                                ij(i1, j1),
-                                uv(v1),
-                                ij(i2, j2),
-                                uv(v2)
+                            Text::new(
+                                format!("四角形 {a} では {u1}、四角形 {b} では {u2}"),
+                                format!("square {a} gives {u1}, square {b} gives {u2}"),
                             ),
                         )
-                        .at(format!("vertex (i, j) = {} / 頂点 (i, j) = {}", ij(vi, vj), ij(vi, vj)))
+                        .at(Text::new(
+                            format!("頂点 (i, j) = {vertex}"),
+                            format!("vertex (i, j) = {vertex}"),
+                        ))
                         .cause(t(
                             "四角形ごとに別々に 0〜1（範囲全体）を割り当てている、または隣の四角形と別の式: 画像が四角形ごとに繰り返されたり、四角形の境目でずれたりする",
                             "each square gets its own 0…1 (the whole region), or neighbouring squares use different formulas: the image repeats in every square, or jumps at the squares' edges",
@@ -522,17 +540,15 @@ fn linear(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             if det.abs() <= 1e-9 {
                 let (along, other) =
                     if du.abs().max_element() <= 1e-9 { ("i", "j") } else { ("j", "i") };
+                let (su, sv, square) = (uv64(du), uv64(dv), ij(i0, j0));
                 return Err(Failure::new(
-                    "coordinates that change along i and along j / i にも j にも沿って変わる座標",
-                    format!(
-                        "steps per square: along i {}, along j {} / 四角形 1 つ分の変化: i 方向 {}、j 方向 {}",
-                        uv64(du),
-                        uv64(dv),
-                        uv64(du),
-                        uv64(dv)
+                    t("i にも j にも沿って変わる座標", "coordinates that change along i and along j"),
+                    Text::new(
+                        format!("四角形 1 つ分の変化: i 方向 {su}、j 方向 {sv}"),
+                        format!("steps per square: along i {su}, along j {sv}"),
                     ),
                 )
-                .at(format!("square {} / 四角形 {}", ij(i0, j0), ij(i0, j0)))
+                .at(Text::new(format!("四角形 {square}"), format!("square {square}")))
                 .cause(Text::new(
                     format!(
                         "{along} を変えても座標が変わらない（または {other} と同じ向きにしか変わらない）: 整数の割り算（i / 10 は i < 10 で 0）や、i か j の入れ忘れ"
@@ -554,24 +570,19 @@ fn linear(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                         let got = table[i as usize][j as usize][c].as_dvec2();
                         if !near(got, predicted, TOL) {
                             let (vi, vj) = (i + di, j + dj);
+                            let (p, a, b, d) =
+                                (uv64(predicted), ij(i0, j0), ij(i0 + 1, j0), ij(i0, j0 + 1));
+                            let (vertex, square) = (ij(vi, vj), corner_of_square(i, j, c));
                             return Err(Failure::new(
-                                format!(
-                                    "{} — the formula through vertices {}, {}, {} continued / 頂点 {}, {}, {} を通る式の続き",
-                                    uv64(predicted),
-                                    ij(i0, j0),
-                                    ij(i0 + 1, j0),
-                                    ij(i0, j0 + 1),
-                                    ij(i0, j0),
-                                    ij(i0 + 1, j0),
-                                    ij(i0, j0 + 1)
+                                Text::new(
+                                    format!("{p} — 頂点 {a}, {b}, {d} を通る式の続き"),
+                                    format!("{p} — the formula through vertices {a}, {b}, {d} continued"),
                                 ),
                                 uv64(got),
                             )
-                            .at(format!(
-                                "vertex (i, j) = {} / 頂点 (i, j) = {}; {}",
-                                ij(vi, vj),
-                                ij(vi, vj),
-                                corner_of_square(i, j, c)
+                            .at(Text::new(
+                                format!("頂点 (i, j) = {vertex}; {}", square.ja),
+                                format!("vertex (i, j) = {vertex}; {}", square.en),
                             ))
                             .cause(t(
                                 "i と j の 1 つの式になっていない: 整数の割り算、特別な場合の表、頂点ごとに i % k を取ってまとまりの最後の頂点が 0 に戻る、四角形ごとに 0〜1 を割り当てる、など",
@@ -653,20 +664,27 @@ fn orientation(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let (Some(want_right), Some(want_up)) = (want_right, want_up) else {
         // The oracle is always axis-aligned; this cannot happen for a valid spec.
         return Err(Failure::new(
-            "an axis-aligned orientation",
-            "the assignment's own orientation is not",
+            t("軸に沿った向き", "an axis-aligned orientation"),
+            t("課題の向きそのものが軸に沿っていない", "the assignment's own orientation is not"),
         )
         .at("spec"));
     };
     let expected = orientation_words(want_right, want_up);
-    let place = "the steps from vertex (0, 0) to (1, 0) and to (0, 1) / 頂点 (0, 0) から (1, 0)・(0, 1) への変化";
+    let place = t(
+        "頂点 (0, 0) から (1, 0)・(0, 1) への変化",
+        "the steps from vertex (0, 0) to (1, 0) and to (0, 1)",
+    );
     let (Some(right), Some(up)) = (screen_axis(du.x, dv.x), screen_axis(du.y, dv.y)) else {
+        let (ds, dt) = (uv64(DVec2::new(du.x, dv.x)), uv64(DVec2::new(du.y, dv.y)));
         return Err(Failure::new(
-            both(&expected),
-            format!(
-                "s changes by {} and t by {} per square along i, j — not along the ground's edges / 地面の辺に沿っていない",
-                uv64(DVec2::new(du.x, dv.x)),
-                uv64(DVec2::new(du.y, dv.y))
+            expected,
+            Text::new(
+                format!(
+                    "四角形 1 つごとに i, j 方向へ s が {ds}、t が {dt} 変わる — 地面の辺に沿っていない"
+                ),
+                format!(
+                    "s changes by {ds} and t by {dt} per square along i, j — not along the ground's edges"
+                ),
             ),
         )
         .at(place)
@@ -735,8 +753,8 @@ fn orientation(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     };
     let yours = orientation_words(right, up);
     Err(Failure::new(
-        both(&expected),
-        format!("{} — {}", both(&yours), both(&seen)),
+        expected,
+        Text::new(format!("{} — {}", yours.ja, seen.ja), format!("{} — {}", yours.en, seen.en)),
     )
     .at(place)
     .cause(cause)
@@ -774,22 +792,25 @@ fn cells(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         return Ok(());
     };
     let (shows, should) = (cell_at(got), cell_at(want));
+    let square = ij(i, j);
     Err(Failure::new(
-        format!("{} {}", uv64(want), both(&should)),
-        format!(
-            "{} {} — {wrong} of 100 squares wrong / 100 個中 {wrong} 個が違う",
-            uv64(got),
-            both(&shows)
+        with_words(&uv64(want), " ", &should),
+        Text::new(
+            format!("{} {}（100 個中 {wrong} 個が違う）", uv64(got), shows.ja),
+            format!("{} {} — {wrong} of 100 squares wrong", uv64(got), shows.en),
         ),
     )
-    .at(format!(
-        "square (i, j) = {}, 3/8 along its diagonal from vertex {}; column {} from the left, row {} from the far edge (seen from the camera) / 四角形 {}、頂点 {} から対角線の 3/8",
-        ij(i, j),
-        ij(i, j),
-        i + 1,
-        j + 1,
-        ij(i, j),
-        ij(i, j)
+    .at(Text::new(
+        format!(
+            "四角形 (i, j) = {square}、頂点 {square} から対角線の 3/8（カメラから見て左から {} 列目、奥から {} 行目）",
+            i + 1,
+            j + 1
+        ),
+        format!(
+            "square (i, j) = {square}, 3/8 along its diagonal from vertex {square}; column {} from the left, row {} from the far edge (seen from the camera)",
+            i + 1,
+            j + 1
+        ),
     ))
     .cause(t(
         "a4.t2 の他のチェック（隅・範囲・共有・1 次式・向き）のどれかが原因のことが多い",

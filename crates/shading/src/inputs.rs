@@ -7,6 +7,7 @@
 use cg_core::Rgb;
 use cg_core::glam::Vec3;
 use cg_harness::VariantRng;
+use cg_harness::text::Text;
 
 /// A seeded source of check inputs.
 pub(crate) struct Inputs(VariantRng);
@@ -69,6 +70,17 @@ pub(crate) fn vec(v: Vec3) -> String {
 /// An optional direction: the vector, or `None`.
 pub(crate) fn opt(v: Option<Vec3>) -> String {
     v.map_or_else(|| "None".to_owned(), vec)
+}
+
+/// `name: values` in each language: a case's name in Japanese and English, its values (numbers
+/// and symbols) shared.
+pub(crate) fn case_at(name: &Text, values: &str) -> Text {
+    Text::new(format!("{}: {values}", name.ja), format!("{}: {values}", name.en))
+}
+
+/// `ランダムな入力 3` / `random case 3`.
+pub(crate) fn random_case(i: usize) -> Text {
+    Text::new(format!("ランダムな入力 {i}"), format!("random case {i}"))
 }
 
 /// The largest per-component difference, NaN when either side has a NaN.

@@ -10,7 +10,7 @@ use cg_core::mesh::Mesh;
 use cg_core::normals::{Weighting, vertex_normals};
 use cg_core::shapes::{cuboid, lecture_pyramid};
 use cg_harness::check::Failure;
-use cg_harness::text::t;
+use cg_harness::text::{Text, t};
 
 use crate::inputs::{max_diff, num, vec};
 use crate::scenes::sphere_mesh;
@@ -53,19 +53,24 @@ pub(crate) fn degenerate_fan() -> Mesh {
     mesh
 }
 
-fn meshes(spec: &Spec) -> Vec<(&'static str, Mesh)> {
+fn meshes(spec: &Spec) -> Vec<(Text, Mesh)> {
     let cube = cuboid(Vec3::splat(2.0)).unwrap_or_default();
     vec![
-        ("cube", cube),
-        ("fan", fan()),
-        ("lecture pyramid", lecture_pyramid()),
-        ("your sphere", sphere_mesh(spec)),
+        (t("立方体", "cube"), cube),
+        (t("扇形", "fan"), fan()),
+        (t("講義の四角すい", "lecture pyramid"), lecture_pyramid()),
+        (t("あなたの球", "your sphere"), sphere_mesh(spec)),
     ]
+}
+
+/// `メッシュ「立方体」` / `mesh "cube"`, then `rest` in each language.
+fn mesh_at(name: &Text, rest_ja: &str, rest_en: &str) -> Text {
+    Text::new(format!("メッシュ「{}」{rest_ja}", name.ja), format!("mesh \"{}\"{rest_en}", name.en))
 }
 
 /// Compares the student's normals of `mesh` with the core's for `weighting`.
 fn compare(
-    name: &str,
+    name: &Text,
     mesh: &Mesh,
     got: &[Vec3],
     weighting: Weighting,
@@ -73,11 +78,12 @@ fn compare(
 ) -> Result<(), Failure> {
     let expected = vertex_normals(mesh, weighting).normals;
     if got.len() != expected.len() {
+        let (e, g) = (expected.len(), got.len());
         return Err(Failure::new(
-            format!("{} normals (one per vertex)", expected.len()),
-            format!("{} normals", got.len()),
+            Text::new(format!("法線 {e} 個（1 頂点に 1 つ）"), format!("{e} normals (one per vertex)")),
+            Text::new(format!("法線 {g} 個"), format!("{g} normals")),
         )
-        .at(format!("mesh \"{name}\""))
+        .at(mesh_at(name, "", ""))
         .cause(t("頂点の数だけ法線が必要です。", "every vertex needs a normal."))
         .hint(t(
             "vec![Vec3::ZERO; mesh.positions.len()] から始めて、各面の法線を 3 つの頂点に足します。",
@@ -88,11 +94,15 @@ fn compare(
         && got.iter().all(|&g| g == Vec3::Y)
         && expected.iter().any(|&e| e != Vec3::Y)
     {
+        let n = got.len();
         return Err(Failure::new(
             format!("V0 {} …", vec(expected[0])),
-            format!("(0, 1, 0) at every vertex of the {} vertices", got.len()),
+            Text::new(
+                format!("{n} 個のすべての頂点で (0, 1, 0)"),
+                format!("(0, 1, 0) at every vertex of the {n} vertices"),
+            ),
         )
-        .at(format!("mesh \"{name}\""))
+        .at(mesh_at(name, "", ""))
         .cause(t(
             "vertex_normals はまだ仮の答え（どの頂点も真上 (0, 1, 0)）を返しています。",
             "vertex_normals still returns the placeholder (every vertex straight up, (0, 1, 0)).",
@@ -188,8 +198,13 @@ fn compare(
             .filter(|(_, f)| f.contains(&(v as u32)))
             .map(|(i, _)| format!("F{i}"))
             .collect();
+        let faces = faces.join(", ");
         return Err(Failure::new(vec(e), vec(g))
-            .at(format!("mesh \"{name}\", vertex V{v} (faces {})", faces.join(", ")))
+            .at(mesh_at(
+                name,
+                &format!("、頂点 V{v}（面 {faces}）"),
+                &format!(", vertex V{v} (faces {faces})"),
+            ))
             .cause(cause)
             .hint(hint));
     }
@@ -199,7 +214,7 @@ fn compare(
 pub(super) fn average(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     for (name, mesh) in meshes(spec) {
         let got = (imp.vertex_normals)(&mesh);
-        compare(name, &mesh, &got, Weighting::Uniform, Weighting::Area)?;
+        compare(&name, &mesh, &got, Weighting::Uniform, Weighting::Area)?;
     }
     Ok(())
 }
@@ -207,7 +222,7 @@ pub(super) fn average(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 pub(super) fn area_weighted(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     for (name, mesh) in meshes(spec) {
         let got = (imp.vertex_normals_area)(&mesh);
-        compare(name, &mesh, &got, Weighting::Area, Weighting::Uniform)?;
+        compare(&name, &mesh, &got, Weighting::Area, Weighting::Uniform)?;
     }
     Ok(())
 }
@@ -216,7 +231,7 @@ pub(super) fn degenerate(imp: &Impl) -> Result<(), Failure> {
     let mesh = degenerate_fan();
     let got = (imp.vertex_normals)(&mesh);
     compare(
-        "fan with zero-area faces (plain average)",
+        &t("面積 0 の面を含む扇形（単純平均）", "fan with zero-area faces (plain average)"),
         &mesh,
         &got,
         Weighting::Uniform,
@@ -224,7 +239,7 @@ pub(super) fn degenerate(imp: &Impl) -> Result<(), Failure> {
     )?;
     let got = (imp.vertex_normals_area)(&mesh);
     compare(
-        "fan with zero-area faces (area-weighted)",
+        &t("面積 0 の面を含む扇形（面積の加重平均）", "fan with zero-area faces (area-weighted)"),
         &mesh,
         &got,
         Weighting::Area,

@@ -9,24 +9,28 @@
 use cg_core::glam::Vec3;
 use cg_core::optics::{self, Interface};
 use cg_harness::check::Failure;
-use cg_harness::text::t;
+use cg_harness::text::{Text, t};
 
-use crate::inputs::{Inputs, max_diff, num, opt, vec};
+use crate::inputs::{Inputs, case_at, max_diff, num, opt, random_case, vec};
 use crate::{Impl, Spec};
 
 pub(super) fn reflect(imp: &Impl) -> Result<(), Failure> {
-    let mut cases: Vec<(String, Vec3, Vec3)> = vec![
-        ("normal incidence (i = -n)".to_owned(), Vec3::NEG_Y, Vec3::Y),
-        ("grazing (i ⟂ n)".to_owned(), Vec3::X, Vec3::Y),
-        ("45°".to_owned(), Vec3::new(1.0, -1.0, 0.0).normalize(), Vec3::Y),
-        ("n on the other side".to_owned(), Vec3::new(1.0, -1.0, 0.0).normalize(), Vec3::NEG_Y),
-        ("|i| = 2.5".to_owned(), Vec3::new(1.5, -2.0, 0.0), Vec3::Y),
+    let mut cases: Vec<(Text, Vec3, Vec3)> = vec![
+        (t("垂直入射 (i = -n)", "normal incidence (i = -n)"), Vec3::NEG_Y, Vec3::Y),
+        (t("かすめる入射 (i ⟂ n)", "grazing (i ⟂ n)"), Vec3::X, Vec3::Y),
+        ("45°".into(), Vec3::new(1.0, -1.0, 0.0).normalize(), Vec3::Y),
+        (
+            t("n が反対側", "n on the other side"),
+            Vec3::new(1.0, -1.0, 0.0).normalize(),
+            Vec3::NEG_Y,
+        ),
+        ("|i| = 2.5".into(), Vec3::new(1.5, -2.0, 0.0), Vec3::Y),
     ];
     let mut r = Inputs::new(0x5_0007);
     for k in 0..40 {
         let n = r.unit_vector();
         let i = r.unit_vector() * r.range(0.5, 2.0);
-        cases.push((format!("random case {k}"), i, n));
+        cases.push((random_case(k), i, n));
     }
     for (name, i, n) in cases {
         let expected = optics::reflect(i, n);
@@ -59,7 +63,7 @@ pub(super) fn reflect(imp: &Impl) -> Result<(), Failure> {
             )
         };
         return Err(Failure::new(vec(expected), vec(actual))
-            .at(format!("{name}: i = {}, n = {}", vec(i), vec(n)))
+            .at(case_at(&name, &format!("i = {}, n = {}", vec(i), vec(n))))
             .cause(cause)
             .hint(hint));
     }
@@ -92,7 +96,7 @@ fn naive(i: Vec3, n: Vec3, eta: f32) -> Option<Vec3> {
 }
 
 fn refract_failure(
-    name: &str,
+    name: &Text,
     i: Vec3,
     n: Vec3,
     n1: f32,
@@ -192,17 +196,23 @@ fn refract_failure(
             f64::from(to) * sin2
         )
     });
+    let values = format!("i = {}, n = {}, n1 = {}, n2 = {}", vec(i), vec(n), num(n1), num(n2));
+    let theta = theta.to_degrees();
+    let critical = critical.map(f64::to_degrees);
     Failure::new(opt(expected), format!("{}{snell}", opt(actual)))
-        .at(format!(
-            "{name}: i = {}, n = {}, n1 = {}, n2 = {} ({}, θ₁ = {:.3}°{})",
-            vec(i),
-            vec(n),
-            num(n1),
-            num(n2),
-            if inside { "from inside" } else { "from outside" },
-            theta.to_degrees(),
-            critical
-                .map_or_else(String::new, |c| format!(", critical angle {:.3}°", c.to_degrees()))
+        .at(Text::new(
+            format!(
+                "{}: {values}（{}、θ₁ = {theta:.3}°{}）",
+                name.ja,
+                if inside { "内側から" } else { "外側から" },
+                critical.map_or_else(String::new, |c| format!("、臨界角 {c:.3}°"))
+            ),
+            format!(
+                "{}: {values} ({}, θ₁ = {theta:.3}°{})",
+                name.en,
+                if inside { "from inside" } else { "from outside" },
+                critical.map_or_else(String::new, |c| format!(", critical angle {c:.3}°"))
+            ),
         ))
         .cause(cause)
         .hint(hint)
@@ -233,7 +243,7 @@ pub(super) fn refract(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         }
         let actual = (imp.refract)(i, n, n1, n2);
         if !matches(actual, oracle(i, n, n1, n2)) {
-            return Err(refract_failure(&format!("random case {k}"), i, n, n1, n2, actual));
+            return Err(refract_failure(&random_case(k), i, n, n1, n2, actual));
         }
         k += 1;
     }
@@ -259,7 +269,10 @@ pub(super) fn total_reflection(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         let actual = (imp.refract)(i, n, 1.0, eta);
         if actual.is_some() || oracle(i, n, 1.0, eta).is_some() {
             return Err(refract_failure(
-                &format!("case {k}, leaving the medium (η = {}) into air", num(eta)),
+                &Text::new(
+                    format!("ケース {k}、媒質 (η = {}) から空気へ出る", num(eta)),
+                    format!("case {k}, leaving the medium (η = {}) into air", num(eta)),
+                ),
                 i,
                 n,
                 1.0,
@@ -278,15 +291,43 @@ pub(super) fn refract_hard(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         let a = deg.to_radians();
         Vec3::new(a.sin(), if up { a.cos() } else { -a.cos() }, 0.0)
     };
-    let cases: Vec<(String, Vec3, f32, f32)> = vec![
-        ("normal incidence from outside".to_owned(), Vec3::NEG_Y, 1.0, eta),
-        ("normal incidence from inside".to_owned(), Vec3::Y, 1.0, eta),
-        ("η = 1 (n1 = n2 = 1): straight through".to_owned(), tilted(40.0, false), 1.0, 1.0),
-        ("η = 1 (n1 = n2 = 1.5), from inside".to_owned(), tilted(70.0, true), 1.5, 1.5),
-        ("30° from inside (flip n, swap n1 and n2)".to_owned(), tilted(30.0, true), 1.0, eta),
-        ("30° from outside".to_owned(), tilted(30.0, false), 1.0, eta),
-        ("grazing from outside (89.9°)".to_owned(), tilted(89.9, false), 1.0, eta),
-        ("grazing exactly (i·n = 0) from outside".to_owned(), Vec3::X, 1.0, eta),
+    let cases: Vec<(Text, Vec3, f32, f32)> = vec![
+        (t("外側からの垂直入射", "normal incidence from outside"), Vec3::NEG_Y, 1.0, eta),
+        (t("内側からの垂直入射", "normal incidence from inside"), Vec3::Y, 1.0, eta),
+        (
+            t("η = 1 (n1 = n2 = 1): まっすぐ通る", "η = 1 (n1 = n2 = 1): straight through"),
+            tilted(40.0, false),
+            1.0,
+            1.0,
+        ),
+        (
+            t("η = 1 (n1 = n2 = 1.5)、内側から", "η = 1 (n1 = n2 = 1.5), from inside"),
+            tilted(70.0, true),
+            1.5,
+            1.5,
+        ),
+        (
+            t(
+                "内側から 30°（n を反転し、n1 と n2 を入れ替える）",
+                "30° from inside (flip n, swap n1 and n2)",
+            ),
+            tilted(30.0, true),
+            1.0,
+            eta,
+        ),
+        (t("外側から 30°", "30° from outside"), tilted(30.0, false), 1.0, eta),
+        (
+            t("外側からかすめる入射 (89.9°)", "grazing from outside (89.9°)"),
+            tilted(89.9, false),
+            1.0,
+            eta,
+        ),
+        (
+            t("外側からちょうどかすめる入射 (i·n = 0)", "grazing exactly (i·n = 0) from outside"),
+            Vec3::X,
+            1.0,
+            eta,
+        ),
     ];
     for (name, i, n1, n2) in cases {
         let actual = (imp.refract)(i, n, n1, n2);
@@ -303,16 +344,19 @@ pub(super) fn refract_hard(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         Some(v) => v.is_finite() && (v.length() - 1.0).abs() <= 1e-4 && v.dot(n).abs() <= 2e-3,
     };
     if !ok {
+        let (critical, eta, i, n) = (critical.to_degrees(), num(eta), vec(i), vec(n));
         return Err(Failure::new(
-            "None, or a unit vector along the surface (|t·n| ≤ 0.002)",
+            t(
+                "None、または面に沿った単位ベクトル (|t·n| ≤ 0.002)",
+                "None, or a unit vector along the surface (|t·n| ≤ 0.002)",
+            ),
             opt(actual),
         )
-        .at(format!(
-            "exactly the critical angle {:.4}° of η = {} from inside: i = {}, n = {}",
-            critical.to_degrees(),
-            num(eta),
-            vec(i),
-            vec(n)
+        .at(Text::new(
+            format!("内側から η = {eta} の臨界角 {critical:.4}° ちょうど: i = {i}, n = {n}"),
+            format!(
+                "exactly the critical angle {critical:.4}° of η = {eta} from inside: i = {i}, n = {n}"
+            ),
         ))
         .cause(t(
             "臨界角ちょうどでは屈折光は面に沿って進みます（k = 0）。丸め誤差で k がわずかに負になることもあります。",

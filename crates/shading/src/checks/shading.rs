@@ -15,9 +15,9 @@ use cg_core::image::{Image, to_unorm8};
 use cg_core::normals::interpolate_normal;
 use cg_core::scene::Scene;
 use cg_harness::check::Failure;
-use cg_harness::text::t;
+use cg_harness::text::{Text, t};
 
-use crate::inputs::{max_diff, num, vec};
+use crate::inputs::{case_at, max_diff, num, vec};
 use crate::render::{GBuffer, KitLight, compose, gbuffer, kit_image};
 use crate::scenes::{CHECK_SIZE, check_scene, material};
 use crate::{Impl, Pixel, Shading, Spec};
@@ -76,7 +76,12 @@ const KEEP: usize = 8;
 
 fn kit_failure(e: &cg_raster::RenderError) -> Failure {
     use cg_core::lang::Lang;
-    Failure::new("the kit draws your sphere", e.message(Lang::En)).cause(t(
+    Failure::new(
+        t("kit があなたの球を描けること", "the kit draws your sphere"),
+        Text::new(e.message(Lang::Ja), e.message(Lang::En)),
+    )
+    .at(t("kit の描画", "the kit's rendering"))
+    .cause(t(
         &format!(
             "kit の描画が失敗しました（kit の不具合です。先生に知らせてください）: {}",
             e.message(Lang::Ja)
@@ -322,7 +327,7 @@ pub(super) fn unit(spec: &Spec, imp: &Impl, mode: Shading) -> Result<(), Failure
         [0.5, 0.0, 0.5],
         [0.2, 0.7, 0.1],
     ];
-    let mut cases: Vec<(String, Pixel)> = Vec::new();
+    let mut cases: Vec<(Text, Pixel)> = Vec::new();
     for f in fx.g.faces.iter().filter(|f| f.face_normal != Vec3::ZERO) {
         for w in weights {
             let px = Pixel {
@@ -331,8 +336,12 @@ pub(super) fn unit(spec: &Spec, imp: &Impl, mode: Shading) -> Result<(), Failure
                 face_normal: f.face_normal,
                 weights: w,
             };
+            let (face, w) = (f.face, weights_text(w));
             cases.push((
-                format!("face F{} of your sphere, weights {}", f.face, weights_text(w)),
+                Text::new(
+                    format!("あなたの球の面 F{face}、重み {w}"),
+                    format!("face F{face} of your sphere, weights {w}"),
+                ),
                 px,
             ));
         }
@@ -356,7 +365,16 @@ pub(super) fn unit(spec: &Spec, imp: &Impl, mode: Shading) -> Result<(), Failure
             weights: [0.5, 0.5, 0.0],
         };
         cases.push((
-            format!("vertex normals N₀ = {} and N₁ = −N₀ cancel at weights (0.5, 0.5, 0)", vec(n)),
+            Text::new(
+                format!(
+                    "頂点の法線 N₀ = {} と N₁ = −N₀ が重み (0.5, 0.5, 0) で打ち消し合う",
+                    vec(n)
+                ),
+                format!(
+                    "vertex normals N₀ = {} and N₁ = −N₀ cancel at weights (0.5, 0.5, 0)",
+                    vec(n)
+                ),
+            ),
             px,
         ));
     }
@@ -367,16 +385,20 @@ pub(super) fn unit(spec: &Spec, imp: &Impl, mode: Shading) -> Result<(), Failure
             continue;
         }
         let (cause, hint) = explain(mode, &px, &light, actual);
+        let values = format!(
+            "P = {}, {}, {}; N = {}, {}, {}",
+            vec(px.positions[0]),
+            vec(px.positions[1]),
+            vec(px.positions[2]),
+            vec(px.normals[0]),
+            vec(px.normals[1]),
+            vec(px.normals[2])
+        );
+        let face_normal = vec(px.face_normal);
         return Err(Failure::new(vec(expected), vec(actual))
-            .at(format!(
-                "{name}: P = {}, {}, {}; N = {}, {}, {}; face normal {}",
-                vec(px.positions[0]),
-                vec(px.positions[1]),
-                vec(px.positions[2]),
-                vec(px.normals[0]),
-                vec(px.normals[1]),
-                vec(px.normals[2]),
-                vec(px.face_normal)
+            .at(Text::new(
+                format!("{}; 面の法線 {face_normal}", case_at(&name, &values).ja),
+                format!("{}; face normal {face_normal}", case_at(&name, &values).en),
             ))
             .cause(cause)
             .hint(hint));
@@ -448,23 +470,37 @@ pub(super) fn image(spec: &Spec, imp: &Impl, mode: Shading) -> Result<(), Failur
     );
     let [er, eg, eb] = rgb8(reference.pixels[i]);
     let [ar, ag, ab] = rgb8(mine.pixels[i]);
+    let pct = IMAGE_FRACTION * 100.0;
+    let share = 100.0 * within as f64 / seen as f64;
+    let [x0, y0, x1, y1] = bounds;
+    let weights = px.map(|p| weights_text(p.weights));
     Err(Failure::new(
-        format!(
-            "球の {seen} 画素の ≥ {pct:.1} % が kit の{ja}の画像と {IMAGE_TOLERANCE}/255 以内 / ≥ {pct:.1} % of the sphere's {seen} pixels within {IMAGE_TOLERANCE}/255 of the kit's {en} image",
-            pct = IMAGE_FRACTION * 100.0
+        Text::new(
+            format!(
+                "球の {seen} 画素の ≥ {pct:.1} % が kit の{ja}の画像と {IMAGE_TOLERANCE}/255 以内"
+            ),
+            format!(
+                "≥ {pct:.1} % of the sphere's {seen} pixels within {IMAGE_TOLERANCE}/255 of the kit's {en} image"
+            ),
         ),
-        format!(
-            "{within} ({:.1} %) within / 以内; {off} differ / 異なる ({off_in_highlight} in the highlight / ハイライト内), x {}–{}, y {}–{}; the largest difference / 最大の差 {d}/255 at pixel ({x}, {y}): kit ({er}, {eg}, {eb}), yours / あなた ({ar}, {ag}, {ab})",
-            100.0 * within as f64 / seen as f64,
-            bounds[0],
-            bounds[2],
-            bounds[1],
-            bounds[3]
+        Text::new(
+            format!(
+                "{IMAGE_TOLERANCE}/255 以内は {within} 画素（{share:.1} %）、超えるのは {off} 画素（うちハイライト内 {off_in_highlight}）、x {x0}–{x1}、y {y0}–{y1}; 最大の差 {d}/255（画素 ({x}, {y})）: kit ({er}, {eg}, {eb})、あなた ({ar}, {ag}, {ab})"
+            ),
+            format!(
+                "{within} ({share:.1} %) within; {off} differ ({off_in_highlight} in the highlight), x {x0}–{x1}, y {y0}–{y1}; the largest difference {d}/255 at pixel ({x}, {y}): kit ({er}, {eg}, {eb}), yours ({ar}, {ag}, {ab})"
+            ),
         ),
     )
-    .at(format!(
-        "pixel ({x}, {y}) of the {w}×{h} image ({ja} / {en}), face F{face}{}",
-        px.map_or_else(String::new, |p| format!(", weights {}", weights_text(p.weights)))
+    .at(Text::new(
+        format!(
+            "{w}×{h} の画像（{ja}）の画素 ({x}, {y})、面 F{face}{}",
+            weights.as_ref().map_or_else(String::new, |w| format!("、重み {w}"))
+        ),
+        format!(
+            "pixel ({x}, {y}) of the {w}×{h} image ({en}), face F{face}{}",
+            weights.as_ref().map_or_else(String::new, |w| format!(", weights {w}"))
+        ),
     ))
     .cause(cause)
     .hint(hint))
@@ -564,17 +600,30 @@ pub(super) fn highlight(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         )
     };
     let (x, y) = (brightest.1 as u32 % w, brightest.1 as u32 / w);
+    let pct = KEEP_FRACTION * 100.0;
+    let share = 100.0 * kept as f64 / n as f64;
     Err(Failure::new(
-        format!(
-            "ハイライトの {n} 画素の ≥ {pct:.0} % でフォンがグローより {KEEP_MARGIN} 以上明るい / your Phong brighter than your Gouraud by > {KEEP_MARGIN} in ≥ {pct:.0} % of the {n} highlight pixels",
-            pct = KEEP_FRACTION * 100.0
+        Text::new(
+            format!(
+                "ハイライトの {n} 画素の ≥ {pct:.0} % で、あなたのフォンがグローより {KEEP_MARGIN} 以上明るい"
+            ),
+            format!(
+                "your Phong brighter than your Gouraud by > {KEEP_MARGIN} in ≥ {pct:.0} % of the {n} highlight pixels"
+            ),
         ),
-        format!(
-            "{kept} / {n} ({:.0} %); your Gouraud shows the kit's Phong highlight / グローにハイライト: {gouraud_shows}, your Phong looks like the kit's Gouraud / フォンがグローのよう: {phong_loses}",
-            100.0 * kept as f64 / n as f64
+        Text::new(
+            format!(
+                "{kept} / {n}（{share:.0} %）; kit のフォンのハイライトがあなたのグローに出た画素: {gouraud_shows}、あなたのフォンが kit のグローのようになった画素: {phong_loses}"
+            ),
+            format!(
+                "{kept} / {n} ({share:.0} %); your Gouraud shows the kit's Phong highlight: {gouraud_shows}, your Phong looks like the kit's Gouraud: {phong_loses}"
+            ),
         ),
     )
-    .at(format!("the highlight / ハイライト: {n} pixels around pixel ({x}, {y}) of the {w}×{w} image"))
+    .at(Text::new(
+        format!("ハイライト: {w}×{w} の画像の画素 ({x}, {y}) のまわりの {n} 画素"),
+        format!("the highlight: {n} pixels around pixel ({x}, {y}) of the {w}×{w} image"),
+    ))
     .cause(cause)
     .hint(hint))
 }

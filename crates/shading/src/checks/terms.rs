@@ -11,9 +11,9 @@ use cg_core::glam::Vec3;
 use cg_core::light::{self, Attenuation};
 use cg_core::optics;
 use cg_harness::check::Failure;
-use cg_harness::text::t;
+use cg_harness::text::{Text, t};
 
-use crate::inputs::{Inputs, close, close1, num, vec};
+use crate::inputs::{Inputs, case_at, close, close1, num, random_case, vec};
 use crate::{Impl, Spec};
 
 fn material(spec: &Spec) -> (Rgb, Rgb, Rgb, f32) {
@@ -30,13 +30,13 @@ fn material(spec: &Spec) -> (Rgb, Rgb, Rgb, f32) {
 
 pub(super) fn ambient(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let mut cases = vec![(
-        "Ia, ka of your assignment".to_owned(),
+        t("あなたの課題の Ia, ka", "Ia, ka of your assignment"),
         Rgb::splat(spec.light.ambient),
         Rgb::from(spec.material.color.rgb),
     )];
     let mut r = Inputs::new(0x5_0001);
     for i in 0..40 {
-        cases.push((format!("random case {i}"), r.color(0.0, 1.0), r.color(0.0, 1.0)));
+        cases.push((random_case(i), r.color(0.0, 1.0), r.color(0.0, 1.0)));
     }
     for (name, ia, ka) in cases {
         let expected = light::ambient(ia, ka);
@@ -67,7 +67,7 @@ pub(super) fn ambient(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             )
         };
         return Err(Failure::new(vec(expected), vec(actual))
-            .at(format!("{name}: Ia = {}, ka = {}", vec(ia), vec(ka)))
+            .at(case_at(&name, &format!("Ia = {}, ka = {}", vec(ia), vec(ka))))
             .cause(cause)
             .hint(hint));
     }
@@ -77,7 +77,7 @@ pub(super) fn ambient(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 // ---------------------------------------------------------------------------------------------
 // s.t2
 
-fn diffuse_failure(name: &str, ii: Rgb, kd: Rgb, n: Vec3, l: Vec3, actual: Rgb) -> Failure {
+fn diffuse_failure(name: &Text, ii: Rgb, kd: Rgb, n: Vec3, l: Vec3, actual: Rgb) -> Failure {
     let expected = light::diffuse(ii, kd, n, l);
     let nl = n.dot(l);
     let (cause, hint) = if nl <= 0.0 && actual.min_element() < 0.0 {
@@ -109,13 +109,16 @@ fn diffuse_failure(name: &str, ii: Rgb, kd: Rgb, n: Vec3, l: Vec3, actual: Rgb) 
         )
     };
     Failure::new(vec(expected), vec(actual))
-        .at(format!(
-            "{name}: Ii = {}, kd = {}, N = {}, L = {} (N·L = {})",
-            vec(ii),
-            vec(kd),
-            vec(n),
-            vec(l),
-            num(nl)
+        .at(case_at(
+            name,
+            &format!(
+                "Ii = {}, kd = {}, N = {}, L = {} (N·L = {})",
+                vec(ii),
+                vec(kd),
+                vec(n),
+                vec(l),
+                num(nl)
+            ),
         ))
         .cause(cause)
         .hint(hint)
@@ -128,7 +131,7 @@ pub(super) fn diffuse(imp: &Impl) -> Result<(), Failure> {
         let (n, l) = (r.unit_vector(), r.unit_vector());
         let actual = (imp.diffuse)(ii, kd, n, l);
         if !close(actual, light::diffuse(ii, kd, n, l), 1e-5, 1e-5) {
-            return Err(diffuse_failure(&format!("random case {i}"), ii, kd, n, l, actual));
+            return Err(diffuse_failure(&random_case(i), ii, kd, n, l, actual));
         }
     }
     Ok(())
@@ -138,17 +141,17 @@ pub(super) fn diffuse_facing_away(spec: &Spec, imp: &Impl) -> Result<(), Failure
     let (ii, kd, _, _) = material(spec);
     let n = Vec3::Y;
     let cases = [
-        ("N·L = 0 (grazing light)", Vec3::X),
-        ("N·L = -1 (light straight from behind)", Vec3::NEG_Y),
-        ("N·L = -0.7071", Vec3::new(1.0, -1.0, 0.0).normalize()),
-        ("N·L = -0.0001", Vec3::new(1.0, -1e-4, 0.0).normalize()),
-        ("N·L = 1 (light straight on)", Vec3::Y),
+        (t("N·L = 0（かすめる光）", "N·L = 0 (grazing light)"), Vec3::X),
+        (t("N·L = -1（真裏からの光）", "N·L = -1 (light straight from behind)"), Vec3::NEG_Y),
+        ("N·L = -0.7071".into(), Vec3::new(1.0, -1.0, 0.0).normalize()),
+        ("N·L = -0.0001".into(), Vec3::new(1.0, -1e-4, 0.0).normalize()),
+        (t("N·L = 1（正面からの光）", "N·L = 1 (light straight on)"), Vec3::Y),
     ];
     for (name, l) in cases {
         let actual = (imp.diffuse)(ii, kd, n, l);
         let expected = light::diffuse(ii, kd, n, l);
         if !close(actual, expected, 1e-6, 1e-6) {
-            return Err(diffuse_failure(name, ii, kd, n, l, actual));
+            return Err(diffuse_failure(&name, ii, kd, n, l, actual));
         }
     }
     Ok(())
@@ -159,7 +162,7 @@ pub(super) fn diffuse_facing_away(spec: &Spec, imp: &Impl) -> Result<(), Failure
 
 /// Explains a specular mismatch by the usual mistakes.
 fn specular_failure(
-    name: &str,
+    name: &Text,
     (ii, ks, n, l, v, shininess): (Rgb, Rgb, Vec3, Vec3, Vec3, f32),
     actual: Rgb,
 ) -> Failure {
@@ -225,16 +228,19 @@ fn specular_failure(
         )
     };
     Failure::new(vec(expected), vec(actual))
-        .at(format!(
-            "{name}: Ii = {}, ks = {}, N = {}, L = {}, V = {}, n = {} (N·L = {}, R·V = {})",
-            vec(ii),
-            vec(ks),
-            vec(n),
-            vec(l),
-            vec(v),
-            num(shininess),
-            num(nl),
-            num(rv)
+        .at(case_at(
+            name,
+            &format!(
+                "Ii = {}, ks = {}, N = {}, L = {}, V = {}, n = {} (N·L = {}, R·V = {})",
+                vec(ii),
+                vec(ks),
+                vec(n),
+                vec(l),
+                vec(v),
+                num(shininess),
+                num(nl),
+                num(rv)
+            ),
         ))
         .cause(cause)
         .hint(hint)
@@ -257,7 +263,7 @@ pub(super) fn specular(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         let (ii, ks, n, l, v, e) = case;
         let actual = (imp.specular)(ii, ks, n, l, v, e);
         if !close(actual, light::specular_phong(ii, ks, n, l, v, e), 1e-4, 1e-3) {
-            return Err(specular_failure(&format!("random case {i}"), case, actual));
+            return Err(specular_failure(&random_case(i), case, actual));
         }
     }
     Ok(())
@@ -279,7 +285,10 @@ pub(super) fn specular_mirror(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         let expected = light::specular_phong(ii, ks, n, l, v, shininess);
         if !close(actual, expected, 1e-4, 1e-3) {
             return Err(specular_failure(
-                &format!("V = R (mirror direction), case {i}"),
+                &Text::new(
+                    format!("V = R（正反射方向）、ケース {i}"),
+                    format!("V = R (mirror direction), case {i}"),
+                ),
                 (ii, ks, n, l, v, shininess),
                 actual,
             ));
@@ -294,35 +303,56 @@ pub(super) fn specular_hard(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let l45 = Vec3::new(1.0, 1.0, 0.0).normalize();
     let r45 = optics::reflect(-l45, n); // (−1, 1, 0)/√2
     let behind = Vec3::new(1.0, -0.5, 0.0).normalize();
-    let cases: Vec<(&str, Vec3, Vec3, f32)> = vec![
-        ("R·V < 0 with n = 2.5 (NaN without the clamp)", l45, -r45, 2.5),
+    let cases: Vec<(Text, Vec3, Vec3, f32)> = vec![
         (
-            "R·V < 0 with n = 2 (even: a highlight on the far side without the clamp)",
+            t(
+                "R·V < 0、n = 2.5（切り詰めないと NaN）",
+                "R·V < 0 with n = 2.5 (NaN without the clamp)",
+            ),
+            l45,
+            -r45,
+            2.5,
+        ),
+        (
+            t(
+                "R·V < 0、n = 2（偶数: 切り詰めないと反対側にハイライト）",
+                "R·V < 0 with n = 2 (even: a highlight on the far side without the clamp)",
+            ),
             l45,
             -r45,
             2.0,
         ),
-        ("R·V = -0.5 with n = 3.5", l45, (-0.5 * r45 + 0.75f32.sqrt() * Vec3::Z).normalize(), 3.5),
-        ("N·L = 0 (grazing light), V = R", Vec3::X, Vec3::NEG_X, shininess),
         (
-            "N·L < 0 (light from behind), R·V > 0",
+            t("R·V = -0.5、n = 3.5", "R·V = -0.5 with n = 3.5"),
+            l45,
+            (-0.5 * r45 + 0.75f32.sqrt() * Vec3::Z).normalize(),
+            3.5,
+        ),
+        (
+            t("N·L = 0（かすめる光）、V = R", "N·L = 0 (grazing light), V = R"),
+            Vec3::X,
+            Vec3::NEG_X,
+            shininess,
+        ),
+        (
+            t("N·L < 0（裏からの光）、R·V > 0", "N·L < 0 (light from behind), R·V > 0"),
             behind,
             optics::reflect(-behind, n).normalize(),
             shininess,
         ),
-        ("N·L = -1, V = N", Vec3::NEG_Y, Vec3::Y, shininess),
-        ("n = 0, R·V > 0", l45, Vec3::new(-1.0, 2.0, 0.0).normalize(), 0.0),
-        ("n = 0, R·V < 0", l45, -r45, 0.0),
-        ("n = 0, R·V = 0", l45, Vec3::Z, 0.0),
-        ("L = -V", l45, -l45, shininess),
-        ("V = R exactly, n = 128", l45, r45, 128.0),
-        ("V = R exactly, your n", l45, r45, shininess),
+        ("N·L = -1, V = N".into(), Vec3::NEG_Y, Vec3::Y, shininess),
+        ("n = 0, R·V > 0".into(), l45, Vec3::new(-1.0, 2.0, 0.0).normalize(), 0.0),
+        ("n = 0, R·V < 0".into(), l45, -r45, 0.0),
+        ("n = 0, R·V = 0".into(), l45, Vec3::Z, 0.0),
+        ("L = -V".into(), l45, -l45, shininess),
+        (t("V = R ちょうど、n = 128", "V = R exactly, n = 128"), l45, r45, 128.0),
+        (t("V = R ちょうど、あなたの n", "V = R exactly, your n"), l45, r45, shininess),
     ];
     for (name, l, v, e) in cases {
         let actual = (imp.specular)(ii, ks, n, l, v, e);
         let expected = light::specular_phong(ii, ks, n, l, v, e);
         if !close(actual, expected, 1e-5, 1e-4) {
-            return Err(specular_failure(name, (ii, ks, n, l, v, e), actual));
+            return Err(specular_failure(&name, (ii, ks, n, l, v, e), actual));
         }
     }
     Ok(())
@@ -333,17 +363,23 @@ pub(super) fn specular_hard(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 
 pub(super) fn attenuation(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let a = spec.attenuation;
-    let mut cases: Vec<(String, f32, f32, f32, f32)> = [0.0, 0.5, 1.0, 2.5, 5.0, 10.0, 20.0]
+    let mut cases: Vec<(Text, f32, f32, f32, f32)> = [0.0, 0.5, 1.0, 2.5, 5.0, 10.0, 20.0]
         .iter()
-        .map(|&d| ("your kc, kl, kq".to_owned(), a.kc, a.kl, a.kq, d))
+        .map(|&d| (t("あなたの kc, kl, kq", "your kc, kl, kq"), a.kc, a.kl, a.kq, d))
         .collect();
     let mut r = Inputs::new(0x5_0005);
     for i in 0..40 {
         let (kc, kl, kq) = (r.range(0.1, 2.0), r.range(0.0, 0.5), r.range(0.0, 0.2));
-        cases.push((format!("random case {i}"), kc, kl, kq, r.range(0.0, 30.0)));
+        cases.push((random_case(i), kc, kl, kq, r.range(0.0, 30.0)));
     }
-    cases.push(("d = 0 with kc = 0 (the light on the point)".to_owned(), 0.0, 0.5, 1.0, 0.0));
-    cases.push(("d = 0 with kc = kl = kq = 0".to_owned(), 0.0, 0.0, 0.0, 0.0));
+    cases.push((
+        t("d = 0、kc = 0（光源が点の上）", "d = 0 with kc = 0 (the light on the point)"),
+        0.0,
+        0.5,
+        1.0,
+        0.0,
+    ));
+    cases.push((t("d = 0、kc = kl = kq = 0", "d = 0 with kc = kl = kq = 0"), 0.0, 0.0, 0.0, 0.0));
     for (name, kc, kl, kq, d) in cases {
         let expected =
             light::attenuation(Attenuation { constant: kc, linear: kl, quadratic: kq }, d);
@@ -378,12 +414,9 @@ pub(super) fn attenuation(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             )
         };
         return Err(Failure::new(num(expected), num(actual))
-            .at(format!(
-                "{name}: kc = {}, kl = {}, kq = {}, d = {}",
-                num(kc),
-                num(kl),
-                num(kq),
-                num(d)
+            .at(case_at(
+                &name,
+                &format!("kc = {}, kl = {}, kq = {}, d = {}", num(kc), num(kl), num(kq), num(d)),
             ))
             .cause(cause)
             .hint(hint));
@@ -400,14 +433,24 @@ pub(super) fn spot(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         // From the light to the point, at α from the axis; L points back to the light.
         -Vec3::new(a.sin(), -a.cos(), 0.0)
     };
-    let mut cases: Vec<(String, Vec3, Vec3, f32, f32)> =
+    let mut cases: Vec<(Text, Vec3, Vec3, f32, f32)> =
         [0.0, cutoff / 2.0, cutoff - 1.0, cutoff + 1.0, 60.0, 89.0, 135.0]
             .iter()
             .map(|&alpha| {
-                (format!("your spot, α = {}°", num(alpha)), at(alpha), down, cutoff, exponent)
+                let name = Text::new(
+                    format!("あなたのスポットライト、α = {}°", num(alpha)),
+                    format!("your spot, α = {}°", num(alpha)),
+                );
+                (name, at(alpha), down, cutoff, exponent)
             })
             .collect();
-    cases.push(("cut-off 180° (no cone), α = 135°".to_owned(), at(135.0), down, 180.0, exponent));
+    cases.push((
+        t("カットオフ 180°（円錐なし）、α = 135°", "cut-off 180° (no cone), α = 135°"),
+        at(135.0),
+        down,
+        180.0,
+        exponent,
+    ));
     let mut r = Inputs::new(0x5_0006);
     let mut i = 0;
     while i < 60 {
@@ -417,7 +460,7 @@ pub(super) fn spot(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         if c <= 90.0 && (cos_alpha - f64::from(c).to_radians().cos()).abs() < 1e-4 {
             continue;
         }
-        cases.push((format!("random case {i}"), l, s, c, r.range(0.0, 10.0)));
+        cases.push((random_case(i as usize), l, s, c, r.range(0.0, 10.0)));
         i += 1;
     }
     for (name, l, s, c, e) in cases {
@@ -474,13 +517,17 @@ pub(super) fn spot(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             )
         };
         let alpha = f64::from(cos_alpha).clamp(-1.0, 1.0).acos().to_degrees();
+        let (l, s, c, e) = (vec(l), vec(s), num(c), num(e));
         return Err(Failure::new(num(expected), num(actual))
-            .at(format!(
-                "{name}: L = {}, S = {}, cutoff = {}°, exponent = {} (α = {alpha:.2}°)",
-                vec(l),
-                vec(s),
-                num(c),
-                num(e)
+            .at(Text::new(
+                format!(
+                    "{}: L = {l}, S = {s}, カットオフ角 {c}°、指数 {e}（α = {alpha:.2}°）",
+                    name.ja
+                ),
+                format!(
+                    "{}: L = {l}, S = {s}, cutoff = {c}°, exponent = {e} (α = {alpha:.2}°)",
+                    name.en
+                ),
             ))
             .cause(cause)
             .hint(hint));
