@@ -122,9 +122,16 @@ pub fn render_with<L: Lighting + ?Sized>(
 /// exactly once; a centre on the region's own border is covered when the border there is a left
 /// or a bottom edge (as the image is seen).
 ///
-/// Coordinates must stay within ±[`GUARD_BAND_PIXELS`] (the renderer clips to that band first);
-/// non-finite ones are treated as 0 by the fixed-point conversion.
-#[must_use]
-pub fn coverage(width: u32, height: u32, tile: u32, triangles: &[[Vec2; 3]]) -> Vec<u32> {
+/// # Errors
+/// A size the renderer refuses ([`RenderError::ZeroSize`], [`RenderError::TooLarge`],
+/// [`RenderError::TooManyPixels`]); [`RenderError::OutsideGuardBand`] naming the first corner that
+/// is not finite or lies beyond ±[`GUARD_BAND_PIXELS`] (the renderer clips to that band before it
+/// rasterizes; beyond it the fixed-point coordinates would overflow).
+pub fn coverage(
+    width: u32,
+    height: u32,
+    tile: u32,
+    triangles: &[[Vec2; 3]],
+) -> Result<Vec<u32>, RenderError> {
     pipeline::coverage(width, height, tile, triangles)
 }

@@ -105,7 +105,7 @@ pub mod world;
 
 pub use camera::RayCamera;
 pub use error::TraceError;
-pub use options::{Fresnel, MAX_DEPTH_LIMIT, MAX_SIZE, Options};
+pub use options::{DEFAULT_RAY_BUDGET, Fresnel, MAX_DEPTH_LIMIT, MAX_SIZE, Options};
 pub use ray::Ray;
 pub use stats::Stats;
 pub use tracer::{GlobalRays, Output, Spawned, Tracer, Weights};
