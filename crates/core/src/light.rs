@@ -237,6 +237,7 @@ impl Material {
     ///
     /// See also [`Material::from_color`].
     #[must_use]
+    #[inline]
     pub fn with_color(&self, color: Option<Rgb>) -> Material {
         match color {
             Some(c) => Material { ka: c, kd: c, ..self.clone() },

@@ -325,6 +325,7 @@ impl Prepared<'_> {
     ///
     /// See also [`Prepared::world_face_normal`].
     #[must_use]
+    #[inline]
     pub fn world_normal(&self, n_model: Vec3) -> Option<Vec3> {
         try_normalize(self.normal_matrix * n_model).map(|n| if self.mirrored { -n } else { n })
     }
@@ -338,6 +339,7 @@ impl Prepared<'_> {
     ///
     /// See also [`Prepared::world_normal`].
     #[must_use]
+    #[inline]
     pub fn world_face_normal(&self, corners: [Vec3; 3]) -> Option<Vec3> {
         let [a, b, c] = corners;
         face_normal(a, b, c).map(|n| if self.mirrored { -n } else { n })

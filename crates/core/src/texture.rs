@@ -66,6 +66,7 @@ impl TexEnv {
     /// `lit × texel` per channel (specular included, as OpenGL's GL_SINGLE_COLOR), GL_REPLACE the
     /// texel's colour alone. Alpha is dropped (the kit draws opaque surfaces). Not clamped.
     #[must_use]
+    #[inline]
     pub fn apply(self, lit: Rgb, texel: Vec4) -> Rgb {
         match self {
             TexEnv::Modulate => lit * texel.truncate(),
@@ -95,6 +96,7 @@ impl Sampler {
     /// the rounding of the weights; shifted, they keep f32's precision near 1. Non-finite
     /// coordinates give no shift.
     #[must_use]
+    #[inline]
     pub fn repeat_origin(self, uv: Vec2) -> Vec2 {
         let shift = |s: f32, wrap: Wrap| match wrap {
             Wrap::Repeat if s.is_finite() => s.floor(),

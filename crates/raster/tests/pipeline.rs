@@ -518,6 +518,26 @@ fn bad_scenes_give_errors_that_name_the_problem() {
 }
 
 #[test]
+fn colours_beyond_f32s_range_give_a_finite_image() {
+    // Light colours of 3e38 (a program can set them; the scene loader bounds colours to 1e6):
+    // the lit colours overflow to ∞ (and ∞·0 to NaN); OpenGL's clamp of the lit colour takes
+    // them to [0, 1] (NaN to 0) in every shading mode, so the image stays finite.
+    let mut scene = load("spot-specular.toml");
+    for light in &mut scene.lights {
+        light.diffuse = Rgb::splat(3e38);
+        light.specular = Rgb::splat(3e38);
+        light.ambient = Rgb::splat(3e38);
+    }
+    for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+        let out = render(&scene, &Options { shading: Some(shading), ..small(24) }).unwrap();
+        assert!(
+            out.image.pixels.iter().all(|c| c.is_finite() && c.max_element() <= 1.0),
+            "{shading:?}"
+        );
+    }
+}
+
+#[test]
 fn an_empty_scene_is_the_clear_colour() {
     let mut scene = load("course-sample.toml");
     scene.objects.clear();
