@@ -3,6 +3,87 @@
 //! colour for an 8-bit framebuffer: clamp to `[0, 1]`, multiply by 255, round to nearest.
 
 use crate::Rgb;
+use crate::lang::Lang;
+
+/// The largest image side the kit renders, in pixels: the rasterizer's fixed-point window
+/// coordinates (8 sub-pixel bits with a ±2²⁰-pixel guard band) and OSMesa (`OSMESA_MAX_WIDTH`)
+/// both stop there. Every renderer, `cg-glref` and the scene loader use this one constant.
+pub const MAX_SIDE: u32 = 16_384;
+
+/// The most pixels one image may have: 64 M (8192 × 8192). A renderer holds the colour buffer
+/// (12 bytes a pixel), a depth buffer (4) and an 8-bit copy to write (4), so this bounds a
+/// render's image memory to about 1.3 GB — a 16384 × 16384 image would need 5 GB.
+pub const MAX_PIXELS: u64 = 64 * 1024 * 1024;
+
+/// Why an image size cannot be rendered.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum SizeError {
+    /// A side of zero pixels.
+    #[error("the image size {width}×{height} has no pixels: width and height must be at least 1")]
+    ZeroSize {
+        /// The width asked for.
+        width: u32,
+        /// The height asked for.
+        height: u32,
+    },
+    /// A side longer than [`MAX_SIDE`].
+    #[error("the image size {width}×{height} is too large: each side can be at most {MAX_SIDE}")]
+    TooLarge {
+        /// The width asked for.
+        width: u32,
+        /// The height asked for.
+        height: u32,
+    },
+    /// More than [`MAX_PIXELS`] pixels in all.
+    #[error(
+        "the image size {width}×{height} has too many pixels: at most {MAX_PIXELS} (8192×8192) in all"
+    )]
+    TooManyPixels {
+        /// The width asked for.
+        width: u32,
+        /// The height asked for.
+        height: u32,
+    },
+}
+
+impl SizeError {
+    /// The message for a student in `lang` (the English one is also the `Display`).
+    #[must_use]
+    pub fn message(&self, lang: Lang) -> String {
+        if lang == Lang::En {
+            return self.to_string();
+        }
+        match *self {
+            SizeError::ZeroSize { width, height } => format!(
+                "画像の大きさ {width}×{height} には画素がありません。幅と高さは 1 以上にしてください"
+            ),
+            SizeError::TooLarge { width, height } => format!(
+                "画像の大きさ {width}×{height} は大きすぎます。幅と高さは {MAX_SIDE} 以下にしてください"
+            ),
+            SizeError::TooManyPixels { width, height } => format!(
+                "画像の大きさ {width}×{height} は画素が多すぎます。画素数は全部で {MAX_PIXELS}（8192×8192）以下にしてください"
+            ),
+        }
+    }
+}
+
+/// Checks that a `width × height` image can be rendered: both sides at least 1 and at most
+/// [`MAX_SIDE`], and at most [`MAX_PIXELS`] pixels in all (checked in that order).
+///
+/// # Errors
+/// The first rule broken, as a [`SizeError`].
+pub fn check_size(width: u32, height: u32) -> Result<(), SizeError> {
+    if width == 0 || height == 0 {
+        return Err(SizeError::ZeroSize { width, height });
+    }
+    if width > MAX_SIDE || height > MAX_SIDE {
+        return Err(SizeError::TooLarge { width, height });
+    }
+    if u64::from(width) * u64::from(height) > MAX_PIXELS {
+        return Err(SizeError::TooManyPixels { width, height });
+    }
+    Ok(())
+}
 
 /// An RGB image, row 0 at the top. Pixel `(x, y)` is `pixels[y·width + x]`; its centre is at
 /// `(x + ½, y + ½)` in window coordinates measured from the top-left corner.
@@ -89,6 +170,21 @@ mod tests {
         assert_eq!(to_unorm8(0.5), 128, "127.5 rounds half away from zero");
         assert_eq!(to_unorm8(127.4 / 255.0), 127);
         assert_eq!(to_unorm8(127.6 / 255.0), 128);
+    }
+
+    #[test]
+    fn sizes_are_checked_side_first_then_pixel_count() {
+        assert_eq!(check_size(1, 1), Ok(()));
+        assert_eq!(check_size(MAX_SIDE, 4096), Ok(()), "exactly 64 M pixels");
+        assert_eq!(check_size(0, 5), Err(SizeError::ZeroSize { width: 0, height: 5 }));
+        assert_eq!(
+            check_size(MAX_SIDE + 1, 1),
+            Err(SizeError::TooLarge { width: MAX_SIDE + 1, height: 1 })
+        );
+        let e = check_size(MAX_SIDE, 4097).unwrap_err();
+        assert_eq!(e, SizeError::TooManyPixels { width: MAX_SIDE, height: 4097 });
+        assert!(e.message(Lang::En).contains("16384×4097"), "{}", e.message(Lang::En));
+        assert!(e.message(Lang::Ja).contains("画素数"), "{}", e.message(Lang::Ja));
     }
 
     #[test]

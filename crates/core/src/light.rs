@@ -224,9 +224,25 @@ impl Default for Material {
 impl Material {
     /// The material glColor3f gives under GL_COLOR_MATERIAL (GL_AMBIENT_AND_DIFFUSE): k_a = k_d =
     /// `color`, everything else [`Material::default`].
+    ///
+    /// See also [`Material::with_color`], which keeps the other values of a material.
     #[must_use]
     pub fn from_color(color: Rgb) -> Material {
         Material { ka: color, kd: color, ..Material::default() }
+    }
+
+    /// This material with k_a = k_d = `color` and everything else kept: what a vertex colour
+    /// (glColor under GL_COLOR_MATERIAL with GL_AMBIENT_AND_DIFFUSE) makes of the object's
+    /// material at a point. `None` (no vertex colours) gives the material unchanged.
+    ///
+    /// See also [`Material::from_color`].
+    #[must_use]
+    #[inline]
+    pub fn with_color(&self, color: Option<Rgb>) -> Material {
+        match color {
+            Some(c) => Material { ka: c, kd: c, ..self.clone() },
+            None => self.clone(),
+        }
     }
 }
 
@@ -240,6 +256,49 @@ impl Default for Attenuation {
 /// The smallest attenuation denominator the kit allows: `kc + kl·d + kq·d²` is raised to at
 /// least this value, so [`attenuation`] is at most `1e6` (finite when `d → 0` with `kc = 0`).
 pub const MIN_ATTENUATION_DENOMINATOR: f32 = 1.0e-6;
+
+/// What evaluations of the light model did, counted *inside* [`shade_with_visibility_counted`]
+/// as it does it (not predicted by the caller): the proof of "only what the scene needs". Sums
+/// over any number of evaluations (`+=`).
+///
+/// | counter | counted when |
+/// |---|---|
+/// | `evaluations` | the light model is evaluated at a point (once per call) |
+/// | `lights` | a point light (or one sample of an area light) is visited |
+/// | `attenuations` | [`attenuation`] is computed: never for directional lights or OpenGL's default (1, 0, 0) |
+/// | `spot_factors` | [`spot_factor`] is computed (spot lights and area-light samples) |
+/// | `visibility_queries` | the visibility callback is asked (a light that reaches the point) |
+/// | `diffuse` | a diffuse term is computed (the light is visible) |
+/// | `specular` | a specular term is computed (visible, and the material's k_s ≠ 0) |
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct LightCounts {
+    /// Evaluations of the light model (points lit).
+    pub evaluations: u64,
+    /// Point lights visited (an area light counts its samples).
+    pub lights: u64,
+    /// Distance attenuations computed (光の減衰).
+    pub attenuations: u64,
+    /// Spot factors computed (スポットライト光源, and the front-side test of area-light samples).
+    pub spot_factors: u64,
+    /// Calls of the visibility callback (a ray tracer's shadow-ray questions).
+    pub visibility_queries: u64,
+    /// Diffuse terms computed (拡散反射光).
+    pub diffuse: u64,
+    /// Specular terms computed (鏡面反射光).
+    pub specular: u64,
+}
+
+impl std::ops::AddAssign for LightCounts {
+    fn add_assign(&mut self, o: LightCounts) {
+        self.evaluations += o.evaluations;
+        self.lights += o.lights;
+        self.attenuations += o.attenuations;
+        self.spot_factors += o.spot_factors;
+        self.visibility_queries += o.visibility_queries;
+        self.diffuse += o.diffuse;
+        self.specular += o.specular;
+    }
+}
 
 /// The local terms of the light model at one point, kept apart so the report and the benchmark
 /// can show each. RGB, not clamped.
@@ -560,6 +619,8 @@ pub fn shade(
 /// A visibility of exactly 0 skips the light's diffuse and specular work.
 ///
 /// `shade(..)` is `shade_with_visibility(.., |_, _, _| 1.0)`.
+///
+/// See also [`shade_with_visibility_counted`], which also counts the work it does.
 #[must_use]
 #[allow(clippy::too_many_arguments)]
 pub fn shade_with_visibility(
@@ -570,8 +631,40 @@ pub fn shade_with_visibility(
     p: Vec3,
     n: Vec3,
     v: Vec3,
-    mut visibility: impl FnMut(&Light, Vec3, f32) -> f32,
+    visibility: impl FnMut(&Light, Vec3, f32) -> f32,
 ) -> Terms {
+    let mut counts = LightCounts::default();
+    shade_with_visibility_counted(
+        model,
+        global_ambient,
+        lights,
+        material,
+        p,
+        n,
+        v,
+        visibility,
+        &mut counts,
+    )
+}
+
+/// [`shade_with_visibility`], adding to `counts` what it does as it does it ([`LightCounts`]):
+/// the renderers report these counts, so "no specular work when every k_s is 0" and "no
+/// attenuation for directional lights" are measured where the work happens. The same terms,
+/// bit for bit.
+#[must_use]
+#[allow(clippy::too_many_arguments)]
+pub fn shade_with_visibility_counted(
+    model: LightModel,
+    global_ambient: Rgb,
+    lights: &[Light],
+    material: &Material,
+    p: Vec3,
+    n: Vec3,
+    v: Vec3,
+    mut visibility: impl FnMut(&Light, Vec3, f32) -> f32,
+    counts: &mut LightCounts,
+) -> Terms {
+    counts.evaluations += 1;
     let (lecture, specular_kind) = match model {
         LightModel::Lecture { specular, .. } => (true, specular),
         LightModel::OpenGl { .. } => (false, Specular::Blinn),
@@ -586,12 +679,19 @@ pub fn shade_with_visibility(
     }
     let with_specular = material.ks != Rgb::ZERO;
     for light in lights.iter().flat_map(Light::point_lights) {
+        counts.lights += 1;
         let (l, d) = light.direction_from(p).unwrap_or((n, 0.0));
         // Only what the light needs: no attenuation arithmetic for directional lights and for
         // OpenGL's default (1, 0, 0), whose factor is exactly 1.
-        let att = if light.needs_attenuation() { attenuation(light.attenuation, d) } else { 1.0 };
+        let att = if light.needs_attenuation() {
+            counts.attenuations += 1;
+            attenuation(light.attenuation, d)
+        } else {
+            1.0
+        };
         let spot = match light.kind {
             LightKind::Spot { direction, cutoff_deg, exponent, inner_deg, .. } => {
+                counts.spot_factors += 1;
                 spot_factor(l, direction, cutoff_deg, exponent, inner_deg.filter(|_| lecture))
             }
             _ => 1.0,
@@ -603,13 +703,16 @@ pub fn shade_with_visibility(
         if !lecture {
             terms.ambient += scale * ambient(light.ambient, material.ka);
         }
+        counts.visibility_queries += 1;
         let seen = visibility(&light, l, d);
         if seen <= 0.0 || seen.is_nan() {
             continue;
         }
         let scale = scale * seen.min(1.0);
+        counts.diffuse += 1;
         terms.diffuse += scale * diffuse(light.diffuse, material.kd, n, l);
         if with_specular {
+            counts.specular += 1;
             let (ks, shininess) = (material.ks, material.shininess);
             terms.specular += scale
                 * match specular_kind {
@@ -619,4 +722,102 @@ pub fn shade_with_visibility(
         }
     }
     terms
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn light(kind: LightKind, attenuation: Attenuation) -> Light {
+        Light { kind, ambient: Rgb::splat(0.1), diffuse: Rgb::ONE, specular: Rgb::ONE, attenuation }
+    }
+
+    /// Counts what `shade_with_visibility_counted` does for one point lit from above.
+    fn counted(lights: &[Light], material: &Material, visible: f32) -> (Terms, LightCounts) {
+        let mut counts = LightCounts::default();
+        let terms = shade_with_visibility_counted(
+            LightModel::OpenGl { local_viewer: false },
+            Rgb::splat(0.2),
+            lights,
+            material,
+            Vec3::ZERO,
+            Vec3::Y,
+            Vec3::Y,
+            |_, _, _| visible,
+            &mut counts,
+        );
+        (terms, counts)
+    }
+
+    #[test]
+    fn counts_are_what_the_light_model_did() {
+        let attenuated = Attenuation { constant: 1.0, linear: 0.1, quadratic: 0.0 };
+        let lights = [
+            light(LightKind::Directional { to_light: Vec3::Y }, attenuated),
+            light(LightKind::Point { position: Vec3::new(0.0, 4.0, 0.0) }, Attenuation::default()),
+            light(LightKind::Point { position: Vec3::new(1.0, 4.0, 0.0) }, attenuated),
+            light(
+                LightKind::Area {
+                    corner: Vec3::new(-1.0, 5.0, -1.0),
+                    edge_u: Vec3::X * 2.0,
+                    edge_v: Vec3::Z * 2.0,
+                    samples: [2, 3],
+                },
+                attenuated,
+            ),
+        ];
+        let shiny = Material { ks: Rgb::ONE, shininess: 8.0, ..Material::default() };
+        let (terms, c) = counted(&lights, &shiny, 1.0);
+        assert_eq!(c.evaluations, 1);
+        assert_eq!(c.lights, 3 + 6, "an area light counts its 2 × 3 samples");
+        assert_eq!(c.attenuations, 1 + 6, "not the directional light, not the default (1, 0, 0)");
+        assert_eq!(c.spot_factors, 6, "area-light samples are spot lights facing down");
+        assert_eq!((c.visibility_queries, c.diffuse, c.specular), (9, 9, 9));
+        // The same terms as the uncounted function.
+        let plain = shade(
+            LightModel::OpenGl { local_viewer: false },
+            Rgb::splat(0.2),
+            &lights,
+            &shiny,
+            Vec3::ZERO,
+            Vec3::Y,
+            Vec3::Y,
+        );
+        assert_eq!(terms, plain);
+
+        // k_s = 0: no specular term is computed at all.
+        let (_, c) = counted(&lights, &Material::default(), 1.0);
+        assert_eq!((c.diffuse, c.specular), (9, 0));
+        // Shadowed: asked, but neither term is computed.
+        let (_, c) = counted(&lights, &shiny, 0.0);
+        assert_eq!((c.visibility_queries, c.diffuse, c.specular), (9, 0, 0));
+        // A spot light pointing away: its factor is 0, so it is never asked about.
+        let away = light(
+            LightKind::Spot {
+                position: Vec3::new(0.0, 4.0, 0.0),
+                direction: Vec3::Y,
+                cutoff_deg: 30.0,
+                exponent: 0.0,
+                inner_deg: None,
+            },
+            Attenuation::default(),
+        );
+        let (_, c) = counted(&[away], &shiny, 1.0);
+        assert_eq!((c.spot_factors, c.visibility_queries, c.specular), (1, 0, 0));
+        // Counts add up.
+        let mut sum = c;
+        sum += c;
+        assert_eq!(sum.spot_factors, 2);
+    }
+
+    #[test]
+    fn with_color_sets_ka_and_kd_and_keeps_the_rest() {
+        let m =
+            Material { ks: Rgb::ONE, shininess: 5.0, kr: Rgb::splat(0.5), ..Material::default() };
+        let c = Rgb::new(0.1, 0.2, 0.3);
+        let colored = m.with_color(Some(c));
+        assert_eq!((colored.ka, colored.kd), (c, c));
+        assert_eq!((colored.ks, colored.shininess, colored.kr), (m.ks, m.shininess, m.kr));
+        assert_eq!(m.with_color(None), m);
+    }
 }

@@ -7,8 +7,9 @@ use crate::Rgb;
 use crate::camera::OrbitCamera;
 use crate::lang::Lang;
 use crate::light::{Light, LightModel, Material};
+use crate::math::try_normalize;
 use crate::mesh::Mesh;
-use crate::normals::{NormalsError, normal_matrix, prepare_normals};
+use crate::normals::{NormalsError, face_normal, normal_matrix, prepare_normals};
 use crate::product::{Factor, MatrixProduct, format_number};
 use crate::texture::{Sampler, TexEnv, Texture};
 use crate::transform::{TransformError, look_at};
@@ -314,6 +315,37 @@ impl PrepareError {
     }
 }
 
+impl Prepared<'_> {
+    /// A shading normal of the prepared mesh (model space) in world space: by the cofactor
+    /// [`Prepared::normal_matrix`], normalised, and negated for a mirrored object (whose cofactor
+    /// normals point inwards), so it points out of the front face as in model space.
+    ///
+    /// `None` when the transformed normal is zero or not finite (a zero normal, a singular
+    /// scale along it).
+    ///
+    /// See also [`Prepared::world_face_normal`].
+    #[must_use]
+    #[inline]
+    pub fn world_normal(&self, n_model: Vec3) -> Option<Vec3> {
+        try_normalize(self.normal_matrix * n_model).map(|n| if self.mirrored { -n } else { n })
+    }
+
+    /// The unit face normal (面の法線) of a face whose corners, *in the mesh's order*, are at
+    /// the world positions `corners`: [`face_normal`] of them, negated for a mirrored object
+    /// (its transform turned the counter-clockwise corners clockwise), so it points out of the
+    /// front face.
+    ///
+    /// `None` for a degenerate (zero-area) face.
+    ///
+    /// See also [`Prepared::world_normal`].
+    #[must_use]
+    #[inline]
+    pub fn world_face_normal(&self, corners: [Vec3; 3]) -> Option<Vec3> {
+        let [a, b, c] = corners;
+        face_normal(a, b, c).map(|n| if self.mirrored { -n } else { n })
+    }
+}
+
 impl Object {
     /// This object made ready to draw; see [`Prepared`].
     ///
@@ -439,6 +471,34 @@ mod tests {
         assert!(e.message(Lang::Ja).contains("オブジェクト \"o\""));
         s.objects[0].transform.push(Factor::rotate_deg(30.0, Vec3::ZERO));
         assert!(matches!(s.prepare(), Err(PrepareError::Transform { .. })));
+    }
+
+    #[test]
+    fn world_normals_point_outwards_also_under_a_mirror() {
+        let mut s = scene(Camera::Orbit(OrbitCamera::course_sample()));
+        s.objects[0].mesh = crate::shapes::lecture_pyramid();
+        for mirror in [false, true] {
+            let mut o = s.objects[0].clone();
+            o.transform = MatrixProduct::identity().then(Factor::scale(Vec3::new(
+                if mirror { -2.0 } else { 2.0 },
+                1.0,
+                1.0,
+            )));
+            let p = o.prepare().unwrap();
+            assert_eq!(p.mirrored, mirror);
+            // The +Y face normal of the pyramid's base is −Y, outwards, in both.
+            let n = p.world_normal(Vec3::NEG_Y).unwrap();
+            assert!(n.abs_diff_eq(Vec3::NEG_Y, 1e-6), "mirror {mirror}: {n}");
+            // A face normal from world corners in the mesh's order points outwards: the apex
+            // face {0, 3, 1} of the pyramid faces +Z in model space, and still does (x scaled).
+            let face = p.mesh.faces[0];
+            let corners = face
+                .map(|i| crate::transform::transform_point(p.model, p.mesh.positions[i as usize]));
+            let n = p.world_face_normal(corners).unwrap();
+            assert!(n.z > 0.5, "mirror {mirror}: {n}");
+            assert_eq!(p.world_face_normal([Vec3::ZERO; 3]), None, "degenerate");
+            assert_eq!(p.world_normal(Vec3::ZERO), None);
+        }
     }
 
     #[test]

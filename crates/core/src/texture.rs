@@ -16,6 +16,7 @@
 
 use glam::{Vec2, Vec4};
 
+use crate::Rgb;
 use crate::lang::Lang;
 
 /// An RGBA8 image used as a texture. Row 0 is the image's *bottom* row, so texture coordinate
@@ -60,6 +61,20 @@ pub enum TexEnv {
     Replace,
 }
 
+impl TexEnv {
+    /// The texture environment (GL_TEXTURE_ENV_MODE) applied to a fragment: GL_MODULATE gives
+    /// `lit × texel` per channel (specular included, as OpenGL's GL_SINGLE_COLOR), GL_REPLACE the
+    /// texel's colour alone. Alpha is dropped (the kit draws opaque surfaces). Not clamped.
+    #[must_use]
+    #[inline]
+    pub fn apply(self, lit: Rgb, texel: Vec4) -> Rgb {
+        match self {
+            TexEnv::Modulate => lit * texel.truncate(),
+            TexEnv::Replace => texel.truncate(),
+        }
+    }
+}
+
 /// Filter and wrap modes of one texture use.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Sampler {
@@ -69,6 +84,26 @@ pub struct Sampler {
     pub wrap_u: Wrap,
     /// Wrap mode along v (t).
     pub wrap_v: Wrap,
+}
+
+impl Sampler {
+    /// The integer shift to take off a triangle's texture coordinates before they are
+    /// interpolated (NUMERICS row 23): `⌊uv⌋` of one of its corners along each [`Wrap::Repeat`]
+    /// axis, 0 along a [`Wrap::Clamp`] axis (where a shift would change what is sampled).
+    ///
+    /// Under repeat an integer shift is invisible, and it keeps the interpolated values small:
+    /// coordinates near 1e6 interpolated as they are lose everything below 1e6·2⁻²⁴ ≈ 0.06 to
+    /// the rounding of the weights; shifted, they keep f32's precision near 1. Non-finite
+    /// coordinates give no shift.
+    #[must_use]
+    #[inline]
+    pub fn repeat_origin(self, uv: Vec2) -> Vec2 {
+        let shift = |s: f32, wrap: Wrap| match wrap {
+            Wrap::Repeat if s.is_finite() => s.floor(),
+            _ => 0.0,
+        };
+        Vec2::new(shift(uv.x, self.wrap_u), shift(uv.y, self.wrap_v))
+    }
 }
 
 /// Why a [`Texture`] could not be made.
@@ -256,4 +291,33 @@ fn linear_indices(s: f32, n: u32, wrap: Wrap) -> (u32, u32, f32) {
     };
     // Both results lie in 0..n, so they fit u32.
     (place(i0) as u32, place(i0 + 1) as u32, weight)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tex_env_modulates_or_replaces() {
+        let lit = Rgb::new(0.5, 2.0, 0.0);
+        let texel = Vec4::new(0.5, 0.25, 1.0, 0.0);
+        assert_eq!(TexEnv::Modulate.apply(lit, texel), Rgb::new(0.25, 0.5, 0.0));
+        assert_eq!(TexEnv::Replace.apply(lit, texel), Rgb::new(0.5, 0.25, 1.0));
+    }
+
+    #[test]
+    fn the_repeat_origin_is_an_integer_shift_on_repeat_axes_only() {
+        let s = Sampler { filter: Filter::Nearest, wrap_u: Wrap::Repeat, wrap_v: Wrap::Clamp };
+        assert_eq!(s.repeat_origin(Vec2::new(1.0e6 + 0.25, 7.5)), Vec2::new(1.0e6, 0.0));
+        assert_eq!(s.repeat_origin(Vec2::new(-1.0e6 + 0.25, 0.0)), Vec2::new(-1.0e6, 0.0));
+        assert_eq!(s.repeat_origin(Vec2::new(-0.5, 0.0)), Vec2::new(-1.0, 0.0));
+        assert_eq!(s.repeat_origin(Vec2::new(f32::NAN, 0.0)), Vec2::ZERO);
+        // Sampling after the shift is the same as before it, for every coordinate a texel
+        // centre away from the edges (both exact here).
+        let t = Texture::from_fn(4, 1, |x, _| [x as u8 * 60, 0, 0, 255]).unwrap();
+        for u in [1.0e3 + 0.375, 1.0e5 + 0.625, 1.0e6 + 0.125, -1.0e6 + 0.875] {
+            let uv = Vec2::new(u, 0.5);
+            assert_eq!(t.sample(uv - s.repeat_origin(uv), s), t.sample(uv, s), "u = {u}");
+        }
+    }
 }

@@ -17,8 +17,10 @@ use crate::error::GlRefError;
 /// OpenGL's lights: GL_LIGHT0 … GL_LIGHT7 (GL_MAX_LIGHTS is 8 in Mesa).
 pub const MAX_LIGHTS: usize = 8;
 
-/// The largest image side OSMesa draws (OSMESA_MAX_WIDTH and OSMESA_MAX_HEIGHT in Mesa 22).
-pub const MAX_SIDE: u32 = 16384;
+/// The largest image side drawn: the kit's [`cg_core::image::MAX_SIDE`], which is also what
+/// OSMesa draws (OSMESA_MAX_WIDTH and OSMESA_MAX_HEIGHT in Mesa 22) and GL_MAX_TEXTURE_SIZE here.
+pub const MAX_SIDE: u32 = cg_core::image::MAX_SIDE;
+const _: () = assert!(MAX_SIDE == 16384, "update the texture-size message in `write_texture`");
 
 /// The most textures one script defines (`MAX_TEXTURES` in glref.c).
 const MAX_TEXTURES: usize = 4096;
@@ -403,6 +405,7 @@ fn write_texture(
         return Err(GlRefError::OutsideGlRange {
             what: format!("texture {index}: its size {width}×{height}"),
             value: width.max(height) as f32,
+            // The number in the text is MAX_SIDE (checked at compile time below).
             range: "sides up to 16384 texels (GL_MAX_TEXTURE_SIZE)",
         });
     }

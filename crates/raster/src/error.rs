@@ -1,30 +1,54 @@
 //! Why a scene could not be rendered, in words a student can read (Japanese and English).
 
+use cg_core::image::SizeError;
 use cg_core::lang::Lang;
 use cg_core::scene::PrepareError;
 use cg_core::transform::TransformError;
 
-use crate::output::MAX_SIZE;
+use crate::pipeline::GUARD_BAND_PIXELS;
 
 /// Why [`crate::render`] could not draw a scene. Nothing in the scene makes the renderer panic;
 /// every problem it finds is one of these, naming what and where.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum RenderError {
-    /// The image has no pixels.
-    #[error("the image size {width}×{height} has no pixels: width and height must be at least 1")]
+    /// The image has no pixels ([`SizeError::ZeroSize`]).
+    #[error("{}", SizeError::ZeroSize { width: *width, height: *height })]
     ZeroSize {
         /// The width asked for.
         width: u32,
         /// The height asked for.
         height: u32,
     },
-    /// The image is larger than the rasterizer's fixed-point window coordinates allow.
-    #[error("the image size {width}×{height} is too large: each side can be at most {MAX_SIZE}")]
+    /// A side is longer than [`cg_core::image::MAX_SIDE`] (the rasterizer's fixed-point window
+    /// coordinates stop there; [`SizeError::TooLarge`]).
+    #[error("{}", SizeError::TooLarge { width: *width, height: *height })]
     TooLarge {
         /// The width asked for.
         width: u32,
         /// The height asked for.
         height: u32,
+    },
+    /// More than [`cg_core::image::MAX_PIXELS`] pixels in all ([`SizeError::TooManyPixels`]).
+    #[error("{}", SizeError::TooManyPixels { width: *width, height: *height })]
+    TooManyPixels {
+        /// The width asked for.
+        width: u32,
+        /// The height asked for.
+        height: u32,
+    },
+    /// A corner given to [`crate::coverage`] is not finite or lies beyond the guard band
+    /// (±[`GUARD_BAND_PIXELS`]), where the fixed-point coordinates and edge functions would
+    /// overflow.
+    #[error(
+        "coverage: triangle {triangle}, corner {corner} is at {position:?}: window coordinates must be finite and within ±{GUARD_BAND_PIXELS} pixels"
+    )]
+    OutsideGuardBand {
+        /// The triangle (index into the slice given).
+        triangle: usize,
+        /// The corner (0, 1 or 2).
+        corner: usize,
+        /// Its window coordinates `(x, y)`.
+        position: [f32; 2],
     },
     /// The camera gives no view transform.
     #[error("the camera is invalid: {0}")]
@@ -70,6 +94,18 @@ pub enum RenderError {
     },
 }
 
+impl From<SizeError> for RenderError {
+    fn from(e: SizeError) -> RenderError {
+        match e {
+            SizeError::ZeroSize { width, height } => RenderError::ZeroSize { width, height },
+            SizeError::TooLarge { width, height } => RenderError::TooLarge { width, height },
+            SizeError::TooManyPixels { width, height } => {
+                RenderError::TooManyPixels { width, height }
+            }
+        }
+    }
+}
+
 impl RenderError {
     /// The message for a student in `lang` (the English one is also the `Display`).
     #[must_use]
@@ -78,11 +114,18 @@ impl RenderError {
             return self.to_string();
         }
         match self {
-            RenderError::ZeroSize { width, height } => format!(
-                "画像の大きさ {width}×{height} には画素がありません。幅と高さは 1 以上にしてください"
-            ),
-            RenderError::TooLarge { width, height } => format!(
-                "画像の大きさ {width}×{height} は大きすぎます。幅と高さは {MAX_SIZE} 以下にしてください"
+            // The size messages are core's, shared with the ray tracer.
+            &RenderError::ZeroSize { width, height } => {
+                SizeError::ZeroSize { width, height }.message(lang)
+            }
+            &RenderError::TooLarge { width, height } => {
+                SizeError::TooLarge { width, height }.message(lang)
+            }
+            &RenderError::TooManyPixels { width, height } => {
+                SizeError::TooManyPixels { width, height }.message(lang)
+            }
+            RenderError::OutsideGuardBand { triangle, corner, position } => format!(
+                "coverage: 三角形 {triangle} の頂点 {corner} が {position:?} にあります。ウィンドウ座標は有限で ±{GUARD_BAND_PIXELS} ピクセル以内でなければなりません"
             ),
             // The transform errors carry both languages in their own message.
             RenderError::Camera(e) => format!("カメラの設定が正しくありません: {e}"),

@@ -2,9 +2,13 @@
 //!
 //! Draws a [`cg_core::scene::Scene`] as OpenGL 1.x would (the course's sample program), on the
 //! CPU, on all cores, deterministically: flat, Gouraud and Phong shading
-//! (フラット／グロー／フォンシェーディング), a z-buffer, clipping at the near plane, the top-left
-//! fill rule (in OpenGL's y-up window coordinates), perspective-correct attributes, textures,
-//! back-face culling.
+//! (フラット／グロー／フォンシェーディング), a z-buffer, clipping at the near plane, OpenGL's fill
+//! rule, perspective-correct attributes, textures, back-face culling.
+//!
+//! **Fill rule.** A pixel whose centre is exactly on an edge belongs to the triangle when the
+//! edge is a left edge or a bottom edge as the image is displayed — what Mesa's llvmpipe does
+//! (OpenGL's top-left rule in its y-up window coordinates). So a pixel on an edge shared by two
+//! triangles is drawn exactly once, and none is missed (NUMERICS row 22).
 //!
 //! ```
 //! use cg_core::lang::Lang;
@@ -28,13 +32,18 @@
 //! | `viewport` | perspective divide; window x right, y down from the top-left corner, pixel centres at `(x + ½, y + ½)`, depth `[0, 1]`; coordinates snapped to **1/256 pixel** (8 sub-pixel bits) |
 //! | `triangle_setup` | back-face culling by the sign of the window-space area (counter-clockwise in OpenGL's y-up window = front; the other way for mirrored objects), bounding box |
 //! | `flat_color` | flat shading: one lighting evaluation per face, at its **centroid**, with the face normal (OpenGL's GL_FLAT takes the last vertex's colour instead) |
-//! | `bin` | each triangle into the tiles (32 × 32 pixels) its bounding box touches; a row of tiles is one task for a thread |
-//! | `rasterize` | exact integer edge functions and the **top-left fill rule in OpenGL's y-up window coordinates** (as Mesa's llvmpipe applies it): a pixel centre on an edge belongs to the triangle when the edge is a *left* or a *bottom* edge as the image is seen; on an edge shared by two triangles it is drawn exactly once |
+//! | `bin` | each triangle into the tiles (32 × 32 pixels) its bounding box touches, as `(tile, triangle)` pairs gathered into one list per tile (memory proportional to the pairs); each tile is one task for a thread |
+//! | `rasterize` | exact integer edge functions and the fill rule above |
 //! | `depth_test` | GL_LESS against a depth buffer cleared to 1, then the write (early: before shading; the same image) |
-//! | `fragment` | perspective-correct barycentrics for colour, normal, position and uv; Phong lights each pixel here; texture after lighting (GL_MODULATE, GL_REPLACE); clamp to `[0, 1]` |
+//! | `fragment` | perspective-correct barycentrics for colour, normal, position and uv (uv less the integer [`cg_core::texture::Sampler::repeat_origin`] of the face's first corner, so coordinates near 1e6 keep their precision: NUMERICS row 23); Phong lights each pixel here; texture after lighting ([`cg_core::texture::TexEnv::apply`]); clamp to `[0, 1]` |
 //!
-//! Triangles are set up once and binned; each tile is drawn by one thread, its triangles in
-//! submission order, so the output is bit-identical for every thread count and tile size.
+//! Triangles are set up once and binned; each tile is drawn by one task from start to end, its
+//! triangles in submission order, so the output is bit-identical for every thread count and tile
+//! size (a 160 × 160 image is 25 tasks of 32 × 32).
+//!
+//! An image has at most [`cg_core::image::MAX_SIDE`] pixels a side and
+//! [`cg_core::image::MAX_PIXELS`] (64 M) in all: the colour buffer (12 bytes a pixel) and the
+//! depth buffer (4) of the largest image take 1 GB.
 //!
 //! ## Shading and lighting
 //!
@@ -48,10 +57,13 @@
 //! ## As OpenGL draws it
 //!
 //! The conventions follow what Mesa's OpenGL (llvmpipe, through `cg-glref`) does, so the
-//! course's scenes come out within 1/255 of OpenGL's images (`tests/opengl.rs`): pixel centres at
-//! half-integers; 8 sub-pixel bits; the fill rule above (pixel-exact against OpenGL on edges
-//! through pixel centres); lit vertex colours clamped to `[0, 1]` before they are interpolated;
-//! colours and texture coordinates interpolated perspective-correctly; GL_LESS; GL_MODULATE on
+//! course's scenes come out as OpenGL draws them (`tests/opengl.rs`: at least 99.99 % of the
+//! pixels within 1/255, and all but 0.005 % — pixel centres within rounding of an edge or a
+//! texel border — within 2/255; measured on course-sample and spot-specular: every pixel within
+//! 1/255): pixel centres at half-integers; 8 sub-pixel bits; the fill rule above (pixel-exact
+//! against OpenGL on edges through pixel centres); lit vertex colours clamped to `[0, 1]` before
+//! they are interpolated; colours and texture coordinates interpolated perspective-correctly;
+//! GL_LESS (of two equal depths the first drawn stays); GL_MODULATE on
 //! the whole lit colour; 8-bit output by [`cg_core::image::to_unorm8`] (OpenGL rounds exact
 //! halves to even, the kit up: they differ on exact ties only). Two documented differences: flat
 //! shading lights the centroid (GL_FLAT takes the last vertex's colour), and lighting happens in
@@ -62,7 +74,10 @@
 //! [`Scene::features`](cg_core::scene::Scene::features) decides what is computed: no specular
 //! term when no light or no material has one (k_s is passed as 0), no texture sampling for
 //! untextured objects, no lighting under GL_REPLACE. [`Output::stats`] counts what each stage
-//! did; [`Output::features`] says what was enabled.
+//! did — the specular terms and attenuations as the light model computes them
+//! ([`cg_core::light::LightCounts`], counted inside
+//! [`cg_core::light::shade_with_visibility_counted`]), not as predicted; [`Output::features`]
+//! says what was enabled (never reflection or transmission: they need rays).
 
 mod error;
 mod lighting;
@@ -118,13 +133,21 @@ pub fn render_with<L: Lighting + ?Sized>(
 /// centred at `(x + ½, y + ½)` — of either winding (nothing is culled); zero-area ones cover
 /// nothing, and parts outside the raster are cut off.
 ///
-/// With the fill rule, triangles that tile a region cover each pixel centre of its interior
-/// exactly once; a centre on the region's own border is covered when the border there is a left
-/// or a bottom edge (as the image is seen).
+/// With the fill rule — a pixel whose centre is exactly on an edge belongs to the triangle when
+/// the edge is a left edge or a bottom edge as the image is displayed — triangles that tile a
+/// region cover each pixel centre of its interior exactly once, and a centre on the region's own
+/// border when the border there is a left or a bottom edge.
 ///
-/// Coordinates must stay within ±[`GUARD_BAND_PIXELS`] (the renderer clips to that band first);
-/// non-finite ones are treated as 0 by the fixed-point conversion.
-#[must_use]
-pub fn coverage(width: u32, height: u32, tile: u32, triangles: &[[Vec2; 3]]) -> Vec<u32> {
+/// # Errors
+/// A size the renderer refuses ([`RenderError::ZeroSize`], [`RenderError::TooLarge`],
+/// [`RenderError::TooManyPixels`]); [`RenderError::OutsideGuardBand`] naming the first corner that
+/// is not finite or lies beyond ±[`GUARD_BAND_PIXELS`] (the renderer clips to that band before it
+/// rasterizes; beyond it the fixed-point coordinates would overflow).
+pub fn coverage(
+    width: u32,
+    height: u32,
+    tile: u32,
+    triangles: &[[Vec2; 3]],
+) -> Result<Vec<u32>, RenderError> {
     pipeline::coverage(width, height, tile, triangles)
 }

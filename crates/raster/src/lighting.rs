@@ -15,7 +15,7 @@
 
 use cg_core::Rgb;
 use cg_core::glam::Vec3;
-use cg_core::light::{Material, shade};
+use cg_core::light::{LightCounts, Material, shade_with_visibility_counted};
 use cg_core::scene::{Scene, Shading};
 
 /// A point of a surface to be lit, everything in world space (ワールド座標系), where the lights are.
@@ -49,16 +49,42 @@ pub struct SurfacePoint<'a> {
 pub trait Lighting: Sync {
     /// The colour that `scene`'s lights give `point`.
     fn light(&self, scene: &Scene, point: &SurfacePoint<'_>) -> Rgb;
+
+    /// [`Lighting::light`], adding to `counts` the light-model work it did
+    /// ([`LightCounts`]: attenuations, specular terms, …). The renderer calls this one and
+    /// reports the counts in [`crate::Stats`]. The default calls [`Lighting::light`] and counts
+    /// nothing: the kit cannot see inside a custom hook, so its specular and attenuation
+    /// counters stay 0. [`SceneLighting`] counts inside [`cg_core::light`].
+    fn light_counted(
+        &self,
+        scene: &Scene,
+        point: &SurfacePoint<'_>,
+        counts: &mut LightCounts,
+    ) -> Rgb {
+        let _ = counts;
+        self.light(scene, point)
+    }
 }
 
 /// The default lighting: the scene's light model ([`Scene::light_model`], its global ambient and
-/// lights) evaluated term by term by [`cg_core::light::shade`], summed.
+/// lights) evaluated term by term by [`cg_core::light::shade`], summed. It counts its work
+/// ([`Lighting::light_counted`]) inside the light model.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct SceneLighting;
 
 impl Lighting for SceneLighting {
     fn light(&self, scene: &Scene, point: &SurfacePoint<'_>) -> Rgb {
-        shade(
+        self.light_counted(scene, point, &mut LightCounts::default())
+    }
+
+    fn light_counted(
+        &self,
+        scene: &Scene,
+        point: &SurfacePoint<'_>,
+        counts: &mut LightCounts,
+    ) -> Rgb {
+        // No shadows in a rasterizer: every light is visible (this is `shade`, counted).
+        shade_with_visibility_counted(
             scene.light_model,
             scene.global_ambient,
             &scene.lights,
@@ -66,6 +92,8 @@ impl Lighting for SceneLighting {
             point.p_world,
             point.n_world,
             point.v_world,
+            |_, _, _| 1.0,
+            counts,
         )
         .total()
     }

@@ -24,12 +24,13 @@ pub struct Options {
     pub tile_size: Option<u32>,
 }
 
-/// The default tile side in pixels: 32 × 32. A row of tiles (a band) is the unit of work of one thread.
+/// The default tile side in pixels: 32 × 32. Each tile is one task for a thread.
 pub const DEFAULT_TILE_SIZE: u32 = 32;
 
-/// The largest image side the rasterizer accepts, in pixels (window coordinates then fit its
-/// 8-bit sub-pixel fixed point with room for the guard band).
-pub const MAX_SIZE: u32 = 16384;
+/// The largest image side the rasterizer accepts, in pixels: [`cg_core::image::MAX_SIDE`]
+/// (window coordinates then fit its 8-bit sub-pixel fixed point with room for the guard band).
+/// An image also has at most [`cg_core::image::MAX_PIXELS`] pixels in all.
+pub const MAX_SIZE: u32 = cg_core::image::MAX_SIDE;
 
 /// A rendered image and what it cost.
 #[derive(Clone, Debug, PartialEq)]
@@ -41,16 +42,19 @@ pub struct Output {
     pub depth: Vec<f32>,
     /// What each stage did.
     pub stats: Stats,
-    /// What the scene needs of the light model; the renderer skipped the rest
-    /// (`features.describe(lang)` says which in words).
+    /// What the scene needs of the light model and this renderer computed; it skipped the rest
+    /// (`features.describe(lang)` says which in words). Reflection k_r·I_r and transmission
+    /// k_t·I_t are always off here: they need rays (the ray tracer's).
     pub features: Features,
     /// The shading mode used (the scene's, or [`Options::shading`]).
     pub shading: Shading,
 }
 
 /// What the pipeline did, stage by stage: the counts are exact and the same for every thread
-/// count and tile size. "Lighting" counts what the renderer asked the lighting stage to do; a
-/// custom [`crate::Lighting`] is counted the same way.
+/// count and tile size. `lighting_evaluations` counts the calls of the lighting stage (for a
+/// custom [`crate::Lighting`] too); `specular_evaluations` and `attenuation_evaluations` are
+/// counted inside the light model as it computes them ([`cg_core::light::LightCounts`], through
+/// [`crate::Lighting::light_counted`]), so they are 0 for a custom hook that does not report.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Stats {
     /// Vertices through the vertex stage.
@@ -78,11 +82,13 @@ pub struct Stats {
     pub fragments_shaded: u64,
     /// Calls of the lighting stage: per face (flat), per vertex (Gouraud) or per fragment (Phong).
     pub lighting_evaluations: u64,
-    /// Specular terms asked for: per lighting evaluation, one per point light (an area light
-    /// counts its samples) when the material's k_s ≠ 0 and the scene has specular light at all.
+    /// Specular terms computed by the light model: per lighting evaluation, one per point light
+    /// (an area light counts its samples) that reaches the point, when the material's k_s ≠ 0
+    /// and the scene has specular light at all ([`cg_core::light::LightCounts::specular`]).
     pub specular_evaluations: u64,
-    /// Distance attenuations asked for: per lighting evaluation, one per point light whose
-    /// attenuation is not OpenGL's default (1, 0, 0).
+    /// Distance attenuations computed by the light model: per lighting evaluation, one per point
+    /// light whose attenuation is not OpenGL's default (1, 0, 0)
+    /// ([`cg_core::light::LightCounts::attenuations`]).
     pub attenuation_evaluations: u64,
     /// Texture samples (one per shaded fragment of a textured object).
     pub texture_samples: u64,

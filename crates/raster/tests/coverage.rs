@@ -13,7 +13,7 @@ mod common;
 use cg_core::Rgb;
 use cg_core::glam::{Vec2, Vec3};
 use cg_core::shapes::grid;
-use cg_raster::{Options, coverage, render};
+use cg_raster::{GUARD_BAND_PIXELS, Options, RenderError, coverage, render};
 use cg_testkit::Inputs;
 use common::{looking_down_z, masks_side_by_side, object, tri, unlit};
 
@@ -36,7 +36,7 @@ fn assert_coverage(
     let reversed: Vec<[Vec2; 3]> = triangles.iter().map(|&[a, b, c]| [a, c, b]).collect();
     for (winding, set) in [("as given", triangles), ("reversed", &reversed[..])] {
         for tile in TILES {
-            let actual = coverage(width, height, tile, set);
+            let actual = coverage(width, height, tile, set).unwrap();
             if actual != expected {
                 let wrong: Vec<String> = actual
                     .iter()
@@ -242,6 +242,31 @@ fn zero_area_and_outside_triangles_cover_nothing() {
     );
     // Thinner than a pixel, between two rows of centres.
     assert_coverage("sliver", 8, 8, &[tri((0.0, 3.6), (8.0, 3.6), (8.0, 3.9))], none);
+}
+
+#[test]
+fn coverage_refuses_corners_beyond_the_guard_band_and_bad_sizes() {
+    // Beyond ±2²⁰ pixels the fixed-point snap would saturate and the edge functions could
+    // overflow i64: an error naming the corner, never a panic or a wrong mask.
+    let far = GUARD_BAND_PIXELS * 4.0;
+    for (bad, what) in [(far, "far"), (-far, "far left"), (f32::NAN, "NaN"), (f32::INFINITY, "∞")]
+    {
+        let triangles =
+            [tri((0.0, 0.0), (4.0, 0.0), (0.0, 4.0)), tri((1.0, 1.0), (2.0, 1.0), (bad, 3.0))];
+        let e = coverage(8, 8, 4, &triangles).unwrap_err();
+        assert!(
+            matches!(e, RenderError::OutsideGuardBand { triangle: 1, corner: 2, .. }),
+            "{what}: {e}"
+        );
+        assert!(e.message(cg_core::lang::Lang::Ja).contains("三角形 1"), "{what}");
+    }
+    // On the band's edge itself: accepted (and it covers what it covers).
+    let edge = GUARD_BAND_PIXELS;
+    let counts = coverage(8, 8, 4, &[tri((-1.0, -1.0), (edge, -1.0), (-1.0, edge))]).unwrap();
+    assert!(counts.iter().all(|&n| n == 1), "a huge triangle covers every pixel once");
+    assert!(matches!(coverage(0, 8, 4, &[]), Err(RenderError::ZeroSize { .. })));
+    assert!(matches!(coverage(20_000, 8, 4, &[]), Err(RenderError::TooLarge { .. })));
+    assert!(matches!(coverage(16_384, 16_384, 4, &[]), Err(RenderError::TooManyPixels { .. })));
 }
 
 #[test]

@@ -13,7 +13,7 @@ use cg_core::product::{Factor, MatrixProduct};
 use cg_core::scene::{Camera, Scene, Shading};
 use cg_core::shapes::cuboid;
 use cg_raster::{Options, RenderError, SurfacePoint, render, render_with};
-use common::{load, looking_down_z, object, triangle, unlit};
+use common::{load, looking_down_z, object, on_screen_at, triangle, unlit};
 
 const RED: Rgb = Rgb::new(1.0, 0.0, 0.0);
 const GREEN: Rgb = Rgb::new(0.0, 1.0, 0.0);
@@ -212,11 +212,35 @@ fn only_what_the_scene_needs_is_computed() {
             out.features.describe(Lang::En)
         );
     }
-    // A shiny sphere under an attenuated spot light: both are evaluated.
-    let spot = render(&load("spot-specular.toml"), &small(48)).unwrap();
+    // A shiny sphere under an attenuated spot light: both are evaluated, and the counts are
+    // what the light model did (counted inside cg_core::light). Gouraud lights every vertex:
+    // every evaluation attenuates the one spot light, and a specular term is computed exactly at
+    // the shiny sphere's vertices inside the spot's cone, narrowed here to 5° so that it cuts
+    // the sphere — counted by the cone's geometry in f64 (the ground's k_s is 0; outside the
+    // cone the spot factor is 0 and the light model skips the light).
+    let mut spot_scene = load("spot-specular.toml");
+    let cg_core::light::LightKind::Spot { cutoff_deg, .. } = &mut spot_scene.lights[0].kind else {
+        panic!("premise: a spot light")
+    };
+    *cutoff_deg = 5.0;
+    let spot = render(&spot_scene, &small(48)).unwrap();
     assert!(spot.features.specular && spot.features.attenuation);
-    assert!(spot.stats.specular_evaluations > 0, "{}", spot.stats);
-    assert!(spot.stats.attenuation_evaluations > 0, "{}", spot.stats);
+    assert_eq!(spot.stats.lighting_evaluations, spot.stats.vertices, "{}", spot.stats);
+    assert_eq!(spot.stats.attenuation_evaluations, spot.stats.lighting_evaluations);
+    let sphere = spot_scene.objects.iter().find(|o| o.name == "sphere").unwrap();
+    let prepared = sphere.prepare().unwrap();
+    let (light_at, axis) =
+        (cg_core::glam::DVec3::new(0.0, 8.0, 4.0), cg_core::glam::DVec3::new(0.0, -8.0, -4.0));
+    let in_cone = prepared
+        .mesh
+        .positions
+        .iter()
+        .map(|p| (p.as_dvec3() + cg_core::glam::DVec3::Y - light_at).angle_between(axis))
+        .inspect(|a| assert!((a.to_degrees() - 5.0).abs() > 1e-3, "premise: no vertex on the rim"))
+        .filter(|a| a.to_degrees() < 5.0)
+        .count() as u64;
+    assert!(in_cone > 10 && in_cone < prepared.mesh.positions.len() as u64, "premise: {in_cone}");
+    assert_eq!(spot.stats.specular_evaluations, in_cone, "{}", spot.stats);
     // The textured ground: sampled once per shaded fragment of the ground.
     let textured = render(&load("textured-ground.toml"), &small(48)).unwrap();
     assert!(textured.stats.texture_samples > 0);
@@ -224,6 +248,12 @@ fn only_what_the_scene_needs_is_computed() {
         textured.stats.texture_samples < textured.stats.fragments_shaded,
         "the pyramid is not textured"
     );
+
+    // The global terms need rays: the rasterizer says it did not compute them, even for a
+    // scene that has mirrors and glass.
+    let glass = render(&load("glass-mirror.toml"), &small(32)).unwrap();
+    assert!(!glass.features.reflection && !glass.features.transmission, "{:?}", glass.features);
+    assert!(load("glass-mirror.toml").features().reflection, "premise: the scene has k_r");
 
     // A k_s > 0 that no light can show (every light's specular colour is 0): skipped as well.
     let mut dull = load("spot-specular.toml");
@@ -286,7 +316,19 @@ fn a_custom_lighting_hook_runs_through_the_same_pipeline() {
         let default = render(&scene, &options).unwrap();
         let custom = render_with(&scene, &options, &by_hand).unwrap();
         assert!(default.image == custom.image, "{shading:?}");
-        assert_eq!(default.stats, custom.stats);
+        // The same pipeline work; the light model's own counts come only from the default
+        // lighting, which counts inside cg_core::light (a closure cannot report them).
+        assert!(
+            default.stats.specular_evaluations > 0 && default.stats.attenuation_evaluations > 0
+        );
+        assert_eq!(
+            cg_raster::Stats {
+                specular_evaluations: 0,
+                attenuation_evaluations: 0,
+                ..default.stats
+            },
+            custom.stats
+        );
         // …and a different one changes every lit pixel (and a NaN never reaches the image).
         let nan = |_: &Scene, _: &SurfacePoint<'_>| Rgb::new(f32::NAN, 2.0, 0.25);
         let out = render_with(&scene, &options, &nan).unwrap();
@@ -298,17 +340,31 @@ fn a_custom_lighting_hook_runs_through_the_same_pipeline() {
     }
 }
 
+/// A triangle on [`looking_down_z`]`(16, 16, 90°)` whose bottom edge (as the image is seen) runs
+/// through pixel centres from (3.5, 10.5) to (11.5, 10.5) and whose apex is at (7.5, 2.5): the
+/// centre of pixel (7, 10) is the exact midpoint of the bottom edge (corners 0 and 1), covered by
+/// the fill rule (a bottom edge), with screen barycentrics (½, ½, 0) up to one rounding — and
+/// equal in its first two, as the edge functions there are equal integers. All three corners at
+/// z = −2, so w = 2 and the perspective correction keeps them equal.
+fn midpoint_triangle() -> (Mesh, Vec3) {
+    let at = |x, y| on_screen_at(16, x, y);
+    let mesh = Mesh::new(vec![at(3.5, 10.5), at(11.5, 10.5), at(7.5, 2.5)], vec![[0, 1, 2]]);
+    let midpoint = (at(3.5, 10.5) + at(11.5, 10.5)) * 0.5;
+    (mesh, midpoint)
+}
+
+/// Pixel (7, 10) of a 16-wide image.
+const MIDPOINT_PIXEL: usize = 10 * 16 + 7;
+
 #[test]
-fn row18_nearly_opposite_vertex_normals_fall_back_to_the_face_normal() {
-    // Phong interpolation between opposite vertex normals: at the middle of the edge between
-    // them the interpolated normal vanishes; the face normal (+Z) takes over, never NaN.
-    let mut mesh = Mesh::new(
-        vec![Vec3::new(-2.0, -1.0, -4.0), Vec3::new(2.0, -1.0, -4.0), Vec3::new(0.0, 2.0, -4.0)],
-        vec![[0, 1, 2]],
-    );
-    mesh.normals =
-        Some(vec![Vec3::new(1.0, 0.0, 0.0), Vec3::new(-1.0, 0.0, 1e-7).normalize(), Vec3::Z]);
-    let mut scene = looking_down_z(32, 32, 60.0);
+fn row18_cancelling_vertex_normals_fall_back_to_the_face_normal() {
+    // Phong interpolation between opposite vertex normals, +X and −X at the bottom edge's ends:
+    // at its midpoint their weights are equal, so N = ½·(+X) + ½·(−X) + 0·(+Z) is exactly zero
+    // (interpolate_normal sums in f64). The face normal, +Z, must take over — never NaN, never
+    // the zero vector. A recording lighting hook shows what the renderer passed there.
+    let (mut mesh, midpoint) = midpoint_triangle();
+    mesh.normals = Some(vec![Vec3::X, Vec3::NEG_X, Vec3::Z]);
+    let mut scene = looking_down_z(16, 16, 90.0);
     scene.shading = Shading::Phong;
     scene.lights = vec![Light {
         kind: LightKind::Directional { to_light: Vec3::Z },
@@ -320,9 +376,9 @@ fn row18_nearly_opposite_vertex_normals_fall_back_to_the_face_normal() {
     let mut o = object("opposite", mesh, cg_core::light::Material::from_color(Rgb::ONE));
     o.normals = cg_core::scene::NormalSource::Given;
     scene.objects.push(o);
-    let seen: std::sync::Mutex<Vec<Vec3>> = std::sync::Mutex::new(Vec::new());
+    let seen: std::sync::Mutex<Vec<(Vec3, Vec3)>> = std::sync::Mutex::new(Vec::new());
     let record = |scene: &Scene, p: &SurfacePoint<'_>| {
-        seen.lock().unwrap().push(p.n_world);
+        seen.lock().unwrap().push((p.p_world, p.n_world));
         shade(
             scene.light_model,
             scene.global_ambient,
@@ -336,11 +392,54 @@ fn row18_nearly_opposite_vertex_normals_fall_back_to_the_face_normal() {
     };
     let out = render_with(&scene, &Options::default(), &record).unwrap();
     assert!(out.image.pixels.iter().all(|c| c.is_finite()));
-    let normals = seen.into_inner().unwrap();
-    assert!(!normals.is_empty());
-    for n in &normals {
+    let points = seen.into_inner().unwrap();
+    for (_, n) in &points {
         assert!(n.is_finite() && (n.length() - 1.0).abs() < 1e-5, "every normal is unit: {n}");
     }
+    let at_midpoint: Vec<_> = points.iter().filter(|(p, _)| p.distance(midpoint) < 1e-5).collect();
+    assert_eq!(at_midpoint.len(), 1, "premise: pixel (7, 10) is lit once, at the midpoint");
+    assert_eq!(at_midpoint[0].1, Vec3::Z, "the fallback: the face normal");
+    // Lit head-on by the face normal: white (an unusable normal would leave it black).
+    assert_eq!(out.image.pixels[MIDPOINT_PIXEL], Rgb::ONE);
+}
+
+#[test]
+fn gouraud_clamps_each_vertex_colour_before_interpolating() {
+    // Corner 0 lit to 2.0, corners 1 and 2 to 0.0: OpenGL clamps the lit vertex colours to
+    // [0, 1] first, so the midpoint of the edge from corner 0 to corner 1 is ½·1 + ½·0 = 0.5 —
+    // not ½·2 = 1.0, which interpolating before clamping would give.
+    let (mesh, _) = midpoint_triangle();
+    let corner0 = mesh.positions[0];
+    let mut scene = looking_down_z(16, 16, 90.0);
+    scene.objects.push(object("t", mesh, cg_core::light::Material::default()));
+    let two_at_corner0 = |_: &Scene, p: &SurfacePoint<'_>| {
+        assert_eq!(p.shading, Shading::Gouraud);
+        if p.p_world == corner0 { Rgb::splat(2.0) } else { Rgb::ZERO }
+    };
+    let out = render_with(&scene, &Options::default(), &two_at_corner0).unwrap();
+    let c = out.image.pixels[MIDPOINT_PIXEL];
+    assert!((c - Rgb::splat(0.5)).abs().max_element() < 1e-6, "midpoint colour {c}, expected 0.5");
+    assert_eq!(out.stats.lighting_evaluations, 3, "Gouraud lights the three vertices");
+}
+
+#[test]
+fn of_two_coplanar_triangles_the_first_drawn_stays() {
+    // GL_LESS: the same triangle twice, red then green, at bit-identical depths: the green one
+    // fails the depth test at every pixel (GL_LEQUAL would paint it over the red).
+    let (mesh, _) = midpoint_triangle();
+    let mut scene = looking_down_z(16, 16, 90.0);
+    scene.objects.push(object("first", mesh.clone(), unlit(RED)));
+    scene.objects.push(object("second", mesh, unlit(GREEN)));
+    let out = render(&scene, &Options::default()).unwrap();
+    let drawn = out.depth.iter().filter(|&&z| z < 1.0).count() as u64;
+    assert!(drawn > 20, "premise: {drawn} pixels");
+    for (i, (c, z)) in out.image.to_rgba8().iter().zip(&out.depth).enumerate() {
+        if *z < 1.0 {
+            assert_eq!(*c, [255, 0, 0, 255], "pixel {i}: the first triangle stays");
+        }
+    }
+    assert_eq!(out.stats.fragments, 2 * drawn);
+    assert_eq!(out.stats.depth_rejects, drawn, "every fragment of the second fails");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -376,6 +475,11 @@ fn bad_scenes_give_errors_that_name_the_problem() {
     assert!(e.message(Lang::Ja).contains("画素"), "{}", e.message(Lang::Ja));
     let e = err(&scene, &Options { size: Some((100_000, 10)), ..Options::default() });
     assert!(matches!(e, RenderError::TooLarge { .. }), "{e}");
+    // 16384 × 4097 pixels: each side allowed, but more than 64 M pixels in all.
+    let e = err(&scene, &Options { size: Some((16_384, 4097)), ..Options::default() });
+    assert!(matches!(e, RenderError::TooManyPixels { width: 16_384, height: 4097 }), "{e}");
+    assert!(e.message(Lang::Ja).contains("画素数"), "{}", e.message(Lang::Ja));
+    assert!(e.to_string().contains("too many pixels"), "{e}");
 
     let mut bad = scene.clone();
     bad.projection.near = 0.0;
@@ -411,6 +515,26 @@ fn bad_scenes_give_errors_that_name_the_problem() {
     let e = err(&bad, &Options::default());
     assert!(matches!(e, RenderError::NonFinite { ref object, .. } if object == "pyramid"), "{e}");
     assert!(e.message(Lang::Ja).contains("V"), "{}", e.message(Lang::Ja));
+}
+
+#[test]
+fn colours_beyond_f32s_range_give_a_finite_image() {
+    // Light colours of 3e38 (a program can set them; the scene loader bounds colours to 1e6):
+    // the lit colours overflow to ∞ (and ∞·0 to NaN); OpenGL's clamp of the lit colour takes
+    // them to [0, 1] (NaN to 0) in every shading mode, so the image stays finite.
+    let mut scene = load("spot-specular.toml");
+    for light in &mut scene.lights {
+        light.diffuse = Rgb::splat(3e38);
+        light.specular = Rgb::splat(3e38);
+        light.ambient = Rgb::splat(3e38);
+    }
+    for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+        let out = render(&scene, &Options { shading: Some(shading), ..small(24) }).unwrap();
+        assert!(
+            out.image.pixels.iter().all(|c| c.is_finite() && c.max_element() <= 1.0),
+            "{shading:?}"
+        );
+    }
 }
 
 #[test]

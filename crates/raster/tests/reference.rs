@@ -1,7 +1,27 @@
 //! Reference images: the course's sample scene at 160 × 160 in flat, Gouraud and Phong shading,
-//! against committed PNGs (created once with `CG_BLESS=1` and looked at). The rasterizer is
-//! deterministic, so the tolerance is 1/255 per channel on every pixel (room for a compiler's
-//! different rounding of the same f32 expressions, nothing more).
+//! against committed PNGs. The rasterizer is deterministic, so the tolerance is 1/255 per channel
+//! on every pixel (room for a compiler's different rounding of the same f32 expressions, nothing
+//! more).
+//!
+//! The PNGs were made by the rasterizer itself (`CG_BLESS=1`); how each was checked:
+//!
+//! - `course-sample-gouraud.png`: against OpenGL — `tests/opengl.rs`
+//!   (`the_committed_gouraud_reference_is_what_opengl_draws`) compares the committed file with
+//!   Mesa's image of the scene at 160 × 160 (every pixel within 2/255, at most 2 beyond 1/255),
+//!   so it is not only the program's word. Looked at: the blue-grey sky (0.5, 0.5, 0.8), the
+//!   green ground square seen from above at 30°, brighter towards the light at (10, 10, 10)
+//!   (front right) in a smooth gradient, and the orange pyramid on it with its lit front-right
+//!   face brighter than its left face.
+//! - `course-sample-flat.png`: looked at — the same picture, but each ground cell (two triangles)
+//!   is one flat shade, the cells stepping brighter towards the light, and each pyramid face one
+//!   colour. Its per-face colours are checked against `cg_core::light::shade` at the face normal
+//!   in `tests/shading.rs` (flat shading test), not against OpenGL (GL_FLAT takes the last
+//!   vertex's colour; the kit lights the centroid).
+//! - `course-sample-phong.png`: looked at — indistinguishable by eye from the Gouraud image (the
+//!   course's materials have no specular term and the ground's normal is constant, so Phong and
+//!   Gouraud differ only by the diffuse term's curvature across each triangle). Per-pixel
+//!   lighting itself is checked analytically in `tests/shading.rs`, and against the ray tracer
+//!   in `cg-trace`'s `tests/raster.rs`.
 
 mod common;
 

@@ -6,12 +6,12 @@
 mod common;
 
 use cg_core::Rgb;
-use cg_core::glam::{DVec2, DVec3, Vec2, Vec3};
+use cg_core::glam::{DVec2, Vec2, Vec3};
 use cg_core::mesh::Mesh;
 use cg_core::scene::{Scene, TextureUse};
 use cg_core::texture::{Filter, Sampler, TexEnv, Texture, Wrap};
 use cg_raster::{Options, render};
-use common::{Pinhole, inside_by, looking_down_z, object, unlit};
+use common::{Pinhole, inside_by, looking_down_z, object, sample_f64, unlit};
 
 /// `scene` with `mesh` textured by `texture`.
 fn textured(
@@ -148,51 +148,6 @@ fn quad_scene(from: Vec2, to: Vec2, lit: Rgb, sampler: Sampler, env: TexEnv) -> 
     textured(scene, quad, lit, texture4(), sampler, env)
 }
 
-/// GL_REPEAT / GL_CLAMP_TO_EDGE on a coordinate (OpenGL 1.x spec, 3.8.7).
-fn wrap_coordinate(s: f64, wrap: Wrap) -> f64 {
-    match wrap {
-        Wrap::Repeat => s - s.floor(),
-        Wrap::Clamp => s.clamp(0.0, 1.0),
-    }
-}
-
-/// A texel index wrapped or clamped into `0..n`.
-fn wrap_index(i: i64, n: i64, wrap: Wrap) -> i64 {
-    match wrap {
-        Wrap::Repeat => i.rem_euclid(n),
-        Wrap::Clamp => i.clamp(0, n - 1),
-    }
-}
-
-/// The texture's RGB at (s, t) in f64, by the specification's formulas (3.8.8): nearest takes
-/// texel ⌊s·w⌋; linear blends the four texels around (s·w − ½, t·h − ½).
-fn sample_f64(tex: &Texture, st: DVec2, sampler: Sampler) -> DVec3 {
-    let (w, h) = (i64::from(tex.width), i64::from(tex.height));
-    let texel = |i: i64, j: i64| {
-        let [r, g, b, _] = tex.texel(
-            wrap_index(i, w, sampler.wrap_u) as u32,
-            wrap_index(j, h, sampler.wrap_v) as u32,
-        );
-        DVec3::new(r.into(), g.into(), b.into()) / 255.0
-    };
-    let s = wrap_coordinate(st.x, sampler.wrap_u);
-    let t = wrap_coordinate(st.y, sampler.wrap_v);
-    match sampler.filter {
-        Filter::Nearest => texel(
-            ((s * w as f64).floor() as i64).min(w - 1),
-            ((t * h as f64).floor() as i64).min(h - 1),
-        ),
-        Filter::Bilinear => {
-            let (u, v) = (s * w as f64 - 0.5, t * h as f64 - 0.5);
-            let (i0, j0) = (u.floor() as i64, v.floor() as i64);
-            let (a, b) = (u - u.floor(), v - v.floor());
-            let bottom = texel(i0, j0) * (1.0 - a) + texel(i0 + 1, j0) * a;
-            let top = texel(i0, j0 + 1) * (1.0 - a) + texel(i0 + 1, j0 + 1) * a;
-            bottom * (1.0 - b) + top * b
-        }
-    }
-}
-
 /// Renders the quad and compares every pixel with the formula: texture coordinates at pixel
 /// centres are `from + (x + ½)/16·(to − from)` across and the same upwards (row 0 at the top);
 /// `env` combines the texel with the lit colour `lit`. Tolerance: 1/255 for bilinear (f32 against
@@ -314,4 +269,34 @@ fn modulate_multiplies_the_lit_colour_and_replace_ignores_it() {
         .to_rgba8()
     };
     assert_ne!(render_env(TexEnv::Modulate), render_env(TexEnv::Replace));
+}
+
+#[test]
+fn row23_huge_texture_coordinates_sample_like_small_ones_under_repeat() {
+    // NUMERICS row 23: the quad's coordinates run from (k, k) to (k + 1, k + 1). Under repeat
+    // that is the same texture as from (0, 0) to (1, 1) — and every one of these coordinates is
+    // exact in f32 (a multiple of 2⁻⁴ near 1e6) — so the image must be the specification's,
+    // pixel for pixel. Interpolated as they are, coordinates near 1e6 lose everything below
+    // ~0.06 to the rounding of the barycentric weights (92 of 256 pixels wrong); the rasterizer
+    // takes the integer ⌊uv⌋ of the first corner off first.
+    for k in [1.0e3f32, 1.0e5, 1.0e6, -1.0e6] {
+        for filter in [Filter::Nearest, Filter::Bilinear] {
+            let sampler = Sampler { filter, wrap_u: Wrap::Repeat, wrap_v: Wrap::Repeat };
+            let (from, to) = (Vec2::splat(k), Vec2::splat(k + 1.0));
+            assert_eq!(to - from, Vec2::ONE, "premise: exact in f32");
+            assert_quad(&format!("offset {k:e}, {filter:?}"), from, to, sampler, TexEnv::Replace);
+            let at = |from: Vec2, to: Vec2| {
+                render(
+                    &quad_scene(from, to, Rgb::ONE, sampler, TexEnv::Replace),
+                    &Options::default(),
+                )
+                .unwrap()
+                .image
+            };
+            assert!(
+                at(from, to) == at(Vec2::ZERO, Vec2::ONE),
+                "offset {k:e}, {filter:?}: not bit-identical to the offset-0 image"
+            );
+        }
+    }
 }

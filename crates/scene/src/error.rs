@@ -96,6 +96,25 @@ pub enum ErrorKind {
         /// The value as written in the file.
         got: String,
     },
+    /// A material's k_r + k_t exceeds 1 in a channel: the surface would reflect and transmit
+    /// more light than reaches it (energy conservation), and a ray tracer's tree of reflected and
+    /// refracted rays would grow without bound (the error's key is `kt`, or `kr` when `kt` is not
+    /// given).
+    ReflectanceSum {
+        /// The channel (0 red, 1 green, 2 blue).
+        channel: usize,
+        /// k_r in that channel.
+        kr: f32,
+        /// k_t in that channel.
+        kt: f32,
+    },
+    /// A window of more than [`cg_core::image::MAX_PIXELS`] pixels (each side within range).
+    TooManyPixels {
+        /// The width.
+        width: u32,
+        /// The height.
+        height: u32,
+    },
     /// A material gives `color` together with `ka` or `kd`.
     ColorWithReflectance {
         /// The other key (`ka` or `kd`).
@@ -344,6 +363,11 @@ pub enum Rule {
     NonZeroArea,
     /// `[kc, kl, kq]` all zero.
     SomeAttenuation,
+    /// At most `max` (colour values and reflectances: bounded so sums of them stay finite).
+    AtMost {
+        /// The largest allowed.
+        max: f64,
+    },
 }
 
 impl SceneError {
@@ -455,6 +479,23 @@ impl ErrorKind {
                 } else {
                     format!("{}, got {got}", rule.en())
                 }
+            }
+            ErrorKind::ReflectanceSum { channel, kr, kt } => {
+                let sum = kr + kt;
+                let c = ["r", "g", "b"].get(*channel).copied().unwrap_or("?");
+                if ja {
+                    format!(
+                        "kr + kt が {c} 成分で {kr} + {kt} = {sum} です。1 以下にしてください                         （エネルギー保存: 面が反射・透過する光は届いた光を超えられません。                         超えるとレイトレーシングの反射・屈折レイが際限なく増えます）"
+                    )
+                } else {
+                    format!(
+                        "kr + kt is {kr} + {kt} = {sum} in channel {c}: it must be at most 1                          (energy conservation: a surface cannot reflect and transmit more light than                          reaches it, and the ray tracer's reflected and refracted rays would multiply                          without bound)"
+                    )
+                }
+            }
+            ErrorKind::TooManyPixels { width, height } => {
+                let e = cg_core::image::SizeError::TooManyPixels { width: *width, height: *height };
+                e.message(lang)
             }
             ErrorKind::ColorWithReflectance { other } => {
                 if ja {
@@ -816,6 +857,7 @@ impl Rule {
             Rule::SpotCutoff => (x > 0.0 && x <= 90.0) || x == 180.0,
             Rule::GreaterThan { value, .. } => x > value,
             Rule::NotAbove { value, .. } => x <= value,
+            Rule::AtMost { max } => x <= max,
             _ => true,
         }
     }
@@ -838,6 +880,7 @@ impl Rule {
             Rule::DifferentFromTarget => "must differ from target".into(),
             Rule::NonZeroArea => "edge_u × edge_v is zero: the light has no area".into(),
             Rule::SomeAttenuation => "at least one of kc, kl, kq must be > 0".into(),
+            Rule::AtMost { max } => format!("must be at most {max:e}"),
         }
     }
 
@@ -865,6 +908,7 @@ impl Rule {
             Rule::DifferentFromTarget => "target と違う点でなければなりません".into(),
             Rule::NonZeroArea => "edge_u × edge_v が 0 で、面光源に面積がありません".into(),
             Rule::SomeAttenuation => "kc, kl, kq のどれかは 0 より大きくなければなりません".into(),
+            Rule::AtMost { max } => format!("{max:e} 以下でなければなりません"),
         }
     }
 }

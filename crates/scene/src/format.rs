@@ -26,8 +26,8 @@ use crate::{load_obj, load_texture};
 /// The only version of the format this kit reads.
 pub(crate) const FORMAT_VERSION: i64 = 1;
 
-/// Largest window side accepted, in pixels.
-const MAX_WINDOW: i64 = 16_384;
+/// Largest window side accepted, in pixels: the renderers' [`cg_core::image::MAX_SIDE`].
+const MAX_WINDOW: i64 = cg_core::image::MAX_SIDE as i64;
 
 /// Most point lights along one edge of an area light.
 const MAX_AREA_SAMPLES: u32 = 256;
@@ -250,11 +250,16 @@ fn read_window(t: &Table<'_>) -> Result<(u32, u32, Rgb), SceneError> {
     // In range 1..=16384, so the casts are exact.
     let side = |v: &Value<'_>| v.integer(1, MAX_WINDOW).map(|n| n as u32);
     let (width, height, clear_color) = COURSE_WINDOW;
-    Ok((
-        t.or("width", width, side)?,
-        t.or("height", height, side)?,
-        t.or("clear_color", clear_color, Value::color)?,
-    ))
+    let (width, height) = (t.or("width", width, side)?, t.or("height", height, side)?);
+    // Each side is in range (checked above); the renderers also bound the pixel count.
+    if u64::from(width) * u64::from(height) > cg_core::image::MAX_PIXELS {
+        let kind = ErrorKind::TooManyPixels { width, height };
+        return Err(match t.get("height").or_else(|| t.get("width")) {
+            Some(v) => v.error(kind),
+            None => t.error(kind),
+        });
+    }
+    Ok((width, height, t.or("clear_color", clear_color, Value::color)?))
 }
 
 #[derive(Clone, Copy)]
@@ -571,7 +576,7 @@ fn read_material(t: &Table<'_>) -> Result<Material, SceneError> {
         }
         None => Material::default(),
     };
-    Ok(Material {
+    let material = Material {
         ka: t.or("ka", base.ka, Value::color)?,
         kd: t.or("kd", base.kd, Value::color)?,
         ks: t.or("ks", base.ks, Value::color)?,
@@ -580,7 +585,27 @@ fn read_material(t: &Table<'_>) -> Result<Material, SceneError> {
         kt: t.or("kt", base.kt, Value::color)?,
         eta: t.or("eta", base.eta, |v| v.f32(Rule::Positive))?,
         emission: t.or("emission", base.emission, Value::color)?,
-    })
+    };
+    check_reflectance_sum(t, &material)?;
+    Ok(material)
+}
+
+/// k_r + k_t ≤ 1 in every channel (energy conservation: what a surface mirrors and transmits
+/// cannot exceed what reaches it). Summed in f64 from the f32 values, with 1e-6 of room for the
+/// decimal values that make exactly 1 (`kr = 0.1, kt = 0.9`) but not in binary. The error is at
+/// `kt`, or at `kr` when `kt` is not written.
+fn check_reflectance_sum(t: &Table<'_>, m: &Material) -> Result<(), SceneError> {
+    for channel in 0..3 {
+        let (kr, kt) = (m.kr[channel], m.kt[channel]);
+        if f64::from(kr) + f64::from(kt) > 1.0 + 1e-6 {
+            let kind = ErrorKind::ReflectanceSum { channel, kr, kt };
+            return Err(match t.get("kt").or_else(|| t.get("kr")) {
+                Some(v) => v.error(kind),
+                None => t.error(kind),
+            });
+        }
+    }
+    Ok(())
 }
 
 fn read_object(
@@ -742,6 +767,7 @@ fn read_texture(v: &Value<'_>, base: &Path) -> Result<TextureSpec, SceneError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use cg_core::lang::Lang;
 
     /// Every shipped scene passes every check that does not build a mesh. (The integration test
     /// `every_shipped_scene_loads` builds the meshes too.)
@@ -768,5 +794,54 @@ mod tests {
             }
         }
         assert!(count >= 6, "found {count} scenes in {}", dir.display());
+    }
+
+    fn read_text(text: &str) -> Result<SceneSpec, SceneError> {
+        let path = Path::new("t.toml");
+        read(&Source { text, file: path }, Path::new(""))
+    }
+
+    #[test]
+    fn reflectances_may_not_sum_above_one() {
+        // kr + kt > 1 in the green channel: an error at kt, naming the channel and the sum.
+        let text = "format = 1\n[materials.glass]\nkr = [0.1, 0.5, 0.1]\nkt = [0.9, 0.6, 0.9]\n";
+        let e = read_text(text).unwrap_err();
+        assert_eq!(e.key.as_deref(), Some("materials.glass.kt"), "{e}");
+        assert_eq!(e.position.map(|p| p.line), Some(4));
+        assert!(
+            matches!(*e.kind, ErrorKind::ReflectanceSum { channel: 1, kr, kt } if kr == 0.5 && kt == 0.6),
+            "{e}"
+        );
+        let en = e.describe(Lang::En);
+        assert!(en.contains("channel g") && en.contains("energy conservation"), "{en}");
+        assert!(e.describe(Lang::Ja).contains("エネルギー保存"), "{}", e.describe(Lang::Ja));
+        // Only kr given (a mirror of kr = 1.5): the error is at kr.
+        let e = read_text("format = 1\n[materials.m]\nkr = [1.5, 0.0, 0.0]\n").unwrap_err();
+        assert_eq!(e.key.as_deref(), Some("materials.m.kr"));
+        // Exactly 1 in decimal (0.1 + 0.9, 0.3 + 0.7) is allowed, as the shipped glass is.
+        read_text("format = 1\n[materials.g]\nkr = [0.1, 0.3, 0.5]\nkt = [0.9, 0.7, 0.5]\n")
+            .unwrap();
+        // So is an inline material of an object.
+        let inline = "format = 1\n[[objects]]\nname = \"x\"\nshape = { kind = \"lecture_pyramid\" }\nmaterial = { kr = [1, 1, 1], kt = [1, 1, 1] }\n";
+        assert!(matches!(*read_text(inline).unwrap_err().kind, ErrorKind::ReflectanceSum { .. }));
+    }
+
+    #[test]
+    fn colours_are_bounded_and_windows_have_at_most_64_m_pixels() {
+        let e = read_text("format = 1\n[[lights]]\nkind = \"point\"\nposition = [0, 1, 0]\ndiffuse = [1, 3e38, 1]\n")
+            .unwrap_err();
+        assert_eq!(e.key.as_deref(), Some("lights[0].diffuse[1]"));
+        assert!(
+            matches!(*e.kind, ErrorKind::BadValue { rule: Rule::AtMost { max }, .. } if max == 1e6),
+            "{e}"
+        );
+        assert!(e.describe(Lang::Ja).contains("以下"), "{}", e.describe(Lang::Ja));
+        read_text("format = 1\n[window]\nclear_color = [1e6, 0, 0]\n").unwrap();
+        // 16384 × 4097: each side allowed, too many pixels in all; reported at height.
+        let e = read_text("format = 1\n[window]\nwidth = 16384\nheight = 4097\n").unwrap_err();
+        assert_eq!(e.key.as_deref(), Some("window.height"), "{e}");
+        assert!(matches!(*e.kind, ErrorKind::TooManyPixels { width: 16384, height: 4097 }));
+        assert!(e.describe(Lang::En).contains("too many pixels"), "{e}");
+        read_text("format = 1\n[window]\nwidth = 16384\nheight = 4096\n").unwrap();
     }
 }

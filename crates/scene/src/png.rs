@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use cg_core::image::Image;
+use cg_core::image::{Image, to_unorm8};
 use cg_core::texture::Texture;
 
 use crate::error::{ErrorKind, SceneError};
@@ -44,7 +44,13 @@ fn header_size(bytes: &[u8]) -> Option<(u32, u32)> {
 
 /// Writes a rendered image as an 8-bit RGBA PNG. See [`crate::save_png`].
 pub(crate) fn save_png(path: &Path, image: &Image) -> Result<(), SceneError> {
-    let bytes: Vec<u8> = image.to_rgba8().into_iter().flatten().collect();
+    // One 8-bit copy, written straight from the colours (not `to_rgba8` and then a flattened
+    // second copy): 4 bytes a pixel beside the image.
+    let bytes: Vec<u8> = image
+        .pixels
+        .iter()
+        .flat_map(|c| [to_unorm8(c.x), to_unorm8(c.y), to_unorm8(c.z), 255])
+        .collect();
     image::save_buffer_with_format(
         path,
         &bytes,

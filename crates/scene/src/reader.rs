@@ -13,6 +13,12 @@ use toml::de::{DeTable, DeValue};
 
 use crate::error::{ErrorKind, Expected, Found, Position, Rule, SceneError, closest};
 
+/// The largest value of a colour channel (light colours, reflectances, the clear colour): 1e6.
+/// Sums and products of such values (a light's colour times a reflectance, over a few hundred
+/// lights and area-light samples, times the attenuation's cap of 1e6) stay far inside f32's
+/// range, so no renderer meets ∞ or NaN from scene data.
+pub(crate) const MAX_COLOR: f32 = 1.0e6;
+
 /// The text being read and the file it came from.
 pub(crate) struct Source<'a> {
     pub text: &'a str,
@@ -337,10 +343,13 @@ impl<'a> Value<'a> {
         try_normalize(v).map(|_| v).ok_or_else(|| self.bad(Rule::NonZeroVector))
     }
 
-    /// `[r, g, b]`, each finite and ≥ 0.
+    /// `[r, g, b]`, each finite, ≥ 0 and at most [`MAX_COLOR`].
     pub fn color(&self) -> Result<Rgb, SceneError> {
         let [r, g, b] = self.array_of(Expected::Color)?;
-        let channel = |v: Value<'a>| v.f32(Rule::NonNegative);
+        let channel = |v: Value<'a>| {
+            let x = v.f32(Rule::NonNegative)?;
+            if x <= MAX_COLOR { Ok(x) } else { Err(v.bad(Rule::AtMost { max: MAX_COLOR.into() })) }
+        };
         Ok(Rgb::new(channel(r)?, channel(g)?, channel(b)?))
     }
 

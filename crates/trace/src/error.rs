@@ -2,24 +2,32 @@
 
 use std::fmt;
 
+use cg_core::image::SizeError;
 use cg_core::lang::Lang;
 use cg_core::scene::PrepareError;
 use cg_core::transform::TransformError;
 
-use crate::options::{MAX_DEPTH_LIMIT, MAX_SIZE};
+use crate::options::MAX_DEPTH_LIMIT;
 
 /// Why [`crate::render`] (or [`crate::Tracer::new`]) refused a scene or its options.
 #[derive(Clone, Debug, PartialEq)]
 pub enum TraceError {
-    /// The image has no pixels.
+    /// The image has no pixels ([`SizeError::ZeroSize`]).
     ZeroSize {
         /// Width asked for.
         width: u32,
         /// Height asked for.
         height: u32,
     },
-    /// A side longer than [`MAX_SIZE`].
+    /// A side longer than [`crate::MAX_SIZE`] ([`SizeError::TooLarge`]).
     TooLarge {
+        /// Width asked for.
+        width: u32,
+        /// Height asked for.
+        height: u32,
+    },
+    /// More than [`cg_core::image::MAX_PIXELS`] pixels in all ([`SizeError::TooManyPixels`]).
+    TooManyPixels {
         /// Width asked for.
         width: u32,
         /// Height asked for.
@@ -60,33 +68,33 @@ pub enum TraceError {
     },
 }
 
+impl From<SizeError> for TraceError {
+    fn from(e: SizeError) -> TraceError {
+        match e {
+            SizeError::ZeroSize { width, height } => TraceError::ZeroSize { width, height },
+            SizeError::TooLarge { width, height } => TraceError::TooLarge { width, height },
+            SizeError::TooManyPixels { width, height } => {
+                TraceError::TooManyPixels { width, height }
+            }
+        }
+    }
+}
+
 impl TraceError {
     /// The message for a student in `lang`. (`Display` gives the English one.)
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
         let ja = lang == Lang::Ja;
         match self {
-            TraceError::ZeroSize { width, height } => {
-                if ja {
-                    format!(
-                        "画像の大きさ {width}×{height} に画素がありません（幅も高さも 1 以上にしてください）"
-                    )
-                } else {
-                    format!(
-                        "the image size {width}×{height} has no pixels: width and height must be at least 1"
-                    )
-                }
+            // The size messages are core's, shared with the rasterizer.
+            &TraceError::ZeroSize { width, height } => {
+                SizeError::ZeroSize { width, height }.message(lang)
             }
-            TraceError::TooLarge { width, height } => {
-                if ja {
-                    format!(
-                        "画像の大きさ {width}×{height} が大きすぎます（一辺 {MAX_SIZE} 画素まで）"
-                    )
-                } else {
-                    format!(
-                        "the image size {width}×{height} is too large (at most {MAX_SIZE} pixels a side)"
-                    )
-                }
+            &TraceError::TooLarge { width, height } => {
+                SizeError::TooLarge { width, height }.message(lang)
+            }
+            &TraceError::TooManyPixels { width, height } => {
+                SizeError::TooManyPixels { width, height }.message(lang)
             }
             TraceError::MaxDepth { max_depth } => {
                 if ja {

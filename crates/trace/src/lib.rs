@@ -21,7 +21,7 @@
 //! |---|---|---|
 //! | `generate_ray` | [`RayCamera::generate_ray`] | the primary ray through pixel centre `(x + ½, y + ½)`, row 0 at the top, unprojected by the rasterizer's `(P·V)⁻¹` and limited to the near…far range, so both images align pixel for pixel |
 //! | `intersect` | [`Tracer::intersect`] | exact spheres and planes ([`cg_core::scene::Analytic`]) by the inverse model matrix; triangles through a binned-SAH [`bvh::Bvh`] with the watertight test of Woop et al. 2013 ([`triangle`]) |
-//! | `shade` | [`Tracer::shade`] | [`cg_core::light::shade_with_visibility`] with one shadow ray per point light or area-light sample, the texture, and the global terms |
+//! | `shade` | [`Tracer::shade`] | [`cg_core::light::shade_with_visibility_counted`] with one shadow ray per point light or area-light sample, the texture ([`cg_core::texture::TexEnv::apply`]), and the global terms |
 //! | `trace` | [`Tracer::trace`] | `intersect` then `shade`, or the background (glClearColor) for a ray that escapes |
 //!
 //! ## How k_r, k_t and Fresnel combine
@@ -51,15 +51,37 @@
 //! reflections darkens rather than showing the sky. A ray whose accumulated weight falls below
 //! [`Options::min_weight`] is not cast either (adaptive depth control; see there).
 //!
+//! Each pixel may cast at most [`Options::ray_budget`] reflected and refracted rays in all
+//! (default [`DEFAULT_RAY_BUDGET`], 256; the ray tree of the default depth 5 has at most 62):
+//! with k_r + k_t > 1 in some channel — the scene loader refuses such materials (energy
+//! conservation), a program can still build them — path weights never shrink, `min_weight`
+//! cannot prune, and the tree would grow as 2^depth. Rays beyond the budget are not cast and are
+//! counted in [`Stats::rays_over_budget`].
+//!
 //! ## Shadows and the local model
 //!
-//! The local terms are [`cg_core::light::shade_with_visibility`]'s, with V from
+//! The local terms are [`cg_core::light::shade_with_visibility_counted`]'s, with V from
 //! [`cg_core::light::LightModel::view_vector`] for primary rays (as the rasterizer) and towards
-//! the previous hit for reflected and refracted rays. Visibility is 0 or 1: one shadow ray towards
-//! each point light and each area-light sample, ending just short of the light
-//! ([`world::SHADOW_EPSILON`]); towards a directional light it runs to infinity. Every surface
-//! blocks light, glass included (Whitted's tracer scaled by k_t; this one does not). Surfaces
-//! are lit from the side the ray arrives on (two-sided lighting).
+//! where the ray came from (`−d`) for reflected and refracted rays. Visibility is 0 or 1: one
+//! shadow ray from the hit point towards each point light and each area-light sample, ending
+//! just short of the light ([`world::SHADOW_EPSILON`]), so nothing beyond a light shadows it;
+//! towards a directional light it runs to infinity. Every surface blocks light, glass included
+//! (Whitted's tracer scaled by k_t; this one does not).
+//!
+//! Lighting is **one-sided**, as in the rasterizer and in OpenGL (GL_LIGHT_MODEL_TWO_SIDE off):
+//! a surface is lit with its outward normal also where a ray sees its back (a back face with
+//! culling off, the inside of a glass sphere), so light from the far side adds nothing there.
+//!
+//! Shading modes ([`Output::shading`] says which was done): **Phong** lights every hit point
+//! with the interpolated normal; **Flat** lights each triangle once, at its centroid, with its
+//! face normal — as the rasterizer does — so a face has one colour (shadows still fall per
+//! point); **Gouraud** is traced as Phong (a ray tracer lights the points it hits and has no
+//! vertex colours to interpolate). Exact spheres and planes have no faces and are lit at every
+//! hit point in every mode.
+//!
+//! A shaded colour is never NaN or ±∞: NaN (0·∞ from colours beyond f32's range, which only a
+//! program can set — the loader bounds colours to 1e6) becomes 0, ±∞ the largest finite f32,
+//! before `shade` returns it.
 //!
 //! ## Only what the scene needs
 //!
@@ -68,7 +90,9 @@
 //!   opaque scene, and [`Output::features`] says so);
 //! - no shadow ray for a light that cannot add diffuse or specular light at the point: behind the
 //!   surface (`N·L ≤ 0`), or with colours that meet a zero k_d and k_s;
-//! - no attenuation for directional lights (the core light model's rule);
+//! - no attenuation for directional lights (the core light model's rule), and no specular term
+//!   where k_s = 0 — both counted where the light model does the work
+//!   ([`Stats::specular_evaluations`], [`Stats::attenuation_evaluations`]);
 //! - no triangles for spheres and the ground: they are intersected exactly (unless
 //!   [`Options::analytic`] is off).
 //!
@@ -78,7 +102,9 @@
 //! its magnitude ([`ray`], after pbrt), so they never hit it again; the triangle test is
 //! watertight, so rays do not slip through shared edges; every stage boundary
 //! `debug_assert!`s finiteness, and invalid input is a [`TraceError`] with a message in Japanese
-//! and English. The image and the [`Stats`] are the same whatever the thread count.
+//! and English (an image has at most [`cg_core::image::MAX_SIDE`] pixels a side and
+//! [`cg_core::image::MAX_PIXELS`] in all). The image and the [`Stats`] are the same whatever the
+//! thread count.
 //!
 //! ```
 //! use cg_core::scene::Scene;
@@ -105,7 +131,7 @@ pub mod world;
 
 pub use camera::RayCamera;
 pub use error::TraceError;
-pub use options::{Fresnel, MAX_DEPTH_LIMIT, MAX_SIZE, Options};
+pub use options::{DEFAULT_RAY_BUDGET, Fresnel, MAX_DEPTH_LIMIT, MAX_SIZE, Options};
 pub use ray::Ray;
 pub use stats::Stats;
 pub use tracer::{GlobalRays, Output, Spawned, Tracer, Weights};
@@ -116,7 +142,7 @@ use cg_core::scene::Scene;
 /// Ray-traces `scene` with `options`: [`Tracer::new`] then [`Tracer::render`].
 ///
 /// # Errors
-/// See [`Tracer::new`]: a zero or too large size, a bad option, an invalid camera or projection,
+/// See [`Tracer::new`]: a zero or too large size (a side, or the pixel count), a bad option, an invalid camera or projection,
 /// an object that cannot be prepared, placed or textured, or worker threads that cannot start.
 pub fn render(scene: &Scene, options: &Options) -> Result<Output, TraceError> {
     Ok(Tracer::new(scene, options)?.render())

@@ -6,8 +6,14 @@ use cg_core::scene::Shading;
 /// than a stack overflow or a run that never ends.
 pub const MAX_DEPTH_LIMIT: u32 = 64;
 
-/// The largest image side the tracer renders, in pixels.
-pub const MAX_SIZE: u32 = 16_384;
+/// The largest image side the tracer renders, in pixels: [`cg_core::image::MAX_SIDE`]. An image
+/// also has at most [`cg_core::image::MAX_PIXELS`] pixels in all.
+pub const MAX_SIZE: u32 = cg_core::image::MAX_SIDE;
+
+/// The default [`Options::ray_budget`]: 256 reflected and refracted rays per pixel. At the
+/// default depth 5 a pixel's tree has at most 2 + 4 + … + 32 = 62 of them, so the budget never
+/// binds there; it stops trees that would otherwise grow as 2^depth.
+pub const DEFAULT_RAY_BUDGET: u32 = 256;
 
 /// Which Fresnel reflectance splits k_t's share between reflection and transmission.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -52,9 +58,11 @@ pub struct Options {
     /// Worker threads; `None` (or `Some(0)`): rayon's global pool, one per core. The image is
     /// the same whatever the count.
     pub threads: Option<usize>,
-    /// Override the scene's shading mode. The tracer lights every hit point: `Flat` uses the
-    /// face normal, `Gouraud` and `Phong` the interpolated vertex normals (a ray tracer has no
-    /// vertex colours to interpolate, so Gouraud is traced as Phong).
+    /// Override the scene's shading mode. `Flat` lights each triangle once, at its centroid,
+    /// with its face normal (as the rasterizer); `Gouraud` and `Phong` light every hit point with
+    /// the interpolated vertex normals (a ray tracer has no vertex colours to interpolate, so
+    /// Gouraud is traced as Phong, and [`crate::Output::shading`] says so). Exact spheres and
+    /// planes have no faces: they are lit at every hit point in every mode.
     pub shading: Option<Shading>,
     /// Adaptive depth control (Hall and Greenberg, 1983): a reflected or transmitted ray whose
     /// weight along its path (the product of the k_r / k_t·F factors that lead to it, largest
@@ -62,6 +70,14 @@ pub struct Options {
     /// default `1/1024` is a quarter of one 8-bit step, so what is left out changes a pixel by at
     /// most a quarter step per pruned ray (for colours ≤ 1). `0`: prune nothing, pure Whitted.
     pub min_weight: f32,
+    /// The most reflected and refracted rays one pixel may cast, over its whole ray tree
+    /// (default [`DEFAULT_RAY_BUDGET`]). The tree is traced depth first, the reflected ray before
+    /// the refracted one at each hit; once a pixel's budget is spent, its remaining global rays
+    /// are not cast (their terms are 0, counted in [`crate::Stats::rays_over_budget`]). This
+    /// bounds the work per pixel whatever the scene: with k_r + k_t > 1 (scenes built in code;
+    /// the scene loader refuses them) path weights do not shrink, [`Options::min_weight`] cannot
+    /// prune, and the tree would grow as 2^depth. `0`: no global rays at all.
+    pub ray_budget: u32,
 }
 
 impl Default for Options {
@@ -75,6 +91,7 @@ impl Default for Options {
             threads: None,
             shading: None,
             min_weight: 1.0 / 1024.0,
+            ray_budget: DEFAULT_RAY_BUDGET,
         }
     }
 }

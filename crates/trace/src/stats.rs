@@ -17,6 +17,18 @@ pub struct Stats {
     /// Reflected or transmitted rays not cast because their path weight was below
     /// [`crate::Options::min_weight`].
     pub pruned_rays: u64,
+    /// Reflected or transmitted rays not cast because their pixel had used up its
+    /// [`crate::Options::ray_budget`].
+    pub rays_over_budget: u64,
+    /// Evaluations of the local light model (one per hit shaded).
+    pub lighting_evaluations: u64,
+    /// Specular terms computed by the light model (per hit, one per point light or area-light
+    /// sample that reaches it and is not in shadow, when k_s ≠ 0), counted inside
+    /// [`cg_core::light::shade_with_visibility_counted`].
+    pub specular_evaluations: u64,
+    /// Distance attenuations computed by the light model (never for directional lights or
+    /// OpenGL's default (1, 0, 0)), counted inside it.
+    pub attenuation_evaluations: u64,
     /// `hits_per_depth[d]`: rays of depth `d` (0 = primary) that hit a surface. Its length is
     /// one more than the deepest hit.
     pub hits_per_depth: Vec<u64>,
@@ -27,6 +39,13 @@ pub struct Stats {
 }
 
 impl Stats {
+    /// Adds what the light model counted at one hit ([`cg_core::light::LightCounts`]).
+    pub(crate) fn add_lighting(&mut self, counts: &cg_core::light::LightCounts) {
+        self.lighting_evaluations += counts.evaluations;
+        self.specular_evaluations += counts.specular;
+        self.attenuation_evaluations += counts.attenuations;
+    }
+
     /// Counts a hit by a ray of depth `depth`.
     pub fn count_hit(&mut self, depth: u32) {
         let d = depth as usize;
@@ -44,6 +63,10 @@ impl Stats {
         self.refraction_rays += other.refraction_rays;
         self.total_internal_reflections += other.total_internal_reflections;
         self.pruned_rays += other.pruned_rays;
+        self.rays_over_budget += other.rays_over_budget;
+        self.lighting_evaluations += other.lighting_evaluations;
+        self.specular_evaluations += other.specular_evaluations;
+        self.attenuation_evaluations += other.attenuation_evaluations;
         if self.hits_per_depth.len() < other.hits_per_depth.len() {
             self.hits_per_depth.resize(other.hits_per_depth.len(), 0);
         }
@@ -65,6 +88,13 @@ impl Stats {
             (t("屈折レイ", "refraction rays"), self.refraction_rays),
             (t("全反射", "total internal reflections"), self.total_internal_reflections),
             (t("省略したレイ（重みが小さい）", "pruned rays (small weight)"), self.pruned_rays),
+            (
+                t("省略したレイ（画素ごとの上限）", "rays over the per-pixel budget"),
+                self.rays_over_budget,
+            ),
+            (t("光源処理", "lighting evaluations"), self.lighting_evaluations),
+            (t("鏡面反射光", "specular evaluations"), self.specular_evaluations),
+            (t("距離による減衰", "attenuation evaluations"), self.attenuation_evaluations),
             (t("最も深いレイ", "deepest ray"), u64::from(self.deepest_ray)),
             (t("BVH ノードの判定", "BVH nodes visited"), self.bvh_nodes_visited),
         ];

@@ -4,17 +4,16 @@
 use cg_core::Rgb;
 use cg_core::features::Features;
 use cg_core::glam::Vec3;
-use cg_core::image::Image;
-use cg_core::light::{Light, Material, shade_with_visibility};
+use cg_core::image::{Image, check_size};
+use cg_core::light::{Light, LightCounts, Material, shade_with_visibility_counted};
 use cg_core::optics::{Interface, reflect, refract};
-use cg_core::scene::Scene;
-use cg_core::texture::TexEnv;
+use cg_core::scene::{Scene, Shading};
 use cg_core::transform::TransformError;
 use rayon::prelude::*;
 
 use crate::camera::RayCamera;
 use crate::error::TraceError;
-use crate::options::{MAX_DEPTH_LIMIT, MAX_SIZE, Options};
+use crate::options::{MAX_DEPTH_LIMIT, Options};
 use crate::ray::Ray;
 use crate::stats::Stats;
 use crate::world::{Hit, World};
@@ -29,6 +28,12 @@ pub struct Output {
     /// The parts of the light model this render used: the scene's [`Scene::features`], with
     /// reflection and transmission off when `max_depth` is 0.
     pub features: Features,
+    /// The shading the tracer did: [`Shading::Flat`] (each triangle lit once, at its centroid,
+    /// with its face normal) or [`Shading::Phong`] (every hit point lit with the interpolated
+    /// normal). [`Shading::Gouraud`] is traced as Phong — a ray tracer lights the points its rays
+    /// hit and has no vertex colours to interpolate — so a render asked for Gouraud says Phong
+    /// here.
+    pub shading: Shading,
 }
 
 /// How k_r, k_t and the Fresnel reflectance F share a hit's global terms (see the crate docs):
@@ -90,6 +95,7 @@ pub struct Tracer<'s> {
     /// The eye for the local viewer's V (the rasterizer's: [`cg_core::scene::Camera::eye_position`]).
     eye: Vec3,
     features: Features,
+    shading: Shading,
     pool: Option<rayon::ThreadPool>,
 }
 
@@ -98,20 +104,15 @@ impl<'s> Tracer<'s> {
     /// the BVH, and sets up the camera.
     ///
     /// # Errors
-    /// [`TraceError::ZeroSize`], [`TraceError::TooLarge`], [`TraceError::MaxDepth`],
-    /// [`TraceError::MinWeight`] for bad options; [`TraceError::Camera`] and
+    /// [`TraceError::ZeroSize`], [`TraceError::TooLarge`], [`TraceError::TooManyPixels`],
+    /// [`TraceError::MaxDepth`], [`TraceError::MinWeight`] for bad options; [`TraceError::Camera`] and
     /// [`TraceError::Projection`] for an invalid view or projection; [`TraceError::Prepare`] for
     /// an object that cannot be prepared; [`TraceError::Geometry`] and [`TraceError::Texture`]
     /// for objects the tracer cannot place or texture; [`TraceError::Threads`] when the
     /// requested worker threads cannot start.
     pub fn new(scene: &'s Scene, options: &Options) -> Result<Tracer<'s>, TraceError> {
         let (width, height) = options.size.unwrap_or((scene.width, scene.height));
-        if width == 0 || height == 0 {
-            return Err(TraceError::ZeroSize { width, height });
-        }
-        if width > MAX_SIZE || height > MAX_SIZE {
-            return Err(TraceError::TooLarge { width, height });
-        }
+        check_size(width, height)?;
         if options.max_depth > MAX_DEPTH_LIMIT {
             return Err(TraceError::MaxDepth { max_depth: options.max_depth });
         }
@@ -128,8 +129,12 @@ impl<'s> Tracer<'s> {
             }),
         )?;
         let prepared = scene.prepare().map_err(TraceError::Prepare)?;
-        let shading = options.shading.unwrap_or(scene.shading);
-        let world = World::build(&prepared, &scene.textures, options.analytic, shading)?;
+        // Gouraud is traced as Phong (see `Output::shading`).
+        let shading = match options.shading.unwrap_or(scene.shading) {
+            Shading::Flat => Shading::Flat,
+            Shading::Gouraud | Shading::Phong => Shading::Phong,
+        };
+        let world = World::build(prepared, &scene.textures, options.analytic, shading)?;
         let mut features = scene.features();
         features.reflection &= options.max_depth > 0;
         features.transmission &= options.max_depth > 0;
@@ -151,8 +156,16 @@ impl<'s> Tracer<'s> {
             height,
             eye: scene.camera.eye_position(),
             features,
+            shading,
             pool,
         })
+    }
+
+    /// The shading mode traced: Flat or Phong (Gouraud is traced as Phong; see
+    /// [`Output::shading`]).
+    #[must_use]
+    pub fn shading(&self) -> Shading {
+        self.shading
     }
 
     /// The image size `(width, height)`.
@@ -188,66 +201,78 @@ impl<'s> Tracer<'s> {
 
     /// `trace`: the colour seen along `ray`, a ray of depth `depth` (0 = primary): the
     /// background (glClearColor) when it escapes, else [`Tracer::shade`] at its closest hit.
-    /// Not clamped.
+    /// Not clamped; finite (see [`Tracer::shade`]). Its reflected and refracted rays share one
+    /// [`Options::ray_budget`].
     pub fn trace(&self, ray: &Ray, depth: u32, stats: &mut Stats) -> Rgb {
-        self.trace_path(ray, depth, Rgb::ONE, stats)
+        let mut budget = self.options.ray_budget;
+        self.trace_path(ray, depth, Rgb::ONE, &mut budget, stats)
     }
 
     /// `shade`: the colour at `hit` seen along `ray` (of depth `depth`): the local light model
     /// with shadow rays, textured, plus the global terms `k_r·I_r + k_t·I_t` traced one level
-    /// deeper while `depth < max_depth` (see the crate docs). Not clamped.
+    /// deeper while `depth < max_depth` (see the crate docs), at most [`Options::ray_budget`]
+    /// reflected and refracted rays in all. Not clamped, but never NaN or ±∞: a NaN channel
+    /// (0·∞ from colours beyond f32's range) becomes 0 and ±∞ the largest finite f32.
     pub fn shade(&self, ray: &Ray, hit: &Hit, depth: u32, stats: &mut Stats) -> Rgb {
-        self.shade_path(ray, hit, depth, Rgb::ONE, stats)
+        let mut budget = self.options.ray_budget;
+        self.shade_path(ray, hit, depth, Rgb::ONE, &mut budget, stats)
     }
 
-    fn trace_path(&self, ray: &Ray, depth: u32, weight: Rgb, stats: &mut Stats) -> Rgb {
+    fn trace_path(
+        &self,
+        ray: &Ray,
+        depth: u32,
+        weight: Rgb,
+        budget: &mut u32,
+        stats: &mut Stats,
+    ) -> Rgb {
         stats.deepest_ray = stats.deepest_ray.max(depth);
         match self.intersect(ray, stats) {
             None => self.scene.clear_color,
             Some(hit) => {
                 stats.count_hit(depth);
-                self.shade_path(ray, &hit, depth, weight, stats)
+                self.shade_path(ray, &hit, depth, weight, budget, stats)
             }
         }
     }
 
-    fn shade_path(&self, ray: &Ray, hit: &Hit, depth: u32, weight: Rgb, stats: &mut Stats) -> Rgb {
+    fn shade_path(
+        &self,
+        ray: &Ray,
+        hit: &Hit,
+        depth: u32,
+        weight: Rgb,
+        budget: &mut u32,
+        stats: &mut Stats,
+    ) -> Rgb {
         let surface = &self.world.surfaces[hit.object];
-        let base = surface.material();
         // Vertex colours set k_a and k_d (glColor under GL_COLOR_MATERIAL).
-        let colored;
-        let material = match hit.color {
-            Some(c) => {
-                colored = Material { ka: c, kd: c, ..base.clone() };
-                &colored
-            }
-            None => base,
-        };
-        // Two-sided lighting: the normal on the side the ray came from.
-        let n = if hit.is_front(ray.direction) { hit.shading_normal } else { -hit.shading_normal };
+        let material = &surface.material().with_color(hit.color);
+        // One-sided lighting, as the rasterizer and OpenGL (GL_LIGHT_MODEL_TWO_SIDE off): the
+        // outward normal also where a ray sees the back of a surface.
+        let n = hit.shading_normal;
         // V: the rasterizer's for primary rays; towards where the ray came from for the others.
         let v = if depth == 0 {
-            self.scene.light_model.view_vector(hit.p, self.eye, self.camera.backward())
+            self.scene.light_model.view_vector(hit.lit_at, self.eye, self.camera.backward())
         } else {
             -ray.direction
         };
-        let terms = shade_with_visibility(
+        let mut counts = LightCounts::default();
+        let terms = shade_with_visibility_counted(
             self.scene.light_model,
             self.scene.global_ambient,
             &self.scene.lights,
             material,
-            hit.p,
+            hit.lit_at,
             n,
             v,
             |light, l, distance| self.visibility(hit, n, material, light, l, distance, stats),
+            &mut counts,
         );
+        stats.add_lighting(&counts);
         let mut color = terms.total();
         if let (Some((texture, sampler, env)), Some(uv)) = (surface.texture, hit.uv) {
-            let texel = texture.sample(uv, sampler).truncate();
-            color = match env {
-                TexEnv::Modulate => color * texel,
-                TexEnv::Replace => texel,
-            };
+            color = env.apply(color, texture.sample(uv, sampler));
         }
         if depth < self.options.max_depth {
             let global = self.global_rays(ray, hit);
@@ -259,23 +284,32 @@ impl<'s> Tracer<'s> {
                     stats.pruned_rays += 1;
                     continue;
                 }
+                if *budget == 0 {
+                    stats.rays_over_budget += 1;
+                    continue;
+                }
+                *budget -= 1;
                 if reflection {
                     stats.reflection_rays += 1;
                 } else {
                     stats.refraction_rays += 1;
                 }
-                color += spawned.weight * self.trace_path(&spawned.ray, depth + 1, path, stats);
+                let seen = self.trace_path(&spawned.ray, depth + 1, path, budget, stats);
+                color += spawned.weight * seen;
             }
         }
+        let color = finite(color);
         debug_assert!(color.is_finite(), "shade gave {color} at {hit:?}");
         color
     }
 
     /// The visibility of one point light (or area-light sample) from `hit`, for
-    /// [`shade_with_visibility`]: 1 or 0 by a shadow ray up to the light's distance. No ray
-    /// is cast when shadows are off (1), or when the light cannot add diffuse or specular
-    /// light here — it is behind the surface (`N·L ≤ 0`: both terms are 0 there) or its colours
-    /// meet a zero k_d and k_s — (0, which changes nothing).
+    /// [`shade_with_visibility_counted`]: 1 or 0 by a shadow ray from the hit point up to the
+    /// light (to ∞ for a directional light). No ray is cast when shadows are off (1), or when the
+    /// light cannot add diffuse or specular light here — it is behind the surface (`N·L ≤ 0`:
+    /// both terms are 0 there) or its colours meet a zero k_d and k_s — (0, which changes
+    /// nothing). `l` and `distance` are as the light model sees the light from [`Hit::lit_at`];
+    /// the shadow ray itself starts at the hit point and aims at the light from there.
     #[allow(clippy::too_many_arguments)]
     fn visibility(
         &self,
@@ -297,6 +331,8 @@ impl<'s> Tracer<'s> {
             return 0.0;
         }
         stats.shadow_rays += 1;
+        // From the hit point (the same as from `lit_at`, bit for bit, except under flat shading).
+        let (l, distance) = light.direction_from(hit.p).unwrap_or((l, distance));
         let ray = hit.spawn_shadow_ray(l, distance);
         if self.world.occluded(&ray, &mut stats.bvh_nodes_visited) { 0.0 } else { 1.0 }
     }
@@ -386,7 +422,8 @@ impl<'s> Tracer<'s> {
     }
 
     /// Renders the whole image: every pixel's primary ray traced, rows spread over the worker
-    /// threads (the image and the counts do not depend on how many).
+    /// threads (the image and the counts do not depend on how many). Each pixel has its own
+    /// [`Options::ray_budget`].
     #[must_use]
     pub fn render(&self) -> Output {
         let run = || {
@@ -419,6 +456,15 @@ impl<'s> Tracer<'s> {
             image: Image { width: self.width, height: self.height, pixels },
             stats,
             features: self.features,
+            shading: self.shading,
         }
     }
+}
+
+/// `c` with every channel finite: NaN becomes 0, ±∞ the largest finite f32 of its sign (the
+/// image clamps to `[0, 1]` at the end anyway). Colours beyond f32's range come only from scenes
+/// built in code (the scene loader bounds colours to `1e6`).
+fn finite(c: Rgb) -> Rgb {
+    let channel = |x: f32| if x.is_nan() { 0.0 } else { x.clamp(-f32::MAX, f32::MAX) };
+    Rgb::new(channel(c.x), channel(c.y), channel(c.z))
 }

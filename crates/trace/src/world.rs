@@ -20,17 +20,24 @@
 //! ## Triangles
 //!
 //! Every other object's prepared mesh ([`cg_core::scene::Scene::prepare`]) is taken to world
-//! space once (positions by the model matrix in f64, vertex normals by the cofactor normal
-//! matrix, both negated back under a mirroring transform, whose corners are also reordered so
-//! every face stays counter-clockwise from outside). Degenerate faces (no [`face_normal`]) are
-//! left out: they have no area to hit. All triangles of all objects share one [`Bvh`].
+//! space once (positions by the model matrix in f64, vertex normals by
+//! [`Prepared::world_normal`]: the cofactor normal matrix, negated back under a mirroring
+//! transform, whose corners are also reordered so every face stays counter-clockwise from
+//! outside). Degenerate faces (no [`face_normal`]) are left out: they have no area to hit. All
+//! triangles of all objects share one [`Bvh`].
+//!
+//! Texture coordinates are interpolated after the integer [`Sampler::repeat_origin`] of the
+//! face's first corner is taken off them (NUMERICS row 23: coordinates near 1e6 keep their
+//! precision under repeat).
+//!
+//! Under flat shading a triangle is lit once, at its centroid, with its face normal
+//! ([`Hit::lit_at`]), as the rasterizer lights it.
 
 use cg_core::Rgb;
-use cg_core::glam::{DMat4, DVec3, Mat3, Vec2, Vec3};
+use cg_core::glam::{DMat4, DVec3, Vec2, Vec3};
 use cg_core::light::Material;
-use cg_core::math::try_normalize;
 use cg_core::normals::{face_normal, interpolate_normal};
-use cg_core::scene::{Analytic, Object, Prepared, Shading};
+use cg_core::scene::{Analytic, Prepared, Shading};
 use cg_core::texture::{Sampler, TexEnv, Texture};
 
 use crate::bvh::Bvh;
@@ -52,7 +59,9 @@ pub enum Primitive {
     Triangle {
         /// The face (F-number) in the prepared mesh.
         face: usize,
-        /// Barycentric weights of the face's three corners, in the mesh's order.
+        /// Barycentric weights of the face's three corners, in the order of the prepared mesh's
+        /// face (`mesh.faces[face]`) — also for a mirrored object, whose corners the tracer
+        /// reorders internally: `Σ barycentric[i]·p_world(corner i)` is the hit point.
         barycentric: Vec3,
     },
 }
@@ -74,6 +83,10 @@ pub struct Hit {
     /// normal under flat shading, the interpolated vertex normals ([`interpolate_normal`])
     /// otherwise.
     pub shading_normal: Vec3,
+    /// Where the local light model is evaluated: the hit point `p`, except for a triangle under
+    /// flat shading, which is lit once at its centroid (as the rasterizer's flat shading lights
+    /// it), so the whole face has one colour. Shadow rays still start at `p`.
+    pub lit_at: Vec3,
     /// The texture coordinate, when the surface has them (a plane; a mesh with uvs).
     pub uv: Option<Vec2>,
     /// The interpolated vertex colour, when the mesh has colours (they set k_a and k_d, as
@@ -120,38 +133,39 @@ struct Placed {
     /// `|A|` and `|T|` of the model matrix, for the error bound.
     abs_linear: [DVec3; 3],
     abs_translation: DVec3,
-    normal_matrix: Mat3,
-    /// −1 under a mirroring model matrix (the cofactor normals point inwards there), else +1.
-    orientation: f32,
 }
 
 /// One scene object as the tracer sees it.
 #[derive(Debug)]
 pub(crate) struct Surface<'s> {
-    pub(crate) object: &'s Object,
+    /// The object made ready: its mesh (texture coordinates and colours are read from it), model
+    /// matrix and normal transform.
+    pub(crate) prepared: Prepared<'s>,
     pub(crate) texture: Option<(&'s Texture, Sampler, TexEnv)>,
     /// k_t = 0: a back-face-culled primary ray passes through its back faces.
     opaque: bool,
     placed: Option<Placed>,
-    /// Triangle data in world space (empty for exact surfaces).
+    /// The prepared mesh's faces, corners reordered `[a, c, b]` for a mirrored object so that
+    /// every face is counter-clockwise from outside in world space (empty for exact surfaces).
     faces: Vec<[u32; 3]>,
+    /// Vertex normals in world space ([`Prepared::world_normal`]).
     normals: Vec<Vec3>,
-    uvs: Option<Vec<Vec2>>,
-    colors: Option<Vec<Vec3>>,
 }
 
 impl Surface<'_> {
     pub(crate) fn material(&self) -> &Material {
-        &self.object.material
+        &self.prepared.object.material
     }
 }
 
-/// A triangle's owner, its face in the owner's prepared mesh, and its outward unit normal.
+/// A triangle's owner, its face in the owner's prepared mesh, its outward unit normal, and
+/// (flat shading) its centroid.
 #[derive(Clone, Copy, Debug)]
 struct TriangleInfo {
     object: u32,
     face: u32,
     n_g: Vec3,
+    centroid: Vec3,
 }
 
 /// Everything a ray can hit.
@@ -169,16 +183,17 @@ impl<'s> World<'s> {
     /// The world of `prepared` objects: exact surfaces where `analytic` allows, triangles in one
     /// BVH otherwise. `textures` are the scene's.
     pub(crate) fn build(
-        prepared: &[Prepared<'s>],
+        prepared: Vec<Prepared<'s>>,
         textures: &'s [Texture],
         analytic: bool,
         shading: Shading,
     ) -> Result<World<'s>, TraceError> {
+        let flat = shading == Shading::Flat;
         let mut surfaces = Vec::with_capacity(prepared.len());
         let mut exact = Vec::new();
         let mut corners = Vec::new();
         let mut triangles = Vec::new();
-        for (index, prep) in prepared.iter().enumerate() {
+        for (index, prep) in prepared.into_iter().enumerate() {
             let object = prep.object;
             let texture = match &object.texture {
                 Some(t) => Some((
@@ -191,7 +206,6 @@ impl<'s> World<'s> {
                 )),
                 None => None,
             };
-            let orientation = if prep.mirrored { -1.0 } else { 1.0 };
             let model = prep.model.as_dmat4();
             let placed = object.analytic.filter(|_| analytic).and_then(|shape| {
                 let world_to_model = model.inverse();
@@ -205,23 +219,20 @@ impl<'s> World<'s> {
                         model.z_axis.truncate().abs(),
                     ],
                     abs_translation: model.w_axis.truncate().abs(),
-                    normal_matrix: prep.normal_matrix,
-                    orientation,
                 })
             });
             let mut surface = Surface {
-                object,
-                texture,
                 opaque: object.material.kt == Rgb::ZERO,
+                texture,
                 placed,
                 faces: Vec::new(),
                 normals: Vec::new(),
-                uvs: None,
-                colors: None,
+                prepared: prep,
             };
             if surface.placed.is_some() {
                 exact.push(index);
             } else {
+                let prep = &surface.prepared;
                 let mesh = &prep.mesh;
                 let to_world = |p: Vec3| model.transform_point3(p.as_dvec3()).as_vec3();
                 let positions: Vec<Vec3> = mesh.positions.iter().map(|&p| to_world(p)).collect();
@@ -229,32 +240,34 @@ impl<'s> World<'s> {
                     return Err(TraceError::Geometry { object: object.name.clone() });
                 }
                 let normals = mesh.normals.as_deref().unwrap_or(&[]);
-                surface.normals = normals
-                    .iter()
-                    .map(|&n| {
-                        try_normalize(prep.normal_matrix * n)
-                            .map_or(Vec3::ZERO, |n| orientation * n)
-                    })
-                    .collect();
-                surface.uvs.clone_from(&mesh.uvs);
-                surface.colors.clone_from(&mesh.colors);
+                let world_normals =
+                    normals.iter().map(|&n| prep.world_normal(n).unwrap_or(Vec3::ZERO)).collect();
                 // A mirror turns the winding: reorder so every face is counter-clockwise again.
-                surface.faces = mesh
+                let faces: Vec<[u32; 3]> = mesh
                     .faces
                     .iter()
                     .map(|&[a, b, c]| if prep.mirrored { [a, c, b] } else { [a, b, c] })
                     .collect();
-                for (face, f) in surface.faces.iter().enumerate() {
+                for (face, f) in faces.iter().enumerate() {
                     let p = f.map(|i| positions[i as usize]);
                     let Some(n_g) = face_normal(p[0], p[1], p[2]) else { continue };
+                    // The rasterizer's centroid: the mean of the corners in world space.
+                    let centroid = if flat { (p[0] + p[1] + p[2]) / 3.0 } else { Vec3::ZERO };
                     corners.push(p);
-                    triangles.push(TriangleInfo { object: index as u32, face: face as u32, n_g });
+                    triangles.push(TriangleInfo {
+                        object: index as u32,
+                        face: face as u32,
+                        n_g,
+                        centroid,
+                    });
                 }
+                surface.normals = world_normals;
+                surface.faces = faces;
             }
             surfaces.push(surface);
         }
         let bvh = Bvh::build(&corners);
-        Ok(World { surfaces, exact, bvh, triangles, flat: shading == Shading::Flat })
+        Ok(World { surfaces, exact, bvh, triangles, flat })
     }
 
     /// Triangles in the BVH.
@@ -288,6 +301,8 @@ impl<'s> World<'s> {
             Some((i, th)) => {
                 let info = self.triangles[i as usize];
                 let surface = &self.surfaces[info.object as usize];
+                let mesh = &surface.prepared.mesh;
+                // `corners` and `b` in the tracer's (counter-clockwise) order.
                 let corners = surface.faces[info.face as usize];
                 let b = th.barycentric;
                 let weigh3 = |v: [Vec3; 3]| b.x * v[0] + b.y * v[1] + b.z * v[2];
@@ -296,27 +311,38 @@ impl<'s> World<'s> {
                 } else {
                     interpolate_normal(corners.map(|k| surface.normals[k as usize]), b, info.n_g)
                 };
+                // The integer shift of the first corner (in the mesh's order) under repeat.
+                let origin = |uvs: &[Vec2]| {
+                    let first = uvs[mesh.faces[info.face as usize][0] as usize];
+                    surface.texture.map_or(Vec2::ZERO, |(_, s, _)| s.repeat_origin(first))
+                };
+                // The weights in the prepared mesh's corner order (see `Primitive::Triangle`).
+                let barycentric =
+                    if surface.prepared.mirrored { Vec3::new(b.x, b.z, b.y) } else { b };
                 Hit {
                     t: th.t,
                     p: th.p,
                     p_error: th.p_error,
                     geometric_normal: info.n_g,
                     shading_normal,
-                    uv: surface.uvs.as_ref().map(|uvs| {
-                        let [u0, u1, u2] = corners.map(|k| uvs[k as usize]);
+                    lit_at: if self.flat { info.centroid } else { th.p },
+                    uv: mesh.uvs.as_ref().map(|uvs| {
+                        let o = origin(uvs);
+                        let [u0, u1, u2] = corners.map(|k| uvs[k as usize] - o);
                         b.x * u0 + b.y * u1 + b.z * u2
                     }),
-                    color: surface
+                    color: mesh
                         .colors
                         .as_ref()
                         .map(|colors| weigh3(corners.map(|k| colors[k as usize]))),
                     object: info.object as usize,
-                    primitive: Primitive::Triangle { face: info.face as usize, barycentric: b },
+                    primitive: Primitive::Triangle { face: info.face as usize, barycentric },
                 }
             }
             None => {
                 let (t, index, p_model) = best?;
-                self.surfaces[index].placed.as_ref()?.hit(t, index, p_model)?
+                let surface = &self.surfaces[index];
+                surface.placed.as_ref()?.hit(t, index, p_model, &surface.prepared)?
             }
         };
         debug_assert!(
@@ -397,8 +423,9 @@ impl Placed {
         }
     }
 
-    /// The hit at model-space point `p_model`, found at `t`, on the surface of object `object`.
-    fn hit(&self, t: f32, object: usize, p_model: DVec3) -> Option<Hit> {
+    /// The hit at model-space point `p_model`, found at `t`, on the surface of object `object`
+    /// (made ready as `prepared`).
+    fn hit(&self, t: f32, object: usize, p_model: DVec3, prepared: &Prepared<'_>) -> Option<Hit> {
         let p_world = self.model.transform_point3(p_model).as_vec3();
         let a = p_model.abs();
         let bound = self.abs_linear[0] * a.x
@@ -417,13 +444,14 @@ impl Placed {
                 (Vec3::Y, Some(uv), Primitive::Plane)
             }
         };
-        let n = try_normalize(self.normal_matrix * n_model)? * self.orientation;
+        let n = prepared.world_normal(n_model)?;
         Some(Hit {
             t,
             p: p_world,
             p_error,
             geometric_normal: n,
             shading_normal: n,
+            lit_at: p_world,
             uv,
             color: None,
             object,

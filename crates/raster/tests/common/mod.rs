@@ -12,6 +12,7 @@ use cg_core::light::{LightModel, Material};
 use cg_core::mesh::Mesh;
 use cg_core::product::MatrixProduct;
 use cg_core::scene::{Camera, NormalSource, Object, Projection, Scene, Shading};
+use cg_core::texture::{Filter, Sampler, Texture, Wrap};
 
 /// A scene file shipped with the kit.
 pub fn asset(name: &str) -> PathBuf {
@@ -166,4 +167,57 @@ pub fn tri(a: (f32, f32), b: (f32, f32), c: (f32, f32)) -> [Vec2; 3] {
 /// The RGBA8 value at pixel (x, y) of an output image.
 pub fn rgba_at(rgba: &[[u8; 4]], width: u32, x: u32, y: u32) -> [u8; 4] {
     rgba[(y * width + x) as usize]
+}
+
+/// GL_REPEAT / GL_CLAMP_TO_EDGE on a coordinate (OpenGL 1.x spec, 3.8.7).
+pub fn wrap_coordinate(s: f64, wrap: Wrap) -> f64 {
+    match wrap {
+        Wrap::Repeat => s - s.floor(),
+        Wrap::Clamp => s.clamp(0.0, 1.0),
+    }
+}
+
+/// A texel index wrapped or clamped into `0..n`.
+pub fn wrap_index(i: i64, n: i64, wrap: Wrap) -> i64 {
+    match wrap {
+        Wrap::Repeat => i.rem_euclid(n),
+        Wrap::Clamp => i.clamp(0, n - 1),
+    }
+}
+
+/// The texture's RGB at (s, t) in f64, by the specification's formulas (3.8.8): nearest takes
+/// texel ⌊s·w⌋; linear blends the four texels around (s·w − ½, t·h − ½).
+pub fn sample_f64(tex: &Texture, st: DVec2, sampler: Sampler) -> DVec3 {
+    let (w, h) = (i64::from(tex.width), i64::from(tex.height));
+    let texel = |i: i64, j: i64| {
+        let [r, g, b, _] = tex.texel(
+            wrap_index(i, w, sampler.wrap_u) as u32,
+            wrap_index(j, h, sampler.wrap_v) as u32,
+        );
+        DVec3::new(r.into(), g.into(), b.into()) / 255.0
+    };
+    let s = wrap_coordinate(st.x, sampler.wrap_u);
+    let t = wrap_coordinate(st.y, sampler.wrap_v);
+    match sampler.filter {
+        Filter::Nearest => texel(
+            ((s * w as f64).floor() as i64).min(w - 1),
+            ((t * h as f64).floor() as i64).min(h - 1),
+        ),
+        Filter::Bilinear => {
+            let (u, v) = (s * w as f64 - 0.5, t * h as f64 - 0.5);
+            let (i0, j0) = (u.floor() as i64, v.floor() as i64);
+            let (a, b) = (u - u.floor(), v - v.floor());
+            let bottom = texel(i0, j0) * (1.0 - a) + texel(i0 + 1, j0) * a;
+            let top = texel(i0, j0 + 1) * (1.0 - a) + texel(i0 + 1, j0 + 1) * a;
+            bottom * (1.0 - b) + top * b
+        }
+    }
+}
+
+/// The world point (view space = world space) at depth `z = −2` that [`looking_down_z`]`(size,
+/// size, 90°)` maps to window point `(px, py)` exactly: half-integers give pixel centres, without
+/// rounding (the projection's numbers are powers of two there).
+pub fn on_screen_at(size: u32, px: f32, py: f32) -> Vec3 {
+    let s = size as f32;
+    Vec3::new((2.0 * px / s - 1.0) * 2.0, (1.0 - 2.0 * py / s) * 2.0, -2.0)
 }
