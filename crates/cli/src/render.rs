@@ -216,7 +216,7 @@ fn size(scene: &Scene, width: Option<u32>, height: Option<u32>) -> Option<(u32, 
     let keep = |given: u32, this: u32, other: u32| {
         // Rounded, at least 1 pixel; `this` ≥ 1 because the scene loader checks sizes.
         ((u64::from(given) * u64::from(other) + u64::from(this) / 2) / u64::from(this.max(1)))
-            .clamp(1, 16384) as u32
+            .clamp(1, u64::from(cg_core::image::MAX_SIDE)) as u32
     };
     match (width, height) {
         (None, None) => None,
@@ -261,8 +261,8 @@ fn draw(
             let out = cg_trace::render(scene, &options).map_err(|e| e.message(lang))?;
             let millis = start.elapsed().as_secs_f64() * 1e3;
             let report = report(&out.features, out.stats.list(lang), lang);
-            let shading = shading.unwrap_or(scene.shading);
-            Ok(Rendered { image: out.image, shading, millis, report })
+            // What the tracer did: it traces Gouraud as Phong, and says so.
+            Ok(Rendered { image: out.image, shading: out.shading, millis, report })
         }
     }
 }

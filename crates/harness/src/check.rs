@@ -234,6 +234,38 @@ pub fn watchdog(limit: Duration, lang: Lang) {
     });
 }
 
+/// A stub's `todo!()` message in one language. Stub messages read `"<task>: <text>"`, where the
+/// text is English, Japanese, or `"<日本語> / <English>"`; the task ID is kept in both languages
+/// and only the text in `lang` is shown (none when the stub has no text in that language).
+#[must_use]
+pub fn stub_message(message: &str, lang: Lang) -> String {
+    let is_id = |s: &str| !s.is_empty() && !s.contains(' ') && s.contains(".t");
+    let (id, rest) = match message.split_once(':') {
+        Some((id, rest)) if is_id(id.trim()) => (id.trim(), rest.trim()),
+        _ if is_id(message.trim()) => (message.trim(), ""),
+        _ => ("", message.trim()),
+    };
+    // Kana, kanji and full-width punctuation (not the · and ² of formulas).
+    let japanese = |s: &str| {
+        s.chars().any(|c| matches!(c, '\u{3000}'..='\u{30ff}' | '\u{4e00}'..='\u{9fff}' | '\u{ff00}'..='\u{ffef}'))
+    };
+    let (ja, en) = match rest.split_once(" / ") {
+        Some((a, b)) if japanese(a) && !japanese(b) => (a.trim(), b.trim()),
+        _ if japanese(rest) => (rest, ""),
+        _ => ("", rest),
+    };
+    let text = match lang {
+        Lang::Ja => ja,
+        Lang::En => en,
+    };
+    match (id.is_empty(), text.is_empty()) {
+        (true, _) => text.to_owned(),
+        (false, true) => id.to_owned(),
+        (false, false) if lang == Lang::Ja => format!("{id}（{text}）"),
+        (false, false) => format!("{id}: {text}"),
+    }
+}
+
 /// The results of one assignment's checks for one student.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Report {
@@ -303,7 +335,12 @@ impl Report {
             let _ = writeln!(out, "  {mark} {:<width$}  {}", c.id, c.title.get(lang));
             match &c.outcome {
                 Outcome::NotDone { message } => {
-                    let _ = writeln!(out, "      {}: {message}", t("まだです", "not done yet"));
+                    let _ = writeln!(
+                        out,
+                        "      {}: {}",
+                        t("まだです", "not done yet"),
+                        stub_message(message, lang)
+                    );
                 }
                 Outcome::Panicked { message, location } => {
                     let _ = writeln!(
@@ -409,6 +446,21 @@ mod tests {
             }
             other => panic!("{other:?}"),
         }
+    }
+
+    #[test]
+    fn stub_messages_are_shown_in_one_language() {
+        let both = "s.t1: 環境光 Ia·ka を返す / return the ambient term Ia·ka";
+        assert_eq!(stub_message(both, Lang::Ja), "s.t1（環境光 Ia·ka を返す）");
+        assert_eq!(stub_message(both, Lang::En), "s.t1: return the ambient term Ia·ka");
+        let english = "a1.t1: list the vertices";
+        assert_eq!(stub_message(english, Lang::Ja), "a1.t1");
+        assert_eq!(stub_message(english, Lang::En), "a1.t1: list the vertices");
+        assert_eq!(stub_message("a2.t1", Lang::Ja), "a2.t1");
+        // Formulas keep their slashes; text without an ID is shown as it is.
+        let formula = "s.t4: return 1/(kc + kl·d + kq·d²)";
+        assert_eq!(stub_message(formula, Lang::En), "s.t4: return 1/(kc + kl·d + kq·d²)");
+        assert_eq!(stub_message("", Lang::En), "");
     }
 
     #[test]
