@@ -2,30 +2,16 @@
 //! number, the record in exercises/student.toml, the checks on the pristine stubs (none pass),
 //! and the views as PNG files.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::PathBuf;
 
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").canonicalize().unwrap()
-}
+mod common;
+use common::{cg, root};
 
 /// A scratch folder with an empty exercises/, so the student file goes there, not into the kit.
 fn scratch(test: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cg-assignments").join(test);
-    let _ = std::fs::remove_dir_all(&dir);
+    let dir = common::scratch("cg-assignments", test);
     std::fs::create_dir_all(dir.join("exercises")).unwrap();
     dir
-}
-
-fn cg(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_cg"))
-        .args(args)
-        .current_dir(dir)
-        .env_remove("CG_LANG")
-        .env_remove("LANG")
-        .env_remove("LC_ALL")
-        .output()
-        .unwrap()
 }
 
 #[test]

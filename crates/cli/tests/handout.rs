@@ -1,22 +1,17 @@
 //! `cg handout`: the student's copy has no solutions, its stubs are the pristine ones, and it
 //! builds, runs and checks on its own (every check "not done yet" or failing, none passing).
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").canonicalize().unwrap()
-}
+mod common;
+use common::root;
 
 #[test]
 fn the_handout_builds_and_checks_on_its_own_without_solutions() {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("handout-copy");
     let _ = std::fs::remove_dir_all(&dir);
-    let o = Command::new(env!("CARGO_BIN_EXE_cg"))
-        .args(["handout", dir.to_str().unwrap(), "--lang", "en"])
-        .current_dir(root())
-        .output()
-        .unwrap();
+    let o = common::cg(&root(), &["handout", dir.to_str().unwrap(), "--lang", "en"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 
     // No solutions anywhere: not the folder, not the manifests, not the lock file.

@@ -1,23 +1,12 @@
 //! End-to-end tests of `cg inspect` on the course's sample scene: the numbers the lecture's first
 //! assignment asks for, derived independently here and found in the command's output.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
+mod common;
 
 fn cg(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_cg"))
-        .args(args)
-        .current_dir(root())
-        .env_remove("CG_LANG")
-        .env_remove("LANG")
-        .env_remove("LC_ALL")
-        .env_remove("LC_MESSAGES")
-        .output()
-        .expect("the cg binary runs")
+    common::cg(&common::root(), args)
 }
 
 fn stdout(o: &Output) -> String {

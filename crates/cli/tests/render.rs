@@ -1,32 +1,15 @@
 //! End-to-end tests of `cg render` and of the kit's main job (no arguments): the files they write
 //! are exactly what the renderer library draws, and mistakes get clear errors.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 
 use cg_core::scene::Shading;
 
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").canonicalize().unwrap()
-}
+mod common;
+use common::{cg as cg_in, root};
 
-fn cg_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_cg"))
-        .args(args)
-        .current_dir(dir)
-        .env_remove("CG_LANG")
-        .env_remove("LANG")
-        .env_remove("LC_ALL")
-        .env_remove("LC_MESSAGES")
-        .output()
-        .expect("the cg binary runs")
-}
-
-fn scratch(test: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cg-render").join(test);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+fn scratch(test: &str) -> std::path::PathBuf {
+    common::scratch("cg-render", test)
 }
 
 fn png(path: &Path) -> (Vec<[u8; 4]>, u32, u32) {

@@ -52,6 +52,8 @@ pub mod scenes;
 pub mod spec;
 mod view;
 
+pub use checks::kit_rule;
+
 pub use cg_core::scene::Shading;
 pub use spec::Spec;
 

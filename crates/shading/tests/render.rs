@@ -5,27 +5,11 @@
 use cg_core::Rgb;
 use cg_core::glam::Vec3;
 use cg_core::image::Image;
-use cg_core::normals::interpolate_normal;
 use cg_harness::VariantRng;
+use cg_shading::Shading;
 use cg_shading::render::{KitLight, compose, gbuffer, kit_image, screen};
 use cg_shading::scenes::{CHECK_SIZE, check_scene, material, stage_scene};
 use cg_shading::spec::{SPHERES, variant};
-use cg_shading::{Pixel, Shading};
-
-/// The renderer's rule for one pixel, as `src/pipeline.rs` applies it.
-fn rule(mode: Shading, px: &Pixel, light: &dyn Fn(Vec3, Vec3) -> Rgb) -> Rgb {
-    let w = px.weights;
-    let mix = |v: [Vec3; 3]| w[0] * v[0] + w[1] * v[1] + w[2] * v[2];
-    match mode {
-        Shading::Flat => {
-            light((px.positions[0] + px.positions[1] + px.positions[2]) / 3.0, px.face_normal)
-        }
-        Shading::Gouraud => mix([0, 1, 2].map(|k| light(px.positions[k], px.normals[k]))),
-        Shading::Phong => {
-            light(mix(px.positions), interpolate_normal(px.normals, Vec3::from(w), px.face_normal))
-        }
-    }
-}
 
 fn max_diff_8bit(a: &Image, b: &Image) -> u8 {
     a.to_rgba8()
@@ -55,7 +39,12 @@ fn the_gbuffer_reproduces_the_renderers_own_images() {
         for mode in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
             let reference = kit_image(&scene, Some(mode)).unwrap();
             let background = Image::new(CHECK_SIZE, CHECK_SIZE, scene.clear_color);
-            let mine = compose(&background, &g, |_| Some(mode), |m, _, px| rule(m, px, &light));
+            let mine = compose(
+                &background,
+                &g,
+                |_| Some(mode),
+                |m, _, px| cg_shading::kit_rule(m, px, &light),
+            );
             // Same faces, same weights, same lighting: only float rounding differs.
             let d = max_diff_8bit(&mine, &reference);
             assert!(d <= 1, "{mode:?} with a {}×{} sphere: {d}/255", sphere.slices, sphere.stacks);

@@ -12,6 +12,8 @@ use crate::{Impl, Spec};
 mod normals;
 mod optics;
 mod shading;
+
+pub use shading::kit_rule;
 mod terms;
 
 /// Every check, in task order.

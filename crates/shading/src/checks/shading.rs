@@ -121,8 +121,11 @@ impl Fixture {
     }
 }
 
-/// The renderer's rule for one pixel (what `shade_pixel` must reproduce).
-fn kit_rule(mode: Shading, px: &Pixel, light: &dyn Fn(Vec3, Vec3) -> Rgb) -> Rgb {
+/// The renderer's rule for one pixel (what `shade_pixel` must reproduce): flat lights the face
+/// at its centroid with the face normal, Gouraud interpolates the three lit corners, Phong lights
+/// the interpolated point with the renormalised interpolated normal (the face normal when it
+/// vanishes). A test checks that composing an image with it reproduces the rasterizer's own.
+pub fn kit_rule(mode: Shading, px: &Pixel, light: &dyn Fn(Vec3, Vec3) -> Rgb) -> Rgb {
     let w = px.weights;
     let mix = |v: [Vec3; 3]| w[0] * v[0] + w[1] * v[1] + w[2] * v[2];
     match mode {
