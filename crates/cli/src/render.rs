@@ -61,7 +61,7 @@ pub struct Args {
     /// Shading mode instead of the scene's / シェーディングの方法（省略時はシーンの指定）
     #[arg(long, value_enum)]
     shading: Option<ShadingArg>,
-    /// The PNG file to write (default: out/<scene>-<renderer>-<shading>.png) / 出力する PNG ファイル
+    /// The PNG file to write (default: out/SCENE-RENDERER-SHADING.png) / 出力する PNG ファイル
     #[arg(short, long, value_name = "PNG")]
     output: Option<PathBuf>,
     /// Image width in pixels, 1–16384 (default: the scene's; alone, the height follows the
