@@ -19,9 +19,11 @@ if ! cargo fmt --version >/dev/null 2>&1 || ! cargo clippy --version >/dev/null 
 fi
 
 # Debian packages the tests use: a C compiler and Mesa's off-screen OpenGL (OSMesa) for the
-# OpenGL reference renderer (crates/glref) that the CPU rasterizer is compared with.
+# OpenGL reference renderer (crates/glref) that the CPU rasterizer is compared with; LuaLaTeX
+# with Japanese support and TikZ, to compile the filled report template (crates/report).
 PACKAGES=(
   gcc libc6-dev libosmesa6-dev   # the OpenGL reference (crates/glref): a C compiler and Mesa's OSMesa
+  texlive-luatex texlive-lang-japanese texlive-latex-recommended texlive-pictures   # the report template
 )
 
 if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then
