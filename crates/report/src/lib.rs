@@ -6,7 +6,7 @@
 //! ranges and formulas — with the derivation, not just the result. This crate
 //!
 //! - **derives** all of it from the student's own code (through each assignment's `Impl`) or
-//!   from data alone (a vertex and face list in the lecture's notation) — [`model`], [`derive`],
+//!   from data alone (a vertex and face list in the lecture's notation) — [`model`], [`mod@derive`],
 //!   [`figures`], [`tables`];
 //! - **reads** a student's report (Markdown) and names every number that does not follow from
 //!   the data, with the derived value and the tolerance used — [`parse`], [`verify`];
