@@ -13,8 +13,10 @@
 //! - **fills** the report template (`report-template/`, Markdown and LaTeX, Japanese and
 //!   English) with the derived tables, figures and matrices — [`template`].
 
+pub mod app;
 pub mod derive;
 pub mod figures;
+pub mod fill;
 pub mod model;
 pub mod parse;
 pub mod tables;

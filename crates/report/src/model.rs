@@ -67,7 +67,7 @@ pub struct AnimationData {
 }
 
 /// One ground vertex of assignment 4.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct TexRow {
     /// Grid column, 0..=10.
     pub i: u32,
@@ -75,14 +75,16 @@ pub struct TexRow {
     pub j: u32,
     /// Its position on the ground, `(i − 5, 0, j − 5)`.
     pub position: Vec3,
-    /// Its texture coordinate.
-    pub tex: Vec2,
+    /// Its texture coordinates: one, or two or four where the vertex lies on the edge of a
+    /// repeat block (each block shows the whole region), in the order of the squares that use
+    /// them (square (i, j) before (i + 1, j) …), without repeats.
+    pub tex: Vec<Vec2>,
 }
 
 /// Assignment 4: the texture mapping.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TextureData {
-    /// Every ground vertex with its texture coordinate (per square corner where they differ).
+    /// Every ground vertex (i, j = 0…10, j-major: (0, 0), (1, 0), …) with its coordinates.
     pub rows: Vec<TexRow>,
     /// The formula in i and j, and the range, in words.
     pub formula: Text,
