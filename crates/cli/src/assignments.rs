@@ -5,11 +5,11 @@
 use std::path::PathBuf;
 use std::time::Duration;
 
-use cg_assign::{Assignment, StudentFile, read_student_file, write_student_file};
+use cg_assign::{Assignment, StudentFile, write_student_file};
 use cg_core::lang::Lang;
 use cg_core::scene::Scene;
 use cg_harness::check::{Outcome, Report, guarded};
-use cg_harness::{StudentNumber, TableVersion, Text};
+use cg_harness::{TableVersion, Text};
 
 /// One of the assignments.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -51,21 +51,7 @@ fn student(
     table: Option<TableVersion>,
     lang: Lang,
 ) -> Result<StudentFile, String> {
-    match given {
-        Some(n) => {
-            let student: StudentNumber =
-                n.parse().map_err(|e: cg_harness::variant::StudentNumberError| e.message(lang))?;
-            Ok(StudentFile { student, table: table.unwrap_or(TableVersion::LATEST) })
-        }
-        None => {
-            let mut record = read_student_file(&exercises_dir().join("student.toml"))
-                .map_err(|e| e.message(lang))?;
-            if let Some(t) = table {
-                record.table = t;
-            }
-            Ok(record)
-        }
-    }
+    cg_assign::resolve_student(given, table, &exercises_dir().join("student.toml"), lang)
 }
 
 /// Options of `cg assignment`.

@@ -48,6 +48,9 @@ enum Command {
     Check(assignments::CheckArgs),
     /// Draw your result (and the reference) to PNG files / 自分の結果（と参考解答）を描画
     View(assignments::ViewArgs),
+    /// Your report: derive its tables and figures, fill the template, check your numbers / レポート: 表・図の導出、ひな形の作成、数値の確認
+    #[command(subcommand)]
+    Report(cg_report::app::Command),
     /// Regenerate exercises/ from solutions/ (kit maintainers) / solutions/ から exercises/ を生成（管理者用）
     SyncStubs,
     /// Write the students' copy of the kit, without solutions/ (instructors) / 学生に配るコピーを作る（教員用）
@@ -82,6 +85,9 @@ fn main() -> ExitCode {
         Some(Command::Assignment(args)) => assignments::assignment(&args, lang).map(|()| true),
         Some(Command::Check(args)) => assignments::check(&args, lang),
         Some(Command::View(args)) => assignments::view(&args, lang).map(|()| true),
+        Some(Command::Report(command)) => {
+            cg_report::app::run(&command, &cg_report::app::Kit::exercises(), lang)
+        }
         Some(Command::SyncStubs) => assignments::sync_stubs(lang).map(|()| true),
         Some(Command::Handout(args)) => handout::run(&args, lang).map(|()| true),
         None => render::main_job(lang).map(|()| true),
@@ -100,14 +106,5 @@ fn main() -> ExitCode {
 /// Resolves a path the user gave; for the kit's own default files, falls back to the kit's root
 /// when the command runs from another directory.
 fn kit_path(given: Option<&Path>, default: &str) -> PathBuf {
-    if let Some(p) = given {
-        return p.to_path_buf();
-    }
-    let here = PathBuf::from(default);
-    if here.exists() {
-        return here;
-    }
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
-    let root = root.canonicalize().unwrap_or(root);
-    root.join(default)
+    cg_harness::kit_path(given, default)
 }

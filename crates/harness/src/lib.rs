@@ -62,3 +62,20 @@ mod tests {
         assert_eq!(v.to_string(), r#"{"a":0.05,"b":[-0.02,1.5,3],"c":0.1,"d":"x"}"#);
     }
 }
+
+/// A path inside the kit: `default` relative to the current folder when it exists there (the
+/// kit's root, where the README says to run the commands), else relative to the root of the
+/// kit this program was built from. `given` (a command-line option) wins.
+#[must_use]
+pub fn kit_path(given: Option<&std::path::Path>, default: &str) -> std::path::PathBuf {
+    if let Some(p) = given {
+        return p.to_path_buf();
+    }
+    let here = std::path::PathBuf::from(default);
+    if here.exists() {
+        return here;
+    }
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let root = root.canonicalize().unwrap_or(root);
+    root.join(default)
+}

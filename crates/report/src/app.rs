@@ -1,1 +1,541 @@
-//! The commands `cg report …` and `report-checker` share: derive, fill, check (arrives with the command line).
+//! The commands `cg report …` and the `report-checker` binary share: one implementation, two
+//! fronts.
+//!
+//! - `derive`: everything the report needs, derived from the student's exercises (or from a data
+//!   file), written into one folder: each table, matrix and formula as a Markdown and a LaTeX
+//!   fragment (`fragments/`), the three views and the perspective view as SVG, the prepared
+//!   image with the mapped rectangle, and the rendered result of each assignment.
+//! - `fill`: the same, plus the report template filled into `report.md` and `report.tex`.
+//! - `check`: reads a report (Markdown) and names every number in it that does not follow from
+//!   the data, with the derived value and the tolerance used.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use cg_assign::Assignment;
+use cg_core::lang::Lang;
+use cg_core::scene::Scene;
+use cg_harness::check::{Outcome, guarded};
+use cg_harness::{TableVersion, Text};
+
+use crate::derive::{self, Impls, Missing};
+use crate::figures;
+use crate::fill::{self, Context, VIEWS, files};
+use crate::model::{Derived, PolygonData};
+use crate::parse::{self, ParseProblem};
+use crate::template::{self, Format};
+use crate::verify::{self, Verification};
+
+/// The report commands.
+#[derive(Clone, Debug, clap::Subcommand)]
+pub enum Command {
+    /// Derive every table, figure and matrix your report needs into one folder / レポートに必要な表・図・行列をフォルダに書き出す
+    Derive(DeriveArgs),
+    /// Write the report template filled with your data (report.md, report.tex) / データを埋めたレポートのひな形を書き出す
+    Fill(FillArgs),
+    /// Check the numbers written in your report / レポートに書いた数値を確かめる
+    Check(CheckArgs),
+}
+
+/// Where the data comes from.
+#[derive(Clone, Debug, Default, clap::Args)]
+pub struct Source {
+    /// The student number (default: exercises/student.toml) / 学生番号
+    #[arg(long, value_name = "NUMBER")]
+    pub student: Option<String>,
+    /// The variant table (default: the one in exercises/student.toml) / 課題表の版
+    #[arg(long, value_name = "N")]
+    pub table: Option<TableVersion>,
+    /// A vertex and face list (the lecture's notation: `V0 (0.0, 1.0, 0.0)`, `F0 { V0, V3, V1 }`)
+    /// instead of the exercises / 演習のプログラムの代わりに、頂点と面の一覧のファイルを使う
+    #[arg(long, value_name = "FILE")]
+    pub data: Option<PathBuf>,
+}
+
+/// Options of `derive`.
+#[derive(Clone, Debug, clap::Args)]
+pub struct DeriveArgs {
+    /// Where the data comes from.
+    #[command(flatten)]
+    pub source: Source,
+    /// The output folder / 出力先のフォルダ
+    #[arg(short, long, default_value = "report")]
+    pub output: PathBuf,
+    /// Do not draw the assignments' results (faster) / 実行結果の画像を描画しない
+    #[arg(long)]
+    pub no_render: bool,
+}
+
+/// Options of `fill`.
+#[derive(Clone, Debug, clap::Args)]
+pub struct FillArgs {
+    /// What to derive, and where.
+    #[command(flatten)]
+    pub derive: DeriveArgs,
+    /// Overwrite report.md / report.tex when they exist (your edits are lost) / 既存の report.md・report.tex を上書きする
+    #[arg(long)]
+    pub force: bool,
+}
+
+/// Options of `check`.
+#[derive(Clone, Debug, clap::Args)]
+pub struct CheckArgs {
+    /// The report to check (Markdown; default: report/report.md). With --data and no report,
+    /// the data file's own normals and winding are checked / 確かめるレポート（Markdown）
+    pub report: Option<PathBuf>,
+    /// Where the data comes from.
+    #[command(flatten)]
+    pub source: Source,
+    /// Print JSON for tools / JSON で出力
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// What the commands need from the program that runs them.
+#[derive(Clone, Copy, Debug)]
+pub struct Kit {
+    /// The student's functions.
+    pub impls: Impls,
+    /// `exercises/student.toml`.
+    pub student_file: fn() -> PathBuf,
+}
+
+impl Kit {
+    /// The student's exercises of this kit.
+    #[must_use]
+    pub fn exercises() -> Kit {
+        Kit {
+            impls: Impls::exercises(),
+            student_file: || cg_harness::kit_path(None, "exercises").join("student.toml"),
+        }
+    }
+}
+
+/// Runs a report command; `Ok(false)` when a check found mistakes.
+///
+/// # Errors
+/// What could not be read or written, as a message in `lang`.
+pub fn run(command: &Command, kit: &Kit, lang: Lang) -> Result<bool, String> {
+    match command {
+        Command::Derive(args) => {
+            let written = derive_to(args, kit, lang)?;
+            print!("{}", written.summary(lang));
+            Ok(true)
+        }
+        Command::Fill(args) => {
+            let written = fill_to(args, kit, lang)?;
+            print!("{}", written.summary(lang));
+            Ok(true)
+        }
+        Command::Check(args) => {
+            let outcome = check(args, kit, lang)?;
+            if args.json {
+                println!("{}", serde_json::to_string_pretty(&outcome.to_json(lang)).unwrap_or_default());
+            } else {
+                print!("{}", outcome.render(lang));
+            }
+            Ok(outcome.ok())
+        }
+    }
+}
+
+/// The data a report is about, with what could not be derived and the template's context.
+#[derive(Clone, Debug)]
+pub struct Gathered {
+    /// The derived data.
+    pub derived: Derived,
+    /// The placeholders' context (student, assignment texts, missing parts).
+    pub context: Context,
+    /// The assignment, when the data came from the exercises.
+    pub assignment: Option<Assignment>,
+}
+
+fn read_text(path: &Path, lang: Lang) -> Result<String, String> {
+    std::fs::read_to_string(path).map_err(|e| {
+        format!("{}: {} ({e})", path.display(), lang.pick("読めません", "cannot be read"))
+    })
+}
+
+fn problems_text(path: &Path, problems: &[ParseProblem], lang: Lang) -> String {
+    let mut out = format!(
+        "{}: {}\n",
+        path.display(),
+        lang.pick("読み取れない行があります", "some lines could not be read")
+    );
+    for p in problems {
+        let _ = writeln!(out, "  {}", p.message(lang));
+    }
+    out
+}
+
+/// A polygon model from a data file.
+///
+/// # Errors
+/// The file cannot be read, or its rows do not parse (each problem with its line).
+pub fn read_data(path: &Path, lang: Lang) -> Result<PolygonData, String> {
+    let text = read_text(path, lang)?;
+    let name = path.file_stem().map_or_else(|| "data".to_owned(), |s| s.to_string_lossy().into());
+    parse::polygon_from_text(&text, Text::new(name.clone(), name))
+        .map_err(|problems| problems_text(path, &problems, lang))
+}
+
+/// Derives the data from `source`: the data file, or the student's exercises.
+///
+/// # Errors
+/// A bad student number or student file, or an unreadable data file.
+pub fn gather(source: &Source, kit: &Kit, lang: Lang) -> Result<Gathered, String> {
+    if let Some(path) = &source.data {
+        let polygon = read_data(path, lang)?;
+        return Ok(Gathered {
+            derived: Derived { polygon: Some(polygon), ..Derived::default() },
+            context: Context::default(),
+            assignment: None,
+        });
+    }
+    let record = cg_assign::resolve_student(
+        source.student.as_deref(),
+        source.table,
+        &(kit.student_file)(),
+        lang,
+    )?;
+    let a = Assignment::for_student(&record.student, record.table);
+    let (derived, missing) = derive::derive(&a, &kit.impls);
+    let assignments: BTreeMap<String, String> = [
+        ("a1", a.a1.describe(lang)),
+        ("a2", a.a2.describe(lang)),
+        ("a3", a.a3.describe(lang)),
+        ("a4", a.a4.describe(lang)),
+    ]
+    .into_iter()
+    .map(|(k, v)| (k.to_owned(), v))
+    .collect();
+    let context = Context {
+        student: Some(record.student.to_string()),
+        table: Some(record.table.to_string()),
+        assignments,
+        renders: Vec::new(),
+        missing,
+    };
+    Ok(Gathered { derived, context, assignment: Some(a) })
+}
+
+/// What a command wrote.
+#[derive(Clone, Debug, Default)]
+pub struct Written {
+    /// The output folder.
+    pub folder: PathBuf,
+    /// Files written, relative to the folder.
+    pub files: Vec<String>,
+    /// Files left alone (an existing report without `--force`).
+    pub kept: Vec<String>,
+    /// What could not be derived.
+    pub missing: Vec<Missing>,
+}
+
+impl Written {
+    /// A summary for the terminal.
+    #[must_use]
+    pub fn summary(&self, lang: Lang) -> String {
+        let mut out = format!(
+            "{} {} ({} {})\n",
+            lang.pick("書き出し先:", "written to"),
+            self.folder.display(),
+            self.files.len(),
+            lang.pick("ファイル", "files")
+        );
+        for f in &self.files {
+            let _ = writeln!(out, "  {f}");
+        }
+        for f in &self.kept {
+            let _ = writeln!(
+                out,
+                "  {f}: {}",
+                lang.pick(
+                    "既にあるので上書きしません（--force で上書き）",
+                    "exists, left alone (--force overwrites it)"
+                )
+            );
+        }
+        if !self.missing.is_empty() {
+            let _ = writeln!(
+                out,
+                "{}",
+                lang.pick(
+                    "まだ導出できない部分（レポートには「まだ導出できません」と書かれます）:",
+                    "not derived yet (the report says so where they belong):"
+                )
+            );
+            for m in &self.missing {
+                let _ = writeln!(out, "  {}", m.message(lang));
+            }
+        }
+        out
+    }
+}
+
+fn write(folder: &Path, name: &str, bytes: &[u8], written: &mut Written) -> Result<(), String> {
+    let path = folder.join(name);
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    }
+    std::fs::write(&path, bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+    written.files.push(name.to_owned());
+    Ok(())
+}
+
+/// The scene of assignment `id` drawn by the student's code, at the time the report shows.
+fn view(id: &str, a: &Assignment, impls: &Impls) -> Result<Result<Scene, Text>, Outcome> {
+    guarded(|| match id {
+        "a1" => cg_a1::view(&a.a1, &impls.a1, 0.0),
+        "a2" => cg_a2::view(&a.a2, &impls.a2, 0.0),
+        "a3" => cg_a3::view(&a.a3, &impls.a3, 1.0),
+        _ => cg_a4::view(&a.a4, &impls.a4, 0.0),
+    })
+}
+
+/// Draws each assignment's result to `render-aN.png`; what cannot be drawn goes to `missing`.
+fn render_all(
+    g: &mut Gathered,
+    impls: &Impls,
+    folder: &Path,
+    written: &mut Written,
+    lang: Lang,
+) -> Result<(), String> {
+    let Some(a) = g.assignment.clone() else { return Ok(()) };
+    for id in ["a1", "a2", "a3", "a4"] {
+        let scene = match view(id, &a, impls) {
+            Ok(Ok(scene)) => scene,
+            Ok(Err(why)) => {
+                g.context.missing.push(Missing { task: id.to_owned(), why });
+                continue;
+            }
+            Err(outcome) => {
+                let why = match outcome {
+                    Outcome::NotDone { message } => Text::new(
+                        cg_harness::check::stub_message(&message, Lang::Ja),
+                        cg_harness::check::stub_message(&message, Lang::En),
+                    ),
+                    other => Text::new(format!("{other:?}"), format!("{other:?}")),
+                };
+                if !g.context.missing.iter().any(|m| m.task.starts_with(id)) {
+                    g.context.missing.push(Missing { task: id.to_owned(), why });
+                }
+                continue;
+            }
+        };
+        let image = cg_raster::render(&scene, &cg_raster::Options::default())
+            .map_err(|e| e.message(lang))?
+            .image;
+        let name = files::render_png(id);
+        let path = folder.join(&name);
+        std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
+        cg_scene::save_png(&path, &image).map_err(|e| e.describe(lang))?;
+        written.files.push(name);
+        g.context.renders.push(id.to_owned());
+    }
+    Ok(())
+}
+
+/// A texture (rows from the bottom up) as an image (rows from the top down).
+fn texture_image(t: &cg_core::texture::Texture) -> Option<cg_core::image::Image> {
+    let width = usize::try_from(t.width).ok()?.max(1);
+    let rows: Vec<[u8; 4]> = t.texels.chunks(width).rev().flatten().copied().collect();
+    cg_core::image::Image::from_rgba8(t.width, t.height, &rows)
+}
+
+/// Writes the figures and the fragments of `g` into `folder`.
+fn write_derived(g: &Gathered, folder: &Path, lang: Lang, written: &mut Written) -> Result<(), String> {
+    if let Some(p) = &g.derived.polygon {
+        for view in VIEWS {
+            let svg = figures::svg(&figures::layout(p, view), lang);
+            write(folder, files::view_svg(view), svg.as_bytes(), written)?;
+        }
+    }
+    if let Some(t) = &g.derived.texture {
+        let png = folder.join(files::TEXTURE_PNG);
+        std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
+        let image = texture_image(&t.image).ok_or_else(|| {
+            lang.pick("用意された画像を書き出せません", "the prepared image cannot be written")
+                .to_owned()
+        })?;
+        cg_scene::save_png(&png, &image).map_err(|e| e.describe(lang))?;
+        written.files.push(files::TEXTURE_PNG.to_owned());
+        let svg = figures::texture_svg(t, files::TEXTURE_PNG, lang);
+        write(folder, files::TEXTURE_SVG, svg.as_bytes(), written)?;
+    }
+    for format in [Format::Markdown, Format::Latex] {
+        let ext = match format {
+            Format::Markdown => "md",
+            Format::Latex => "tex",
+        };
+        for (key, value) in fill::values(&g.derived, &g.context, lang, format) {
+            write(folder, &format!("fragments/{key}.{ext}"), value.as_bytes(), written)?;
+        }
+    }
+    Ok(())
+}
+
+/// `derive`: gathers and writes everything into the output folder.
+///
+/// # Errors
+/// What could not be read or written.
+pub fn derive_to(args: &DeriveArgs, kit: &Kit, lang: Lang) -> Result<Written, String> {
+    let (_, written) = derive_gathered(args, kit, lang)?;
+    Ok(written)
+}
+
+fn derive_gathered(args: &DeriveArgs, kit: &Kit, lang: Lang) -> Result<(Gathered, Written), String> {
+    let mut g = gather(&args.source, kit, lang)?;
+    let mut written = Written { folder: args.output.clone(), ..Written::default() };
+    if !args.no_render {
+        render_all(&mut g, &kit.impls, &args.output, &mut written, lang)?;
+    }
+    write_derived(&g, &args.output, lang, &mut written)?;
+    written.missing = g.context.missing.clone();
+    Ok((g, written))
+}
+
+/// `fill`: derives, then writes the filled template (`report.md`, `report.tex`), keeping
+/// existing ones unless `--force`.
+///
+/// # Errors
+/// What could not be read or written; a template placeholder the kit does not know.
+pub fn fill_to(args: &FillArgs, kit: &Kit, lang: Lang) -> Result<Written, String> {
+    let (g, mut written) = derive_gathered(&args.derive, kit, lang)?;
+    for format in [Format::Markdown, Format::Latex] {
+        let name = format.file_name();
+        if args.derive.output.join(name).exists() && !args.force {
+            written.kept.push(name.to_owned());
+            continue;
+        }
+        let text = template::fill(
+            template::template(lang, format),
+            &fill::values(&g.derived, &g.context, lang, format),
+        )
+        .map_err(|e| e.to_string())?;
+        write(&args.derive.output, name, text.as_bytes(), &mut written)?;
+    }
+    Ok(written)
+}
+
+/// What `check` found.
+#[derive(Clone, Debug)]
+pub struct CheckOutcome {
+    /// The report checked (or the data file, checked on its own).
+    pub report: PathBuf,
+    /// Lines that tried to be rows and did not parse.
+    pub problems: Vec<ParseProblem>,
+    /// The numbers that do not follow from the data.
+    pub verification: Verification,
+    /// What could not be derived (those tables were not checked).
+    pub missing: Vec<Missing>,
+}
+
+impl CheckOutcome {
+    /// Whether the report is free of mistakes the checker can see.
+    #[must_use]
+    pub fn ok(&self) -> bool {
+        self.problems.is_empty() && self.verification.findings.is_empty()
+    }
+
+    /// For the terminal.
+    #[must_use]
+    pub fn render(&self, lang: Lang) -> String {
+        let mut out = format!(
+            "{} {}\n",
+            lang.pick("レポートの確認:", "checking the report"),
+            self.report.display()
+        );
+        for p in &self.problems {
+            let _ = writeln!(out, "  ✗ {}", p.message(lang));
+        }
+        for f in &self.verification.findings {
+            let _ = writeln!(out, "  ✗ {}", f.message(lang));
+        }
+        for n in &self.verification.notes {
+            let _ = writeln!(out, "  · {}", n.get(lang));
+        }
+        for m in &self.missing {
+            let _ = writeln!(
+                out,
+                "  · {} {}",
+                lang.pick("確かめられません:", "not checked:"),
+                m.message(lang)
+            );
+        }
+        let wrong = self.problems.len() + self.verification.findings.len();
+        let _ = writeln!(
+            out,
+            "{}",
+            if wrong == 0 {
+                match lang {
+                    Lang::Ja => format!(
+                        "数値 {} 個を確かめ、データから導かれない数値はありませんでした。",
+                        self.verification.checked
+                    ),
+                    Lang::En => format!(
+                        "{} numbers checked; every one follows from the data.",
+                        self.verification.checked
+                    ),
+                }
+            } else {
+                match lang {
+                    Lang::Ja => format!(
+                        "数値 {} 個を確かめ、{} 件の誤りがありました。",
+                        self.verification.checked, wrong
+                    ),
+                    Lang::En => format!(
+                        "{} numbers checked; {} mistakes.",
+                        self.verification.checked, wrong
+                    ),
+                }
+            }
+        );
+        out
+    }
+
+    /// For tools.
+    #[must_use]
+    pub fn to_json(&self, lang: Lang) -> serde_json::Value {
+        serde_json::json!({
+            "report": self.report.display().to_string(),
+            "ok": self.ok(),
+            "checked": self.verification.checked,
+            "problems": self.problems.iter().map(|p| serde_json::json!({
+                "line": p.line, "found": p.found, "message": p.message(lang),
+            })).collect::<Vec<_>>(),
+            "findings": self.verification.findings.iter().map(|f| serde_json::json!({
+                "line": f.line, "item": f.item, "written": f.written, "derived": f.derived,
+                "tolerance": f.tolerance, "message": f.message(lang),
+            })).collect::<Vec<_>>(),
+            "notes": self.verification.notes.iter().map(|n| n.get(lang)).collect::<Vec<_>>(),
+            "not_checked": self.missing.iter().map(|m| m.message(lang)).collect::<Vec<_>>(),
+        })
+    }
+}
+
+/// `check`: parses the report and verifies it against the data.
+///
+/// # Errors
+/// What could not be read; a bad student number or student file.
+pub fn check(args: &CheckArgs, kit: &Kit, lang: Lang) -> Result<CheckOutcome, String> {
+    if let (Some(data), None) = (&args.source.data, &args.report) {
+        let polygon = read_data(data, lang)?;
+        let text = read_text(data, lang)?;
+        let (parsed, problems) = parse::parse_report(&text);
+        let verification = verify::verify_data(&polygon, &parsed);
+        return Ok(CheckOutcome { report: data.clone(), problems, verification, missing: Vec::new() });
+    }
+    let report = args.report.clone().unwrap_or_else(|| PathBuf::from("report").join("report.md"));
+    let text = read_text(&report, lang)?;
+    let (parsed, problems) = parse::parse_report(&text);
+    if let Some(data) = &args.source.data {
+        let polygon = read_data(data, lang)?;
+        let verification = verify::verify_data(&polygon, &parsed);
+        return Ok(CheckOutcome { report, problems, verification, missing: Vec::new() });
+    }
+    let g = gather(&args.source, kit, lang)?;
+    let verification = verify::verify(&parsed, &g.derived);
+    Ok(CheckOutcome { report, problems, verification, missing: g.context.missing })
+}

@@ -1,1 +1,223 @@
-//! The template's values: every placeholder filled from the derived data (arrives with the command line).
+//! The template's values: every placeholder of `report-template/` filled from the derived data,
+//! in the report's language and format. A part that could not be derived (a task still a stub)
+//! is filled with a visible "not derived yet: a1.t2 …" so the report still compiles and says
+//! what is missing.
+
+use std::collections::BTreeMap;
+
+use cg_core::lang::Lang;
+
+use crate::derive::Missing;
+use crate::figures::{self, View};
+use crate::model::Derived;
+use crate::tables;
+use crate::template::{Format, latex_escape, not_yet};
+
+/// The files the figures and images of a filled report refer to, relative to the report (they
+/// are written next to it by [`crate::app`]).
+pub mod files {
+    use crate::figures::View;
+
+    /// The SVG of a view of the polygon model.
+    #[must_use]
+    pub fn view_svg(view: View) -> &'static str {
+        match view {
+            View::Front => "a1-front.svg",
+            View::Top => "a1-top.svg",
+            View::Side => "a1-side.svg",
+            View::Perspective => "a1-perspective.svg",
+        }
+    }
+
+    /// The prepared image of assignment 4.
+    pub const TEXTURE_PNG: &str = "a4-texture.png";
+    /// The prepared image with the mapped rectangle outlined.
+    pub const TEXTURE_SVG: &str = "a4-region.svg";
+
+    /// The rendered result of assignment `id` (`a1` … `a4`).
+    #[must_use]
+    pub fn render_png(id: &str) -> String {
+        format!("render-{id}.png")
+    }
+}
+
+/// The views every report shows, in order.
+pub const VIEWS: [View; 4] = [View::Front, View::Top, View::Side, View::Perspective];
+
+/// What the template's placeholders are filled with, besides the derived data.
+#[derive(Clone, Debug, Default)]
+pub struct Context {
+    /// The student number, if known.
+    pub student: Option<String>,
+    /// The variant table, if known.
+    pub table: Option<String>,
+    /// Each assignment's text (`a1` … `a4`), as `cg assignment` prints it.
+    pub assignments: BTreeMap<String, String>,
+    /// The assignments whose rendered image was written (`a1` … `a4`).
+    pub renders: Vec<String>,
+    /// What could not be derived, and why.
+    pub missing: Vec<Missing>,
+}
+
+/// "Not derived yet", naming the tasks of `part` (`a1`, …; `a1.t4` for one task) that are
+/// missing.
+fn missing_text(ctx: &Context, part: &str, lang: Lang, format: Format) -> String {
+    let why: Vec<String> = ctx
+        .missing
+        .iter()
+        .filter(|m| m.task.starts_with(part))
+        .map(|m| m.message(lang))
+        .collect();
+    let why = if why.is_empty() { part.to_owned() } else { why.join("; ") };
+    not_yet(&why, lang, format)
+}
+
+/// Plain text (an assignment's description) as a block that keeps its lines.
+fn text_block(text: &str, format: Format) -> String {
+    match format {
+        Format::Markdown => format!("```text\n{}\n```", text.trim_end()),
+        Format::Latex => {
+            let mut out = String::from("\\begin{quote}\\small\n");
+            for line in text.trim_end().lines() {
+                let body = line.trim_start();
+                let indent = line.len() - body.len();
+                if body.is_empty() {
+                    out.push_str("\\medskip\n");
+                    continue;
+                }
+                if indent > 0 {
+                    out.push_str(&format!("\\hspace*{{{:.1}em}}", indent as f32 * 0.5));
+                }
+                out.push_str(&latex_escape(body));
+                out.push_str("\\par\n");
+            }
+            out.push_str("\\end{quote}");
+            out
+        }
+    }
+}
+
+/// An image file (a PNG or an SVG written next to the report).
+fn image(file: &str, caption: &str, format: Format) -> String {
+    match format {
+        Format::Markdown => format!("![{caption}]({file})"),
+        Format::Latex => format!(
+            "\\begin{{center}}\n\\includegraphics[width=0.6\\linewidth]{{{file}}}\\\\\n{}\n\\end{{center}}",
+            latex_escape(caption)
+        ),
+    }
+}
+
+/// Every placeholder's value for `derived` in `lang` and `format`.
+#[must_use]
+pub fn values(
+    derived: &Derived,
+    ctx: &Context,
+    lang: Lang,
+    format: Format,
+) -> BTreeMap<String, String> {
+    let mut v = BTreeMap::new();
+    let mut put = |k: &str, s: String| {
+        v.insert(k.to_owned(), s);
+    };
+    let unknown = lang.pick("（未設定: `cg assignment --save`）", "(not set: `cg assignment --save`)");
+    let plain = |s: &str| match format {
+        Format::Markdown => s.to_owned(),
+        Format::Latex => latex_escape(s),
+    };
+    put("student", plain(ctx.student.as_deref().unwrap_or(unknown)));
+    put("table", plain(ctx.table.as_deref().unwrap_or(unknown)));
+    for id in ["a1", "a2", "a3", "a4"] {
+        let text = ctx
+            .assignments
+            .get(id)
+            .map_or_else(|| missing_text(ctx, id, lang, format), |t| text_block(t, format));
+        put(&format!("{id}.assignment"), text);
+        let render = if ctx.renders.iter().any(|r| r == id) {
+            image(&files::render_png(id), lang.pick("実行結果", "the result"), format)
+        } else {
+            missing_text(ctx, id, lang, format)
+        };
+        put(&format!("{id}.render"), render);
+    }
+
+    match &derived.polygon {
+        Some(p) => {
+            put("a1.vertex_table", tables::vertex_table(p, lang, format));
+            put("a1.face_table", tables::face_table(p, lang, format));
+            let figs: Vec<String> = VIEWS
+                .iter()
+                .map(|&view| match format {
+                    Format::Markdown => {
+                        format!("![{}]({})", view.title(lang), files::view_svg(view))
+                    }
+                    Format::Latex => figures::tikz(&figures::layout(p, view), lang),
+                })
+                .collect();
+            put("a1.figures", figs.join("\n\n"));
+            put(
+                "a1.transform",
+                if p.transform.is_some() {
+                    tables::transform(p, lang, format)
+                } else {
+                    missing_text(ctx, "a1.t4", lang, format)
+                },
+            );
+        }
+        None => {
+            for k in ["a1.vertex_table", "a1.face_table", "a1.figures", "a1.transform"] {
+                put(k, missing_text(ctx, "a1", lang, format));
+            }
+        }
+    }
+
+    match &derived.camera {
+        Some(c) => {
+            let vars = c.matrices.first().map(|m| m.variables.as_slice()).unwrap_or_default();
+            put("a2.variables", tables::variables(vars, lang, format));
+            put("a2.matrices", tables::matrices(&c.matrices, lang, format));
+        }
+        None => {
+            for k in ["a2.variables", "a2.matrices"] {
+                put(k, missing_text(ctx, "a2", lang, format));
+            }
+        }
+    }
+
+    match &derived.animation {
+        Some(a) => {
+            put("a3.periods", plain(a.periods.get(lang)));
+            let all: Vec<_> = a.objects.iter().flat_map(|(_, ms)| ms.iter().cloned()).collect();
+            put("a3.matrices", tables::matrices(&all, lang, format));
+        }
+        None => {
+            for k in ["a3.periods", "a3.matrices"] {
+                put(k, missing_text(ctx, "a3", lang, format));
+            }
+        }
+    }
+
+    match &derived.texture {
+        Some(t) => {
+            put("a4.formula", tables::formula(t, lang, format));
+            put("a4.table", tables::tex_table(t, lang, format));
+            put(
+                "a4.figure",
+                match format {
+                    Format::Markdown => format!(
+                        "![{}]({})",
+                        lang.pick("貼り付けた範囲", "the mapped region"),
+                        files::TEXTURE_SVG
+                    ),
+                    Format::Latex => figures::texture_tikz(t, files::TEXTURE_PNG, lang),
+                },
+            );
+        }
+        None => {
+            for k in ["a4.formula", "a4.table", "a4.figure"] {
+                put(k, missing_text(ctx, "a4", lang, format));
+            }
+        }
+    }
+    v
+}

@@ -1,4 +1,34 @@
-//! `report-checker`: derive the numbers and figures of the report, check a report, fill the
-//! template. (Arrives with the report checker.)
+//! `report-checker` — the report checker on its own: `report-checker derive|fill|check`, the
+//! same commands as `cg report …` (one implementation, [`cg_report::app`]).
 
-fn main() {}
+use std::process::ExitCode;
+
+use cg_core::lang::Lang;
+use clap::Parser;
+
+#[derive(Parser)]
+#[command(
+    name = "report-checker",
+    version,
+    about = "The report checker: derives your report's tables, figures and matrices, fills the template, checks your numbers / レポートの表・図・行列の導出、ひな形の作成、数値の確認"
+)]
+struct Cli {
+    /// Language of the output: ja or en (default: from CG_LANG or LANG) / 出力の言語
+    #[arg(long, global = true, value_name = "ja|en")]
+    lang: Option<Lang>,
+    #[command(subcommand)]
+    command: cg_report::app::Command,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let lang = cli.lang.unwrap_or_else(Lang::from_env);
+    match cg_report::app::run(&cli.command, &cg_report::app::Kit::exercises(), lang) {
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::from(1),
+        Err(message) => {
+            eprintln!("{}: {message}", lang.pick("エラー", "error"));
+            ExitCode::from(2)
+        }
+    }
+}

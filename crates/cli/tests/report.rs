@@ -1,0 +1,86 @@
+//! `cg report …` and `report-checker` from the command line, on the kit's own (stub) exercises
+//! and on a data file.
+
+mod common;
+
+use common::{cg, root, scratch};
+
+#[test]
+fn fill_on_the_stubs_writes_a_report_that_says_what_is_missing() {
+    let dir = scratch("report", "stubs");
+    let out_dir = dir.join("report");
+    let out = cg(
+        &root(),
+        &["report", "fill", "--student", "20250003", "--no-render", "-o", out_dir.to_str().unwrap()],
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}\n{}", String::from_utf8_lossy(&out.stderr));
+    assert!(stdout.contains("a1.t1"), "the summary names the missing tasks:\n{stdout}");
+    let md = std::fs::read_to_string(out_dir.join("report.md")).unwrap();
+    assert!(md.contains("まだ導出できません") && md.contains("a1.t1"), "{md}");
+    assert!(!md.contains("{{"), "every placeholder filled");
+    assert!(md.contains("20250003"));
+    let tex = std::fs::read_to_string(out_dir.join("report.tex")).unwrap();
+    assert!(tex.contains("\\begin{document}") && !tex.contains("{{"), "{tex}");
+}
+
+#[test]
+fn check_with_data_alone_names_the_slides_wrong_normals() {
+    let data = root().join("assets/report/lecture-pyramid.md");
+    for (lang, word) in [("en", "F0 normal"), ("ja", "F0")] {
+        let out = cg(&root(), &["--lang", lang, "report", "check", "--data", data.to_str().unwrap()]);
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert_eq!(out.status.code(), Some(1), "mistakes fail the command:\n{stdout}");
+        assert!(stdout.contains(word), "{stdout}");
+        for face in ["F1", "F2", "F3"] {
+            assert!(stdout.contains(face), "{face}:\n{stdout}");
+        }
+        assert!(!stdout.contains("F4") && !stdout.contains("F5"), "F4, F5 are right:\n{stdout}");
+        assert!(stdout.contains("0.486"), "the derived value is named:\n{stdout}");
+    }
+    // The same table with the normals that do follow: clean, exit 0.
+    let dir = scratch("report", "data-clean");
+    let text = std::fs::read_to_string(&data)
+        .unwrap()
+        .replace("0.53, 0.85", "0.49, 0.87")
+        .replace("0.53, -0.85", "0.49, -0.87")
+        .replace("{ 0.85, 0.53", "{ 0.87, 0.49")
+        .replace("{ -0.85, 0.53", "{ -0.87, 0.49");
+    let fixed = dir.join("pyramid.md");
+    std::fs::write(&fixed, text).unwrap();
+    let out = cg(&dir, &["--lang", "en", "report", "check", "--data", "pyramid.md"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}");
+}
+
+#[test]
+fn bad_input_gets_a_clear_error_not_a_panic() {
+    let dir = scratch("report", "bad");
+    std::fs::write(dir.join("broken.md"), "V0 (0.0, 1.0)\nF0 { V0, V1 }\n").unwrap();
+    let out = cg(&dir, &["--lang", "en", "report", "check", "--data", "broken.md"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success());
+    assert!(stderr.contains("line 1") && stderr.contains("line 2"), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    let out = cg(&dir, &["--lang", "ja", "report", "check", "missing.md", "--data", "broken.md"]);
+    assert!(!out.status.success());
+    let out = cg(&dir, &["--lang", "en", "report", "check", "missing.md", "--student", "20250003"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("missing.md") && !stderr.contains("panicked"), "{stderr}");
+}
+
+#[test]
+fn derive_writes_the_figures_of_a_data_file() {
+    let dir = scratch("report", "derive-data");
+    let data = root().join("assets/report/lecture-pyramid.md");
+    let out = cg(
+        &dir,
+        &["report", "derive", "--data", data.to_str().unwrap(), "-o", "derived"],
+    );
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    for name in ["a1-front.svg", "a1-top.svg", "a1-side.svg", "a1-perspective.svg", "fragments/a1.face_table.md"] {
+        assert!(dir.join("derived").join(name).is_file(), "{name}");
+    }
+    let faces = std::fs::read_to_string(dir.join("derived/fragments/a1.face_table.md")).unwrap();
+    assert!(faces.contains("{ 0.000, 0.486, 0.874 }"), "{faces}");
+}

@@ -1,0 +1,271 @@
+//! The report checker end to end, with a correct student (the reference solutions): the filled
+//! template reads back and verifies clean; planted mistakes are named, exactly those; the
+//! filled LaTeX compiles where LuaLaTeX is installed (always in CI).
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use cg_assign::Assignment;
+use cg_core::lang::Lang;
+use cg_harness::{StudentNumber, TableVersion};
+use cg_report::app::{self, DeriveArgs, FillArgs, Kit, Source};
+use cg_report::derive::{self, Impls};
+use cg_report::fill::{self, Context};
+use cg_report::parse;
+use cg_report::template::{self, Format};
+use cg_report::verify;
+
+const STUDENTS: [&str; 4] = ["20250000", "20250003", "20250017", "12345678"];
+
+fn impls() -> Impls {
+    Impls {
+        a1: cg_solutions::a1::implementation(),
+        a2: cg_solutions::a2::implementation(),
+        a3: cg_solutions::a3::implementation(),
+        a4: cg_solutions::a4::implementation(),
+    }
+}
+
+fn kit() -> Kit {
+    Kit { impls: impls(), student_file: || PathBuf::from("/nonexistent/student.toml") }
+}
+
+fn assignment(student: &str) -> Assignment {
+    let n: StudentNumber = student.parse().unwrap();
+    Assignment::for_student(&n, TableVersion::LATEST)
+}
+
+/// The filled Markdown report of a correct student, with its derived data.
+fn filled(student: &str, lang: Lang) -> (String, cg_report::model::Derived) {
+    let a = assignment(student);
+    let (derived, missing) = derive::derive(&a, &impls());
+    assert!(missing.is_empty(), "{student}: the solutions derive everything: {missing:?}");
+    let ctx = Context { student: Some(student.to_owned()), ..Context::default() };
+    let text = template::fill(
+        template::template(lang, Format::Markdown),
+        &fill::values(&derived, &ctx, lang, Format::Markdown),
+    )
+    .unwrap();
+    (text, derived)
+}
+
+fn scratch(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("cg-report-{}-{test}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn a_filled_report_reads_back_and_every_number_follows_from_the_data() {
+    for student in STUDENTS {
+        for lang in [Lang::Ja, Lang::En] {
+            let (text, derived) = filled(student, lang);
+            let (parsed, problems) = parse::parse_report(&text);
+            assert!(problems.is_empty(), "{student} {lang}: {problems:?}");
+            let p = derived.polygon.as_ref().unwrap();
+            assert_eq!(parsed.vertices.len(), p.vertices.len(), "{student}: every vertex row read");
+            assert_eq!(parsed.faces.len(), p.faces.len(), "{student}: every face row read");
+            assert_eq!(parsed.tex.len(), 121, "{student}: every grid vertex read");
+            let camera = derived.camera.as_ref().unwrap().matrices.len();
+            let animation: usize = derived.animation.as_ref().unwrap().objects.iter().map(|o| o.1.len()).sum();
+            assert_eq!(
+                parsed.matrices.len(),
+                1 + camera + animation,
+                "{student}: a1.transform, each view matrix and each model matrix read"
+            );
+            let v = verify::verify(&parsed, &derived);
+            assert!(v.findings.is_empty(), "{student} {lang}: {:#?}", v.findings);
+            let least = p.vertices.len() * 3 + p.faces.len() * 3 + 16 * parsed.matrices.len() + 121 * 5;
+            assert!(v.checked >= least, "{student}: {} numbers checked, at least {least}", v.checked);
+        }
+    }
+}
+
+/// Replaces the first occurrence of `from` after `anchor` on the line that starts with
+/// `line_start`.
+fn plant(text: &str, line_start: &str, from: &str, to: &str) -> (String, usize) {
+    let mut out = Vec::new();
+    let mut at = 0;
+    for (i, line) in text.lines().enumerate() {
+        if at == 0 && line.trim_start().starts_with(line_start) && line.contains(from) {
+            let k = line.rfind(from).unwrap();
+            out.push(format!("{}{to}{}", &line[..k], &line[k + from.len()..]));
+            at = i + 1;
+        } else {
+            out.push(line.to_owned());
+        }
+    }
+    assert!(at > 0, "no line starting with {line_start:?} containing {from:?}");
+    (out.join("\n"), at)
+}
+
+fn tuple_text(s: &str) -> Vec<f64> {
+    s.split(',').map(|x| x.trim().parse::<f64>().unwrap()).collect()
+}
+
+#[test]
+fn planted_mistakes_are_named_exactly_and_nothing_else() {
+    for student in STUDENTS {
+        let (text, derived) = filled(student, Lang::En);
+        let p = derived.polygon.as_ref().unwrap();
+
+        // 1. A wrong normal: F1's normal, its first component moved by 0.2.
+        let line = text.lines().find(|l| l.starts_with("| F1 |")).unwrap().to_owned();
+        let normal = line.rsplit('{').next().unwrap().split('}').next().unwrap().to_owned();
+        let mut n = tuple_text(&normal);
+        n[0] += 0.2;
+        let wrong = format!(" {:.3}, {:.3}, {:.3} ", n[0], n[1], n[2]);
+        let (text, normal_line) = plant(&text, "| F1 |", &normal, &wrong);
+
+        // 2. Swapped vertex order: F2 { Va, Vb, Vc } written { Va, Vc, Vb }.
+        let [a, b, c] = p.faces[2];
+        let (text, order_line) = plant(
+            &text,
+            "| F2 |",
+            &format!("{{ V{a}, V{b}, V{c} }}"),
+            &format!("{{ V{a}, V{c}, V{b} }}"),
+        );
+
+        // 3. A wrong matrix entry: the first view matrix, row 1 column 4 (the x translation).
+        let id = derived.camera.as_ref().unwrap().matrices[0].id.clone();
+        let tag = format!("<!-- cg: {id} -->");
+        let lines: Vec<&str> = text.lines().collect();
+        let tag_at = lines.iter().position(|l| l.contains(&tag)).unwrap();
+        // The tagged matrix's first row: the first line after the tag with `&` in it.
+        let row_at = tag_at + lines[tag_at..].iter().position(|l| l.contains('&')).unwrap();
+        let row = lines[row_at];
+        let last = row.split('&').next_back().unwrap();
+        let entry = last.split("\\\\").next().unwrap().trim().to_owned();
+        let bumped = format!("{:.3}", entry.parse::<f64>().unwrap() + 1.0);
+        let mut edited: Vec<String> = lines.iter().map(|l| (*l).to_owned()).collect();
+        let k = edited[row_at].rfind(&entry).unwrap();
+        edited[row_at].replace_range(k..k + entry.len(), &bumped);
+        let text = edited.join("\n");
+
+        // 4. A wrong texture coordinate: grid vertex (3, 5), its first s moved by 0.25.
+        let line = text.lines().find(|l| l.starts_with("| 3 | 5 |")).unwrap().to_owned();
+        let tex = line.split('|').nth(4).unwrap().trim().to_owned();
+        let first = tex.split('/').next().unwrap().trim().trim_matches(['(', ')']).to_owned();
+        let st = tuple_text(&first);
+        let moved = format!("{:.3}, {:.3}", (st[0] + 0.25) % 1.0 + 0.001, st[1]);
+        let (text, tex_line) = plant(&text, "| 3 | 5 |", &first, &moved);
+
+        let (parsed, problems) = parse::parse_report(&text);
+        assert!(problems.is_empty(), "{student}: {problems:?}");
+        let v = verify::verify(&parsed, &derived);
+        let mut found: Vec<(usize, String)> =
+            v.findings.iter().map(|f| (f.line, f.item.clone())).collect();
+        found.sort();
+        let matrix_item = v.findings.iter().find(|f| f.item.starts_with(&id));
+        assert_eq!(v.findings.len(), 4, "{student}: exactly the four planted mistakes: {found:#?}");
+        assert!(found.contains(&(normal_line, "F1 normal".to_owned())), "{student}: {found:?}");
+        assert!(found.contains(&(order_line, "F2 order".to_owned())), "{student}: {found:?}");
+        assert!(
+            matrix_item.is_some_and(|f| f.item.contains("row 1") && f.item.contains("column 4")),
+            "{student}: {found:?}"
+        );
+        assert!(found.iter().any(|(l, i)| *l == tex_line && i.starts_with("tex (3, 5)")), "{student}: {found:?}");
+        // Each says what it derived and how far off a number may be.
+        for f in &v.findings {
+            let m = f.message(Lang::En);
+            assert!(m.contains(&f.derived), "{m}");
+            assert!(!f.message(Lang::Ja).is_empty());
+        }
+        let normal = v.findings.iter().find(|f| f.item == "F1 normal").unwrap();
+        assert!(normal.tolerance.is_some_and(|t| t > 0.0 && t <= 0.01), "{normal:?}");
+    }
+}
+
+fn lualatex() -> Option<PathBuf> {
+    let path = std::env::var_os("PATH")?;
+    std::env::split_paths(&path).map(|d| d.join("lualatex")).find(|p| p.is_file())
+}
+
+#[test]
+fn the_filled_latex_report_compiles() {
+    let Some(lualatex) = lualatex() else {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI installs TeX Live (scripts/setup.sh): lualatex must be on PATH"
+        );
+        eprintln!("note: lualatex is not installed; the LaTeX compile test is skipped");
+        return;
+    };
+    for lang in [Lang::Ja, Lang::En] {
+        let dir = scratch(&format!("latex-{lang}"));
+        let args = FillArgs {
+            derive: DeriveArgs {
+                source: Source { student: Some(STUDENTS[1].to_owned()), ..Source::default() },
+                output: dir.clone(),
+                no_render: false,
+            },
+            force: false,
+        };
+        let written = app::fill_to(&args, &kit(), lang).unwrap();
+        assert!(written.missing.is_empty(), "{:?}", written.missing);
+        for name in ["report.tex", "report.md", "render-a1.png", "a1-front.svg", "a4-texture.png"] {
+            assert!(dir.join(name).is_file(), "{name} written");
+        }
+        let out = Command::new(&lualatex)
+            .args(["-interaction=nonstopmode", "-halt-on-error", "report.tex"])
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        let log = std::fs::read_to_string(dir.join("report.log")).unwrap_or_default();
+        assert!(
+            out.status.success() && dir.join("report.pdf").is_file(),
+            "{lang}: lualatex failed:\n{}\n… {}",
+            String::from_utf8_lossy(&out.stdout),
+            &log[log.len().saturating_sub(3000)..]
+        );
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
+
+#[test]
+fn fill_keeps_a_report_the_student_has_edited() {
+    let dir = scratch("keep");
+    let args = FillArgs {
+        derive: DeriveArgs {
+            source: Source { student: Some(STUDENTS[0].to_owned()), ..Source::default() },
+            output: dir.clone(),
+            no_render: true,
+        },
+        force: false,
+    };
+    std::fs::write(dir.join("report.md"), "my own words").unwrap();
+    let written = app::fill_to(&args, &kit(), Lang::En).unwrap();
+    assert_eq!(written.kept, ["report.md"]);
+    assert_eq!(std::fs::read_to_string(dir.join("report.md")).unwrap(), "my own words");
+    assert!(dir.join("report.tex").is_file());
+    let forced = app::fill_to(&FillArgs { force: true, ..args }, &kit(), Lang::En).unwrap();
+    assert!(forced.kept.is_empty());
+    assert!(std::fs::read_to_string(dir.join("report.md")).unwrap().contains("| V0 |"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn check_runs_on_a_report_file_and_names_the_line() {
+    let dir = scratch("check");
+    let (text, _) = filled(STUDENTS[2], Lang::Ja);
+    let report = dir.join("report.md");
+    std::fs::write(&report, &text).unwrap();
+    let args = app::CheckArgs {
+        report: Some(report.clone()),
+        source: Source { student: Some(STUDENTS[2].to_owned()), ..Source::default() },
+        json: false,
+    };
+    let clean = app::check(&args, &kit(), Lang::Ja).unwrap();
+    assert!(clean.ok(), "{}", clean.render(Lang::Ja));
+    // A face row that does not parse: the line and what was expected.
+    let (broken, line) = plant(&text, "| F0 |", "}", "");
+    std::fs::write(&report, broken).unwrap();
+    let out = app::check(&args, &kit(), Lang::En).unwrap();
+    assert!(!out.ok());
+    assert_eq!(out.problems.len(), 1, "{}", out.render(Lang::En));
+    assert_eq!(out.problems[0].line, line);
+    assert!(out.render(Lang::En).contains(&format!("line {line}")), "{}", out.render(Lang::En));
+    let _ = std::fs::remove_dir_all(&dir);
+    let _: &Path = &dir;
+}
