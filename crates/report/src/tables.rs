@@ -1,1 +1,454 @@
-//! (arrives with the report checker)
+//! The report's tables and matrix products, as fragments for the template: the vertex table, the
+//! face table with the derived normals, the model transform and every named matrix as a product
+//! (symbolic, numeric, each factor and the tagged result as `pmatrix`), the variables, and the
+//! texture-coordinate table and formula.
+//!
+//! Markdown output follows the shared notation that [`crate::parse`] reads back: vertex rows
+//! `| V0 | (0.000, 1.000, 0.000) |`, face rows `| F0 | { V0, V3, V1 } | { 0.000, 0.486, 0.874 } |`,
+//! a tag line `<!-- cg: ID -->` right before the `$$ … $$` block whose first `pmatrix` is the
+//! 4×4 result, and texture rows `| 3 | 5 | (-2.000, 0.000, 0.000) | (0.300, 0.500) |`. Numbers in
+//! tables have exactly three decimals and never print as `-0.000` ([`fixed`]); matrix entries
+//! print as [`format_number`] does. LaTeX output is the same content for LuaLaTeX (`amsmath`,
+//! `booktabs`, `longtable`), with a `% cg: ID` comment before each tagged result.
+
+use cg_core::glam::{Mat4, Vec2, Vec3};
+use cg_core::lang::Lang;
+use cg_core::product::{MatrixProduct, format_number};
+use cg_harness::Text;
+
+use crate::model::{NamedMatrix, PolygonData, TextureData};
+use crate::template::{Format, latex_escape};
+
+/// A component differing from the derived normal by more than this is named in the face table.
+pub const NORMAL_NOTE_TOLERANCE: f32 = 0.001;
+
+/// `x` with exactly three decimals, as the kit's tables print numbers: `0.486`, `-0.800`,
+/// `1.000`; values that round to zero print as `0.000`, never `-0.000`. Non-finite values print
+/// as `NaN`, `inf`, `-inf`.
+#[must_use]
+pub fn fixed(x: f32) -> String {
+    if x.is_nan() {
+        return "NaN".to_owned();
+    }
+    if x.is_infinite() {
+        return if x > 0.0 { "inf" } else { "-inf" }.to_owned();
+    }
+    let s = format!("{:.3}", f64::from(x));
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_owned(),
+        _ => s,
+    }
+}
+
+/// `(x, y, z)` with [`fixed`] components: `(0.000, 1.000, 0.000)`.
+#[must_use]
+pub fn tuple3(v: Vec3) -> String {
+    format!("({}, {}, {})", fixed(v.x), fixed(v.y), fixed(v.z))
+}
+
+/// `{ x, y, z }` with [`fixed`] components: `{ 0.000, 0.486, 0.874 }`.
+#[must_use]
+pub fn braces3(v: Vec3) -> String {
+    format!("{{ {}, {}, {} }}", fixed(v.x), fixed(v.y), fixed(v.z))
+}
+
+/// `(s, t)` with [`fixed`] components: `(0.300, 0.500)`.
+#[must_use]
+pub fn tuple2(v: Vec2) -> String {
+    format!("({}, {})", fixed(v.x), fixed(v.y))
+}
+
+/// `{ V0, V3, V1 }`.
+fn face_vertices(f: [u32; 3]) -> String {
+    format!("{{ V{}, V{}, V{} }}", f[0], f[1], f[2])
+}
+
+/// A Markdown table cell: `|` escaped, line breaks as spaces.
+fn md_cell(text: &str) -> String {
+    text.replace('|', "\\|").replace(['\r', '\n'], " ")
+}
+
+/// Text for LaTeX: [`latex_escape`], and the two symbols of the products (`·`, `°`) as math.
+fn tex_text(text: &str) -> String {
+    latex_escape(text).replace('·', "\\(\\cdot\\)").replace('°', "\\(^\\circ\\)")
+}
+
+/// A Markdown table from a header and rows of cells (already formatted).
+fn md_table(header: &[&str], rows: &[Vec<String>]) -> String {
+    let mut out = format!("| {} |\n", header.join(" | "));
+    out.push_str(&format!("|{}\n", "---|".repeat(header.len())));
+    for row in rows {
+        out.push_str(&format!("| {} |\n", row.join(" | ")));
+    }
+    out
+}
+
+/// A LaTeX `longtable` (booktabs rules) from a column spec, a header and rows of cells.
+fn tex_table_env(spec: &str, header: &[&str], rows: &[Vec<String>]) -> String {
+    let mut out = format!("\\begin{{longtable}}{{{spec}}}\n\\toprule\n");
+    out.push_str(&format!("{} \\\\\n\\midrule\n\\endhead\n", header.join(" & ")));
+    for row in rows {
+        out.push_str(&format!("{} \\\\\n", row.join(" & ")));
+    }
+    out.push_str("\\bottomrule\n\\end{longtable}\n");
+    out
+}
+
+/// A table in the given format; LaTeX cells are given already escaped.
+fn table(format: Format, spec: &str, header: &[&str], rows: &[Vec<String>]) -> String {
+    match format {
+        Format::Markdown => md_table(header, rows),
+        Format::Latex => tex_table_env(spec, header, rows),
+    }
+}
+
+/// A short paragraph in the given format (escaped for LaTeX, quoted for Markdown).
+fn note(text: &Text, lang: Lang, format: Format) -> String {
+    match format {
+        Format::Markdown => format!("> {}\n", text.get(lang).replace('\n', "\n> ")),
+        Format::Latex => format!("\\textit{{{}}}\n", tex_text(text.get(lang))),
+    }
+}
+
+/// The vertex table: `| V0 | (0.000, 1.000, 0.000) |`, one row per vertex.
+#[must_use]
+pub fn vertex_table(p: &PolygonData, lang: Lang, format: Format) -> String {
+    let rows: Vec<Vec<String>> = p
+        .vertices
+        .iter()
+        .enumerate()
+        .map(|(k, v)| match format {
+            Format::Markdown => vec![format!("V{k}"), tuple3(*v)],
+            Format::Latex => vec![format!("V{k}"), format!("${}$", tuple3(*v))],
+        })
+        .collect();
+    let header = match format {
+        Format::Markdown => [lang.pick("頂点", "vertex"), lang.pick("座標 (x, y, z)", "position (x, y, z)")],
+        Format::Latex => [lang.pick("頂点", "vertex"), lang.pick("座標 $(x, y, z)$", "position $(x, y, z)$")],
+    };
+    table(format, "ll", &header, &rows)
+}
+
+/// Why a face has no derived normal: a vertex that does not exist, or no area.
+fn no_normal_reason(p: &PolygonData, f: [u32; 3]) -> Text {
+    match f.iter().find(|&&v| v as usize >= p.vertices.len()) {
+        Some(v) => Text::new(
+            format!("法線なし: 頂点 V{v} がありません"),
+            format!("no normal: vertex V{v} does not exist"),
+        ),
+        None => Text::new(
+            "法線なし: 縮退した面（面積が 0、または頂点が一直線上）",
+            "no normal: degenerate face (zero area, or its vertices lie on one line)",
+        ),
+    }
+}
+
+/// The face table: `| F0 | { V0, V3, V1 } | { 0.000, 0.486, 0.874 } |` with the normal the kit
+/// derives from the vertices. A face without a normal says why (degenerate, or a vertex that
+/// does not exist). When the student's own normals exist and one differs from the derived
+/// normal by more than [`NORMAL_NOTE_TOLERANCE`] in a component (or is missing), a note column
+/// names it (the student's normal in square brackets, so it is not read as the face's normal).
+#[must_use]
+pub fn face_table(p: &PolygonData, lang: Lang, format: Format) -> String {
+    let notes: Vec<Option<Text>> = (0..p.faces.len())
+        .map(|k| {
+            let student = p.student_normals.as_ref()?;
+            let derived = p.derived_normals.get(k).copied().flatten();
+            match (student.get(k), derived) {
+                (None, _) => Some(Text::new(
+                    "あなたのプログラムにはこの面の法線がありません",
+                    "your program has no normal for this face",
+                )),
+                (Some(s), Some(d)) => {
+                    let differs = (0..3).any(|i| !((s[i] - d[i]).abs() <= NORMAL_NOTE_TOLERANCE));
+                    differs.then(|| {
+                        let s = format!("[{}, {}, {}]", fixed(s.x), fixed(s.y), fixed(s.z));
+                        Text::new(
+                            format!("あなたの法線 {s} は導出した法線と違います"),
+                            format!("your normal {s} differs from the derived one"),
+                        )
+                    })
+                }
+                (Some(s), None) => {
+                    let s = format!("[{}, {}, {}]", fixed(s.x), fixed(s.y), fixed(s.z));
+                    Some(Text::new(
+                        format!("あなたの法線 {s}: この面の法線は導出できません"),
+                        format!("your normal {s}: this face has no derivable normal"),
+                    ))
+                }
+            }
+        })
+        .collect();
+    let with_notes = notes.iter().any(Option::is_some);
+    let rows: Vec<Vec<String>> = p
+        .faces
+        .iter()
+        .enumerate()
+        .map(|(k, &f)| {
+            let normal = p.derived_normals.get(k).copied().flatten();
+            let mut row = match format {
+                Format::Markdown => vec![
+                    format!("F{k}"),
+                    face_vertices(f),
+                    normal.map_or_else(|| no_normal_reason(p, f).get(lang).to_owned(), braces3),
+                ],
+                Format::Latex => vec![
+                    format!("F{k}"),
+                    format!("\\{{ V{}, V{}, V{} \\}}", f[0], f[1], f[2]),
+                    normal.map_or_else(
+                        || tex_text(no_normal_reason(p, f).get(lang)),
+                        |n| format!("$\\{{ {}, {}, {} \\}}$", fixed(n.x), fixed(n.y), fixed(n.z)),
+                    ),
+                ],
+            };
+            if with_notes {
+                let text = notes[k].as_ref().map_or("", |t| t.get(lang));
+                row.push(match format {
+                    Format::Markdown => md_cell(text),
+                    Format::Latex => tex_text(text),
+                });
+            }
+            row
+        })
+        .collect();
+    let mut header = vec![
+        lang.pick("面", "face"),
+        lang.pick("頂点（外側から見て反時計回り）", "vertices (counter-clockwise from outside)"),
+        lang.pick("法線（頂点から導出）", "normal (derived from the vertices)"),
+    ];
+    let spec = if with_notes {
+        header.push(lang.pick("注", "note"));
+        "lllp{0.3\\linewidth}"
+    } else {
+        "lll"
+    };
+    table(format, spec, &header, &rows)
+}
+
+/// `\begin{pmatrix} … \end{pmatrix}` of `m` by rows, entries as [`format_number`] prints them.
+fn pmatrix(m: Mat4) -> String {
+    let rows: Vec<String> = (0..4)
+        .map(|r| {
+            let row = m.row(r);
+            [row.x, row.y, row.z, row.w].map(format_number).join(" & ")
+        })
+        .collect();
+    format!("\\begin{{pmatrix}} {} \\end{{pmatrix}}", rows.join(" \\\\ "))
+}
+
+/// A math block: `$$ … $$` (Markdown) or `\[ … \]` (LaTeX), `lines` joined by line breaks.
+fn math_block(lines: &[String], format: Format) -> String {
+    match format {
+        Format::Markdown => format!("$$\n{}\n$$\n", lines.join("\n")),
+        Format::Latex => format!("\\[\n{}\n\\]\n", lines.join("\n")),
+    }
+}
+
+/// Groups of at most three factors per line for LaTeX (a page is not wide enough for more);
+/// Markdown keeps one factor per line in a single block.
+fn factor_lines(parts: Vec<String>, format: Format) -> Vec<String> {
+    match format {
+        Format::Markdown => parts,
+        Format::Latex if parts.len() <= 3 => parts,
+        Format::Latex => {
+            let chunks: Vec<String> = parts.chunks(3).map(|c| c.join("\n")).collect();
+            let mut lines = vec!["\\begin{gathered}".to_owned()];
+            lines.push(chunks.join(" \\\\\n"));
+            lines.push("\\end{gathered}".to_owned());
+            lines
+        }
+    }
+}
+
+/// A product's label in running text: `` `T(0, 1, 0) · Rx(30°)` `` or `\texttt{…}`.
+fn product_text(label: &str, format: Format) -> String {
+    match format {
+        Format::Markdown => format!("`{}`", label.replace('`', "'")),
+        Format::Latex => format!("\\texttt{{{}}}", tex_text(label)),
+    }
+}
+
+/// The parts of one named product: title, symbolic product (when it has symbols), numeric
+/// product with each factor as `pmatrix`, then the tag and the 4×4 result.
+fn product_block(
+    id: &str,
+    title: &Text,
+    symbolic: &MatrixProduct,
+    numeric: &MatrixProduct,
+    lang: Lang,
+    format: Format,
+) -> String {
+    let mut out = match format {
+        Format::Markdown => format!("**{}**\n\n", md_cell(title.get(lang)).replace('*', "\\*")),
+        Format::Latex => format!("\\paragraph{{{}}}\n\n", tex_text(title.get(lang))),
+    };
+    let result = match numeric.matrix() {
+        Ok(m) => m,
+        Err(e) => {
+            let text = Text::new(
+                format!("この行列は計算できません: {e}"),
+                format!("this matrix cannot be computed: {e}"),
+            );
+            out.push_str(&note(&text, lang, format));
+            return out;
+        }
+    };
+    let sym_label = symbolic.symbolic();
+    if sym_label != numeric.numeric() {
+        out.push_str(&format!(
+            "{}: {}\n\n",
+            lang.pick("変数を使った積", "as a product with variables"),
+            product_text(&sym_label, format)
+        ));
+        if let Ok(latex) = symbolic.latex(true) {
+            let parts = latex.lines().map(str::to_owned).collect();
+            out.push_str(&math_block(&factor_lines(parts, format), format));
+            out.push('\n');
+        }
+    }
+    out.push_str(&format!(
+        "{}: {}\n\n",
+        lang.pick("数値を入れた積", "with this state's numbers"),
+        product_text(&numeric.numeric(), format)
+    ));
+    let factors: Vec<String> = numeric.factors.iter().filter_map(|f| f.matrix().ok()).map(pmatrix).collect();
+    if !factors.is_empty() {
+        out.push_str(&math_block(&factor_lines(factors, format), format));
+        out.push('\n');
+    }
+    out.push_str(&format!(
+        "{}:\n\n",
+        lang.pick("積（4×4 行列）", "the product (4×4 matrix)")
+    ));
+    let eq = if numeric.factors.is_empty() { "" } else { "= " };
+    match format {
+        Format::Markdown => out.push_str(&format!("<!-- cg: {id} -->\n")),
+        Format::Latex => out.push_str(&format!("% cg: {id}\n")),
+    }
+    out.push_str(&math_block(&[format!("{eq}{}", pmatrix(result))], format));
+    out
+}
+
+/// The model transform of assignment 1 (`a1.transform`): the product, each factor as `pmatrix`,
+/// and the tagged result. Without a transform, a note says the model is drawn as defined.
+#[must_use]
+pub fn transform(p: &PolygonData, lang: Lang, format: Format) -> String {
+    match &p.transform {
+        Some(t) => product_block(
+            "a1.transform",
+            &Text::new(
+                "モデル変換行列（モデル座標系 → ワールド座標系）",
+                "the model matrix (model coordinates → world coordinates)",
+            ),
+            t,
+            t,
+            lang,
+            format,
+        ),
+        None => note(
+            &Text::new(
+                "モデル変換はありません（モデル座標のまま描画）",
+                "no model transform (the model is drawn in its own coordinates)",
+            ),
+            lang,
+            format,
+        ),
+    }
+}
+
+/// One named matrix: its title, the product with variables, the product with this state's
+/// numbers and each factor as `pmatrix`, then the tagged 4×4 result (tag `m.id`).
+#[must_use]
+pub fn matrix(m: &NamedMatrix, lang: Lang, format: Format) -> String {
+    product_block(&m.id, &m.title, &m.symbolic, &m.numeric, lang, format)
+}
+
+/// Every matrix of `ms` as [`matrix`] does, separated by blank lines.
+#[must_use]
+pub fn matrices(ms: &[NamedMatrix], lang: Lang, format: Format) -> String {
+    if ms.is_empty() {
+        return note(&Text::new("行列はありません", "no matrices"), lang, format);
+    }
+    ms.iter().map(|m| matrix(m, lang, format)).collect::<Vec<_>>().join("\n")
+}
+
+/// The variables of the products: `| camera_pitch | meaning, operation, range |`.
+#[must_use]
+pub fn variables(vars: &[(String, Text)], lang: Lang, format: Format) -> String {
+    if vars.is_empty() {
+        return note(&Text::new("変数はありません", "no variables"), lang, format);
+    }
+    let rows: Vec<Vec<String>> = vars
+        .iter()
+        .map(|(name, meaning)| match format {
+            Format::Markdown => {
+                vec![format!("`{}`", name.replace('`', "'").replace('|', "\\|")), md_cell(meaning.get(lang))]
+            }
+            Format::Latex => vec![format!("\\texttt{{{}}}", tex_text(name)), tex_text(meaning.get(lang))],
+        })
+        .collect();
+    let header = [
+        lang.pick("変数", "variable"),
+        lang.pick("意味・変化させる操作・範囲", "meaning, the operation that changes it, range"),
+    ];
+    table(format, "lp{0.65\\linewidth}", &header, &rows)
+}
+
+/// The texture-coordinate table: `| i | j | (x, y, z) | (s, t) / (s, t) |`, one row per ground
+/// vertex, its coordinates in the order the squares use them.
+#[must_use]
+pub fn tex_table(t: &TextureData, lang: Lang, format: Format) -> String {
+    let rows: Vec<Vec<String>> = t
+        .rows
+        .iter()
+        .map(|r| {
+            let tex: Vec<String> = r.tex.iter().map(|&v| tuple2(v)).collect();
+            match format {
+                Format::Markdown => vec![r.i.to_string(), r.j.to_string(), tuple3(r.position), tex.join(" / ")],
+                Format::Latex => vec![
+                    r.i.to_string(),
+                    r.j.to_string(),
+                    format!("${}$", tuple3(r.position)),
+                    format!("${}$", tex.join(" / ")),
+                ],
+            }
+        })
+        .collect();
+    let header = match format {
+        Format::Markdown => [
+            "i",
+            "j",
+            lang.pick("頂点の位置 (x, y, z)", "vertex position (x, y, z)"),
+            lang.pick("テクスチャ座標 (s, t)", "texture coordinates (s, t)"),
+        ],
+        Format::Latex => [
+            "$i$",
+            "$j$",
+            lang.pick("頂点の位置 $(x, y, z)$", "vertex position $(x, y, z)$"),
+            lang.pick("テクスチャ座標 $(s, t)$", "texture coordinates $(s, t)$"),
+        ],
+    };
+    table(format, "rrll", &header, &rows)
+}
+
+/// The formula in i and j (in words, from the data) and the mapped rectangle in texture
+/// coordinates, `s ∈ [s₀, s₁], t ∈ [t₀, t₁]`.
+#[must_use]
+pub fn formula(t: &TextureData, lang: Lang, format: Format) -> String {
+    let (lo, hi) = t.region;
+    let range = format!(
+        "s \\in [{}, {}],\\ t \\in [{}, {}]",
+        fixed(lo.x),
+        fixed(hi.x),
+        fixed(lo.y),
+        fixed(hi.y)
+    );
+    let label = lang.pick(
+        "貼り付ける範囲（テクスチャ座標、t = 0 が画像の下端）",
+        "the mapped region (texture coordinates, t = 0 at the image's bottom edge)",
+    );
+    match format {
+        Format::Markdown => format!("{}\n\n{label}: ${range}$\n", t.formula.get(lang)),
+        Format::Latex => format!("{}\n\n{}: ${range}$\n", tex_text(t.formula.get(lang)), tex_text(label)),
+    }
+}
