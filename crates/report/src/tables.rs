@@ -123,8 +123,12 @@ pub fn vertex_table(p: &PolygonData, lang: Lang, format: Format) -> String {
         })
         .collect();
     let header = match format {
-        Format::Markdown => [lang.pick("頂点", "vertex"), lang.pick("座標 (x, y, z)", "position (x, y, z)")],
-        Format::Latex => [lang.pick("頂点", "vertex"), lang.pick("座標 $(x, y, z)$", "position $(x, y, z)$")],
+        Format::Markdown => {
+            [lang.pick("頂点", "vertex"), lang.pick("座標 (x, y, z)", "position (x, y, z)")]
+        }
+        Format::Latex => {
+            [lang.pick("頂点", "vertex"), lang.pick("座標 $(x, y, z)$", "position $(x, y, z)$")]
+        }
     };
     table(format, "ll", &header, &rows)
 }
@@ -311,15 +315,13 @@ fn product_block(
         lang.pick("数値を入れた積", "with this state's numbers"),
         product_text(&numeric.numeric(), format)
     ));
-    let factors: Vec<String> = numeric.factors.iter().filter_map(|f| f.matrix().ok()).map(pmatrix).collect();
+    let factors: Vec<String> =
+        numeric.factors.iter().filter_map(|f| f.matrix().ok()).map(pmatrix).collect();
     if !factors.is_empty() {
         out.push_str(&math_block(&factor_lines(factors, format), format));
         out.push('\n');
     }
-    out.push_str(&format!(
-        "{}:\n\n",
-        lang.pick("積（4×4 行列）", "the product (4×4 matrix)")
-    ));
+    out.push_str(&format!("{}:\n\n", lang.pick("積（4×4 行列）", "the product (4×4 matrix)")));
     let eq = if numeric.factors.is_empty() { "" } else { "= " };
     match format {
         Format::Markdown => out.push_str(&format!("<!-- cg: {id} -->\n")),
@@ -382,9 +384,14 @@ pub fn variables(vars: &[(String, Text)], lang: Lang, format: Format) -> String 
         .iter()
         .map(|(name, meaning)| match format {
             Format::Markdown => {
-                vec![format!("`{}`", name.replace('`', "'").replace('|', "\\|")), md_cell(meaning.get(lang))]
+                vec![
+                    format!("`{}`", name.replace('`', "'").replace('|', "\\|")),
+                    md_cell(meaning.get(lang)),
+                ]
             }
-            Format::Latex => vec![format!("\\texttt{{{}}}", tex_text(name)), tex_text(meaning.get(lang))],
+            Format::Latex => {
+                vec![format!("\\texttt{{{}}}", tex_text(name)), tex_text(meaning.get(lang))]
+            }
         })
         .collect();
     let header = [
@@ -404,7 +411,9 @@ pub fn tex_table(t: &TextureData, lang: Lang, format: Format) -> String {
         .map(|r| {
             let tex: Vec<String> = r.tex.iter().map(|&v| tuple2(v)).collect();
             match format {
-                Format::Markdown => vec![r.i.to_string(), r.j.to_string(), tuple3(r.position), tex.join(" / ")],
+                Format::Markdown => {
+                    vec![r.i.to_string(), r.j.to_string(), tuple3(r.position), tex.join(" / ")]
+                }
                 Format::Latex => vec![
                     r.i.to_string(),
                     r.j.to_string(),
@@ -449,6 +458,8 @@ pub fn formula(t: &TextureData, lang: Lang, format: Format) -> String {
     );
     match format {
         Format::Markdown => format!("{}\n\n{label}: ${range}$\n", t.formula.get(lang)),
-        Format::Latex => format!("{}\n\n{}: ${range}$\n", tex_text(t.formula.get(lang)), tex_text(label)),
+        Format::Latex => {
+            format!("{}\n\n{}: ${range}$\n", tex_text(t.formula.get(lang)), tex_text(label))
+        }
     }
 }
