@@ -26,7 +26,7 @@ pub const SIZE: f32 = 240.0;
 /// The space left on every side of the drawing box for labels.
 pub const MARGIN: f32 = 36.0;
 /// The height of the caption band below the drawing box (title and axes).
-pub const CAPTION: f32 = 28.0;
+pub const CAPTION: f32 = 36.0;
 /// One figure unit in TikZ (240 units = 6 cm).
 const TIKZ_UNIT_MM: f32 = 0.25;
 
@@ -99,7 +99,8 @@ pub struct Figure {
     pub width: f32,
     /// The drawing box's height (the caption band comes below it).
     pub height: f32,
-    /// The model's edges, hidden ones (`true`, drawn dashed) first.
+    /// The model's edges, hidden ones (`true`, drawn dashed) first; a hidden edge that lies
+    /// exactly on a visible one is left out.
     pub edges: Vec<(Vec2, Vec2, bool)>,
     /// One label per vertex that can be drawn, at the vertex.
     pub vertices: Vec<Label>,
@@ -142,7 +143,7 @@ impl Projector {
             View::Side => Vec2::new(-p.z, p.y),
             View::Perspective => {
                 let c = self.look.transform_point3(p);
-                if !(c.z < -1e-6) {
+                if c.z.is_nan() || c.z >= -1e-6 {
                     return None;
                 }
                 let focal = 1.0 / (15.0_f32.to_radians()).tan();
@@ -300,7 +301,19 @@ pub fn layout(p: &PolygonData, view: View) -> Figure {
             hidden_edges.push((*pa, *pb, true));
         }
     }
-    hidden_edges.extend(visible_edges);
+    // A hidden edge drawn exactly over a visible one (or over another hidden one) is left out:
+    // the visible line wins, as in a drawing (the front view of the pyramid is one triangle).
+    let same = |a: &(Vec2, Vec2, bool), b: &(Vec2, Vec2, bool)| {
+        let close = |p: Vec2, q: Vec2| p.distance(q) < 0.01;
+        (close(a.0, b.0) && close(a.1, b.1)) || (close(a.0, b.1) && close(a.1, b.0))
+    };
+    let mut edges: Vec<(Vec2, Vec2, bool)> = Vec::new();
+    for e in &hidden_edges {
+        if !visible_edges.iter().chain(&edges).any(|o| same(e, o)) {
+            edges.push(*e);
+        }
+    }
+    edges.extend(visible_edges);
 
     // The model axes on the screen.
     let origin = if finite.is_empty() {
@@ -320,15 +333,7 @@ pub fn layout(p: &PolygonData, view: View) -> Figure {
         })
         .collect();
 
-    Figure {
-        view,
-        width: SIZE,
-        height: SIZE,
-        edges: hidden_edges,
-        vertices,
-        faces: face_labels,
-        axes,
-    }
+    Figure { view, width: SIZE, height: SIZE, edges, vertices, faces: face_labels, axes }
 }
 
 /// `1.50`: a coordinate with two decimals (never `-0.00`).
@@ -476,8 +481,8 @@ pub fn svg(fig: &Figure, lang: Lang) -> String {
     let o = Vec2::new(20.0, fig.height + CAPTION / 2.0);
     let _ = writeln!(s, r##"<g class="axes" stroke="#cc0000" fill="#cc0000" font-size="9">"##);
     for (d, name) in &fig.axes {
-        let e = o + *d * 11.0;
-        let t = o + *d * 16.0;
+        let e = o + *d * 9.0;
+        let t = o + *d * 14.0;
         let _ = writeln!(
             s,
             r#"<line x1="{}" y1="{}" x2="{}" y2="{}" stroke-width="1"/>"#,
@@ -594,8 +599,8 @@ pub fn tikz(fig: &Figure, lang: Lang) -> String {
     }
     let o = Vec2::new(20.0, fig.height + CAPTION / 2.0);
     for (d, name) in &fig.axes {
-        let e = o + *d * 11.0;
-        let t = o + *d * 16.0;
+        let e = o + *d * 9.0;
+        let t = o + *d * 14.0;
         let _ = writeln!(
             s,
             "\\draw[red!80!black, ->] ({},{}) -- ({},{});\n\\node[text=red!80!black, font=\\scriptsize] at ({},{}) {{${}$}};",
@@ -635,8 +640,8 @@ fn region_corners(t: &TextureData) -> Option<[(Vec2, Vec2); 4]> {
 /// The texture figure's title.
 fn texture_title() -> Text {
     Text::new(
-        "テクスチャ画像と地面に貼る範囲（赤枠、t = 0 が画像の下端）",
-        "the texture image and the region mapped onto the ground (red; t = 0 is the image's bottom edge)",
+        "テクスチャ画像（赤枠: 地面に貼る範囲、t = 0 が下端）",
+        "the texture image (red: the region on the ground; t = 0 at the bottom)",
     )
 }
 
@@ -650,8 +655,9 @@ fn texture_title() -> Text {
 pub fn texture_svg(t: &TextureData, image_href: &str, lang: Lang) -> String {
     let (w, h) = (t.image.width.max(1) as f32, t.image.height.max(1) as f32);
     let big = w.max(h);
-    let m = (big * 0.22).max(8.0);
     let font = (big / 22.0).max(4.0);
+    // Room for the image's corner labels at the sides, one line of labels above and below.
+    let (mx, my) = (font * 4.5, font * 3.0);
     let corners = region_corners(t);
     // The viewBox holds the image, the region (even beyond the image) and the margins.
     let (mut lo, mut hi) = (Vec2::ZERO, Vec2::new(w, h));
@@ -661,8 +667,8 @@ pub fn texture_svg(t: &TextureData, image_href: &str, lang: Lang) -> String {
             hi = hi.max(*p);
         }
     }
-    let (x0, y0) = (lo.x - m, lo.y - m);
-    let (vw, vh) = (hi.x - lo.x + 2.0 * m, hi.y - lo.y + 2.0 * m + font * 2.0);
+    let (x0, y0) = (lo.x - mx, lo.y - my);
+    let (vw, vh) = (hi.x - lo.x + 2.0 * mx, hi.y - lo.y + 2.0 * my + font * 1.5);
     let display_w = 360.0;
     let display_h = display_w * vh / vw;
     let mut s = String::new();
@@ -703,18 +709,22 @@ pub fn texture_svg(t: &TextureData, image_href: &str, lang: Lang) -> String {
         num(big / 400.0)
     );
     let gray = r##"fill="#444444""##;
-    let _ = writeln!(
-        s,
-        r#"<text class="image-corner" x="0" y="{}" dy="{}" text-anchor="end" {gray}>(0, 0)</text>"#,
-        num(h),
-        num(font)
-    );
-    let _ = writeln!(
-        s,
-        r#"<text class="image-corner" x="{}" y="0" dy="{}" text-anchor="start" {gray}>(1, 1)</text>"#,
-        num(w),
-        num(-font * 0.3)
-    );
+    // The image's own corners and axes beside the image (the lines above and below it are the
+    // region's labels'), for orientation.
+    let side = |class: &str, x: f32, y: f32, right: bool, text: &str| {
+        format!(
+            r#"<text class="{class}" x="{}" y="{}" dx="{}" dy="{}" text-anchor="{}" {gray}>{text}</text>"#,
+            num(x),
+            num(y),
+            num(if right { font * 0.4 } else { -font * 0.4 }),
+            num(font * 0.35),
+            if right { "start" } else { "end" },
+        )
+    };
+    let _ = writeln!(s, "{}", side("image-corner", 0.0, h, false, "(0, 0)"));
+    let _ = writeln!(s, "{}", side("image-corner", w, 0.0, true, "(1, 1)"));
+    let _ = writeln!(s, "{}", side("image-axis", w, h, true, "s →"));
+    let _ = writeln!(s, "{}", side("image-axis", 0.0, 0.0, false, "t ↑"));
     if let Some(c) = corners {
         let (a, b) = (c[0].1.min(c[2].1), c[0].1.max(c[2].1));
         let _ = writeln!(
@@ -727,9 +737,15 @@ pub fn texture_svg(t: &TextureData, image_href: &str, lang: Lang) -> String {
             num(big / 150.0)
         );
         let mid = (a + b) * 0.5;
+        // A label is about 14 characters of 0.62 em; when two do not fit side by side along the
+        // rectangle, the right-hand ones move one line further out.
+        let stacked = b.x - a.x < 2.0 * 14.0 * 0.62 * font + font;
         for (st, p) in c {
+            // Vertically outside the rectangle, horizontally towards its inside, so a label
+            // stays within the image's width.
             let right = p.x >= mid.x;
             let below = p.y >= mid.y;
+            let extra = if right && stacked { font * 1.15 } else { 0.0 };
             let _ = writeln!(
                 s,
                 r##"<circle cx="{}" cy="{}" r="{}" fill="#ff0000"/>"##,
@@ -742,9 +758,9 @@ pub fn texture_svg(t: &TextureData, image_href: &str, lang: Lang) -> String {
                 r##"<text class="corner" x="{}" y="{}" dx="{}" dy="{}" text-anchor="{}" fill="#cc0000" stroke="#ffffff" stroke-width="{}" paint-order="stroke">({}, {})</text>"##,
                 num(p.x),
                 num(p.y),
-                num(if right { font * 0.3 } else { -font * 0.3 }),
-                num(if below { font * 1.1 } else { -font * 0.3 }),
-                if right { "start" } else { "end" },
+                num(if right { font * 0.2 } else { -font * 0.2 }),
+                num(if below { font * 1.1 + extra } else { -font * 0.4 - extra }),
+                if right { "end" } else { "start" },
                 num(font / 5.0),
                 fixed(st.x),
                 fixed(st.y)
@@ -753,9 +769,10 @@ pub fn texture_svg(t: &TextureData, image_href: &str, lang: Lang) -> String {
     }
     let _ = writeln!(
         s,
-        r#"<text class="title" x="{}" y="{}" text-anchor="middle">{}</text>"#,
+        r#"<text class="title" x="{}" y="{}" text-anchor="middle" font-size="{}">{}</text>"#,
         num(x0 + vw / 2.0),
-        num(y0 + vh - font * 0.6),
+        num(y0 + vh - font * 0.5),
+        num(font * 0.85),
         xml_escape(title.get(lang))
     );
     s.push_str("</svg>\n");
@@ -779,9 +796,22 @@ pub fn texture_tikz(t: &TextureData, image_path: &str, lang: Lang) -> String {
         num(ch)
     );
     let _ = writeln!(s, "\\draw[gray] (0,0) rectangle (1,1);");
-    let _ = writeln!(s, "\\node[anchor=north east, text=gray] at (0,0) {{$(0, 0)$}};");
-    let _ = writeln!(s, "\\node[anchor=south west, text=gray] at (1,1) {{$(1, 1)$}};");
     let (lo, hi) = t.region;
+    let shared = |p: Vec2| {
+        lo.is_finite()
+            && hi.is_finite()
+            && [lo, Vec2::new(hi.x, lo.y), hi, Vec2::new(lo.x, hi.y)]
+                .iter()
+                .any(|c| c.distance(p) < 0.005)
+    };
+    if !shared(Vec2::ZERO) {
+        let _ = writeln!(s, "\\node[anchor=east, text=gray] at (0,0) {{$(0, 0)$}};");
+    }
+    if !shared(Vec2::ONE) {
+        let _ = writeln!(s, "\\node[anchor=west, text=gray] at (1,1) {{$(1, 1)$}};");
+    }
+    let _ = writeln!(s, "\\node[anchor=west, text=gray] at (1,0) {{$s \\rightarrow$}};");
+    let _ = writeln!(s, "\\node[anchor=east, text=gray] at (0,1) {{$t \\uparrow$}};");
     if lo.is_finite() && hi.is_finite() {
         let _ = writeln!(
             s,
@@ -792,16 +822,25 @@ pub fn texture_tikz(t: &TextureData, image_path: &str, lang: Lang) -> String {
             fixed(hi.y)
         );
         let mid = (lo + hi) * 0.5;
+        // A label is about 2.4 cm wide in \\small; when two do not fit side by side along the
+        // rectangle, the right-hand ones move one line further out.
+        let stacked = (hi.x - lo.x).abs() * cw < 2.0 * 2.4 + 0.2;
         for c in [lo, Vec2::new(hi.x, lo.y), hi, Vec2::new(lo.x, hi.y)] {
+            let shift = match (stacked && c.x >= mid.x, c.y >= mid.y) {
+                (false, _) => 0.0,
+                (true, true) => 1.2,
+                (true, false) => -1.2,
+            };
             let anchor = match (c.y >= mid.y, c.x >= mid.x) {
-                (true, true) => "south west",
-                (true, false) => "south east",
-                (false, true) => "north west",
-                (false, false) => "north east",
+                // Above the top corners, below the bottom ones, towards the inside.
+                (true, true) => "south east",
+                (true, false) => "south west",
+                (false, true) => "north east",
+                (false, false) => "north west",
             };
             let _ = writeln!(
                 s,
-                "\\fill[red] ({},{}) circle (1.5pt);\n\\node[anchor={anchor}, fill=white, fill opacity=0.8, text opacity=1, text=red!80!black, inner sep=1pt] at ({},{}) {{$({}, {})$}};",
+                "\\fill[red] ({},{}) circle (1.5pt);\n\\node[anchor={anchor}, fill=white, fill opacity=0.8, text opacity=1, text=red!80!black, inner sep=1pt, yshift={shift}em] at ({},{}) {{$({}, {})$}};",
                 fixed(c.x),
                 fixed(c.y),
                 fixed(c.x),
@@ -813,7 +852,7 @@ pub fn texture_tikz(t: &TextureData, image_path: &str, lang: Lang) -> String {
     }
     let _ = writeln!(
         s,
-        "\\node[anchor=north, text width={}cm, align=center] at (0.5,-0.12) {{{}}};",
+        "\\node[anchor=north, text width={}cm, align=center] at (0.5,-0.25) {{{}}};",
         num(cw),
         latex_escape(texture_title().get(lang))
     );
@@ -834,7 +873,8 @@ mod tests {
         doc.descendants()
             .filter(|n| n.has_tag_name("text") && n.attribute("class") == Some(class))
             .map(|n| {
-                let num = |a: &str| n.attribute(a).and_then(|v| v.parse::<f32>().ok()).expect("x and y");
+                let num =
+                    |a: &str| n.attribute(a).and_then(|v| v.parse::<f32>().ok()).expect("x and y");
                 (n.text().unwrap_or("").to_owned(), num("x"), num("y"))
             })
             .collect()
@@ -854,12 +894,20 @@ mod tests {
     }
 
     fn find<'a>(labels: &'a [(String, f32, f32)], text: &str) -> &'a (String, f32, f32) {
-        labels.iter().find(|l| l.0 == text).unwrap_or_else(|| panic!("no label {text} in {labels:?}"))
+        labels
+            .iter()
+            .find(|l| l.0 == text)
+            .unwrap_or_else(|| panic!("no label {text} in {labels:?}"))
     }
 
     fn assert_at(labels: &[(String, f32, f32)], text: &str, want: (f32, f32)) {
         let l = find(labels, text);
-        assert!((l.1 - want.0).abs() < 0.01 && (l.2 - want.1).abs() < 0.01, "{text} at ({}, {}), want {want:?}", l.1, l.2);
+        assert!(
+            (l.1 - want.0).abs() < 0.01 && (l.2 - want.1).abs() < 0.01,
+            "{text} at ({}, {}), want {want:?}",
+            l.1,
+            l.2
+        );
     }
 
     // The pyramid: V0 (0, 1, 0), V1 (1, −0.8, 1), V2 (1, −0.8, −1), V3 (−1, −0.8, 1), V4 (−1, −0.8, −1).
@@ -889,16 +937,25 @@ mod tests {
     }
 
     #[test]
-    fn front_view_dashes_the_edges_of_hidden_faces_only() {
-        let fig = layout(&pyramid(), View::Front);
-        // 9 edges; V1–V2 and V3–V4 project to a point and are left out. F0's three edges are
-        // solid; V0–V2, V0–V4, V2–V3, V2–V4 lie on hidden or edge-on faces only.
-        let solid = fig.edges.iter().filter(|e| !e.2).count();
-        let dashed = fig.edges.iter().filter(|e| e.2).count();
-        assert_eq!((solid, dashed), (3, 4), "{:?}", fig.edges);
-        assert!(fig.edges.iter().take(4).all(|e| e.2), "hidden edges come first (drawn below)");
-        let svg = svg(&fig, Lang::En);
+    fn hidden_edges_are_dashed_unless_a_visible_edge_covers_them() {
+        // 9 edges: V0–V1, V0–V2, V0–V3, V0–V4, V1–V2, V1–V3, V2–V3 (the base's diagonal), V2–V4,
+        // V3–V4. Front: only F0 faces +z, so its three edges are solid; V1–V2 and V3–V4 project
+        // to points, and V0–V2, V0–V4, V2–V3, V2–V4 lie exactly under F0's edges: one triangle.
+        let count = |fig: &Figure| {
+            (fig.edges.iter().filter(|e| !e.2).count(), fig.edges.iter().filter(|e| e.2).count())
+        };
+        let front = layout(&pyramid(), View::Front);
+        assert_eq!(count(&front), (3, 0), "{:?}", front.edges);
+        // Top: every side face is visible, so only the base's diagonal V2–V3 (F4, F5) is hidden.
+        let top = layout(&pyramid(), View::Top);
+        assert_eq!(count(&top), (8, 1), "{:?}", top.edges);
+        // Perspective: F0 and F2 face the eye; V0–V4, V2–V3, V2–V4, V3–V4 touch hidden faces only.
+        let persp = layout(&pyramid(), View::Perspective);
+        assert_eq!(count(&persp), (5, 4), "{:?}", persp.edges);
+        assert!(persp.edges.iter().take(4).all(|e| e.2), "hidden edges come first (drawn below)");
+        let svg = svg(&persp, Lang::En);
         assert_eq!(svg.matches("stroke-dasharray").count(), 4);
+        texts(&svg, "vertex");
     }
 
     #[test]
@@ -932,8 +989,12 @@ mod tests {
         let hidden: Vec<bool> = fig.faces.iter().map(|l| l.hidden).collect();
         assert_eq!(hidden, [true, true, false, true, true, true]);
         // The axes: z points left, y up.
-        assert!(fig.axes.iter().any(|(d, n)| n == "z" && d.abs_diff_eq(Vec2::new(-1.0, 0.0), 1e-6)));
-        assert!(fig.axes.iter().any(|(d, n)| n == "y" && d.abs_diff_eq(Vec2::new(0.0, -1.0), 1e-6)));
+        assert!(
+            fig.axes.iter().any(|(d, n)| n == "z" && d.abs_diff_eq(Vec2::new(-1.0, 0.0), 1e-6))
+        );
+        assert!(
+            fig.axes.iter().any(|(d, n)| n == "y" && d.abs_diff_eq(Vec2::new(0.0, -1.0), 1e-6))
+        );
     }
 
     #[test]
@@ -977,7 +1038,8 @@ mod tests {
                 assert_balanced(&tikz(&fig, lang));
             }
         }
-        let empty = PolygonData { vertices: vec![], faces: vec![], derived_normals: vec![], ..pyramid() };
+        let empty =
+            PolygonData { vertices: vec![], faces: vec![], derived_normals: vec![], ..pyramid() };
         let fig = layout(&empty, View::Perspective);
         assert!(fig.vertices.is_empty() && fig.edges.is_empty());
         texts(&svg(&fig, Lang::En), "vertex");
@@ -991,7 +1053,8 @@ mod tests {
         assert!(tex.starts_with("\\begin{tikzpicture}[x=0.25mm, y=-0.25mm"));
         assert!(tex.contains("at (120.00,44.40) {V0};"), "{tex}");
         assert!(tex.contains("at (204.00,195.60) {(V2)};"), "{tex}");
-        assert_eq!(tex.matches("dashed").count(), 4);
+        assert_eq!(tex.matches("dashed").count(), 0, "the front view is one triangle");
+        assert_eq!(tikz(&layout(&pyramid(), View::Top), Lang::En).matches("dashed").count(), 1);
         assert!(tex.contains("正面図"));
     }
 
@@ -1009,7 +1072,10 @@ mod tests {
         let a = |k: &str| rect.attribute(k).and_then(|v| v.parse::<f32>().ok()).expect("number");
         assert_eq!((a("x"), a("y"), a("width"), a("height")), (50.0, 0.0, 100.0, 50.0));
         let image = doc.descendants().find(|n| n.has_tag_name("image")).expect("the image");
-        assert_eq!(image.attribute(("http://www.w3.org/1999/xlink", "href")), Some("texture & <1>.png"));
+        assert_eq!(
+            image.attribute(("http://www.w3.org/1999/xlink", "href")),
+            Some("texture & <1>.png")
+        );
         let c = texts(&svg, "corner");
         assert_eq!(c.len(), 4);
         assert_at(&c, "(0.250, 0.500)", (50.0, 50.0));
@@ -1031,7 +1097,10 @@ mod tests {
         use crate::model::PolygonData;
         use crate::tables;
         use crate::template::Format;
-        let found = std::process::Command::new("lualatex").arg("--version").output().is_ok_and(|o| o.status.success());
+        let found = std::process::Command::new("lualatex")
+            .arg("--version")
+            .output()
+            .is_ok_and(|o| o.status.success());
         if !found {
             eprintln!("note: lualatex is not on PATH; the LaTeX compile test is skipped");
             return;
@@ -1039,12 +1108,17 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("cg-report-tikz-{}", std::process::id()));
         std::fs::create_dir_all(&dir).expect("temp dir");
         let t = texture_data();
-        let image = cg_core::image::Image::new(t.image.width, t.image.height, cg_core::glam::Vec3::new(0.2, 0.6, 0.9));
+        let image = cg_core::image::Image::new(
+            t.image.width,
+            t.image.height,
+            cg_core::glam::Vec3::new(0.2, 0.6, 0.9),
+        );
         cg_scene::save_png(&dir.join("texture.png"), &image).expect("png");
         let mut p: PolygonData = pyramid();
-        p.transform = Some(cg_core::product::MatrixProduct::identity().then(
-            cg_core::product::Factor::translate(Vec3::new(0.0, 1.0, 0.0)),
-        ));
+        p.transform = Some(
+            cg_core::product::MatrixProduct::identity()
+                .then(cg_core::product::Factor::translate(Vec3::new(0.0, 1.0, 0.0))),
+        );
         let cam = crate::tables::tests::camera();
         let mut body = String::new();
         for lang in [Lang::Ja, Lang::En] {
@@ -1057,7 +1131,7 @@ mod tests {
             body += &tables::vertex_table(&p, lang, Format::Latex);
             body += &tables::face_table(&p, lang, Format::Latex);
             body += &tables::transform(&p, lang, Format::Latex);
-            body += &tables::matrices(&[cam.clone()], lang, Format::Latex);
+            body += &tables::matrices(std::slice::from_ref(&cam), lang, Format::Latex);
             body += &tables::variables(&cam.variables, lang, Format::Latex);
             body += &tables::formula(&t, lang, Format::Latex);
             body += &tables::tex_table(&t, lang, Format::Latex);
@@ -1072,7 +1146,11 @@ mod tests {
             .output()
             .expect("lualatex runs");
         let log = String::from_utf8_lossy(&out.stdout);
-        assert!(out.status.success(), "lualatex failed:\n{}", &log[log.len().saturating_sub(3000)..]);
+        assert!(
+            out.status.success(),
+            "lualatex failed:\n{}",
+            &log[log.len().saturating_sub(3000)..]
+        );
         assert!(dir.join("figures.pdf").exists());
         let _ = std::fs::remove_dir_all(&dir);
     }

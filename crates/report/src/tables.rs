@@ -164,7 +164,9 @@ pub fn face_table(p: &PolygonData, lang: Lang, format: Format) -> String {
                     "your program has no normal for this face",
                 )),
                 (Some(s), Some(d)) => {
-                    let differs = (0..3).any(|i| !((s[i] - d[i]).abs() <= NORMAL_NOTE_TOLERANCE));
+                    let differs = (0..3).any(|i| {
+                        (s[i] - d[i]).abs() > NORMAL_NOTE_TOLERANCE || (s[i] - d[i]).is_nan()
+                    });
                     differs.then(|| {
                         let s = format!("[{}, {}, {}]", fixed(s.x), fixed(s.y), fixed(s.z));
                         Text::new(
