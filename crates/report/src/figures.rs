@@ -30,6 +30,10 @@ pub const CAPTION: f32 = 36.0;
 /// One figure unit in TikZ (240 units = 6 cm).
 const TIKZ_UNIT_MM: f32 = 0.25;
 
+/// How far outside a face's outline (in figure units) a point still counts as covered by it:
+/// a vertex exactly behind a visible corner or edge is hidden.
+const COVER_EPS: f32 = 0.05;
+
 /// A face counts as facing the viewer when `n · (direction to the viewer) > FACING_EPS`; a face
 /// seen edge-on is not visible.
 const FACING_EPS: f32 = 1e-4;
@@ -164,18 +168,18 @@ impl Projector {
     }
 }
 
-/// Whether `p` lies in the triangle `t` (edges included, with a tolerance in figure units).
+/// Whether `p` lies in the triangle `t`, edges included: at most [`COVER_EPS`] figure units
+/// outside any edge.
 fn in_triangle(p: Vec2, t: [Vec2; 3]) -> bool {
     let cross = |a: Vec2, b: Vec2, c: Vec2| (b - a).perp_dot(c - a);
     let area = cross(t[0], t[1], t[2]);
     if area.abs() < 1e-6 {
         return false;
     }
-    let eps = 0.05 * area.abs().sqrt().max(1.0);
     (0..3).all(|k| {
         let (a, b) = (t[k], t[(k + 1) % 3]);
         let len = a.distance(b).max(1e-6);
-        cross(a, b, p) * area.signum() / len >= -eps
+        cross(a, b, p) * area.signum() / len >= -COVER_EPS
     })
 }
 
@@ -1016,6 +1020,35 @@ mod tests {
             assert!((0.0..=SIZE).contains(&l.1) && (0.0..=SIZE).contains(&l.2), "{l:?}");
         }
         assert!(svg.contains("<title>透視図</title>"));
+    }
+
+    #[test]
+    fn a_vertex_is_hidden_only_when_a_visible_face_covers_it() {
+        // A corner of a cube-like tetrahedron: V0 at the origin, V1–V3 on the axes. From +z only
+        // the slanted face {V1, V2, V3} (normal (1, 1, 1)/√3) is visible; the three faces at V0
+        // face −x, −y (edge-on) and −z (away). V0 lies exactly behind V3: hidden.
+        let v = vec![Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z];
+        let f = vec![[1, 2, 3], [0, 2, 1], [0, 3, 2], [0, 1, 3]];
+        let p = crate::derive::polygon_from_data(Text::from("corner"), v, f, None);
+        let front = layout(&p, View::Front);
+        let names: Vec<&str> = front.vertices.iter().map(|l| l.text.as_str()).collect();
+        assert_eq!(names, ["(V0)", "V1", "V2", "V3"]);
+        // From +x the slanted face is visible too; V0 is again behind the corner V1.
+        let side = layout(&p, View::Side);
+        assert_eq!(side.vertices[0].text, "(V0)");
+        // A single triangle seen from behind: the face is hidden, but nothing covers its
+        // vertices, so they are on the silhouette and stay visible.
+        let back = crate::derive::polygon_from_data(
+            Text::from("back"),
+            vec![Vec3::ZERO, Vec3::Y, Vec3::X],
+            vec![[0, 1, 2]],
+            None,
+        );
+        let fig = layout(&back, View::Front);
+        let names: Vec<&str> = fig.vertices.iter().map(|l| l.text.as_str()).collect();
+        assert_eq!(names, ["V0", "V1", "V2"]);
+        assert_eq!(fig.faces[0].text, "(F0)");
+        assert!(fig.edges.iter().all(|e| e.2), "every edge of a hidden face is hidden");
     }
 
     #[test]
