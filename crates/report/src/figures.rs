@@ -1,1 +1,1190 @@
-//! (arrives with the report checker)
+//! The report's figures: the three views (xy, xz, yz) and a perspective view of the polygon
+//! model with vertex and face labels — hidden vertices and faces in parentheses, as the lecture
+//! does (「括弧付きの頂点・面は裏側の頂点・面を表す」) — and the texture image with the mapped
+//! rectangle outlined. Each figure is laid out once ([`layout`]) and written as standalone SVG
+//! ([`svg`], for Markdown) or as a TikZ picture ([`tikz`], for LaTeX) with the same geometry.
+//!
+//! Figure units: the drawing fits a [`SIZE`]×[`SIZE`] box with a [`MARGIN`] on every side, the
+//! model's up (+y on the screen) pointing down the page as SVG's y does; a caption band of
+//! [`CAPTION`] units below the box holds the title and the axes.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+
+use cg_core::glam::{Mat4, Vec2, Vec3};
+use cg_core::lang::Lang;
+use cg_core::normals::face_normal;
+use cg_core::transform::look_at;
+use cg_harness::Text;
+
+use crate::model::{PolygonData, TextureData};
+use crate::tables::fixed;
+use crate::template::latex_escape;
+
+/// The width and height of a view's drawing box, in figure units.
+pub const SIZE: f32 = 240.0;
+/// The space left on every side of the drawing box for labels.
+pub const MARGIN: f32 = 36.0;
+/// The height of the caption band below the drawing box (title and axes).
+pub const CAPTION: f32 = 36.0;
+/// One figure unit in TikZ (240 units = 6 cm).
+const TIKZ_UNIT_MM: f32 = 0.25;
+
+/// How far outside a face's outline (in figure units) a point still counts as covered by it:
+/// a vertex exactly behind a visible corner or edge is hidden.
+const COVER_EPS: f32 = 0.05;
+
+/// A face counts as facing the viewer when `n · (direction to the viewer) > FACING_EPS`; a face
+/// seen edge-on is not visible.
+const FACING_EPS: f32 = 1e-4;
+
+/// Which view of the model.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum View {
+    /// The xy plane, seen from +z (screen right = +x, up = +y).
+    Front,
+    /// The xz plane, seen from +y (screen right = +x, up = −z).
+    Top,
+    /// The yz plane, seen from +x (screen right = −z, up = +y).
+    Side,
+    /// A perspective view from a fixed oblique eye, (3, 2.5, 4) times the model's size away
+    /// from its centre, looking at the centre with a 30° field of view.
+    Perspective,
+}
+
+impl View {
+    /// The four views, in the order the report shows them.
+    pub const ALL: [View; 4] = [View::Front, View::Top, View::Side, View::Perspective];
+
+    /// The view's title: `正面図 (xy 平面)` / `front view (xy plane)`.
+    #[must_use]
+    pub fn title(self) -> Text {
+        match self {
+            View::Front => {
+                Text::new("正面図 (xy 平面、+z 方向から)", "front view (xy plane, from +z)")
+            }
+            View::Top => Text::new("上面図 (xz 平面、+y 方向から)", "top view (xz plane, from +y)"),
+            View::Side => {
+                Text::new("側面図 (yz 平面、+x 方向から)", "side view (yz plane, from +x)")
+            }
+            View::Perspective => Text::new("透視図", "perspective view"),
+        }
+    }
+
+    /// A short name for files and ids: `front`, `top`, `side`, `perspective`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            View::Front => "front",
+            View::Top => "top",
+            View::Side => "side",
+            View::Perspective => "perspective",
+        }
+    }
+}
+
+/// A label in a figure: a vertex (`V0`) or a face (`F4`), in parentheses when hidden.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Label {
+    /// `V0`, or `(V3)` when hidden.
+    pub text: String,
+    /// Where the labelled point is, in figure units (y down).
+    pub at: Vec2,
+    /// Whether the vertex or face is hidden from this view.
+    pub hidden: bool,
+}
+
+/// One laid-out view: everything in figure units, y pointing down.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Figure {
+    /// Which view.
+    pub view: View,
+    /// The drawing box's width.
+    pub width: f32,
+    /// The drawing box's height (the caption band comes below it).
+    pub height: f32,
+    /// The model's edges, hidden ones (`true`, drawn dashed) first; a hidden edge that lies
+    /// exactly on a visible one is left out.
+    pub edges: Vec<(Vec2, Vec2, bool)>,
+    /// One label per vertex that can be drawn, at the vertex.
+    pub vertices: Vec<Label>,
+    /// One label per face that can be drawn, at its projected centroid.
+    pub faces: Vec<Label>,
+    /// The model axes as the screen shows them: a unit direction in figure units and the axis
+    /// name (`x`, `y`, `z`); axes seen end-on are left out.
+    pub axes: Vec<(Vec2, String)>,
+}
+
+/// How one view projects: a point to the screen (y up, any scale) or `None` behind the eye,
+/// and the direction from a point towards the viewer.
+struct Projector {
+    view: View,
+    /// The model's size: the largest distance of a vertex from the bounding box's centre.
+    size: f32,
+    look: Mat4,
+    eye: Vec3,
+}
+
+impl Projector {
+    fn new(view: View, points: &[Vec3]) -> Projector {
+        let (lo, hi) = points
+            .iter()
+            .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+        let centre = if points.is_empty() { Vec3::ZERO } else { (lo + hi) * 0.5 };
+        let radius = points.iter().map(|p| p.distance(centre)).fold(0.0_f32, f32::max);
+        let size = if radius.is_finite() && radius > 1e-6 { radius } else { 1.0 };
+        let eye = centre + Vec3::new(3.0, 2.5, 4.0) * size;
+        let look = look_at(eye, centre, Vec3::Y).unwrap_or(Mat4::IDENTITY);
+        Projector { view, size, look, eye }
+    }
+
+    /// The screen position, y up (before fitting). The perspective divides by the distance
+    /// along the view axis (a 30° field of view only scales, and the figure is fitted anyway).
+    fn project(&self, p: Vec3) -> Option<Vec2> {
+        let s = match self.view {
+            View::Front => Vec2::new(p.x, p.y),
+            View::Top => Vec2::new(p.x, -p.z),
+            View::Side => Vec2::new(-p.z, p.y),
+            View::Perspective => {
+                let c = self.look.transform_point3(p);
+                if c.z.is_nan() || c.z >= -1e-6 {
+                    return None;
+                }
+                let focal = 1.0 / (15.0_f32.to_radians()).tan();
+                Vec2::new(c.x, c.y) * (focal / -c.z)
+            }
+        };
+        s.is_finite().then_some(s)
+    }
+
+    /// The direction from `p` towards the viewer (not normalised).
+    fn towards_viewer(&self, p: Vec3) -> Vec3 {
+        match self.view {
+            View::Front => Vec3::Z,
+            View::Top => Vec3::Y,
+            View::Side => Vec3::X,
+            View::Perspective => self.eye - p,
+        }
+    }
+}
+
+/// Whether `p` lies in the triangle `t`, edges included: at most [`COVER_EPS`] figure units
+/// outside any edge.
+fn in_triangle(p: Vec2, t: [Vec2; 3]) -> bool {
+    let cross = |a: Vec2, b: Vec2, c: Vec2| (b - a).perp_dot(c - a);
+    let area = cross(t[0], t[1], t[2]);
+    if area.abs() < 1e-6 {
+        return false;
+    }
+    (0..3).all(|k| {
+        let (a, b) = (t[k], t[(k + 1) % 3]);
+        let len = a.distance(b).max(1e-6);
+        cross(a, b, p) * area.signum() / len >= -COVER_EPS
+    })
+}
+
+/// Lays out one view of `p`: projects every vertex, decides which faces face the viewer (their
+/// derived normal · the direction to the viewer > 0; edge-on faces do not), which vertices are
+/// hidden (used by no visible face and covered by a visible face in front of them — a vertex on
+/// the silhouette stays visible), which edges are hidden (every face along them hidden), and
+/// fits the drawing into [`SIZE`]×[`SIZE`] with [`MARGIN`], model up → page up. Vertices that
+/// are not finite and faces naming vertices that do not exist are left out; never panics.
+#[must_use]
+pub fn layout(p: &PolygonData, view: View) -> Figure {
+    let finite: Vec<Vec3> = p.vertices.iter().copied().filter(|v| v.is_finite()).collect();
+    let proj = Projector::new(view, &finite);
+    let screen: Vec<Option<Vec2>> =
+        p.vertices.iter().map(|&v| if v.is_finite() { proj.project(v) } else { None }).collect();
+
+    // Fit: uniform scale, centred, y flipped.
+    let (lo, hi) = screen
+        .iter()
+        .flatten()
+        .fold((Vec2::INFINITY, Vec2::NEG_INFINITY), |(lo, hi), s| (lo.min(*s), hi.max(*s)));
+    let (lo, hi) = if lo.x <= hi.x { (lo, hi) } else { (Vec2::ZERO, Vec2::ZERO) };
+    let extent = (hi - lo).max_element();
+    let scale = if extent > 1e-9 { (SIZE - 2.0 * MARGIN) / extent } else { 1.0 };
+    let mid = (lo + hi) * 0.5;
+    let centre = Vec2::splat(SIZE / 2.0);
+    let fit =
+        |s: Vec2| Vec2::new(centre.x + (s.x - mid.x) * scale, centre.y - (s.y - mid.y) * scale);
+    let at: Vec<Option<Vec2>> = screen.iter().map(|s| s.map(fit)).collect();
+
+    // Faces: corners (when every vertex exists and is finite), normal, visibility.
+    let corners = |f: &[u32; 3]| -> Option<[Vec3; 3]> {
+        let v = |k: usize| p.vertices.get(f[k] as usize).copied().filter(|v| v.is_finite());
+        Some([v(0)?, v(1)?, v(2)?])
+    };
+    let faces: Vec<Option<([Vec3; 3], bool)>> = p
+        .faces
+        .iter()
+        .enumerate()
+        .map(|(k, f)| {
+            let c = corners(f)?;
+            let n = match p.derived_normals.get(k) {
+                Some(n) => *n,
+                None => face_normal(c[0], c[1], c[2]),
+            };
+            let visible = n.is_some_and(|n| {
+                let to = proj.towards_viewer((c[0] + c[1] + c[2]) / 3.0).normalize_or_zero();
+                n.dot(to) > FACING_EPS
+            });
+            Some((c, visible))
+        })
+        .collect();
+    let is_visible = |k: usize| faces[k].is_some_and(|(_, v)| v);
+
+    // Vertices.
+    let mut used_by_visible = vec![false; p.vertices.len()];
+    for (k, f) in p.faces.iter().enumerate() {
+        if is_visible(k) {
+            for &v in f {
+                if let Some(u) = used_by_visible.get_mut(v as usize) {
+                    *u = true;
+                }
+            }
+        }
+    }
+    let world_eps = 1e-5 * finite.iter().map(|v| v.length()).fold(1.0_f32, f32::max);
+    let covered = |v: Vec3, s: Vec2| {
+        p.faces.iter().enumerate().any(|(k, f)| {
+            let Some((c, true)) = faces[k] else { return false };
+            let tri = [at[f[0] as usize], at[f[1] as usize], at[f[2] as usize]];
+            let (Some(a), Some(b), Some(d)) = (tri[0], tri[1], tri[2]) else { return false };
+            let Some(n) = face_normal(c[0], c[1], c[2]) else { return false };
+            in_triangle(s, [a, b, d]) && n.dot(v - c[0]) < -world_eps
+        })
+    };
+    let vertices: Vec<Label> = p
+        .vertices
+        .iter()
+        .enumerate()
+        .filter_map(|(k, &v)| {
+            let s = at[k]?;
+            let hidden = !used_by_visible[k] && covered(v, s);
+            let text = if hidden { format!("(V{k})") } else { format!("V{k}") };
+            Some(Label { text, at: s, hidden })
+        })
+        .collect();
+
+    // Face labels at the projected centroid.
+    let face_labels: Vec<Label> = faces
+        .iter()
+        .enumerate()
+        .filter_map(|(k, f)| {
+            let (c, visible) = (*f)?;
+            let s = proj.project((c[0] + c[1] + c[2]) / 3.0).map(fit)?;
+            let text = if visible { format!("F{k}") } else { format!("(F{k})") };
+            Some(Label { text, at: s, hidden: !visible })
+        })
+        .collect();
+
+    // Edges: hidden when every face along them is hidden.
+    let mut edge_faces: BTreeMap<(u32, u32), Vec<usize>> = BTreeMap::new();
+    for (k, f) in p.faces.iter().enumerate() {
+        if faces[k].is_none() {
+            continue;
+        }
+        for e in 0..3 {
+            let (a, b) = (f[e], f[(e + 1) % 3]);
+            edge_faces.entry((a.min(b), a.max(b))).or_default().push(k);
+        }
+    }
+    let mut hidden_edges = Vec::new();
+    let mut visible_edges = Vec::new();
+    for ((a, b), fs) in &edge_faces {
+        let (Some(Some(pa)), Some(Some(pb))) = (at.get(*a as usize), at.get(*b as usize)) else {
+            continue;
+        };
+        if pa.distance(*pb) < 1e-3 {
+            continue;
+        }
+        if fs.iter().any(|&k| is_visible(k)) {
+            visible_edges.push((*pa, *pb, false));
+        } else {
+            hidden_edges.push((*pa, *pb, true));
+        }
+    }
+    // A hidden edge drawn exactly over a visible one (or over another hidden one) is left out:
+    // the visible line wins, as in a drawing (the front view of the pyramid is one triangle).
+    let same = |a: &(Vec2, Vec2, bool), b: &(Vec2, Vec2, bool)| {
+        let close = |p: Vec2, q: Vec2| p.distance(q) < 0.01;
+        (close(a.0, b.0) && close(a.1, b.1)) || (close(a.0, b.1) && close(a.1, b.0))
+    };
+    let mut edges: Vec<(Vec2, Vec2, bool)> = Vec::new();
+    for e in &hidden_edges {
+        if !visible_edges.iter().chain(&edges).any(|o| same(e, o)) {
+            edges.push(*e);
+        }
+    }
+    edges.extend(visible_edges);
+
+    // The model axes on the screen.
+    let origin = if finite.is_empty() {
+        Vec3::ZERO
+    } else {
+        finite.iter().sum::<Vec3>() / finite.len() as f32
+    };
+    let step = 0.1 * proj.size;
+    let axes = [(Vec3::X, "x"), (Vec3::Y, "y"), (Vec3::Z, "z")]
+        .into_iter()
+        .filter_map(|(axis, name)| {
+            let o = proj.project(origin)?;
+            let e = proj.project(origin + axis * step)?;
+            let d = Vec2::new(e.x - o.x, o.y - e.y); // y down
+            let len = d.length();
+            (len > 1e-3 * step).then(|| (d / len, name.to_owned()))
+        })
+        .collect();
+
+    Figure { view, width: SIZE, height: SIZE, edges, vertices, faces: face_labels, axes }
+}
+
+/// `1.50`: a coordinate with two decimals (never `-0.00`).
+fn num(x: f32) -> String {
+    let s = format!("{x:.2}");
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_owned(),
+        _ => s,
+    }
+}
+
+/// Text made safe for XML content and attribute values.
+fn xml_escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            c if (c as u32) < 0x20 && c != '\n' && c != '\t' => out.push(' '),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// Where a label's text goes relative to its point: a unit direction (y down) away from the
+/// drawing's centre for vertices, none for faces (centred), and a stacking index for labels
+/// that share a point.
+struct Placement {
+    dir: Vec2,
+    stack: usize,
+}
+
+fn placements(labels: &[Label], centre: Vec2, outward: bool) -> Vec<Placement> {
+    labels
+        .iter()
+        .enumerate()
+        .map(|(k, l)| {
+            let stack = labels[..k].iter().filter(|o| o.at.distance(l.at) < 1.0).count();
+            let dir = if outward {
+                let d = l.at - centre;
+                if d.length() > 1e-3 { d / d.length() } else { Vec2::new(0.0, -1.0) }
+            } else {
+                Vec2::ZERO
+            };
+            Placement { dir, stack }
+        })
+        .collect()
+}
+
+/// The line height used to stack labels that share a point.
+const LINE: f32 = 12.0;
+
+/// A standalone SVG 1.1 document of the figure: edges (hidden ones dashed), vertex dots, vertex
+/// labels and face labels as `<text>` whose `x`, `y` are exactly the labelled point (the text is
+/// moved off the point by `dx`, `dy`), and the title in `lang` with the axes below the drawing.
+#[must_use]
+pub fn svg(fig: &Figure, lang: Lang) -> String {
+    let (w, h) = (fig.width, fig.height + CAPTION);
+    let title = fig.view.title();
+    let mut s = String::new();
+    let _ = writeln!(s, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
+    let _ = writeln!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="{}" height="{}" viewBox="0 0 {} {}" font-family="sans-serif" font-size="11">"#,
+        num(w),
+        num(h),
+        num(w),
+        num(h)
+    );
+    let _ = writeln!(s, "<title>{}</title>", xml_escape(title.get(lang)));
+    let _ =
+        writeln!(s, r#"<rect x="0" y="0" width="{}" height="{}" fill="white"/>"#, num(w), num(h));
+    let _ = writeln!(s, r#"<g class="edges" fill="none" stroke-linecap="round">"#);
+    for (a, b, hidden) in &fig.edges {
+        let style = if *hidden {
+            r##"class="hidden" stroke="#888888" stroke-width="1" stroke-dasharray="4 3""##
+        } else {
+            r##"stroke="#000000" stroke-width="1.5""##
+        };
+        let _ = writeln!(
+            s,
+            r#"<line x1="{}" y1="{}" x2="{}" y2="{}" {style}/>"#,
+            num(a.x),
+            num(a.y),
+            num(b.x),
+            num(b.y)
+        );
+    }
+    let _ = writeln!(s, "</g>");
+    let _ = writeln!(s, r#"<g class="points">"#);
+    for l in &fig.vertices {
+        let style = if l.hidden {
+            r##"fill="#ffffff" stroke="#888888""##
+        } else {
+            r##"fill="#000000" stroke="none""##
+        };
+        let _ = writeln!(s, r#"<circle cx="{}" cy="{}" r="2" {style}/>"#, num(l.at.x), num(l.at.y));
+    }
+    let _ = writeln!(s, "</g>");
+    let centre = Vec2::new(fig.width / 2.0, fig.height / 2.0);
+    let _ = writeln!(s, r#"<g class="vertex-labels">"#);
+    for (l, pl) in fig.vertices.iter().zip(placements(&fig.vertices, centre, true)) {
+        let anchor = if pl.dir.x > 0.35 {
+            "start"
+        } else if pl.dir.x < -0.35 {
+            "end"
+        } else {
+            "middle"
+        };
+        let down = pl.dir.y >= 0.0;
+        let dx = pl.dir.x * 6.0;
+        let base = if down { pl.dir.y * 6.0 + 9.0 } else { pl.dir.y * 6.0 - 2.0 };
+        let dy = base + if down { 1.0 } else { -1.0 } * LINE * pl.stack as f32;
+        let fill = if l.hidden { "#666666" } else { "#000000" };
+        let _ = writeln!(
+            s,
+            r#"<text class="vertex" x="{}" y="{}" dx="{}" dy="{}" text-anchor="{anchor}" fill="{fill}">{}</text>"#,
+            num(l.at.x),
+            num(l.at.y),
+            num(dx),
+            num(dy),
+            xml_escape(&l.text)
+        );
+    }
+    let _ = writeln!(s, "</g>");
+    let _ = writeln!(s, r#"<g class="face-labels" font-style="italic">"#);
+    for (l, pl) in fig.faces.iter().zip(placements(&fig.faces, centre, false)) {
+        let fill = if l.hidden { "#7777cc" } else { "#0000aa" };
+        let dy = 4.0 + LINE * pl.stack as f32;
+        let _ = writeln!(
+            s,
+            r#"<text class="face" x="{}" y="{}" dy="{}" text-anchor="middle" fill="{fill}">{}</text>"#,
+            num(l.at.x),
+            num(l.at.y),
+            num(dy),
+            xml_escape(&l.text)
+        );
+    }
+    let _ = writeln!(s, "</g>");
+    // Caption band: axes at the left, title centred.
+    let o = Vec2::new(20.0, fig.height + CAPTION / 2.0);
+    let _ = writeln!(s, r##"<g class="axes" stroke="#cc0000" fill="#cc0000" font-size="9">"##);
+    for (d, name) in &fig.axes {
+        let e = o + *d * 9.0;
+        let t = o + *d * 14.0;
+        let _ = writeln!(
+            s,
+            r#"<line x1="{}" y1="{}" x2="{}" y2="{}" stroke-width="1"/>"#,
+            num(o.x),
+            num(o.y),
+            num(e.x),
+            num(e.y)
+        );
+        let _ = writeln!(
+            s,
+            r#"<text class="axis" x="{}" y="{}" dy="3" text-anchor="middle" stroke="none">{}</text>"#,
+            num(t.x),
+            num(t.y),
+            xml_escape(name)
+        );
+    }
+    let _ = writeln!(s, "</g>");
+    let _ = writeln!(
+        s,
+        r#"<text class="title" x="{}" y="{}" text-anchor="middle">{}</text>"#,
+        num(fig.width / 2.0 + 14.0),
+        num(fig.height + CAPTION / 2.0 + 4.0),
+        xml_escape(title.get(lang))
+    );
+    s.push_str("</svg>\n");
+    s
+}
+
+/// The TikZ anchor that puts a node on the side `dir` (y down) of its point.
+fn tikz_anchor(dir: Vec2) -> &'static str {
+    // The node lies towards `dir`, so its anchor is on the opposite side.
+    let horiz = if dir.x > 0.35 {
+        "west"
+    } else if dir.x < -0.35 {
+        "east"
+    } else {
+        ""
+    };
+    let vert = if dir.y > 0.35 {
+        "north"
+    } else if dir.y < -0.35 {
+        "south"
+    } else {
+        ""
+    };
+    match (vert, horiz) {
+        ("", "") => "south",
+        ("", h) => h,
+        (v, "") => v,
+        ("north", "west") => "north west",
+        ("north", _) => "north east",
+        (_, "west") => "south west",
+        _ => "south east",
+    }
+}
+
+/// A TikZ picture of the figure with the same geometry as [`svg`]: figure units as
+/// `x = 0.25 mm, y = −0.25 mm` (so the coordinates are the same numbers, y down), hidden edges
+/// dashed, labels as nodes at the labelled points, the title below.
+#[must_use]
+pub fn tikz(fig: &Figure, lang: Lang) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "\\begin{{tikzpicture}}[x={TIKZ_UNIT_MM}mm, y=-{TIKZ_UNIT_MM}mm, font=\\small]"
+    );
+    let _ = writeln!(
+        s,
+        "\\path[use as bounding box] (0,0) rectangle ({},{});",
+        num(fig.width),
+        num(fig.height + CAPTION)
+    );
+    for (a, b, hidden) in &fig.edges {
+        let style = if *hidden { "gray, dashed" } else { "black, thick" };
+        let _ = writeln!(
+            s,
+            "\\draw[{style}] ({},{}) -- ({},{});",
+            num(a.x),
+            num(a.y),
+            num(b.x),
+            num(b.y)
+        );
+    }
+    for l in &fig.vertices {
+        let style = if l.hidden { "draw=gray, fill=white" } else { "fill=black" };
+        let _ =
+            writeln!(s, "\\filldraw[{style}] ({},{}) circle (1.2pt);", num(l.at.x), num(l.at.y));
+    }
+    let centre = Vec2::new(fig.width / 2.0, fig.height / 2.0);
+    for (l, pl) in fig.vertices.iter().zip(placements(&fig.vertices, centre, true)) {
+        let color = if l.hidden { "gray" } else { "black" };
+        let shift = if pl.dir.y >= 0.0 { -1.0 } else { 1.0 } * 9.0 * pl.stack as f32;
+        let _ = writeln!(
+            s,
+            "\\node[anchor={}, inner sep=2pt, text={color}, yshift={}pt] at ({},{}) {{{}}};",
+            tikz_anchor(pl.dir),
+            num(shift),
+            num(l.at.x),
+            num(l.at.y),
+            latex_escape(&l.text)
+        );
+    }
+    for (l, pl) in fig.faces.iter().zip(placements(&fig.faces, centre, false)) {
+        let color = if l.hidden { "blue!50" } else { "blue!70!black" };
+        let shift = -9.0 * pl.stack as f32;
+        let _ = writeln!(
+            s,
+            "\\node[inner sep=1pt, text={color}, font=\\small\\itshape, yshift={}pt] at ({},{}) {{{}}};",
+            num(shift),
+            num(l.at.x),
+            num(l.at.y),
+            latex_escape(&l.text)
+        );
+    }
+    let o = Vec2::new(20.0, fig.height + CAPTION / 2.0);
+    for (d, name) in &fig.axes {
+        let e = o + *d * 9.0;
+        let t = o + *d * 14.0;
+        let _ = writeln!(
+            s,
+            "\\draw[red!80!black, ->] ({},{}) -- ({},{});\n\\node[text=red!80!black, font=\\scriptsize] at ({},{}) {{${}$}};",
+            num(o.x),
+            num(o.y),
+            num(e.x),
+            num(e.y),
+            num(t.x),
+            num(t.y),
+            latex_escape(name)
+        );
+    }
+    let _ = writeln!(
+        s,
+        "\\node at ({},{}) {{{}}};",
+        num(fig.width / 2.0 + 14.0),
+        num(fig.height + CAPTION / 2.0),
+        latex_escape(fig.view.title().get(lang))
+    );
+    s.push_str("\\end{tikzpicture}\n");
+    s
+}
+
+/// The texture figure's geometry in image pixels (x right, y down from the image's top edge):
+/// the region's corners `[(s₀, t₀), (s₁, t₀), (s₁, t₁), (s₀, t₁)]` with their pixel positions.
+fn region_corners(t: &TextureData) -> Option<[(Vec2, Vec2); 4]> {
+    let (w, h) = (t.image.width.max(1) as f32, t.image.height.max(1) as f32);
+    let (lo, hi) = t.region;
+    if !(lo.is_finite() && hi.is_finite()) {
+        return None;
+    }
+    let px = |st: Vec2| Vec2::new(st.x * w, (1.0 - st.y) * h);
+    let st = [lo, Vec2::new(hi.x, lo.y), hi, Vec2::new(lo.x, hi.y)];
+    Some(st.map(|c| (c, px(c))))
+}
+
+/// The texture figure's title.
+fn texture_title() -> Text {
+    Text::new(
+        "テクスチャ画像（赤枠: 地面に貼る範囲、t = 0 が下端）",
+        "the texture image (red: the region on the ground; t = 0 at the bottom)",
+    )
+}
+
+/// A standalone SVG 1.1 document: the image (`image_href`, saved next to the report) at one
+/// figure unit per texel, the mapped rectangle `t.region` outlined in red with each corner
+/// labelled with its `(s, t)` (the `<text>`'s `x`, `y` at the corner's pixel), and the image's
+/// own corners `(0, 0)` (bottom left) and `(1, 1)` (top right) for orientation. Texture
+/// coordinate t = 0 is the image's bottom edge, so the corner (s, t) is at pixel
+/// (s·width, (1 − t)·height) from the top left.
+#[must_use]
+pub fn texture_svg(t: &TextureData, image_href: &str, lang: Lang) -> String {
+    let (w, h) = (t.image.width.max(1) as f32, t.image.height.max(1) as f32);
+    let big = w.max(h);
+    let font = (big / 22.0).max(4.0);
+    // Room for the image's corner labels at the sides, one line of labels above and below.
+    let (mx, my) = (font * 4.5, font * 3.0);
+    let corners = region_corners(t);
+    // The viewBox holds the image, the region (even beyond the image) and the margins.
+    let (mut lo, mut hi) = (Vec2::ZERO, Vec2::new(w, h));
+    if let Some(c) = &corners {
+        for (_, p) in c {
+            lo = lo.min(*p);
+            hi = hi.max(*p);
+        }
+    }
+    let (x0, y0) = (lo.x - mx, lo.y - my);
+    let (vw, vh) = (hi.x - lo.x + 2.0 * mx, hi.y - lo.y + 2.0 * my + font * 1.5);
+    let display_w = 360.0;
+    let display_h = display_w * vh / vw;
+    let mut s = String::new();
+    let _ = writeln!(s, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
+    let _ = writeln!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" version="1.1" width="{}" height="{}" viewBox="{} {} {} {}" font-family="sans-serif" font-size="{}">"#,
+        num(display_w),
+        num(display_h),
+        num(x0),
+        num(y0),
+        num(vw),
+        num(vh),
+        num(font)
+    );
+    let title = texture_title();
+    let _ = writeln!(s, "<title>{}</title>", xml_escape(title.get(lang)));
+    let _ = writeln!(
+        s,
+        r#"<rect x="{}" y="{}" width="{}" height="{}" fill="white"/>"#,
+        num(x0),
+        num(y0),
+        num(vw),
+        num(vh)
+    );
+    let href = xml_escape(image_href);
+    let _ = writeln!(
+        s,
+        r#"<image class="texture" x="0" y="0" width="{}" height="{}" preserveAspectRatio="none" xlink:href="{href}"/>"#,
+        num(w),
+        num(h)
+    );
+    let _ = writeln!(
+        s,
+        r##"<rect class="image-border" x="0" y="0" width="{}" height="{}" fill="none" stroke="#444444" stroke-width="{}"/>"##,
+        num(w),
+        num(h),
+        num(big / 400.0)
+    );
+    let gray = r##"fill="#444444""##;
+    // The image's own corners and axes beside the image (the lines above and below it are the
+    // region's labels'), for orientation.
+    let side = |class: &str, x: f32, y: f32, right: bool, text: &str| {
+        format!(
+            r#"<text class="{class}" x="{}" y="{}" dx="{}" dy="{}" text-anchor="{}" {gray}>{text}</text>"#,
+            num(x),
+            num(y),
+            num(if right { font * 0.4 } else { -font * 0.4 }),
+            num(font * 0.35),
+            if right { "start" } else { "end" },
+        )
+    };
+    let _ = writeln!(s, "{}", side("image-corner", 0.0, h, false, "(0, 0)"));
+    let _ = writeln!(s, "{}", side("image-corner", w, 0.0, true, "(1, 1)"));
+    let _ = writeln!(s, "{}", side("image-axis", w, h, true, "s →"));
+    let _ = writeln!(s, "{}", side("image-axis", 0.0, 0.0, false, "t ↑"));
+    if let Some(c) = corners {
+        let (a, b) = (c[0].1.min(c[2].1), c[0].1.max(c[2].1));
+        let _ = writeln!(
+            s,
+            r##"<rect class="region" x="{}" y="{}" width="{}" height="{}" fill="none" stroke="#ff0000" stroke-width="{}"/>"##,
+            num(a.x),
+            num(a.y),
+            num(b.x - a.x),
+            num(b.y - a.y),
+            num(big / 150.0)
+        );
+        let mid = (a + b) * 0.5;
+        // A label is about 14 characters of 0.62 em; when two do not fit side by side along the
+        // rectangle, the right-hand ones move one line further out.
+        let stacked = b.x - a.x < 2.0 * 14.0 * 0.62 * font + font;
+        for (st, p) in c {
+            // Vertically outside the rectangle, horizontally towards its inside, so a label
+            // stays within the image's width.
+            let right = p.x >= mid.x;
+            let below = p.y >= mid.y;
+            let extra = if right && stacked { font * 1.15 } else { 0.0 };
+            let _ = writeln!(
+                s,
+                r##"<circle cx="{}" cy="{}" r="{}" fill="#ff0000"/>"##,
+                num(p.x),
+                num(p.y),
+                num(big / 120.0)
+            );
+            let _ = writeln!(
+                s,
+                r##"<text class="corner" x="{}" y="{}" dx="{}" dy="{}" text-anchor="{}" fill="#cc0000" stroke="#ffffff" stroke-width="{}" paint-order="stroke">({}, {})</text>"##,
+                num(p.x),
+                num(p.y),
+                num(if right { font * 0.2 } else { -font * 0.2 }),
+                num(if below { font * 1.1 + extra } else { -font * 0.4 - extra }),
+                if right { "end" } else { "start" },
+                num(font / 5.0),
+                fixed(st.x),
+                fixed(st.y)
+            );
+        }
+    }
+    let _ = writeln!(
+        s,
+        r#"<text class="title" x="{}" y="{}" text-anchor="middle" font-size="{}">{}</text>"#,
+        num(x0 + vw / 2.0),
+        num(y0 + vh - font * 0.5),
+        num(font * 0.85),
+        xml_escape(title.get(lang))
+    );
+    s.push_str("</svg>\n");
+    s
+}
+
+/// A TikZ picture of the texture figure: the image (`image_path`, for `\includegraphics`)
+/// 6 cm on its longer side, with the axes' unit vectors set to the image's width and height so
+/// that texture coordinates are the picture's coordinates (t = 0 at the bottom edge), the
+/// mapped rectangle outlined in red and its corners labelled with their `(s, t)`.
+#[must_use]
+pub fn texture_tikz(t: &TextureData, image_path: &str, lang: Lang) -> String {
+    let (w, h) = (t.image.width.max(1) as f32, t.image.height.max(1) as f32);
+    let (cw, ch) = if w >= h { (6.0, 6.0 * h / w) } else { (6.0 * w / h, 6.0) };
+    let mut s = String::new();
+    let _ = writeln!(s, "\\begin{{tikzpicture}}[x={}cm, y={}cm, font=\\small]", num(cw), num(ch));
+    let _ = writeln!(
+        s,
+        "\\node[anchor=south west, inner sep=0pt] at (0,0) {{\\includegraphics[width={}cm, height={}cm]{{{image_path}}}}};",
+        num(cw),
+        num(ch)
+    );
+    let _ = writeln!(s, "\\draw[gray] (0,0) rectangle (1,1);");
+    let (lo, hi) = t.region;
+    let shared = |p: Vec2| {
+        lo.is_finite()
+            && hi.is_finite()
+            && [lo, Vec2::new(hi.x, lo.y), hi, Vec2::new(lo.x, hi.y)]
+                .iter()
+                .any(|c| c.distance(p) < 0.005)
+    };
+    if !shared(Vec2::ZERO) {
+        let _ = writeln!(s, "\\node[anchor=east, text=gray] at (0,0) {{$(0, 0)$}};");
+    }
+    if !shared(Vec2::ONE) {
+        let _ = writeln!(s, "\\node[anchor=west, text=gray] at (1,1) {{$(1, 1)$}};");
+    }
+    let _ = writeln!(s, "\\node[anchor=west, text=gray] at (1,0) {{$s \\rightarrow$}};");
+    let _ = writeln!(s, "\\node[anchor=east, text=gray] at (0,1) {{$t \\uparrow$}};");
+    if lo.is_finite() && hi.is_finite() {
+        let _ = writeln!(
+            s,
+            "\\draw[red, thick] ({},{}) rectangle ({},{});",
+            fixed(lo.x),
+            fixed(lo.y),
+            fixed(hi.x),
+            fixed(hi.y)
+        );
+        let mid = (lo + hi) * 0.5;
+        // A label is about 2.4 cm wide in \\small; when two do not fit side by side along the
+        // rectangle, the right-hand ones move one line further out.
+        let stacked = (hi.x - lo.x).abs() * cw < 2.0 * 2.4 + 0.2;
+        for c in [lo, Vec2::new(hi.x, lo.y), hi, Vec2::new(lo.x, hi.y)] {
+            let shift = match (stacked && c.x >= mid.x, c.y >= mid.y) {
+                (false, _) => 0.0,
+                (true, true) => 1.2,
+                (true, false) => -1.2,
+            };
+            let anchor = match (c.y >= mid.y, c.x >= mid.x) {
+                // Above the top corners, below the bottom ones, towards the inside.
+                (true, true) => "south east",
+                (true, false) => "south west",
+                (false, true) => "north east",
+                (false, false) => "north west",
+            };
+            let _ = writeln!(
+                s,
+                "\\fill[red] ({},{}) circle (1.5pt);\n\\node[anchor={anchor}, fill=white, fill opacity=0.8, text opacity=1, text=red!80!black, inner sep=1pt, yshift={shift}em] at ({},{}) {{$({}, {})$}};",
+                fixed(c.x),
+                fixed(c.y),
+                fixed(c.x),
+                fixed(c.y),
+                fixed(c.x),
+                fixed(c.y)
+            );
+        }
+    }
+    let _ = writeln!(
+        s,
+        "\\node[anchor=north, text width={}cm, align=center] at (0.5,-0.25) {{{}}};",
+        num(cw),
+        latex_escape(texture_title().get(lang))
+    );
+    s.push_str("\\end{tikzpicture}\n");
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tables::tests::{assert_balanced, pyramid, texture_data};
+
+    /// Every `<text>` of a class: its text and its `x`, `y`, after checking the SVG is XML.
+    fn texts(svg: &str, class: &str) -> Vec<(String, f32, f32)> {
+        let doc = roxmltree::Document::parse(svg).unwrap_or_else(|e| panic!("not XML: {e}\n{svg}"));
+        assert_eq!(doc.root_element().tag_name().name(), "svg");
+        assert_eq!(doc.root_element().attribute("version"), Some("1.1"));
+        doc.descendants()
+            .filter(|n| n.has_tag_name("text") && n.attribute("class") == Some(class))
+            .map(|n| {
+                let num =
+                    |a: &str| n.attribute(a).and_then(|v| v.parse::<f32>().ok()).expect("x and y");
+                (n.text().unwrap_or("").to_owned(), num("x"), num("y"))
+            })
+            .collect()
+    }
+
+    /// Orthographic projection by hand, then the fit: scale (SIZE − 2·MARGIN) / extent about the
+    /// centre of the bounding box, model up → page up.
+    fn by_hand(points: &[(f32, f32)], p: (f32, f32)) -> (f32, f32) {
+        let (mut lo, mut hi) = ((f32::MAX, f32::MAX), (f32::MIN, f32::MIN));
+        for &(x, y) in points {
+            lo = (lo.0.min(x), lo.1.min(y));
+            hi = (hi.0.max(x), hi.1.max(y));
+        }
+        let s = (SIZE - 2.0 * MARGIN) / (hi.0 - lo.0).max(hi.1 - lo.1);
+        let mid = ((lo.0 + hi.0) / 2.0, (lo.1 + hi.1) / 2.0);
+        (SIZE / 2.0 + (p.0 - mid.0) * s, SIZE / 2.0 - (p.1 - mid.1) * s)
+    }
+
+    fn find<'a>(labels: &'a [(String, f32, f32)], text: &str) -> &'a (String, f32, f32) {
+        labels
+            .iter()
+            .find(|l| l.0 == text)
+            .unwrap_or_else(|| panic!("no label {text} in {labels:?}"))
+    }
+
+    fn assert_at(labels: &[(String, f32, f32)], text: &str, want: (f32, f32)) {
+        let l = find(labels, text);
+        assert!(
+            (l.1 - want.0).abs() < 0.01 && (l.2 - want.1).abs() < 0.01,
+            "{text} at ({}, {}), want {want:?}",
+            l.1,
+            l.2
+        );
+    }
+
+    // The pyramid: V0 (0, 1, 0), V1 (1, −0.8, 1), V2 (1, −0.8, −1), V3 (−1, −0.8, 1), V4 (−1, −0.8, −1).
+
+    #[test]
+    fn front_view_shows_v1_and_v3_and_hides_v2_and_v4_behind_them() {
+        let svg = svg(&layout(&pyramid(), View::Front), Lang::Ja);
+        let v = texts(&svg, "vertex");
+        assert_eq!(v.len(), 5);
+        // Seen from +z: (x, y).
+        let pts = [(0.0, 1.0), (1.0, -0.8), (1.0, -0.8), (-1.0, -0.8), (-1.0, -0.8)];
+        assert_at(&v, "V0", by_hand(&pts, pts[0]));
+        assert_at(&v, "V1", by_hand(&pts, pts[1]));
+        assert_at(&v, "(V2)", by_hand(&pts, pts[2]));
+        assert_at(&v, "V3", by_hand(&pts, pts[3]));
+        assert_at(&v, "(V4)", by_hand(&pts, pts[4]));
+        // The numbers themselves: scale 168 / 2 = 84, V0 at (120, 120 − 0.1·84 − … ) = (120, 44.4).
+        assert_at(&v, "V0", (120.0, 44.4));
+        assert_at(&v, "V1", (204.0, 195.6));
+        // Only F0 faces +z; F1 faces away, F2–F5 are edge-on.
+        let f = texts(&svg, "face");
+        let names: Vec<&str> = f.iter().map(|l| l.0.as_str()).collect();
+        assert_eq!(names, ["F0", "(F1)", "(F2)", "(F3)", "(F4)", "(F5)"]);
+        // F0's centroid (0, −0.2, 0.667) → (0, −0.2).
+        assert_at(&f, "F0", by_hand(&pts, (0.0, -0.2)));
+        assert!(svg.contains("<title>正面図"));
+    }
+
+    #[test]
+    fn hidden_edges_are_dashed_unless_a_visible_edge_covers_them() {
+        // 9 edges: V0–V1, V0–V2, V0–V3, V0–V4, V1–V2, V1–V3, V2–V3 (the base's diagonal), V2–V4,
+        // V3–V4. Front: only F0 faces +z, so its three edges are solid; V1–V2 and V3–V4 project
+        // to points, and V0–V2, V0–V4, V2–V3, V2–V4 lie exactly under F0's edges: one triangle.
+        let count = |fig: &Figure| {
+            (fig.edges.iter().filter(|e| !e.2).count(), fig.edges.iter().filter(|e| e.2).count())
+        };
+        let front = layout(&pyramid(), View::Front);
+        assert_eq!(count(&front), (3, 0), "{:?}", front.edges);
+        // Top: every side face is visible, so only the base's diagonal V2–V3 (F4, F5) is hidden.
+        let top = layout(&pyramid(), View::Top);
+        assert_eq!(count(&top), (8, 1), "{:?}", top.edges);
+        // Perspective: F0 and F2 face the eye; V0–V4, V2–V3, V2–V4, V3–V4 touch hidden faces only.
+        let persp = layout(&pyramid(), View::Perspective);
+        assert_eq!(count(&persp), (5, 4), "{:?}", persp.edges);
+        assert!(persp.edges.iter().take(4).all(|e| e.2), "hidden edges come first (drawn below)");
+        let svg = svg(&persp, Lang::En);
+        assert_eq!(svg.matches("stroke-dasharray").count(), 4);
+        texts(&svg, "vertex");
+    }
+
+    #[test]
+    fn top_view_hides_the_bottom_faces() {
+        let svg = svg(&layout(&pyramid(), View::Top), Lang::En);
+        // Seen from +y, screen up = −z: (x, −z).
+        let pts = [(0.0, 0.0), (1.0, -1.0), (1.0, 1.0), (-1.0, -1.0), (-1.0, 1.0)];
+        let v = texts(&svg, "vertex");
+        for (k, p) in pts.iter().enumerate() {
+            assert_at(&v, &format!("V{k}"), by_hand(&pts, *p));
+        }
+        assert_at(&v, "V2", (204.0, 36.0));
+        let f = texts(&svg, "face");
+        let names: Vec<&str> = f.iter().map(|l| l.0.as_str()).collect();
+        assert_eq!(names, ["F0", "F1", "F2", "F3", "(F4)", "(F5)"]);
+        // F4 {V1, V3, V2}: centroid (1/3, −0.8, 1/3) → (1/3, −1/3).
+        assert_at(&f, "(F4)", by_hand(&pts, (1.0 / 3.0, -1.0 / 3.0)));
+        assert!(svg.contains("<title>top view"));
+    }
+
+    #[test]
+    fn side_view_sees_f2_only() {
+        let fig = layout(&pyramid(), View::Side);
+        let svg = svg(&fig, Lang::En);
+        // Seen from +x, screen right = −z: (−z, y).
+        let pts = [(0.0, 1.0), (-1.0, -0.8), (1.0, -0.8), (-1.0, -0.8), (1.0, -0.8)];
+        let v = texts(&svg, "vertex");
+        for (k, name) in ["V0", "V1", "V2", "(V3)", "(V4)"].iter().enumerate() {
+            assert_at(&v, name, by_hand(&pts, pts[k]));
+        }
+        let hidden: Vec<bool> = fig.faces.iter().map(|l| l.hidden).collect();
+        assert_eq!(hidden, [true, true, false, true, true, true]);
+        // The axes: z points left, y up.
+        assert!(
+            fig.axes.iter().any(|(d, n)| n == "z" && d.abs_diff_eq(Vec2::new(-1.0, 0.0), 1e-6))
+        );
+        assert!(
+            fig.axes.iter().any(|(d, n)| n == "y" && d.abs_diff_eq(Vec2::new(0.0, -1.0), 1e-6))
+        );
+    }
+
+    #[test]
+    fn perspective_from_the_front_right_hides_the_back_left() {
+        let fig = layout(&pyramid(), View::Perspective);
+        let svg = svg(&fig, Lang::Ja);
+        let v = texts(&svg, "vertex");
+        let names: Vec<&str> = v.iter().map(|l| l.0.as_str()).collect();
+        // The eye is at (3, 2.5, 4)·size from the centre: F0 (+z) and F2 (+x) face it, so
+        // V0–V3 are on visible faces and V4 (−1, −0.8, −1) is behind.
+        assert_eq!(names, ["V0", "V1", "V2", "V3", "(V4)"]);
+        let hidden: Vec<bool> = fig.faces.iter().map(|l| l.hidden).collect();
+        assert_eq!(hidden, [false, true, false, true, true, true]);
+        // A perspective: the near bottom corner V1 is drawn farther below the apex than the far
+        // one V4, and every point lies in the box.
+        let y = |name: &str| find(&v, name).2;
+        assert!(y("V1") > y("(V4)"));
+        for l in &v {
+            assert!((0.0..=SIZE).contains(&l.1) && (0.0..=SIZE).contains(&l.2), "{l:?}");
+        }
+        assert!(svg.contains("<title>透視図</title>"));
+    }
+
+    #[test]
+    fn a_vertex_is_hidden_only_when_a_visible_face_covers_it() {
+        // A corner of a cube-like tetrahedron: V0 at the origin, V1–V3 on the axes. From +z only
+        // the slanted face {V1, V2, V3} (normal (1, 1, 1)/√3) is visible; the three faces at V0
+        // face −x, −y (edge-on) and −z (away). V0 lies exactly behind V3: hidden.
+        let v = vec![Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z];
+        let f = vec![[1, 2, 3], [0, 2, 1], [0, 3, 2], [0, 1, 3]];
+        let p = crate::derive::polygon_from_data(Text::from("corner"), v, f, None);
+        let front = layout(&p, View::Front);
+        let names: Vec<&str> = front.vertices.iter().map(|l| l.text.as_str()).collect();
+        assert_eq!(names, ["(V0)", "V1", "V2", "V3"]);
+        // From +x the slanted face is visible too; V0 is again behind the corner V1.
+        let side = layout(&p, View::Side);
+        assert_eq!(side.vertices[0].text, "(V0)");
+        // A single triangle seen from behind: the face is hidden, but nothing covers its
+        // vertices, so they are on the silhouette and stay visible.
+        let back = crate::derive::polygon_from_data(
+            Text::from("back"),
+            vec![Vec3::ZERO, Vec3::Y, Vec3::X],
+            vec![[0, 1, 2]],
+            None,
+        );
+        let fig = layout(&back, View::Front);
+        let names: Vec<&str> = fig.vertices.iter().map(|l| l.text.as_str()).collect();
+        assert_eq!(names, ["V0", "V1", "V2"]);
+        assert_eq!(fig.faces[0].text, "(F0)");
+        assert!(fig.edges.iter().all(|e| e.2), "every edge of a hidden face is hidden");
+    }
+
+    #[test]
+    fn bad_data_lays_out_without_panics_or_nan() {
+        let mut p = pyramid();
+        p.vertices.push(Vec3::new(f32::NAN, 0.0, 0.0));
+        p.faces.push([0, 1, 9]);
+        p.faces.push([5, 1, 2]);
+        p.faces.push([0, 0, 1]);
+        p.derived_normals.extend([None, None, None]);
+        for view in View::ALL {
+            let fig = layout(&p, view);
+            assert_eq!(fig.vertices.len(), 5, "the NaN vertex is left out");
+            assert_eq!(fig.faces.len(), 7, "faces naming missing or NaN vertices are left out");
+            assert_eq!(fig.faces[6].text, "(F8)", "a degenerate face is not visible");
+            for lang in [Lang::Ja, Lang::En] {
+                let s = svg(&fig, lang);
+                texts(&s, "vertex");
+                assert!(!s.contains("NaN") && !s.contains("inf"), "{s}");
+                assert_balanced(&tikz(&fig, lang));
+            }
+        }
+        let empty =
+            PolygonData { vertices: vec![], faces: vec![], derived_normals: vec![], ..pyramid() };
+        let fig = layout(&empty, View::Perspective);
+        assert!(fig.vertices.is_empty() && fig.edges.is_empty());
+        texts(&svg(&fig, Lang::En), "vertex");
+    }
+
+    #[test]
+    fn tikz_has_the_same_geometry() {
+        let fig = layout(&pyramid(), View::Front);
+        let tex = tikz(&fig, Lang::Ja);
+        assert_balanced(&tex);
+        assert!(tex.starts_with("\\begin{tikzpicture}[x=0.25mm, y=-0.25mm"));
+        assert!(tex.contains("at (120.00,44.40) {V0};"), "{tex}");
+        assert!(tex.contains("at (204.00,195.60) {(V2)};"), "{tex}");
+        assert_eq!(tex.matches("dashed").count(), 0, "the front view is one triangle");
+        assert_eq!(tikz(&layout(&pyramid(), View::Top), Lang::En).matches("dashed").count(), 1);
+        assert!(tex.contains("正面図"));
+    }
+
+    #[test]
+    fn texture_figure_outlines_the_region_at_its_pixels() {
+        // A 200 × 100 image, region s ∈ [0.25, 0.75], t ∈ [0.5, 1]: t = 1 is the top edge, so the
+        // rectangle spans x 50…150, y 0…50 (SVG y down from the top).
+        let t = texture_data();
+        let svg = texture_svg(&t, "texture & <1>.png", Lang::En);
+        let doc = roxmltree::Document::parse(&svg).expect("XML");
+        let rect = doc
+            .descendants()
+            .find(|n| n.attribute("class") == Some("region"))
+            .expect("the region's outline");
+        let a = |k: &str| rect.attribute(k).and_then(|v| v.parse::<f32>().ok()).expect("number");
+        assert_eq!((a("x"), a("y"), a("width"), a("height")), (50.0, 0.0, 100.0, 50.0));
+        let image = doc.descendants().find(|n| n.has_tag_name("image")).expect("the image");
+        assert_eq!(
+            image.attribute(("http://www.w3.org/1999/xlink", "href")),
+            Some("texture & <1>.png")
+        );
+        let c = texts(&svg, "corner");
+        assert_eq!(c.len(), 4);
+        assert_at(&c, "(0.250, 0.500)", (50.0, 50.0));
+        assert_at(&c, "(0.750, 0.500)", (150.0, 50.0));
+        assert_at(&c, "(0.750, 1.000)", (150.0, 0.0));
+        assert_at(&c, "(0.250, 1.000)", (50.0, 0.0));
+        let ja = texture_svg(&t, "texture.png", Lang::Ja);
+        assert!(texts(&ja, "title")[0].0.contains("下端"));
+        let tex = texture_tikz(&t, "texture.png", Lang::En);
+        assert_balanced(&tex);
+        assert!(tex.contains("\\draw[red, thick] (0.250,0.500) rectangle (0.750,1.000);"), "{tex}");
+        assert!(tex.contains("x=6.00cm, y=3.00cm"), "{tex}");
+    }
+
+    /// Compiles the TikZ figures and the LaTeX tables with LuaLaTeX (`ltjsarticle`, as the
+    /// template does) when `lualatex` is on PATH; prints a note and passes otherwise.
+    #[test]
+    fn tikz_and_tables_compile_with_lualatex() {
+        use crate::model::PolygonData;
+        use crate::tables;
+        use crate::template::Format;
+        let found = std::process::Command::new("lualatex")
+            .arg("--version")
+            .output()
+            .is_ok_and(|o| o.status.success());
+        if !found {
+            eprintln!("note: lualatex is not on PATH; the LaTeX compile test is skipped");
+            return;
+        }
+        let dir = std::env::temp_dir().join(format!("cg-report-tikz-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        let t = texture_data();
+        let image = cg_core::image::Image::new(
+            t.image.width,
+            t.image.height,
+            cg_core::glam::Vec3::new(0.2, 0.6, 0.9),
+        );
+        cg_scene::save_png(&dir.join("texture.png"), &image).expect("png");
+        let mut p: PolygonData = pyramid();
+        p.transform = Some(
+            cg_core::product::MatrixProduct::identity()
+                .then(cg_core::product::Factor::translate(Vec3::new(0.0, 1.0, 0.0))),
+        );
+        let cam = crate::tables::tests::camera();
+        let mut body = String::new();
+        for lang in [Lang::Ja, Lang::En] {
+            for view in View::ALL {
+                body += &tikz(&layout(&p, view), lang);
+                body += "\n";
+            }
+            body += &texture_tikz(&t, "texture.png", lang);
+            body += "\n";
+            body += &tables::vertex_table(&p, lang, Format::Latex);
+            body += &tables::face_table(&p, lang, Format::Latex);
+            body += &tables::transform(&p, lang, Format::Latex);
+            body += &tables::matrices(std::slice::from_ref(&cam), lang, Format::Latex);
+            body += &tables::variables(&cam.variables, lang, Format::Latex);
+            body += &tables::formula(&t, lang, Format::Latex);
+            body += &tables::tex_table(&t, lang, Format::Latex);
+        }
+        let doc = format!(
+            "\\documentclass[a4paper,11pt]{{ltjsarticle}}\n\\usepackage{{amsmath}}\n\\usepackage{{graphicx}}\n\\usepackage{{booktabs}}\n\\usepackage{{longtable}}\n\\usepackage{{tikz}}\n\\setcounter{{MaxMatrixCols}}{{20}}\n\\begin{{document}}\n{body}\\end{{document}}\n"
+        );
+        std::fs::write(dir.join("figures.tex"), doc).expect("write tex");
+        let out = std::process::Command::new("lualatex")
+            .args(["-interaction=nonstopmode", "-halt-on-error", "figures.tex"])
+            .current_dir(&dir)
+            .output()
+            .expect("lualatex runs");
+        let log = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success(),
+            "lualatex failed:\n{}",
+            &log[log.len().saturating_sub(3000)..]
+        );
+        assert!(dir.join("figures.pdf").exists());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
