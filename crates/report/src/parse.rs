@@ -69,7 +69,8 @@ impl ParseProblem {
             (n, Lang::En) => format!("line {n}"),
             (n, Lang::Ja) => format!("{n} 行目"),
         };
-        let found = if self.found.is_empty() { String::new() } else { format!(" `{}` —", self.found) };
+        let found =
+            if self.found.is_empty() { String::new() } else { format!(" `{}` —", self.found) };
         match lang {
             Lang::En => format!("{place}:{found} expected {}", self.expected.en),
             Lang::Ja => format!("{place}:{found} 期待する書き方: {}", self.expected.ja),
@@ -177,7 +178,9 @@ pub fn parse_number(s: &str) -> Option<Written> {
         None => (rest, None),
     };
     let digits = |d: &str| d.chars().all(|c| c.is_ascii_digit());
-    if !digits(int) || !frac.is_none_or(digits) || (int.is_empty() && frac.is_none_or(str::is_empty))
+    if !digits(int)
+        || !frac.is_none_or(digits)
+        || (int.is_empty() && frac.is_none_or(str::is_empty))
     {
         return None;
     }
@@ -323,14 +326,21 @@ fn tuple(content: &str, n: usize) -> Result<Vec<Written>, GroupError> {
     if parts.len() != n {
         return Err(GroupError::Count(parts.len()));
     }
-    parts.iter().map(|p| parse_number(p).ok_or_else(|| GroupError::NotNumber((*p).to_owned()))).collect()
+    parts
+        .iter()
+        .map(|p| parse_number(p).ok_or_else(|| GroupError::NotNumber((*p).to_owned())))
+        .collect()
 }
 
 /// The tuple of `n` numbers at `pos`, or, when that group is not one (a derivation such as
 /// `V1 = (cos 30°, 0, sin 30°) = (0.866, 0, 0.5)`), the first of the groups after `=` that is.
 /// `None` when there is no group at `pos`; otherwise the tuple or the first group's error, and
 /// the end of what was read.
-fn tuple_chain(line: &str, pos: usize, n: usize) -> Option<(Result<Vec<Written>, GroupError>, usize)> {
+fn tuple_chain(
+    line: &str,
+    pos: usize,
+    n: usize,
+) -> Option<(Result<Vec<Written>, GroupError>, usize)> {
     let mut first_error = None;
     let mut pos = pos;
     let mut end = pos;
@@ -383,7 +393,9 @@ fn face_vertices(content: &str) -> Result<[u32; 3], GroupError> {
 
 fn detail(e: &GroupError, what_ja: &str, what_en: &str) -> Text {
     match e {
-        GroupError::Unclosed => Text::new("（括弧が閉じていません）", " (the bracket is not closed)"),
+        GroupError::Unclosed => {
+            Text::new("（括弧が閉じていません）", " (the bracket is not closed)")
+        }
         GroupError::Count(k) => {
             Text::new(format!("（{what_ja}が {k} 個あります）"), format!(" (found {k} {what_en})"))
         }
@@ -480,8 +492,14 @@ impl Reader {
                 let first = &self.report.vertices[k];
                 if !same_numbers(&first.coords, &v.coords) {
                     let expected = Text::new(
-                        format!("頂点番号は 1 回ずつ（V{} は {} 行目に別の座標で書かれています）", v.index, first.line),
-                        format!("each vertex number once (V{} is already on line {} with other coordinates)", v.index, first.line),
+                        format!(
+                            "頂点番号は 1 回ずつ（V{} は {} 行目に別の座標で書かれています）",
+                            v.index, first.line
+                        ),
+                        format!(
+                            "each vertex number once (V{} is already on line {} with other coordinates)",
+                            v.index, first.line
+                        ),
                     );
                     self.problem(v.line, found, expected, RowKind::Vertex);
                 }
@@ -508,8 +526,14 @@ impl Reader {
                     }
                 } else {
                     let expected = Text::new(
-                        format!("面番号は 1 回ずつ（F{} は {} 行目に別の頂点か法線で書かれています）", f.index, first.line),
-                        format!("each face number once (F{} is already on line {} with other vertices or another normal)", f.index, first.line),
+                        format!(
+                            "面番号は 1 回ずつ（F{} は {} 行目に別の頂点か法線で書かれています）",
+                            f.index, first.line
+                        ),
+                        format!(
+                            "each face number once (F{} is already on line {} with other vertices or another normal)",
+                            f.index, first.line
+                        ),
                     );
                     let line = f.line;
                     self.problem(line, found, expected, RowKind::Face);
@@ -531,8 +555,14 @@ impl Reader {
                     && first.tex.iter().zip(&t.tex).all(|(a, b)| same_numbers(a, b));
                 if !same {
                     let expected = Text::new(
-                        format!("格子点 ({}, {}) は 1 回ずつ（{} 行目に別の値で書かれています）", t.i, t.j, first.line),
-                        format!("each grid vertex ({}, {}) once (it is already on line {} with other numbers)", t.i, t.j, first.line),
+                        format!(
+                            "格子点 ({}, {}) は 1 回ずつ（{} 行目に別の値で書かれています）",
+                            t.i, t.j, first.line
+                        ),
+                        format!(
+                            "each grid vertex ({}, {}) once (it is already on line {} with other numbers)",
+                            t.i, t.j, first.line
+                        ),
                     );
                     self.problem(t.line, found, expected, RowKind::Texture);
                 }
@@ -619,9 +649,14 @@ impl Reader {
         let inner = inner.strip_suffix('|').unwrap_or(inner);
         let cells: Vec<&str> = inner.split('|').map(str::trim).collect();
         let int = |s: &str| {
-            if !s.is_empty() && s.chars().all(|c| c.is_ascii_digit()) { s.parse::<u32>().ok() } else { None }
+            if !s.is_empty() && s.chars().all(|c| c.is_ascii_digit()) {
+                s.parse::<u32>().ok()
+            } else {
+                None
+            }
         };
-        let (Some(i), Some(j)) = (cells.first().and_then(|c| int(c)), cells.get(1).and_then(|c| int(c)))
+        let (Some(i), Some(j)) =
+            (cells.first().and_then(|c| int(c)), cells.get(1).and_then(|c| int(c)))
         else {
             return;
         };
@@ -638,7 +673,10 @@ impl Reader {
             }
         };
         let Some(tex_cell) = cells.get(3).filter(|c| !c.is_empty()) else {
-            let why = Text::new("（テクスチャ座標がありません）", " (the texture coordinates are missing)");
+            let why = Text::new(
+                "（テクスチャ座標がありません）",
+                " (the texture coordinates are missing)",
+            );
             self.problem(n, trimmed, expected_tex(why), RowKind::Texture);
             return;
         };
@@ -814,8 +852,7 @@ impl Reader {
                     let at = entry_offset + (entry.len() - entry.trim_start().len());
                     entry_offset += entry.len() + 1;
                     let t = entry.trim();
-                    let inner =
-                        t.strip_prefix('{').and_then(|s| s.strip_suffix('}')).unwrap_or(t);
+                    let inner = t.strip_prefix('{').and_then(|s| s.strip_suffix('}')).unwrap_or(t);
                     match parse_number(inner) {
                         Some(w) => {
                             values.push(w);
@@ -824,7 +861,12 @@ impl Reader {
                         None => {
                             ok = false;
                             let found = if t.is_empty() { row } else { t };
-                            self.problem(line_of(at), found, expected_matrix_entry(), RowKind::Matrix);
+                            self.problem(
+                                line_of(at),
+                                found,
+                                expected_matrix_entry(),
+                                RowKind::Matrix,
+                            );
                         }
                     }
                 }
@@ -863,8 +905,14 @@ impl Reader {
                     let same = first.rows.iter().zip(&m.rows).all(|(a, b)| same_numbers(a, b));
                     if !same {
                         let expected = Text::new(
-                            format!("タグ `{}` は 1 回ずつ（{} 行目に別の行列があります）", m.id, first.line),
-                            format!("each tag once (`{}` is already on line {} with another matrix)", m.id, first.line),
+                            format!(
+                                "タグ `{}` は 1 回ずつ（{} 行目に別の行列があります）",
+                                m.id, first.line
+                            ),
+                            format!(
+                                "each tag once (`{}` is already on line {} with another matrix)",
+                                m.id, first.line
+                            ),
                         );
                         self.problem(tag.line, &tag.text, expected, RowKind::Matrix);
                     }
@@ -972,8 +1020,16 @@ pub fn polygon_from_text(text: &str, name: Text) -> Result<PolygonData, Vec<Pars
                 v.line,
                 vertex_text(v),
                 Text::new(
-                    format!("V0 から V{} まで欠けのない頂点番号（{} がありません）", n - 1, missing(&has_vertex, n, 'V')),
-                    format!("vertex numbers V0 to V{} without gaps ({} is missing)", n - 1, missing(&has_vertex, n, 'V')),
+                    format!(
+                        "V0 から V{} まで欠けのない頂点番号（{} がありません）",
+                        n - 1,
+                        missing(&has_vertex, n, 'V')
+                    ),
+                    format!(
+                        "vertex numbers V0 to V{} without gaps ({} is missing)",
+                        n - 1,
+                        missing(&has_vertex, n, 'V')
+                    ),
                 ),
             );
             continue;
@@ -991,8 +1047,16 @@ pub fn polygon_from_text(text: &str, name: Text) -> Result<PolygonData, Vec<Pars
                 f.line,
                 face_text(f),
                 Text::new(
-                    format!("F0 から F{} まで欠けのない面番号（{} がありません）", m - 1, missing(&has_face, m, 'F')),
-                    format!("face numbers F0 to F{} without gaps ({} is missing)", m - 1, missing(&has_face, m, 'F')),
+                    format!(
+                        "F0 から F{} まで欠けのない面番号（{} がありません）",
+                        m - 1,
+                        missing(&has_face, m, 'F')
+                    ),
+                    format!(
+                        "face numbers F0 to F{} without gaps ({} is missing)",
+                        m - 1,
+                        missing(&has_face, m, 'F')
+                    ),
                 ),
             );
             continue;
@@ -1059,7 +1123,10 @@ V4 (-1.0, -0.8, -1.0)
 /// not use the parser).
 #[cfg(test)]
 pub(crate) fn line_of(text: &str, needle: &str) -> usize {
-    text.lines().position(|l| l.contains(needle)).map(|k| k + 1).unwrap_or_else(|| panic!("{needle:?} not in the text"))
+    text.lines()
+        .position(|l| l.contains(needle))
+        .map(|k| k + 1)
+        .unwrap_or_else(|| panic!("{needle:?} not in the text"))
 }
 
 #[cfg(test)]
@@ -1090,8 +1157,13 @@ mod tests {
         assert_eq!(n("15"), Some((15.0, 0)));
         assert_eq!(n(" .5 "), Some((0.5, 1)));
         assert_eq!(n("5."), Some((5.0, 0)));
-        assert_eq!(parse_number("−0.8").map(|w| w.text), Some("−0.8".to_owned()), "kept as written");
-        for bad in ["", "-", ".", "1e-3", "0,5", "\\cos 30°", "0.8.1", "- 1", "inf", "NaN", "1/2"] {
+        assert_eq!(
+            parse_number("−0.8").map(|w| w.text),
+            Some("−0.8".to_owned()),
+            "kept as written"
+        );
+        for bad in ["", "-", ".", "1e-3", "0,5", "\\cos 30°", "0.8.1", "- 1", "inf", "NaN", "1/2"]
+        {
             assert_eq!(parse_number(bad), None, "{bad:?}");
         }
         assert_eq!(parse_number(&"9".repeat(400)), None, "too large to be finite");
@@ -1119,6 +1191,9 @@ mod tests {
         assert_eq!(n0.each_ref().map(|w| w.decimals), [1, 2, 2]);
         assert_eq!(values(r.faces[3].normal.as_ref().unwrap()), [-0.85, 0.53, 0.0]);
     }
+
+    /// Index, line, vertices and normal values of a face row.
+    type FaceRow = (u32, usize, [u32; 3], Option<Vec<f64>>);
 
     #[test]
     fn the_kits_tables_and_other_spellings_parse() {
@@ -1152,7 +1227,7 @@ Edges V3–V5, F9.
                 (5, 11, vec![0.866, 0.0, 0.5]),
             ]
         );
-        let faces: Vec<(u32, usize, [u32; 3], Option<Vec<f64>>)> = r
+        let faces: Vec<FaceRow> = r
             .faces
             .iter()
             .map(|f| (f.index, f.line, f.vertices, f.normal.as_ref().map(|n| values(n))))
@@ -1175,7 +1250,11 @@ Edges V3–V5, F9.
         assert_eq!(r.vertices.len(), 1);
         assert_eq!(r.faces.len(), 1);
         assert_eq!(r.faces[0].line, 2);
-        assert_eq!(values(r.faces[0].normal.as_ref().unwrap()), [0.0, 0.49, 0.87], "the later normal fills in");
+        assert_eq!(
+            values(r.faces[0].normal.as_ref().unwrap()),
+            [0.0, 0.49, 0.87],
+            "the later normal fills in"
+        );
     }
 
     #[test]
@@ -1282,14 +1361,26 @@ V6 (1.0, 2.0, 3.0
         assert!(by_line(2).expected.en.contains("found 2 numbers"), "{}", by_line(2).expected);
         assert_eq!(by_line(3).found, "F3 { V0, V4 }");
         assert!(by_line(3).expected.en.contains("three vertex numbers"), "{}", by_line(3).expected);
-        assert!(by_line(3).message(Lang::En).starts_with("line 3: `F3 { V0, V4 }` — expected three vertex numbers"));
+        assert!(
+            by_line(3)
+                .message(Lang::En)
+                .starts_with("line 3: `F3 { V0, V4 }` — expected three vertex numbers")
+        );
         assert!(by_line(4).expected.en.contains("`2` is not a vertex number"));
         assert!(by_line(5).expected.en.contains("normal"));
-        assert!(by_line(6).expected.en.contains("line 1"), "the duplicate names the first: {}", by_line(6).expected);
+        assert!(
+            by_line(6).expected.en.contains("line 1"),
+            "the duplicate names the first: {}",
+            by_line(6).expected
+        );
         assert!(by_line(7).expected.en.contains("`abc`"));
         assert!(by_line(8).expected.en.contains("missing"));
         assert!(by_line(11).expected.en.contains("pmatrix"));
-        assert!(by_line(14).expected.en.contains("found 3 rows of 3, 3, 3 entries"), "{}", by_line(14).expected);
+        assert!(
+            by_line(14).expected.en.contains("found 3 rows of 3, 3, 3 entries"),
+            "{}",
+            by_line(14).expected
+        );
         assert_eq!(by_line(17).found, "\\cos 30°");
         assert!(by_line(17).expected.en.contains("0.866"));
         assert!(by_line(20).expected.en.contains("not closed"));
@@ -1321,7 +1412,8 @@ V6 (1.0, 2.0, 3.0
         assert_eq!(written[0], Vec3::new(0.0, 0.53, 0.85));
         assert_eq!(written[5], Vec3::new(0.0, -1.0, 0.0));
         // Without every normal, there are no student normals.
-        let text = "V0 (0,0,0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 { V0, V1, V2 } { 0, 0, 1 }\nF1 { V0, V2, V1 }";
+        let text =
+            "V0 (0,0,0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 { V0, V1, V2 } { 0, 0, 1 }\nF1 { V0, V2, V1 }";
         assert_eq!(polygon_from_text(text, Text::default()).unwrap().student_normals, None);
     }
     use cg_core::glam::DVec3;
@@ -1338,7 +1430,11 @@ V6 (1.0, 2.0, 3.0
         let e = err("V0 (0,0,0)\nV1 (1,0,0)\nV3 (0,1,0)\nF0 { V0, V1, V3 }\nF1 { V0, V1, V7 }");
         let got: Vec<usize> = e.iter().map(|p| p.line).collect();
         assert_eq!(got, vec![3, 5], "{e:?}");
-        assert!(e[0].expected.en.contains("V0 to V2") && e[0].expected.en.contains("V2 is missing"), "{}", e[0].expected);
+        assert!(
+            e[0].expected.en.contains("V0 to V2") && e[0].expected.en.contains("V2 is missing"),
+            "{}",
+            e[0].expected
+        );
         assert!(e[1].expected.en.contains("no V7"), "{}", e[1].expected);
         for p in &e {
             messages_name(p, p.line);
@@ -1348,12 +1444,18 @@ V6 (1.0, 2.0, 3.0
         assert_eq!(e.len(), 1);
         assert!(e[0].expected.en.contains("F1 is missing"), "{}", e[0].expected);
 
-        let e = err(&format!("V0 ({}, 0, 0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 {{ V0, V1, V2 }}", "9".repeat(40)));
+        let e = err(&format!(
+            "V0 ({}, 0, 0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 {{ V0, V1, V2 }}",
+            "9".repeat(40)
+        ));
         assert_eq!(e.len(), 1);
         assert!(e[0].expected.en.contains("f32"), "{}", e[0].expected);
 
         let e = err("V0 (0,0,0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 { V0, V1 }\n");
-        assert_eq!(e.iter().map(|p| (p.line, p.kind)).collect::<Vec<_>>(), vec![(0, RowKind::Data), (4, RowKind::Face)]);
+        assert_eq!(
+            e.iter().map(|p| (p.line, p.kind)).collect::<Vec<_>>(),
+            vec![(0, RowKind::Data), (4, RowKind::Face)]
+        );
     }
 
     /// Text built from the notation's own pieces, so random input reaches every branch.

@@ -233,11 +233,30 @@ impl Checker {
             match data.get(v.index as usize) {
                 Some(p) => {
                     let d = p.as_dvec3().to_array();
-                    self.tuple(v.line, format!("V{}", v.index), &v.coords, &d, &["x", "y", "z"], false);
+                    self.tuple(
+                        v.line,
+                        format!("V{}", v.index),
+                        &v.coords,
+                        &d,
+                        &["x", "y", "z"],
+                        false,
+                    );
                 }
                 None => self.note(
-                    format!("V{}（{} 行目）: データに V{} はありません（頂点は {} 個）", v.index, v.line, v.index, data.len()),
-                    format!("V{} (line {}): the data has no V{} (it has {} vertices)", v.index, v.line, v.index, data.len()),
+                    format!(
+                        "V{}（{} 行目）: データに V{} はありません（頂点は {} 個）",
+                        v.index,
+                        v.line,
+                        v.index,
+                        data.len()
+                    ),
+                    format!(
+                        "V{} (line {}): the data has no V{} (it has {} vertices)",
+                        v.index,
+                        v.line,
+                        v.index,
+                        data.len()
+                    ),
                 ),
             }
         }
@@ -247,11 +266,21 @@ impl Checker {
         let Some(w) = &f.normal else { return };
         match derived {
             Some(n) => {
-                self.tuple(f.line, format!("F{} normal", f.index), w, &n.to_array(), &["x", "y", "z"], true);
+                self.tuple(
+                    f.line,
+                    format!("F{} normal", f.index),
+                    w,
+                    &n.to_array(),
+                    &["x", "y", "z"],
+                    true,
+                );
             }
             None => self.note(
                 format!("F{}（{} 行目）: 面積 0 の面なので法線を導出できません", f.index, f.line),
-                format!("F{} (line {}): the face has no area, so its normal cannot be derived", f.index, f.line),
+                format!(
+                    "F{} (line {}): the face has no area, so its normal cannot be derived",
+                    f.index, f.line
+                ),
             ),
         }
     }
@@ -292,8 +321,14 @@ impl Checker {
 
     fn no_face(&mut self, f: &ParsedFace, count: usize) {
         self.note(
-            format!("F{}（{} 行目）: データに F{} はありません（面は {count} 個）", f.index, f.line, f.index),
-            format!("F{} (line {}): the data has no F{} (it has {count} faces)", f.index, f.line, f.index),
+            format!(
+                "F{}（{} 行目）: データに F{} はありません（面は {count} 個）",
+                f.index, f.line, f.index
+            ),
+            format!(
+                "F{} (line {}): the data has no F{} (it has {count} faces)",
+                f.index, f.line, f.index
+            ),
         );
     }
 
@@ -315,7 +350,8 @@ impl Checker {
             for (r, row) in m.rows.iter().enumerate().take(4) {
                 for (c, w) in row.iter().enumerate().take(4) {
                     let d = f64::from(mat.col(c)[r]);
-                    let line = m.entry_lines.get(r).and_then(|l| l.get(c)).copied().unwrap_or(m.line);
+                    let line =
+                        m.entry_lines.get(r).and_then(|l| l.get(c)).copied().unwrap_or(m.line);
                     self.tuple(
                         line,
                         format!("{} (row {}, column {})", m.id, r + 1, c + 1),
@@ -356,8 +392,14 @@ impl Checker {
         for t in rows {
             let Some(row) = data.rows.iter().find(|r| r.i == t.i && r.j == t.j) else {
                 self.note(
-                    format!("格子点 ({}, {})（{} 行目）は導出したデータにありません", t.i, t.j, t.line),
-                    format!("grid vertex ({}, {}) (line {}) is not in the derived data", t.i, t.j, t.line),
+                    format!(
+                        "格子点 ({}, {})（{} 行目）は導出したデータにありません",
+                        t.i, t.j, t.line
+                    ),
+                    format!(
+                        "grid vertex ({}, {}) (line {}) is not in the derived data",
+                        t.i, t.j, t.line
+                    ),
                 );
                 continue;
             };
@@ -383,7 +425,9 @@ impl Checker {
         }
         let pair = |w: &[Written; 2]| format!("({}, {})", w[0].text, w[1].text);
         let decimals = t.tex.iter().flatten().map(|w| w.decimals).max().unwrap_or(3);
-        let dpair = |v: &Vec2| format!("({}, {})", show(f64::from(v.x), decimals), show(f64::from(v.y), decimals));
+        let dpair = |v: &Vec2| {
+            format!("({}, {})", show(f64::from(v.x), decimals), show(f64::from(v.y), decimals))
+        };
         let written: Vec<String> = t.tex.iter().map(pair).collect();
         let derived: Vec<String> = row.tex.iter().map(dpair).collect();
         let (mut ja, mut en) = (Vec::new(), Vec::new());
@@ -429,7 +473,9 @@ impl Checker {
 /// The written pairs that match no derived pair, under the best one-to-one assignment (small
 /// sets: exhaustive; larger ones: greedy).
 fn unmatched(written: &[[Written; 2]], derived: &[Vec2]) -> Vec<usize> {
-    let fits = |w: &[Written; 2], d: &Vec2| accepts(&w[0], f64::from(d.x)) && accepts(&w[1], f64::from(d.y));
+    let fits = |w: &[Written; 2], d: &Vec2| {
+        accepts(&w[0], f64::from(d.x)) && accepts(&w[1], f64::from(d.y))
+    };
     fn best(
         k: usize,
         used: &mut Vec<bool>,
@@ -721,7 +767,8 @@ pub fn face_outwardness(vertices: &[Vec3], faces: &[[u32; 3]]) -> Vec<Option<boo
         let mut used: Vec<u32> = part.iter().flat_map(|&f| faces[f]).collect();
         used.sort_unstable();
         used.dedup();
-        let o = used.iter().map(|&k| vertices[k as usize].as_dvec3()).sum::<DVec3>() / used.len() as f64;
+        let o = used.iter().map(|&k| vertices[k as usize].as_dvec3()).sum::<DVec3>()
+            / used.len() as f64;
         let (mut volume, mut scale) = (0.0f64, 0.0f64);
         for &f in &part {
             let [a, b, c] = faces[f].map(|k| vertices[k as usize].as_dvec3() - o);
@@ -750,7 +797,8 @@ mod tests {
     use cg_core::texture::Texture;
     use proptest::prelude::*;
 
-    const PYRAMID_FACES: [[u32; 3]; 6] = [[0, 3, 1], [0, 2, 4], [0, 1, 2], [0, 4, 3], [1, 3, 2], [4, 2, 3]];
+    const PYRAMID_FACES: [[u32; 3]; 6] =
+        [[0, 3, 1], [0, 2, 4], [0, 1, 2], [0, 4, 3], [1, 3, 2], [4, 2, 3]];
 
     fn pyramid_vertices() -> Vec<Vec3> {
         vec![
@@ -911,7 +959,10 @@ $$ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0
     #[test]
     fn planted_mistakes_are_named_and_nothing_else() {
         let text = CLEAN
-            .replace("| F2 | { V0, V1, V2 } | { 0.874, 0.486, 0.000 } |", "| F2 | { V0, V1, V2 } | { 0.874, 0.586, 0.000 } |")
+            .replace(
+                "| F2 | { V0, V1, V2 } | { 0.874, 0.486, 0.000 } |",
+                "| F2 | { V0, V1, V2 } | { 0.874, 0.586, 0.000 } |",
+            )
             .replace("| F4 | { V1, V3, V2 }", "| F4 | { V1, V2, V3 }")
             .replace("0.866 & 0 & 0.5 & 1 \\\\", "0.866 & 0 & 0.5 & 1.5 \\\\")
             .replace("(1.000, 0.500) / (0.300, 0.500)", "(1.000, 0.500) / (0.300, 0.600)");
@@ -934,7 +985,10 @@ $$ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0
         assert!((f[0].tolerance.unwrap() - 0.001).abs() < 1e-5);
         assert!(f[0].why.en.contains("y is 0.586"), "{}", f[0].why);
         assert!(!f[0].why.en.contains("x is"), "only the wrong component: {}", f[0].why);
-        assert_eq!((f[1].written.as_str(), f[1].derived.as_str()), ("{ V1, V2, V3 }", "{ V1, V3, V2 }"));
+        assert_eq!(
+            (f[1].written.as_str(), f[1].derived.as_str()),
+            ("{ V1, V2, V3 }", "{ V1, V3, V2 }")
+        );
         assert!(f[1].why.en.contains("inward") && f[1].tolerance.is_none());
         assert_eq!((f[2].written.as_str(), f[2].derived.as_str()), ("1.5", "1.0"));
         assert!(f[3].why.en.contains("(0.300, 0.600)"), "{}", f[3].why);
@@ -950,9 +1004,10 @@ $$ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0
 
     #[test]
     fn a_rotated_face_is_fine_and_other_vertices_are_one_finding() {
-        let text = CLEAN
-            .replace("| F0 | { V0, V3, V1 }", "| F0 | { V3, V1, V0 }")
-            .replace("| F1 | { V0, V2, V4 } | { 0.000, 0.486, -0.874 }", "| F1 | { V0, V1, V4 } | { 0.000, 0.486, 0.874 }");
+        let text = CLEAN.replace("| F0 | { V0, V3, V1 }", "| F0 | { V3, V1, V0 }").replace(
+            "| F1 | { V0, V2, V4 } | { 0.000, 0.486, -0.874 }",
+            "| F1 | { V0, V1, V4 } | { 0.000, 0.486, 0.874 }",
+        );
         let v = check(&text);
         assert_eq!(items(&v), vec![(line_of(&text, "| F1 |"), "F1 vertices")], "{:#?}", v.findings);
         assert_eq!(v.findings[0].derived, "{ V0, V2, V4 }");
@@ -968,8 +1023,16 @@ $$ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0
         let has = |s: &str| notes.iter().any(|n| n.contains(s));
         assert!(has("no V9"), "{notes:?}");
         assert!(has("no F8"), "{notes:?}");
-        assert!(has("`a9.unknown`") && has("known: a1.transform, a2.view.start, a3.object0.t1.5"), "{notes:?}");
-        assert!(has("no tagged matrix found in the report for: a1.transform, a2.view.start, a3.object0.t1.5"), "{notes:?}");
+        assert!(
+            has("`a9.unknown`") && has("known: a1.transform, a2.view.start, a3.object0.t1.5"),
+            "{notes:?}"
+        );
+        assert!(
+            has(
+                "no tagged matrix found in the report for: a1.transform, a2.view.start, a3.object0.t1.5"
+            ),
+            "{notes:?}"
+        );
         assert!(has("(7, 7)"), "{notes:?}");
         assert!(!has("no vertex table") && !has("no face table"), "{notes:?}");
         assert!(v.notes.iter().all(|n| !n.ja.is_empty() && n.ja != n.en));
@@ -991,9 +1054,11 @@ $$ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0
         let polygon = polygon_from_text(LECTURE_SLIDE, Text::new("四角すい", "pyramid")).unwrap();
         let (report, _) = parse_report(LECTURE_SLIDE);
         let v = verify_data(&polygon, &report);
-        let expected: Vec<(usize, String)> =
-            (0..4).map(|k| (line_of(LECTURE_SLIDE, &format!("F{k} {{")), format!("F{k} normal"))).collect();
-        let got: Vec<(usize, String)> = v.findings.iter().map(|f| (f.line, f.item.clone())).collect();
+        let expected: Vec<(usize, String)> = (0..4)
+            .map(|k| (line_of(LECTURE_SLIDE, &format!("F{k} {{")), format!("F{k} normal")))
+            .collect();
+        let got: Vec<(usize, String)> =
+            v.findings.iter().map(|f| (f.line, f.item.clone())).collect();
         assert_eq!(got, expected, "{:#?}", v.findings);
         assert!(v.notes.is_empty(), "{:?}", v.notes);
         assert_eq!(v.checked, 5 * 3 + 6 * 3);
@@ -1009,7 +1074,12 @@ $$ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0
 
     fn slide_with_normals(normals: [&str; 4]) -> String {
         let mut text = LECTURE_SLIDE.to_owned();
-        let old = ["{ 0.0, 0.53, 0.85 }", "{ 0.0, 0.53, -0.85 }", "{ 0.85, 0.53, 0.0 }", "{ -0.85, 0.53, 0.0 }"];
+        let old = [
+            "{ 0.0, 0.53, 0.85 }",
+            "{ 0.0, 0.53, -0.85 }",
+            "{ 0.85, 0.53, 0.0 }",
+            "{ -0.85, 0.53, 0.0 }",
+        ];
         for (o, n) in old.iter().zip(normals) {
             text = text.replace(o, n);
         }
@@ -1023,8 +1093,12 @@ $$ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0
 
     #[test]
     fn data_alone_accepts_rounded_and_cut_off_normals() {
-        let rounded =
-            slide_with_normals(["{ 0.0, 0.49, 0.87 }", "{ 0.0, 0.49, -0.87 }", "{ 0.87, 0.49, 0.0 }", "{ -0.87, 0.49, 0.0 }"]);
+        let rounded = slide_with_normals([
+            "{ 0.0, 0.49, 0.87 }",
+            "{ 0.0, 0.49, -0.87 }",
+            "{ 0.87, 0.49, 0.0 }",
+            "{ -0.87, 0.49, 0.0 }",
+        ]);
         let v = data_alone(&rounded);
         assert!(v.is_clean() && v.notes.is_empty(), "{:#?} {:?}", v.findings, v.notes);
         let cut = slide_with_normals([
@@ -1034,7 +1108,12 @@ $$ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0
             "{ -0.874, 0.485, 0.0 }",
         ]);
         assert!(data_alone(&cut).is_clean());
-        let cut2 = slide_with_normals(["{ 0, 0.48, 0.87 }", "{ 0, 0.48, -0.87 }", "{ 0.87, 0.48, 0 }", "{ -0.87, 0.48, 0 }"]);
+        let cut2 = slide_with_normals([
+            "{ 0, 0.48, 0.87 }",
+            "{ 0, 0.48, -0.87 }",
+            "{ 0.87, 0.48, 0 }",
+            "{ -0.87, 0.48, 0 }",
+        ]);
         assert!(data_alone(&cut2).is_clean());
     }
 
@@ -1042,23 +1121,43 @@ $$ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0
     fn data_alone_names_a_face_wound_inward_with_its_outward_order() {
         // F4 written clockwise; its normal written for the written order (pointing up) is right
         // for that order, so only the order is named.
-        let text = slide_with_normals(["{ 0.0, 0.49, 0.87 }", "{ 0.0, 0.49, -0.87 }", "{ 0.87, 0.49, 0.0 }", "{ -0.87, 0.49, 0.0 }"])
-            .replace("| F4 { V1, V3, V2 } | { 0.0, -1.0, 0.0 }", "| F4 { V1, V2, V3 } | { 0.0, 1.0, 0.0 }");
+        let text = slide_with_normals([
+            "{ 0.0, 0.49, 0.87 }",
+            "{ 0.0, 0.49, -0.87 }",
+            "{ 0.87, 0.49, 0.0 }",
+            "{ -0.87, 0.49, 0.0 }",
+        ])
+        .replace(
+            "| F4 { V1, V3, V2 } | { 0.0, -1.0, 0.0 }",
+            "| F4 { V1, V2, V3 } | { 0.0, 1.0, 0.0 }",
+        );
         let v = data_alone(&text);
         assert_eq!(items(&v), vec![(line_of(&text, "F4 {"), "F4 order")], "{:#?}", v.findings);
         assert_eq!(v.findings[0].derived, "{ V1, V3, V2 }");
         // Turned inside out: every face is named.
         let mut inside_out = String::new();
         for l in LECTURE_SLIDE.lines() {
-            let l = l.replace("{ V0, V3, V1 }", "{ V0, V1, V3 }").replace("{ V0, V2, V4 }", "{ V0, V4, V2 }")
-                .replace("{ V0, V1, V2 }", "{ V0, V2, V1 }").replace("{ V0, V4, V3 }", "{ V0, V3, V4 }")
-                .replace("{ V1, V3, V2 }", "{ V1, V2, V3 }").replace("{ V4, V2, V3 }", "{ V4, V3, V2 }");
+            let l = l
+                .replace("{ V0, V3, V1 }", "{ V0, V1, V3 }")
+                .replace("{ V0, V2, V4 }", "{ V0, V4, V2 }")
+                .replace("{ V0, V1, V2 }", "{ V0, V2, V1 }")
+                .replace("{ V0, V4, V3 }", "{ V0, V3, V4 }")
+                .replace("{ V1, V3, V2 }", "{ V1, V2, V3 }")
+                .replace("{ V4, V2, V3 }", "{ V4, V3, V2 }");
             inside_out.push_str(&l);
             inside_out.push('\n');
         }
         let v = data_alone(&inside_out);
-        let orders: Vec<&str> = v.findings.iter().filter(|f| f.item.ends_with("order")).map(|f| f.item.as_str()).collect();
-        assert_eq!(orders, ["F0 order", "F1 order", "F2 order", "F3 order", "F4 order", "F5 order"]);
+        let orders: Vec<&str> = v
+            .findings
+            .iter()
+            .filter(|f| f.item.ends_with("order"))
+            .map(|f| f.item.as_str())
+            .collect();
+        assert_eq!(
+            orders,
+            ["F0 order", "F1 order", "F2 order", "F3 order", "F4 order", "F5 order"]
+        );
     }
 
     #[test]
@@ -1067,7 +1166,10 @@ $$ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0
         let mut faces = PYRAMID_FACES.to_vec();
         faces[2] = [0, 2, 1];
         let out = face_outwardness(&far, &faces);
-        assert_eq!(out, vec![Some(true), Some(true), Some(false), Some(true), Some(true), Some(true)]);
+        assert_eq!(
+            out,
+            vec![Some(true), Some(true), Some(false), Some(true), Some(true), Some(true)]
+        );
         // A non-convex closed model: the pyramid with its base dented up to V5 (0, -0.3, 0).
         let mut dented = pyramid_vertices();
         dented.push(Vec3::new(0.0, -0.3, 0.0));
