@@ -203,7 +203,21 @@ pub fn parse_number(s: &str) -> Option<Written> {
 
 /// Full-width punctuation read as ASCII (one char for one char, so the rest of the line stays).
 fn normalize(line: &str) -> String {
-    line.chars()
+    // LaTeX's escaped braces `\{ … \}` read as braces (a `\\` row end stays as it is).
+    let mut unescaped = String::with_capacity(line.len());
+    let mut chars = line.chars().peekable();
+    while let Some(c) = chars.next() {
+        match (c, chars.peek()) {
+            ('\\', Some('\\')) => {
+                unescaped.push_str("\\\\");
+                chars.next();
+            }
+            ('\\', Some('{' | '}')) => unescaped.push(' '),
+            _ => unescaped.push(c),
+        }
+    }
+    unescaped
+        .chars()
         .map(|c| match c {
             '，' | '、' => ',',
             '（' => '(',
@@ -259,10 +273,11 @@ fn skip_markers(line: &str) -> usize {
     pos
 }
 
-/// Skips what may stand between a row's name and its group: spaces, `|`, `=`, `:`, `&`, `*`, `` ` ``.
+/// Skips what may stand between a row's name and its group: spaces, `|`, `=`, `:`, `&`, `*`,
+/// `` ` ``, `$`.
 fn skip_separators(line: &str, mut pos: usize) -> usize {
     while let Some(c) = line[pos..].chars().next() {
-        if c.is_whitespace() || matches!(c, '|' | '=' | ':' | '&' | '*' | '`') {
+        if c.is_whitespace() || matches!(c, '|' | '=' | ':' | '&' | '*' | '`' | '$') {
             pos += c.len_utf8();
         } else {
             break;
@@ -369,6 +384,14 @@ fn tuple_chain(
         }
     }
     first_error.map(|e| (Err(e), end))
+}
+
+/// Whether the group at `pos` holds something like data (a digit or a comma), not words such
+/// as `V0 (the apex)`.
+fn looks_like_data(line: &str, pos: usize) -> bool {
+    let rest = &line[pos..];
+    let content = rest.find([')', '}']).map_or(rest, |k| &rest[..k]);
+    content.contains(|c: char| c.is_ascii_digit() || c == ',')
 }
 
 /// Three vertex numbers `V0, V3, V1`.
@@ -590,7 +613,7 @@ impl Reader {
                     self.problem(n, found, expected, RowKind::Vertex);
                 }
                 (Err(err), _) => {
-                    if s == start || line[pos..].starts_with('{') {
+                    if (s == start && looks_like_data(line, pos)) || line[pos..].starts_with('{') {
                         self.problem(n, found, expected_vertex(&err), RowKind::Vertex);
                     }
                 }
@@ -598,7 +621,7 @@ impl Reader {
         }
         for (s, index, e) in tokens(line, 'F') {
             let pos = skip_separators(line, e);
-            let strict = s == start || line[pos..].starts_with('{');
+            let strict = (s == start && looks_like_data(line, pos)) || line[pos..].starts_with('{');
             let Some(g) = group(line, pos) else { continue };
             let (a, b, after) = match g {
                 Ok(r) => r,
@@ -1211,6 +1234,8 @@ F2 ｛V0，V1，V2｝
 V5 = (cos 30°, 0, sin 30°) = (0.866, 0, 0.5)
 The face F3 (the left one) and V1 (the apex's neighbour) are prose.
 Edges V3–V5, F9.
+V0 (the apex) is prose too, and so is
+F1 (the back face).
 ";
         let (r, problems) = parse_report(text);
         assert!(problems.is_empty(), "{problems:?}");
@@ -1240,6 +1265,17 @@ Edges V3–V5, F9.
                 (2, 10, [0, 1, 2], None),
             ]
         );
+    }
+
+    #[test]
+    fn latex_rows_parse() {
+        let text = "V0 & (0.0, 1.0, 0.0) \\\\\nF0 & $\\{ V0, V3, V1 \\}$ & $\\{ 0.0, 0.49, 0.87 \\}$ \\\\\n";
+        assert!(text.contains(r"$\{ V0"), "{text}");
+        let (r, problems) = parse_report(text);
+        assert!(problems.is_empty(), "{problems:?}");
+        assert_eq!(values(&r.vertices[0].coords), [0.0, 1.0, 0.0]);
+        assert_eq!(r.faces[0].vertices, [0, 3, 1]);
+        assert_eq!(values(r.faces[0].normal.as_ref().unwrap()), [0.0, 0.49, 0.87]);
     }
 
     #[test]
