@@ -1,1 +1,1557 @@
-//! (arrives with the report checker)
+//! Reading a student's report (Markdown) in the lecture's notation (see the kit's report notation,
+//! shared with [`crate::tables`], which writes it):
+//!
+//! ```text
+//! V0 (0.0, 1.0, 0.0)                               a vertex row (anywhere on a line)
+//! | V0 | (0.000, 1.000, 0.000) |                   the kit's vertex table
+//! | F0 { V0, V3, V1 } | { 0.0, 0.53, 0.85 } |      a face row with its normal (lecture)
+//! | F0 | { V0, V3, V1 } | { 0.000, 0.486, 0.874 } | the kit's face table
+//! <!-- cg: a2.view.start -->                       a matrix tag: the first pmatrix after it
+//! $$ \begin{pmatrix} 1 & 0 & 0 & 0 \\ … \end{pmatrix} $$
+//! | 3 | 5 | (-2.000, 0.000, 0.000) | (0.300, 0.500) / (1.000, 0.500) |   a texture row
+//! ```
+//!
+//! The reader is lenient: prose is ignored, and a line is a problem only where it clearly tries to
+//! be a row (it starts with `V3 (`, `F2 {`, a texture row's `| i | j | (`, a tagged matrix) and
+//! does not parse; the problem names the line, the text and what was expected. Numbers are plain
+//! decimals (`-0.8`, `0.53`, `15`, with `−` or `+` allowed) and remember how many decimals were
+//! written, so the checker ([`crate::verify`]) can accept correct rounding and nothing else.
+//! Full-width `，（）｛｝` are read as their ASCII forms.
+//!
+//! [`polygon_from_text`] turns a vertex and face list alone (a data file, or a hand-made table)
+//! into a [`PolygonData`], so a student can check a table without the exercises.
+
+use std::collections::HashMap;
+
+use cg_core::glam::Vec3;
+use cg_core::lang::Lang;
+use cg_harness::Text;
+
+use crate::derive::polygon_from_data;
+use crate::model::{PolygonData, Written};
+
+/// Which kind of row a [`ParseProblem`] is about.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum RowKind {
+    /// A vertex row `V0 (0.0, 1.0, 0.0)`.
+    Vertex,
+    /// A face row `F0 { V0, V3, V1 }`, with or without its normal.
+    Face,
+    /// A tagged matrix `<!-- cg: ID -->` … `\begin{pmatrix} … \end{pmatrix}`.
+    Matrix,
+    /// A texture row `| i | j | (x, y, z) | (s, t) |`.
+    Texture,
+    /// The data as a whole (no vertices, numbering with gaps, a face naming a missing vertex):
+    /// only from [`polygon_from_text`].
+    Data,
+}
+
+/// A line that tries to be a row of the notation but does not parse.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParseProblem {
+    /// The 1-based line; 0 when the problem is about the text as a whole (no vertex rows at all).
+    pub line: usize,
+    /// The offending text, trimmed, at most 80 characters (cut with `…`).
+    pub found: String,
+    /// What was expected there, with an example in the notation.
+    pub expected: Text,
+    /// The kind of row.
+    pub kind: RowKind,
+}
+
+impl ParseProblem {
+    /// `line 12: `F3 { V0, V4 }` — expected three vertex numbers in braces, …` (or in Japanese).
+    #[must_use]
+    pub fn message(&self, lang: Lang) -> String {
+        let place = match (self.line, lang) {
+            (0, Lang::En) => "the text".to_owned(),
+            (0, Lang::Ja) => "全体".to_owned(),
+            (n, Lang::En) => format!("line {n}"),
+            (n, Lang::Ja) => format!("{n} 行目"),
+        };
+        let found =
+            if self.found.is_empty() { String::new() } else { format!(" `{}` —", self.found) };
+        match lang {
+            Lang::En => format!("{place}:{found} expected {}", self.expected.en),
+            Lang::Ja => format!("{place}:{found} 期待する書き方: {}", self.expected.ja),
+        }
+    }
+}
+
+impl std::fmt::Display for ParseProblem {
+    /// The English [`ParseProblem::message`].
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message(Lang::En))
+    }
+}
+
+/// A vertex row: `V3 (-1.0, -0.8, 1.0)`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParsedVertex {
+    /// The 1-based line.
+    pub line: usize,
+    /// The vertex number (3 for `V3`).
+    pub index: u32,
+    /// x, y, z as written.
+    pub coords: [Written; 3],
+}
+
+/// A face row: `F0 { V0, V3, V1 }`, optionally with its normal `{ 0.0, 0.53, 0.85 }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParsedFace {
+    /// The 1-based line.
+    pub line: usize,
+    /// The face number (0 for `F0`).
+    pub index: u32,
+    /// The vertex numbers in the written order.
+    pub vertices: [u32; 3],
+    /// The normal as written, when the row has one.
+    pub normal: Option<[Written; 3]>,
+}
+
+/// A tagged matrix: `<!-- cg: ID -->` and the first `pmatrix` after it, 4×4.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParsedMatrix {
+    /// The 1-based line of the tag.
+    pub line: usize,
+    /// The tag's ID (`a1.transform`, `a2.view.start`).
+    pub id: String,
+    /// The entries by rows, as written (always 4 rows of 4).
+    pub rows: Vec<Vec<Written>>,
+    /// The 1-based line of each entry, by rows like `rows`.
+    pub entry_lines: Vec<Vec<usize>>,
+}
+
+/// A texture row: `| 3 | 5 | (-2.000, 0.000, 0.000) | (0.300, 0.500) / (1.000, 0.500) |`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParsedTex {
+    /// The 1-based line.
+    pub line: usize,
+    /// Grid column.
+    pub i: u32,
+    /// Grid row.
+    pub j: u32,
+    /// The grid vertex's position as written.
+    pub position: [Written; 3],
+    /// Its texture coordinates as written (one or more).
+    pub tex: Vec<[Written; 2]>,
+}
+
+/// Everything [`parse_report`] found, each kind in the order of the text.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ParsedReport {
+    /// Vertex rows (each vertex number once).
+    pub vertices: Vec<ParsedVertex>,
+    /// Face rows (each face number once).
+    pub faces: Vec<ParsedFace>,
+    /// Tagged 4×4 matrices (each ID once).
+    pub matrices: Vec<ParsedMatrix>,
+    /// Texture rows (each (i, j) once).
+    pub tex: Vec<ParsedTex>,
+}
+
+impl ParsedReport {
+    /// Whether nothing was found.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.vertices.is_empty()
+            && self.faces.is_empty()
+            && self.matrices.is_empty()
+            && self.tex.is_empty()
+    }
+}
+
+/// A plain decimal number as the notation writes it: an optional sign (`-`, `+`, the Unicode
+/// minus `−`, full-width `－`/`＋`), digits, an optional `.` and decimals (`-0.8`, `0.53`, `15`,
+/// `.5`). `None` for anything else (`\cos 30°`, `1e-3`, `0,5`) and for numbers too large to be
+/// finite.
+#[must_use]
+pub fn parse_number(s: &str) -> Option<Written> {
+    let text = s.trim();
+    let (negative, rest) = match text.chars().next()? {
+        c @ ('-' | '−' | '－') => (true, &text[c.len_utf8()..]),
+        c @ ('+' | '＋') => (false, &text[c.len_utf8()..]),
+        _ => (false, text),
+    };
+    let (int, frac) = match rest.split_once('.') {
+        Some((a, b)) => (a, Some(b)),
+        None => (rest, None),
+    };
+    let digits = |d: &str| d.chars().all(|c| c.is_ascii_digit());
+    if !digits(int)
+        || !frac.is_none_or(digits)
+        || (int.is_empty() && frac.is_none_or(str::is_empty))
+    {
+        return None;
+    }
+    let ascii = format!(
+        "{}{}.{}",
+        if negative { "-" } else { "" },
+        if int.is_empty() { "0" } else { int },
+        frac.filter(|f| !f.is_empty()).unwrap_or("0")
+    );
+    let value: f64 = ascii.parse().ok()?;
+    if !value.is_finite() {
+        return None;
+    }
+    let decimals = u32::try_from(frac.map_or(0, str::len)).unwrap_or(u32::MAX);
+    Some(Written { value, decimals, text: text.to_owned() })
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scanning a line
+
+/// Full-width punctuation read as ASCII (one char for one char, so the rest of the line stays).
+fn normalize(line: &str) -> String {
+    // LaTeX's escaped braces `\{ … \}` read as braces (a `\\` row end stays as it is).
+    let mut unescaped = String::with_capacity(line.len());
+    let mut chars = line.chars().peekable();
+    while let Some(c) = chars.next() {
+        match (c, chars.peek()) {
+            ('\\', Some('\\')) => {
+                unescaped.push_str("\\\\");
+                chars.next();
+            }
+            ('\\', Some('{' | '}')) => unescaped.push(' '),
+            _ => unescaped.push(c),
+        }
+    }
+    unescaped
+        .chars()
+        .map(|c| match c {
+            '，' | '、' => ',',
+            '（' => '(',
+            '）' => ')',
+            '｛' => '{',
+            '｝' => '}',
+            '｜' => '|',
+            '＝' => '=',
+            '：' => ':',
+            '\u{3000}' => ' ',
+            _ => c,
+        })
+        .collect()
+}
+
+/// The text clipped to 80 characters (79 and `…`), trimmed.
+fn clip(s: &str) -> String {
+    let s = s.trim();
+    if s.chars().count() <= 80 {
+        s.to_owned()
+    } else {
+        let mut out: String = s.chars().take(79).collect();
+        out.push('…');
+        out
+    }
+}
+
+fn is_ascii_word(c: char) -> bool {
+    c.is_ascii_alphanumeric() || c == '_'
+}
+
+/// Where a row may start: after indentation, list markers (`-`, `*`, `+`, `1.`), quote marks,
+/// table pipes and backticks.
+fn skip_markers(line: &str) -> usize {
+    let mut pos = 0;
+    while let Some(c) = line[pos..].chars().next() {
+        if c.is_whitespace() || matches!(c, '|' | '>' | '*' | '+' | '-' | '`' | '・') {
+            pos += c.len_utf8();
+        } else if c.is_ascii_digit() {
+            let rest = &line[pos..];
+            let d = rest.len() - rest.trim_start_matches(|x: char| x.is_ascii_digit()).len();
+            let list = matches!(rest[d..].chars().next(), Some('.' | ')'))
+                && rest[d + 1..].starts_with(char::is_whitespace);
+            if list {
+                pos += d + 1;
+            } else {
+                break;
+            }
+        } else {
+            break;
+        }
+    }
+    pos
+}
+
+/// Skips what may stand between a row's name and its group: spaces, `|`, `=`, `:`, `&`, `*`,
+/// `` ` ``, `$`.
+fn skip_separators(line: &str, mut pos: usize) -> usize {
+    while let Some(c) = line[pos..].chars().next() {
+        if c.is_whitespace() || matches!(c, '|' | '=' | ':' | '&' | '*' | '`' | '$') {
+            pos += c.len_utf8();
+        } else {
+            break;
+        }
+    }
+    pos
+}
+
+/// `letter` followed by digits, as a word of its own (`V12`, not `TV1` or `V1x`): (start, the
+/// number if it fits, end).
+fn tokens(line: &str, letter: char) -> Vec<(usize, Option<u32>, usize)> {
+    let mut out = Vec::new();
+    let mut prev: Option<char> = None;
+    for (i, c) in line.char_indices() {
+        if c == letter && !prev.is_some_and(is_ascii_word) {
+            let rest = &line[i + c.len_utf8()..];
+            let digits = rest.len() - rest.trim_start_matches(|d: char| d.is_ascii_digit()).len();
+            let end = i + c.len_utf8() + digits;
+            if digits > 0 && !line[end..].chars().next().is_some_and(is_ascii_word) {
+                out.push((i, line[i + c.len_utf8()..end].parse().ok(), end));
+            }
+        }
+        prev = Some(c);
+    }
+    out
+}
+
+/// Why a group did not parse.
+#[derive(Clone, Debug, PartialEq)]
+enum GroupError {
+    /// No closing `)` or `}` on the line.
+    Unclosed,
+    /// Not the number of entries asked for (the count found).
+    Count(usize),
+    /// An entry that is not a plain number (or not a vertex number).
+    NotNumber(String),
+}
+
+/// The group that opens at `pos` (`(` or `{`): (its content's range, the position after it).
+fn group(line: &str, pos: usize) -> Option<Result<(usize, usize, usize), GroupError>> {
+    let close = match line[pos..].chars().next()? {
+        '(' => ')',
+        '{' => '}',
+        _ => return None,
+    };
+    let start = pos + 1;
+    Some(match line[start..].find(close) {
+        Some(k) => Ok((start, start + k, start + k + 1)),
+        None => Err(GroupError::Unclosed),
+    })
+}
+
+/// The comma-separated entries of a group, trimmed (none for an empty group).
+fn entries(content: &str) -> Vec<&str> {
+    if content.trim().is_empty() { Vec::new() } else { content.split(',').map(str::trim).collect() }
+}
+
+/// `n` plain numbers, comma-separated.
+fn tuple(content: &str, n: usize) -> Result<Vec<Written>, GroupError> {
+    let parts = entries(content);
+    if parts.len() != n {
+        return Err(GroupError::Count(parts.len()));
+    }
+    parts
+        .iter()
+        .map(|p| parse_number(p).ok_or_else(|| GroupError::NotNumber((*p).to_owned())))
+        .collect()
+}
+
+/// The tuple of `n` numbers at `pos`, or, when that group is not one (a derivation such as
+/// `V1 = (cos 30°, 0, sin 30°) = (0.866, 0, 0.5)`), the first of the groups after `=` that is.
+/// `None` when there is no group at `pos`; otherwise the tuple or the first group's error, and
+/// the end of what was read.
+fn tuple_chain(
+    line: &str,
+    pos: usize,
+    n: usize,
+) -> Option<(Result<Vec<Written>, GroupError>, usize)> {
+    let mut first_error = None;
+    let mut pos = pos;
+    let mut end = pos;
+    loop {
+        match group(line, pos) {
+            None => break,
+            Some(Err(e)) => {
+                first_error.get_or_insert(e);
+                end = line.len();
+                break;
+            }
+            Some(Ok((a, b, after))) => {
+                end = after;
+                match tuple(&line[a..b], n) {
+                    Ok(t) => return Some((Ok(t), after)),
+                    Err(e) => {
+                        first_error.get_or_insert(e);
+                    }
+                }
+                let next = after + (line[after..].len() - line[after..].trim_start().len());
+                if !line[next..].starts_with('=') {
+                    break;
+                }
+                pos = skip_separators(line, next);
+            }
+        }
+    }
+    first_error.map(|e| (Err(e), end))
+}
+
+/// Whether the group at `pos` holds something like data (a digit or a comma), not words such
+/// as `V0 (the apex)`.
+fn looks_like_data(line: &str, pos: usize) -> bool {
+    let rest = &line[pos..];
+    let content = rest.find([')', '}']).map_or(rest, |k| &rest[..k]);
+    content.contains(|c: char| c.is_ascii_digit() || c == ',')
+}
+
+/// Three vertex numbers `V0, V3, V1`.
+fn face_vertices(content: &str) -> Result<[u32; 3], GroupError> {
+    let parts = entries(content);
+    if parts.len() != 3 {
+        return Err(GroupError::Count(parts.len()));
+    }
+    let mut out = [0u32; 3];
+    for (slot, p) in out.iter_mut().zip(&parts) {
+        *slot = p
+            .strip_prefix(['V', 'v'])
+            .filter(|d| !d.is_empty() && d.chars().all(|c| c.is_ascii_digit()))
+            .and_then(|d| d.parse().ok())
+            .ok_or_else(|| GroupError::NotNumber((*p).to_owned()))?;
+    }
+    Ok(out)
+}
+
+// ---------------------------------------------------------------------------------------------
+// What was expected
+
+fn detail(e: &GroupError, what_ja: &str, what_en: &str) -> Text {
+    match e {
+        GroupError::Unclosed => {
+            Text::new("（括弧が閉じていません）", " (the bracket is not closed)")
+        }
+        GroupError::Count(k) => {
+            Text::new(format!("（{what_ja}が {k} 個あります）"), format!(" (found {k} {what_en})"))
+        }
+        GroupError::NotNumber(s) => Text::new(
+            format!("（`{}` は{what_ja}ではありません）", clip(s)),
+            format!(" (`{}` is not {what_en})", clip(s)),
+        ),
+    }
+}
+
+fn join(a: Text, b: Text) -> Text {
+    Text::new(a.ja + &b.ja, a.en + &b.en)
+}
+
+fn expected_vertex(e: &GroupError) -> Text {
+    join(
+        Text::new(
+            "`V0 (0.0, 1.0, 0.0)` のように、頂点番号のあとに括弧で囲んだ 3 つの数（cos 30° ではなく 0.866 のような値）",
+            "three numbers in parentheses after the vertex number, like `V0 (0.0, 1.0, 0.0)` (values such as 0.866, not cos 30°)",
+        ),
+        match e {
+            GroupError::NotNumber(_) => detail(e, "数", "a plain number"),
+            _ => detail(e, "数", "numbers"),
+        },
+    )
+}
+
+fn expected_face(e: &GroupError) -> Text {
+    join(
+        Text::new(
+            "`F0 { V0, V3, V1 }` のように、面番号のあとに波括弧で囲んだ 3 つの頂点番号",
+            "three vertex numbers in braces after the face number, like `F0 { V0, V3, V1 }`",
+        ),
+        match e {
+            GroupError::NotNumber(_) => detail(e, "頂点番号", "a vertex number like V3"),
+            _ => detail(e, "頂点番号", "vertex numbers"),
+        },
+    )
+}
+
+fn expected_normal(e: &GroupError) -> Text {
+    join(
+        Text::new(
+            "面の頂点のあとに、法線を `{ 0.0, 0.49, 0.87 }` のように 3 つの数で",
+            "the face's normal after its vertices as three numbers, like `{ 0.0, 0.49, 0.87 }`",
+        ),
+        match e {
+            GroupError::NotNumber(_) => detail(e, "数", "a plain number"),
+            _ => detail(e, "数", "numbers"),
+        },
+    )
+}
+
+fn expected_tex(why: Text) -> Text {
+    join(
+        Text::new(
+            "テクスチャ座標の行 `| i | j | (x, y, z) | (s, t) / (s, t) |`: 格子点の位置を 3 つの数で、テクスチャ座標を ` / ` で区切った 2 つの数の組で",
+            "a texture row `| i | j | (x, y, z) | (s, t) / (s, t) |`: the grid vertex's position as three numbers and its texture coordinates as pairs separated by ` / `",
+        ),
+        why,
+    )
+}
+
+fn expected_number_size() -> Text {
+    Text::new(
+        "有限で単精度（f32）の範囲に収まる数",
+        "a finite number within single precision (f32) range",
+    )
+}
+
+// ---------------------------------------------------------------------------------------------
+// The report
+
+struct Reader {
+    report: ParsedReport,
+    problems: Vec<ParseProblem>,
+    vertex_at: HashMap<u32, usize>,
+    face_at: HashMap<u32, usize>,
+    tex_at: HashMap<(u32, u32), usize>,
+}
+
+impl Reader {
+    fn problem(&mut self, line: usize, found: &str, expected: Text, kind: RowKind) {
+        self.problems.push(ParseProblem { line, found: clip(found), expected, kind });
+    }
+
+    fn vertex(&mut self, v: ParsedVertex, found: &str) {
+        match self.vertex_at.get(&v.index) {
+            None => {
+                self.vertex_at.insert(v.index, self.report.vertices.len());
+                self.report.vertices.push(v);
+            }
+            Some(&k) => {
+                let first = &self.report.vertices[k];
+                if !same_numbers(&first.coords, &v.coords) {
+                    let expected = Text::new(
+                        format!(
+                            "頂点番号は 1 回ずつ（V{} は {} 行目に別の座標で書かれています）",
+                            v.index, first.line
+                        ),
+                        format!(
+                            "each vertex number once (V{} is already on line {} with other coordinates)",
+                            v.index, first.line
+                        ),
+                    );
+                    self.problem(v.line, found, expected, RowKind::Vertex);
+                }
+            }
+        }
+    }
+
+    fn face(&mut self, f: ParsedFace, found: &str) {
+        match self.face_at.get(&f.index) {
+            None => {
+                self.face_at.insert(f.index, self.report.faces.len());
+                self.report.faces.push(f);
+            }
+            Some(&k) => {
+                let first = &mut self.report.faces[k];
+                let same_normal = match (&first.normal, &f.normal) {
+                    (Some(a), Some(b)) => same_numbers(a, b),
+                    _ => true,
+                };
+                if first.vertices == f.vertices && same_normal {
+                    // The same face mentioned again (in a derivation): keep it, with its normal.
+                    if first.normal.is_none() {
+                        first.normal = f.normal;
+                    }
+                } else {
+                    let expected = Text::new(
+                        format!(
+                            "面番号は 1 回ずつ（F{} は {} 行目に別の頂点か法線で書かれています）",
+                            f.index, first.line
+                        ),
+                        format!(
+                            "each face number once (F{} is already on line {} with other vertices or another normal)",
+                            f.index, first.line
+                        ),
+                    );
+                    let line = f.line;
+                    self.problem(line, found, expected, RowKind::Face);
+                }
+            }
+        }
+    }
+
+    fn tex(&mut self, t: ParsedTex, found: &str) {
+        match self.tex_at.get(&(t.i, t.j)) {
+            None => {
+                self.tex_at.insert((t.i, t.j), self.report.tex.len());
+                self.report.tex.push(t);
+            }
+            Some(&k) => {
+                let first = &self.report.tex[k];
+                let same = same_numbers(&first.position, &t.position)
+                    && first.tex.len() == t.tex.len()
+                    && first.tex.iter().zip(&t.tex).all(|(a, b)| same_numbers(a, b));
+                if !same {
+                    let expected = Text::new(
+                        format!(
+                            "格子点 ({}, {}) は 1 回ずつ（{} 行目に別の値で書かれています）",
+                            t.i, t.j, first.line
+                        ),
+                        format!(
+                            "each grid vertex ({}, {}) once (it is already on line {} with other numbers)",
+                            t.i, t.j, first.line
+                        ),
+                    );
+                    self.problem(t.line, found, expected, RowKind::Texture);
+                }
+            }
+        }
+    }
+
+    /// Vertex and face rows of one line.
+    fn rows(&mut self, n: usize, line: &str) {
+        let start = skip_markers(line);
+        for (s, index, e) in tokens(line, 'V') {
+            let pos = skip_separators(line, e);
+            let Some((result, end)) = tuple_chain(line, pos, 3) else { continue };
+            let found = &line[s..end];
+            match (result, index) {
+                (Ok(t), Some(index)) => {
+                    let coords = [t[0].clone(), t[1].clone(), t[2].clone()];
+                    self.vertex(ParsedVertex { line: n, index, coords }, found);
+                }
+                (Ok(_), None) => {
+                    let expected = Text::new(
+                        "`V0` から始まる、ふつうの大きさの頂点番号",
+                        "a vertex number of ordinary size, counting from `V0`",
+                    );
+                    self.problem(n, found, expected, RowKind::Vertex);
+                }
+                (Err(err), _) => {
+                    if (s == start && looks_like_data(line, pos)) || line[pos..].starts_with('{') {
+                        self.problem(n, found, expected_vertex(&err), RowKind::Vertex);
+                    }
+                }
+            }
+        }
+        for (s, index, e) in tokens(line, 'F') {
+            let pos = skip_separators(line, e);
+            let strict = (s == start && looks_like_data(line, pos)) || line[pos..].starts_with('{');
+            let Some(g) = group(line, pos) else { continue };
+            let (a, b, after) = match g {
+                Ok(r) => r,
+                Err(err) => {
+                    if strict {
+                        self.problem(n, &line[s..], expected_face(&err), RowKind::Face);
+                    }
+                    continue;
+                }
+            };
+            let vertices = match face_vertices(&line[a..b]) {
+                Ok(v) => v,
+                Err(err) => {
+                    if strict {
+                        self.problem(n, &line[s..after], expected_face(&err), RowKind::Face);
+                    }
+                    continue;
+                }
+            };
+            let Some(index) = index else {
+                let expected = Text::new(
+                    "`F0` から始まる、ふつうの大きさの面番号",
+                    "a face number of ordinary size, counting from `F0`",
+                );
+                self.problem(n, &line[s..after], expected, RowKind::Face);
+                continue;
+            };
+            let npos = skip_separators(line, after);
+            let (normal, end) = match tuple_chain(line, npos, 3) {
+                None => (None, after),
+                Some((Ok(t), end)) => (Some([t[0].clone(), t[1].clone(), t[2].clone()]), end),
+                Some((Err(err), end)) => {
+                    if strict || line[npos..].starts_with('{') {
+                        self.problem(n, &line[s..end], expected_normal(&err), RowKind::Face);
+                        continue;
+                    }
+                    (None, after)
+                }
+            };
+            self.face(ParsedFace { line: n, index, vertices, normal }, &line[s..end]);
+        }
+    }
+
+    /// A texture row, when the line is a table row whose cells start `| i | j | (`.
+    fn tex_row(&mut self, n: usize, line: &str) {
+        let trimmed = line.trim();
+        let Some(inner) = trimmed.strip_prefix('|') else { return };
+        let inner = inner.strip_suffix('|').unwrap_or(inner);
+        let cells: Vec<&str> = inner.split('|').map(str::trim).collect();
+        let int = |s: &str| {
+            if !s.is_empty() && s.chars().all(|c| c.is_ascii_digit()) {
+                s.parse::<u32>().ok()
+            } else {
+                None
+            }
+        };
+        let (Some(i), Some(j)) =
+            (cells.first().and_then(|c| int(c)), cells.get(1).and_then(|c| int(c)))
+        else {
+            return;
+        };
+        let Some(pos_cell) = cells.get(2).filter(|c| c.starts_with('(')) else { return };
+        let position = match whole_tuple(pos_cell, 3) {
+            Ok(t) => [t[0].clone(), t[1].clone(), t[2].clone()],
+            Err(err) => {
+                let why = match err {
+                    GroupError::NotNumber(_) => detail(&err, "数", "a plain number"),
+                    _ => detail(&err, "位置の数", "numbers in the position"),
+                };
+                self.problem(n, trimmed, expected_tex(why), RowKind::Texture);
+                return;
+            }
+        };
+        let Some(tex_cell) = cells.get(3).filter(|c| !c.is_empty()) else {
+            let why = Text::new(
+                "（テクスチャ座標がありません）",
+                " (the texture coordinates are missing)",
+            );
+            self.problem(n, trimmed, expected_tex(why), RowKind::Texture);
+            return;
+        };
+        let mut tex = Vec::new();
+        for part in tex_cell.split('/') {
+            match whole_tuple(part, 2) {
+                Ok(t) => tex.push([t[0].clone(), t[1].clone()]),
+                Err(err) => {
+                    let why = match err {
+                        GroupError::NotNumber(_) => detail(&err, "数", "a plain number"),
+                        _ => detail(&err, "座標の組の数", "numbers in a coordinate pair"),
+                    };
+                    self.problem(n, trimmed, expected_tex(why), RowKind::Texture);
+                    return;
+                }
+            }
+        }
+        self.tex(ParsedTex { line: n, i, j, position, tex }, trimmed);
+    }
+}
+
+/// A cell that is exactly one parenthesised tuple of `n` numbers.
+fn whole_tuple(cell: &str, n: usize) -> Result<Vec<Written>, GroupError> {
+    let cell = cell.trim();
+    match group(cell, 0) {
+        Some(Ok((a, b, after))) if cell[after..].trim().is_empty() => tuple(&cell[a..b], n),
+        Some(Ok(_)) => Err(GroupError::NotNumber(cell.to_owned())),
+        Some(Err(e)) => Err(e),
+        None => Err(GroupError::NotNumber(cell.to_owned())),
+    }
+}
+
+fn same_numbers(a: &[Written], b: &[Written]) -> bool {
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.value == y.value)
+}
+
+// ---------------------------------------------------------------------------------------------
+// Matrices
+
+/// A tag `<!-- cg: ID -->` (Markdown) or `% cg: ID` (LaTeX): its line, ID and where it ends.
+struct Tag {
+    line: usize,
+    start: usize,
+    end: usize,
+    id: String,
+    text: String,
+}
+
+fn valid_id(id: &str) -> bool {
+    !id.is_empty() && id.chars().all(|c| c.is_ascii_alphanumeric() || matches!(c, '.' | '_' | '-'))
+}
+
+fn expected_tag() -> Text {
+    Text::new(
+        "`<!-- cg: a1.transform -->` のような、ID（英数字と `.` `_` `-`）のついたタグ",
+        "a tag like `<!-- cg: a1.transform -->` with an ID of letters, digits, `.`, `_` and `-`",
+    )
+}
+
+fn expected_matrix_entry() -> Text {
+    Text::new(
+        "行列の要素として数そのもの（`\\cos 30°` ではなく `0.866`）",
+        "a plain number as the matrix entry (`0.866`, not `\\cos 30°`)",
+    )
+}
+
+impl Reader {
+    fn tags(&mut self, text: &str, line_starts: &[usize]) -> Vec<Tag> {
+        let mut tags = Vec::new();
+        for (k, line) in text.split('\n').enumerate() {
+            let n = k + 1;
+            let base = line_starts[k];
+            let mut from = 0;
+            while let Some(p) = line[from..].find("<!--") {
+                let p = from + p;
+                let after = &line[p + 4..];
+                let body = after.trim_start();
+                from = p + 4;
+                let Some(rest) = body.strip_prefix("cg:") else { continue };
+                let Some(close) = rest.find("-->") else {
+                    self.problem(n, &line[p..], expected_tag(), RowKind::Matrix);
+                    continue;
+                };
+                let id = rest[..close].trim();
+                let end = p + 4 + (after.len() - body.len()) + 3 + close + 3;
+                if valid_id(id) {
+                    tags.push(Tag {
+                        line: n,
+                        start: base + p,
+                        end: base + end,
+                        id: id.to_owned(),
+                        text: line[p..end].to_owned(),
+                    });
+                } else {
+                    self.problem(n, &line[p..end], expected_tag(), RowKind::Matrix);
+                }
+                from = end;
+            }
+            if let Some(rest) = line.trim_start().strip_prefix('%')
+                && let Some(id) = rest.trim_start().strip_prefix("cg:")
+            {
+                let id = id.trim();
+                if valid_id(id) {
+                    tags.push(Tag {
+                        line: n,
+                        start: base,
+                        end: base + line.len(),
+                        id: id.to_owned(),
+                        text: line.trim().to_owned(),
+                    });
+                } else {
+                    self.problem(n, line, expected_tag(), RowKind::Matrix);
+                }
+            }
+        }
+        tags
+    }
+
+    fn matrices(&mut self, text: &str) {
+        let mut line_starts = vec![0];
+        line_starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        let line_of = |offset: usize| line_starts.partition_point(|&s| s <= offset);
+        let tags = self.tags(text, &line_starts);
+        let mut seen: HashMap<String, usize> = HashMap::new();
+        for (k, tag) in tags.iter().enumerate() {
+            let region_end = tags.get(k + 1).map_or(text.len(), |t| t.start);
+            let region = &text[tag.end..region_end];
+            const BEGIN: &str = "\\begin{pmatrix}";
+            const END: &str = "\\end{pmatrix}";
+            let Some(b) = region.find(BEGIN) else {
+                let expected = Text::new(
+                    "タグのあとに、積の結果の 4×4 行列 `\\begin{pmatrix} … \\end{pmatrix}`",
+                    "the 4×4 result of the product as `\\begin{pmatrix} … \\end{pmatrix}` after the tag",
+                );
+                self.problem(tag.line, &tag.text, expected, RowKind::Matrix);
+                continue;
+            };
+            let body_start = tag.end + b + BEGIN.len();
+            let begin_line = line_of(tag.end + b);
+            let begin_text = text[line_starts[begin_line - 1]..].split('\n').next().unwrap_or("");
+            let Some(e) = text[body_start..region_end].find(END) else {
+                let expected = Text::new(
+                    "行列を閉じる `\\end{pmatrix}`（次のタグより前に）",
+                    "`\\end{pmatrix}` closing the matrix (before the next tag)",
+                );
+                self.problem(begin_line, begin_text, expected, RowKind::Matrix);
+                continue;
+            };
+            let body = &text[body_start..body_start + e];
+            let mut rows = Vec::new();
+            let mut entry_lines = Vec::new();
+            let mut counts = Vec::new();
+            let mut ok = true;
+            let mut offset = body_start;
+            for row in body.split("\\\\") {
+                let row_start = offset;
+                offset += row.len() + 2;
+                // `\\[2pt]`: a row spacing, not an entry.
+                let (row, skip) = match row.trim_start().strip_prefix('[') {
+                    Some(r) if r.contains(']') => {
+                        let cut = row.len() - r.len() + r.find(']').unwrap_or(0) + 1;
+                        (&row[cut..], cut)
+                    }
+                    _ => (row, 0),
+                };
+                if row.trim().is_empty() {
+                    continue;
+                }
+                let mut values = Vec::new();
+                let mut lines = Vec::new();
+                let mut entry_offset = row_start + skip;
+                for entry in row.split('&') {
+                    let at = entry_offset + (entry.len() - entry.trim_start().len());
+                    entry_offset += entry.len() + 1;
+                    let t = entry.trim();
+                    let inner = t.strip_prefix('{').and_then(|s| s.strip_suffix('}')).unwrap_or(t);
+                    match parse_number(inner) {
+                        Some(w) => {
+                            values.push(w);
+                            lines.push(line_of(at));
+                        }
+                        None => {
+                            ok = false;
+                            let found = if t.is_empty() { row } else { t };
+                            self.problem(
+                                line_of(at),
+                                found,
+                                expected_matrix_entry(),
+                                RowKind::Matrix,
+                            );
+                        }
+                    }
+                }
+                counts.push(row.split('&').count());
+                rows.push(values);
+                entry_lines.push(lines);
+            }
+            if counts.len() != 4 || counts.iter().any(|&c| c != 4) {
+                let counts: Vec<String> = counts.iter().map(ToString::to_string).collect();
+                let expected = Text::new(
+                    format!(
+                        "4×4 行列: `\\\\` で区切った 4 行、それぞれ `&` で区切った 4 つの要素（{} 行あり、要素の数は {}）",
+                        counts.len(),
+                        counts.join(", ")
+                    ),
+                    format!(
+                        "a 4×4 matrix: 4 rows separated by `\\\\`, each of 4 entries separated by `&` (found {} rows of {} entries)",
+                        counts.len(),
+                        counts.join(", ")
+                    ),
+                );
+                self.problem(begin_line, begin_text, expected, RowKind::Matrix);
+                continue;
+            }
+            if !ok {
+                continue;
+            }
+            let m = ParsedMatrix { line: tag.line, id: tag.id.clone(), rows, entry_lines };
+            match seen.get(&m.id) {
+                None => {
+                    seen.insert(m.id.clone(), self.report.matrices.len());
+                    self.report.matrices.push(m);
+                }
+                Some(&k) => {
+                    let first = &self.report.matrices[k];
+                    let same = first.rows.iter().zip(&m.rows).all(|(a, b)| same_numbers(a, b));
+                    if !same {
+                        let expected = Text::new(
+                            format!(
+                                "タグ `{}` は 1 回ずつ（{} 行目に別の行列があります）",
+                                m.id, first.line
+                            ),
+                            format!(
+                                "each tag once (`{}` is already on line {} with another matrix)",
+                                m.id, first.line
+                            ),
+                        );
+                        self.problem(tag.line, &tag.text, expected, RowKind::Matrix);
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Reads every vertex row, face row, tagged matrix and texture row of a report (Markdown; LaTeX
+/// tags `% cg: ID` are read too). Lenient: prose is ignored; a line that clearly tries to be a
+/// row but does not parse, a vertex, face, tag or grid vertex given twice with different
+/// numbers, a tag with no `pmatrix` after it, a matrix that is not 4×4 and an entry that is not
+/// a plain number are [`ParseProblem`]s (in the order of the text), and the row is left out.
+/// The same row repeated with the same numbers (a derivation quoting the table) is kept once.
+/// Never panics.
+#[must_use]
+pub fn parse_report(text: &str) -> (ParsedReport, Vec<ParseProblem>) {
+    let mut reader = Reader {
+        report: ParsedReport::default(),
+        problems: Vec::new(),
+        vertex_at: HashMap::new(),
+        face_at: HashMap::new(),
+        tex_at: HashMap::new(),
+    };
+    let lines: Vec<String> = text.lines().map(normalize).collect();
+    for (k, line) in lines.iter().enumerate() {
+        reader.rows(k + 1, line);
+        reader.tex_row(k + 1, line);
+    }
+    reader.matrices(&lines.join("\n"));
+    reader.problems.sort_by_key(|p| p.line);
+    (reader.report, reader.problems)
+}
+
+/// A vertex row's text as written, for problems: `V3 (-1.0, -0.8, 1.0)`.
+fn vertex_text(v: &ParsedVertex) -> String {
+    format!("V{} ({}, {}, {})", v.index, v.coords[0].text, v.coords[1].text, v.coords[2].text)
+}
+
+fn face_text(f: &ParsedFace) -> String {
+    format!("F{} {{ V{}, V{}, V{} }}", f.index, f.vertices[0], f.vertices[1], f.vertices[2])
+}
+
+fn as_f32(w: &[Written; 3]) -> Option<Vec3> {
+    let v = Vec3::new(w[0].value as f32, w[1].value as f32, w[2].value as f32);
+    v.is_finite().then_some(v)
+}
+
+/// A polygon model from a vertex and face list alone (a data file, or the tables of a report):
+/// the vertex rows and face rows of [`parse_report`] become a [`PolygonData`] through
+/// [`polygon_from_data`] (the kit derives each face's normal from the written vertex order), with
+/// the written normals as `student_normals` when every face has one.
+///
+/// # Errors
+/// Every problem found: the vertex and face rows' [`ParseProblem`]s, no vertex rows, no face
+/// rows, vertex or face numbers that do not run 0, 1, … without gaps, a face naming a vertex that
+/// does not exist, a number outside f32's range.
+pub fn polygon_from_text(text: &str, name: Text) -> Result<PolygonData, Vec<ParseProblem>> {
+    let (report, problems) = parse_report(text);
+    let mut errors: Vec<ParseProblem> = problems
+        .into_iter()
+        .filter(|p| matches!(p.kind, RowKind::Vertex | RowKind::Face))
+        .collect();
+    let mut push = |line: usize, found: String, expected: Text| {
+        errors.push(ParseProblem { line, found: clip(&found), expected, kind: RowKind::Data });
+    };
+    if report.vertices.is_empty() {
+        push(
+            0,
+            String::new(),
+            Text::new(
+                "`V0 (0.0, 1.0, 0.0)` のような頂点の行が 1 つ以上",
+                "at least one vertex row like `V0 (0.0, 1.0, 0.0)`",
+            ),
+        );
+    }
+    if report.faces.is_empty() {
+        push(
+            0,
+            String::new(),
+            Text::new(
+                "`F0 { V0, V3, V1 }` のような面の行が 1 つ以上",
+                "at least one face row like `F0 { V0, V3, V1 }`",
+            ),
+        );
+    }
+    let n = report.vertices.len();
+    let m = report.faces.len();
+    let missing = |present: &dyn Fn(u32) -> bool, count: usize, letter: char| -> String {
+        let gaps: Vec<String> = (0..count)
+            .filter_map(|k| u32::try_from(k).ok())
+            .filter(|&k| !present(k))
+            .take(5)
+            .map(|k| format!("{letter}{k}"))
+            .collect();
+        gaps.join(", ")
+    };
+    let has_vertex = |k: u32| report.vertices.iter().any(|v| v.index == k);
+    let has_face = |k: u32| report.faces.iter().any(|f| f.index == k);
+    let mut vertices = vec![Vec3::ZERO; n];
+    for v in &report.vertices {
+        if v.index as usize >= n {
+            push(
+                v.line,
+                vertex_text(v),
+                Text::new(
+                    format!(
+                        "V0 から V{} まで欠けのない頂点番号（{} がありません）",
+                        n - 1,
+                        missing(&has_vertex, n, 'V')
+                    ),
+                    format!(
+                        "vertex numbers V0 to V{} without gaps ({} is missing)",
+                        n - 1,
+                        missing(&has_vertex, n, 'V')
+                    ),
+                ),
+            );
+            continue;
+        }
+        match as_f32(&v.coords) {
+            Some(p) => vertices[v.index as usize] = p,
+            None => push(v.line, vertex_text(v), expected_number_size()),
+        }
+    }
+    let mut faces = vec![[0u32; 3]; m];
+    let mut normals: Vec<Option<Vec3>> = vec![None; m];
+    for f in &report.faces {
+        if f.index as usize >= m {
+            push(
+                f.line,
+                face_text(f),
+                Text::new(
+                    format!(
+                        "F0 から F{} まで欠けのない面番号（{} がありません）",
+                        m - 1,
+                        missing(&has_face, m, 'F')
+                    ),
+                    format!(
+                        "face numbers F0 to F{} without gaps ({} is missing)",
+                        m - 1,
+                        missing(&has_face, m, 'F')
+                    ),
+                ),
+            );
+            continue;
+        }
+        if let Some(&bad) = f.vertices.iter().find(|&&k| !has_vertex(k)) {
+            push(
+                f.line,
+                face_text(f),
+                Text::new(
+                    format!("頂点の行にある頂点番号（V{bad} という頂点はありません）"),
+                    format!("vertex numbers that have vertex rows (there is no V{bad})"),
+                ),
+            );
+            continue;
+        }
+        faces[f.index as usize] = f.vertices;
+        if let Some(w) = &f.normal {
+            match as_f32(w) {
+                Some(nrm) => normals[f.index as usize] = Some(nrm),
+                None => push(f.line, face_text(f), expected_number_size()),
+            }
+        }
+    }
+    if !errors.is_empty() {
+        errors.sort_by_key(|p| p.line);
+        return Err(errors);
+    }
+    let student_normals = normals.iter().copied().collect::<Option<Vec<Vec3>>>();
+    Ok(polygon_from_data(name, vertices, faces, student_normals))
+}
+
+/// The lecture's slide (lecture 11, ポリゴンモデルの情報の例 (1) and (2)), verbatim.
+#[cfg(test)]
+pub(crate) const LECTURE_SLIDE: &str = r"## 頂点座標
+
+V0 (0.0, 1.0, 0.0)
+
+V1 (1.0, -0.8, 1.0)
+
+V2 (1.0, -0.8, -1.0)
+
+V3 (-1.0, -0.8, 1.0)
+
+V4 (-1.0, -0.8, -1.0)
+
+# ポリゴンモデルの情報の例(2)
+
+- 四角すいを構成する頂点と三角面
+  - 頂点座標
+  - 三角面の頂点、面の法線
+
+
+
+| 三角面               | 法線                   |
+|-------------------|----------------------|
+| F0 { V0, V3, V1 } | { 0.0, 0.53, 0.85 }  |
+| F1 { V0, V2, V4 } | { 0.0, 0.53, -0.85 } |
+| F2 { V0, V1, V2 } | { 0.85, 0.53, 0.0 }  |
+| F3 { V0, V4, V3 } | { -0.85, 0.53, 0.0 } |
+| F4 { V1, V3, V2 } | { 0.0, -1.0, 0.0 }   |
+| F5 { V4, V2, V3 } | { 0.0, -1.0, 0.0 }   |";
+
+/// The 1-based line of the first line of `text` that contains `needle` (a test oracle that does
+/// not use the parser).
+#[cfg(test)]
+pub(crate) fn line_of(text: &str, needle: &str) -> usize {
+    text.lines()
+        .position(|l| l.contains(needle))
+        .map(|k| k + 1)
+        .unwrap_or_else(|| panic!("{needle:?} not in the text"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn values(w: &[Written]) -> Vec<f64> {
+        w.iter().map(|w| w.value).collect()
+    }
+
+    fn messages_name(p: &ParseProblem, line: usize) {
+        let (en, ja) = (p.message(Lang::En), p.message(Lang::Ja));
+        assert!(en.starts_with(&format!("line {line}: ")), "{en}");
+        assert!(ja.starts_with(&format!("{line} 行目: ")), "{ja}");
+        assert!(!p.expected.en.is_empty() && !p.expected.ja.is_empty(), "{p:?}");
+        assert_ne!(p.expected.en, p.expected.ja, "both languages are written: {p:?}");
+        assert!(p.found.chars().count() <= 80, "{p:?}");
+    }
+
+    #[test]
+    fn numbers_remember_their_decimals() {
+        let n = |s: &str| parse_number(s).map(|w| (w.value, w.decimals));
+        assert_eq!(n("0.53"), Some((0.53, 2)));
+        assert_eq!(n("-0.8"), Some((-0.8, 1)));
+        assert_eq!(n("−0.8"), Some((-0.8, 1)), "the Unicode minus");
+        assert_eq!(n("＋1.250"), Some((1.25, 3)));
+        assert_eq!(n("15"), Some((15.0, 0)));
+        assert_eq!(n(" .5 "), Some((0.5, 1)));
+        assert_eq!(n("5."), Some((5.0, 0)));
+        assert_eq!(
+            parse_number("−0.8").map(|w| w.text),
+            Some("−0.8".to_owned()),
+            "kept as written"
+        );
+        for bad in ["", "-", ".", "1e-3", "0,5", "\\cos 30°", "0.8.1", "- 1", "inf", "NaN", "1/2"]
+        {
+            assert_eq!(parse_number(bad), None, "{bad:?}");
+        }
+        assert_eq!(parse_number(&"9".repeat(400)), None, "too large to be finite");
+    }
+
+    #[test]
+    fn the_lecture_slide_parses() {
+        let (r, problems) = parse_report(LECTURE_SLIDE);
+        assert!(problems.is_empty(), "{problems:?}");
+        assert_eq!(r.vertices.len(), 5);
+        assert_eq!(r.faces.len(), 6);
+        assert!(r.matrices.is_empty() && r.tex.is_empty());
+        let v3 = &r.vertices[3];
+        assert_eq!((v3.index, v3.line), (3, line_of(LECTURE_SLIDE, "V3 (")));
+        assert_eq!(values(&v3.coords), [-1.0, -0.8, 1.0]);
+        assert_eq!(v3.coords.each_ref().map(|w| w.decimals), [1, 1, 1]);
+        let expected_faces = [[0, 3, 1], [0, 2, 4], [0, 1, 2], [0, 4, 3], [1, 3, 2], [4, 2, 3]];
+        for (k, f) in r.faces.iter().enumerate() {
+            assert_eq!(f.index as usize, k);
+            assert_eq!(f.vertices, expected_faces[k]);
+            assert_eq!(f.line, line_of(LECTURE_SLIDE, &format!("F{k} {{")));
+        }
+        let n0 = r.faces[0].normal.as_ref().unwrap();
+        assert_eq!(values(n0), [0.0, 0.53, 0.85]);
+        assert_eq!(n0.each_ref().map(|w| w.decimals), [1, 2, 2]);
+        assert_eq!(values(r.faces[3].normal.as_ref().unwrap()), [-0.85, 0.53, 0.0]);
+    }
+
+    /// Index, line, vertices and normal values of a face row.
+    type FaceRow = (u32, usize, [u32; 3], Option<Vec<f64>>);
+
+    #[test]
+    fn the_kits_tables_and_other_spellings_parse() {
+        let text = "\
+| V | position |
+|---|---|
+| V0 | (0.000, 1.000, 0.000) |
+- V1 = (1, -0.8, 1)
+V2 （1.0，−0.8，−1.0）
+3. **V3** (-1.0, -0.8, 1.0)
+頂点V4 (-1.0, -0.8, -1.0) は裏側
+| F0 | { V0, V3, V1 } | { 0.000, 0.486, 0.874 } |
+F1 ( V0, V2, V4 )   ( 0.0, 0.4856, -0.8742 )
+F2 ｛V0，V1，V2｝
+V5 = (cos 30°, 0, sin 30°) = (0.866, 0, 0.5)
+The face F3 (the left one) and V1 (the apex's neighbour) are prose.
+Edges V3–V5, F9.
+V0 (the apex) is prose too, and so is
+F1 (the back face).
+";
+        let (r, problems) = parse_report(text);
+        assert!(problems.is_empty(), "{problems:?}");
+        let got: Vec<(u32, usize, Vec<f64>)> =
+            r.vertices.iter().map(|v| (v.index, v.line, values(&v.coords))).collect();
+        assert_eq!(
+            got,
+            vec![
+                (0, 3, vec![0.0, 1.0, 0.0]),
+                (1, 4, vec![1.0, -0.8, 1.0]),
+                (2, 5, vec![1.0, -0.8, -1.0]),
+                (3, 6, vec![-1.0, -0.8, 1.0]),
+                (4, 7, vec![-1.0, -0.8, -1.0]),
+                (5, 11, vec![0.866, 0.0, 0.5]),
+            ]
+        );
+        let faces: Vec<FaceRow> = r
+            .faces
+            .iter()
+            .map(|f| (f.index, f.line, f.vertices, f.normal.as_ref().map(|n| values(n))))
+            .collect();
+        assert_eq!(
+            faces,
+            vec![
+                (0, 8, [0, 3, 1], Some(vec![0.0, 0.486, 0.874])),
+                (1, 9, [0, 2, 4], Some(vec![0.0, 0.4856, -0.8742])),
+                (2, 10, [0, 1, 2], None),
+            ]
+        );
+    }
+
+    #[test]
+    fn latex_rows_parse() {
+        let text = "V0 & (0.0, 1.0, 0.0) \\\\\nF0 & $\\{ V0, V3, V1 \\}$ & $\\{ 0.0, 0.49, 0.87 \\}$ \\\\\n";
+        assert!(text.contains(r"$\{ V0"), "{text}");
+        let (r, problems) = parse_report(text);
+        assert!(problems.is_empty(), "{problems:?}");
+        assert_eq!(values(&r.vertices[0].coords), [0.0, 1.0, 0.0]);
+        assert_eq!(r.faces[0].vertices, [0, 3, 1]);
+        assert_eq!(values(r.faces[0].normal.as_ref().unwrap()), [0.0, 0.49, 0.87]);
+    }
+
+    #[test]
+    fn a_row_quoted_again_with_the_same_numbers_is_kept_once() {
+        let text = "V0 (0.0, 1.0, 0.0)\nF0 { V0, V3, V1 }\nAs computed, V0 (0, 1, 0) is the apex; F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 }.";
+        let (r, problems) = parse_report(text);
+        assert!(problems.is_empty(), "{problems:?}");
+        assert_eq!(r.vertices.len(), 1);
+        assert_eq!(r.faces.len(), 1);
+        assert_eq!(r.faces[0].line, 2);
+        assert_eq!(
+            values(r.faces[0].normal.as_ref().unwrap()),
+            [0.0, 0.49, 0.87],
+            "the later normal fills in"
+        );
+    }
+
+    #[test]
+    fn tagged_matrices_and_texture_rows_parse() {
+        let text = r"Intro with a matrix that has no tag: $\begin{pmatrix} a & b \end{pmatrix}$
+
+<!-- cg: a2.view.start -->
+$$
+T(1, 2, 3) \cdot R_y(30°) =
+\begin{pmatrix}
+0.866 & 0 & 0.5 & 1 \\
+0 & 1 & 0 & 2 \\
+-0.5 & 0 & {0.866} & 3 \\[2pt]
+0 & 0 & 0 & 1 \\
+\end{pmatrix}
+$$
+% cg: a3.object0.t1.5
+\[ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0 & 1 \end{pmatrix} \]
+
+| i | j | position | texture coordinates |
+|---|---|---|---|
+| 0 | 0 | (-5.000, 0.000, -5.000) | (0.000, 0.000) |
+| 3 | 5 | (-2.000, 0.000, 0.000) | (0.300, 0.500) / (1.000, 0.500) |
+| 1 | 2 | 3 |
+";
+        let (r, problems) = parse_report(text);
+        assert!(problems.is_empty(), "{problems:?}");
+        assert_eq!(r.matrices.len(), 2);
+        let m = &r.matrices[0];
+        assert_eq!((m.id.as_str(), m.line), ("a2.view.start", 3));
+        let rows: Vec<Vec<f64>> = m.rows.iter().map(|r| values(r)).collect();
+        assert_eq!(
+            rows,
+            vec![
+                vec![0.866, 0.0, 0.5, 1.0],
+                vec![0.0, 1.0, 0.0, 2.0],
+                vec![-0.5, 0.0, 0.866, 3.0],
+                vec![0.0, 0.0, 0.0, 1.0]
+            ]
+        );
+        assert_eq!(m.entry_lines, vec![vec![7; 4], vec![8; 4], vec![9; 4], vec![10; 4]]);
+        let m = &r.matrices[1];
+        assert_eq!((m.id.as_str(), m.line), ("a3.object0.t1.5", 13));
+        assert_eq!(values(&m.rows[1]), [1.0, 0.0, 0.0, 2.0]);
+        assert_eq!(m.entry_lines[3], vec![14; 4]);
+        assert_eq!(r.tex.len(), 2);
+        let t = &r.tex[1];
+        assert_eq!((t.i, t.j, t.line), (3, 5, 19));
+        assert_eq!(values(&t.position), [-2.0, 0.0, 0.0]);
+        let tex: Vec<Vec<f64>> = t.tex.iter().map(|p| values(p)).collect();
+        assert_eq!(tex, vec![vec![0.3, 0.5], vec![1.0, 0.5]]);
+    }
+
+    #[test]
+    fn malformed_rows_name_their_line_and_what_was_expected() {
+        let text = r"V0 (0.0, 1.0, 0.0)
+V1 (1.0, -0.8)
+F3 { V0, V4 }
+F4 { V1, V3, 2 }
+F5 { V4, V2, V3 } { 0.0, -1.0 }
+V0 (0.0, 2.0, 0.0)
+V2 (1.0, abc, 1.0)
+| 3 | 5 | (-2.000, 0.000, 0.000) |
+| 4 | 5 | (-1.000, 0.000) | (0.4, 0.5) |
+| 5 | 5 | (0.000, 0.000, 0.000) | (0.5, 0.5) / 0.6 |
+<!-- cg: a1.transform -->
+no matrix here
+<!-- cg: a2.view.start -->
+$$ \begin{pmatrix} 1 & 0 & 0 \\ 0 & 1 & 0 \\ 0 & 0 & 1 \end{pmatrix} $$
+<!-- cg: a2.view.drag -->
+$$ \begin{pmatrix}
+\cos 30° & 0 & 0 & 0 \\ 0 & 1 & 0 & 0 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0 & 1
+\end{pmatrix} $$
+<!-- cg: bad id -->
+V6 (1.0, 2.0, 3.0
+";
+        let (r, problems) = parse_report(text);
+        let got: Vec<(usize, RowKind)> = problems.iter().map(|p| (p.line, p.kind)).collect();
+        assert_eq!(
+            got,
+            vec![
+                (2, RowKind::Vertex),
+                (3, RowKind::Face),
+                (4, RowKind::Face),
+                (5, RowKind::Face),
+                (6, RowKind::Vertex),
+                (7, RowKind::Vertex),
+                (8, RowKind::Texture),
+                (9, RowKind::Texture),
+                (10, RowKind::Texture),
+                (11, RowKind::Matrix),
+                (14, RowKind::Matrix),
+                (17, RowKind::Matrix),
+                (19, RowKind::Matrix),
+                (20, RowKind::Vertex),
+            ],
+            "{problems:#?}"
+        );
+        for p in &problems {
+            messages_name(p, p.line);
+        }
+        let by_line = |n: usize| problems.iter().find(|p| p.line == n).unwrap();
+        assert_eq!(by_line(2).found, "V1 (1.0, -0.8)");
+        assert!(by_line(2).expected.en.contains("found 2 numbers"), "{}", by_line(2).expected);
+        assert_eq!(by_line(3).found, "F3 { V0, V4 }");
+        assert!(by_line(3).expected.en.contains("three vertex numbers"), "{}", by_line(3).expected);
+        assert!(
+            by_line(3)
+                .message(Lang::En)
+                .starts_with("line 3: `F3 { V0, V4 }` — expected three vertex numbers")
+        );
+        assert!(by_line(4).expected.en.contains("`2` is not a vertex number"));
+        assert!(by_line(5).expected.en.contains("normal"));
+        assert!(
+            by_line(6).expected.en.contains("line 1"),
+            "the duplicate names the first: {}",
+            by_line(6).expected
+        );
+        assert!(by_line(7).expected.en.contains("`abc`"));
+        assert!(by_line(8).expected.en.contains("missing"));
+        assert!(by_line(11).expected.en.contains("pmatrix"));
+        assert!(
+            by_line(14).expected.en.contains("found 3 rows of 3, 3, 3 entries"),
+            "{}",
+            by_line(14).expected
+        );
+        assert_eq!(by_line(17).found, "\\cos 30°");
+        assert!(by_line(17).expected.en.contains("0.866"));
+        assert!(by_line(20).expected.en.contains("not closed"));
+        // Only the rows that parsed are kept: V0 (first), F-nothing, no tex, no matrix.
+        assert_eq!(r.vertices.len(), 1);
+        assert_eq!(values(&r.vertices[0].coords), [0.0, 1.0, 0.0]);
+        assert!(r.faces.is_empty() && r.tex.is_empty() && r.matrices.is_empty(), "{r:?}");
+    }
+
+    #[test]
+    fn long_offending_text_is_clipped() {
+        let text = format!("F0 {{ V0, V1, {} }}", "V2, ".repeat(40));
+        let (_, problems) = parse_report(&text);
+        assert_eq!(problems.len(), 1);
+        assert_eq!(problems[0].found.chars().count(), 80);
+        assert!(problems[0].found.ends_with('…'));
+    }
+
+    #[test]
+    fn data_alone_builds_the_lectures_pyramid() {
+        let p = polygon_from_text(LECTURE_SLIDE, Text::new("四角すい", "pyramid")).unwrap();
+        assert_eq!(p.vertices[2], Vec3::new(1.0, -0.8, -1.0));
+        assert_eq!(p.faces, vec![[0, 3, 1], [0, 2, 4], [0, 1, 2], [0, 4, 3], [1, 3, 2], [4, 2, 3]]);
+        // The kit's normal of F0 from the vertices: (V3 − V0) × (V1 − V0) = (0, 2, 3.6)/|…|.
+        let len = (4.0f64 + 3.6 * 3.6).sqrt();
+        let n0 = p.derived_normals[0].unwrap().as_dvec3();
+        assert!((n0 - DVec3::new(0.0, 2.0 / len, 3.6 / len)).length() < 1e-6, "{n0}");
+        let written = p.student_normals.as_ref().unwrap();
+        assert_eq!(written[0], Vec3::new(0.0, 0.53, 0.85));
+        assert_eq!(written[5], Vec3::new(0.0, -1.0, 0.0));
+        // Without every normal, there are no student normals.
+        let text =
+            "V0 (0,0,0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 { V0, V1, V2 } { 0, 0, 1 }\nF1 { V0, V2, V1 }";
+        assert_eq!(polygon_from_text(text, Text::default()).unwrap().student_normals, None);
+    }
+    use cg_core::glam::DVec3;
+
+    #[test]
+    fn data_alone_names_what_is_missing() {
+        let err = |text: &str| polygon_from_text(text, Text::default()).unwrap_err();
+        let e = err("");
+        assert_eq!(e.len(), 2, "{e:?}");
+        assert!(e.iter().all(|p| p.line == 0 && p.kind == RowKind::Data));
+        assert!(e[0].message(Lang::En).starts_with("the text: expected at least one vertex row"));
+        assert!(e[0].message(Lang::Ja).starts_with("全体: "));
+
+        let e = err("V0 (0,0,0)\nV1 (1,0,0)\nV3 (0,1,0)\nF0 { V0, V1, V3 }\nF1 { V0, V1, V7 }");
+        let got: Vec<usize> = e.iter().map(|p| p.line).collect();
+        assert_eq!(got, vec![3, 5], "{e:?}");
+        assert!(
+            e[0].expected.en.contains("V0 to V2") && e[0].expected.en.contains("V2 is missing"),
+            "{}",
+            e[0].expected
+        );
+        assert!(e[1].expected.en.contains("no V7"), "{}", e[1].expected);
+        for p in &e {
+            messages_name(p, p.line);
+        }
+
+        let e = err("V0 (0,0,0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 { V0, V1, V2 }\nF2 { V0, V2, V1 }");
+        assert_eq!(e.len(), 1);
+        assert!(e[0].expected.en.contains("F1 is missing"), "{}", e[0].expected);
+
+        let e = err(&format!(
+            "V0 ({}, 0, 0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 {{ V0, V1, V2 }}",
+            "9".repeat(40)
+        ));
+        assert_eq!(e.len(), 1);
+        assert!(e[0].expected.en.contains("f32"), "{}", e[0].expected);
+
+        let e = err("V0 (0,0,0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 { V0, V1 }\n");
+        assert_eq!(
+            e.iter().map(|p| (p.line, p.kind)).collect::<Vec<_>>(),
+            vec![(0, RowKind::Data), (4, RowKind::Face)]
+        );
+    }
+
+    /// Text built from the notation's own pieces, so random input reaches every branch.
+    fn notation_soup() -> impl Strategy<Value = String> {
+        let piece = prop_oneof![
+            Just("V".to_owned()),
+            Just("F".to_owned()),
+            Just("{".to_owned()),
+            Just("}".to_owned()),
+            Just("(".to_owned()),
+            Just(")".to_owned()),
+            Just(", ".to_owned()),
+            Just(" | ".to_owned()),
+            Just("\n".to_owned()),
+            Just(" = ".to_owned()),
+            Just(" / ".to_owned()),
+            Just("−".to_owned()),
+            Just("，".to_owned()),
+            Just("（".to_owned()),
+            Just("&".to_owned()),
+            Just("\\\\".to_owned()),
+            Just("<!-- cg: a1.transform -->".to_owned()),
+            Just("<!-- cg:".to_owned()),
+            Just("% cg: x\n".to_owned()),
+            Just("\\begin{pmatrix}".to_owned()),
+            Just("\\end{pmatrix}".to_owned()),
+            Just("\\\\[".to_owned()),
+            "[0-9]{1,3}".prop_map(|s| s),
+            "-?[0-9]{0,2}\\.[0-9]{0,4}".prop_map(|s| s),
+            "\\PC{0,3}".prop_map(|s| s),
+        ];
+        proptest::collection::vec(piece, 0..60).prop_map(|v| v.concat())
+    }
+
+    proptest! {
+        #![proptest_config(cg_testkit::prop::config(256, 0x5eed_0005))]
+
+        #[test]
+        fn any_text_parses_without_panicking(text in "\\PC{0,300}") {
+            let (_, problems) = parse_report(&text);
+            for p in &problems {
+                prop_assert!(p.found.chars().count() <= 80);
+                prop_assert!(!p.message(Lang::Ja).is_empty());
+            }
+            let _ = polygon_from_text(&text, Text::default());
+        }
+
+        #[test]
+        fn notation_soup_parses_without_panicking(text in notation_soup()) {
+            let (r, problems) = parse_report(&text);
+            for p in &problems {
+                prop_assert!(p.line <= text.lines().count().max(1), "{p:?}");
+                prop_assert!(p.found.chars().count() <= 80);
+            }
+            for m in &r.matrices {
+                prop_assert!(m.rows.len() == 4 && m.rows.iter().all(|r| r.len() == 4));
+            }
+            if let Ok(p) = polygon_from_text(&text, Text::default()) {
+                prop_assert_eq!(p.derived_normals.len(), p.faces.len());
+            }
+        }
+    }
+}

@@ -1,1 +1,1217 @@
-//! (arrives with the report checker)
+//! Checking the numbers of a report against the data they must follow from: every vertex,
+//! normal, matrix entry and texture coordinate that does not follow is a [`Finding`] that names
+//! the item, what was written, the derived value and the tolerance used; a face whose vertex
+//! order points its normal inward is named with the outward order.
+//!
+//! A written number with `d` decimals is accepted when it is correct to its last written digit,
+//! rounded or cut off: `|written − derived| < 10^-max(d, 2)` (plus `1e-6·max(1, |derived|)` for
+//! float noise) — see [`tolerance`]. So `0.49` and `0.48` pass for 0.4856, `0.53` does not, and
+//! `1` passes for 0.9995 but not for 0.53.
+//!
+//! [`verify`] checks a report against what the kit derived from the student's own program;
+//! [`verify_data`] against a vertex and face list alone (see [`crate::parse::polygon_from_text`]),
+//! where "outward" comes from the geometry of the closed model ([`face_outwardness`]).
+
+use std::collections::HashMap;
+
+use cg_core::glam::{DVec3, Mat4, Vec2, Vec3};
+use cg_core::lang::Lang;
+use cg_core::normals::face_normal_f64;
+use cg_harness::Text;
+
+use crate::model::{Derived, PolygonData, TexRow, TextureData, Written};
+use crate::parse::{ParsedFace, ParsedMatrix, ParsedReport, ParsedTex, ParsedVertex};
+
+/// A number in a report that does not follow from the data (or a face wound the wrong way).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Finding {
+    /// The 1-based line of the report.
+    pub line: usize,
+    /// What it is: `V3`, `F2 normal`, `F4 order`, `F4 vertices`,
+    /// `a2.view.start (row 1, column 4)`, `tex (3, 5)`, `tex (3, 5) position`.
+    pub item: String,
+    /// What the report says, as written (`{ 0.0, 0.53, 0.85 }`).
+    pub written: String,
+    /// What follows from the data (`{ 0.0, 0.4856, 0.8742 }`, `{ V1, V3, V2 }`).
+    pub derived: String,
+    /// The tolerance the numbers were compared with (the largest among the wrong ones); `None`
+    /// for a vertex order.
+    pub tolerance: Option<f64>,
+    /// Which numbers are off and by how much, or why the order is wrong.
+    pub why: Text,
+}
+
+/// `0.01` for 0.010001: the tolerance with its float-noise part cut off.
+fn show_tolerance(tol: f64) -> String {
+    let digits = ((-tol.log10()).ceil() + 1.0).clamp(1.0, 12.0) as usize;
+    trim(format!("{tol:.digits$}"))
+}
+
+/// Trailing zeros (and a bare point) removed: `0.0100` → `0.01`.
+fn trim(s: String) -> String {
+    if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_owned() } else { s }
+}
+
+impl Finding {
+    /// `line 14: F0 normal: written { 0.0, 0.53, 0.85 }, derived { 0.0, 0.4856, 0.8742 }
+    /// (tolerance ±0.01) — y is 0.53 but …`, or in Japanese.
+    #[must_use]
+    pub fn message(&self, lang: Lang) -> String {
+        match lang {
+            Lang::En => {
+                let tol = self
+                    .tolerance
+                    .map_or(String::new(), |t| format!(" (tolerance ±{})", show_tolerance(t)));
+                format!(
+                    "line {}: {}: written `{}`, derived `{}`{tol} — {}",
+                    self.line, self.item, self.written, self.derived, self.why.en
+                )
+            }
+            Lang::Ja => {
+                let tol = self
+                    .tolerance
+                    .map_or(String::new(), |t| format!("（許容誤差 ±{}）", show_tolerance(t)));
+                format!(
+                    "{} 行目: {}: 記入 `{}`、導出値 `{}`{tol} — {}",
+                    self.line, self.item, self.written, self.derived, self.why.ja
+                )
+            }
+        }
+    }
+}
+
+impl std::fmt::Display for Finding {
+    /// The English [`Finding::message`].
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message(Lang::En))
+    }
+}
+
+/// The result of checking a report.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Verification {
+    /// Every number that does not follow, by line.
+    pub findings: Vec<Finding>,
+    /// How many written numbers were compared.
+    pub checked: usize,
+    /// What could not be checked and why: derived tables the report does not have at all, rows
+    /// for items the data does not have, matrix tags with unknown IDs, degenerate faces.
+    pub notes: Vec<Text>,
+}
+
+impl Verification {
+    /// No finding (notes do not count).
+    #[must_use]
+    pub fn is_clean(&self) -> bool {
+        self.findings.is_empty()
+    }
+}
+
+/// The tolerance for a written number with `d` decimals (notation item 6):
+/// `10^-max(d, 2) + 1e-6·max(1, |derived|)` — correct to the last written digit, rounded or cut
+/// off; numbers with fewer than two decimals count as exact to 0.01; the second term absorbs the
+/// float noise of the derived value.
+#[must_use]
+pub fn tolerance(w: &Written, derived: f64) -> f64 {
+    let d = i32::try_from(w.decimals.clamp(2, 300)).unwrap_or(300);
+    10f64.powi(-d) + 1e-6 * derived.abs().max(1.0)
+}
+
+/// Whether the written number follows from `derived` within [`tolerance`] (never for a
+/// non-finite derived value).
+#[must_use]
+pub fn accepts(w: &Written, derived: f64) -> bool {
+    derived.is_finite() && (w.value - derived).abs() < tolerance(w, derived)
+}
+
+/// A derived number with a digit more than was written (at least 4 decimals), trailing zeros
+/// trimmed to one decimal: `0.4856`, `-1.0`, `0.0`.
+fn show(x: f64, written_decimals: u32) -> String {
+    if !x.is_finite() {
+        return x.to_string();
+    }
+    let k = (written_decimals.saturating_add(1)).clamp(4, 12) as usize;
+    let mut s = format!("{x:.k$}");
+    while s.ends_with('0') && !s.ends_with(".0") {
+        s.pop();
+    }
+    if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
+        s.remove(0);
+    }
+    s
+}
+
+fn bracket(open: &str, parts: &[String], close: &str) -> String {
+    if parts.len() == 1 {
+        parts[0].clone()
+    } else if open == "{" {
+        format!("{{ {} }}", parts.join(", "))
+    } else {
+        format!("{open}{}{close}", parts.join(", "))
+    }
+}
+
+fn face_text(v: [u32; 3]) -> String {
+    format!("{{ V{}, V{}, V{} }}", v[0], v[1], v[2])
+}
+
+/// Collects findings, notes and the count of compared numbers.
+#[derive(Default)]
+struct Checker {
+    out: Verification,
+}
+
+impl Checker {
+    fn note(&mut self, ja: impl Into<String>, en: impl Into<String>) {
+        self.out.notes.push(Text::new(ja, en));
+    }
+
+    /// Compares written numbers with derived ones component by component; one finding naming
+    /// every component that is off.
+    fn tuple(
+        &mut self,
+        line: usize,
+        item: String,
+        written: &[Written],
+        derived: &[f64],
+        names: &[&str],
+        curly: bool,
+    ) {
+        let mut wrong = Vec::new();
+        for (k, (w, &d)) in written.iter().zip(derived).enumerate() {
+            if !d.is_finite() {
+                continue;
+            }
+            self.out.checked += 1;
+            if !accepts(w, d) {
+                wrong.push(k);
+            }
+        }
+        if wrong.is_empty() {
+            return;
+        }
+        let (open, close) = if curly { ("{", "}") } else { ("(", ")") };
+        let written_s: Vec<String> = written.iter().map(|w| w.text.clone()).collect();
+        let derived_s: Vec<String> =
+            written.iter().zip(derived).map(|(w, &d)| show(d, w.decimals)).collect();
+        let tol = wrong.iter().map(|&k| tolerance(&written[k], derived[k])).fold(0.0, f64::max);
+        let (mut ja, mut en) = (Vec::new(), Vec::new());
+        for &k in &wrong {
+            let name = names.get(k).copied().unwrap_or("");
+            let off = trim(format!("{:.4}", (written[k].value - derived[k]).abs()));
+            ja.push(format!(
+                "{name} は {} ですが導出値は {}（差 {off}）",
+                written[k].text, derived_s[k]
+            ));
+            en.push(format!(
+                "{name} is {} but follows as {} (off by {off})",
+                written[k].text, derived_s[k]
+            ));
+        }
+        let why = Text::new(
+            format!(
+                "{}。書いた最後の桁まで正しい値（四捨五入でも切り捨てでも）なら受け付けます",
+                ja.join("、")
+            ),
+            format!(
+                "{}; a value correct to its last written digit (rounded or cut off) is accepted",
+                en.join(", ")
+            ),
+        );
+        self.out.findings.push(Finding {
+            line,
+            item,
+            written: bracket(open, &written_s, close),
+            derived: bracket(open, &derived_s, close),
+            tolerance: Some(tol),
+            why,
+        });
+    }
+
+    fn vertices(&mut self, rows: &[ParsedVertex], data: &[Vec3]) {
+        for v in rows {
+            match data.get(v.index as usize) {
+                Some(p) => {
+                    let d = p.as_dvec3().to_array();
+                    self.tuple(
+                        v.line,
+                        format!("V{}", v.index),
+                        &v.coords,
+                        &d,
+                        &["x", "y", "z"],
+                        false,
+                    );
+                }
+                None => self.note(
+                    format!(
+                        "V{}（{} 行目）: データに V{} はありません（頂点は {} 個）",
+                        v.index,
+                        v.line,
+                        v.index,
+                        data.len()
+                    ),
+                    format!(
+                        "V{} (line {}): the data has no V{} (it has {} vertices)",
+                        v.index,
+                        v.line,
+                        v.index,
+                        data.len()
+                    ),
+                ),
+            }
+        }
+    }
+
+    fn normal(&mut self, f: &ParsedFace, derived: Option<DVec3>) {
+        let Some(w) = &f.normal else { return };
+        match derived {
+            Some(n) => {
+                self.tuple(
+                    f.line,
+                    format!("F{} normal", f.index),
+                    w,
+                    &n.to_array(),
+                    &["x", "y", "z"],
+                    true,
+                );
+            }
+            None => self.note(
+                format!("F{}（{} 行目）: 面積 0 の面なので法線を導出できません", f.index, f.line),
+                format!(
+                    "F{} (line {}): the face has no area, so its normal cannot be derived",
+                    f.index, f.line
+                ),
+            ),
+        }
+    }
+
+    fn order(&mut self, f: &ParsedFace) {
+        let [a, b, c] = f.vertices;
+        let outward = face_text([a, c, b]);
+        self.out.findings.push(Finding {
+            line: f.line,
+            item: format!("F{} order", f.index),
+            written: face_text(f.vertices),
+            derived: outward.clone(),
+            tolerance: None,
+            why: Text::new(
+                format!(
+                    "外側から見て時計回りなので、法線 (V_b − V_a) × (V_c − V_a) が内側を向きます。外向きの順番は {outward}（またはその巡回）です"
+                ),
+                format!(
+                    "the vertices run clockwise seen from outside, so the normal (V_b − V_a) × (V_c − V_a) points inward; the outward order is {outward} (or a rotation of it)"
+                ),
+            ),
+        });
+    }
+
+    fn other_vertices(&mut self, f: &ParsedFace, data: [u32; 3]) {
+        self.out.findings.push(Finding {
+            line: f.line,
+            item: format!("F{} vertices", f.index),
+            written: face_text(f.vertices),
+            derived: face_text(data),
+            tolerance: None,
+            why: Text::new(
+                format!("データの F{} の頂点ではありません", f.index),
+                format!("these are not the vertices of the data's F{}", f.index),
+            ),
+        });
+    }
+
+    fn no_face(&mut self, f: &ParsedFace, count: usize) {
+        self.note(
+            format!(
+                "F{}（{} 行目）: データに F{} はありません（面は {count} 個）",
+                f.index, f.line, f.index
+            ),
+            format!(
+                "F{} (line {}): the data has no F{} (it has {count} faces)",
+                f.index, f.line, f.index
+            ),
+        );
+    }
+
+    fn matrices(&mut self, written: &[ParsedMatrix], derived: &Derived) {
+        let known = known_matrices(derived);
+        let mut unknown = Vec::new();
+        for m in written {
+            let Some((_, result)) = known.iter().find(|(id, _)| *id == m.id) else {
+                unknown.push(m);
+                continue;
+            };
+            let Some(mat) = result else {
+                self.note(
+                    format!("`{}`（{} 行目）: 行列を計算できませんでした", m.id, m.line),
+                    format!("`{}` (line {}): the matrix could not be computed", m.id, m.line),
+                );
+                continue;
+            };
+            for (r, row) in m.rows.iter().enumerate().take(4) {
+                for (c, w) in row.iter().enumerate().take(4) {
+                    let d = f64::from(mat.col(c)[r]);
+                    let line =
+                        m.entry_lines.get(r).and_then(|l| l.get(c)).copied().unwrap_or(m.line);
+                    self.tuple(
+                        line,
+                        format!("{} (row {}, column {})", m.id, r + 1, c + 1),
+                        std::slice::from_ref(w),
+                        &[d],
+                        &["the entry"],
+                        false,
+                    );
+                }
+            }
+        }
+        if !unknown.is_empty() {
+            let ids: Vec<&str> = known.iter().map(|(id, _)| id.as_str()).collect();
+            let known_list = if ids.is_empty() { "—".to_owned() } else { ids.join(", ") };
+            let tags: Vec<String> = unknown.iter().map(|m| format!("`{}`", m.id)).collect();
+            let lines: Vec<String> = unknown.iter().map(|m| m.line.to_string()).collect();
+            let (tags, lines) = (tags.join(", "), lines.join(", "));
+            self.note(
+                format!("タグ {tags}（{lines} 行目）に対応する導出済みの行列がないので確かめていません（あるのは {known_list}）"),
+                format!("no derived matrix has the tag {tags} (line {lines}), so it was not checked; known: {known_list}"),
+            );
+        }
+        let missing: Vec<&str> = known
+            .iter()
+            .filter(|(id, _)| !written.iter().any(|m| m.id == *id))
+            .map(|(id, _)| id.as_str())
+            .collect();
+        if !missing.is_empty() {
+            let list = missing.join(", ");
+            self.note(
+                format!("レポートにタグ付きの行列がありません: {list}"),
+                format!("no tagged matrix found in the report for: {list}"),
+            );
+        }
+    }
+
+    fn texture(&mut self, rows: &[ParsedTex], data: &TextureData) {
+        for t in rows {
+            let Some(row) = data.rows.iter().find(|r| r.i == t.i && r.j == t.j) else {
+                self.note(
+                    format!(
+                        "格子点 ({}, {})（{} 行目）は導出したデータにありません",
+                        t.i, t.j, t.line
+                    ),
+                    format!(
+                        "grid vertex ({}, {}) (line {}) is not in the derived data",
+                        t.i, t.j, t.line
+                    ),
+                );
+                continue;
+            };
+            self.tuple(
+                t.line,
+                format!("tex ({}, {}) position", t.i, t.j),
+                &t.position,
+                &row.position.as_dvec3().to_array(),
+                &["x", "y", "z"],
+                false,
+            );
+            self.coordinates(t, row);
+        }
+    }
+
+    /// The written coordinates as a set against the row's: the count must match and each
+    /// written pair must match a different derived pair.
+    fn coordinates(&mut self, t: &ParsedTex, row: &TexRow) {
+        self.out.checked += 2 * t.tex.len();
+        let unmatched = unmatched(&t.tex, &row.tex);
+        if unmatched.is_empty() && t.tex.len() == row.tex.len() {
+            return;
+        }
+        let pair = |w: &[Written; 2]| format!("({}, {})", w[0].text, w[1].text);
+        let decimals = t.tex.iter().flatten().map(|w| w.decimals).max().unwrap_or(3);
+        let dpair = |v: &Vec2| {
+            format!("({}, {})", show(f64::from(v.x), decimals), show(f64::from(v.y), decimals))
+        };
+        let written: Vec<String> = t.tex.iter().map(pair).collect();
+        let derived: Vec<String> = row.tex.iter().map(dpair).collect();
+        let (mut ja, mut en) = (Vec::new(), Vec::new());
+        if t.tex.len() != row.tex.len() {
+            ja.push(format!(
+                "{} 組書かれていますが、この格子点のテクスチャ座標は {} 組です（使う四角形ごとに座標が異なる格子点は、その組をすべて書きます）",
+                t.tex.len(),
+                row.tex.len()
+            ));
+            en.push(format!(
+                "{} pairs are written but this grid vertex has {} (where the squares that use it give it different coordinates, write each of them)",
+                t.tex.len(),
+                row.tex.len()
+            ));
+        }
+        if !unmatched.is_empty() {
+            let list: Vec<String> = unmatched.iter().map(|&k| pair(&t.tex[k])).collect();
+            let list = list.join(", ");
+            ja.push(format!("{list} はどの導出値とも一致しません"));
+            en.push(format!("{list} matches none of the derived coordinates"));
+        }
+        let tol = unmatched
+            .iter()
+            .flat_map(|&k| t.tex[k].iter())
+            .map(|w| tolerance(w, 1.0))
+            .fold(None, |acc: Option<f64>, x| Some(acc.map_or(x, |a| a.max(x))));
+        self.out.findings.push(Finding {
+            line: t.line,
+            item: format!("tex ({}, {})", t.i, t.j),
+            written: written.join(" / "),
+            derived: derived.join(" / "),
+            tolerance: tol,
+            why: Text::new(ja.join("。"), en.join("; ")),
+        });
+    }
+
+    fn finish(mut self) -> Verification {
+        self.out.findings.sort_by(|a, b| a.line.cmp(&b.line).then_with(|| a.item.cmp(&b.item)));
+        self.out
+    }
+}
+
+/// The written pairs that match no derived pair, under the best one-to-one assignment (small
+/// sets: exhaustive; larger ones: greedy).
+fn unmatched(written: &[[Written; 2]], derived: &[Vec2]) -> Vec<usize> {
+    let fits = |w: &[Written; 2], d: &Vec2| {
+        accepts(&w[0], f64::from(d.x)) && accepts(&w[1], f64::from(d.y))
+    };
+    fn best(
+        k: usize,
+        used: &mut Vec<bool>,
+        written: &[[Written; 2]],
+        derived: &[Vec2],
+        fits: &dyn Fn(&[Written; 2], &Vec2) -> bool,
+    ) -> Vec<usize> {
+        let Some(w) = written.get(k) else { return Vec::new() };
+        // Leave this one unmatched…
+        let mut best_rest = best(k + 1, used, written, derived, fits);
+        best_rest.insert(0, k);
+        // …or match it with each free derived pair that fits.
+        for (m, d) in derived.iter().enumerate() {
+            if !used[m] && fits(w, d) {
+                used[m] = true;
+                let rest = best(k + 1, used, written, derived, fits);
+                used[m] = false;
+                if rest.len() < best_rest.len() {
+                    best_rest = rest;
+                }
+            }
+        }
+        best_rest
+    }
+    if written.len() <= 6 && derived.len() <= 8 {
+        let mut used = vec![false; derived.len()];
+        return best(0, &mut used, written, derived, &fits);
+    }
+    let mut used = vec![false; derived.len()];
+    let mut out = Vec::new();
+    for (k, w) in written.iter().enumerate() {
+        match derived.iter().enumerate().find(|(m, d)| !used[*m] && fits(w, d)) {
+            Some((m, _)) => used[m] = true,
+            None => out.push(k),
+        }
+    }
+    out
+}
+
+/// Every matrix the data derives, by ID: `a1.transform` (the polygon's model transform), the
+/// camera's and the animation's.
+fn known_matrices(derived: &Derived) -> Vec<(String, Option<Mat4>)> {
+    let mut out = Vec::new();
+    if let Some(t) = derived.polygon.as_ref().and_then(|p| p.transform.as_ref()) {
+        out.push(("a1.transform".to_owned(), t.matrix().ok()));
+    }
+    if let Some(c) = &derived.camera {
+        out.extend(c.matrices.iter().map(|m| (m.id.clone(), m.numeric.matrix().ok())));
+    }
+    if let Some(a) = &derived.animation {
+        for (_, ms) in &a.objects {
+            out.extend(ms.iter().map(|m| (m.id.clone(), m.numeric.matrix().ok())));
+        }
+    }
+    out
+}
+
+/// How a written face's vertex numbers relate to the data's face.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Relation {
+    /// The same cyclic order (a rotation is fine).
+    Same,
+    /// The same three vertices in the reverse order.
+    Reversed,
+    /// Other vertices.
+    Different,
+}
+
+fn relation(written: [u32; 3], data: [u32; 3]) -> Relation {
+    let [a, b, c] = data;
+    if [[a, b, c], [b, c, a], [c, a, b]].contains(&written) {
+        Relation::Same
+    } else if [[a, c, b], [c, b, a], [b, a, c]].contains(&written) {
+        Relation::Reversed
+    } else {
+        Relation::Different
+    }
+}
+
+fn tables_missing(c: &mut Checker, report: &ParsedReport) {
+    if report.vertices.is_empty() {
+        c.note("レポートに頂点の表がありません", "no vertex table found in the report");
+    }
+    if report.faces.is_empty() {
+        c.note("レポートに面の表がありません", "no face table found in the report");
+    } else if report.faces.iter().all(|f| f.normal.is_none()) {
+        c.note("面の表に法線がありません", "the face table has no normals");
+    }
+}
+
+/// Checks a report against the data derived from the student's program: vertices by number
+/// against `polygon.vertices`; each face's vertex order against the data's face of that number
+/// (a rotation is fine, the reverse order is one `F4 order` finding, other vertices one
+/// `F4 vertices` finding) and its written normal against the data's derived (outward) normal;
+/// tagged matrices entry by entry against the derived matrix with that ID (`a1.transform` is the
+/// polygon's transform); texture rows by (i, j): the position, and the coordinates as a set.
+/// Items the report leaves out are not findings; derived tables the report lacks altogether,
+/// rows for items the data does not have and unknown tags are `notes`.
+#[must_use]
+pub fn verify(report: &ParsedReport, derived: &Derived) -> Verification {
+    let mut c = Checker::default();
+    match &derived.polygon {
+        Some(p) => {
+            c.vertices(&report.vertices, &p.vertices);
+            for f in &report.faces {
+                let Some(&data) = p.faces.get(f.index as usize) else {
+                    c.no_face(f, p.faces.len());
+                    continue;
+                };
+                match relation(f.vertices, data) {
+                    Relation::Different => {
+                        c.other_vertices(f, data);
+                        continue;
+                    }
+                    Relation::Reversed => c.order(f),
+                    Relation::Same => {}
+                }
+                let n = p.derived_normals.get(f.index as usize).copied().flatten();
+                c.normal(f, n.map(Vec3::as_dvec3));
+            }
+            tables_missing(&mut c, report);
+        }
+        None => {
+            if !report.vertices.is_empty() || !report.faces.is_empty() {
+                c.note(
+                    "ポリゴンモデルのデータがないので、頂点と面の表は確かめていません",
+                    "there is no polygon data, so the vertex and face tables were not checked",
+                );
+            }
+        }
+    }
+    c.matrices(&report.matrices, derived);
+    match &derived.texture {
+        Some(t) => {
+            c.texture(&report.tex, t);
+            if report.tex.is_empty() {
+                c.note(
+                    "レポートにテクスチャ座標の表がありません",
+                    "no texture-coordinate table found in the report",
+                );
+            }
+        }
+        None => {
+            if !report.tex.is_empty() {
+                c.note(
+                    "テクスチャのデータがないので、テクスチャ座標の表は確かめていません",
+                    "there is no texture data, so the texture-coordinate table was not checked",
+                );
+            }
+        }
+    }
+    c.finish()
+}
+
+/// Data-alone mode: checks the vertex and face rows of `report` against `polygon` (usually read
+/// from the same text by [`crate::parse::polygon_from_text`]). Vertices by number; each written
+/// face's normal against the normal of its written order (`(V_b − V_a) × (V_c − V_a)`); a face
+/// whose written order points its normal into the closed model ([`face_outwardness`]) is an
+/// `F4 order` finding with the outward order; a face whose vertices differ from the data's face
+/// of that number, or name a vertex that does not exist, is an `F4 vertices` finding. Where the
+/// model is not closed (so outward is undefined), a note says which faces could not be judged.
+#[must_use]
+pub fn verify_data(polygon: &PolygonData, report: &ParsedReport) -> Verification {
+    let mut c = Checker::default();
+    c.vertices(&report.vertices, &polygon.vertices);
+    let outward = face_outwardness(&polygon.vertices, &polygon.faces);
+    let mut unjudged = Vec::new();
+    let n = polygon.vertices.len();
+    for f in &report.faces {
+        if let Some(&bad) = f.vertices.iter().find(|&&k| k as usize >= n) {
+            c.out.findings.push(Finding {
+                line: f.line,
+                item: format!("F{} vertices", f.index),
+                written: face_text(f.vertices),
+                derived: format!("V0 … V{}", n.saturating_sub(1)),
+                tolerance: None,
+                why: Text::new(
+                    format!("V{bad} という頂点はありません（頂点は {n} 個）"),
+                    format!("there is no V{bad} (the data has {n} vertices)"),
+                ),
+            });
+            continue;
+        }
+        let out = match polygon.faces.get(f.index as usize) {
+            Some(&data) => match relation(f.vertices, data) {
+                Relation::Same => outward.get(f.index as usize).copied().flatten(),
+                Relation::Reversed => outward.get(f.index as usize).copied().flatten().map(|o| !o),
+                Relation::Different => {
+                    c.other_vertices(f, data);
+                    None
+                }
+            },
+            None => {
+                c.no_face(f, polygon.faces.len());
+                None
+            }
+        };
+        match out {
+            Some(false) => c.order(f),
+            Some(true) => {}
+            None => unjudged.push(format!("F{}", f.index)),
+        }
+        let [a, b, cc] = f.vertices.map(|k| polygon.vertices[k as usize]);
+        c.normal(f, face_normal_f64(a, b, cc));
+    }
+    if !unjudged.is_empty() {
+        let list = unjudged.join(", ");
+        c.note(
+            format!("{list}: モデルが閉じていない（または面がつながっていない）ので、法線が外向きかどうかは判定できません"),
+            format!("{list}: the model is not closed (or the faces are not connected), so whether the normal points outward cannot be judged"),
+        );
+    }
+    tables_missing(&mut c, report);
+    c.finish()
+}
+
+/// Which way each face points in a closed model: `Some(true)` when its vertex order makes its
+/// normal point outward, `Some(false)` inward, `None` when it cannot be judged (the face is
+/// degenerate or names a missing vertex, or its connected part is not closed, not orientable or
+/// encloses no volume).
+///
+/// Faces are oriented consistently across shared edges within each connected part (two faces
+/// agree when they traverse their shared edge in opposite directions); the part's signed volume
+/// `Σ (a−o)·((b−o)×(c−o))/6` in f64 relative to the centroid `o` of its vertices then says which
+/// of the two consistent orientations is outward. So a single face wound the wrong way is named
+/// even in a non-convex model, and a model turned inside out has every face named. Never panics.
+#[must_use]
+pub fn face_outwardness(vertices: &[Vec3], faces: &[[u32; 3]]) -> Vec<Option<bool>> {
+    let usable: Vec<bool> = faces
+        .iter()
+        .map(|f| {
+            f.iter().all(|&k| vertices.get(k as usize).is_some_and(|p| p.is_finite()))
+                && f[0] != f[1]
+                && f[1] != f[2]
+                && f[0] != f[2]
+        })
+        .collect();
+    let key = |a: u32, b: u32| (a.min(b), a.max(b));
+    let mut edges: HashMap<(u32, u32), Vec<(usize, bool)>> = HashMap::new();
+    for (fi, f) in faces.iter().enumerate() {
+        if usable[fi] {
+            for e in 0..3 {
+                let (a, b) = (f[e], f[(e + 1) % 3]);
+                edges.entry(key(a, b)).or_default().push((fi, a < b));
+            }
+        }
+    }
+    let mut flip: Vec<Option<bool>> = vec![None; faces.len()];
+    let mut result = vec![None; faces.len()];
+    for seed in 0..faces.len() {
+        if flip[seed].is_some() || !usable[seed] {
+            continue;
+        }
+        flip[seed] = Some(false);
+        let mut part = vec![seed];
+        let mut queue = vec![seed];
+        let (mut closed, mut orientable) = (true, true);
+        while let Some(f) = queue.pop() {
+            let ff = flip[f].unwrap_or(false);
+            for e in 0..3 {
+                let (a, b) = (faces[f][e], faces[f][(e + 1) % 3]);
+                let Some(list) = edges.get(&key(a, b)) else { continue };
+                if list.len() != 2 {
+                    closed = false;
+                    continue;
+                }
+                let forward = a < b;
+                for &(g, g_forward) in list {
+                    if g == f {
+                        continue;
+                    }
+                    // g agrees with f when it runs the edge the other way (after both flips).
+                    let want = g_forward ^ !(forward ^ ff);
+                    match flip[g] {
+                        None => {
+                            flip[g] = Some(want);
+                            part.push(g);
+                            queue.push(g);
+                        }
+                        Some(x) if x != want => orientable = false,
+                        Some(_) => {}
+                    }
+                }
+            }
+        }
+        if !closed || !orientable {
+            continue;
+        }
+        let mut used: Vec<u32> = part.iter().flat_map(|&f| faces[f]).collect();
+        used.sort_unstable();
+        used.dedup();
+        let o = used.iter().map(|&k| vertices[k as usize].as_dvec3()).sum::<DVec3>()
+            / used.len() as f64;
+        let (mut volume, mut scale) = (0.0f64, 0.0f64);
+        for &f in &part {
+            let [a, b, c] = faces[f].map(|k| vertices[k as usize].as_dvec3() - o);
+            let v = if flip[f] == Some(true) { a.dot(c.cross(b)) } else { a.dot(b.cross(c)) };
+            volume += v;
+            scale += v.abs();
+        }
+        if volume.is_nan() || volume.abs() <= 1e-9 * scale {
+            continue;
+        }
+        for &f in &part {
+            let flipped = flip[f] == Some(true);
+            result[f] = Some(if volume > 0.0 { !flipped } else { flipped });
+        }
+    }
+    result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::derive::polygon_from_data;
+    use crate::model::{AnimationData, CameraData, NamedMatrix};
+    use crate::parse::{LECTURE_SLIDE, line_of, parse_number, parse_report, polygon_from_text};
+    use cg_core::product::{Factor, MatrixProduct};
+    use cg_core::texture::Texture;
+    use proptest::prelude::*;
+
+    const PYRAMID_FACES: [[u32; 3]; 6] =
+        [[0, 3, 1], [0, 2, 4], [0, 1, 2], [0, 4, 3], [1, 3, 2], [4, 2, 3]];
+
+    fn pyramid_vertices() -> Vec<Vec3> {
+        vec![
+            Vec3::new(0.0, 1.0, 0.0),
+            Vec3::new(1.0, -0.8, 1.0),
+            Vec3::new(1.0, -0.8, -1.0),
+            Vec3::new(-1.0, -0.8, 1.0),
+            Vec3::new(-1.0, -0.8, -1.0),
+        ]
+    }
+
+    fn named(id: &str, numeric: MatrixProduct) -> NamedMatrix {
+        NamedMatrix {
+            id: id.to_owned(),
+            title: Text::new(id, id),
+            symbolic: numeric.clone(),
+            numeric,
+            variables: Vec::new(),
+        }
+    }
+
+    fn tex_row(i: u32, j: u32, tex: &[(f32, f32)]) -> TexRow {
+        TexRow {
+            i,
+            j,
+            position: Vec3::new(i as f32 - 5.0, 0.0, j as f32 - 5.0),
+            tex: tex.iter().map(|&(s, t)| Vec2::new(s, t)).collect(),
+        }
+    }
+
+    /// The lecture's pyramid placed by T(0, 0.8, 0); a camera at T(1, 2, 3)·Ry(30°); one object
+    /// at Rz(90°)·T(2, 0, 0); three grid vertices.
+    fn derived() -> Derived {
+        let mut polygon = polygon_from_data(
+            Text::new("四角すい", "pyramid"),
+            pyramid_vertices(),
+            PYRAMID_FACES.to_vec(),
+            None,
+        );
+        polygon.transform =
+            Some(MatrixProduct::identity().then(Factor::translate(Vec3::new(0.0, 0.8, 0.0))));
+        let view = MatrixProduct::identity()
+            .then(Factor::translate(Vec3::new(1.0, 2.0, 3.0)))
+            .then(Factor::rotate_y_deg(30.0));
+        let object = MatrixProduct::identity()
+            .then(Factor::rotate_z_deg(90.0))
+            .then(Factor::translate(Vec3::new(2.0, 0.0, 0.0)));
+        Derived {
+            student: Some("12345678".to_owned()),
+            polygon: Some(polygon),
+            camera: Some(CameraData { matrices: vec![named("a2.view.start", view)] }),
+            animation: Some(AnimationData {
+                objects: vec![("object0".to_owned(), vec![named("a3.object0.t1.5", object)])],
+                periods: Text::default(),
+            }),
+            texture: Some(TextureData {
+                rows: vec![
+                    tex_row(0, 0, &[(0.0, 0.0)]),
+                    tex_row(3, 5, &[(0.3, 0.5), (1.0, 0.5)]),
+                    tex_row(10, 10, &[(1.0, 1.0)]),
+                ],
+                formula: Text::default(),
+                region: (Vec2::ZERO, Vec2::ONE),
+                image: Texture::new(1, 1, vec![[255; 4]]).unwrap(),
+            }),
+        }
+    }
+
+    /// A correct report of `derived()`, every number worked out by hand: normals
+    /// (0, 2, 3.6)/|…| = (0, 0.4856, 0.8742) and its turns, T(1, 2, 3)·Ry(30°) with
+    /// cos 30° = 0.866, Rz(90°)·T(2, 0, 0) moving the origin to (0, 2, 0).
+    const CLEAN: &str = r"# Report
+
+| V | position |
+|---|---|
+| V0 | (0.000, 1.000, 0.000) |
+| V1 | (1.000, -0.800, 1.000) |
+| V2 | (1.000, -0.800, -1.000) |
+| V3 | (-1.000, -0.800, 1.000) |
+| V4 | (-1.000, -0.800, -1.000) |
+
+| F | vertices | normal |
+|---|---|---|
+| F0 | { V0, V3, V1 } | { 0.000, 0.486, 0.874 } |
+| F1 | { V0, V2, V4 } | { 0.000, 0.486, -0.874 } |
+| F2 | { V0, V1, V2 } | { 0.874, 0.486, 0.000 } |
+| F3 | { V0, V4, V3 } | { -0.874, 0.486, 0.000 } |
+| F4 | { V1, V3, V2 } | { 0.000, -1.000, 0.000 } |
+| F5 | { V4, V2, V3 } | { 0.000, -1.000, 0.000 } |
+
+<!-- cg: a1.transform -->
+$$
+\begin{pmatrix}
+1 & 0 & 0 & 0 \\
+0 & 1 & 0 & 0.8 \\
+0 & 0 & 1 & 0 \\
+0 & 0 & 0 & 1
+\end{pmatrix}
+$$
+
+<!-- cg: a2.view.start -->
+$$ \begin{pmatrix} 0.866 & 0 & 0.5 & 1 \\ 0 & 1 & 0 & 2 \\ -0.5 & 0 & 0.866 & 3 \\ 0 & 0 & 0 & 1 \end{pmatrix} $$
+
+<!-- cg: a3.object0.t1.5 -->
+$$ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0 & 1 \end{pmatrix} $$
+
+| i | j | position | texture coordinates |
+|---|---|---|---|
+| 0 | 0 | (-5.000, 0.000, -5.000) | (0.000, 0.000) |
+| 3 | 5 | (-2.000, 0.000, 0.000) | (1.000, 0.500) / (0.300, 0.500) |
+";
+
+    fn items(v: &Verification) -> Vec<(usize, &str)> {
+        v.findings.iter().map(|f| (f.line, f.item.as_str())).collect()
+    }
+
+    fn check(text: &str) -> Verification {
+        let (report, problems) = parse_report(text);
+        assert!(problems.is_empty(), "{problems:?}");
+        verify(&report, &derived())
+    }
+
+    fn w(s: &str) -> Written {
+        parse_number(s).unwrap()
+    }
+
+    #[test]
+    fn tolerance_is_the_last_written_digit() {
+        let ok = |s: &str, d: f64| accepts(&w(s), d);
+        assert!(ok("1", 0.9995), "fewer than two decimals count as exact to 0.01");
+        assert!(!ok("1", 0.53));
+        assert!(!ok("0.53", 0.4856));
+        assert!(ok("0.49", 0.4856), "rounded");
+        assert!(ok("0.48", 0.4856), "cut off");
+        assert!(ok("0.486", 0.48564), "rounded to three");
+        assert!(ok("0.485", 0.48564), "cut off at three");
+        assert!(!ok("0.487", 0.48564), "0.0014 off with three decimals");
+        assert!(!ok("0.5", 0.4856), "0.0144 off");
+        assert!(ok("-0.874", -0.87416));
+        assert!(!ok("0.874", -0.87416), "the sign counts");
+        assert!(ok("0.000", -1e-8), "float noise around zero");
+        assert!(!ok("0.0", f64::NAN), "nothing follows from NaN");
+        let t = tolerance(&w("0.53"), 0.4856);
+        assert!((t - 0.01).abs() < 2e-6, "{t}");
+        let t = tolerance(&w("0.4856"), 100.0);
+        assert!((t - (1e-4 + 1e-4)).abs() < 1e-12, "relative noise for large values: {t}");
+    }
+
+    #[test]
+    fn a_correct_report_is_clean_and_counts_every_number() {
+        let v = check(CLEAN);
+        assert!(v.is_clean(), "{:#?}", v.findings);
+        assert!(v.notes.is_empty(), "{:?}", v.notes);
+        // 5 vertices × 3 + 6 normals × 3 + 3 matrices × 16 + (3 + 2) + (3 + 4) for the grid rows.
+        assert_eq!(v.checked, 15 + 18 + 48 + 5 + 7);
+    }
+
+    #[test]
+    fn planted_mistakes_are_named_and_nothing_else() {
+        let text = CLEAN
+            .replace(
+                "| F2 | { V0, V1, V2 } | { 0.874, 0.486, 0.000 } |",
+                "| F2 | { V0, V1, V2 } | { 0.874, 0.586, 0.000 } |",
+            )
+            .replace("| F4 | { V1, V3, V2 }", "| F4 | { V1, V2, V3 }")
+            .replace("0.866 & 0 & 0.5 & 1 \\\\", "0.866 & 0 & 0.5 & 1.5 \\\\")
+            .replace("(1.000, 0.500) / (0.300, 0.500)", "(1.000, 0.500) / (0.300, 0.600)");
+        let v = check(&text);
+        assert_eq!(
+            items(&v),
+            vec![
+                (line_of(&text, "| F2 |"), "F2 normal"),
+                (line_of(&text, "| F4 |"), "F4 order"),
+                (line_of(&text, "1.5 \\\\"), "a2.view.start (row 1, column 4)"),
+                (line_of(&text, "| 3 | 5 |"), "tex (3, 5)"),
+            ],
+            "{:#?}",
+            v.findings
+        );
+        assert!(v.notes.is_empty(), "{:?}", v.notes);
+        let f = &v.findings;
+        assert_eq!(f[0].written, "{ 0.874, 0.586, 0.000 }");
+        assert!(f[0].derived.contains("0.4856"), "{}", f[0].derived);
+        assert!((f[0].tolerance.unwrap() - 0.001).abs() < 1e-5);
+        assert!(f[0].why.en.contains("y is 0.586"), "{}", f[0].why);
+        assert!(!f[0].why.en.contains("x is"), "only the wrong component: {}", f[0].why);
+        assert_eq!(
+            (f[1].written.as_str(), f[1].derived.as_str()),
+            ("{ V1, V2, V3 }", "{ V1, V3, V2 }")
+        );
+        assert!(f[1].why.en.contains("inward") && f[1].tolerance.is_none());
+        assert_eq!((f[2].written.as_str(), f[2].derived.as_str()), ("1.5", "1.0"));
+        assert!(f[3].why.en.contains("(0.300, 0.600)"), "{}", f[3].why);
+        for f in f {
+            let (en, ja) = (f.message(Lang::En), f.message(Lang::Ja));
+            assert!(en.starts_with(&format!("line {}: {}", f.line, f.item)), "{en}");
+            assert!(ja.starts_with(&format!("{} 行目: {}", f.line, f.item)), "{ja}");
+            assert!(en.contains(&f.written) && en.contains(&f.derived) && ja.contains(&f.derived));
+        }
+        assert!(f[0].message(Lang::En).contains("tolerance ±0.001"), "{}", f[0].message(Lang::En));
+        assert!(f[0].message(Lang::Ja).contains("許容誤差 ±0.001"));
+    }
+
+    #[test]
+    fn a_rotated_face_is_fine_and_other_vertices_are_one_finding() {
+        let text = CLEAN.replace("| F0 | { V0, V3, V1 }", "| F0 | { V3, V1, V0 }").replace(
+            "| F1 | { V0, V2, V4 } | { 0.000, 0.486, -0.874 }",
+            "| F1 | { V0, V1, V4 } | { 0.000, 0.486, 0.874 }",
+        );
+        let v = check(&text);
+        assert_eq!(items(&v), vec![(line_of(&text, "| F1 |"), "F1 vertices")], "{:#?}", v.findings);
+        assert_eq!(v.findings[0].derived, "{ V0, V2, V4 }");
+    }
+
+    #[test]
+    fn what_the_report_lacks_or_the_data_lacks_is_a_note() {
+        let text = "V0 (0.0, 1.0, 0.0)\nV9 (1.0, 1.0, 1.0)\nF8 { V0, V1, V2 }\n<!-- cg: a9.unknown -->\n$$\\begin{pmatrix} 1&0&0&0\\\\0&1&0&0\\\\0&0&1&0\\\\0&0&0&1 \\end{pmatrix}$$\n| 7 | 7 | (2, 0, 2) | (0.5, 0.5) |";
+        let v = check(text);
+        assert!(v.is_clean(), "{:#?}", v.findings);
+        assert_eq!(v.checked, 3, "only V0");
+        let notes: Vec<&str> = v.notes.iter().map(|n| n.en.as_str()).collect();
+        let has = |s: &str| notes.iter().any(|n| n.contains(s));
+        assert!(has("no V9"), "{notes:?}");
+        assert!(has("no F8"), "{notes:?}");
+        assert!(
+            has("`a9.unknown`") && has("known: a1.transform, a2.view.start, a3.object0.t1.5"),
+            "{notes:?}"
+        );
+        assert!(
+            has(
+                "no tagged matrix found in the report for: a1.transform, a2.view.start, a3.object0.t1.5"
+            ),
+            "{notes:?}"
+        );
+        assert!(has("(7, 7)"), "{notes:?}");
+        assert!(!has("no vertex table") && !has("no face table"), "{notes:?}");
+        assert!(v.notes.iter().all(|n| !n.ja.is_empty() && n.ja != n.en));
+
+        let v = check("Nothing here.");
+        let notes: Vec<&str> = v.notes.iter().map(|n| n.en.as_str()).collect();
+        assert!(notes.iter().any(|n| n.contains("no vertex table")), "{notes:?}");
+        assert!(notes.iter().any(|n| n.contains("no face table")), "{notes:?}");
+        assert!(notes.iter().any(|n| n.contains("no texture-coordinate table")), "{notes:?}");
+
+        let (report, _) = parse_report(CLEAN);
+        let v = verify(&report, &Derived::default());
+        assert!(v.is_clean() && v.checked == 0);
+        assert_eq!(v.notes.len(), 3, "polygon, matrices (unknown tags), texture: {:?}", v.notes);
+    }
+
+    #[test]
+    fn data_alone_flags_exactly_the_slides_wrong_normals() {
+        let polygon = polygon_from_text(LECTURE_SLIDE, Text::new("四角すい", "pyramid")).unwrap();
+        let (report, _) = parse_report(LECTURE_SLIDE);
+        let v = verify_data(&polygon, &report);
+        let expected: Vec<(usize, String)> = (0..4)
+            .map(|k| (line_of(LECTURE_SLIDE, &format!("F{k} {{")), format!("F{k} normal")))
+            .collect();
+        let got: Vec<(usize, String)> =
+            v.findings.iter().map(|f| (f.line, f.item.clone())).collect();
+        assert_eq!(got, expected, "{:#?}", v.findings);
+        assert!(v.notes.is_empty(), "{:?}", v.notes);
+        assert_eq!(v.checked, 5 * 3 + 6 * 3);
+        // F0: (0, 2, 3.6)/|…| = (0, 0.4856, 0.8742); 0.53 and 0.85 are both off.
+        let len = (4.0f64 + 3.6 * 3.6).sqrt();
+        let f0 = &v.findings[0];
+        assert_eq!(f0.written, "{ 0.0, 0.53, 0.85 }");
+        assert_eq!(f0.derived, format!("{{ 0.0, {:.4}, {:.4} }}", 2.0 / len, 3.6 / len));
+        assert!(f0.why.en.contains("y is 0.53") && f0.why.en.contains("z is 0.85"), "{}", f0.why);
+        assert!((f0.tolerance.unwrap() - 0.01).abs() < 1e-5);
+        assert_eq!(v.findings[2].derived, format!("{{ {:.4}, {:.4}, 0.0 }}", 3.6 / len, 2.0 / len));
+    }
+
+    fn slide_with_normals(normals: [&str; 4]) -> String {
+        let mut text = LECTURE_SLIDE.to_owned();
+        let old = [
+            "{ 0.0, 0.53, 0.85 }",
+            "{ 0.0, 0.53, -0.85 }",
+            "{ 0.85, 0.53, 0.0 }",
+            "{ -0.85, 0.53, 0.0 }",
+        ];
+        for (o, n) in old.iter().zip(normals) {
+            text = text.replace(o, n);
+        }
+        text
+    }
+
+    fn data_alone(text: &str) -> Verification {
+        let polygon = polygon_from_text(text, Text::default()).unwrap();
+        verify_data(&polygon, &parse_report(text).0)
+    }
+
+    #[test]
+    fn data_alone_accepts_rounded_and_cut_off_normals() {
+        let rounded = slide_with_normals([
+            "{ 0.0, 0.49, 0.87 }",
+            "{ 0.0, 0.49, -0.87 }",
+            "{ 0.87, 0.49, 0.0 }",
+            "{ -0.87, 0.49, 0.0 }",
+        ]);
+        let v = data_alone(&rounded);
+        assert!(v.is_clean() && v.notes.is_empty(), "{:#?} {:?}", v.findings, v.notes);
+        let cut = slide_with_normals([
+            "{ 0.0, 0.485, 0.874 }",
+            "{ 0.0, 0.485, -0.874 }",
+            "{ 0.874, 0.485, 0.0 }",
+            "{ -0.874, 0.485, 0.0 }",
+        ]);
+        assert!(data_alone(&cut).is_clean());
+        let cut2 = slide_with_normals([
+            "{ 0, 0.48, 0.87 }",
+            "{ 0, 0.48, -0.87 }",
+            "{ 0.87, 0.48, 0 }",
+            "{ -0.87, 0.48, 0 }",
+        ]);
+        assert!(data_alone(&cut2).is_clean());
+    }
+
+    #[test]
+    fn data_alone_names_a_face_wound_inward_with_its_outward_order() {
+        // F4 written clockwise; its normal written for the written order (pointing up) is right
+        // for that order, so only the order is named.
+        let text = slide_with_normals([
+            "{ 0.0, 0.49, 0.87 }",
+            "{ 0.0, 0.49, -0.87 }",
+            "{ 0.87, 0.49, 0.0 }",
+            "{ -0.87, 0.49, 0.0 }",
+        ])
+        .replace(
+            "| F4 { V1, V3, V2 } | { 0.0, -1.0, 0.0 }",
+            "| F4 { V1, V2, V3 } | { 0.0, 1.0, 0.0 }",
+        );
+        let v = data_alone(&text);
+        assert_eq!(items(&v), vec![(line_of(&text, "F4 {"), "F4 order")], "{:#?}", v.findings);
+        assert_eq!(v.findings[0].derived, "{ V1, V3, V2 }");
+        // Turned inside out: every face is named.
+        let mut inside_out = String::new();
+        for l in LECTURE_SLIDE.lines() {
+            let l = l
+                .replace("{ V0, V3, V1 }", "{ V0, V1, V3 }")
+                .replace("{ V0, V2, V4 }", "{ V0, V4, V2 }")
+                .replace("{ V0, V1, V2 }", "{ V0, V2, V1 }")
+                .replace("{ V0, V4, V3 }", "{ V0, V3, V4 }")
+                .replace("{ V1, V3, V2 }", "{ V1, V2, V3 }")
+                .replace("{ V4, V2, V3 }", "{ V4, V3, V2 }");
+            inside_out.push_str(&l);
+            inside_out.push('\n');
+        }
+        let v = data_alone(&inside_out);
+        let orders: Vec<&str> = v
+            .findings
+            .iter()
+            .filter(|f| f.item.ends_with("order"))
+            .map(|f| f.item.as_str())
+            .collect();
+        assert_eq!(
+            orders,
+            ["F0 order", "F1 order", "F2 order", "F3 order", "F4 order", "F5 order"]
+        );
+    }
+
+    #[test]
+    fn outwardness_is_judged_per_face_far_from_the_origin_and_when_not_convex() {
+        let far: Vec<Vec3> = pyramid_vertices().iter().map(|&p| p + Vec3::splat(1000.0)).collect();
+        let mut faces = PYRAMID_FACES.to_vec();
+        faces[2] = [0, 2, 1];
+        let out = face_outwardness(&far, &faces);
+        assert_eq!(
+            out,
+            vec![Some(true), Some(true), Some(false), Some(true), Some(true), Some(true)]
+        );
+        // A non-convex closed model: the pyramid with its base dented up to V5 (0, -0.3, 0).
+        let mut dented = pyramid_vertices();
+        dented.push(Vec3::new(0.0, -0.3, 0.0));
+        let mut faces = PYRAMID_FACES[..4].to_vec();
+        faces.extend([[1, 3, 5], [4, 2, 5], [2, 1, 5], [3, 4, 5]]);
+        // (V3 − V1) × (V5 − V1) = (0, -2, -1): down and away from the dent, outward. A centroid
+        // test gets this face wrong: its normal points towards the model's centroid.
+        let centroid = dented.iter().copied().sum::<Vec3>() / 6.0;
+        let face_centroid = (dented[1] + dented[3] + dented[5]) / 3.0;
+        assert!((face_centroid - centroid).dot(Vec3::new(0.0, -2.0, -1.0)) < 0.0);
+        assert_eq!(face_outwardness(&dented, &faces), vec![Some(true); 8]);
+        faces[5] = [4, 5, 2];
+        let mut expected = vec![Some(true); 8];
+        expected[5] = Some(false);
+        assert_eq!(face_outwardness(&dented, &faces), expected);
+        // An open model cannot be judged.
+        assert_eq!(face_outwardness(&pyramid_vertices(), &PYRAMID_FACES[..4]), vec![None; 4]);
+        // Degenerate and out-of-range faces are not judged and do not panic.
+        let out = face_outwardness(&pyramid_vertices(), &[[0, 0, 1], [0, 1, 9]]);
+        assert_eq!(out, vec![None, None]);
+    }
+
+    #[test]
+    fn data_alone_on_an_open_model_says_why_order_is_not_judged() {
+        let text = "V0 (0,0,0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 { V0, V1, V2 } { 0.0, 0.0, 1.0 }";
+        let v = data_alone(text);
+        assert!(v.is_clean(), "{:#?}", v.findings);
+        assert_eq!(v.notes.len(), 1);
+        assert!(v.notes[0].en.starts_with("F0: the model is not closed"), "{}", v.notes[0]);
+    }
+
+    proptest! {
+        #![proptest_config(cg_testkit::prop::config(128, 0x5eed_0006))]
+
+        #[test]
+        fn checking_any_text_never_panics(text in "[VF0-9 (){},.|\\-−/\n]{0,200}") {
+            let (report, _) = parse_report(&text);
+            let v = verify(&report, &derived());
+            prop_assert!(v.findings.windows(2).all(|w| w[0].line <= w[1].line));
+            if let Ok(p) = polygon_from_text(&text, Text::default()) {
+                let _ = verify_data(&p, &report);
+            }
+        }
+    }
+}
