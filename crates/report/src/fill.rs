@@ -149,7 +149,7 @@ pub fn values(
                 .iter()
                 .map(|&view| match format {
                     Format::Markdown => {
-                        format!("![{}]({})", view.title(lang), files::view_svg(view))
+                        format!("![{}]({})", view.title().get(lang), files::view_svg(view))
                     }
                     Format::Latex => figures::tikz(&figures::layout(p, view), lang),
                 })
