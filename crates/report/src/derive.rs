@@ -1454,6 +1454,349 @@ fn texture_part(spec: &cg_a4::Spec, imp: &cg_a4::Impl) -> Part<TextureData> {
 mod tests {
     use super::*;
 
+    use cg_core::glam::DVec3;
+    use cg_harness::{StudentNumber, TableVersion};
+
+    // --- the pristine stubs --------------------------------------------------------------
+
+    #[test]
+    fn the_stubs_leave_every_part_missing_with_its_task_and_nothing_panics() {
+        for number in ["12345678", "20260002", "24000007"] {
+            let student: StudentNumber = number.parse().unwrap();
+            let assignment = Assignment::for_student(&student, TableVersion::V1);
+            let (derived, missing) = derive(&assignment, &Impls::exercises());
+            assert_eq!(derived.student.as_deref(), Some(number));
+            assert!(derived.polygon.is_none() && derived.camera.is_none());
+            assert!(derived.animation.is_none() && derived.texture.is_none());
+            let tasks: Vec<&str> = missing.iter().map(|m| m.task.as_str()).collect();
+            // Vertices are todo!(), camera() does nothing, display() draws nothing,
+            // tex_range() is todo!().
+            assert_eq!(tasks, ["a1.t1", "a2.t2", "a3.t2", "a4.t1"], "{missing:?}");
+            for m in &missing {
+                assert!(m.message(Lang::En).starts_with(&format!("{}: ", m.task)));
+                assert!(!m.why.ja.is_empty() && !m.why.en.is_empty(), "{m:?}");
+            }
+            assert!(missing[0].why.en.contains("not written yet"), "{:?}", missing[0]);
+            assert!(missing[0].why.ja.contains("まだ書かれていません"), "{:?}", missing[0]);
+        }
+    }
+
+    // --- a1 ------------------------------------------------------------------------------
+
+    /// A square pyramid (radius 1, height 1.5), bottom up, ring counter-clockwise from above.
+    fn pyramid_spec() -> cg_a1::Spec {
+        cg_a1::Spec {
+            shape: cg_a1::Shape::Pyramid { sides: 4, radius: 1.0, height: 1.5 },
+            numbering: cg_a1::Numbering { order: cg_a1::Order::BottomUp, ring: cg_a1::Turn::Ccw },
+            placement: cg_a1::Placement { x: 1.0, y: 0.0, z: -1.5, angle_deg: 30.0 },
+        }
+    }
+
+    fn pyramid_vertices(_: &cg_a1::Spec) -> Vec<Vec3> {
+        vec![
+            Vec3::new(1.0, 0.0, 0.0),
+            Vec3::new(0.0, 0.0, -1.0),
+            Vec3::new(-1.0, 0.0, 0.0),
+            Vec3::new(0.0, 0.0, 1.0),
+            Vec3::new(0.0, 1.5, 0.0),
+        ]
+    }
+
+    fn pyramid_faces(_: &cg_a1::Spec) -> Vec<[u32; 3]> {
+        vec![[0, 2, 1], [0, 3, 2], [0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]]
+    }
+
+    /// The student's own normals: all +Y (wrong, but theirs: the report shows them as given).
+    fn up_normals(_: &cg_a1::Spec) -> Vec<Vec3> {
+        vec![Vec3::Y; 6]
+    }
+
+    fn placement(spec: &cg_a1::Spec) -> MatrixProduct {
+        let p = spec.placement;
+        MatrixProduct::identity()
+            .then(Factor::translate(Vec3::new(p.x, p.y, p.z)))
+            .then(Factor::rotate_y_deg(p.angle_deg))
+    }
+
+    #[allow(clippy::todo)]
+    fn normals_todo(_: &cg_a1::Spec) -> Vec<Vec3> {
+        todo!("a1.t3: compute each face's unit normal")
+    }
+
+    #[allow(clippy::panic)]
+    fn transform_panics(_: &cg_a1::Spec) -> MatrixProduct {
+        panic!("index out of bounds")
+    }
+
+    #[test]
+    fn a_hand_written_pyramid_derives_the_f64_oracles_normals() {
+        let imp = cg_a1::Impl {
+            vertices: pyramid_vertices,
+            faces: pyramid_faces,
+            face_normals: up_normals,
+            model_transform: placement,
+        };
+        let spec = pyramid_spec();
+        let p = polygon(&spec, &imp).unwrap();
+        assert_eq!(p.name, Text::new("四角すい", "square pyramid"));
+        assert_eq!(p.vertices, pyramid_vertices(&spec));
+        assert_eq!(p.faces, pyramid_faces(&spec));
+        assert_eq!(p.student_normals, Some(vec![Vec3::Y; 6]));
+        assert_eq!(p.transform, Some(placement(&spec)));
+        // The oracle: (Vb − Va) × (Vc − Va) / |…| in f64 from the numbers written above.
+        let v = [
+            DVec3::new(1.0, 0.0, 0.0),
+            DVec3::new(0.0, 0.0, -1.0),
+            DVec3::new(-1.0, 0.0, 0.0),
+            DVec3::new(0.0, 0.0, 1.0),
+            DVec3::new(0.0, 1.5, 0.0),
+        ];
+        for (k, f) in pyramid_faces(&spec).iter().enumerate() {
+            let (a, b, c) = (v[f[0] as usize], v[f[1] as usize], v[f[2] as usize]);
+            let n = (b - a).cross(c - a);
+            let n = n / n.length();
+            let got = p.derived_normals[k].unwrap().as_dvec3();
+            assert!((got - n).length() < 1e-6, "F{k}: {got} vs {n}");
+        }
+        // By hand: the bottom faces down; the side over V0–V1 faces (+x, −z) and up:
+        // (V1 − V0) × (V4 − V0) = (−1, 0, −1) × (−1, 1.5, 0) = (1.5, 1, −1.5).
+        assert!(p.derived_normals[0].unwrap().abs_diff_eq(Vec3::NEG_Y, 1e-6));
+        let side = Vec3::new(1.5, 1.0, -1.5) / (1.5f32 * 1.5 * 2.0 + 1.0).sqrt();
+        assert!(p.derived_normals[2].unwrap().abs_diff_eq(side, 1e-6));
+    }
+
+    #[test]
+    fn a_missing_normal_or_transform_keeps_the_tables() {
+        let imp = cg_a1::Impl {
+            vertices: pyramid_vertices,
+            faces: pyramid_faces,
+            face_normals: normals_todo,
+            model_transform: transform_panics,
+        };
+        let (result, notes) = polygon_part(&pyramid_spec(), &imp);
+        let p = result.unwrap();
+        assert_eq!(p.vertices.len(), 5);
+        assert_eq!(p.faces.len(), 6);
+        assert!(p.derived_normals.iter().all(Option::is_some));
+        assert_eq!((p.student_normals, p.transform), (None, None));
+        let tasks: Vec<&str> = notes.iter().map(|m| m.task.as_str()).collect();
+        assert_eq!(tasks, ["a1.t3", "a1.t4"]);
+        assert!(notes[0].why.en.contains("not written yet"), "{:?}", notes[0]);
+        assert!(notes[1].why.en.contains("panicked: index out of bounds"), "{:?}", notes[1]);
+    }
+
+    fn one_normal(_: &cg_a1::Spec) -> Vec<Vec3> {
+        vec![Vec3::Y]
+    }
+
+    fn nan_vertices(_: &cg_a1::Spec) -> Vec<Vec3> {
+        vec![Vec3::ZERO, Vec3::new(f32::NAN, 0.0, 0.0), Vec3::X]
+    }
+
+    #[test]
+    fn unusable_data_is_named() {
+        let imp = cg_a1::Impl {
+            vertices: pyramid_vertices,
+            faces: pyramid_faces,
+            face_normals: one_normal,
+            model_transform: placement,
+        };
+        let (result, notes) = polygon_part(&pyramid_spec(), &imp);
+        assert_eq!(result.unwrap().student_normals, None);
+        assert_eq!(notes[0].task, "a1.t3");
+        assert!(notes[0].why.en.contains("1 normals for 6 faces"), "{:?}", notes[0]);
+        let imp = cg_a1::Impl { vertices: nan_vertices, ..imp };
+        let m = polygon(&pyramid_spec(), &imp).unwrap_err();
+        assert_eq!(m.task, "a1.t1");
+        assert!(m.why.en.contains("V1"), "{m:?}");
+    }
+
+    // --- naming the variables -------------------------------------------------------------
+
+    #[test]
+    fn symbols_name_variables_keep_constants_and_evaluate_to_the_numbers() {
+        let vars = [
+            Var { name: "camera_pitch".into(), value: -23.0 },
+            Var { name: "camera_distance".into(), value: 13.5 },
+        ];
+        let record = |pitch: f32, distance: f32| {
+            let mut gl = Gl::new();
+            gl.translate(0.0, 0.0, -distance);
+            gl.rotate(-pitch, 1.0, 0.0, 0.0);
+            gl.rotate(pitch.to_radians(), 0.0, 1.0, 0.0); // radians: matches no variable
+            gl.translate(0.0, 1.0, 0.0);
+            gl.model_view().clone()
+        };
+        let probe = record(-23.0, 13.5);
+        let at = record(-30.0, 15.0);
+        let (s, names) = symbolize(&probe, &at, &vars);
+        assert_eq!(
+            s.symbolic(),
+            "T(0, 0, -camera_distance) · Rx(-camera_pitch) · Ry(-0.5236°) · T(0, 1, 0)"
+        );
+        assert_eq!(s.matrix().unwrap(), at.matrix().unwrap());
+        assert_eq!(
+            names,
+            vec![
+                ("camera_distance".to_owned(), Some("camera_distance".to_owned())),
+                ("camera_pitch".to_owned(), Some("camera_pitch".to_owned()))
+            ]
+        );
+        // An angle a whole turn off is still the variable.
+        let turned = Param::num(337.0);
+        assert_eq!(match_var(turned.value, &vars, true).as_deref(), Some("camera_pitch"));
+        assert_eq!(match_var(turned.value, &vars, false), None);
+        // Not the same calls: the product stays as recorded.
+        let other = MatrixProduct::identity().then(Factor::rotate_x_deg(30.0));
+        assert_eq!(symbolize(&probe, &other, &vars).0, other);
+    }
+
+    // --- a4 ------------------------------------------------------------------------------
+
+    fn range_quarter(_: &cg_a4::Spec) -> cg_a4::TexRange {
+        cg_a4::TexRange { s_min: 0.25, s_max: 0.5, t_min: 0.375, t_max: 0.625 }
+    }
+
+    /// Each vertex's coordinate is its own grid numbers: one coordinate per vertex.
+    fn by_vertex(_: &cg_a4::Spec, i: u32, j: u32) -> [Vec2; 4] {
+        cg_a4::CORNER_STEPS.map(|(di, dj)| Vec2::new((i + di) as f32, (j + dj) as f32))
+    }
+
+    /// Each square's corners get (10·i + j, corner): every square gives its own.
+    fn by_square(_: &cg_a4::Spec, i: u32, j: u32) -> [Vec2; 4] {
+        [0.0, 1.0, 2.0, 3.0].map(|c| Vec2::new((10 * i + j) as f32, c))
+    }
+
+    fn sampler() -> cg_core::texture::Sampler {
+        cg_core::texture::Sampler::default()
+    }
+
+    fn a4_spec() -> cg_a4::Spec {
+        // C4–D5, upright, no repeat.
+        let region = cg_a4::Region { column: 2, row: 3, columns: 2, rows: 2 };
+        cg_a4::Spec { region, rotation_deg: 0, mirrored: false, repeat: 1 }
+    }
+
+    #[test]
+    fn texture_rows_list_every_vertex_with_the_coordinates_of_its_squares() {
+        let spec = a4_spec();
+        let imp = cg_a4::Impl { tex_range: range_quarter, tex_coords: by_vertex, sampler };
+        let t = texture(&spec, &imp).unwrap();
+        assert_eq!(t.rows.len(), 121);
+        assert_eq!(t.region, (Vec2::new(0.25, 0.375), Vec2::new(0.5, 0.625)));
+        for (k, row) in t.rows.iter().enumerate() {
+            // j-major: (0, 0), (1, 0), …, (10, 0), (0, 1), …
+            assert_eq!((row.i, row.j), (k as u32 % 11, k as u32 / 11));
+            assert_eq!(row.position, Vec3::new(row.i as f32 - 5.0, 0.0, row.j as f32 - 5.0));
+            assert_eq!(row.tex, vec![Vec2::new(row.i as f32, row.j as f32)], "{row:?}");
+        }
+        assert_eq!(t.image.width, cg_a4::IMAGE_PIXELS);
+
+        let imp = cg_a4::Impl { tex_coords: by_square, ..imp };
+        let t = texture(&spec, &imp).unwrap();
+        let row = |i: u32, j: u32| &t.rows[(j * 11 + i) as usize];
+        // Vertex (5, 5) is corner 2 of square (4, 4), corner 1 of (5, 4), corner 3 of (4, 5)
+        // and corner 0 of (5, 5) — in drawing order (j outer, i inner).
+        assert_eq!(
+            row(5, 5).tex,
+            vec![
+                Vec2::new(44.0, 2.0),
+                Vec2::new(54.0, 1.0),
+                Vec2::new(45.0, 3.0),
+                Vec2::new(55.0, 0.0)
+            ]
+        );
+        assert_eq!(row(0, 0).tex, vec![Vec2::new(0.0, 0.0)]);
+        assert_eq!(row(10, 10).tex, vec![Vec2::new(99.0, 2.0)]);
+        // An edge vertex: (10, 3) is corner 2 of square (9, 2) and corner 3 of (9, 3).
+        assert_eq!(row(10, 3).tex, vec![Vec2::new(92.0, 2.0), Vec2::new(93.0, 3.0)]);
+    }
+
+    #[test]
+    fn the_formula_reads_the_spec() {
+        // Upright C4–D5 (s 0.25…0.5, t 0.375…0.625) over the 10 squares: s grows with i, t
+        // shrinks with j (the image's top is away from the camera).
+        let f = texture_formula(&a4_spec());
+        assert!(f.en.contains("s = 0.25 + 0.025·i, t = 0.625 − 0.025·j"), "{}", f.en);
+        assert!(f.en.contains("0.25 ≤ s ≤ 0.5, 0.375 ≤ t ≤ 0.625"), "{}", f.en);
+        assert!(f.ja.contains("s = 0.25 + 0.025·i、t = 0.625 − 0.025·j"), "{}", f.ja);
+        // A quarter turn counter-clockwise, 2 × 2 blocks of 5: the region's top points to −x,
+        // so s follows j backwards... worked by hand: corner (p, q) shows region point
+        // (1 − q, 1 − p): s = 0.5 − 0.25·q, t = 0.625 − 0.25·p.
+        let spec = cg_a4::Spec { rotation_deg: 90, repeat: 2, ..a4_spec() };
+        let f = texture_formula(&spec);
+        assert!(f.en.contains("s = 0.5 − 0.25·q, t = 0.625 − 0.25·p"), "{}", f.en);
+        assert!(f.en.contains("s = 0.5 − 0.05·(j mod 5), t = 0.625 − 0.05·(i mod 5)"), "{}", f.en);
+    }
+
+    #[allow(clippy::todo)]
+    fn coords_todo(_: &cg_a4::Spec, _: u32, _: u32) -> [Vec2; 4] {
+        todo!("a4.t2: the texture coordinates")
+    }
+
+    #[test]
+    fn a_stub_coordinate_function_is_missing() {
+        let imp = cg_a4::Impl { tex_range: range_quarter, tex_coords: coords_todo, sampler };
+        let m = texture(&a4_spec(), &imp).unwrap_err();
+        assert_eq!(m.task, "a4.t2");
+    }
+
+    // --- a3 and a2 -------------------------------------------------------------------------
+
+    #[test]
+    fn the_camera_comes_off_the_front_of_a_draw() {
+        let mut gl = Gl::new();
+        gl.translate(0.0, 0.0, -15.0);
+        gl.rotate(30.0, 1.0, 0.0, 0.0);
+        gl.translate(1.0, 2.0, 3.0);
+        gl.draw("a", &cg_core::shapes::lecture_pyramid());
+        assert_eq!(model_of(&gl.draws()[0]).numeric(), "T(1, 2, 3)");
+        // No camera in front: V⁻¹ times the whole product, still model → world.
+        let mut gl = Gl::new();
+        gl.translate(1.0, 2.0, 3.0);
+        gl.draw("a", &cg_core::shapes::lecture_pyramid());
+        let m = model_of(&gl.draws()[0]);
+        assert!(m.numeric().starts_with("V⁻¹ · T(1, 2, 3)"), "{}", m.numeric());
+        assert!(name_matches("物体 2", "object 2") && name_matches("Object_2", "object 2"));
+        assert!(!name_matches("object 12", "object 2"));
+    }
+
+    #[test]
+    fn stated_times_are_whole_frames_and_the_motion_shows() {
+        for number in ["20260002", "20260005", "20260013", "20260023"] {
+            let student: StudentNumber = number.parse().unwrap();
+            let spec = Assignment::for_student(&student, TableVersion::V1).a3;
+            let times = animation_times(&spec);
+            assert_eq!(times.len(), 3, "{times:?}");
+            assert_eq!(times[0], 0.0);
+            for &t in &times[1..] {
+                assert!(t > 0.0 && (t * 4.0).fract() == 0.0, "{t}");
+                for i in 0..spec.objects.len() {
+                    let d = pose_distance(
+                        &cg_a3::expected_model(&spec, i, frame_of(t)),
+                        &cg_a3::expected_model(&spec, i, 0),
+                    );
+                    assert!(d > 0.1, "{number}: object {i} barely moves by t = {t}: {d}");
+                }
+            }
+            assert!(animation_probe(&spec).is_some(), "{number}");
+        }
+    }
+
+    #[test]
+    fn camera_drags_state_each_state() {
+        let student: StudentNumber = "12345678".parse().unwrap();
+        let spec = Assignment::for_student(&student, TableVersion::V1).a2;
+        let drags = camera_drags(&spec);
+        assert_eq!(drags[0], ("a2.view.start".to_owned(), Vec::new()));
+        assert_eq!(drags.len(), if spec.pan.is_some() { 4 } else { 3 });
+        // 40 px along yaw's drag then 20 px along pitch's, 10 px per motion() call.
+        let rotate = &drags[1].1;
+        assert_eq!(rotate.len(), 6);
+        let total = |f: fn(&Drag) -> f32| rotate.iter().map(f).sum::<f32>();
+        assert_eq!((total(|d| d.dx), total(|d| d.dy)), (40.0, 20.0));
+    }
+
     #[test]
     fn data_alone_derives_the_lecture_pyramids_normals() {
         let v = vec![
