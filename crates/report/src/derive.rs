@@ -1299,15 +1299,24 @@ fn texture_rows(coords: &cg_a4::Coordinates) -> Vec<TexRow> {
     rows
 }
 
-/// `a + b·x` as text: `0.25 + 0.025·i`, `0.625 − 0.025·j`, `0.5` (no term for `b = 0`).
+/// `a + b·x + …` as text: `0.25 + 0.025·i`, `0.625 − 0.025·j`, `0.025·i` (no constant 0),
+/// `0.5` (no term with a zero factor).
 fn linear_text(a: f32, terms: &[(f32, &str)]) -> String {
-    let mut out = format_number(a);
+    let mut out = String::new();
+    if a != 0.0 || terms.iter().all(|t| t.0 == 0.0) {
+        out = format_number(a);
+    }
     for &(b, x) in terms {
         if b == 0.0 {
             continue;
         }
-        let sign = if b < 0.0 { "−" } else { "+" };
-        out.push_str(&format!(" {sign} {}·{x}", format_number(b.abs())));
+        let magnitude = format_number(b.abs());
+        out = match (out.is_empty(), b < 0.0) {
+            (true, false) => format!("{magnitude}·{x}"),
+            (true, true) => format!("−{magnitude}·{x}"),
+            (false, false) => format!("{out} + {magnitude}·{x}"),
+            (false, true) => format!("{out} − {magnitude}·{x}"),
+        };
     }
     out
 }
@@ -1727,6 +1736,14 @@ mod tests {
         let f = texture_formula(&spec);
         assert!(f.en.contains("s = 0.5 − 0.25·q, t = 0.625 − 0.25·p"), "{}", f.en);
         assert!(f.en.contains("s = 0.5 − 0.05·(j mod 5), t = 0.625 − 0.05·(i mod 5)"), "{}", f.en);
+        // G7–H8 (s 0.75…1, t 0…0.25) turned 90° clockwise: the region's top points to +x (t
+        // grows with i), its right towards the camera (s grows with j); no constant 0.
+        let region = cg_a4::Region { column: 6, row: 6, columns: 2, rows: 2 };
+        let spec = cg_a4::Spec { region, rotation_deg: 270, ..a4_spec() };
+        let f = texture_formula(&spec);
+        assert!(f.en.contains("s = 0.75 + 0.025·j, t = 0.025·i"), "{}", f.en);
+        assert_eq!(linear_text(0.0, &[(-0.5, "p"), (0.0, "q")]), "−0.5·p");
+        assert_eq!(linear_text(0.0, &[(0.0, "p")]), "0");
     }
 
     #[allow(clippy::todo)]
