@@ -133,12 +133,12 @@ fn a1_normals_are_unit_outward_and_the_students_own() {
 /// `per_px` times its `dx` or `dy`; yaw wraps into [0, 360), the others are clamped.
 fn spec_motion(spec: &cg_a2::Spec, s: &mut CameraState, d: &Drag) {
     let change = |op: &Operation| {
-        (d.button == op.gesture.button && d.shift == op.gesture.shift).then(|| {
-            op.per_px
-                * match op.axis {
-                    DragAxis::Horizontal => d.dx,
-                    DragAxis::Vertical => d.dy,
-                }
+        if d.button != op.gesture.button || d.shift != op.gesture.shift {
+            return None;
+        }
+        Some(match op.axis {
+            DragAxis::Horizontal => op.per_px * d.dx,
+            DragAxis::Vertical => op.per_px * d.dy,
         })
     };
     if let Some(c) = change(&spec.yaw) {

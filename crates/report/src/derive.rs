@@ -1,7 +1,7 @@
 //! Deriving the report's data: from the student's own exercises (each assignment's `Impl` and
 //! the student's `Spec`), or from data alone (a vertex and face list).
 //!
-//! [`derive`] runs every part on its own — the polygon model (a1), the view matrix (a2), each
+//! [`derive()`] runs every part on its own — the polygon model (a1), the view matrix (a2), each
 //! animated object's model matrix (a3), the texture-coordinate table (a4) — so a part whose
 //! function is still a stub (or panics, or returns unusable data) is [`Missing`] while the
 //! others still derive. Every call of the student's code goes through
