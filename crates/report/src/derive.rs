@@ -1234,14 +1234,16 @@ fn animation_part(spec: &cg_a3::Spec, imp: &cg_a3::Impl) -> Part<AnimationData> 
         objects.push((object.name.clone(), matrices));
     }
     if objects.is_empty() {
-        let why = match notes.first() {
-            Some(m) if spec.objects.len() == 1 => m.why.clone(),
-            _ => Text::new(
+        let drew_nothing = recorded.iter().all(|(_, gl)| gl.draws().is_empty());
+        if drew_nothing || notes.is_empty() {
+            let why = Text::new(
                 "display() がまだどの物体も描いていません（物体は gl.draw(&object.name, &object.shape.mesh()) で描きます）",
                 "display() draws none of the objects yet (draw each with gl.draw(&object.name, &object.shape.mesh()))",
-            ),
-        };
-        return (Err(Missing::new("a3.t2", why)), Vec::new());
+            );
+            return (Err(Missing::new("a3.t2", why)), Vec::new());
+        }
+        let first = notes.remove(0);
+        return (Err(first), notes);
     }
     let still = objects.iter().all(|(_, ms)| {
         ms.windows(2).all(|w| {
@@ -1776,6 +1778,87 @@ mod tests {
         assert!(m.numeric().starts_with("V⁻¹ · T(1, 2, 3)"), "{}", m.numeric());
         assert!(name_matches("物体 2", "object 2") && name_matches("Object_2", "object 2"));
         assert!(!name_matches("object 12", "object 2"));
+    }
+
+    /// Object 1 spins about Y at (1, 1, 0), once in 2 s; object 2 orbits, but is never drawn.
+    fn a3_spec() -> cg_a3::Spec {
+        let object = |name: &str, motion| cg_a3::Object {
+            name: name.to_owned(),
+            shape: cg_a3::Shape::Sphere { radius: 0.3 },
+            color: [1.0; 3],
+            motion,
+        };
+        cg_a3::Spec {
+            objects: vec![
+                object(
+                    "object 1",
+                    Motion::Spin {
+                        position: [1.0, 1.0, 0.0],
+                        axis: WorldAxis::Y,
+                        turn: cg_a3::Turn::Ccw,
+                        period_s: 2.0,
+                    },
+                ),
+                object(
+                    "object 2",
+                    Motion::Orbit {
+                        center: [0.0, 1.0, 0.0],
+                        radius: 2.0,
+                        turn: cg_a3::Turn::Cw,
+                        period_s: 1.0,
+                    },
+                ),
+            ],
+            unit_s: 1.0,
+        }
+    }
+
+    fn a3_idle(_: &cg_a3::Spec, state: &mut cg_a3::State) {
+        state.frame += 1;
+        state.params[0] = (360.0 * (state.frame % 120) as f64 / 120.0) as f32;
+    }
+
+    /// The course's camera, then object 1 only, with plain glTranslatef / glRotatef numbers.
+    fn a3_display(_: &cg_a3::Spec, state: &cg_a3::State, gl: &mut Gl) {
+        gl.load_identity();
+        gl.translate(0.0, 0.0, -15.0);
+        gl.rotate(30.0, 1.0, 0.0, 0.0);
+        gl.light_position(0, [10.0, 10.0, 10.0, 1.0]);
+        gl.push_matrix();
+        gl.translate(1.0, 1.0, 0.0);
+        gl.rotate(state.params[0], 0.0, 1.0, 0.0);
+        gl.draw("Object_1", &cg_core::shapes::lecture_pyramid());
+        gl.pop_matrix();
+    }
+
+    fn no_warmup(_: &mut Gl, _: f64) {}
+
+    #[test]
+    fn an_object_not_drawn_is_left_out_and_the_others_derive() {
+        let spec = a3_spec();
+        let imp = cg_a3::Impl { warmup_display: no_warmup, idle: a3_idle, display: a3_display };
+        let (result, notes) = animation_part(&spec, &imp);
+        let data = result.unwrap();
+        assert_eq!(data.objects.len(), 1);
+        assert_eq!(notes.len(), 1);
+        assert_eq!(notes[0].task, "a3.t2");
+        assert!(notes[0].why.en.contains("\"object 2\" is not drawn"), "{:?}", notes[0]);
+        let times = animation_times(&spec);
+        let (name, matrices) = &data.objects[0];
+        assert_eq!(name, "object 1");
+        for (m, &t) in matrices.iter().zip(&times) {
+            // By hand: T(1, 1, 0) · Ry(360°·t/2), the angle in [0, 360).
+            let angle = (180.0 * t).rem_euclid(360.0) as f32;
+            let expected = Mat4::from_translation(Vec3::new(1.0, 1.0, 0.0))
+                * Mat4::from_rotation_y(angle.to_radians());
+            assert!(matrices_close(&m.numeric.matrix().unwrap(), &expected), "{}", m.numeric);
+            assert_eq!(m.symbolic.symbolic(), "T(1, 1, 0) · Ry(theta_1)");
+            assert_eq!(m.symbolic.matrix().unwrap(), m.numeric.matrix().unwrap());
+            assert_eq!(m.id, format!("a3.object1.t{}", format_number(t as f32)));
+        }
+        assert_eq!(matrices[0].variables.len(), 1);
+        assert!(matrices[0].variables[0].1.en.contains("360°·u, u = (t mod 2) / 2"));
+        assert!(data.periods.en.contains("object 1 : object 2 = 2 : 1"), "{}", data.periods);
     }
 
     #[test]
