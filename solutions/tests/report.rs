@@ -68,7 +68,8 @@ fn a_filled_report_reads_back_and_every_number_follows_from_the_data() {
             assert_eq!(parsed.faces.len(), p.faces.len(), "{student}: every face row read");
             assert_eq!(parsed.tex.len(), 121, "{student}: every grid vertex read");
             let camera = derived.camera.as_ref().unwrap().matrices.len();
-            let animation: usize = derived.animation.as_ref().unwrap().objects.iter().map(|o| o.1.len()).sum();
+            let animation: usize =
+                derived.animation.as_ref().unwrap().objects.iter().map(|o| o.1.len()).sum();
             assert_eq!(
                 parsed.matrices.len(),
                 1 + camera + animation,
@@ -76,8 +77,13 @@ fn a_filled_report_reads_back_and_every_number_follows_from_the_data() {
             );
             let v = verify::verify(&parsed, &derived);
             assert!(v.findings.is_empty(), "{student} {lang}: {:#?}", v.findings);
-            let least = p.vertices.len() * 3 + p.faces.len() * 3 + 16 * parsed.matrices.len() + 121 * 5;
-            assert!(v.checked >= least, "{student}: {} numbers checked, at least {least}", v.checked);
+            let least =
+                p.vertices.len() * 3 + p.faces.len() * 3 + 16 * parsed.matrices.len() + 121 * 5;
+            assert!(
+                v.checked >= least,
+                "{student}: {} numbers checked, at least {least}",
+                v.checked
+            );
         }
     }
 }
@@ -132,14 +138,17 @@ fn planted_mistakes_are_named_exactly_and_nothing_else() {
         let tag = format!("<!-- cg: {id} -->");
         let lines: Vec<&str> = text.lines().collect();
         let tag_at = lines.iter().position(|l| l.contains(&tag)).unwrap();
-        // The tagged matrix's first row: the first line after the tag with `&` in it.
+        // The tagged matrix's first row: after the first `\begin{pmatrix}` following the tag,
+        // up to the first `\\`; its last entry is row 1, column 4.
         let row_at = tag_at + lines[tag_at..].iter().position(|l| l.contains('&')).unwrap();
         let row = lines[row_at];
-        let last = row.split('&').next_back().unwrap();
-        let entry = last.split("\\\\").next().unwrap().trim().to_owned();
+        let begin = row.find("\\begin{pmatrix}").map_or(0, |k| k + "\\begin{pmatrix}".len());
+        let end = begin + row[begin..].find("\\\\").unwrap();
+        let at = begin + row[begin..end].rfind('&').unwrap() + 1;
+        let entry = row[at..end].trim().to_owned();
         let bumped = format!("{:.3}", entry.parse::<f64>().unwrap() + 1.0);
+        let k = at + row[at..end].find(&entry).unwrap();
         let mut edited: Vec<String> = lines.iter().map(|l| (*l).to_owned()).collect();
-        let k = edited[row_at].rfind(&entry).unwrap();
         edited[row_at].replace_range(k..k + entry.len(), &bumped);
         let text = edited.join("\n");
 
@@ -165,7 +174,10 @@ fn planted_mistakes_are_named_exactly_and_nothing_else() {
             matrix_item.is_some_and(|f| f.item.contains("row 1") && f.item.contains("column 4")),
             "{student}: {found:?}"
         );
-        assert!(found.iter().any(|(l, i)| *l == tex_line && i.starts_with("tex (3, 5)")), "{student}: {found:?}");
+        assert!(
+            found.iter().any(|(l, i)| *l == tex_line && i.starts_with("tex (3, 5)")),
+            "{student}: {found:?}"
+        );
         // Each says what it derived and how far off a number may be.
         for f in &v.findings {
             let m = f.message(Lang::En);

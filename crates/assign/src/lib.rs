@@ -226,6 +226,34 @@ pub fn write_student_file(path: &Path, record: &StudentFile) -> Result<(), Strin
     std::fs::write(path, text).map_err(|e| format!("{}: {e}", path.display()))
 }
 
+/// The student a command is about: `given` (a `--student` option) when there is one, with
+/// `table` or the newest table; else the record in `file` (`exercises/student.toml`), with
+/// `table` replacing its table when given.
+///
+/// # Errors
+/// A malformed student number, or a missing or malformed student file, as a message in `lang`.
+pub fn resolve_student(
+    given: Option<&str>,
+    table: Option<TableVersion>,
+    file: &Path,
+    lang: Lang,
+) -> Result<StudentFile, String> {
+    match given {
+        Some(n) => {
+            let student: StudentNumber =
+                n.parse().map_err(|e: cg_harness::variant::StudentNumberError| e.message(lang))?;
+            Ok(StudentFile { student, table: table.unwrap_or(TableVersion::LATEST) })
+        }
+        None => {
+            let mut record = read_student_file(file).map_err(|e| e.message(lang))?;
+            if let Some(t) = table {
+                record.table = t;
+            }
+            Ok(record)
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -266,33 +294,5 @@ mod tests {
         let text = one.describe(Lang::Ja, None);
         assert!(text.starts_with("学生番号: 12345678"), "{text}");
         assert_eq!(one.to_json()["student"], "12345678");
-    }
-}
-
-/// The student a command is about: `given` (a `--student` option) when there is one, with
-/// `table` or the newest table; else the record in `file` (`exercises/student.toml`), with
-/// `table` replacing its table when given.
-///
-/// # Errors
-/// A malformed student number, or a missing or malformed student file, as a message in `lang`.
-pub fn resolve_student(
-    given: Option<&str>,
-    table: Option<TableVersion>,
-    file: &Path,
-    lang: Lang,
-) -> Result<StudentFile, String> {
-    match given {
-        Some(n) => {
-            let student: StudentNumber =
-                n.parse().map_err(|e: cg_harness::variant::StudentNumberError| e.message(lang))?;
-            Ok(StudentFile { student, table: table.unwrap_or(TableVersion::LATEST) })
-        }
-        None => {
-            let mut record = read_student_file(file).map_err(|e| e.message(lang))?;
-            if let Some(t) = table {
-                record.table = t;
-            }
-            Ok(record)
-        }
     }
 }

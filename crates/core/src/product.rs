@@ -156,6 +156,43 @@ fn latex_escape(s: &str) -> String {
     out
 }
 
+/// The Greek letters a symbol may be named after (`theta` → `\theta`).
+const GREEK: [&str; 12] = [
+    "alpha", "beta", "gamma", "delta", "theta", "phi", "psi", "omega", "lambda", "mu", "rho", "tau",
+];
+
+/// A symbol in LaTeX math: Greek names as letters (`theta` → `\theta`, `theta_1` →
+/// `\theta_{1}`), one-letter names with a short index as they are (`x_n` → `x_{n}`), longer
+/// names upright-italic as one word (`camera_pitch` → `\mathit{camera\_pitch}`), so TeX does
+/// not set them as a product of letters. A leading `-` stays a sign.
+fn latex_symbol(s: &str) -> String {
+    let (sign, body) = s.strip_prefix('-').map_or(("", s), |b| ("-", b));
+    let letter = |name: &str| {
+        if GREEK.contains(&name) {
+            Some(format!("\\{name}"))
+        } else if name.chars().count() == 1 && name.chars().all(|c| c.is_ascii_alphabetic()) {
+            Some(name.to_owned())
+        } else {
+            None
+        }
+    };
+    let short_index =
+        |t: &str| !t.is_empty() && t.len() <= 2 && t.chars().all(|c| c.is_ascii_alphanumeric());
+    let out = match body.split_once('_') {
+        _ if letter(body).is_some() => letter(body).unwrap_or_default(),
+        Some((head, tail)) if short_index(tail) && letter(head).is_some() => {
+            format!("{}_{{{tail}}}", letter(head).unwrap_or_default())
+        }
+        Some((head, tail))
+            if GREEK.contains(&head) && tail.chars().all(|c| c.is_ascii_alphanumeric()) =>
+        {
+            format!("\\{head}_{{\\mathrm{{{tail}}}}}")
+        }
+        _ => format!("\\mathit{{{}}}", latex_escape(body)),
+    };
+    format!("{sign}{out}")
+}
+
 impl Factor {
     /// T(v), glTranslatef(v.x, v.y, v.z), with plain numbers.
     #[must_use]
@@ -328,13 +365,13 @@ impl Factor {
         }
     }
 
-    /// The factor in LaTeX: a `pmatrix` with symbolic entries (`\cos(-camera\_pitch)`) where a
+    /// The factor in LaTeX: a `pmatrix` with symbolic entries (`\cos(-\mathit{camera\_pitch})`) where a
     /// parameter has a symbol and `symbolic` is set, numbers elsewhere. A rotation about a general
     /// axis by a symbolic angle has no short closed form and prints as `R_{(x, y, z)}(θ)`.
     fn latex(&self, symbolic: bool) -> Result<String, TransformError> {
         let mut rows = rows_of(self.matrix()?, latex_number);
         let sym = |p: &Param| match &p.symbol {
-            Some(s) if symbolic => Some(latex_escape(s)),
+            Some(s) if symbolic => Some(latex_symbol(s)),
             _ => None,
         };
         match self {
@@ -526,7 +563,7 @@ impl MatrixProduct {
 
     /// The product in LaTeX, each factor as a `pmatrix` in program order (juxtaposed, as in the
     /// lecture's slides), one per line. With `symbolic`, parameters with a symbol appear as
-    /// `\cos(-camera\_pitch)`, `-\sin(…)`, `-camera\_distance` (`_` and other specials escaped);
+    /// `\cos(-\mathit{camera\_pitch})`, `-\sin(…)`, `-\mathit{camera\_distance}` (`_` and other specials escaped);
     /// a rotation about a general axis by a symbolic angle appears as `R_{(x, y, z)}(θ)`.
     /// Without `symbolic`, every factor is numeric and the last line is `= ` and the product's
     /// `pmatrix`. Meant for a math environment (`$$ … $$`, `\[ … \]`).
@@ -550,5 +587,24 @@ impl fmt::Display for MatrixProduct {
     /// The numeric form, [`MatrixProduct::numeric`].
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.numeric())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn symbols_print_as_math_names() {
+        assert_eq!(latex_symbol("theta"), "\\theta");
+        assert_eq!(latex_symbol("-theta_1"), "-\\theta_{1}");
+        assert_eq!(latex_symbol("x_n"), "x_{n}");
+        assert_eq!(latex_symbol("t"), "t");
+        assert_eq!(latex_symbol("theta_cycle"), "\\theta_{\\mathrm{cycle}}");
+        assert_eq!(latex_symbol("-camera_pitch"), "-\\mathit{camera\\_pitch}");
+        assert_eq!(latex_symbol("thetas_longname"), "\\mathit{thetas\\_longname}");
+        let p = MatrixProduct::identity()
+            .then(Factor::rotate(Axis::X, Param::sym("camera_pitch", 30.0)));
+        assert!(p.latex(true).unwrap().contains("\\cos(\\mathit{camera\\_pitch})"));
     }
 }

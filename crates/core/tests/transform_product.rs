@@ -313,12 +313,13 @@ T(0, 0, -15)         Rx(30°)
 
 #[test]
 fn latex_matches_the_lecture_slide() {
-    // The slide 視点操作の拡張: T(0, 0, -camera_distance) · Rx(-camera_pitch).
+    // The slide 視点操作の拡張: T(0, 0, -camera_distance) · Rx(-camera_pitch); a name of
+    // several letters is one italic word (\mathit), not a product of letters.
     let p = OrbitCamera::course_sample().view_product().simplified();
     let want = concat!(
-        r"\begin{pmatrix} 1 & 0 & 0 & 0 \\ 0 & 1 & 0 & 0 \\ 0 & 0 & 1 & -camera\_distance \\ 0 & 0 & 0 & 1 \end{pmatrix}",
+        r"\begin{pmatrix} 1 & 0 & 0 & 0 \\ 0 & 1 & 0 & 0 \\ 0 & 0 & 1 & -\mathit{camera\_distance} \\ 0 & 0 & 0 & 1 \end{pmatrix}",
         "\n",
-        r"\begin{pmatrix} 1 & 0 & 0 & 0 \\ 0 & \cos(-camera\_pitch) & -\sin(-camera\_pitch) & 0 \\ 0 & \sin(-camera\_pitch) & \cos(-camera\_pitch) & 0 \\ 0 & 0 & 0 & 1 \end{pmatrix}",
+        r"\begin{pmatrix} 1 & 0 & 0 & 0 \\ 0 & \cos(-\mathit{camera\_pitch}) & -\sin(-\mathit{camera\_pitch}) & 0 \\ 0 & \sin(-\mathit{camera\_pitch}) & \cos(-\mathit{camera\_pitch}) & 0 \\ 0 & 0 & 0 & 1 \end{pmatrix}",
     );
     assert_eq!(p.latex(true).unwrap(), want);
 
@@ -339,7 +340,7 @@ fn latex_matches_the_lecture_slide() {
     let p = MatrixProduct::identity().then(Factor::rotate(Axis::Y, Param::sym("theta_cycle", 0.0)));
     assert_eq!(
         p.latex(true).unwrap(),
-        r"\begin{pmatrix} \cos(theta\_cycle) & 0 & \sin(theta\_cycle) & 0 \\ 0 & 1 & 0 & 0 \\ -\sin(theta\_cycle) & 0 & \cos(theta\_cycle) & 0 \\ 0 & 0 & 0 & 1 \end{pmatrix}"
+        r"\begin{pmatrix} \cos(\theta_{\mathrm{cycle}}) & 0 & \sin(\theta_{\mathrm{cycle}}) & 0 \\ 0 & 1 & 0 & 0 \\ -\sin(\theta_{\mathrm{cycle}}) & 0 & \cos(\theta_{\mathrm{cycle}}) & 0 \\ 0 & 0 & 0 & 1 \end{pmatrix}"
     );
 }
 

@@ -51,18 +51,6 @@ pub fn tidy_f32_numbers(value: &mut serde_json::Value) {
 pub use text::Text;
 pub use variant::{StudentNumber, TableVersion, VariantRng};
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn f32_numbers_print_as_their_shortest_decimal() {
-        let mut v = serde_json::json!({"a": f64::from(0.05f32), "b": [f64::from(-0.02f32), 1.5, 3], "c": 0.1f64, "d": "x"});
-        tidy_f32_numbers(&mut v);
-        assert_eq!(v.to_string(), r#"{"a":0.05,"b":[-0.02,1.5,3],"c":0.1,"d":"x"}"#);
-    }
-}
-
 /// A path inside the kit: `default` relative to the current folder when it exists there (the
 /// kit's root, where the README says to run the commands), else relative to the root of the
 /// kit this program was built from. `given` (a command-line option) wins.
@@ -78,4 +66,16 @@ pub fn kit_path(given: Option<&std::path::Path>, default: &str) -> std::path::Pa
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let root = root.canonicalize().unwrap_or(root);
     root.join(default)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn f32_numbers_print_as_their_shortest_decimal() {
+        let mut v = serde_json::json!({"a": f64::from(0.05f32), "b": [f64::from(-0.02f32), 1.5, 3], "c": 0.1f64, "d": "x"});
+        tidy_f32_numbers(&mut v);
+        assert_eq!(v.to_string(), r#"{"a":0.05,"b":[-0.02,1.5,3],"c":0.1,"d":"x"}"#);
+    }
 }

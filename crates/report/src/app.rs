@@ -131,7 +131,10 @@ pub fn run(command: &Command, kit: &Kit, lang: Lang) -> Result<bool, String> {
         Command::Check(args) => {
             let outcome = check(args, kit, lang)?;
             if args.json {
-                println!("{}", serde_json::to_string_pretty(&outcome.to_json(lang)).unwrap_or_default());
+                println!(
+                    "{}",
+                    serde_json::to_string_pretty(&outcome.to_json(lang)).unwrap_or_default()
+                );
             } else {
                 print!("{}", outcome.render(lang));
             }
@@ -345,7 +348,12 @@ fn texture_image(t: &cg_core::texture::Texture) -> Option<cg_core::image::Image>
 }
 
 /// Writes the figures and the fragments of `g` into `folder`.
-fn write_derived(g: &Gathered, folder: &Path, lang: Lang, written: &mut Written) -> Result<(), String> {
+fn write_derived(
+    g: &Gathered,
+    folder: &Path,
+    lang: Lang,
+    written: &mut Written,
+) -> Result<(), String> {
     if let Some(p) = &g.derived.polygon {
         for view in VIEWS {
             let svg = figures::svg(&figures::layout(p, view), lang);
@@ -385,7 +393,11 @@ pub fn derive_to(args: &DeriveArgs, kit: &Kit, lang: Lang) -> Result<Written, St
     Ok(written)
 }
 
-fn derive_gathered(args: &DeriveArgs, kit: &Kit, lang: Lang) -> Result<(Gathered, Written), String> {
+fn derive_gathered(
+    args: &DeriveArgs,
+    kit: &Kit,
+    lang: Lang,
+) -> Result<(Gathered, Written), String> {
     let mut g = gather(&args.source, kit, lang)?;
     let mut written = Written { folder: args.output.clone(), ..Written::default() };
     if !args.no_render {
@@ -525,7 +537,12 @@ pub fn check(args: &CheckArgs, kit: &Kit, lang: Lang) -> Result<CheckOutcome, St
         let text = read_text(data, lang)?;
         let (parsed, problems) = parse::parse_report(&text);
         let verification = verify::verify_data(&polygon, &parsed);
-        return Ok(CheckOutcome { report: data.clone(), problems, verification, missing: Vec::new() });
+        return Ok(CheckOutcome {
+            report: data.clone(),
+            problems,
+            verification,
+            missing: Vec::new(),
+        });
     }
     let report = args.report.clone().unwrap_or_else(|| PathBuf::from("report").join("report.md"));
     let text = read_text(&report, lang)?;

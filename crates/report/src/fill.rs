@@ -62,12 +62,8 @@ pub struct Context {
 /// "Not derived yet", naming the tasks of `part` (`a1`, …; `a1.t4` for one task) that are
 /// missing.
 fn missing_text(ctx: &Context, part: &str, lang: Lang, format: Format) -> String {
-    let why: Vec<String> = ctx
-        .missing
-        .iter()
-        .filter(|m| m.task.starts_with(part))
-        .map(|m| m.message(lang))
-        .collect();
+    let why: Vec<String> =
+        ctx.missing.iter().filter(|m| m.task.starts_with(part)).map(|m| m.message(lang)).collect();
     let why = if why.is_empty() { part.to_owned() } else { why.join("; ") };
     not_yet(&why, lang, format)
 }
@@ -120,7 +116,8 @@ pub fn values(
     let mut put = |k: &str, s: String| {
         v.insert(k.to_owned(), s);
     };
-    let unknown = lang.pick("（未設定: `cg assignment --save`）", "(not set: `cg assignment --save`)");
+    let unknown =
+        lang.pick("（未設定: `cg assignment --save`）", "(not set: `cg assignment --save`)");
     let plain = |s: &str| match format {
         Format::Markdown => s.to_owned(),
         Format::Latex => latex_escape(s),

@@ -695,7 +695,7 @@ pub(crate) mod tests {
         let md = matrix(&m, Lang::En, Format::Markdown);
         assert!(md.contains("`T(0, 0, -camera_distance) · Rx(-camera_pitch)`"), "{md}");
         assert!(md.contains("`T(0, 0, -15) · Rx(30°)`"), "{md}");
-        assert!(md.contains("\\cos(-camera\\_pitch)"), "{md}");
+        assert!(md.contains("\\cos(-\\mathit{camera\\_pitch})"), "{md}");
         // The tag line, then `$$`, then the result: T(0, 0, -15) · Rx(30°) by hand.
         assert!(md.contains("<!-- cg: a2.view.start -->\n$$\n= \\begin{pmatrix}"), "{md}");
         let (c, s) = (30f64.to_radians().cos(), 30f64.to_radians().sin());

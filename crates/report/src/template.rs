@@ -116,11 +116,14 @@ pub fn not_yet(why: &str, lang: Lang, format: Format) -> String {
     }
 }
 
-/// Text made safe for LaTeX: `\ { } $ & # ^ _ % ~` escaped.
+/// Text made safe for LaTeX: `\ { } $ & # ^ _ % ~` escaped, `--` kept as two hyphens (a command
+/// line's `--release`, not an en dash), and the symbols the text fonts lack (`≤ ≥ θ φ ω π ⁶ …`)
+/// set in math.
 #[must_use]
 pub fn latex_escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
+    let mut chars = text.chars().peekable();
+    while let Some(c) = chars.next() {
         match c {
             '\\' => out.push_str("\\textbackslash{}"),
             '{' | '}' | '$' | '&' | '#' | '_' | '%' => {
@@ -129,6 +132,36 @@ pub fn latex_escape(text: &str) -> String {
             }
             '^' => out.push_str("\\textasciicircum{}"),
             '~' => out.push_str("\\textasciitilde{}"),
+            '-' if chars.peek() == Some(&'-') => out.push_str("-{}"),
+            '≤' => out.push_str("$\\le$"),
+            '≥' => out.push_str("$\\ge$"),
+            '≠' => out.push_str("$\\ne$"),
+            '±' => out.push_str("$\\pm$"),
+            '∈' => out.push_str("$\\in$"),
+            '∞' => out.push_str("$\\infty$"),
+            'α' => out.push_str("$\\alpha$"),
+            'β' => out.push_str("$\\beta$"),
+            'γ' => out.push_str("$\\gamma$"),
+            'θ' => out.push_str("$\\theta$"),
+            'φ' => out.push_str("$\\varphi$"),
+            'ω' => out.push_str("$\\omega$"),
+            'π' => out.push_str("$\\pi$"),
+            '⁰' | '¹' | '²' | '³' | '⁴' | '⁵' | '⁶' | '⁷' | '⁸' | '⁹' | '⁻' => {
+                let plain = match c {
+                    '⁰' => '0',
+                    '¹' => '1',
+                    '²' => '2',
+                    '³' => '3',
+                    '⁴' => '4',
+                    '⁵' => '5',
+                    '⁶' => '6',
+                    '⁷' => '7',
+                    '⁸' => '8',
+                    '⁹' => '9',
+                    _ => '-',
+                };
+                out.push_str(&format!("\\textsuperscript{{{plain}}}"));
+            }
             _ => out.push(c),
         }
     }
@@ -170,6 +203,8 @@ mod tests {
     #[test]
     fn latex_text_is_escaped_and_missing_values_stay_visible() {
         assert_eq!(latex_escape("a_1 & 50% {x}"), "a\\_1 \\& 50\\% \\{x\\}");
+        assert_eq!(latex_escape("--release, 0 ≤ θ"), "-{}-release, 0 $\\le$ $\\theta$");
+        assert_eq!(latex_escape("10⁻⁶"), "10\\textsuperscript{-}\\textsuperscript{6}");
         assert!(not_yet("a1.t1", Lang::Ja, Format::Markdown).contains("まだ導出できません: a1.t1"));
         assert_eq!(not_yet("a1.t1", Lang::En, Format::Latex), "\\textbf{(not derived yet: a1.t1)}");
     }

@@ -1,0 +1,48 @@
+//! The `report-checker` binary: the same commands as `cg report`, on a data file (the kit's
+//! exercises are stubs here, so the data-alone mode is what it can check without solutions).
+
+use std::path::Path;
+use std::process::Command;
+
+fn root() -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").canonicalize().unwrap()
+}
+
+fn report_checker(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_report-checker"))
+        .args(args)
+        .current_dir(root())
+        .env_remove("CG_LANG")
+        .env_remove("LANG")
+        .env_remove("LC_ALL")
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn checks_a_data_file_and_fails_on_the_slides_normals() {
+    let out =
+        report_checker(&["--lang", "ja", "check", "--data", "assets/report/lecture-pyramid.md"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{stdout}");
+    assert!(stdout.contains("F0") && stdout.contains("F3") && !stdout.contains("F5"), "{stdout}");
+    let json = report_checker(&["check", "--json", "--data", "assets/report/lecture-pyramid.md"]);
+    let value: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    assert_eq!(value["ok"], false);
+    let items: Vec<&str> =
+        value["findings"].as_array().unwrap().iter().map(|f| f["item"].as_str().unwrap()).collect();
+    assert_eq!(items, ["F0 normal", "F1 normal", "F2 normal", "F3 normal"]);
+}
+
+#[test]
+fn a_missing_file_is_an_error_with_its_name() {
+    let out = report_checker(&["--lang", "en", "check", "--data", "no-such-table.md"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("no-such-table.md"), "{stderr}");
+    let help = report_checker(&["--help"]);
+    let text = String::from_utf8_lossy(&help.stdout);
+    for command in ["derive", "fill", "check"] {
+        assert!(text.contains(command), "{text}");
+    }
+}
