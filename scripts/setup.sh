@@ -24,6 +24,8 @@ fi
 PACKAGES=(
   gcc libc6-dev libosmesa6-dev   # the OpenGL reference (crates/glref): a C compiler and Mesa's OSMesa
   texlive-luatex texlive-lang-japanese texlive-latex-recommended texlive-pictures   # the report template
+  mesa-vulkan-drivers libvulkan1   # the GPU renderer (crates/gpu) on Mesa's software Vulkan (lavapipe)
+  xvfb xauth xdotool libxkbcommon-x11-0 libx11-xcb1   # the viewer's window test under a virtual display
 )
 
 if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then
