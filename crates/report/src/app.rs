@@ -498,8 +498,10 @@ impl CheckOutcome {
                         self.verification.checked, wrong
                     ),
                     Lang::En => format!(
-                        "{} numbers checked; {} mistakes.",
-                        self.verification.checked, wrong
+                        "{} numbers checked; {} {}.",
+                        self.verification.checked,
+                        wrong,
+                        if wrong == 1 { "mistake" } else { "mistakes" }
                     ),
                 }
             }

@@ -73,11 +73,39 @@ impl Finding {
                     .map_or(String::new(), |t| format!("（許容誤差 ±{}）", show_tolerance(t)));
                 format!(
                     "{} 行目: {}: 記入 `{}`、導出値 `{}`{tol} — {}",
-                    self.line, self.item, self.written, self.derived, self.why.ja
+                    self.line,
+                    item_ja(&self.item),
+                    self.written,
+                    self.derived,
+                    self.why.ja
                 )
             }
         }
     }
+}
+
+/// A finding's item in Japanese: `F2 normal` → `F2 の法線`, `tex (3, 5)` → `テクスチャ (3, 5)`,
+/// `a2.view.start (row 1, column 4)` → `a2.view.start（1 行 4 列）`.
+fn item_ja(item: &str) -> String {
+    let mut out = item.to_owned();
+    if let Some(rest) = out.strip_prefix("tex ") {
+        out = format!("テクスチャ座標 {rest}");
+    }
+    for (en, ja) in [
+        (" normal", " の法線"),
+        (" order", " の頂点の順序"),
+        (" vertices", " の頂点"),
+        (" position", " の位置"),
+    ] {
+        if let Some(head) = out.strip_suffix(en) {
+            out = format!("{head}{ja}");
+        }
+    }
+    if let Some(k) = out.find(" (row ") {
+        let cell = out[k + 6..].trim_end_matches(')').replace(", column ", " 行 ");
+        out = format!("{}（{cell} 列）", &out[..k]);
+    }
+    out
 }
 
 impl std::fmt::Display for Finding {
@@ -790,6 +818,16 @@ pub fn face_outwardness(vertices: &[Vec3], faces: &[[u32; 3]]) -> Vec<Option<boo
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn items_read_in_japanese() {
+        assert_eq!(item_ja("F2 normal"), "F2 の法線");
+        assert_eq!(item_ja("F4 order"), "F4 の頂点の順序");
+        assert_eq!(item_ja("tex (3, 5)"), "テクスチャ座標 (3, 5)");
+        assert_eq!(item_ja("tex (3, 5) position"), "テクスチャ座標 (3, 5) の位置");
+        assert_eq!(item_ja("a2.view.start (row 1, column 4)"), "a2.view.start（1 行 4 列）");
+        assert_eq!(item_ja("V3"), "V3");
+    }
     use crate::derive::polygon_from_data;
     use crate::model::{AnimationData, CameraData, NamedMatrix};
     use crate::parse::{LECTURE_SLIDE, line_of, parse_number, parse_report, polygon_from_text};
@@ -995,7 +1033,7 @@ $$ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0
         for f in f {
             let (en, ja) = (f.message(Lang::En), f.message(Lang::Ja));
             assert!(en.starts_with(&format!("line {}: {}", f.line, f.item)), "{en}");
-            assert!(ja.starts_with(&format!("{} 行目: {}", f.line, f.item)), "{ja}");
+            assert!(ja.starts_with(&format!("{} 行目: {}", f.line, item_ja(&f.item))), "{ja}");
             assert!(en.contains(&f.written) && en.contains(&f.derived) && ja.contains(&f.derived));
         }
         assert!(f[0].message(Lang::En).contains("tolerance ±0.001"), "{}", f[0].message(Lang::En));
