@@ -55,6 +55,31 @@ impl<A: App> Shell<'_, A> {
         event_loop.exit();
     }
 
+    /// What the window shows, read back from it (softbuffer's `fetch`, X11 does it), when it is
+    /// the size of the last frame: a screenshot of the window itself, not of the frame handed to
+    /// it. `None` where the platform cannot read back.
+    fn window_pixels(&mut self) -> Option<Image> {
+        let frame = self.last_frame.as_ref()?;
+        let open = self.open.as_mut()?;
+        let pixels = open.surface.fetch().ok()?;
+        let rgba: Vec<[u8; 4]> = pixels
+            .iter()
+            .map(|p| {
+                let [_, r, g, b] = p.to_be_bytes();
+                [r, g, b, 255]
+            })
+            .collect();
+        Image::from_rgba8(frame.width, frame.height, &rgba)
+    }
+
+    /// The window's pixels (`"window"`), else the last frame drawn (`"frame"`).
+    fn screenshot(&mut self) -> Option<(Image, &'static str)> {
+        match self.window_pixels() {
+            Some(image) => Some((image, "window")),
+            None => self.last_frame.clone().map(|image| (image, "frame")),
+        }
+    }
+
     fn set_title(&self) {
         if let Some(open) = &self.open {
             open.window.set_title(&format!(
@@ -72,9 +97,10 @@ impl<A: App> Shell<'_, A> {
             self.shared.next_backend();
         }
         if control.screenshot_requested() {
-            if let Some(image) = &self.last_frame {
+            if let Some((image, source)) = self.screenshot() {
                 let path = self.shared.screenshot_path();
-                if let Err(e) = self.shared.save(&path, image, &self.app.status()) {
+                let status = format!("{} source={source}", self.app.status());
+                if let Err(e) = self.shared.save(&path, &image, &status) {
                     self.fail(event_loop, e);
                     return;
                 }
@@ -130,8 +156,15 @@ impl<A: App> Shell<'_, A> {
         self.last_frame = Some(image);
         self.frames += 1;
         self.set_title();
-        if self.shared.options.frames.is_some_and(|n| self.frames >= n) {
-            event_loop.exit();
+        match self.shared.options.frames {
+            Some(n) if self.frames >= n => event_loop.exit(),
+            // A scripted run (`--frames N`) draws frame after frame until it has N.
+            Some(_) => {
+                if let Some(open) = &self.open {
+                    open.window.request_redraw();
+                }
+            }
+            None => {}
         }
     }
 }
@@ -279,10 +312,10 @@ pub(crate) fn run<A: App>(app: &mut A, shared: &mut Shared) -> Outcome {
         return Outcome::Failed(ViewerError::Window(e.to_string()));
     }
     if matches!(shell.outcome, Outcome::Done) {
-        if let (Some(path), Some(image)) =
-            (shell.shared.options.screenshot.clone(), shell.last_frame.take())
+        if let (Some(path), Some((image, source))) =
+            (shell.shared.options.screenshot.clone(), shell.screenshot())
         {
-            let status = shell.app.status();
+            let status = format!("{} source={source}", shell.app.status());
             if let Err(e) = shell.shared.save(&path, &image, &status) {
                 return Outcome::Failed(e);
             }
