@@ -112,10 +112,8 @@ impl CourseApp {
         s.height = self.size.1;
         if self.angle_deg != 0.0 {
             for o in s.objects.iter_mut().filter(|o| o.name != "ground") {
-                o.transform = o
-                    .transform
-                    .clone()
-                    .then(Factor::rotate(Axis::Y, Param::num(self.angle_deg)));
+                o.transform =
+                    o.transform.clone().then(Factor::rotate(Axis::Y, Param::num(self.angle_deg)));
             }
         }
         s
@@ -143,8 +141,9 @@ fn orbit_from_eye(eye: Vec3, target: Vec3) -> OrbitCamera {
     let l = c.limits;
     c.target = target;
     c.distance = distance.max(l.distance_min).min(l.distance_max);
-    c.pitch_deg =
-        (-(d.y / distance).clamp(-1.0, 1.0).asin().to_degrees()).max(l.pitch_min_deg).min(l.pitch_max_deg);
+    c.pitch_deg = (-(d.y / distance).clamp(-1.0, 1.0).asin().to_degrees())
+        .max(l.pitch_min_deg)
+        .min(l.pitch_max_deg);
     c.yaw_deg = cg_core::math::wrap_degrees(d.x.atan2(d.z).to_degrees());
     c
 }

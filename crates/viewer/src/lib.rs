@@ -109,7 +109,9 @@ pub fn display_available() -> bool {
 pub fn run(options: &ViewerOptions) -> Result<(), ViewerError> {
     let scene = match &options.scene {
         None => cg_harness::course::scene(),
-        Some(path) => cg_scene::load(path).map_err(|e| ViewerError::Scene(e.describe(options.lang)))?,
+        Some(path) => {
+            cg_scene::load(path).map_err(|e| ViewerError::Scene(e.describe(options.lang)))?
+        }
     };
     let mut app = CourseApp::new(scene);
     if let Some(s) = options.shading {
@@ -154,10 +156,9 @@ pub fn run_app<A: App>(
         eprintln!(
             "{} ({reason}){}",
             options.lang.pick("ウィンドウを開けません", "no window can be opened"),
-            options.lang.pick(
-                "。代わりに PNG ファイルに描画します",
-                "; rendering to PNG files instead"
-            )
+            options
+                .lang
+                .pick("。代わりに PNG ファイルに描画します", "; rendering to PNG files instead")
         );
     }
     headless(app, &mut shared)
@@ -215,7 +216,10 @@ pub(crate) struct Shared {
 }
 
 impl Shared {
-    fn new(backends: Vec<Box<dyn Backend>>, options: &ViewerOptions) -> Result<Shared, ViewerError> {
+    fn new(
+        backends: Vec<Box<dyn Backend>>,
+        options: &ViewerOptions,
+    ) -> Result<Shared, ViewerError> {
         if backends.is_empty() {
             return Err(ViewerError::Render("no renderer was given to the viewer".to_owned()));
         }
@@ -263,7 +267,11 @@ impl Shared {
     /// Writes `image` to `path` (creating its folder) and prints `saved PATH (STATUS)`.
     pub(crate) fn save(&self, path: &Path, image: &Image, status: &str) -> Result<(), ViewerError> {
         save_png(path, image)?;
-        println!("{} {} ({status})", self.options.lang.pick("保存しました:", "saved"), path.display());
+        println!(
+            "{} {} ({status})",
+            self.options.lang.pick("保存しました:", "saved"),
+            path.display()
+        );
         Ok(())
     }
 }

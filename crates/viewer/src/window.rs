@@ -96,24 +96,24 @@ impl<A: App> Shell<'_, A> {
         if control.next_renderer_requested() {
             self.shared.next_backend();
         }
-        if control.screenshot_requested() {
-            if let Some((image, source)) = self.screenshot() {
-                let path = self.shared.screenshot_path();
-                let status = format!("{} source={source}", self.app.status());
-                if let Err(e) = self.shared.save(&path, &image, &status) {
-                    self.fail(event_loop, e);
-                    return;
-                }
+        if control.screenshot_requested()
+            && let Some((image, source)) = self.screenshot()
+        {
+            let path = self.shared.screenshot_path();
+            let status = format!("{} source={source}", self.app.status());
+            if let Err(e) = self.shared.save(&path, &image, &status) {
+                self.fail(event_loop, e);
+                return;
             }
         }
         if control.quit_requested() {
             event_loop.exit();
             return;
         }
-        if control.redisplay_requested() || control.next_renderer_requested() {
-            if let Some(open) = &self.open {
-                open.window.request_redraw();
-            }
+        if (control.redisplay_requested() || control.next_renderer_requested())
+            && let Some(open) = &self.open
+        {
+            open.window.request_redraw();
         }
         self.set_title();
     }
@@ -311,14 +311,13 @@ pub(crate) fn run<A: App>(app: &mut A, shared: &mut Shared) -> Outcome {
         }
         return Outcome::Failed(ViewerError::Window(e.to_string()));
     }
-    if matches!(shell.outcome, Outcome::Done) {
-        if let (Some(path), Some((image, source))) =
-            (shell.shared.options.screenshot.clone(), shell.screenshot())
-        {
-            let status = format!("{} source={source}", shell.app.status());
-            if let Err(e) = shell.shared.save(&path, &image, &status) {
-                return Outcome::Failed(e);
-            }
+    if matches!(shell.outcome, Outcome::Done)
+        && let Some(path) = shell.shared.options.screenshot.clone()
+        && let Some((image, source)) = shell.screenshot()
+    {
+        let status = format!("{} source={source}", shell.app.status());
+        if let Err(e) = shell.shared.save(&path, &image, &status) {
+            return Outcome::Failed(e);
         }
     }
     shell.outcome
