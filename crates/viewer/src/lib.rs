@@ -17,6 +17,42 @@
 //! let options = cg_viewer::ViewerOptions { frames: Some(1), ..Default::default() };
 //! cg_viewer::run(&options).unwrap();
 //! ```
+//!
+//! A program of one's own is an [`App`]: the sample program's callbacks as methods. This one
+//! draws the course's scene and turns the camera in `idle()`:
+//!
+//! ```
+//! use cg_core::image::Image;
+//! use cg_viewer::{App, Backend, Control, CpuBackend, FrameRequest, ViewerError, ViewerOptions};
+//!
+//! struct Turntable { scene: cg_core::scene::Scene, yaw: f32, size: (u32, u32) }
+//!
+//! impl App for Turntable {
+//!     fn title(&self) -> String { format!("turntable, yaw {}", self.yaw) }
+//!     fn display(&mut self, renderer: &mut dyn Backend) -> Result<Image, ViewerError> {
+//!         let mut scene = self.scene.clone();
+//!         if let cg_core::scene::Camera::Orbit(c) = &mut scene.camera { c.yaw_deg = self.yaw; }
+//!         renderer.render(&scene, &FrameRequest { size: self.size, shading: None })
+//!     }
+//!     fn reshape(&mut self, width: u32, height: u32) { self.size = (width, height); }
+//!     fn idle(&mut self, dt: f32, control: &mut Control) {
+//!         self.yaw = (self.yaw + 90.0 * dt) % 360.0;
+//!         control.post_redisplay(); // glutPostRedisplay()
+//!     }
+//! }
+//!
+//! let mut app = Turntable { scene: cg_harness::course::scene(), yaw: 0.0, size: (0, 0) };
+//! let dir = std::env::temp_dir().join("cg-viewer-doc");
+//! let options = ViewerOptions {
+//!     size: Some((64, 48)),
+//!     frames: Some(2),
+//!     screenshot: Some(dir.join("turntable.png")),
+//!     ..ViewerOptions::default()
+//! };
+//! cg_viewer::run_headless(&mut app, vec![Box::new(CpuBackend::default())], &options)?;
+//! assert!((app.yaw - 1.5).abs() < 1e-4); // one idle step of 1/60 s between the two frames
+//! # Ok::<(), ViewerError>(())
+//! ```
 
 pub mod app;
 pub mod backend;
@@ -286,4 +322,99 @@ pub fn save_png(path: &Path, image: &Image) -> Result<(), ViewerError> {
         std::fs::create_dir_all(dir).map_err(|e| err(e.to_string()))?;
     }
     cg_scene::save_png(path, image).map_err(|e| err(e.describe(Lang::En)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cg_core::Rgb;
+
+    /// A backend that fills the frame with one colour.
+    struct Fill(&'static str, Rgb);
+
+    impl Backend for Fill {
+        fn name(&self) -> &str {
+            self.0
+        }
+
+        fn render(
+            &mut self,
+            _: &cg_core::scene::Scene,
+            r: &FrameRequest,
+        ) -> Result<Image, ViewerError> {
+            Ok(Image::new(r.size.0, r.size.1, self.1))
+        }
+    }
+
+    #[test]
+    fn the_r_key_cycles_through_the_backends_and_one_backend_stays() {
+        let options = ViewerOptions::default();
+        let mut shared = Shared::new(
+            vec![Box::new(Fill("A", Rgb::ZERO)), Box::new(Fill("B", Rgb::ONE))],
+            &options,
+        )
+        .unwrap();
+        assert_eq!(shared.backend().name(), "A");
+        shared.next_backend();
+        assert_eq!(shared.backend().name(), "B");
+        shared.next_backend();
+        assert_eq!(shared.backend().name(), "A");
+        let mut one = Shared::new(vec![Box::new(CpuBackend::default())], &options).unwrap();
+        one.next_backend();
+        assert_eq!(one.backend().name(), "CPU");
+        assert!(Shared::new(Vec::new(), &options).is_err());
+    }
+
+    #[test]
+    fn screenshots_are_numbered_unless_a_path_is_given() {
+        let options = ViewerOptions { out_dir: Some("shots".into()), ..ViewerOptions::default() };
+        let mut shared = Shared::new(vec![Box::new(CpuBackend::default())], &options).unwrap();
+        assert_eq!(shared.screenshot_path(), Path::new("shots/screenshot-001.png"));
+        assert_eq!(shared.screenshot_path(), Path::new("shots/screenshot-002.png"));
+        let options =
+            ViewerOptions { screenshot: Some("a.png".into()), ..ViewerOptions::default() };
+        let mut shared = Shared::new(vec![Box::new(CpuBackend::default())], &options).unwrap();
+        assert_eq!(shared.screenshot_path(), Path::new("a.png"));
+        assert_eq!(
+            Shared::new(vec![Box::new(CpuBackend::default())], &ViewerOptions::default())
+                .unwrap()
+                .out_dir(),
+            Path::new("out")
+        );
+    }
+
+    #[test]
+    fn pixels_are_0rgb_rounded_as_opengl_and_clamped() {
+        let mut image = Image::new(2, 1, Rgb::new(1.0, 0.5, 0.0));
+        image.set(1, 0, Rgb::new(2.0, -1.0, f32::NAN));
+        assert_eq!(to_0rgb(&image), [0x00ff_8000, 0x00ff_0000]);
+    }
+
+    #[test]
+    fn a_bad_scene_is_an_error_that_names_the_file() {
+        let options = ViewerOptions {
+            scene: Some("no/such/scene.toml".into()),
+            headless: true,
+            ..ViewerOptions::default()
+        };
+        let e = run(&options).unwrap_err();
+        assert!(matches!(e, ViewerError::Scene(_)));
+        assert!(e.to_string().contains("scene.toml"), "{e}");
+    }
+
+    #[test]
+    fn an_unwritable_screenshot_is_an_error() {
+        let file = std::env::temp_dir().join(format!("cg-viewer-unit-{}", std::process::id()));
+        std::fs::write(&file, b"a file, not a folder").unwrap();
+        let options = ViewerOptions {
+            size: Some((8, 8)),
+            screenshot: Some(file.join("x.png")),
+            ..ViewerOptions::default()
+        };
+        let mut app = CourseApp::course_sample();
+        let e =
+            run_headless(&mut app, vec![Box::new(CpuBackend::default())], &options).unwrap_err();
+        assert!(matches!(e, ViewerError::Save { .. }), "{e}");
+        let _ = std::fs::remove_file(&file);
+    }
 }

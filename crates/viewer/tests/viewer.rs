@@ -145,8 +145,13 @@ fn xvfb_available(test: &str) -> bool {
     false
 }
 
+/// One Xvfb server at a time: `xvfb-run -a` picks a free display number, but two started at
+/// the same moment can pick the same one.
+static XVFB: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
 /// Runs `script` under a fresh Xvfb server with `$BIN` set to the viewer.
 fn under_xvfb(script: &str) -> Output {
+    let _one = XVFB.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     Command::new("xvfb-run")
         .args(["-a", "-s", "-screen 0 1024x768x24", "bash", "-c", script])
         .env("BIN", BIN)
@@ -168,7 +173,7 @@ fn window_right_drag_and_screenshot_match_the_headless_render() {
         r#"set -u
 timeout 90 "$BIN" --paused --width 320 --height 320 --screenshot '{shot}' --out '{dir}' &
 PID=$!
-WID=$(timeout 30 xdotool search --sync --name 'cg viewer' | head -1)
+WID=$(timeout 30 xdotool search --sync --onlyvisible --name 'cg viewer' | head -1)
 [ -n "$WID" ] || {{ echo "no window"; kill $PID; exit 3; }}
 sleep 0.5
 xdotool mousemove --window $WID 100 100 mousedown 3 \
