@@ -206,15 +206,20 @@ impl App for CourseApp {
         }
     }
 
+    /// The sample's `idle()`: unless paused, advances the angle and posts a redisplay (always,
+    /// so the animation keeps going; the first call after a pause has `dt_seconds` 0).
     fn idle(&mut self, dt_seconds: f32, control: &mut Control) {
-        if self.paused || !(dt_seconds.is_finite() && dt_seconds > 0.0) {
+        if self.paused {
+            return;
+        }
+        control.post_redisplay();
+        if !(dt_seconds.is_finite() && dt_seconds > 0.0) {
             return;
         }
         // At most a quarter second per step, so a stalled frame does not jump the animation.
         let step = self.spin_deg_per_s * dt_seconds.min(0.25);
-        if step != 0.0 && step.is_finite() {
+        if step.is_finite() {
             self.angle_deg = cg_core::math::wrap_degrees(self.angle_deg + step);
-            control.post_redisplay();
         }
     }
 
@@ -336,8 +341,10 @@ mod tests {
     fn idle_spins_the_object_unless_paused() {
         let mut a = app();
         let mut c = Control::new();
+        a.idle(0.0, &mut c);
+        assert!(c.redisplay_requested(), "the animation keeps going from dt = 0");
+        assert_eq!(a.angle_deg, 0.0);
         a.idle(1.0, &mut c);
-        assert!(!c.redisplay_requested() || a.angle_deg != 0.0);
         assert!((a.angle_deg - 11.25).abs() < 1e-4, "a stalled frame counts as 0.25 s");
         a.idle(0.1, &mut c);
         assert!((a.angle_deg - 15.75).abs() < 1e-4);

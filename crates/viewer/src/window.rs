@@ -34,6 +34,8 @@ struct Shell<'a, A: App> {
     buttons: u8,
     last_idle: Option<Instant>,
     last_frame: Option<Image>,
+    /// `app.status()` when the last frame was drawn (the state it shows; idle may have moved on).
+    last_status: String,
     frames: u64,
     frame_ms: f64,
     outcome: Outcome,
@@ -100,7 +102,7 @@ impl<A: App> Shell<'_, A> {
             && let Some((image, source)) = self.screenshot()
         {
             let path = self.shared.screenshot_path();
-            let status = format!("{} source={source}", self.app.status());
+            let status = format!("{} source={source}", self.last_status);
             if let Err(e) = self.shared.save(&path, &image, &status) {
                 self.fail(event_loop, e);
                 return;
@@ -136,6 +138,7 @@ impl<A: App> Shell<'_, A> {
             Err(e) => return self.fail(event_loop, e),
         };
         self.frame_ms = start.elapsed().as_secs_f64() * 1000.0;
+        self.last_status = self.app.status();
         let Some(open) = &mut self.open else { return };
         let mut buffer = match open.surface.buffer_mut() {
             Ok(b) => b,
@@ -301,6 +304,7 @@ pub(crate) fn run<A: App>(app: &mut A, shared: &mut Shared) -> Outcome {
         buttons: 0,
         last_idle: None,
         last_frame: None,
+        last_status: String::new(),
         frames: 0,
         frame_ms: 0.0,
         outcome: Outcome::Done,
@@ -315,7 +319,7 @@ pub(crate) fn run<A: App>(app: &mut A, shared: &mut Shared) -> Outcome {
         && let Some(path) = shell.shared.options.screenshot.clone()
         && let Some((image, source)) = shell.screenshot()
     {
-        let status = format!("{} source={source}", shell.app.status());
+        let status = format!("{} source={source}", shell.last_status);
         if let Err(e) = shell.shared.save(&path, &image, &status) {
             return Outcome::Failed(e);
         }

@@ -201,14 +201,14 @@ wait $PID
 }
 
 #[test]
-fn window_frames_limit_exits_by_itself_with_the_default_view() {
-    if !xvfb_available("window_frames_limit_exits_by_itself_with_the_default_view") {
+fn window_frames_limit_exits_by_itself_and_the_animation_runs() {
+    if !xvfb_available("window_frames_limit_exits_by_itself_and_the_animation_runs") {
         return;
     }
     let dir = scratch("xvfb-frames");
     let shot = dir.join("frames.png");
     let script = format!(
-        "timeout 90 \"$BIN\" --paused --frames 3 --shading flat --width 200 --height 150 --screenshot '{}'",
+        "timeout 90 \"$BIN\" --frames 4 --shading flat --width 200 --height 150 --screenshot '{}'",
         shot.display()
     );
     let out = under_xvfb(&script);
@@ -217,5 +217,7 @@ fn window_frames_limit_exits_by_itself_with_the_default_view() {
     let state = saved_state(&String::from_utf8_lossy(&out.stdout));
     assert_eq!(get(&state, "pitch"), "-30", "{all}");
     assert_eq!(get(&state, "source"), "window", "{all}");
+    // The animation ran (idle between frames); the screenshot's state is the last frame's.
+    assert!(get(&state, "angle").parse::<f32>().unwrap() > 0.0, "{all}");
     assert_png_is_headless_render("xvfb-frames", &shot, &state);
 }
