@@ -1,0 +1,420 @@
+//! # cg-viewer — the kit's interactive viewer
+//!
+//! A window with the callbacks of the course's GLUT sample program (display, reshape, mouse,
+//! motion, idle, keyboard: see [`App`] for the table that maps them one to one), drawing through
+//! a renderer [`Backend`] — now the CPU rasterizer ([`CpuBackend`], `cg_raster::render` into a
+//! softbuffer surface); the GPU renderer plugs in through the same trait.
+//!
+//! The default app ([`CourseApp`]) is the course's sample scene with the sample's mouse mapping
+//! (`cg_core::camera::OrbitCamera`): right-drag changes the pitch (dy) and the yaw (dx),
+//! left-drag the distance; keys: see [`course::KEYS`]. The title shows the mode, the renderer and
+//! the frame time.
+//!
+//! Without a display (no `DISPLAY`, or the window cannot be opened) [`run`] renders the view to a
+//! PNG file instead and says so; it never panics for want of a window.
+//!
+//! ```no_run
+//! let options = cg_viewer::ViewerOptions { frames: Some(1), ..Default::default() };
+//! cg_viewer::run(&options).unwrap();
+//! ```
+//!
+//! A program of one's own is an [`App`]: the sample program's callbacks as methods. This one
+//! draws the course's scene and turns the camera in `idle()`:
+//!
+//! ```
+//! use cg_core::image::Image;
+//! use cg_viewer::{App, Backend, Control, CpuBackend, FrameRequest, ViewerError, ViewerOptions};
+//!
+//! struct Turntable { scene: cg_core::scene::Scene, yaw: f32, size: (u32, u32) }
+//!
+//! impl App for Turntable {
+//!     fn title(&self) -> String { format!("turntable, yaw {}", self.yaw) }
+//!     fn display(&mut self, renderer: &mut dyn Backend) -> Result<Image, ViewerError> {
+//!         let mut scene = self.scene.clone();
+//!         if let cg_core::scene::Camera::Orbit(c) = &mut scene.camera { c.yaw_deg = self.yaw; }
+//!         renderer.render(&scene, &FrameRequest { size: self.size, shading: None })
+//!     }
+//!     fn reshape(&mut self, width: u32, height: u32) { self.size = (width, height); }
+//!     fn idle(&mut self, dt: f32, control: &mut Control) {
+//!         self.yaw = (self.yaw + 90.0 * dt) % 360.0;
+//!         control.post_redisplay(); // glutPostRedisplay()
+//!     }
+//! }
+//!
+//! let mut app = Turntable { scene: cg_harness::course::scene(), yaw: 0.0, size: (0, 0) };
+//! let dir = std::env::temp_dir().join("cg-viewer-doc");
+//! let options = ViewerOptions {
+//!     size: Some((64, 48)),
+//!     frames: Some(2),
+//!     screenshot: Some(dir.join("turntable.png")),
+//!     ..ViewerOptions::default()
+//! };
+//! cg_viewer::run_headless(&mut app, vec![Box::new(CpuBackend::default())], &options)?;
+//! assert!((app.yaw - 1.5).abs() < 1e-4); // one idle step of 1/60 s between the two frames
+//! # Ok::<(), ViewerError>(())
+//! ```
+
+pub mod app;
+pub mod backend;
+pub mod course;
+mod window;
+
+use std::path::{Path, PathBuf};
+
+use cg_core::image::Image;
+use cg_core::lang::Lang;
+use cg_core::scene::Shading;
+
+pub use app::{App, Control};
+pub use backend::{Backend, CpuBackend, FrameRequest, to_0rgb, write_0rgb};
+pub use course::{CourseApp, LightChoice};
+
+/// Why the viewer stopped with an error.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum ViewerError {
+    /// The scene file could not be loaded (the message names the file, line and key).
+    #[error("{0}")]
+    Scene(String),
+    /// A frame could not be rendered.
+    #[error("cannot render the frame: {0}")]
+    Render(String),
+    /// A PNG file could not be written.
+    #[error("cannot save {path}: {message}")]
+    Save {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        message: String,
+    },
+    /// The window failed after it had been shown.
+    #[error("the window failed: {0}")]
+    Window(String),
+}
+
+/// How [`run`] runs. `ViewerOptions::default()`: the course's sample scene in a window until it
+/// is closed, PNGs to `out/` when there is no display.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ViewerOptions {
+    /// The scene file; `None`: the course's sample scene.
+    pub scene: Option<PathBuf>,
+    /// The shading mode at start instead of the scene's.
+    pub shading: Option<Shading>,
+    /// The window (or image) size instead of the scene's.
+    pub size: Option<(u32, u32)>,
+    /// Stop after this many frames have been shown (rendered, without a display).
+    pub frames: Option<u64>,
+    /// Save the last frame here as a PNG (and the `s` key saves here too).
+    pub screenshot: Option<PathBuf>,
+    /// Where PNGs go without `screenshot` (the `s` key's numbered files, the headless view);
+    /// `None`: `out`.
+    pub out_dir: Option<PathBuf>,
+    /// Start with the animation paused.
+    pub paused: bool,
+    /// Never open a window: render PNGs as without a display.
+    pub headless: bool,
+    /// Threads for the CPU rasterizer; `None`: all cores.
+    pub threads: Option<usize>,
+    /// The language of messages.
+    pub lang: Lang,
+}
+
+/// Whether a window can probably be opened here: on Linux and the BSDs, `DISPLAY` is set (this
+/// build speaks X11 only; a Wayland session without XWayland has no `DISPLAY`); elsewhere, true.
+/// [`run`] falls back to PNGs when the window still cannot be opened.
+#[must_use]
+pub fn display_available() -> bool {
+    if cfg!(any(
+        target_os = "linux",
+        target_os = "freebsd",
+        target_os = "openbsd",
+        target_os = "netbsd",
+        target_os = "dragonfly"
+    )) {
+        std::env::var_os("DISPLAY").is_some_and(|v| !v.is_empty())
+    } else {
+        true
+    }
+}
+
+/// Runs the default app ([`CourseApp`] on `options.scene` or the course's sample scene) with the
+/// CPU renderer: in a window when there is a display, else to a PNG file.
+///
+/// # Errors
+/// The scene cannot be loaded, a frame cannot be rendered, a PNG cannot be written, or the
+/// window fails after it was shown.
+pub fn run(options: &ViewerOptions) -> Result<(), ViewerError> {
+    let scene = match &options.scene {
+        None => cg_harness::course::scene(),
+        Some(path) => {
+            cg_scene::load(path).map_err(|e| ViewerError::Scene(e.describe(options.lang)))?
+        }
+    };
+    let mut app = CourseApp::new(scene);
+    if let Some(s) = options.shading {
+        app.shading = s;
+    }
+    app.paused = options.paused;
+    print_keys(options.lang);
+    let cpu = CpuBackend { threads: options.threads, lang: options.lang };
+    run_app(&mut app, vec![Box::new(cpu)], options)
+}
+
+fn print_keys(lang: Lang) {
+    println!("{}", lang.pick("操作:", "controls:"));
+    for (key, what) in course::KEYS {
+        println!("  {key:<12} {what}");
+    }
+}
+
+/// Runs `app` (GLUT's `glutMainLoop`) with `backends` (the first draws; `r` switches): in a
+/// window when one can be opened, else headless ([`run_headless`]) with a note saying so.
+///
+/// # Errors
+/// As [`run`]; also when `backends` is empty.
+pub fn run_app<A: App>(
+    app: &mut A,
+    backends: Vec<Box<dyn Backend>>,
+    options: &ViewerOptions,
+) -> Result<(), ViewerError> {
+    let mut shared = Shared::new(backends, options)?;
+    let reason = if options.headless {
+        None
+    } else if !display_available() {
+        Some(options.lang.pick("DISPLAY が設定されていません", "DISPLAY is not set").to_owned())
+    } else {
+        match window::run(app, &mut shared) {
+            Outcome::Done => return Ok(()),
+            Outcome::Failed(e) => return Err(e),
+            Outcome::NoDisplay(reason) => Some(reason),
+        }
+    };
+    if let Some(reason) = reason {
+        eprintln!(
+            "{} ({reason}){}",
+            options.lang.pick("ウィンドウを開けません", "no window can be opened"),
+            options
+                .lang
+                .pick("。代わりに PNG ファイルに描画します", "; rendering to PNG files instead")
+        );
+    }
+    headless(app, &mut shared)
+}
+
+/// Renders `app` without a window: `init`, `reshape` to the window size, then `frames` frames
+/// (default 1) with `idle(1/60 s)` between them; saves the last frame to the screenshot path or
+/// `OUT/view.png`, and says where.
+///
+/// # Errors
+/// As [`run_app`].
+pub fn run_headless<A: App>(
+    app: &mut A,
+    backends: Vec<Box<dyn Backend>>,
+    options: &ViewerOptions,
+) -> Result<(), ViewerError> {
+    let mut shared = Shared::new(backends, options)?;
+    headless(app, &mut shared)
+}
+
+fn headless<A: App>(app: &mut A, shared: &mut Shared) -> Result<(), ViewerError> {
+    let (w, h) = shared.options.size.unwrap_or_else(|| app.window_size());
+    app.init();
+    app.reshape(w.max(1), h.max(1));
+    let frames = shared.options.frames.unwrap_or(1).max(1);
+    let mut image = app.display(shared.backend_mut())?;
+    for _ in 1..frames {
+        let mut control = Control::new();
+        app.idle(1.0 / 60.0, &mut control);
+        image = app.display(shared.backend_mut())?;
+    }
+    let path = match &shared.options.screenshot {
+        Some(p) => p.clone(),
+        None => shared.out_dir().join("view.png"),
+    };
+    shared.save(&path, &image, &app.status())
+}
+
+/// How the window run ended.
+pub(crate) enum Outcome {
+    /// Closed or quit normally.
+    Done,
+    /// No window could be opened (the reason); nothing was shown.
+    NoDisplay(String),
+    /// An error after the window was shown.
+    Failed(ViewerError),
+}
+
+/// What the shell and the headless path share: options, backends, screenshots.
+pub(crate) struct Shared {
+    pub(crate) options: ViewerOptions,
+    backends: Vec<Box<dyn Backend>>,
+    current: usize,
+    screenshots: u32,
+}
+
+impl Shared {
+    fn new(
+        backends: Vec<Box<dyn Backend>>,
+        options: &ViewerOptions,
+    ) -> Result<Shared, ViewerError> {
+        if backends.is_empty() {
+            return Err(ViewerError::Render("no renderer was given to the viewer".to_owned()));
+        }
+        Ok(Shared { options: options.clone(), backends, current: 0, screenshots: 0 })
+    }
+
+    pub(crate) fn backend(&self) -> &dyn Backend {
+        self.backends[self.current].as_ref()
+    }
+
+    pub(crate) fn backend_mut(&mut self) -> &mut dyn Backend {
+        self.backends[self.current].as_mut()
+    }
+
+    /// The `r` key: the next backend, or a note that there is only one.
+    pub(crate) fn next_backend(&mut self) {
+        if self.backends.len() < 2 {
+            println!(
+                "{} {}",
+                self.options.lang.pick(
+                    "使えるレンダラは CPU ラスタライザだけです（GPU レンダラはまだ組み込まれていません）:",
+                    "only one renderer is available (the GPU renderer is not built in yet):"
+                ),
+                self.backend().name()
+            );
+            return;
+        }
+        self.current = (self.current + 1) % self.backends.len();
+        println!("renderer: {}", self.backend().name());
+    }
+
+    pub(crate) fn out_dir(&self) -> PathBuf {
+        self.options.out_dir.clone().unwrap_or_else(|| PathBuf::from("out"))
+    }
+
+    /// Where the `s` key saves: the `--screenshot` path, else `OUT/screenshot-NNN.png`.
+    pub(crate) fn screenshot_path(&mut self) -> PathBuf {
+        if let Some(p) = &self.options.screenshot {
+            return p.clone();
+        }
+        self.screenshots += 1;
+        self.out_dir().join(format!("screenshot-{:03}.png", self.screenshots))
+    }
+
+    /// Writes `image` to `path` (creating its folder) and prints `saved PATH (STATUS)`.
+    pub(crate) fn save(&self, path: &Path, image: &Image, status: &str) -> Result<(), ViewerError> {
+        save_png(path, image)?;
+        println!(
+            "{} {} ({status})",
+            self.options.lang.pick("保存しました:", "saved"),
+            path.display()
+        );
+        Ok(())
+    }
+}
+
+/// Writes `image` to `path` as a PNG, creating the folder.
+///
+/// # Errors
+/// [`ViewerError::Save`] naming the file and why.
+pub fn save_png(path: &Path, image: &Image) -> Result<(), ViewerError> {
+    let err = |message: String| ViewerError::Save { path: path.to_owned(), message };
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|e| err(e.to_string()))?;
+    }
+    cg_scene::save_png(path, image).map_err(|e| err(e.describe(Lang::En)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cg_core::Rgb;
+
+    /// A backend that fills the frame with one colour.
+    struct Fill(&'static str, Rgb);
+
+    impl Backend for Fill {
+        fn name(&self) -> &str {
+            self.0
+        }
+
+        fn render(
+            &mut self,
+            _: &cg_core::scene::Scene,
+            r: &FrameRequest,
+        ) -> Result<Image, ViewerError> {
+            Ok(Image::new(r.size.0, r.size.1, self.1))
+        }
+    }
+
+    #[test]
+    fn the_r_key_cycles_through_the_backends_and_one_backend_stays() {
+        let options = ViewerOptions::default();
+        let mut shared = Shared::new(
+            vec![Box::new(Fill("A", Rgb::ZERO)), Box::new(Fill("B", Rgb::ONE))],
+            &options,
+        )
+        .unwrap();
+        assert_eq!(shared.backend().name(), "A");
+        shared.next_backend();
+        assert_eq!(shared.backend().name(), "B");
+        shared.next_backend();
+        assert_eq!(shared.backend().name(), "A");
+        let mut one = Shared::new(vec![Box::new(CpuBackend::default())], &options).unwrap();
+        one.next_backend();
+        assert_eq!(one.backend().name(), "CPU");
+        assert!(Shared::new(Vec::new(), &options).is_err());
+    }
+
+    #[test]
+    fn screenshots_are_numbered_unless_a_path_is_given() {
+        let options = ViewerOptions { out_dir: Some("shots".into()), ..ViewerOptions::default() };
+        let mut shared = Shared::new(vec![Box::new(CpuBackend::default())], &options).unwrap();
+        assert_eq!(shared.screenshot_path(), Path::new("shots/screenshot-001.png"));
+        assert_eq!(shared.screenshot_path(), Path::new("shots/screenshot-002.png"));
+        let options =
+            ViewerOptions { screenshot: Some("a.png".into()), ..ViewerOptions::default() };
+        let mut shared = Shared::new(vec![Box::new(CpuBackend::default())], &options).unwrap();
+        assert_eq!(shared.screenshot_path(), Path::new("a.png"));
+        assert_eq!(
+            Shared::new(vec![Box::new(CpuBackend::default())], &ViewerOptions::default())
+                .unwrap()
+                .out_dir(),
+            Path::new("out")
+        );
+    }
+
+    #[test]
+    fn pixels_are_0rgb_rounded_as_opengl_and_clamped() {
+        let mut image = Image::new(2, 1, Rgb::new(1.0, 0.5, 0.0));
+        image.set(1, 0, Rgb::new(2.0, -1.0, f32::NAN));
+        assert_eq!(to_0rgb(&image), [0x00ff_8000, 0x00ff_0000]);
+    }
+
+    #[test]
+    fn a_bad_scene_is_an_error_that_names_the_file() {
+        let options = ViewerOptions {
+            scene: Some("no/such/scene.toml".into()),
+            headless: true,
+            ..ViewerOptions::default()
+        };
+        let e = run(&options).unwrap_err();
+        assert!(matches!(e, ViewerError::Scene(_)));
+        assert!(e.to_string().contains("scene.toml"), "{e}");
+    }
+
+    #[test]
+    fn an_unwritable_screenshot_is_an_error() {
+        let file = std::env::temp_dir().join(format!("cg-viewer-unit-{}", std::process::id()));
+        std::fs::write(&file, b"a file, not a folder").unwrap();
+        let options = ViewerOptions {
+            size: Some((8, 8)),
+            screenshot: Some(file.join("x.png")),
+            ..ViewerOptions::default()
+        };
+        let mut app = CourseApp::course_sample();
+        let e =
+            run_headless(&mut app, vec![Box::new(CpuBackend::default())], &options).unwrap_err();
+        assert!(matches!(e, ViewerError::Save { .. }), "{e}");
+        let _ = std::fs::remove_file(&file);
+    }
+}

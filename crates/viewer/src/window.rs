@@ -1,0 +1,328 @@
+//! The window shell: winit's event loop calling the [`App`]'s callbacks, the frame presented
+//! through softbuffer.
+
+use std::num::NonZeroU32;
+use std::sync::Arc;
+use std::time::Instant;
+
+use cg_core::camera::MouseButton;
+use cg_core::image::Image;
+use softbuffer::{Context, Surface};
+use winit::application::ApplicationHandler;
+use winit::dpi::PhysicalSize;
+use winit::event::{ElementState, KeyEvent, WindowEvent};
+use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
+use winit::keyboard::{Key, NamedKey};
+use winit::window::{Window, WindowId};
+
+use crate::app::{App, Control};
+use crate::backend::write_0rgb;
+use crate::{Outcome, Shared, ViewerError};
+
+/// A window and its softbuffer surface.
+struct Open {
+    window: Arc<Window>,
+    surface: Surface<Arc<Window>, Arc<Window>>,
+}
+
+/// The state the event loop drives.
+struct Shell<'a, A: App> {
+    app: &'a mut A,
+    shared: &'a mut Shared,
+    open: Option<Open>,
+    cursor: (f32, f32),
+    buttons: u8,
+    last_idle: Option<Instant>,
+    last_frame: Option<Image>,
+    /// `app.status()` when the last frame was drawn (the state it shows; idle may have moved on).
+    last_status: String,
+    frames: u64,
+    frame_ms: f64,
+    outcome: Outcome,
+}
+
+impl<A: App> Shell<'_, A> {
+    fn fail(&mut self, event_loop: &ActiveEventLoop, error: ViewerError) {
+        self.outcome = Outcome::Failed(error);
+        event_loop.exit();
+    }
+
+    /// The window could not be opened: fall back to PNGs when no frame was shown yet.
+    fn no_window(&mut self, event_loop: &ActiveEventLoop, reason: String) {
+        self.outcome = if self.frames == 0 {
+            Outcome::NoDisplay(reason)
+        } else {
+            Outcome::Failed(ViewerError::Window(reason))
+        };
+        event_loop.exit();
+    }
+
+    /// What the window shows, read back from it (softbuffer's `fetch`, X11 does it), when it is
+    /// the size of the last frame: a screenshot of the window itself, not of the frame handed to
+    /// it. `None` where the platform cannot read back.
+    fn window_pixels(&mut self) -> Option<Image> {
+        let frame = self.last_frame.as_ref()?;
+        let open = self.open.as_mut()?;
+        let pixels = open.surface.fetch().ok()?;
+        let rgba: Vec<[u8; 4]> = pixels
+            .iter()
+            .map(|p| {
+                let [_, r, g, b] = p.to_be_bytes();
+                [r, g, b, 255]
+            })
+            .collect();
+        Image::from_rgba8(frame.width, frame.height, &rgba)
+    }
+
+    /// The window's pixels (`"window"`), else the last frame drawn (`"frame"`).
+    fn screenshot(&mut self) -> Option<(Image, &'static str)> {
+        match self.window_pixels() {
+            Some(image) => Some((image, "window")),
+            None => self.last_frame.clone().map(|image| (image, "frame")),
+        }
+    }
+
+    fn set_title(&self) {
+        if let Some(open) = &self.open {
+            open.window.set_title(&format!(
+                "{} — {} — {:.1} ms",
+                self.app.title(),
+                self.shared.backend().name(),
+                self.frame_ms
+            ));
+        }
+    }
+
+    /// Carries out what a callback asked.
+    fn control(&mut self, event_loop: &ActiveEventLoop, control: Control) {
+        if control.next_renderer_requested() {
+            self.shared.next_backend();
+        }
+        if control.screenshot_requested()
+            && let Some((image, source)) = self.screenshot()
+        {
+            let path = self.shared.screenshot_path();
+            let status = format!("{} source={source}", self.last_status);
+            if let Err(e) = self.shared.save(&path, &image, &status) {
+                self.fail(event_loop, e);
+                return;
+            }
+        }
+        if control.quit_requested() {
+            event_loop.exit();
+            return;
+        }
+        if (control.redisplay_requested() || control.next_renderer_requested())
+            && let Some(open) = &self.open
+        {
+            open.window.request_redraw();
+        }
+        self.set_title();
+    }
+
+    fn redraw(&mut self, event_loop: &ActiveEventLoop) {
+        let Some(open) = &mut self.open else { return };
+        let size = open.window.inner_size();
+        let (Some(w), Some(h)) = (NonZeroU32::new(size.width), NonZeroU32::new(size.height)) else {
+            return; // minimised
+        };
+        if let Err(e) = open.surface.resize(w, h) {
+            let reason = e.to_string();
+            self.no_window(event_loop, reason);
+            return;
+        }
+        self.app.reshape(w.get(), h.get());
+        let start = Instant::now();
+        let image = match self.app.display(self.shared.backend_mut()) {
+            Ok(image) => image,
+            Err(e) => return self.fail(event_loop, e),
+        };
+        self.frame_ms = start.elapsed().as_secs_f64() * 1000.0;
+        self.last_status = self.app.status();
+        let Some(open) = &mut self.open else { return };
+        let mut buffer = match open.surface.buffer_mut() {
+            Ok(b) => b,
+            Err(e) => {
+                let reason = e.to_string();
+                return self.no_window(event_loop, reason);
+            }
+        };
+        buffer.fill(0);
+        if image.width == w.get() && image.height == h.get() {
+            write_0rgb(&image, &mut buffer);
+        }
+        open.window.pre_present_notify();
+        if let Err(e) = buffer.present() {
+            let reason = e.to_string();
+            return self.no_window(event_loop, reason);
+        }
+        self.last_frame = Some(image);
+        self.frames += 1;
+        self.set_title();
+        match self.shared.options.frames {
+            Some(n) if self.frames >= n => event_loop.exit(),
+            // A scripted run (`--frames N`) draws frame after frame until it has N.
+            Some(_) => {
+                if let Some(open) = &self.open {
+                    open.window.request_redraw();
+                }
+            }
+            None => {}
+        }
+    }
+}
+
+impl<A: App> ApplicationHandler for Shell<'_, A> {
+    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+        if self.open.is_some() {
+            return;
+        }
+        let (w, h) = self.shared.options.size.unwrap_or_else(|| self.app.window_size());
+        let attributes = Window::default_attributes()
+            .with_title(self.app.title())
+            .with_inner_size(PhysicalSize::new(w.max(1), h.max(1)));
+        let window = match event_loop.create_window(attributes) {
+            Ok(w) => Arc::new(w),
+            Err(e) => return self.no_window(event_loop, e.to_string()),
+        };
+        let context = match Context::new(window.clone()) {
+            Ok(c) => c,
+            Err(e) => return self.no_window(event_loop, e.to_string()),
+        };
+        let surface = match Surface::new(&context, window.clone()) {
+            Ok(s) => s,
+            Err(e) => return self.no_window(event_loop, e.to_string()),
+        };
+        self.app.init();
+        self.app.reshape(w.max(1), h.max(1));
+        self.open = Some(Open { window, surface });
+        self.set_title();
+        if let Some(open) = &self.open {
+            open.window.request_redraw();
+        }
+    }
+
+    fn window_event(&mut self, event_loop: &ActiveEventLoop, _id: WindowId, event: WindowEvent) {
+        let mut control = Control::new();
+        match event {
+            WindowEvent::CloseRequested => {
+                event_loop.exit();
+                return;
+            }
+            WindowEvent::RedrawRequested => return self.redraw(event_loop),
+            WindowEvent::Resized(size) => {
+                if size.width > 0 && size.height > 0 {
+                    self.app.reshape(size.width, size.height);
+                    control.post_redisplay();
+                }
+            }
+            WindowEvent::CursorMoved { position, .. } => {
+                let (x, y) = (position.x as f32, position.y as f32);
+                self.cursor = (x, y);
+                if self.buttons != 0 {
+                    self.app.motion(x, y, &mut control);
+                }
+            }
+            WindowEvent::MouseInput { state, button, .. } => {
+                let (button, bit) = match button {
+                    winit::event::MouseButton::Left => (MouseButton::Left, 1),
+                    winit::event::MouseButton::Middle => (MouseButton::Middle, 2),
+                    winit::event::MouseButton::Right => (MouseButton::Right, 4),
+                    _ => return,
+                };
+                let pressed = state == ElementState::Pressed;
+                if pressed {
+                    self.buttons |= bit;
+                } else {
+                    self.buttons &= !bit;
+                }
+                self.app.mouse(button, pressed, self.cursor.0, self.cursor.1, &mut control);
+            }
+            WindowEvent::KeyboardInput {
+                event: KeyEvent { logical_key, state: ElementState::Pressed, .. },
+                ..
+            } => {
+                let key = match &logical_key {
+                    Key::Named(NamedKey::Escape) => Some('\x1b'),
+                    Key::Named(NamedKey::Space) => Some(' '),
+                    Key::Named(NamedKey::Enter) => Some('\r'),
+                    Key::Named(NamedKey::Tab) => Some('\t'),
+                    Key::Named(NamedKey::Backspace) => Some('\x08'),
+                    Key::Character(s) => s.chars().next(),
+                    _ => None,
+                };
+                if let Some(key) = key {
+                    self.app.keyboard(key, self.cursor.0, self.cursor.1, &mut control);
+                }
+            }
+            _ => return,
+        }
+        self.control(event_loop, control);
+    }
+
+    fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        if self.open.is_none() {
+            return;
+        }
+        let now = Instant::now();
+        let dt = self.last_idle.map_or(0.0, |t| now.duration_since(t).as_secs_f32());
+        self.last_idle = Some(now);
+        let mut control = Control::new();
+        self.app.idle(dt, &mut control);
+        // GLUT calls idle() whenever nothing else happens: keep polling while the app animates,
+        // sleep until the next event when it does not.
+        event_loop.set_control_flow(if control.redisplay_requested() {
+            ControlFlow::Poll
+        } else {
+            self.last_idle = None;
+            ControlFlow::Wait
+        });
+        self.control(event_loop, control);
+    }
+}
+
+/// Opens the window and runs the event loop until the app quits, the window closes or the frame
+/// limit is reached. [`Outcome::NoDisplay`] when no window could be opened.
+pub(crate) fn run<A: App>(app: &mut A, shared: &mut Shared) -> Outcome {
+    // winit panics (instead of returning an error) when the event loop is created off the main
+    // thread on Linux: that, too, means "no window here".
+    let event_loop = match std::panic::catch_unwind(EventLoop::new) {
+        Ok(Ok(l)) => l,
+        Ok(Err(e)) => return Outcome::NoDisplay(e.to_string()),
+        Err(_) => {
+            return Outcome::NoDisplay(
+                "the window's event loop can only run on the main thread".to_owned(),
+            );
+        }
+    };
+    event_loop.set_control_flow(ControlFlow::Wait);
+    let mut shell = Shell {
+        app,
+        shared,
+        open: None,
+        cursor: (0.0, 0.0),
+        buttons: 0,
+        last_idle: None,
+        last_frame: None,
+        last_status: String::new(),
+        frames: 0,
+        frame_ms: 0.0,
+        outcome: Outcome::Done,
+    };
+    if let Err(e) = event_loop.run_app(&mut shell) {
+        if shell.frames == 0 && matches!(shell.outcome, Outcome::Done) {
+            return Outcome::NoDisplay(e.to_string());
+        }
+        return Outcome::Failed(ViewerError::Window(e.to_string()));
+    }
+    if matches!(shell.outcome, Outcome::Done)
+        && let Some(path) = shell.shared.options.screenshot.clone()
+        && let Some((image, source)) = shell.screenshot()
+    {
+        let status = format!("{} source={source}", shell.last_status);
+        if let Err(e) = shell.shared.save(&path, &image, &status) {
+            return Outcome::Failed(e);
+        }
+    }
+    shell.outcome
+}
