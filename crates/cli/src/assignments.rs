@@ -168,6 +168,18 @@ pub struct ViewArgs {
     /// The folder for the PNG files / PNG を保存するフォルダ
     #[arg(short, long, default_value = "out")]
     output: PathBuf,
+    /// Draw PNG files even when a window could be opened / ウィンドウを開けても PNG に描画する
+    #[arg(long)]
+    png: bool,
+    /// Window: close after this many frames / ウィンドウ: このフレーム数で閉じる
+    #[arg(long, value_name = "N")]
+    frames: Option<u64>,
+    /// Window: save the last frame (and the s key's) here / ウィンドウ: 最後のフレーム（と s キー）の保存先
+    #[arg(long, value_name = "PNG")]
+    screenshot: Option<PathBuf>,
+    /// Window: start with the animation paused / ウィンドウ: アニメーションを止めて始める
+    #[arg(long)]
+    paused: bool,
 }
 
 fn view_scene(
@@ -218,11 +230,14 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
     if cfg!(feature = "reference") {
         sides.push((true, lang.pick("参考解答", "reference"), "reference"));
     }
+    if !args.png && cg_viewer::display_available() && std::env::var_os("CG_NO_WINDOW").is_none() {
+        return view_window(args, &a, &sides, lang);
+    }
     println!(
         "{}",
         lang.pick(
-            "ウィンドウ表示はビューアの完成後に使えます。いまは PNG に描画します:",
-            "The window arrives with the viewer; for now the views are drawn to PNG files:"
+            "PNG に描画します（ウィンドウは画面（DISPLAY）があるときに --png なしで開きます）:",
+            "Drawing to PNG files (a window opens when there is a display (DISPLAY) and no --png):"
         )
     );
     for (reference, label, file) in sides {
@@ -247,6 +262,51 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// `cg view` in a window: the student's result and the reference side by side, at the same time
+/// and from the same camera (assignment 2's camera is the student's own), animated.
+fn view_window(
+    args: &ViewArgs,
+    a: &Assignment,
+    sides: &[(bool, &str, &str)],
+    lang: Lang,
+) -> Result<(), String> {
+    let (which, warmup) = (args.which, args.warmup);
+    let sources: Vec<cg_viewer::Source> = sides
+        .iter()
+        .map(|&(reference, label, _)| {
+            let a = a.clone();
+            cg_viewer::Source {
+                label: label.to_owned(),
+                scene_at: Box::new(move |t| match view_scene(which, &a, reference, t, warmup) {
+                    Ok(Ok(scene)) => Ok(scene),
+                    Ok(Err(why)) => Err(why.get(lang).to_owned()),
+                    Err(Outcome::NotDone { message }) => Err(format!(
+                        "{}: {}",
+                        lang.pick("まだです", "not done yet"),
+                        cg_harness::check::stub_message(&message, lang)
+                    )),
+                    Err(other) => Err(format!("{other:?}")),
+                }),
+                own_camera: which == Which::A2 && !warmup,
+            }
+        })
+        .collect();
+    let name = if warmup { "a3-warmup" } else { which.id() };
+    let mut app = cg_viewer::SideBySide::new(name, sources, args.time)?;
+    app.view.paused = args.paused;
+    let options = cg_viewer::ViewerOptions {
+        frames: args.frames,
+        screenshot: args.screenshot.clone(),
+        out_dir: Some(args.output.clone()),
+        paused: args.paused,
+        lang,
+        ..cg_viewer::ViewerOptions::default()
+    };
+    cg_viewer::print_keys(lang);
+    let cpu = cg_viewer::CpuBackend { threads: None, lang };
+    cg_viewer::run_app(&mut app, vec![Box::new(cpu)], &options).map_err(|e| e.to_string())
 }
 
 /// `cg sync-stubs`: regenerates exercises/ from solutions/ (the kit's maintainers only).

@@ -196,6 +196,19 @@ pub fn main_job(lang: Lang) -> Result<(), String> {
             "Next: cargo run --release -- inspect (vertices, faces, normals, matrices), … render --help (other scenes and settings)"
         )
     );
+    // With a display, the course's program itself: the scene in a window, the sample's mouse
+    // mapping and keys (CG_NO_WINDOW=1 keeps to the PNGs).
+    if cg_viewer::display_available() && std::env::var_os("CG_NO_WINDOW").is_none() {
+        println!(
+            "{}",
+            lang.pick(
+                "ウィンドウで表示します（閉じると終了）:",
+                "Opening the viewer (close it to end):"
+            )
+        );
+        let options = cg_viewer::ViewerOptions { scene: Some(path), lang, ..Default::default() };
+        cg_viewer::run(&options).map_err(|e| e.to_string())?;
+    }
     Ok(())
 }
 

@@ -57,6 +57,7 @@
 pub mod app;
 pub mod backend;
 pub mod course;
+pub mod side;
 mod window;
 
 use std::path::{Path, PathBuf};
@@ -68,6 +69,7 @@ use cg_core::scene::Shading;
 pub use app::{App, Control};
 pub use backend::{Backend, CpuBackend, FrameRequest, to_0rgb, write_0rgb};
 pub use course::{CourseApp, LightChoice};
+pub use side::{SideBySide, Source};
 
 /// Why the viewer stopped with an error.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -159,7 +161,8 @@ pub fn run(options: &ViewerOptions) -> Result<(), ViewerError> {
     run_app(&mut app, vec![Box::new(cpu)], options)
 }
 
-fn print_keys(lang: Lang) {
+/// Prints the keys and drags the viewer understands.
+pub fn print_keys(lang: Lang) {
     println!("{}", lang.pick("操作:", "controls:"));
     for (key, what) in course::KEYS {
         println!("  {key:<12} {what}");
