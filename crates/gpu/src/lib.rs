@@ -64,6 +64,8 @@ use wgpu::util::DeviceExt;
 
 pub use error::GpuError;
 pub use shader::{enabled, shader_source};
+/// The wgpu this crate is built with, for callers that make surfaces and views.
+pub use wgpu;
 
 /// What to draw besides the scene: like the rasterizer's options.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
