@@ -93,3 +93,18 @@ impl From<PrepareError> for GpuError {
         GpuError::Prepare(e)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn no_adapter_says_what_to_do_in_both_languages() {
+        let e = GpuError::NoAdapter;
+        let both = e.to_string();
+        assert!(both.contains("no GPU adapter") && both.contains("GPU アダプタが見つかりません"));
+        assert!(e.message(Lang::En).contains("mesa-vulkan-drivers"));
+        assert!(!e.message(Lang::En).contains("アダプタ"));
+        assert!(e.message(Lang::Ja).contains("lavapipe") && !e.message(Lang::Ja).contains("found"));
+    }
+}

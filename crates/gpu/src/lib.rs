@@ -196,6 +196,8 @@ pub struct Frame {
     clear: wgpu::Color,
     pipeline: wgpu::RenderPipeline,
     frame_bind_group: wgpu::BindGroup,
+    frame_buffer: wgpu::Buffer,
+    light_count: u32,
     draws: Vec<DrawCall>,
     depth: wgpu::TextureView,
 }
@@ -335,6 +337,27 @@ impl Gpu {
     /// that cannot be prepared, a missing texture, a non-finite vertex, or an error wgpu reports.
     pub fn render(&self, scene: &Scene, options: &Options) -> Result<Output, GpuError> {
         let frame = self.frame(scene, options, READBACK_FORMAT)?;
+        let image = self.read_back(&frame)?;
+        Ok(Output {
+            image,
+            features: frame.features,
+            shading: frame.shading,
+            enabled: enabled(&frame.features),
+            shader: frame.shader,
+        })
+    }
+
+    /// Draws `frame` (made for [`READBACK_FORMAT`]) into a new texture and reads it back.
+    ///
+    /// # Errors
+    /// [`GpuError::Wgpu`] for a frame of another format, or an error wgpu reports.
+    pub fn read_back(&self, frame: &Frame) -> Result<Image, GpuError> {
+        if frame.format != READBACK_FORMAT {
+            return Err(GpuError::Wgpu(format!(
+                "read_back needs a frame made for {READBACK_FORMAT:?}, not {:?}",
+                frame.format
+            )));
+        }
         let (width, height) = (frame.width, frame.height);
         let target = self.device.create_texture(&wgpu::TextureDescriptor {
             label: Some("cg-gpu target"),
@@ -348,7 +371,7 @@ impl Gpu {
         });
         let view = target.create_view(&wgpu::TextureViewDescriptor::default());
         let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
-        self.render_to_view(&frame, &view);
+        self.render_to_view(frame, &view);
         let row = width * 4;
         let padded =
             row.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
@@ -401,15 +424,8 @@ impl Gpu {
                 .collect()
         };
         readback.unmap();
-        let image = Image::from_rgba8(width, height, &pixels)
-            .ok_or_else(|| GpuError::Wgpu("readback size mismatch".into()))?;
-        Ok(Output {
-            image,
-            features: frame.features,
-            shading: frame.shading,
-            enabled: enabled(&frame.features),
-            shader: frame.shader,
-        })
+        Image::from_rgba8(width, height, &pixels)
+            .ok_or_else(|| GpuError::Wgpu("readback size mismatch".into()))
     }
 
     /// Draws `frame` into `view` (a texture view of `frame.format`, `frame.width ×
@@ -466,11 +482,6 @@ impl Gpu {
         let (width, height) = options.size.unwrap_or((scene.width, scene.height));
         check_size(width, height)?;
         let shading = options.shading.unwrap_or(scene.shading);
-        let view = scene.view_product().and_then(|v| v.matrix()).map_err(GpuError::Camera)?;
-        let projection =
-            scene.projection_matrix_for(width, height).map_err(GpuError::Projection)?;
-        let backward = try_normalize(Vec3::new(view.x_axis.z, view.y_axis.z, view.z_axis.z))
-            .unwrap_or(Vec3::Z);
         let mut features = scene.features();
         features.reflection = false;
         features.transmission = false;
@@ -480,29 +491,19 @@ impl Gpu {
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
 
         // Frame uniforms and lights.
+        let uniform = frame_uniform(scene, width, height)?;
         let lecture = matches!(scene.light_model, LightModel::Lecture { .. });
-        let ambient = if lecture {
-            scene.lights.iter().fold(scene.global_ambient, |sum, l| sum + l.ambient)
-        } else {
-            scene.global_ambient
-        };
         let lights: Vec<GpuLight> = scene
             .lights
             .iter()
             .flat_map(Light::point_lights)
             .map(|l| gpu_light(&l, lecture))
             .collect();
-        let uniform = FrameUniform {
-            view_proj: (projection * view).to_cols_array_2d(),
-            eye: scene.camera.eye_position().extend(1.0).to_array(),
-            backward: backward.extend(0.0).to_array(),
-            ambient: ambient.extend(1.0).to_array(),
-            light_count: [lights.len() as u32, 0, 0, 0],
-        };
+        let uniform = FrameUniform { light_count: [lights.len() as u32, 0, 0, 0], ..uniform };
         let frame_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("cg-gpu frame"),
             contents: bytemuck::bytes_of(&uniform),
-            usage: wgpu::BufferUsages::UNIFORM,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
         });
         let light_data = if lights.is_empty() { vec![GpuLight::default()] } else { lights };
         let light_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -660,18 +661,7 @@ impl Gpu {
             textured: features.textures,
             format,
         });
-        let depth = device
-            .create_texture(&wgpu::TextureDescriptor {
-                label: Some("cg-gpu depth"),
-                size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format: DEPTH_FORMAT,
-                usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-                view_formats: &[],
-            })
-            .create_view(&wgpu::TextureViewDescriptor::default());
+        let depth = self.depth_buffer(width, height);
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(GpuError::Wgpu(e.to_string()));
         }
@@ -686,9 +676,54 @@ impl Gpu {
             clear: wgpu::Color { r: c.x.into(), g: c.y.into(), b: c.z.into(), a: 1.0 },
             pipeline,
             frame_bind_group,
+            frame_buffer,
+            light_count: uniform.light_count[0],
             draws,
             depth,
         })
+    }
+
+    /// Moves `frame` to `scene`'s current camera and projection at `width × height` pixels (a
+    /// window's orbit drag or resize), without rebuilding it: rewrites the frame's uniforms and,
+    /// for a new size, its depth buffer. Objects, materials and lights stay as they were when
+    /// the frame was made; for changed geometry make a new frame with [`Gpu::frame`].
+    ///
+    /// # Errors
+    /// A zero or too large size, an invalid camera or projection.
+    pub fn update_view(
+        &self,
+        frame: &mut Frame,
+        scene: &Scene,
+        width: u32,
+        height: u32,
+    ) -> Result<(), GpuError> {
+        check_size(width, height)?;
+        let uniform = FrameUniform {
+            light_count: [frame.light_count, 0, 0, 0],
+            ..frame_uniform(scene, width, height)?
+        };
+        self.queue.write_buffer(&frame.frame_buffer, 0, bytemuck::bytes_of(&uniform));
+        if (width, height) != (frame.width, frame.height) {
+            frame.depth = self.depth_buffer(width, height);
+            frame.width = width;
+            frame.height = height;
+        }
+        Ok(())
+    }
+
+    fn depth_buffer(&self, width: u32, height: u32) -> wgpu::TextureView {
+        self.device
+            .create_texture(&wgpu::TextureDescriptor {
+                label: Some("cg-gpu depth"),
+                size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: DEPTH_FORMAT,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+                view_formats: &[],
+            })
+            .create_view(&wgpu::TextureViewDescriptor::default())
     }
 
     fn upload_texture(&self, width: u32, height: u32, texels: &[[u8; 4]]) -> wgpu::TextureView {
@@ -806,6 +841,29 @@ impl Gpu {
         cache.insert(key, pipeline.clone());
         pipeline
     }
+}
+
+/// The frame's uniforms for `scene` at `width × height` (the light count left 0): the
+/// rasterizer's view, projection, eye, backward axis (the infinite viewer's V) and ambient sum.
+fn frame_uniform(scene: &Scene, width: u32, height: u32) -> Result<FrameUniform, GpuError> {
+    let view = scene.view_product().and_then(|v| v.matrix()).map_err(GpuError::Camera)?;
+    let projection = scene.projection_matrix_for(width, height).map_err(GpuError::Projection)?;
+    // Camera +Z in world space: the third row of the view rotation.
+    let backward =
+        try_normalize(Vec3::new(view.x_axis.z, view.y_axis.z, view.z_axis.z)).unwrap_or(Vec3::Z);
+    // Lecture: ka·(Ia + Σ Ia,i) unattenuated; OpenGL: the global ambient here, per light in the loop.
+    let ambient = if matches!(scene.light_model, LightModel::Lecture { .. }) {
+        scene.lights.iter().fold(scene.global_ambient, |sum, l| sum + l.ambient)
+    } else {
+        scene.global_ambient
+    };
+    Ok(FrameUniform {
+        view_proj: (projection * view).to_cols_array_2d(),
+        eye: scene.camera.eye_position().extend(1.0).to_array(),
+        backward: backward.extend(0.0).to_array(),
+        ambient: ambient.extend(1.0).to_array(),
+        light_count: [0; 4],
+    })
 }
 
 /// A point light (or an area-light sample) as the shader reads it.
