@@ -238,6 +238,8 @@ fn errors_name_what_is_wrong() {
 
 /// Time per frame on this adapter, printed (no bound: CI machines differ): the whole headless
 /// render with readback, and the window path (a prepared [`cg_gpu::Frame`] drawn again).
+/// Measured with `--release` on lavapipe, 2 cores, 640 × 640: course-sample 6.1 ms (render +
+/// readback) and 3.2 ms (redraw); sphere-phong (Phong shading per pixel) 13.6 ms and 9.7 ms.
 #[test]
 fn time_per_frame() {
     let Some(gpu) = gpu() else { return };
