@@ -305,8 +305,8 @@ fn view_window(
         ..cg_viewer::ViewerOptions::default()
     };
     cg_viewer::print_keys(lang);
-    let cpu = cg_viewer::CpuBackend { threads: None, lang };
-    cg_viewer::run_app(&mut app, vec![Box::new(cpu)], &options).map_err(|e| e.to_string())
+    let backends = cg_viewer::default_backends(None, lang);
+    cg_viewer::run_app(&mut app, backends, &options).map_err(|e| e.to_string())
 }
 
 /// `cg sync-stubs`: regenerates exercises/ from solutions/ (the kit's maintainers only).

@@ -18,6 +18,8 @@ pub enum Renderer {
     Raster,
     /// The Whitted ray tracer (shadows, k_r·I_r, k_t·I_t) / レイトレーシング
     Trace,
+    /// The GPU renderer (wgpu; WGSL generated for the scene's features) / GPU レンダラ
+    Gpu,
 }
 
 /// Fresnel reflectance on the command line.
@@ -277,6 +279,25 @@ fn draw(
             // What the tracer did: it traces Gouraud as Phong, and says so.
             Ok(Rendered { image: out.image, shading: out.shading, millis, report })
         }
+        Renderer::Gpu => {
+            let gpu = cg_gpu::Gpu::new().map_err(|e| e.message(lang))?;
+            let setup = start.elapsed().as_secs_f64() * 1e3;
+            let start = Instant::now();
+            let out = cg_gpu::Gpu::render(&gpu, scene, &cg_gpu::Options { shading, size })
+                .map_err(|e| e.message(lang))?;
+            let millis = start.elapsed().as_secs_f64() * 1e3;
+            let mut report = report(&out.features, Vec::<(String, u64)>::new(), lang);
+            let _ = writeln!(
+                report,
+                "  {}: {}\n  {}: {}\n  {}: {setup:.1} ms",
+                lang.pick("アダプタ", "adapter"),
+                gpu.adapter_info(),
+                lang.pick("シェーダに含めたもの", "in the generated shader"),
+                out.enabled.join(", "),
+                lang.pick("デバイスの準備", "device set-up"),
+            );
+            Ok(Rendered { image: out.image, shading: out.shading, millis, report })
+        }
     }
 }
 
@@ -288,7 +309,9 @@ fn report<N: std::fmt::Display>(features: &Features, counts: Vec<(N, u64)>, lang
     }
     let counts: Vec<String> =
         counts.into_iter().filter(|(_, n)| *n > 0).map(|(name, n)| format!("{name} {n}")).collect();
-    let _ = writeln!(out, "  {}: {}", lang.pick("処理", "work"), counts.join(", "));
+    if !counts.is_empty() {
+        let _ = writeln!(out, "  {}: {}", lang.pick("処理", "work"), counts.join(", "));
+    }
     out
 }
 
@@ -309,6 +332,7 @@ fn renderer_name(r: Renderer) -> &'static str {
     match r {
         Renderer::Raster => "raster",
         Renderer::Trace => "trace",
+        Renderer::Gpu => "gpu",
     }
 }
 
@@ -316,6 +340,7 @@ fn renderer_label(r: Renderer, lang: Lang) -> &'static str {
     match r {
         Renderer::Raster => lang.pick("CPU ラスタライザ", "CPU rasterizer"),
         Renderer::Trace => lang.pick("レイトレーサ（Whitted）", "Whitted ray tracer"),
+        Renderer::Gpu => lang.pick("GPU レンダラ（wgpu）", "GPU renderer (wgpu)"),
     }
 }
 

@@ -29,7 +29,7 @@ pub const KEYS: &[(&str, &str)] = &[
     ("left-drag", "distance (up/down)"),
     ("f / g / p", "flat / Gouraud / Phong shading"),
     ("l", "lecture / OpenGL light model"),
-    ("r", "next renderer (only the CPU rasterizer in this build)"),
+    ("r", "next renderer (CPU rasterizer / GPU, when an adapter exists)"),
     ("space", "pause / resume the animation"),
     ("s", "save a screenshot (PNG)"),
     ("q / Esc", "quit"),

@@ -67,7 +67,9 @@ use cg_core::lang::Lang;
 use cg_core::scene::Shading;
 
 pub use app::{App, Control};
-pub use backend::{Backend, CpuBackend, FrameRequest, to_0rgb, write_0rgb};
+pub use backend::{
+    Backend, CpuBackend, FrameRequest, GpuBackend, default_backends, to_0rgb, write_0rgb,
+};
 pub use course::{CourseApp, LightChoice};
 pub use side::{SideBySide, Source};
 
@@ -157,8 +159,13 @@ pub fn run(options: &ViewerOptions) -> Result<(), ViewerError> {
     }
     app.paused = options.paused;
     print_keys(options.lang);
-    let cpu = CpuBackend { threads: options.threads, lang: options.lang };
-    run_app(&mut app, vec![Box::new(cpu)], options)
+    let backends = if options.headless || !display_available() {
+        vec![Box::new(CpuBackend { threads: options.threads, lang: options.lang })
+            as Box<dyn Backend>]
+    } else {
+        default_backends(options.threads, options.lang)
+    };
+    run_app(&mut app, backends, options)
 }
 
 /// Prints the keys and drags the viewer understands.
@@ -279,8 +286,8 @@ impl Shared {
             println!(
                 "{} {}",
                 self.options.lang.pick(
-                    "使えるレンダラは CPU ラスタライザだけです（GPU レンダラはまだ組み込まれていません）:",
-                    "only one renderer is available (the GPU renderer is not built in yet):"
+                    "使えるレンダラは 1 つだけです（GPU のアダプタがありません）:",
+                    "only one renderer is available (no GPU adapter was found):"
                 ),
                 self.backend().name()
             );
