@@ -5,9 +5,50 @@
 //! read-only except for the folders it is given, and nothing else to start. How much of that the
 //! machine can enforce is [`Isolation`]: [`detect`] picks the strongest available and
 //! [`Isolation::describe`] says what it does and does not enforce.
+//!
+//! ## How
+//!
+//! - **Limits** come from `prlimit` (util-linux) around the whole run: address space
+//!   ([`Limits::memory_bytes`]), the size of a file it writes (the same number), no core
+//!   dumps. rlimits are inherited, so under bubblewrap `prlimit` wraps `bwrap` itself and the
+//!   sandbox holds no tool at all. Without `prlimit` (not a Debian/Ubuntu system) only the wall
+//!   clock and the output limit hold: [`prlimit_available`] tells.
+//! - **Wall clock**: the run starts in its own process group; past [`Limits::wall`] the group is
+//!   killed (`kill -KILL -PGID`, and the leader through [`std::process::Child::kill`]). Under
+//!   bubblewrap the program also lives in its own PID namespace that dies with `bwrap`
+//!   (`--die-with-parent`), so nothing it started survives.
+//! - **Output**: stdout and stderr are read on threads; [`Limits::output_bytes`] of each are
+//!   kept, the rest is read and dropped ([`Run::output_cut`]), so a program that prints without
+//!   end cannot block on a full pipe or fill the memory of the grader.
+//! - **Bubblewrap** ([`Isolation::Bubblewrap`]): a new root holding only `/lib*` and
+//!   `/usr/lib*` (read-only: the dynamic loader and the libraries), the program (read-only),
+//!   [`Job::read_only`] (read-only), [`Job::workdir`] (writable), a private `/tmp`, a minimal
+//!   `/dev`, no `/proc`; the root itself is read-only. No `/bin`, `/usr/bin` or `/sbin`: there
+//!   is no shell or other tool to start. Every namespace is new (no network: only a loopback
+//!   without addresses), the user inside is `nobody` (65534) with no capabilities, a new
+//!   session (no terminal), and the environment is only [`Job::env`] plus `HOME`.
+//!
+//! ## Environment
+//!
+//! The program gets [`Job::env`], plus `HOME` = the work folder and `MALLOC_ARENA_MAX=2` unless
+//! the job sets them. The latter keeps glibc from reserving 64 MiB of address space per thread
+//! arena, which would count against the memory limit for a multi-threaded program that uses
+//! little memory.
+//!
+//! ## Exit status under bubblewrap
+//!
+//! `bwrap` reports a program killed by signal *n* as the exit status 128 + *n*; [`run`] reads
+//! 129 to 192 back as [`Ended::Signalled`] (a program that calls `exit(134)` itself is taken
+//! for one killed by signal 6).
 
-use std::path::PathBuf;
-use std::time::Duration;
+use std::ffi::OsString;
+use std::io::Read;
+use std::os::unix::process::CommandExt;
+use std::path::{Path, PathBuf};
+use std::process::{Command, ExitStatus, Stdio};
+use std::sync::OnceLock;
+use std::sync::mpsc;
+use std::time::{Duration, Instant};
 
 use cg_core::lang::Lang;
 
@@ -18,6 +59,8 @@ pub enum Isolation {
     /// bound in, private /tmp, no network, own PID namespace; plus the rlimits.
     Bubblewrap,
     /// rlimits only (prlimit): time, memory, file size; no file-system or network isolation.
+    /// Without `prlimit` on the machine, only the wall clock and the output limit
+    /// ([`prlimit_available`]).
     Limits,
 }
 
@@ -42,10 +85,76 @@ impl Isolation {
     }
 }
 
-/// The strongest isolation this machine offers (checked by running a trivial program).
+/// The strongest isolation this machine offers, checked by running `/bin/true` under
+/// bubblewrap exactly as [`run`] would (bubblewrap present but not allowed to create
+/// namespaces, as in many containers, gives [`Isolation::Limits`]). The answer is computed once
+/// per process and then remembered.
 #[must_use]
 pub fn detect() -> Isolation {
-    Isolation::Limits
+    static DETECTED: OnceLock<Isolation> = OnceLock::new();
+    *DETECTED
+        .get_or_init(|| if bubblewrap_works() { Isolation::Bubblewrap } else { Isolation::Limits })
+}
+
+/// Whether `prlimit` (util-linux) is on this machine, i.e. whether the memory and file-size
+/// limits are enforced. Without it, only the wall clock and the output limit hold.
+#[must_use]
+pub fn prlimit_available() -> bool {
+    tool("prlimit").is_some()
+}
+
+/// Runs `/bin/true` under bubblewrap in a fresh empty folder.
+fn bubblewrap_works() -> bool {
+    if tool("bwrap").is_none() {
+        return false;
+    }
+    let Some(program) =
+        ["/bin/true", "/usr/bin/true"].into_iter().map(PathBuf::from).find(|p| p.is_file())
+    else {
+        return false;
+    };
+    let Ok(workdir) = fresh_dir("detect") else {
+        return false;
+    };
+    let job = Job {
+        program,
+        args: Vec::new(),
+        workdir: workdir.clone(),
+        read_only: Vec::new(),
+        env: Vec::new(),
+    };
+    let limits = Limits { wall: Duration::from_secs(20), ..Limits::default() };
+    let ok = matches!(
+        run(&job, &limits, Isolation::Bubblewrap),
+        Ok(Run { ended: Ended::Exited(0), .. })
+    );
+    let _ = std::fs::remove_dir_all(&workdir);
+    ok
+}
+
+/// A new empty folder under the system's temporary folder.
+fn fresh_dir(what: &str) -> std::io::Result<PathBuf> {
+    static COUNT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let n = COUNT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("cg-sandbox-{what}-{}-{n}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir)?;
+    Ok(dir)
+}
+
+/// A system tool by name: the first executable file of that name on `PATH`, then in the usual
+/// system folders (a grader started with an empty `PATH` still finds them).
+fn tool(name: &str) -> Option<PathBuf> {
+    let path = std::env::var_os("PATH").unwrap_or_default();
+    std::env::split_paths(&path)
+        .chain(
+            ["/usr/bin", "/bin", "/usr/sbin", "/sbin", "/usr/local/bin"]
+                .into_iter()
+                .map(PathBuf::from),
+        )
+        .filter(|d| d.is_absolute())
+        .map(|d| d.join(name))
+        .find(|p| p.is_file())
 }
 
 /// What a run may do.
@@ -53,7 +162,8 @@ pub fn detect() -> Isolation {
 pub struct Limits {
     /// Wall-clock time; the process group is killed after it.
     pub wall: Duration,
-    /// Address space in bytes.
+    /// Address space in bytes (`RLIMIT_AS`). Also the largest file the program may write
+    /// (`RLIMIT_FSIZE`; a write beyond it fails, or `SIGXFSZ` ends the program).
     pub memory_bytes: u64,
     /// Bytes of stdout and of stderr kept; the rest is dropped (and the run marked).
     pub output_bytes: usize,
@@ -121,14 +231,316 @@ pub enum SandboxError {
     },
 }
 
+/// A [`SandboxError::Start`] for `program`.
+fn start_error(program: &Path, message: impl Into<String>) -> SandboxError {
+    SandboxError::Start { program: program.display().to_string(), message: message.into() }
+}
+
+/// The folders of the dynamic loader and the system libraries, bound read-only under
+/// bubblewrap (or recreated as the symbolic links they are, on a merged-`/usr` system).
+const LIBRARY_DIRS: [&str; 8] =
+    ["/lib", "/lib64", "/lib32", "/libx32", "/usr/lib", "/usr/lib64", "/usr/lib32", "/usr/libx32"];
+
+/// How long [`run`] waits for the output of a finished program when something it started
+/// outside the process group still holds its pipes (possible only under [`Isolation::Limits`]).
+const OUTPUT_GRACE: Duration = Duration::from_millis(500);
+
 /// Runs `job` under `limits` with `isolation`.
 ///
+/// The program's stdin is empty; its stdout and stderr are captured (up to
+/// [`Limits::output_bytes`] each). Returns once the program has ended (or was killed at the
+/// wall-clock limit) and its output is read.
+///
 /// # Errors
-/// The program could not be started at all.
+/// The program could not be started at all: it is not a file, the work folder or a read-only
+/// folder does not exist, or `bwrap` (for [`Isolation::Bubblewrap`]) is missing.
 pub fn run(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Run, SandboxError> {
-    let _ = (job, limits, isolation);
-    Err(SandboxError::Start {
-        program: job.program.display().to_string(),
-        message: "arrives with the sandbox".into(),
-    })
+    let program = job
+        .program
+        .canonicalize()
+        .ok()
+        .filter(|p| p.is_file())
+        .ok_or_else(|| start_error(&job.program, "no such program file"))?;
+    let workdir = job.workdir.canonicalize().ok().filter(|p| p.is_dir()).ok_or_else(|| {
+        start_error(&job.program, format!("no work folder {}", job.workdir.display()))
+    })?;
+    let mut read_only = Vec::new();
+    for dir in &job.read_only {
+        let canon = dir.canonicalize().map_err(|e| {
+            start_error(&job.program, format!("read-only folder {}: {e}", dir.display()))
+        })?;
+        read_only.push(canon);
+    }
+    let mut env = job.env.clone();
+    for (key, value) in
+        [("HOME", workdir.display().to_string()), ("MALLOC_ARENA_MAX", "2".to_owned())]
+    {
+        if !env.iter().any(|(k, _)| k == key) {
+            env.push((key.to_owned(), value));
+        }
+    }
+
+    // prlimit first: its limits are inherited by bwrap and by everything inside.
+    let mut argv: Vec<OsString> = Vec::new();
+    if let Some(prlimit) = tool("prlimit") {
+        argv.push(prlimit.into());
+        argv.push(format!("--as={}", limits.memory_bytes).into());
+        argv.push(format!("--fsize={}", limits.memory_bytes).into());
+        argv.push("--core=0".into());
+        argv.push("--".into());
+    }
+    match isolation {
+        Isolation::Bubblewrap => {
+            let bwrap = tool("bwrap")
+                .ok_or_else(|| start_error(&job.program, "bwrap (bubblewrap) is not installed"))?;
+            argv.push(bwrap.into());
+            argv.extend(bwrap_args(&program, &workdir, &read_only, &env));
+            argv.push("--".into());
+            argv.push(program.clone().into());
+        }
+        Isolation::Limits => argv.push(program.clone().into()),
+    }
+    argv.extend(job.args.iter().map(OsString::from));
+
+    let mut command = Command::new(&argv[0]);
+    command
+        .args(&argv[1..])
+        .current_dir(&workdir)
+        .env_clear()
+        .envs(env.iter().map(|(k, v)| (k, v)))
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .process_group(0);
+    let started = Instant::now();
+    let mut child = command.spawn().map_err(|e| {
+        start_error(&job.program, format!("{}: {e}", Path::new(&argv[0]).display()))
+    })?;
+    let cap = limits.output_bytes;
+    let stdout = child.stdout.take().map(|r| reader(r, cap));
+    let stderr = child.stderr.take().map(|r| reader(r, cap));
+
+    let deadline = started + limits.wall;
+    let mut pause = Duration::from_millis(1);
+    let (status, timed_out) = loop {
+        match child.try_wait() {
+            Ok(Some(status)) => break (Some(status), false),
+            Ok(None) => {}
+            Err(_) => break (None, false),
+        }
+        let now = Instant::now();
+        if now >= deadline {
+            // The leader is not reaped yet, so its group ID cannot have been reused.
+            kill_group(child.id());
+            let _ = child.kill();
+            break (child.wait().ok(), true);
+        }
+        std::thread::sleep(pause.min(deadline - now));
+        pause = (pause * 2).min(Duration::from_millis(20));
+    };
+    let wall = started.elapsed();
+    // Anything left in the group (under Limits: children it started) goes too; it would
+    // otherwise keep the pipes open.
+    kill_group(child.id());
+
+    let grace = Instant::now() + OUTPUT_GRACE;
+    let (stdout, cut_out) = collect(stdout, grace);
+    let (stderr, cut_err) = collect(stderr, grace);
+    let ended = if timed_out {
+        Ended::TimedOut
+    } else {
+        match status {
+            Some(status) => ended(status, isolation),
+            None => Ended::Signalled(9),
+        }
+    };
+    Ok(Run { ended, stdout, stderr, output_cut: cut_out || cut_err, wall, isolation })
+}
+
+/// The arguments of `bwrap` for one run (without the final `-- program args`).
+fn bwrap_args(
+    program: &Path,
+    workdir: &Path,
+    read_only: &[PathBuf],
+    env: &[(String, String)],
+) -> Vec<OsString> {
+    let mut a: Vec<OsString> = Vec::new();
+    let mut push = |items: &[&std::ffi::OsStr]| a.extend(items.iter().map(|s| s.to_os_string()));
+    push(&[
+        "--unshare-all".as_ref(),
+        "--unshare-user".as_ref(),
+        "--uid".as_ref(),
+        "65534".as_ref(),
+        "--gid".as_ref(),
+        "65534".as_ref(),
+        "--cap-drop".as_ref(),
+        "ALL".as_ref(),
+        "--die-with-parent".as_ref(),
+        "--new-session".as_ref(),
+        "--clearenv".as_ref(),
+    ]);
+    for dir in LIBRARY_DIRS {
+        let path = Path::new(dir);
+        match std::fs::symlink_metadata(path) {
+            Ok(m) if m.file_type().is_symlink() => {
+                if let Ok(target) = std::fs::read_link(path) {
+                    push(&["--symlink".as_ref(), target.as_os_str(), path.as_os_str()]);
+                }
+            }
+            Ok(m) if m.is_dir() => {
+                push(&["--ro-bind".as_ref(), path.as_os_str(), path.as_os_str()])
+            }
+            _ => {}
+        }
+    }
+    push(&["--tmpfs".as_ref(), "/tmp".as_ref(), "--dev".as_ref(), "/dev".as_ref()]);
+    // Outer folders first, so that a folder inside another is bound over it, not hidden by it.
+    let mut binds: Vec<(&Path, &str)> =
+        read_only.iter().map(|p| (p.as_path(), "--ro-bind")).collect();
+    binds.push((workdir, "--bind"));
+    binds.sort_by_key(|(p, _)| p.components().count());
+    for (path, how) in binds {
+        push(&[how.as_ref(), path.as_os_str(), path.as_os_str()]);
+    }
+    push(&["--ro-bind".as_ref(), program.as_os_str(), program.as_os_str()]);
+    push(&["--chdir".as_ref(), workdir.as_os_str()]);
+    for (k, v) in env {
+        push(&["--setenv".as_ref(), k.as_ref(), v.as_ref()]);
+    }
+    push(&["--remount-ro".as_ref(), "/".as_ref()]);
+    a
+}
+
+/// Kills the process group `pgid` with the `kill` tool (std has no safe `killpg`).
+fn kill_group(pgid: u32) {
+    if let Some(kill) = tool("kill") {
+        let _ = Command::new(kill)
+            .args(["-KILL", "--", &format!("-{pgid}")])
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .status();
+    }
+}
+
+/// How a finished program's status reads.
+fn ended(status: ExitStatus, isolation: Isolation) -> Ended {
+    use std::os::unix::process::ExitStatusExt;
+    if let Some(signal) = status.signal() {
+        return Ended::Signalled(signal);
+    }
+    match (status.code(), isolation) {
+        (Some(code @ 129..=192), Isolation::Bubblewrap) => Ended::Signalled(code - 128),
+        (Some(code), _) => Ended::Exited(code),
+        (None, _) => Ended::Signalled(9),
+    }
+}
+
+/// What a reader thread hands back: the bytes kept and whether some were dropped.
+type Captured = (Vec<u8>, bool);
+
+/// Reads `r` to its end on a thread, keeping the first `cap` bytes.
+fn reader(mut r: impl Read + Send + 'static, cap: usize) -> mpsc::Receiver<Captured> {
+    let (tx, rx) = mpsc::channel();
+    std::thread::spawn(move || {
+        let mut kept = Vec::new();
+        let mut cut = false;
+        let mut buf = vec![0u8; 64 << 10];
+        loop {
+            match r.read(&mut buf) {
+                Ok(0) => break,
+                Ok(n) => {
+                    let room = cap.saturating_sub(kept.len());
+                    if n > room {
+                        cut = true;
+                    }
+                    kept.extend_from_slice(&buf[..n.min(room)]);
+                }
+                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+                Err(_) => break,
+            }
+        }
+        let _ = tx.send((kept, cut));
+    });
+    rx
+}
+
+/// The output of a reader, waiting for it until `until` at most; text at most `cap` bytes.
+fn collect(rx: Option<mpsc::Receiver<Captured>>, until: Instant) -> (String, bool) {
+    let Some(rx) = rx else {
+        return (String::new(), false);
+    };
+    let wait = until.saturating_duration_since(Instant::now());
+    match rx.recv_timeout(wait) {
+        Ok((bytes, cut)) => text(bytes, cut),
+        // Still held open by something outside the group: what it kept is lost with it.
+        Err(_) => (String::new(), true),
+    }
+}
+
+/// Bytes as text of at most as many bytes: a character cut at the end is dropped, invalid
+/// bytes become U+FFFD (and the text is cut again if that made it longer).
+fn text(mut bytes: Vec<u8>, mut cut: bool) -> (String, bool) {
+    let cap = bytes.len();
+    if let Err(e) = std::str::from_utf8(&bytes)
+        && e.error_len().is_none()
+        && cut
+    {
+        bytes.truncate(e.valid_up_to());
+    }
+    let mut s = String::from_utf8_lossy(&bytes).into_owned();
+    if s.len() > cap {
+        let mut end = cap;
+        while !s.is_char_boundary(end) {
+            end -= 1;
+        }
+        s.truncate(end);
+        cut = true;
+    }
+    (s, cut)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn text_drops_a_character_cut_at_the_end() {
+        let bytes = "aé".as_bytes()[..2].to_vec();
+        assert_eq!(text(bytes, true), ("a".to_owned(), true));
+    }
+
+    #[test]
+    fn text_never_grows_past_what_was_kept() {
+        let (s, cut) = text(vec![b'a', 0xff, 0xff], false);
+        assert!(s.len() <= 3, "{s:?}");
+        assert!(s.starts_with('a'));
+        assert!(cut);
+    }
+
+    #[test]
+    fn outer_folders_are_bound_before_inner_ones() {
+        let args = bwrap_args(
+            Path::new("/p/prog"),
+            Path::new("/k/build/work"),
+            &[PathBuf::from("/k")],
+            &[("HOME".into(), "/k/build/work".into())],
+        );
+        let args: Vec<String> = args.iter().map(|a| a.to_string_lossy().into_owned()).collect();
+        let at = |x: &str| args.iter().position(|a| a == x).unwrap();
+        assert!(at("/k") < at("/k/build/work"), "{args:?}");
+        assert!(!args.iter().any(|a| a == "/usr/bin" || a == "/bin" || a == "/sbin"), "{args:?}");
+        assert!(args.windows(2).any(|w| w[0] == "--chdir" && w[1] == "/k/build/work"));
+        assert_eq!(args.last().map(String::as_str), Some("/"));
+    }
+
+    #[test]
+    fn a_signal_reported_by_bwrap_reads_as_a_signal() {
+        use std::os::unix::process::ExitStatusExt;
+        let exited = |code: i32| ExitStatus::from_raw(code << 8);
+        assert_eq!(ended(exited(134), Isolation::Bubblewrap), Ended::Signalled(6));
+        assert_eq!(ended(exited(134), Isolation::Limits), Ended::Exited(134));
+        assert_eq!(ended(exited(101), Isolation::Bubblewrap), Ended::Exited(101));
+        assert_eq!(ended(ExitStatus::from_raw(9), Isolation::Limits), Ended::Signalled(9));
+    }
 }
