@@ -26,7 +26,15 @@
 //!   `/dev`, no `/proc`; the root itself is read-only. No `/bin`, `/usr/bin` or `/sbin`: there
 //!   is no shell or other tool to start. Every namespace is new (no network: only a loopback
 //!   without addresses), the user inside is `nobody` (65534) with no capabilities, a new
-//!   session (no terminal), and the environment is only [`Job::env`] plus `HOME`.
+//!   session (no terminal), and the environment is only [`Job::env`] plus `HOME`. A seccomp
+//!   filter lets it start threads but no process (not even a copy of itself, whose file is in
+//!   the sandbox): `fork`, `vfork` and `clone` without `CLONE_THREAD` fail (x86_64 and
+//!   aarch64; elsewhere no filter). The filter reaches `bwrap` on the program's stdin, so the
+//!   program finds its stdin closed.
+//!
+//! Not limited: the number of threads, and CPU time beyond the wall clock (a program may keep
+//! every core busy until it is killed); under [`Isolation::Limits`], processes the program
+//! starts, other than through the process group, which is killed.
 //!
 //! ## Environment
 //!
@@ -42,7 +50,7 @@
 //! for one killed by signal 6).
 
 use std::ffi::OsString;
-use std::io::Read;
+use std::io::{Read, Write};
 use std::os::unix::process::CommandExt;
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitStatus, Stdio};
@@ -56,7 +64,8 @@ use cg_core::lang::Lang;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Isolation {
     /// bubblewrap: read-only root with only the program and its libraries, the writable folders
-    /// bound in, private /tmp, no network, own PID namespace; plus the rlimits.
+    /// bound in, private /tmp, no network, own PID namespace, no new processes (seccomp); plus
+    /// the rlimits.
     Bubblewrap,
     /// rlimits only (prlimit): time, memory, file size; no file-system or network isolation.
     /// Without `prlimit` on the machine, only the wall clock and the output limit
@@ -247,7 +256,7 @@ const OUTPUT_GRACE: Duration = Duration::from_millis(500);
 
 /// Runs `job` under `limits` with `isolation`.
 ///
-/// The program's stdin is empty; its stdout and stderr are captured (up to
+/// The program's stdin is empty (closed under bubblewrap); its stdout and stderr are captured (up to
 /// [`Limits::output_bytes`] each). Returns once the program has ended (or was killed at the
 /// wall-clock limit) and its output is read.
 ///
@@ -295,6 +304,9 @@ pub fn run(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Run, Sand
                 .ok_or_else(|| start_error(&job.program, "bwrap (bubblewrap) is not installed"))?;
             argv.push(bwrap.into());
             argv.extend(bwrap_args(&program, &workdir, &read_only, &env));
+            if no_new_processes_filter().is_some() {
+                argv.extend(["--seccomp".into(), "0".into()]);
+            }
             argv.push("--".into());
             argv.push(program.clone().into());
         }
@@ -302,13 +314,17 @@ pub fn run(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Run, Sand
     }
     argv.extend(job.args.iter().map(OsString::from));
 
+    let filter = match isolation {
+        Isolation::Bubblewrap => no_new_processes_filter(),
+        Isolation::Limits => None,
+    };
     let mut command = Command::new(&argv[0]);
     command
         .args(&argv[1..])
         .current_dir(&workdir)
         .env_clear()
         .envs(env.iter().map(|(k, v)| (k, v)))
-        .stdin(Stdio::null())
+        .stdin(if filter.is_some() { Stdio::piped() } else { Stdio::null() })
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .process_group(0);
@@ -316,6 +332,11 @@ pub fn run(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Run, Sand
     let mut child = command.spawn().map_err(|e| {
         start_error(&job.program, format!("{}: {e}", Path::new(&argv[0]).display()))
     })?;
+    if let (Some(filter), Some(mut stdin)) = (filter, child.stdin.take()) {
+        // bwrap reads it whole (`--seccomp 0`) before it starts the program; a few hundred
+        // bytes fit in the pipe, so this does not block.
+        let _ = stdin.write_all(&filter);
+    }
     let cap = limits.output_bytes;
     let stdout = child.stdout.take().map(|r| reader(r, cap));
     let stderr = child.stderr.take().map(|r| reader(r, cap));
@@ -409,6 +430,67 @@ fn bwrap_args(
     }
     push(&["--remount-ro".as_ref(), "/".as_ref()]);
     a
+}
+
+/// The system call numbers and audit architecture the filter of
+/// [`no_new_processes_filter`] needs: `(arch, clone, clone3, [fork, vfork])`.
+#[cfg(target_arch = "x86_64")]
+const SYSCALLS: Option<(u32, u32, u32, &[u32])> = Some((0xC000_003E, 56, 435, &[57, 58]));
+#[cfg(target_arch = "aarch64")]
+const SYSCALLS: Option<(u32, u32, u32, &[u32])> = Some((0xC000_00B7, 220, 435, &[]));
+#[cfg(not(any(target_arch = "x86_64", target_arch = "aarch64")))]
+const SYSCALLS: Option<(u32, u32, u32, &[u32])> = None;
+
+/// A seccomp program (classic BPF, as `bwrap --seccomp` reads it) that lets the program start
+/// threads but no processes: `clone` without `CLONE_THREAD`, `fork` and `vfork` fail with
+/// `EPERM`, `clone3` with `ENOSYS` (glibc then falls back to `clone`, whose flags the filter can
+/// read); a system call of another architecture ends the program. Without it, a program could
+/// start copies of itself (its own file is in the sandbox, so it can be executed), say a fork
+/// bomb. `None` on architectures the filter does not know (then only bubblewrap's other walls
+/// hold).
+fn no_new_processes_filter() -> Option<Vec<u8>> {
+    const LD_W_ABS: u16 = 0x20;
+    const JEQ_K: u16 = 0x15;
+    const JGE_K: u16 = 0x35;
+    const JSET_K: u16 = 0x45;
+    const RET_K: u16 = 0x06;
+    const ALLOW: u32 = 0x7fff_0000;
+    const KILL_PROCESS: u32 = 0x8000_0000;
+    const EPERM: u32 = 0x0005_0000 | 1;
+    const ENOSYS: u32 = 0x0005_0000 | 38;
+    const CLONE_THREAD: u32 = 0x0001_0000;
+    // x32 system calls on x86_64 carry this bit; none is allowed.
+    const X32_BIT: u32 = 0x4000_0000;
+    let (arch, clone, clone3, forks) = SYSCALLS?;
+    // (code, jump if true, jump if false, k); jumps count the instructions skipped.
+    let mut p: Vec<(u16, u8, u8, u32)> = vec![
+        (LD_W_ABS, 0, 0, 4), // seccomp_data.arch
+        (JEQ_K, 1, 0, arch),
+        (RET_K, 0, 0, KILL_PROCESS),
+        (LD_W_ABS, 0, 0, 0), // seccomp_data.nr
+        (JGE_K, 0, 1, X32_BIT),
+        (RET_K, 0, 0, EPERM),
+        (JEQ_K, 0, 1, clone3),
+        (RET_K, 0, 0, ENOSYS),
+    ];
+    for &nr in forks {
+        p.push((JEQ_K, 0, 1, nr));
+        p.push((RET_K, 0, 0, EPERM));
+    }
+    p.extend([
+        (JEQ_K, 0, 3, clone),
+        (LD_W_ABS, 0, 0, 16), // the low half of seccomp_data.args[0]: clone's flags
+        (JSET_K, 1, 0, CLONE_THREAD),
+        (RET_K, 0, 0, EPERM),
+        (RET_K, 0, 0, ALLOW),
+    ]);
+    let mut bytes = Vec::with_capacity(p.len() * 8);
+    for (code, jt, jf, k) in p {
+        bytes.extend_from_slice(&code.to_ne_bytes());
+        bytes.extend([jt, jf]);
+        bytes.extend_from_slice(&k.to_ne_bytes());
+    }
+    Some(bytes)
 }
 
 /// Kills the process group `pgid` with the `kill` tool (std has no safe `killpg`).

@@ -230,7 +230,20 @@ fn under_bubblewrap_no_other_program_can_be_started() {
     let r = go(&job("spawn", None, &wd), &limits(), Isolation::Bubblewrap);
     assert_eq!(r.ended, Ended::Exited(1), "{r:?}");
     assert!(!r.stdout.contains("spawned"), "{r:?}");
-    assert_eq!(r.stdout.matches("spawn failed").count(), 3, "{r:?}");
+    assert_eq!(r.stdout.matches("spawn failed").count(), 4, "{r:?}");
+    // Itself too: its own file is in the sandbox, but no new process may start.
+    let me = hostile().canonicalize().unwrap();
+    assert!(r.stdout.starts_with(&format!("spawn failed: {}", me.display())), "{r:?}");
+}
+
+#[test]
+fn threads_still_work_where_processes_do_not() {
+    for iso in isolations("threads") {
+        let wd = Dir::new(&format!("threads-{iso:?}"));
+        let r = go(&job("threads", None, &wd), &limits(), iso);
+        assert_eq!(r.ended, Ended::Exited(0), "{iso:?}: {r:?}");
+        assert_eq!(r.stdout, "threads: 100\n", "{iso:?}");
+    }
 }
 
 #[test]

@@ -5,9 +5,9 @@
 //! `cg-sandbox-hostile MODE [PATH]`, MODE one of:
 //! `loop` (appends a byte to `ticks` in the current folder every 20 ms, forever), `alloc` (grows
 //! its memory until an allocation fails), `panic`, `write-outside PATH` (writes PATH and
-//! `/etc/cg-sandbox-hostile`), `read PATH` (prints PATH), `spawn` (starts `sh`), `net`
+//! `/etc/cg-sandbox-hostile`), `read PATH` (prints PATH), `spawn` (starts itself, then `sh`), `net`
 //! (connects to 1.1.1.1:53), `print` (100 MB on stdout and 1 MB on stderr), `env` (prints its
-//! environment), `ok` (writes `result.txt` and prints `done`).
+//! environment), `threads` (sums on 4 threads), `ok` (writes `result.txt` and prints `done`).
 //! Each mode reports what it could and could not do on stdout.
 
 use std::io::Write;
@@ -53,6 +53,15 @@ fn main() {
             }
         },
         "spawn" => {
+            // Itself (its path is in the sandbox: it is the program), then a shell.
+            let me = args.first().cloned().unwrap_or_default();
+            match std::process::Command::new(&me).arg("echo-spawned").output() {
+                Ok(out) => {
+                    print!("{}", String::from_utf8_lossy(&out.stdout));
+                    std::process::exit(0);
+                }
+                Err(e) => println!("spawn failed: {me}: {e}"),
+            }
             for sh in ["sh", "/bin/sh", "/usr/bin/sh"] {
                 match std::process::Command::new(sh).args(["-c", "echo spawned"]).output() {
                     Ok(out) => {
@@ -87,6 +96,12 @@ fn main() {
             for _ in 0..1000 {
                 let _ = err.write_all(&line);
             }
+        }
+        "echo-spawned" => println!("spawned"),
+        "threads" => {
+            let handles: Vec<_> = (1..=4u64).map(|k| std::thread::spawn(move || k * 10)).collect();
+            let sum: u64 = handles.into_iter().map(|h| h.join().unwrap_or(0)).sum();
+            println!("threads: {sum}");
         }
         "env" => {
             for (k, v) in std::env::vars_os() {
