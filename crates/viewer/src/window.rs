@@ -88,21 +88,53 @@ impl<A: App> Shell<'_, A> {
         Image::from_rgba8(frame.width, frame.height, &rgba)
     }
 
+    /// What a window a backend presented to shows, read through a softbuffer surface made for
+    /// the moment (X11 reads the window's pixels back), `width × height` pixels. `None` where
+    /// the platform cannot read back.
+    fn presented_window_pixels(&self, width: u32, height: u32) -> Option<Image> {
+        let open = self.open.as_ref()?;
+        let mut surface = Surface::new(&open.context, open.window.clone()).ok()?;
+        surface.resize(NonZeroU32::new(width)?, NonZeroU32::new(height)?).ok()?;
+        let pixels = surface.fetch().ok()?;
+        let rgba: Vec<[u8; 4]> = pixels
+            .iter()
+            .map(|p| {
+                let [_, r, g, b] = p.to_be_bytes();
+                [r, g, b, 255]
+            })
+            .collect();
+        Image::from_rgba8(width, height, &rgba)
+    }
+
     /// The window's pixels (`"window"`), else the last frame drawn (`"frame"`); the frame a
-    /// backend presented, drawn again and read back (`"presented"`).
-    fn screenshot(&mut self) -> Result<Option<(Image, &'static str)>, ViewerError> {
+    /// backend presented, drawn again and read back (`"presented"`, with how far the window's
+    /// own pixels are from it where they can be read: ` window_diff=N`, the largest difference
+    /// of a channel in 1/255).
+    fn screenshot(&mut self) -> Result<Option<(Image, String)>, ViewerError> {
         if let Some(Shown::Presented(k)) = self.last_shown {
-            return match self.shared.backend_at_mut(k).and_then(|b| b.presented_image()) {
-                Some(Ok(image)) => Ok(Some((image, "presented"))),
-                Some(Err(e)) => Err(e),
-                None => Ok(None),
+            let image = match self.shared.backend_at_mut(k).and_then(|b| b.presented_image()) {
+                Some(Ok(image)) => image,
+                Some(Err(e)) => return Err(e),
+                None => return Ok(None),
             };
+            let mut source = "presented".to_owned();
+            if let Some(window) = self.presented_window_pixels(image.width, image.height) {
+                let diff = window
+                    .to_rgba8()
+                    .iter()
+                    .zip(image.to_rgba8())
+                    .flat_map(|(a, b)| (0..3).map(move |c| a[c].abs_diff(b[c])))
+                    .max()
+                    .unwrap_or(0);
+                source.push_str(&format!(" window_diff={diff}"));
+            }
+            return Ok(Some((image, source)));
         }
         if let Some(image) = self.window_pixels() {
-            return Ok(Some((image, "window")));
+            return Ok(Some((image, "window".to_owned())));
         }
         match &self.last_shown {
-            Some(Shown::Image(image)) => Ok(Some((image.clone(), "frame"))),
+            Some(Shown::Image(image)) => Ok(Some((image.clone(), "frame".to_owned()))),
             _ => Ok(None),
         }
     }
