@@ -305,7 +305,8 @@ fn window_r_switches_cpu_gpu_cpu_and_every_screenshot_matches() {
     let dir = scratch("xvfb-switch");
     // CPU (softbuffer), `s`; `r` to the GPU (softbuffer's surface dropped, a wgpu surface made),
     // `s`; `r` back to the CPU (the wgpu surface dropped, softbuffer's made again), `s`; `r` to
-    // the GPU once more (a new wgpu surface on the same window), `s`; then `q`.
+    // the GPU once more (a new wgpu surface on the same window), `s`; the window resized (the
+    // surface configured again), `s`; then `q`.
     let script = format!(
         r#"set -u
 timeout 120 "$BIN" --renderer cpu --paused --width 160 --height 120 --out '{dir}' &
@@ -315,6 +316,10 @@ WID=$(timeout 30 xdotool search --sync --onlyvisible --name 'cg viewer' | head -
 sleep 0.5
 xdotool windowfocus --sync $WID
 for k in s r s r s r s; do xdotool key $k; sleep 1; done
+xdotool windowsize --sync $WID 200 100
+sleep 1
+xdotool key s
+sleep 1
 xdotool key q
 wait $PID
 "#,
@@ -326,9 +331,11 @@ wait $PID
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert_eq!(stdout.matches("renderer: ").count(), 3, "three switches: {all}");
     let saved = saved_all(&stdout);
-    assert_eq!(saved.len(), 4, "four screenshots: {all}");
+    assert_eq!(saved.len(), 5, "five screenshots: {all}");
     let sources: Vec<&str> = saved.iter().map(|(_, s)| get(s, "source")).collect();
-    assert_eq!(sources, ["window", "presented", "window", "presented"], "{all}");
+    assert_eq!(sources, ["window", "presented", "window", "presented", "presented"], "{all}");
+    assert_eq!(get(&saved[3].1, "size"), "160x120", "{all}");
+    assert_eq!(get(&saved[4].1, "size"), "200x100", "after the resize: {all}");
     for (k, (png, state)) in saved.iter().enumerate() {
         assert_eq!(png, &dir.join(format!("screenshot-{:03}.png", k + 1)), "{all}");
         if get(state, "source") == "presented" {
