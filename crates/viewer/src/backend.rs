@@ -126,6 +126,8 @@ pub struct GpuBackend {
     presented: Option<Presented>,
     /// The surface could not be made (a note was printed): [`Backend::present`] says `None`.
     cannot_present: bool,
+    /// Frames made for the surface (not moved): the tests see the reuse.
+    frames_made: u64,
 }
 
 /// A wgpu surface on a window, configured.
@@ -184,6 +186,7 @@ impl GpuBackend {
             surface: None,
             presented: None,
             cannot_present: false,
+            frames_made: 0,
         })
     }
 
@@ -289,6 +292,7 @@ impl GpuBackend {
         }
         let options = cg_gpu::Options { shading: request.shading, size: Some(request.size) };
         let frame = self.gpu.frame(scene, &options, format).map_err(|e| self.error(&e))?;
+        self.frames_made += 1;
         self.presented =
             Some(Presented { frame, scene: key, shading: request.shading, shown: false });
         Ok(())
@@ -512,6 +516,65 @@ pub fn write_0rgb(image: &Image, out: &mut [u32]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::App;
+
+    #[test]
+    fn the_surface_format_is_a_non_srgb_one_or_none() {
+        use wgpu::TextureFormat as F;
+        assert_eq!(surface_format(&[F::Bgra8UnormSrgb, F::Bgra8Unorm]), Some(F::Bgra8Unorm));
+        assert_eq!(surface_format(&[F::Rgba8UnormSrgb, F::Rgba8Unorm]), Some(F::Rgba8Unorm));
+        assert_eq!(surface_format(&[F::Bgra8UnormSrgb, F::Rgba16Float]), None);
+        assert_eq!(surface_format(&[]), None);
+    }
+
+    #[test]
+    fn renderer_choices_parse_in_any_case() {
+        assert_eq!(RendererChoice::parse("GPU"), Ok(RendererChoice::Gpu));
+        assert_eq!(RendererChoice::parse("cpu"), Ok(RendererChoice::Cpu));
+        assert_eq!(RendererChoice::parse("auto"), Ok(RendererChoice::Auto));
+        assert!(RendererChoice::parse("vulkan").unwrap_err().contains("auto, cpu or gpu"));
+        let cpu = backends_for(RendererChoice::Cpu, Some(1), Lang::En).unwrap();
+        assert_eq!(cpu[0].name(), "CPU");
+    }
+
+    /// The window path without a window: the frame kept for the surface follows the camera
+    /// (moved, not made again) and is made again when the objects change, and what a
+    /// screenshot reads back is the fresh render of the scene of the moment.
+    #[test]
+    fn the_presented_frame_follows_the_camera_and_is_made_again_for_new_geometry() {
+        let mut gpu = match GpuBackend::new(Lang::En) {
+            Ok(gpu) => gpu,
+            Err(why) => {
+                assert!(std::env::var_os("CI").is_none(), "CI has lavapipe: {why}");
+                eprintln!("note: no GPU adapter, the presented frame is not tested: {why}");
+                return;
+            }
+        };
+        let chosen = backends_for(RendererChoice::Gpu, Some(1), Lang::En).unwrap();
+        assert!(chosen[0].name().starts_with("GPU") && chosen[1].name() == "CPU");
+        assert!(gpu.presented_image().is_none(), "nothing presented yet");
+        let mut app = crate::CourseApp::course_sample();
+        app.size = (80, 60);
+        let format = wgpu::TextureFormat::Bgra8Unorm;
+        let check = |app: &crate::CourseApp, gpu: &mut GpuBackend, made: u64| {
+            let (scene, request) = app.direct_scene().unwrap();
+            gpu.frame_for(&scene, &request, format).unwrap();
+            assert_eq!(gpu.frames_made, made, "frames made so far");
+            gpu.presented.as_mut().unwrap().shown = true;
+            let shot = gpu.presented_image().unwrap().unwrap();
+            let fresh = gpu.render(&scene, &request).unwrap();
+            assert_eq!(shot.to_rgba8(), fresh.to_rgba8());
+        };
+        check(&app, &mut gpu, 1);
+        app.camera.yaw_deg = 40.0;
+        app.camera.pitch_deg = -50.0;
+        app.size = (90, 50);
+        check(&app, &mut gpu, 1); // moved and resized, not made again
+        app.angle_deg = 30.0; // the objects turn: new vertices
+        check(&app, &mut gpu, 2);
+        gpu.release_window();
+        assert!(gpu.presented_image().is_none(), "released");
+    }
 
     #[test]
     fn the_gpu_backend_shows_what_the_cpu_backend_shows() {
