@@ -304,7 +304,14 @@ impl GpuBackend {
         let (Some(target), Some(presented)) = (&mut self.surface, &mut self.presented) else {
             return Ok(false);
         };
-        let texture = match target.surface.get_current_texture() {
+        let acquired = {
+            // A validation error here goes to the scope, not to wgpu's panicking default handler.
+            let scope = self.gpu.device().push_error_scope(wgpu::ErrorFilter::Validation);
+            let acquired = target.surface.get_current_texture();
+            let _ = pollster::block_on(scope.pop());
+            acquired
+        };
+        let texture = match acquired {
             wgpu::CurrentSurfaceTexture::Success(t) => t,
             wgpu::CurrentSurfaceTexture::Suboptimal(t) => {
                 target.stale = true;
