@@ -347,17 +347,23 @@ impl Gpu {
         })
     }
 
-    /// Draws `frame` (made for [`READBACK_FORMAT`]) into a new texture and reads it back.
+    /// Draws `frame` (made for [`READBACK_FORMAT`], or for `Bgra8Unorm` — a window surface's
+    /// usual format, so a window can save the very frame it presented) into a new texture and
+    /// reads it back.
     ///
     /// # Errors
     /// [`GpuError::Wgpu`] for a frame of another format, or an error wgpu reports.
     pub fn read_back(&self, frame: &Frame) -> Result<Image, GpuError> {
-        if frame.format != READBACK_FORMAT {
-            return Err(GpuError::Wgpu(format!(
-                "read_back needs a frame made for {READBACK_FORMAT:?}, not {:?}",
-                frame.format
-            )));
-        }
+        let bgra = match frame.format {
+            READBACK_FORMAT => false,
+            wgpu::TextureFormat::Bgra8Unorm => true,
+            other => {
+                return Err(GpuError::Wgpu(format!(
+                    "read_back needs a frame made for {READBACK_FORMAT:?} or Bgra8Unorm, not \
+                     {other:?}"
+                )));
+            }
+        };
         let (width, height) = (frame.width, frame.height);
         let target = self.device.create_texture(&wgpu::TextureDescriptor {
             label: Some("cg-gpu target"),
@@ -365,7 +371,7 @@ impl Gpu {
             mip_level_count: 1,
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
-            format: READBACK_FORMAT,
+            format: frame.format,
             usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
             view_formats: &[],
         });
@@ -420,7 +426,11 @@ impl Gpu {
         let pixels: Vec<[u8; 4]> = {
             let data = slice.get_mapped_range().map_err(|e| GpuError::Wgpu(e.to_string()))?;
             data.chunks(padded as usize)
-                .flat_map(|r| r[..row as usize].chunks_exact(4).map(|p| [p[0], p[1], p[2], 255]))
+                .flat_map(|r| {
+                    r[..row as usize].chunks_exact(4).map(|p| {
+                        if bgra { [p[2], p[1], p[0], 255] } else { [p[0], p[1], p[2], 255] }
+                    })
+                })
                 .collect()
         };
         readback.unmap();

@@ -305,3 +305,21 @@ fn a_frame_follows_the_camera_and_the_size() {
     assert_eq!(c.pixels_over, 0, "{c:?}");
     assert!(gpu.update_view(&mut frame, &s, 0, 1).is_err());
 }
+
+/// A window surface's usual format: a frame made for `Bgra8Unorm` reads back as the same image
+/// as one made for `Rgba8Unorm` (the channels swapped back), and other formats are an error.
+#[test]
+fn a_bgra_frame_reads_back_as_the_rgba_frame() {
+    let Some(gpu) = gpu() else { return };
+    let s = scene("course-sample.toml");
+    let options = Options { size: Some((64, 48)), ..Options::default() };
+    let rgba = gpu.frame(&s, &options, cg_gpu::READBACK_FORMAT).unwrap();
+    let bgra = gpu.frame(&s, &options, cg_gpu::wgpu::TextureFormat::Bgra8Unorm).unwrap();
+    let a = gpu.read_back(&rgba).unwrap();
+    let b = gpu.read_back(&bgra).unwrap();
+    assert_eq!(a.to_rgba8(), b.to_rgba8());
+    // Not a grey picture: the red and blue channels differ somewhere, so a missing swap shows.
+    assert!(a.pixels.iter().any(|p| (p.x - p.z).abs() > 0.1));
+    let other = gpu.frame(&s, &options, cg_gpu::wgpu::TextureFormat::Rgba16Float).unwrap();
+    assert!(gpu.read_back(&other).is_err());
+}

@@ -83,7 +83,7 @@ impl Control {
 /// | `glutIdleFunc(idle)` | [`App::idle`] | when no events wait, with the seconds since the last call |
 /// | `glutKeyboardFunc(keyboard)` | [`App::keyboard`] | a key typed, as GLUT's `unsigned char` (Esc is `'\x1b'`) |
 /// | `glutPostRedisplay()` | [`Control::post_redisplay`] | inside any callback |
-/// | `glutSwapBuffers()` | — | the shell presents the image [`App::display`] returns |
+/// | `glutSwapBuffers()` | — | the shell presents the image [`App::display`] returns (or the GPU presents [`App::direct_scene`]) |
 /// | `glutMainLoop()` | [`crate::run_app`] | runs until [`Control::quit`] or the window closes |
 ///
 /// Positions are window pixels, x right, y down from the top-left corner, as GLUT gives them.
@@ -110,6 +110,15 @@ pub trait App {
     /// # Errors
     /// A [`ViewerError`] when the frame cannot be drawn; the shell stops and returns it.
     fn display(&mut self, renderer: &mut dyn Backend) -> Result<Image, ViewerError>;
+
+    /// The frame as one scene drawn at the window's size with nothing over it, when it is: what
+    /// [`App::display`] would draw, as the scene and the request it would pass to
+    /// [`Backend::render`]. A backend that presents by itself (the GPU) then draws it straight
+    /// into the window instead of calling [`App::display`]. `None` (the default): the frame is
+    /// composed ([`crate::SideBySide`]) or drawn over, and [`App::display`] makes every frame.
+    fn direct_scene(&self) -> Option<(cg_core::scene::Scene, crate::FrameRequest)> {
+        None
+    }
 
     /// The window is now `width × height` pixels (never 0).
     fn reshape(&mut self, width: u32, height: u32);

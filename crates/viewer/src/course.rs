@@ -187,6 +187,10 @@ impl App for CourseApp {
         renderer.render(&self.scene(), &FrameRequest { size: self.size, shading: None })
     }
 
+    fn direct_scene(&self) -> Option<(Scene, FrameRequest)> {
+        Some((self.scene(), FrameRequest { size: self.size, shading: None }))
+    }
+
     fn reshape(&mut self, width: u32, height: u32) {
         if width > 0 && height > 0 {
             self.size = (width, height);

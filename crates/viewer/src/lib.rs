@@ -2,8 +2,9 @@
 //!
 //! A window with the callbacks of the course's GLUT sample program (display, reshape, mouse,
 //! motion, idle, keyboard: see [`App`] for the table that maps them one to one), drawing through
-//! a renderer [`Backend`] — now the CPU rasterizer ([`CpuBackend`], `cg_raster::render` into a
-//! softbuffer surface); the GPU renderer plugs in through the same trait.
+//! a renderer [`Backend`]: the CPU rasterizer ([`CpuBackend`], `cg_raster::render` into a
+//! softbuffer surface) or the GPU ([`GpuBackend`], which presents to a wgpu surface on the window
+//! itself); `r` switches between them.
 //!
 //! The default app ([`CourseApp`]) is the course's sample scene with the sample's mouse mapping
 //! (`cg_core::camera::OrbitCamera`): right-drag changes the pitch (dy) and the yaw (dx),
@@ -68,7 +69,8 @@ use cg_core::scene::Shading;
 
 pub use app::{App, Control};
 pub use backend::{
-    Backend, CpuBackend, FrameRequest, GpuBackend, default_backends, to_0rgb, write_0rgb,
+    Backend, CpuBackend, FrameRequest, GpuBackend, RendererChoice, backends_for, default_backends,
+    to_0rgb, write_0rgb,
 };
 pub use course::{CourseApp, LightChoice};
 pub use side::{SideBySide, Source};
@@ -118,6 +120,9 @@ pub struct ViewerOptions {
     pub headless: bool,
     /// Threads for the CPU rasterizer; `None`: all cores.
     pub threads: Option<usize>,
+    /// Which renderer draws first ([`backends_for`]); without a display only that one (the CPU
+    /// for [`RendererChoice::Auto`]).
+    pub renderer: RendererChoice,
     /// The language of messages.
     pub lang: Lang,
 }
@@ -141,11 +146,12 @@ pub fn display_available() -> bool {
 }
 
 /// Runs the default app ([`CourseApp`] on `options.scene` or the course's sample scene) with the
-/// CPU renderer: in a window when there is a display, else to a PNG file.
+/// renderers `options.renderer` picks ([`backends_for`]): in a window when there is a display,
+/// else to a PNG file (with the CPU, or the GPU when it was asked for).
 ///
 /// # Errors
-/// The scene cannot be loaded, a frame cannot be rendered, a PNG cannot be written, or the
-/// window fails after it was shown.
+/// The scene cannot be loaded, the GPU was asked for and there is none, a frame cannot be
+/// rendered, a PNG cannot be written, or the window fails after it was shown.
 pub fn run(options: &ViewerOptions) -> Result<(), ViewerError> {
     let scene = match &options.scene {
         None => cg_harness::course::scene(),
@@ -159,12 +165,13 @@ pub fn run(options: &ViewerOptions) -> Result<(), ViewerError> {
     }
     app.paused = options.paused;
     print_keys(options.lang);
-    let backends = if options.headless || !display_available() {
-        vec![Box::new(CpuBackend { threads: options.threads, lang: options.lang })
-            as Box<dyn Backend>]
-    } else {
-        default_backends(options.threads, options.lang)
-    };
+    let backends =
+        if (options.headless || !display_available()) && options.renderer != RendererChoice::Gpu {
+            vec![Box::new(CpuBackend { threads: options.threads, lang: options.lang })
+                as Box<dyn Backend>]
+        } else {
+            backends_for(options.renderer, options.threads, options.lang)?
+        };
     run_app(&mut app, backends, options)
 }
 
@@ -278,6 +285,25 @@ impl Shared {
 
     pub(crate) fn backend_mut(&mut self) -> &mut dyn Backend {
         self.backends[self.current].as_mut()
+    }
+
+    /// The index of the backend that draws now.
+    pub(crate) fn current(&self) -> usize {
+        self.current
+    }
+
+    /// The backend with index `k`.
+    pub(crate) fn backend_at_mut(&mut self, k: usize) -> Option<&mut dyn Backend> {
+        Some(self.backends.get_mut(k)?.as_mut())
+    }
+
+    /// Every backend but `except` lets go of the window ([`Backend::release_window`]).
+    pub(crate) fn release_windows(&mut self, except: Option<usize>) {
+        for (k, b) in self.backends.iter_mut().enumerate() {
+            if Some(k) != except {
+                b.release_window();
+            }
+        }
     }
 
     /// The `r` key: the next backend, or a note that there is only one.

@@ -6,6 +6,7 @@ use std::process::ExitCode;
 
 use cg_core::lang::Lang;
 use cg_core::scene::Shading;
+use cg_viewer::RendererChoice;
 use clap::Parser;
 
 /// The kit's viewer: the course's sample program in a window (PNG files when there is no
@@ -39,6 +40,9 @@ struct Args {
     /// Never open a window: render to PNG files
     #[arg(long)]
     headless: bool,
+    /// Which renderer draws first: auto (a real GPU, else the CPU), cpu or gpu; `r` switches
+    #[arg(long, value_name = "auto|cpu|gpu", value_parser = RendererChoice::parse, default_value = "auto")]
+    renderer: RendererChoice,
     /// Threads for the CPU rasterizer (default: all cores)
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
     threads: Option<u16>,
@@ -68,6 +72,7 @@ fn main() -> ExitCode {
         paused: args.paused,
         headless: args.headless,
         threads: args.threads.map(usize::from),
+        renderer: args.renderer,
         lang: if args.ja { Lang::Ja } else { Lang::En },
     };
     match cg_viewer::run(&options) {

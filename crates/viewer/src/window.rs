@@ -1,5 +1,9 @@
 //! The window shell: winit's event loop calling the [`App`]'s callbacks, the frame presented
-//! through softbuffer.
+//! through softbuffer — or, when the renderer presents by itself (the GPU on a wgpu surface) and
+//! the app's frame is one scene ([`App::direct_scene`]), by the renderer.
+//!
+//! The window has one of the two at a time: softbuffer's surface is dropped once the GPU has
+//! presented, and made again (the GPU's surface released first) when the CPU draws again.
 
 use std::num::NonZeroU32;
 use std::sync::Arc;
@@ -22,7 +26,17 @@ use crate::{Outcome, Shared, ViewerError};
 /// A window and its softbuffer surface.
 struct Open {
     window: Arc<Window>,
-    surface: Surface<Arc<Window>, Arc<Window>>,
+    context: Context<Arc<Window>>,
+    /// softbuffer's surface; `None` while a backend presents by itself.
+    surface: Option<Surface<Arc<Window>, Arc<Window>>>,
+}
+
+/// What the window shows.
+enum Shown {
+    /// An image drawn by [`App::display`], shown through softbuffer.
+    Image(Image),
+    /// A frame the backend with this index presented itself.
+    Presented(usize),
 }
 
 /// The state the event loop drives.
@@ -33,7 +47,7 @@ struct Shell<'a, A: App> {
     cursor: (f32, f32),
     buttons: u8,
     last_idle: Option<Instant>,
-    last_frame: Option<Image>,
+    last_shown: Option<Shown>,
     /// `app.status()` when the last frame was drawn (the state it shows; idle may have moved on).
     last_status: String,
     frames: u64,
@@ -61,9 +75,9 @@ impl<A: App> Shell<'_, A> {
     /// the size of the last frame: a screenshot of the window itself, not of the frame handed to
     /// it. `None` where the platform cannot read back.
     fn window_pixels(&mut self) -> Option<Image> {
-        let frame = self.last_frame.as_ref()?;
+        let Some(Shown::Image(frame)) = &self.last_shown else { return None };
         let open = self.open.as_mut()?;
-        let pixels = open.surface.fetch().ok()?;
+        let pixels = open.surface.as_mut()?.fetch().ok()?;
         let rgba: Vec<[u8; 4]> = pixels
             .iter()
             .map(|p| {
@@ -74,11 +88,54 @@ impl<A: App> Shell<'_, A> {
         Image::from_rgba8(frame.width, frame.height, &rgba)
     }
 
-    /// The window's pixels (`"window"`), else the last frame drawn (`"frame"`).
-    fn screenshot(&mut self) -> Option<(Image, &'static str)> {
-        match self.window_pixels() {
-            Some(image) => Some((image, "window")),
-            None => self.last_frame.clone().map(|image| (image, "frame")),
+    /// What a window a backend presented to shows, read through a softbuffer surface made for
+    /// the moment (X11 reads the window's pixels back), `width × height` pixels. `None` where
+    /// the platform cannot read back.
+    fn presented_window_pixels(&self, width: u32, height: u32) -> Option<Image> {
+        let open = self.open.as_ref()?;
+        let mut surface = Surface::new(&open.context, open.window.clone()).ok()?;
+        surface.resize(NonZeroU32::new(width)?, NonZeroU32::new(height)?).ok()?;
+        let pixels = surface.fetch().ok()?;
+        let rgba: Vec<[u8; 4]> = pixels
+            .iter()
+            .map(|p| {
+                let [_, r, g, b] = p.to_be_bytes();
+                [r, g, b, 255]
+            })
+            .collect();
+        Image::from_rgba8(width, height, &rgba)
+    }
+
+    /// The window's pixels (`"window"`), else the last frame drawn (`"frame"`); the frame a
+    /// backend presented, drawn again and read back (`"presented"`, with how far the window's
+    /// own pixels are from it where they can be read: ` window_diff=N`, the largest difference
+    /// of a channel in 1/255).
+    fn screenshot(&mut self) -> Result<Option<(Image, String)>, ViewerError> {
+        if let Some(Shown::Presented(k)) = self.last_shown {
+            let image = match self.shared.backend_at_mut(k).and_then(|b| b.presented_image()) {
+                Some(Ok(image)) => image,
+                Some(Err(e)) => return Err(e),
+                None => return Ok(None),
+            };
+            let mut source = "presented".to_owned();
+            if let Some(window) = self.presented_window_pixels(image.width, image.height) {
+                let diff = window
+                    .to_rgba8()
+                    .iter()
+                    .zip(image.to_rgba8())
+                    .flat_map(|(a, b)| (0..3).map(move |c| a[c].abs_diff(b[c])))
+                    .max()
+                    .unwrap_or(0);
+                source.push_str(&format!(" window_diff={diff}"));
+            }
+            return Ok(Some((image, source)));
+        }
+        if let Some(image) = self.window_pixels() {
+            return Ok(Some((image, "window".to_owned())));
+        }
+        match &self.last_shown {
+            Some(Shown::Image(image)) => Ok(Some((image.clone(), "frame".to_owned()))),
+            _ => Ok(None),
         }
     }
 
@@ -98,12 +155,16 @@ impl<A: App> Shell<'_, A> {
         if control.next_renderer_requested() {
             self.shared.next_backend();
         }
-        if control.screenshot_requested()
-            && let Some((image, source)) = self.screenshot()
-        {
-            let path = self.shared.screenshot_path();
-            let status = format!("{} source={source}", self.last_status);
-            if let Err(e) = self.shared.save(&path, &image, &status) {
+        if control.screenshot_requested() {
+            let saved = self.screenshot().and_then(|shot| match shot {
+                Some((image, source)) => {
+                    let path = self.shared.screenshot_path();
+                    let status = format!("{} source={source}", self.last_status);
+                    self.shared.save(&path, &image, &status)
+                }
+                None => Ok(()),
+            });
+            if let Err(e) = saved {
                 self.fail(event_loop, e);
                 return;
             }
@@ -121,54 +182,114 @@ impl<A: App> Shell<'_, A> {
     }
 
     fn redraw(&mut self, event_loop: &ActiveEventLoop) {
-        let Some(open) = &mut self.open else { return };
-        let size = open.window.inner_size();
+        let Some(open) = &self.open else { return };
+        let window = open.window.clone();
+        let size = window.inner_size();
         let (Some(w), Some(h)) = (NonZeroU32::new(size.width), NonZeroU32::new(size.height)) else {
             return; // minimised
         };
-        if let Err(e) = open.surface.resize(w, h) {
-            let reason = e.to_string();
-            self.no_window(event_loop, reason);
-            return;
-        }
         self.app.reshape(w.get(), h.get());
         let start = Instant::now();
+        let current = self.shared.current();
+        let presented = match self.app.direct_scene() {
+            Some((scene, request)) => {
+                // One surface on the window at a time: the other backends let go of theirs.
+                self.shared.release_windows(Some(current));
+                self.shared.backend_mut().present(&window, &scene, &request)
+            }
+            None => None,
+        };
+        match presented {
+            Some(Err(e)) => return self.fail(event_loop, e),
+            Some(Ok(shown)) => {
+                // The backend has the window now: softbuffer lets go (made again when the CPU
+                // draws).
+                if let Some(open) = &mut self.open {
+                    open.surface = None;
+                }
+                if !shown {
+                    // No image from the surface this time (reconfigured, timed out): again.
+                    window.request_redraw();
+                    return;
+                }
+                self.frame_ms = start.elapsed().as_secs_f64() * 1000.0;
+                self.last_status = self.app.status();
+                self.last_shown = Some(Shown::Presented(current));
+            }
+            None => {
+                if !self.draw_image(event_loop, &window, w, h, start) {
+                    return;
+                }
+            }
+        }
+        self.frames += 1;
+        self.set_title();
+        match self.shared.options.frames {
+            Some(n) if self.frames >= n => event_loop.exit(),
+            // A scripted run (`--frames N`) draws frame after frame until it has N.
+            Some(_) => window.request_redraw(),
+            None => {}
+        }
+    }
+
+    /// The frame as an image from [`App::display`], shown through softbuffer. `false` when the
+    /// shell has stopped (the outcome says why).
+    fn draw_image(
+        &mut self,
+        event_loop: &ActiveEventLoop,
+        window: &Arc<Window>,
+        w: NonZeroU32,
+        h: NonZeroU32,
+        start: Instant,
+    ) -> bool {
+        // softbuffer takes the window back: no backend keeps a surface on it.
+        self.shared.release_windows(None);
+        let Some(open) = &mut self.open else { return false };
+        if open.surface.is_none() {
+            match Surface::new(&open.context, window.clone()) {
+                Ok(surface) => open.surface = Some(surface),
+                Err(e) => {
+                    self.no_window(event_loop, e.to_string());
+                    return false;
+                }
+            }
+        }
+        if let Some(Err(e)) = open.surface.as_mut().map(|s| s.resize(w, h)) {
+            self.no_window(event_loop, e.to_string());
+            return false;
+        }
         let image = match self.app.display(self.shared.backend_mut()) {
             Ok(image) => image,
-            Err(e) => return self.fail(event_loop, e),
+            Err(e) => {
+                self.fail(event_loop, e);
+                return false;
+            }
         };
         self.frame_ms = start.elapsed().as_secs_f64() * 1000.0;
         self.last_status = self.app.status();
-        let Some(open) = &mut self.open else { return };
-        let mut buffer = match open.surface.buffer_mut() {
+        let Some(surface) = self.open.as_mut().and_then(|o| o.surface.as_mut()) else {
+            return false;
+        };
+        let mut buffer = match surface.buffer_mut() {
             Ok(b) => b,
             Err(e) => {
                 let reason = e.to_string();
-                return self.no_window(event_loop, reason);
+                self.no_window(event_loop, reason);
+                return false;
             }
         };
         buffer.fill(0);
         if image.width == w.get() && image.height == h.get() {
             write_0rgb(&image, &mut buffer);
         }
-        open.window.pre_present_notify();
+        window.pre_present_notify();
         if let Err(e) = buffer.present() {
             let reason = e.to_string();
-            return self.no_window(event_loop, reason);
+            self.no_window(event_loop, reason);
+            return false;
         }
-        self.last_frame = Some(image);
-        self.frames += 1;
-        self.set_title();
-        match self.shared.options.frames {
-            Some(n) if self.frames >= n => event_loop.exit(),
-            // A scripted run (`--frames N`) draws frame after frame until it has N.
-            Some(_) => {
-                if let Some(open) = &self.open {
-                    open.window.request_redraw();
-                }
-            }
-            None => {}
-        }
+        self.last_shown = Some(Shown::Image(image));
+        true
     }
 }
 
@@ -195,7 +316,7 @@ impl<A: App> ApplicationHandler for Shell<'_, A> {
         };
         self.app.init();
         self.app.reshape(w.max(1), h.max(1));
-        self.open = Some(Open { window, surface });
+        self.open = Some(Open { window, context, surface: Some(surface) });
         self.set_title();
         if let Some(open) = &self.open {
             open.window.request_redraw();
@@ -303,7 +424,7 @@ pub(crate) fn run<A: App>(app: &mut A, shared: &mut Shared) -> Outcome {
         cursor: (0.0, 0.0),
         buttons: 0,
         last_idle: None,
-        last_frame: None,
+        last_shown: None,
         last_status: String::new(),
         frames: 0,
         frame_ms: 0.0,
@@ -317,12 +438,20 @@ pub(crate) fn run<A: App>(app: &mut A, shared: &mut Shared) -> Outcome {
     }
     if matches!(shell.outcome, Outcome::Done)
         && let Some(path) = shell.shared.options.screenshot.clone()
-        && let Some((image, source)) = shell.screenshot()
     {
-        let status = format!("{} source={source}", shell.last_status);
-        if let Err(e) = shell.shared.save(&path, &image, &status) {
+        let saved = shell.screenshot().and_then(|shot| match shot {
+            Some((image, source)) => {
+                let status = format!("{} source={source}", shell.last_status);
+                shell.shared.save(&path, &image, &status)
+            }
+            None => Ok(()),
+        });
+        if let Err(e) = saved {
+            shell.shared.release_windows(None);
             return Outcome::Failed(e);
         }
     }
+    // The backends' surfaces go before the window does.
+    shell.shared.release_windows(None);
     shell.outcome
 }

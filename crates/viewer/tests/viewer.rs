@@ -1,5 +1,6 @@
 //! The viewer binary end to end: without a display (PNG files), and in a window under Xvfb driven
-//! by xdotool, its screenshots compared with the headless render of the same state.
+//! by xdotool, its screenshots compared with the headless render of the same state — drawn by
+//! the CPU through softbuffer, and presented by the GPU (lavapipe in CI) to a wgpu surface.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -31,11 +32,27 @@ fn text(out: &Output) -> String {
 /// The `key=value` pairs of the last `saved PATH (…)` line: the state the screenshot shows.
 fn saved_state(stdout: &str) -> Vec<(String, String)> {
     let line = stdout.lines().rev().find(|l| l.starts_with("saved ")).expect("a 'saved' line");
+    state_of(line)
+}
+
+fn state_of(line: &str) -> Vec<(String, String)> {
     let inside = &line[line.find('(').unwrap() + 1..line.rfind(')').unwrap()];
     inside
         .split_whitespace()
         .filter_map(|kv| kv.split_once('='))
         .map(|(k, v)| (k.to_owned(), v.to_owned()))
+        .collect()
+}
+
+/// Every `saved PATH (…)` line in order: the file and the state it shows.
+fn saved_all(stdout: &str) -> Vec<(PathBuf, Vec<(String, String)>)> {
+    stdout
+        .lines()
+        .filter(|l| l.starts_with("saved "))
+        .map(|l| {
+            let path = l["saved ".len()..l.find(" (").unwrap()].to_owned();
+            (PathBuf::from(path), state_of(l))
+        })
         .collect()
 }
 
@@ -69,10 +86,21 @@ fn headless_render(state: &[(String, String)]) -> (Vec<[u8; 4]>, u32, u32) {
 }
 
 fn assert_png_is_headless_render(name: &str, png: &Path, state: &[(String, String)]) {
+    assert_png_is_headless_render_within(name, png, state, 0);
+}
+
+/// As [`assert_png_is_headless_render`], every channel within `per_channel`/255 (the GPU's
+/// frames: within 2/255 of the CPU rasterizer's, `crates/gpu/tests/compare.rs`).
+fn assert_png_is_headless_render_within(
+    name: &str,
+    png: &Path,
+    state: &[(String, String)],
+    per_channel: u8,
+) {
     let (actual, w, h) = read_png(png).unwrap_or_else(|| panic!("{} is not a PNG", png.display()));
     let (expected, ew, eh) = headless_render(state);
     assert_eq!((w, h), (ew, eh), "screenshot size");
-    assert_images_match(name, &actual, &expected, w, h, Tolerance::all_within(0));
+    assert_images_match(name, &actual, &expected, w, h, Tolerance::all_within(per_channel));
 }
 
 #[test]
@@ -220,4 +248,102 @@ fn window_frames_limit_exits_by_itself_and_the_animation_runs() {
     // The animation ran (idle between frames); the screenshot's state is the last frame's.
     assert!(get(&state, "angle").parse::<f32>().unwrap() > 0.0, "{all}");
     assert_png_is_headless_render("xvfb-frames", &shot, &state);
+}
+
+/// Whether the GPU window tests can run: Xvfb and xdotool ([`xvfb_available`]) and a GPU
+/// adapter (lavapipe in CI). Without an adapter the test is skipped with a note, except under CI.
+fn gpu_window_available(test: &str) -> bool {
+    if !xvfb_available(test) {
+        return false;
+    }
+    match cg_viewer::GpuBackend::new(cg_core::lang::Lang::En) {
+        Ok(_) => true,
+        Err(why) => {
+            assert!(std::env::var_os("CI").is_none(), "{test}: CI has lavapipe: {why}");
+            eprintln!("note: {test} skipped: no GPU adapter ({why})");
+            false
+        }
+    }
+}
+
+#[test]
+fn window_gpu_presents_to_its_surface_and_the_screenshot_matches_the_cpu() {
+    let test = "window_gpu_presents_to_its_surface_and_the_screenshot_matches_the_cpu";
+    if !gpu_window_available(test) {
+        return;
+    }
+    let dir = scratch("xvfb-gpu");
+    let shot = dir.join("gpu.png");
+    let script = format!(
+        "timeout 120 \"$BIN\" --renderer gpu --frames 5 --shading phong --width 200 --height 150 \
+         --screenshot '{}' --out '{}'",
+        shot.display(),
+        dir.display()
+    );
+    let out = under_xvfb(&script);
+    let all = text(&out);
+    assert!(out.status.success(), "{all}");
+    assert!(!all.contains("cannot present"), "the GPU presented to the window: {all}");
+    let state = saved_state(&String::from_utf8_lossy(&out.stdout));
+    // The frame the GPU presented, drawn again into a texture and read back…
+    assert_eq!(get(&state, "source"), "presented", "{all}");
+    // …is what the window shows: X11 reads the window's pixels back (nothing else ever drew
+    // into this window, so a frame that never reached it would show as a large difference).
+    assert_eq!(get(&state, "window_diff"), "0", "{all}");
+    assert_eq!(get(&state, "shading"), "phong", "{all}");
+    // Five frames with the animation running: the state is the last frame's.
+    assert!(get(&state, "angle").parse::<f32>().unwrap() > 0.0, "{all}");
+    assert_png_is_headless_render_within("xvfb-gpu", &shot, &state, 2);
+}
+
+#[test]
+fn window_r_switches_cpu_gpu_cpu_and_every_screenshot_matches() {
+    let test = "window_r_switches_cpu_gpu_cpu_and_every_screenshot_matches";
+    if !gpu_window_available(test) {
+        return;
+    }
+    let dir = scratch("xvfb-switch");
+    // CPU (softbuffer), `s`; `r` to the GPU (softbuffer's surface dropped, a wgpu surface made),
+    // `s`; `r` back to the CPU (the wgpu surface dropped, softbuffer's made again), `s`; `r` to
+    // the GPU once more (a new wgpu surface on the same window), `s`; the window resized (the
+    // surface configured again), `s`; then `q`.
+    let script = format!(
+        r#"set -u
+timeout 120 "$BIN" --renderer cpu --paused --width 160 --height 120 --out '{dir}' &
+PID=$!
+WID=$(timeout 30 xdotool search --sync --onlyvisible --name 'cg viewer' | head -1)
+[ -n "$WID" ] || {{ echo "no window"; kill $PID; exit 3; }}
+sleep 0.5
+xdotool windowfocus --sync $WID
+for k in s r s r s r s; do xdotool key $k; sleep 1; done
+xdotool windowsize --sync $WID 200 100
+sleep 1
+xdotool key s
+sleep 1
+xdotool key q
+wait $PID
+"#,
+        dir = dir.display()
+    );
+    let out = under_xvfb(&script);
+    let all = text(&out);
+    assert!(out.status.success(), "{all}");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(stdout.matches("renderer: ").count(), 3, "three switches: {all}");
+    let saved = saved_all(&stdout);
+    assert_eq!(saved.len(), 5, "five screenshots: {all}");
+    let sources: Vec<&str> = saved.iter().map(|(_, s)| get(s, "source")).collect();
+    assert_eq!(sources, ["window", "presented", "window", "presented", "presented"], "{all}");
+    assert_eq!(get(&saved[3].1, "size"), "160x120", "{all}");
+    assert_eq!(get(&saved[4].1, "size"), "200x100", "after the resize: {all}");
+    for (k, (png, state)) in saved.iter().enumerate() {
+        assert_eq!(png, &dir.join(format!("screenshot-{:03}.png", k + 1)), "{all}");
+        if get(state, "source") == "presented" {
+            assert_eq!(get(state, "window_diff"), "0", "shot {}: {all}", k + 1);
+            assert_png_is_headless_render_within(&format!("xvfb-switch-{k}"), png, state, 2);
+        } else {
+            // Back on the CPU, the window shows softbuffer's image again, exactly.
+            assert_png_is_headless_render(&format!("xvfb-switch-{k}"), png, state);
+        }
+    }
 }
