@@ -322,7 +322,8 @@ pub fn run(
 ) -> Result<Report, BenchError> {
     use experiments as e;
     let mut experiments = Vec::new();
-    let steps: [(&str, fn(&Config) -> Result<Experiment, BenchError>); 8] = [
+    type Step = fn(&Config) -> Result<Experiment, BenchError>;
+    let steps: [(&str, Step); 8] = [
         ("shading", e::shading::run),
         ("vertex-normals", e::vertex_normals::run),
         ("face-normals", e::face_normals::run),

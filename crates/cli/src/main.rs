@@ -10,6 +10,7 @@ use cg_core::lang::Lang;
 use clap::{Parser, Subcommand};
 
 mod assignments;
+mod bench;
 mod handout;
 mod inspect;
 mod render;
@@ -55,6 +56,8 @@ enum Command {
     SyncStubs,
     /// Write the students' copy of the kit, without solutions/ (instructors) / 学生に配るコピーを作る（教員用）
     Handout(handout::Args),
+    /// Measure speed against error and write docs/speed-vs-error.md with its plots / 速度と誤差を測り docs/speed-vs-error.md に書く
+    Bench(bench::Args),
 }
 
 /// Ends quietly when the reader of our output goes away (`cg check | head`): printing to a closed
@@ -90,6 +93,7 @@ fn main() -> ExitCode {
         }
         Some(Command::SyncStubs) => assignments::sync_stubs(lang).map(|()| true),
         Some(Command::Handout(args)) => handout::run(&args, lang).map(|()| true),
+        Some(Command::Bench(args)) => bench::run(&args, lang).map(|()| true),
         None => render::main_job(lang).map(|()| true),
     };
     match result {
