@@ -45,6 +45,17 @@ fn log_bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
     if lo.is_finite() && hi > 0.0 { (lo / 2.0, hi * 2.0) } else { (1e-9, 1.0) }
 }
 
+/// A tick label on a log axis: `0.02`, `150`, `1e-5`, `2.5e-7`.
+fn tick(v: f64) -> String {
+    if (0.01..1e4).contains(&v.abs()) {
+        let s = format!("{v:.3}");
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        let s = format!("{v:.1e}");
+        s.replace(".0e", "e")
+    }
+}
+
 fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, plotters::coord::Shift>,
     e: &Experiment,
@@ -62,7 +73,9 @@ fn draw<DB: DrawingBackend>(
     let points: Vec<(f64, f64)> =
         raw.iter().map(|&(t, v)| (t, if v.is_finite() && v > 0.0 { v } else { floor })).collect();
     let mut chart = ChartBuilder::on(root)
-        .caption(e.title, ("sans-serif", 18))
+        // The English half of the title: SVG viewers without a CJK font show boxes otherwise
+        // (the Markdown heading has both).
+        .caption(e.title.rsplit(" / ").next().unwrap_or(e.title), ("sans-serif", 18))
         .margin(12)
         .x_label_area_size(44)
         .y_label_area_size(78)
@@ -74,8 +87,8 @@ fn draw<DB: DrawingBackend>(
         .configure_mesh()
         .x_desc(x_desc)
         .y_desc(y_desc)
-        .x_label_formatter(&|v| format!("{v:.1e}"))
-        .y_label_formatter(&|v| format!("{v:.1e}"))
+        .x_label_formatter(&|v| tick(*v))
+        .y_label_formatter(&|v| tick(*v))
         .light_line_style(WHITE.mix(0.0))
         .draw()
         .map_err(err)?;
@@ -108,7 +121,7 @@ fn draw<DB: DrawingBackend>(
     chart
         .draw_series(LineSeries::new(on_front.clone(), BLACK.stroke_width(1)))
         .map_err(err)?
-        .label("Pareto front / パレート最前線")
+        .label("Pareto front")
         .legend(|(x, y)| PathElement::new(vec![(x - 8, y), (x + 8, y)], BLACK));
     chart
         .draw_series(on_front.into_iter().map(|p| Circle::new(p, 7, BLACK.stroke_width(1))))
