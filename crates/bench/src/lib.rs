@@ -70,7 +70,7 @@ impl Config {
     pub fn full() -> Config {
         Config {
             name: "full",
-            reps: 7,
+            reps: 11,
             shading_size: 256,
             levels: vec![1, 2, 3, 4, 5],
             exponents: vec![8.0, 32.0, 128.0],
