@@ -10,6 +10,7 @@ use cg_core::lang::Lang;
 use clap::{Parser, Subcommand};
 
 mod assignments;
+mod grade;
 mod handout;
 mod inspect;
 mod render;
@@ -55,6 +56,8 @@ enum Command {
     SyncStubs,
     /// Write the students' copy of the kit, without solutions/ (instructors) / 学生に配るコピーを作る（教員用）
     Handout(handout::Args),
+    /// Grade every submission in a folder with the kit's own checks, in a sandbox (instructors) / 提出物をまとめて採点（教員用）
+    Grade(grade::Args),
 }
 
 /// Ends quietly when the reader of our output goes away (`cg check | head`): printing to a closed
@@ -90,6 +93,7 @@ fn main() -> ExitCode {
         }
         Some(Command::SyncStubs) => assignments::sync_stubs(lang).map(|()| true),
         Some(Command::Handout(args)) => handout::run(&args, lang).map(|()| true),
+        Some(Command::Grade(args)) => grade::run(&args, lang).map(|()| true),
         None => render::main_job(lang).map(|()| true),
     };
     match result {
