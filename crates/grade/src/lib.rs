@@ -258,7 +258,6 @@ struct Slot {
     kit: PathBuf,
     target: PathBuf,
     run: PathBuf,
-    baseline: Option<Baseline>,
 }
 
 /// Which program runs the checks in a kit copy: `cg-check-runner` when the kit has it, else
@@ -286,27 +285,78 @@ fn runner_command(
 }
 
 impl Slot {
-    fn open(
-        out: &Path,
-        k: usize,
-        options: &Options,
-        kit_hash: &str,
-        skip: &dyn Fn(&Path) -> bool,
-    ) -> Result<Slot, Msg> {
+    fn at(out: &Path, k: usize) -> Slot {
         let root = out.join(".work").join(format!("slot-{k}"));
-        let kit = root.join("kit");
-        let marker = root.join("kit-version");
-        let io = |e: &dyn std::fmt::Display| {
-            Msg::new(format!("作業用コピー: {e}"), format!("work copy: {e}"))
-        };
-        if std::fs::read_to_string(&marker).ok().as_deref() != Some(kit_hash) {
-            let _ = std::fs::remove_dir_all(&kit);
-            std::fs::create_dir_all(&kit).map_err(|e| io(&e))?;
-            handout::write_handout_filtered(&options.kit, &kit, skip).map_err(|e| io(&e))?;
-            std::fs::write(&marker, kit_hash).map_err(|e| io(&e))?;
-        }
-        Ok(Slot { kit, target: root.join("target"), run: root.join("run"), baseline: None })
+        Slot { kit: root.join("kit"), target: root.join("target"), run: root.join("run") }
     }
+
+    fn marker(&self) -> PathBuf {
+        self.kit.with_file_name("kit-version")
+    }
+
+    fn is_current(&self, kit_hash: &str) -> bool {
+        std::fs::read_to_string(self.marker()).ok().as_deref() == Some(kit_hash)
+    }
+}
+
+/// Slot 0: the handout written afresh when the kit changed, and the runner built from the
+/// pristine stubs (the whole kit's first build, paid once).
+fn prepare_first(
+    slot: &Slot,
+    options: &Options,
+    kit_hash: &str,
+    stubs: &BTreeMap<String, String>,
+    skip: &dyn Fn(&Path) -> bool,
+) -> Result<(), GradeError> {
+    let io = |e: &dyn std::fmt::Display| GradeError::Io(format!("{}: {e}", slot.kit.display()));
+    if !slot.is_current(kit_hash) {
+        let _ = std::fs::remove_dir_all(&slot.kit);
+        let _ = std::fs::remove_file(slot.marker());
+        std::fs::create_dir_all(&slot.kit).map_err(|e| io(&e))?;
+        handout::write_handout_filtered(&options.kit, &slot.kit, skip).map_err(|e| io(&e))?;
+    }
+    for m in submission::MODULES {
+        write_if_changed(&slot.kit.join(format!("exercises/src/{m}.rs")), stubs[m].as_bytes())
+            .map_err(|e| io(&e))?;
+    }
+    let package = runner_command(&slot.kit, &slot.target, "a1", &options.limits).0;
+    let b = build::cargo_build(&slot.kit, &slot.target, package, options.build_limit)
+        .map_err(|e| io(&e))?;
+    if !b.success {
+        return Err(GradeError::Io(format!(
+            "the kit's handout does not build ({}):\n{}\n{}",
+            slot.kit.display(),
+            b.other_errors.join("\n"),
+            b.stderr_tail
+        )));
+    }
+    std::fs::write(slot.marker(), kit_hash).map_err(|e| io(&e))
+}
+
+/// Slot K > 0: a copy of slot 0's kit and build folder (`cp -a` keeps the times cargo compares,
+/// so only the student's crate rebuilds), unless it is already current.
+fn prepare_copy(slot: &Slot, first: &Slot, kit_hash: &str) -> Result<(), Msg> {
+    if slot.is_current(kit_hash) {
+        return Ok(());
+    }
+    let fail = |e: String| Msg::new(format!("作業用コピー: {e}"), format!("work copy: {e}"));
+    let _ = std::fs::remove_dir_all(&slot.kit);
+    let _ = std::fs::remove_dir_all(&slot.target);
+    if let Some(parent) = slot.kit.parent() {
+        std::fs::create_dir_all(parent).map_err(|e| fail(e.to_string()))?;
+    }
+    for (from, to) in [(&first.kit, &slot.kit), (&first.target, &slot.target)] {
+        let status = std::process::Command::new("cp")
+            .arg("-a")
+            .arg(from)
+            .arg(to)
+            .status()
+            .map_err(|e| fail(format!("cp: {e}")))?;
+        if !status.success() {
+            return Err(fail(format!("cp -a {} {}: {status}", from.display(), to.display())));
+        }
+    }
+    std::fs::write(slot.marker(), kit_hash).map_err(|e| fail(e.to_string()))
 }
 
 /// One assignment's run, as the result needs it.
@@ -410,54 +460,8 @@ fn grade_one(
     let student_toml = files.student_toml.clone().unwrap_or_default();
     let io_fail = |facts: &mut result::Facts, e: std::io::Error| {
         facts.fatal = Some(Msg::new(format!("作業用コピー: {e}"), format!("work copy: {e}")));
+        facts.retry = true;
     };
-    // The kit's pristine state first: the baseline list of checks (for runs that die).
-    if slot.baseline.is_none() {
-        for m in submission::MODULES {
-            let path = slot.kit.join(format!("exercises/src/{m}.rs"));
-            if let Err(e) = write_if_changed(&path, stubs[m].as_bytes()) {
-                io_fail(&mut facts, e);
-                return facts;
-            }
-        }
-        let package = runner_command(&slot.kit, &slot.target, "a1", &options.limits).0;
-        let t = Instant::now();
-        match build::cargo_build(&slot.kit, &slot.target, package, options.build_limit) {
-            Ok(b) if b.success => {}
-            Ok(b) => {
-                facts.fatal = Some(Msg::new(
-                    format!(
-                        "キットがビルドできません:\n{}{}",
-                        b.other_errors.join("\n"),
-                        b.stderr_tail
-                    ),
-                    format!(
-                        "the kit does not build:\n{}{}",
-                        b.other_errors.join("\n"),
-                        b.stderr_tail
-                    ),
-                ));
-                return facts;
-            }
-            Err(e) => {
-                facts.fatal = Some(Msg::new(
-                    format!("cargo を起動できません: {e}"),
-                    format!("cannot start cargo: {e}"),
-                ));
-                return facts;
-            }
-        }
-        facts.kit_build = Some(t.elapsed());
-        let mut baseline = Baseline::new();
-        for m in submission::MODULES {
-            if let (AssignmentRun::Report(r), _) =
-                run_checks(slot, m, &student_toml, options, runner)
-            {
-                baseline.insert(m.to_owned(), result::check_list(&r));
-            }
-        }
-        slot.baseline = Some(baseline);
-    }
     let student_path = slot.kit.join("exercises/student.toml");
     if let Err(e) = std::fs::write(&student_path, &student_toml) {
         io_fail(&mut facts, e);
@@ -482,6 +486,7 @@ fn grade_one(
                     format!("cargo を起動できません: {e}"),
                     format!("cannot start cargo: {e}"),
                 ));
+                facts.retry = true;
                 break;
             }
         };
@@ -540,8 +545,39 @@ fn grade_one(
         run_time += took;
         facts.runs.insert(m.to_owned(), run);
     }
+    // A run that died left no list of its checks: the module's stub lists them (every check
+    // "not done"), for this student's variant.
+    let died: Vec<&str> = submission::MODULES
+        .iter()
+        .copied()
+        .filter(|m| matches!(facts.runs.get(*m), Some(AssignmentRun::Died { .. })))
+        .collect();
+    if !died.is_empty() {
+        for m in &died {
+            if let Err(e) = write_if_changed(
+                &slot.kit.join(format!("exercises/src/{m}.rs")),
+                stubs[*m].as_bytes(),
+            ) {
+                io_fail(&mut facts, e);
+                return facts;
+            }
+        }
+        let t = Instant::now();
+        if build::cargo_build(&slot.kit, &slot.target, package, options.build_limit)
+            .is_ok_and(|b| b.success)
+        {
+            facts.build = facts.build.map(|b| b + t.elapsed());
+            for m in died {
+                if let (AssignmentRun::Report(r), took) =
+                    run_checks(slot, m, &student_toml, options, runner)
+                {
+                    run_time += took;
+                    facts.baseline.insert(m.to_owned(), result::check_list(&r));
+                }
+            }
+        }
+    }
     facts.run = Some(run_time);
-    facts.baseline = slot.baseline.clone().unwrap_or_default();
     facts
 }
 
@@ -605,11 +641,16 @@ pub fn grade(
     let queue = Mutex::new(queue);
     let results = Mutex::new(Vec::new());
     let failure: Mutex<Option<GradeError>> = Mutex::new(None);
-    let slots = options.jobs.max(1).min(queue.lock().map(|q| q.len()).unwrap_or(1).max(1));
+    let waiting = queue.lock().map(|q| q.iter().filter(|p| p.files.is_ok()).count()).unwrap_or(0);
+    let slots = options.jobs.max(1).min(waiting.max(1));
+    let first = Slot::at(&out, 0);
+    if waiting > 0 {
+        prepare_first(&first, options, &kit_hash, &stubs, &skip)?;
+    }
     std::thread::scope(|scope| {
         for k in 0..slots {
-            let (queue, results, failure, stubs, out, kit_hash, skip) =
-                (&queue, &results, &failure, &stubs, &out, &kit_hash, &skip);
+            let (queue, results, failure, stubs, out, kit_hash, first) =
+                (&queue, &results, &failure, &stubs, &out, &kit_hash, &first);
             scope.spawn(move || {
                 let mut slot: Option<Result<Slot, Msg>> = None;
                 loop {
@@ -620,12 +661,19 @@ pub fn grade(
                             result::Facts { refused: Some(why.clone()), ..result::Facts::default() }
                         }
                         Ok((files, _)) => {
-                            let s = slot
-                                .get_or_insert_with(|| Slot::open(out, k, options, kit_hash, skip));
+                            let s = slot.get_or_insert_with(|| {
+                                let s = Slot::at(out, k);
+                                if k == 0 {
+                                    Ok(s)
+                                } else {
+                                    prepare_copy(&s, first, kit_hash).map(|()| s)
+                                }
+                            });
                             match s {
                                 Ok(s) => grade_one(s, files, stubs, options, runner),
                                 Err(why) => result::Facts {
                                     fatal: Some(why.clone()),
+                                    retry: true,
                                     ..result::Facts::default()
                                 },
                             }
@@ -636,7 +684,8 @@ pub fn grade(
                         &result::Meta {
                             entry: &p.entry,
                             student: student.as_deref(),
-                            hash: &p.hash,
+                            // A machine's problem is not the submission's: not kept.
+                            hash: if facts.retry { "" } else { &p.hash },
                             isolation: options.isolation,
                             total: started.elapsed(),
                         },

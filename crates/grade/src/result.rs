@@ -20,14 +20,15 @@ pub struct Facts {
     pub refused: Option<Msg>,
     /// Grading could not finish (why): the kit does not build, the build ran over its limit…
     pub fatal: Option<Msg>,
+    /// Whether the problem was the machine's (a work copy, cargo): the result is not kept for
+    /// resuming, so the next run grades it again.
+    pub retry: bool,
     /// Modules replaced by their stubs, with their compiler errors.
     pub compile_errors: BTreeMap<String, Vec<String>>,
     /// Each assignment's run.
     pub runs: BTreeMap<String, AssignmentRun>,
-    /// The checks of each assignment (for runs that died).
+    /// The checks of each assignment whose run died, listed by its stub.
     pub baseline: Baseline,
-    /// The slot's first build of the kit, when this submission paid for it.
-    pub kit_build: Option<Duration>,
     /// The submission's builds.
     pub build: Option<Duration>,
     /// The runs of its checks.
@@ -216,8 +217,8 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
             }));
         }
     }
-    let score: f64 = per.values().map(|p| p.0).sum();
-    let max: f64 = per.values().map(|p| p.1).sum();
+    let score = per.values().fold(0.0, |a, p| a + p.0);
+    let max = per.values().fold(0.0, |a, p| a + p.1);
     for (m, (s, x)) in &per {
         let _ = writeln!(output, "{m}: {} / {}", round(*s), round(*x));
     }
@@ -240,7 +241,6 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
             "compile_errors": facts.compile_errors,
             "assignments": assignments,
             "timings": {
-                "kit_build_s": secs(facts.kit_build),
                 "build_s": secs(facts.build),
                 "run_s": secs(facts.run),
                 "total_s": round(meta.total.as_secs_f64()),
