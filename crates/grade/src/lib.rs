@@ -646,11 +646,15 @@ pub fn grade(
     let first = Slot::at(&out, 0);
     if waiting > 0 {
         prepare_first(&first, options, &kit_hash, &stubs, &skip)?;
+        // The copies are made before any slot starts building.
+        for k in 1..slots {
+            prepare_copy(&Slot::at(&out, k), &first, &kit_hash)
+                .map_err(|m| GradeError::Io(m.en))?;
+        }
     }
     std::thread::scope(|scope| {
         for k in 0..slots {
-            let (queue, results, failure, stubs, out, kit_hash, first) =
-                (&queue, &results, &failure, &stubs, &out, &kit_hash, &first);
+            let (queue, results, failure, stubs, out) = (&queue, &results, &failure, &stubs, &out);
             scope.spawn(move || {
                 let mut slot: Option<Result<Slot, Msg>> = None;
                 loop {
@@ -661,14 +665,7 @@ pub fn grade(
                             result::Facts { refused: Some(why.clone()), ..result::Facts::default() }
                         }
                         Ok((files, _)) => {
-                            let s = slot.get_or_insert_with(|| {
-                                let s = Slot::at(out, k);
-                                if k == 0 {
-                                    Ok(s)
-                                } else {
-                                    prepare_copy(&s, first, kit_hash).map(|()| s)
-                                }
-                            });
+                            let s = slot.get_or_insert_with(|| Ok(Slot::at(out, k)));
                             match s {
                                 Ok(s) => grade_one(s, files, stubs, options, runner),
                                 Err(why) => result::Facts {
