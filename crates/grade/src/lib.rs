@@ -588,6 +588,11 @@ fn write_if_changed(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     std::fs::write(path, bytes)
 }
 
+/// The next submission in the queue (the lock is held only while taking it).
+fn next(queue: &Mutex<VecDeque<Pending>>) -> Option<Pending> {
+    queue.lock().ok().and_then(|mut q| q.pop_front())
+}
+
 /// Grades every submission in `options.submissions` with `runner` as the sandbox; writes
 /// `out/<student>.json`, `out/class.csv` and `out/summary.md`; calls `progress` after each.
 ///
@@ -656,25 +661,14 @@ pub fn grade(
         for k in 0..slots {
             let (queue, results, failure, stubs, out) = (&queue, &results, &failure, &stubs, &out);
             scope.spawn(move || {
-                let mut slot: Option<Result<Slot, Msg>> = None;
-                loop {
-                    let Some(p) = queue.lock().ok().and_then(|mut q| q.pop_front()) else { break };
+                let mut slot = Slot::at(out, k);
+                while let Some(p) = next(queue) {
                     let started = Instant::now();
                     let facts = match &p.files {
                         Err(why) => {
                             result::Facts { refused: Some(why.clone()), ..result::Facts::default() }
                         }
-                        Ok((files, _)) => {
-                            let s = slot.get_or_insert_with(|| Ok(Slot::at(out, k)));
-                            match s {
-                                Ok(s) => grade_one(s, files, stubs, options, runner),
-                                Err(why) => result::Facts {
-                                    fatal: Some(why.clone()),
-                                    retry: true,
-                                    ..result::Facts::default()
-                                },
-                            }
-                        }
+                        Ok((files, _)) => grade_one(&mut slot, files, stubs, options, runner),
                     };
                     let student = p.files.as_ref().ok().map(|(_, s)| s.student.to_string());
                     let value = result::build(
