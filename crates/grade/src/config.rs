@@ -12,7 +12,8 @@
 //! ```
 //!
 //! Prefixes match whole dot-separated parts: `a1` names `a1.t2.closed` but not `a10.t1.x`.
-//! Unquoted dotted keys (`a1.t3 = 3`) mean the same as quoted ones.
+//! Quote keys with dots: TOML reads an unquoted `a1.t3 = 3` as a table `a1`, which works only
+//! when `a1` has no number of its own.
 
 use std::collections::BTreeMap;
 
@@ -145,7 +146,7 @@ mod tests {
     #[test]
     fn the_longest_prefix_wins_and_parts_match_whole() {
         let c = Config::parse(
-            "default = 0.5\n[points]\na1 = 2\n\"a1.t3\" = 3\na1.t3.unit = 5\ns = 1.5\n",
+            "default = 0.5\n[points]\na1 = 2\n\"a1.t3\" = 3\n\"a1.t3.unit\" = 5\ns = 1.5\na4.t2 = 4\n",
         )
         .unwrap();
         assert_eq!(c.points("a1.t2.closed"), 2.0);
@@ -155,6 +156,7 @@ mod tests {
         assert_eq!(c.points("s.t1.ambient"), 1.5);
         assert_eq!(c.points("a10.t1.x"), 0.5);
         assert_eq!(c.points("a2.t1.x"), 0.5);
+        assert_eq!(c.points("a4.t2.corners"), 4.0);
         assert_eq!(Config::default().points("a1.t1.count"), 1.0);
     }
 
