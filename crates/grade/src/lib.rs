@@ -404,6 +404,16 @@ fn describe_end(run: &Run, limits: &Limits) -> Msg {
     }
 }
 
+/// The reports in a run's stdout: the JSON array the runner prints last, after whatever the
+/// student's code printed (a forgotten `println!` must not cost the assignment).
+#[must_use]
+pub fn find_reports(stdout: &str) -> Option<Vec<serde_json::Value>> {
+    let starts = std::iter::once(0).chain(stdout.match_indices("\n[").map(|(i, _)| i + 1));
+    starts
+        .filter(|&i| stdout[i..].starts_with('['))
+        .find_map(|i| serde_json::from_str::<Vec<serde_json::Value>>(&stdout[i..]).ok())
+}
+
 /// Runs the checks of `which` in the slot, in the sandbox.
 fn run_checks(
     slot: &Slot,
@@ -434,10 +444,20 @@ fn run_checks(
             stderr: String::new(),
         },
         Ok(run) => {
-            let reports: Option<Vec<serde_json::Value>> = serde_json::from_str(&run.stdout).ok();
-            let report = reports.and_then(|r| r.into_iter().find(|r| r["assignment"] == which));
+            let report = find_reports(&run.stdout)
+                .and_then(|r| r.into_iter().find(|r| r["assignment"] == which));
             match report {
                 Some(r) if run.ended != Ended::TimedOut => AssignmentRun::Report(r),
+                _ if run.output_cut => AssignmentRun::Died {
+                    how: Msg::new(
+                        format!("出力が上限（{} バイト）を超えました", options.limits.output_bytes),
+                        format!(
+                            "printed more than the limit of {} bytes",
+                            options.limits.output_bytes
+                        ),
+                    ),
+                    stderr: result::tail(&run.stderr, 2000),
+                },
                 _ => AssignmentRun::Died {
                     how: describe_end(&run, &options.limits),
                     stderr: result::tail(&run.stderr, 2000),
@@ -579,6 +599,35 @@ fn grade_one(
     }
     facts.run = Some(run_time);
     facts
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reports_are_found_after_the_students_own_output() {
+        let json = "[\n  {\n    \"assignment\": \"a1\"\n  }\n]\n";
+        assert_eq!(find_reports(json).unwrap()[0]["assignment"], "a1");
+        let noisy = format!("debug: [1, 2]\n[oops\n{json}");
+        assert_eq!(find_reports(&noisy).unwrap()[0]["assignment"], "a1");
+        assert!(find_reports("[1, 2").is_none());
+        assert!(find_reports("").is_none());
+        assert_eq!(file_name("../a b.zip"), "_a_b.zip");
+        assert_eq!(file_name(""), "_");
+    }
+
+    #[test]
+    fn hashes_are_stable_and_length_prefixed() {
+        let mut a = Hasher::default();
+        a.add(b"ab");
+        a.add(b"c");
+        let mut b = Hasher::default();
+        b.add(b"a");
+        b.add(b"bc");
+        assert_ne!(a.hex(), b.hex());
+        assert_eq!(Hasher::default().hex(), "cbf29ce484222325");
+    }
 }
 
 fn write_if_changed(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
