@@ -601,35 +601,6 @@ fn grade_one(
     facts
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn reports_are_found_after_the_students_own_output() {
-        let json = "[\n  {\n    \"assignment\": \"a1\"\n  }\n]\n";
-        assert_eq!(find_reports(json).unwrap()[0]["assignment"], "a1");
-        let noisy = format!("debug: [1, 2]\n[oops\n{json}");
-        assert_eq!(find_reports(&noisy).unwrap()[0]["assignment"], "a1");
-        assert!(find_reports("[1, 2").is_none());
-        assert!(find_reports("").is_none());
-        assert_eq!(file_name("../a b.zip"), "_a_b.zip");
-        assert_eq!(file_name(""), "_");
-    }
-
-    #[test]
-    fn hashes_are_stable_and_length_prefixed() {
-        let mut a = Hasher::default();
-        a.add(b"ab");
-        a.add(b"c");
-        let mut b = Hasher::default();
-        b.add(b"a");
-        b.add(b"bc");
-        assert_ne!(a.hex(), b.hex());
-        assert_eq!(Hasher::default().hex(), "cbf29ce484222325");
-    }
-}
-
 fn write_if_changed(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     if std::fs::read(path).ok().as_deref() == Some(bytes) {
         return Ok(());
@@ -771,4 +742,33 @@ pub fn grade(
     let md = result::summary_md(&all, options.lang);
     write_atomic(&out.join("summary.md"), md.as_bytes()).map_err(|e| io(&out, e))?;
     Ok(done)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reports_are_found_after_the_students_own_output() {
+        let json = "[\n  {\n    \"assignment\": \"a1\"\n  }\n]\n";
+        assert_eq!(find_reports(json).unwrap()[0]["assignment"], "a1");
+        let noisy = format!("debug: [1, 2]\n[oops\n{json}");
+        assert_eq!(find_reports(&noisy).unwrap()[0]["assignment"], "a1");
+        assert!(find_reports("[1, 2").is_none());
+        assert!(find_reports("").is_none());
+        assert_eq!(file_name("../a b.zip"), "_a_b.zip");
+        assert_eq!(file_name(""), "_");
+    }
+
+    #[test]
+    fn hashes_are_stable_and_length_prefixed() {
+        let mut a = Hasher::default();
+        a.add(b"ab");
+        a.add(b"c");
+        let mut b = Hasher::default();
+        b.add(b"a");
+        b.add(b"bc");
+        assert_ne!(a.hex(), b.hex());
+        assert_eq!(Hasher::default().hex(), "cbf29ce484222325");
+    }
 }
