@@ -2,129 +2,16 @@
 //! stubs freshly generated, the manifests' solution-only lines dropped and the lock file without
 //! the solutions crate — which builds, runs and checks on its own.
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::PathBuf;
 
 use cg_core::lang::Lang;
-use cg_harness::stubs::{generate, stub_from_solution};
+use cg_grade::handout::write_handout;
 
 /// Options of `cg handout`.
 #[derive(clap::Args)]
 pub struct Args {
     /// The folder to write the student's copy into (must not exist, or be empty) / 出力先のフォルダ
     dir: PathBuf,
-}
-
-/// Paths (relative to the kit) that never go into a handout.
-fn excluded(path: &Path) -> bool {
-    let first = path.components().next().map(|c| c.as_os_str().to_string_lossy().into_owned());
-    matches!(first.as_deref(), Some("solutions" | "target" | "out" | ".git"))
-        || path == Path::new("exercises/student.toml")
-}
-
-/// The kit's files: `git ls-files` when the kit is a git checkout (so ignored files stay out),
-/// otherwise every file under the kit except the excluded folders.
-fn kit_files(root: &Path) -> Result<Vec<PathBuf>, String> {
-    let git = Command::new("git")
-        .arg("-C")
-        .arg(root)
-        .args(["ls-files", "-z", "--cached", "--others", "--exclude-standard"])
-        .output();
-    if let Some(out) = git.ok().filter(|o| o.status.success()) {
-        return Ok(out
-            .stdout
-            .split(|&b| b == 0)
-            .filter(|s| !s.is_empty())
-            .map(|s| PathBuf::from(String::from_utf8_lossy(s).into_owned()))
-            .filter(|p| root.join(p).is_file())
-            .collect());
-    }
-    let mut files = Vec::new();
-    let mut stack = vec![PathBuf::new()];
-    while let Some(dir) = stack.pop() {
-        let entries = std::fs::read_dir(root.join(&dir))
-            .map_err(|e| format!("{}: {e}", root.join(&dir).display()))?;
-        for entry in entries.flatten() {
-            let relative = dir.join(entry.file_name());
-            if excluded(&relative) {
-                continue;
-            }
-            if entry.path().is_dir() {
-                stack.push(relative);
-            } else {
-                files.push(relative);
-            }
-        }
-    }
-    Ok(files)
-}
-
-/// `Cargo.lock` without the `cg-solutions` package and every mention of it.
-fn lock_without_solutions(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for (i, block) in text.split("\n[[package]]\n").enumerate() {
-        if block.lines().any(|l| l.trim() == "name = \"cg-solutions\"") {
-            continue;
-        }
-        if i > 0 {
-            out.push_str("\n[[package]]\n");
-        }
-        for line in block.split_inclusive('\n') {
-            if line.trim() != "\"cg-solutions\"," {
-                out.push_str(line);
-            }
-        }
-    }
-    out
-}
-
-/// Writes the handout; returns how many files it wrote.
-fn write_handout(root: &Path, dir: &Path) -> Result<usize, String> {
-    let err = |p: &Path, e: std::io::Error| format!("{}: {e}", p.display());
-    let mut count = 0;
-    let mut put = |relative: &Path, text: &[u8]| -> Result<(), String> {
-        let target = dir.join(relative);
-        if let Some(parent) = target.parent() {
-            std::fs::create_dir_all(parent).map_err(|e| err(parent, e))?;
-        }
-        std::fs::write(&target, text).map_err(|e| err(&target, e))?;
-        count += 1;
-        Ok(())
-    };
-    for relative in kit_files(root)? {
-        if excluded(&relative) || relative.starts_with("exercises") {
-            continue;
-        }
-        let source = root.join(&relative);
-        let name = relative.file_name().map(|n| n.to_string_lossy().into_owned());
-        match name.as_deref() {
-            Some("Cargo.toml") => {
-                let text = std::fs::read_to_string(&source).map_err(|e| err(&source, e))?;
-                let stub = stub_from_solution(&text, &relative.display().to_string(), "#")
-                    .map_err(|e| e.to_string())?;
-                put(&relative, stub.as_bytes())?;
-            }
-            Some("Cargo.lock") if relative.parent() == Some(Path::new("")) => {
-                let text = std::fs::read_to_string(&source).map_err(|e| err(&source, e))?;
-                put(&relative, lock_without_solutions(&text).as_bytes())?;
-            }
-            _ => {
-                let bytes = std::fs::read(&source).map_err(|e| err(&source, e))?;
-                put(&relative, &bytes)?;
-            }
-        }
-    }
-    // The pristine stubs, generated from the solutions (never the maintainer's working copy),
-    // and exercises/'s own files that are not generated (its README).
-    for (relative, text) in generate(&root.join("solutions")).map_err(|e| e.to_string())? {
-        put(&Path::new("exercises").join(relative), text.as_bytes())?;
-    }
-    let readme = root.join("exercises/README.md");
-    if readme.exists() {
-        let bytes = std::fs::read(&readme).map_err(|e| err(&readme, e))?;
-        put(Path::new("exercises/README.md"), &bytes)?;
-    }
-    Ok(count)
 }
 
 /// `cg handout <DIR>`.
@@ -165,28 +52,4 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         )
     );
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_lock_file_loses_the_solutions_crate_and_nothing_else() {
-        let lock = "version = 4\n\n[[package]]\nname = \"a\"\nversion = \"1.0.0\"\n\n[[package]]\nname = \"cg-cli\"\nversion = \"0.1.0\"\ndependencies = [\n \"a\",\n \"cg-solutions\",\n]\n\n[[package]]\nname = \"cg-solutions\"\nversion = \"0.1.0\"\ndependencies = [\n \"a\",\n]\n";
-        let out = lock_without_solutions(lock);
-        assert_eq!(
-            out,
-            "version = 4\n\n[[package]]\nname = \"a\"\nversion = \"1.0.0\"\n\n[[package]]\nname = \"cg-cli\"\nversion = \"0.1.0\"\ndependencies = [\n \"a\",\n]\n"
-        );
-    }
-
-    #[test]
-    fn solutions_and_personal_files_stay_out() {
-        assert!(excluded(Path::new("solutions/src/a1.rs")));
-        assert!(excluded(Path::new("exercises/student.toml")));
-        assert!(excluded(Path::new("target/debug/cg")));
-        assert!(!excluded(Path::new("exercises/src/a1.rs")));
-        assert!(!excluded(Path::new("crates/core/src/lib.rs")));
-    }
 }

@@ -11,6 +11,7 @@ use clap::{Parser, Subcommand};
 
 mod assignments;
 mod bench;
+mod grade;
 mod handout;
 mod inspect;
 mod render;
@@ -58,6 +59,8 @@ enum Command {
     Handout(handout::Args),
     /// Measure speed against error and write docs/speed-vs-error.md with its plots / 速度と誤差を測り docs/speed-vs-error.md に書く
     Bench(bench::Args),
+    /// Grade every submission in a folder with the kit's own checks, in a sandbox (instructors) / 提出物をまとめて採点（教員用）
+    Grade(grade::Args),
 }
 
 /// Ends quietly when the reader of our output goes away (`cg check | head`): printing to a closed
@@ -94,6 +97,7 @@ fn main() -> ExitCode {
         Some(Command::SyncStubs) => assignments::sync_stubs(lang).map(|()| true),
         Some(Command::Handout(args)) => handout::run(&args, lang).map(|()| true),
         Some(Command::Bench(args)) => bench::run(&args, lang).map(|()| true),
+        Some(Command::Grade(args)) => grade::run(&args, lang).map(|()| true),
         None => render::main_job(lang).map(|()| true),
     };
     match result {

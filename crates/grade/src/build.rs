@@ -1,0 +1,172 @@
+//! Building a slot's kit with a submission's modules: cargo with a time limit, compiler errors
+//! read from `--message-format=json` and put on the module they are in.
+
+use std::collections::BTreeMap;
+use std::io::Read;
+use std::os::unix::process::CommandExt;
+use std::path::Path;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use crate::submission::MODULES;
+
+/// How a build ended.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct BuildOutput {
+    /// Whether cargo succeeded.
+    pub success: bool,
+    /// Whether it ran over its time limit and was killed.
+    pub timed_out: bool,
+    /// Compiler errors by module (`a1` …), each `file:line: message`.
+    pub module_errors: BTreeMap<String, Vec<String>>,
+    /// Errors in no module of the student's (the kit's files, or cargo itself).
+    pub other_errors: Vec<String>,
+    /// The end of cargo's stderr.
+    pub stderr_tail: String,
+}
+
+/// The module a compiler message's file belongs to: `exercises/src/a2.rs` → `a2`.
+fn module_of(file: &str) -> Option<&'static str> {
+    let file = file.replace('\\', "/");
+    MODULES.iter().copied().find(|m| {
+        let name = format!("src/{m}.rs");
+        file == name || file.ends_with(&format!("exercises/{name}"))
+    })
+}
+
+/// Reads cargo's JSON messages: errors by module, and the others.
+#[must_use]
+pub fn parse_messages(stdout: &str) -> (BTreeMap<String, Vec<String>>, Vec<String>) {
+    let mut by_module: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    let mut other = Vec::new();
+    for line in stdout.lines() {
+        let Ok(v) = serde_json::from_str::<serde_json::Value>(line) else { continue };
+        if v["reason"] != "compiler-message" || v["message"]["level"] != "error" {
+            continue;
+        }
+        let text = v["message"]["message"].as_str().unwrap_or("").to_owned();
+        if text.starts_with("aborting due to") || text.starts_with("could not compile") {
+            continue;
+        }
+        let spans = v["message"]["spans"].as_array().cloned().unwrap_or_default();
+        let primary = spans.iter().find(|s| s["is_primary"] == true).or(spans.first());
+        let place = primary.map(|s| {
+            (
+                s["file_name"].as_str().unwrap_or("?").to_owned(),
+                s["line_start"].as_u64().unwrap_or(0),
+            )
+        });
+        // The module is the primary span's, or else any span's in a student module.
+        let module = place
+            .as_ref()
+            .and_then(|(f, _)| module_of(f))
+            .or_else(|| spans.iter().find_map(|s| s["file_name"].as_str().and_then(module_of)));
+        let shown = match &place {
+            Some((file, line)) => format!("{file}:{line}: {text}"),
+            None => text,
+        };
+        match module {
+            Some(m) => by_module.entry(m.to_owned()).or_default().push(shown),
+            None => other.push(shown),
+        }
+    }
+    (by_module, other)
+}
+
+fn tail(text: &str, max: usize) -> String {
+    if text.len() <= max {
+        return text.to_owned();
+    }
+    let mut start = text.len() - max;
+    while !text.is_char_boundary(start) {
+        start += 1;
+    }
+    format!("…{}", &text[start..])
+}
+
+/// Runs `cargo build --release --offline --locked -p <package> --message-format=json` in `kit`
+/// with `target` as its target folder, killing it (and the compilers it started) after `limit`.
+///
+/// # Errors
+/// cargo could not be started.
+pub fn cargo_build(
+    kit: &Path,
+    target: &Path,
+    package: &str,
+    limit: Duration,
+) -> std::io::Result<BuildOutput> {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let mut child = Command::new(cargo)
+        .args(["build", "--release", "--offline", "--locked", "--message-format=json", "-p"])
+        .arg(package)
+        .current_dir(kit)
+        .env("CARGO_TARGET_DIR", target)
+        .env_remove("RUSTFLAGS")
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .process_group(0)
+        .spawn()?;
+    let read_all = |mut r: Box<dyn Read + Send>| {
+        std::thread::spawn(move || {
+            let mut s = Vec::new();
+            let _ = r.read_to_end(&mut s);
+            String::from_utf8_lossy(&s).into_owned()
+        })
+    };
+    let out = child.stdout.take().map(|s| read_all(Box::new(s)));
+    let err = child.stderr.take().map(|s| read_all(Box::new(s)));
+    let started = Instant::now();
+    let mut timed_out = false;
+    let status = loop {
+        if let Some(status) = child.try_wait()? {
+            break Some(status);
+        }
+        if started.elapsed() > limit {
+            timed_out = true;
+            let _ = Command::new("kill").arg("-KILL").arg(format!("-{}", child.id())).status();
+            let _ = child.kill();
+            let _ = child.wait();
+            break None;
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    };
+    let stdout = out.and_then(|h| h.join().ok()).unwrap_or_default();
+    let stderr = err.and_then(|h| h.join().ok()).unwrap_or_default();
+    let (module_errors, other_errors) = parse_messages(&stdout);
+    Ok(BuildOutput {
+        success: status.is_some_and(|s| s.success()),
+        timed_out,
+        module_errors,
+        other_errors,
+        stderr_tail: tail(&stderr, 4000),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn errors_go_to_their_module() {
+        let line = |file: &str, msg: &str| {
+            serde_json::json!({"reason": "compiler-message", "message": {"level": "error",
+                "message": msg, "spans": [{"file_name": file, "line_start": 7, "is_primary": true}]}})
+            .to_string()
+        };
+        let stdout = [
+            line("exercises/src/a2.rs", "expected `;`, found `}`"),
+            line("crates/cli/src/main.rs", "mismatched types"),
+            line("exercises/src/a2.rs", "aborting due to 1 previous error"),
+            r#"{"reason":"compiler-artifact"}"#.to_owned(),
+            "not json".to_owned(),
+        ]
+        .join("\n");
+        let (by, other) = parse_messages(&stdout);
+        assert_eq!(by["a2"], vec!["exercises/src/a2.rs:7: expected `;`, found `}`".to_owned()]);
+        assert_eq!(by.len(), 1);
+        assert_eq!(other, vec!["crates/cli/src/main.rs:7: mismatched types".to_owned()]);
+        assert_eq!(module_of("src/s.rs"), Some("s"));
+        assert_eq!(module_of("exercises/src/lib.rs"), None);
+    }
+}

@@ -1,0 +1,170 @@
+//! The grading config: how many points each check is worth.
+//!
+//! ```toml
+//! # Points for a check that no rule below names (default 1).
+//! default = 1
+//!
+//! [points]
+//! # By assignment, by task, or by check ID: the longest matching prefix wins.
+//! a1 = 2
+//! "a1.t3" = 3
+//! "a1.t3.unit" = 5
+//! ```
+//!
+//! Prefixes match whole dot-separated parts: `a1` names `a1.t2.closed` but not `a10.t1.x`.
+//! Quote keys with dots: TOML reads an unquoted `a1.t3 = 3` as a table `a1`, which works only
+//! when `a1` has no number of its own.
+
+use std::collections::BTreeMap;
+
+use cg_core::lang::Lang;
+
+/// Points per check.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Config {
+    /// Points of a check no rule names.
+    pub default_points: f64,
+    /// Points by check-ID prefix (`a1`, `a1.t3`, `a1.t3.unit`).
+    pub points: BTreeMap<String, f64>,
+}
+
+impl Default for Config {
+    fn default() -> Config {
+        Config { default_points: 1.0, points: BTreeMap::new() }
+    }
+}
+
+/// Why a config could not be read, in both languages.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{en}")]
+pub struct ConfigError {
+    /// 日本語
+    pub ja: String,
+    /// English
+    pub en: String,
+}
+
+impl ConfigError {
+    fn new(ja: impl Into<String>, en: impl Into<String>) -> ConfigError {
+        ConfigError { ja: ja.into(), en: en.into() }
+    }
+
+    /// The message in `lang`.
+    #[must_use]
+    pub fn message(&self, lang: Lang) -> &str {
+        lang.pick(&self.ja, &self.en)
+    }
+}
+
+fn number(key: &str, value: &toml::Value) -> Result<f64, ConfigError> {
+    #[allow(clippy::cast_precision_loss)]
+    let n = match value {
+        toml::Value::Integer(i) => *i as f64,
+        toml::Value::Float(f) => *f,
+        _ => f64::NAN,
+    };
+    if n.is_finite() && n >= 0.0 {
+        Ok(n)
+    } else {
+        Err(ConfigError::new(
+            format!("{key} = {value}: 点数は 0 以上の数にしてください"),
+            format!("{key} = {value}: points must be a number, 0 or more"),
+        ))
+    }
+}
+
+fn flatten(
+    prefix: &str,
+    table: &toml::Table,
+    out: &mut BTreeMap<String, f64>,
+) -> Result<(), ConfigError> {
+    for (key, value) in table {
+        let full = if prefix.is_empty() { key.clone() } else { format!("{prefix}.{key}") };
+        match value {
+            toml::Value::Table(inner) => flatten(&full, inner, out)?,
+            other => {
+                out.insert(full.clone(), number(&full, other)?);
+            }
+        }
+    }
+    Ok(())
+}
+
+impl Config {
+    /// Reads a config from TOML text.
+    ///
+    /// # Errors
+    /// The text is not TOML, has keys other than `default` and `[points]`, or a number that is
+    /// negative or not a number.
+    pub fn parse(text: &str) -> Result<Config, ConfigError> {
+        let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
+            ConfigError::new(
+                format!("採点設定を読めません: {e}"),
+                format!("the grading config is not valid TOML: {e}"),
+            )
+        })?;
+        let mut config = Config::default();
+        for (key, value) in &table {
+            match (key.as_str(), value) {
+                ("default", v) => config.default_points = number("default", v)?,
+                ("points", toml::Value::Table(points)) => {
+                    flatten("", points, &mut config.points)?;
+                }
+                _ => {
+                    return Err(ConfigError::new(
+                        format!("採点設定の {key} は使えません（default と [points] のみ）"),
+                        format!(
+                            "unknown key {key} in the grading config (only default and [points])"
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(config)
+    }
+
+    /// The points check `id` is worth: the rule with the longest prefix of `id` (whole
+    /// dot-separated parts), else the default.
+    #[must_use]
+    pub fn points(&self, id: &str) -> f64 {
+        let mut best: Option<(usize, f64)> = None;
+        for (prefix, &points) in &self.points {
+            let matches = id == prefix
+                || id.strip_prefix(prefix.as_str()).is_some_and(|rest| rest.starts_with('.'));
+            if matches && best.is_none_or(|(len, _)| prefix.len() > len) {
+                best = Some((prefix.len(), points));
+            }
+        }
+        best.map_or(self.default_points, |(_, p)| p)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_longest_prefix_wins_and_parts_match_whole() {
+        let c = Config::parse(
+            "default = 0.5\n[points]\na1 = 2\n\"a1.t3\" = 3\n\"a1.t3.unit\" = 5\ns = 1.5\na4.t2 = 4\n",
+        )
+        .unwrap();
+        assert_eq!(c.points("a1.t2.closed"), 2.0);
+        assert_eq!(c.points("a1.t3.count"), 3.0);
+        assert_eq!(c.points("a1.t3.unit"), 5.0);
+        assert_eq!(c.points("a1.t3.unitx"), 3.0);
+        assert_eq!(c.points("s.t1.ambient"), 1.5);
+        assert_eq!(c.points("a10.t1.x"), 0.5);
+        assert_eq!(c.points("a2.t1.x"), 0.5);
+        assert_eq!(c.points("a4.t2.corners"), 4.0);
+        assert_eq!(Config::default().points("a1.t1.count"), 1.0);
+    }
+
+    #[test]
+    fn bad_configs_say_why() {
+        assert!(Config::parse("default = -1").is_err());
+        assert!(Config::parse("[points]\na1 = \"two\"").is_err());
+        assert!(Config::parse("weights = 3").unwrap_err().message(Lang::En).contains("weights"));
+        assert!(!Config::parse("default = [").unwrap_err().message(Lang::Ja).is_empty());
+    }
+}

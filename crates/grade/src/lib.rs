@@ -1,0 +1,774 @@
+//! # cg-grade — grading a class with the kit's own checks, safely
+//!
+//! [`grade`] takes a folder of submissions (each a folder or a `.zip` holding an `exercises/`
+//! tree), builds each into a copy of the kit's handout ([`handout`]) — one copy per parallel
+//! slot, each with its own cargo target folder reused from submission to submission — and runs
+//! the kit's checks on it in the sandbox ([`cg_sandbox`]), one run per assignment so a loop in
+//! one assignment costs only that assignment. Only `exercises/src/{a1,a2,a3,a4,s}.rs` and
+//! `exercises/student.toml` are taken from a submission; the check code is always the kit's.
+//!
+//! A module that does not compile is replaced by its pristine stub and the build retried, so the
+//! other assignments are still graded; the replaced module's checks get 0 with the compiler
+//! errors. Results are written atomically per student in the shape of Gradescope's
+//! `results.json` ([`result`]), with a class table (`class.csv`) and the class's most common
+//! mistakes (`summary.md`). A submission whose result already exists with the same hash (its
+//! files, the config and the kit) is skipped, so an interrupted run picks up where it stopped.
+
+use std::collections::{BTreeMap, VecDeque};
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+use cg_core::lang::Lang;
+use cg_sandbox::{Ended, Isolation, Job, Limits, Run, SandboxError};
+
+pub mod build;
+pub mod config;
+pub mod handout;
+pub mod result;
+pub mod submission;
+
+pub use config::Config;
+
+/// A message in Japanese and English.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Msg {
+    /// 日本語
+    pub ja: String,
+    /// English
+    pub en: String,
+}
+
+impl Msg {
+    /// A message from its two languages.
+    #[must_use]
+    pub fn new(ja: impl Into<String>, en: impl Into<String>) -> Msg {
+        Msg { ja: ja.into(), en: en.into() }
+    }
+
+    /// The message in `lang`.
+    #[must_use]
+    pub fn pick(&self, lang: Lang) -> &str {
+        lang.pick(&self.ja, &self.en)
+    }
+}
+
+/// The function that runs a job in the sandbox: [`cg_sandbox::run`], or a stand-in in tests.
+pub type Runner = fn(&Job, &Limits, Isolation) -> Result<Run, SandboxError>;
+
+/// What to grade and how.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// The kit's root (with `solutions/`): the handouts are written from it.
+    pub kit: PathBuf,
+    /// The folder whose every entry is a submission.
+    pub submissions: PathBuf,
+    /// Where the results go (and the work copies, under `.work/`).
+    pub out: PathBuf,
+    /// Points per check.
+    pub config: Config,
+    /// The config's text, part of every submission's hash.
+    pub config_text: String,
+    /// Parallel slots (each a kit copy with its own build folder).
+    pub jobs: usize,
+    /// The limits of one run of the checks (one assignment).
+    pub limits: Limits,
+    /// The limit of one `cargo build`.
+    pub build_limit: Duration,
+    /// The isolation the runs use.
+    pub isolation: Isolation,
+    /// The language of the results' text.
+    pub lang: Lang,
+}
+
+/// How grading one submission went, for the progress lines.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Graded {
+    /// The submission's entry name in the submissions folder.
+    pub entry: String,
+    /// The result file's name, without `.json` (the student number, when known).
+    pub name: String,
+    /// Its score.
+    pub score: f64,
+    /// Its maximum score, when known.
+    pub max_score: Option<f64>,
+    /// Whether an existing result was kept (same hash).
+    pub skipped: bool,
+}
+
+/// Why grading could not start (a single submission's problems go into its result instead).
+#[derive(Debug, thiserror::Error)]
+pub enum GradeError {
+    /// A folder could not be read or written.
+    #[error("{0}")]
+    Io(String),
+}
+
+/// A 64-bit FNV-1a hash, as 16 hex digits: the resume key (not a security measure: a
+/// submission can only collide with its own earlier result).
+#[derive(Clone, Copy, Debug)]
+pub struct Hasher(u64);
+
+impl Default for Hasher {
+    fn default() -> Hasher {
+        Hasher(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl Hasher {
+    /// Adds bytes, prefixed by their length (so `ab`+`c` differs from `a`+`bc`).
+    pub fn add(&mut self, bytes: &[u8]) {
+        for &b in (bytes.len() as u64).to_le_bytes().iter().chain(bytes) {
+            self.0 ^= u64::from(b);
+            self.0 = self.0.wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+
+    /// The hash so far, as hex.
+    #[must_use]
+    pub fn hex(&self) -> String {
+        format!("{:016x}", self.0)
+    }
+}
+
+/// The kit's version for the resume key: the crate version and a hash of every kit file a
+/// handout is made from (so a changed check re-grades everyone).
+///
+/// # Errors
+/// The kit's files could not be listed or read.
+pub fn kit_version(kit: &Path, skip: &dyn Fn(&Path) -> bool) -> Result<String, GradeError> {
+    let mut files = handout::kit_files(kit).map_err(GradeError::Io)?;
+    files.retain(|f| !handout::excluded(f) || f.starts_with("solutions"));
+    files.retain(|f| !skip(&kit.join(f)));
+    files.sort();
+    let mut h = Hasher::default();
+    h.add(env!("CARGO_PKG_VERSION").as_bytes());
+    for f in files {
+        h.add(f.to_string_lossy().as_bytes());
+        h.add(
+            &std::fs::read(kit.join(&f))
+                .map_err(|e| GradeError::Io(format!("{}: {e}", f.display())))?,
+        );
+    }
+    Ok(h.hex())
+}
+
+/// Writes `bytes` to `path` atomically: a temporary file beside it, then a rename.
+///
+/// # Errors
+/// The file could not be written or renamed.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let temp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
+    std::fs::write(&temp, bytes)?;
+    std::fs::rename(&temp, path)
+}
+
+/// A name safe as a file name: letters, digits, `-`, `_` and `.` (not leading), others `_`.
+#[must_use]
+pub fn file_name(raw: &str) -> String {
+    let s: String = raw
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.') { c } else { '_' })
+        .collect();
+    let s = s.trim_start_matches('.').to_owned();
+    if s.is_empty() { "_".to_owned() } else { s }
+}
+
+/// One submission waiting to be graded.
+struct Pending {
+    entry: String,
+    name: String,
+    hash: String,
+    files: Result<(submission::Files, cg_assign::StudentFile), Msg>,
+}
+
+/// The entries of the submissions folder, read and hashed, with their result names.
+fn collect(options: &Options, kit_hash: &str) -> Result<Vec<Pending>, GradeError> {
+    let mut entries: Vec<PathBuf> = std::fs::read_dir(&options.submissions)
+        .map_err(|e| GradeError::Io(format!("{}: {e}", options.submissions.display())))?
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| !p.file_name().is_some_and(|n| n.to_string_lossy().starts_with('.')))
+        .collect();
+    entries.sort();
+    let mut used: BTreeMap<String, usize> = BTreeMap::new();
+    let mut pending = Vec::new();
+    for path in entries {
+        let entry = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        let files = submission::read(&path).and_then(|files| {
+            let toml = files.student_toml.clone().ok_or_else(|| {
+                Msg::new("exercises/student.toml がありません", "exercises/student.toml is missing")
+            })?;
+            let temp =
+                options.out.join(".work").join(format!("student-{}.toml", file_name(&entry)));
+            let _ = std::fs::create_dir_all(options.out.join(".work"));
+            std::fs::write(&temp, &toml).map_err(|e| Msg::new(format!("{e}"), format!("{e}")))?;
+            let student = cg_assign::read_student_file(&temp);
+            let _ = std::fs::remove_file(&temp);
+            let student = student.map_err(|e| {
+                Msg::new(
+                    format!("exercises/student.toml: {}", e.message(Lang::Ja)),
+                    format!("exercises/student.toml: {}", e.message(Lang::En)),
+                )
+            })?;
+            Ok((files, student))
+        });
+        let mut h = Hasher::default();
+        h.add(kit_hash.as_bytes());
+        h.add(options.config_text.as_bytes());
+        h.add(&options.limits.wall.as_millis().to_le_bytes());
+        h.add(&options.limits.memory_bytes.to_le_bytes());
+        let base = match &files {
+            Ok((f, student)) => {
+                for (m, bytes) in &f.modules {
+                    h.add(m.as_bytes());
+                    h.add(bytes);
+                }
+                h.add(f.student_toml.as_deref().unwrap_or_default());
+                student.student.to_string()
+            }
+            Err(why) => {
+                h.add(b"refused");
+                h.add(why.en.as_bytes());
+                format!("_{}", file_name(&entry))
+            }
+        };
+        // Two submissions of one student: the second is named after its entry too.
+        let count = used.entry(base.clone()).or_insert(0);
+        *count += 1;
+        let name = if *count == 1 { base } else { format!("{base}~{}", file_name(&entry)) };
+        pending.push(Pending { entry, name, hash: h.hex(), files });
+    }
+    Ok(pending)
+}
+
+/// Whether `out/<name>.json` exists with this hash.
+fn already_graded(out: &Path, name: &str, hash: &str) -> Option<serde_json::Value> {
+    let text = std::fs::read_to_string(out.join(format!("{name}.json"))).ok()?;
+    let v: serde_json::Value = serde_json::from_str(&text).ok()?;
+    (v["cg"]["hash"] == hash).then_some(v)
+}
+
+/// The checks of each assignment, with their titles, as one run reported them.
+pub type Baseline = BTreeMap<String, Vec<(String, Msg)>>;
+
+/// A parallel slot: a kit copy, its build folder, and the folder a run may write.
+struct Slot {
+    kit: PathBuf,
+    target: PathBuf,
+    run: PathBuf,
+}
+
+/// Which program runs the checks in a kit copy: `cg-check-runner` when the kit has it, else
+/// `cg check --json` (the same reports, with the whole command line built).
+fn runner_command(
+    kit: &Path,
+    target: &Path,
+    which: &str,
+    limits: &Limits,
+) -> (&'static str, PathBuf, Vec<String>) {
+    if kit.join("crates/check-runner/Cargo.toml").exists() {
+        (
+            "cg-check-runner",
+            target.join("release/cg-check-runner"),
+            vec!["--only".into(), which.into()],
+        )
+    } else {
+        let secs = limits.wall.as_secs().max(1).to_string();
+        (
+            "cg-cli",
+            target.join("release/cg"),
+            vec!["check".into(), which.into(), "--json".into(), "--time-limit".into(), secs],
+        )
+    }
+}
+
+impl Slot {
+    fn at(out: &Path, k: usize) -> Slot {
+        let root = out.join(".work").join(format!("slot-{k}"));
+        Slot { kit: root.join("kit"), target: root.join("target"), run: root.join("run") }
+    }
+
+    fn marker(&self) -> PathBuf {
+        self.kit.with_file_name("kit-version")
+    }
+
+    fn is_current(&self, kit_hash: &str) -> bool {
+        std::fs::read_to_string(self.marker()).ok().as_deref() == Some(kit_hash)
+    }
+}
+
+/// Slot 0: the handout written afresh when the kit changed, and the runner built from the
+/// pristine stubs (the whole kit's first build, paid once).
+fn prepare_first(
+    slot: &Slot,
+    options: &Options,
+    kit_hash: &str,
+    stubs: &BTreeMap<String, String>,
+    skip: &dyn Fn(&Path) -> bool,
+) -> Result<(), GradeError> {
+    let io = |e: &dyn std::fmt::Display| GradeError::Io(format!("{}: {e}", slot.kit.display()));
+    if !slot.is_current(kit_hash) {
+        let _ = std::fs::remove_dir_all(&slot.kit);
+        let _ = std::fs::remove_file(slot.marker());
+        std::fs::create_dir_all(&slot.kit).map_err(|e| io(&e))?;
+        handout::write_handout_filtered(&options.kit, &slot.kit, skip).map_err(|e| io(&e))?;
+    }
+    for m in submission::MODULES {
+        write_if_changed(&slot.kit.join(format!("exercises/src/{m}.rs")), stubs[m].as_bytes())
+            .map_err(|e| io(&e))?;
+    }
+    let package = runner_command(&slot.kit, &slot.target, "a1", &options.limits).0;
+    let b = build::cargo_build(&slot.kit, &slot.target, package, options.build_limit)
+        .map_err(|e| io(&e))?;
+    if !b.success {
+        return Err(GradeError::Io(format!(
+            "the kit's handout does not build ({}):\n{}\n{}",
+            slot.kit.display(),
+            b.other_errors.join("\n"),
+            b.stderr_tail
+        )));
+    }
+    std::fs::write(slot.marker(), kit_hash).map_err(|e| io(&e))
+}
+
+/// Slot K > 0: a copy of slot 0's kit and build folder (`cp -a` keeps the times cargo compares,
+/// so only the student's crate rebuilds), unless it is already current.
+fn prepare_copy(slot: &Slot, first: &Slot, kit_hash: &str) -> Result<(), Msg> {
+    if slot.is_current(kit_hash) {
+        return Ok(());
+    }
+    let fail = |e: String| Msg::new(format!("作業用コピー: {e}"), format!("work copy: {e}"));
+    let _ = std::fs::remove_dir_all(&slot.kit);
+    let _ = std::fs::remove_dir_all(&slot.target);
+    if let Some(parent) = slot.kit.parent() {
+        std::fs::create_dir_all(parent).map_err(|e| fail(e.to_string()))?;
+    }
+    for (from, to) in [(&first.kit, &slot.kit), (&first.target, &slot.target)] {
+        let status = std::process::Command::new("cp")
+            .arg("-a")
+            .arg(from)
+            .arg(to)
+            .status()
+            .map_err(|e| fail(format!("cp: {e}")))?;
+        if !status.success() {
+            return Err(fail(format!("cp -a {} {}: {status}", from.display(), to.display())));
+        }
+    }
+    std::fs::write(slot.marker(), kit_hash).map_err(|e| fail(e.to_string()))
+}
+
+/// One assignment's run, as the result needs it.
+#[derive(Clone, Debug)]
+pub enum AssignmentRun {
+    /// The report the checks printed (`Report::to_json`).
+    Report(serde_json::Value),
+    /// The run ended without a report: how, and the end of its stderr.
+    Died {
+        /// How it ended, in both languages.
+        how: Msg,
+        /// The end of what it printed on stderr.
+        stderr: String,
+    },
+}
+
+fn describe_end(run: &Run, limits: &Limits) -> Msg {
+    match run.ended {
+        Ended::TimedOut => Msg::new(
+            format!("制限時間 {} 秒を超えたため止めました（無限ループ？）", limits.wall.as_secs()),
+            format!(
+                "stopped after the time limit of {} s (an endless loop?)",
+                limits.wall.as_secs()
+            ),
+        ),
+        Ended::Signalled(9) => Msg::new(
+            format!("強制終了されました（メモリ上限 {} MB を超えた？）", limits.memory_bytes >> 20),
+            format!("killed (over the memory limit of {} MB?)", limits.memory_bytes >> 20),
+        ),
+        Ended::Signalled(6) => Msg::new(
+            format!("異常終了しました（メモリ確保の失敗？ 上限 {} MB）", limits.memory_bytes >> 20),
+            format!("aborted (a failed allocation? the limit is {} MB)", limits.memory_bytes >> 20),
+        ),
+        Ended::Signalled(s) => {
+            Msg::new(format!("シグナル {s} で終了しました"), format!("ended by signal {s}"))
+        }
+        Ended::Exited(3) => Msg::new(
+            "チェックが制限時間を超えました（無限ループ？）",
+            "a check ran over its time limit (an endless loop?)",
+        ),
+        Ended::Exited(c) => Msg::new(
+            format!("終了コード {c} で終わり、結果を出力しませんでした"),
+            format!("exited with status {c} without printing its results"),
+        ),
+    }
+}
+
+/// The reports in a run's stdout: the JSON array the runner prints last, after whatever the
+/// student's code printed (a forgotten `println!` must not cost the assignment).
+#[must_use]
+pub fn find_reports(stdout: &str) -> Option<Vec<serde_json::Value>> {
+    let starts = std::iter::once(0).chain(stdout.match_indices("\n[").map(|(i, _)| i + 1));
+    starts
+        .filter(|&i| stdout[i..].starts_with('['))
+        .find_map(|i| serde_json::from_str::<Vec<serde_json::Value>>(&stdout[i..]).ok())
+}
+
+/// Runs the checks of `which` in the slot, in the sandbox.
+fn run_checks(
+    slot: &Slot,
+    which: &str,
+    student_toml: &[u8],
+    options: &Options,
+    runner: Runner,
+) -> (AssignmentRun, Duration) {
+    let started = Instant::now();
+    let _ = std::fs::remove_dir_all(&slot.run);
+    let prepared = std::fs::create_dir_all(slot.run.join("exercises"))
+        .and_then(|()| std::fs::write(slot.run.join("exercises/student.toml"), student_toml));
+    if let Err(e) = prepared {
+        let how = Msg::new(format!("作業フォルダ: {e}"), format!("work folder: {e}"));
+        return (AssignmentRun::Died { how, stderr: String::new() }, started.elapsed());
+    }
+    let (_, program, args) = runner_command(&slot.kit, &slot.target, which, &options.limits);
+    let job = Job {
+        program,
+        args,
+        workdir: slot.run.clone(),
+        read_only: vec![slot.kit.clone()],
+        env: vec![("HOME".into(), slot.run.display().to_string()), ("CG_LANG".into(), "en".into())],
+    };
+    let outcome = match runner(&job, &options.limits, options.isolation) {
+        Err(e) => AssignmentRun::Died {
+            how: Msg::new(format!("起動できません: {e}"), format!("could not start: {e}")),
+            stderr: String::new(),
+        },
+        Ok(run) => {
+            let report = find_reports(&run.stdout)
+                .and_then(|r| r.into_iter().find(|r| r["assignment"] == which));
+            match report {
+                Some(r) if run.ended != Ended::TimedOut => AssignmentRun::Report(r),
+                _ if run.output_cut => AssignmentRun::Died {
+                    how: Msg::new(
+                        format!("出力が上限（{} バイト）を超えました", options.limits.output_bytes),
+                        format!(
+                            "printed more than the limit of {} bytes",
+                            options.limits.output_bytes
+                        ),
+                    ),
+                    stderr: result::tail(&run.stderr, 2000),
+                },
+                _ => AssignmentRun::Died {
+                    how: describe_end(&run, &options.limits),
+                    stderr: result::tail(&run.stderr, 2000),
+                },
+            }
+        }
+    };
+    (outcome, started.elapsed())
+}
+
+/// Grades one submission in `slot`; returns the result JSON.
+fn grade_one(
+    slot: &mut Slot,
+    files: &submission::Files,
+    stubs: &BTreeMap<String, String>,
+    options: &Options,
+    runner: Runner,
+) -> result::Facts {
+    let mut facts = result::Facts::default();
+    let student_toml = files.student_toml.clone().unwrap_or_default();
+    let io_fail = |facts: &mut result::Facts, e: std::io::Error| {
+        facts.fatal = Some(Msg::new(format!("作業用コピー: {e}"), format!("work copy: {e}")));
+        facts.retry = true;
+    };
+    let student_path = slot.kit.join("exercises/student.toml");
+    if let Err(e) = std::fs::write(&student_path, &student_toml) {
+        io_fail(&mut facts, e);
+        return facts;
+    }
+    let mut replaced: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    for m in submission::MODULES {
+        let text = files.modules.get(m).map_or_else(|| stubs[m].as_bytes().to_vec(), Clone::clone);
+        if let Err(e) = write_if_changed(&slot.kit.join(format!("exercises/src/{m}.rs")), &text) {
+            io_fail(&mut facts, e);
+            return facts;
+        }
+    }
+    let package = runner_command(&slot.kit, &slot.target, "a1", &options.limits).0;
+    let started = Instant::now();
+    // Build; replace the modules that do not compile by their stubs; build again.
+    loop {
+        let b = match build::cargo_build(&slot.kit, &slot.target, package, options.build_limit) {
+            Ok(b) => b,
+            Err(e) => {
+                facts.fatal = Some(Msg::new(
+                    format!("cargo を起動できません: {e}"),
+                    format!("cannot start cargo: {e}"),
+                ));
+                facts.retry = true;
+                break;
+            }
+        };
+        if b.success {
+            break;
+        }
+        let mut blamed: Vec<(String, Vec<String>)> =
+            b.module_errors.into_iter().filter(|(m, _)| !replaced.contains_key(m)).collect();
+        if blamed.is_empty() && !b.timed_out {
+            // Errors in the kit's files caused by a module (a changed signature): every module
+            // of the submission's own that is still in is taken out.
+            let mut others = b.other_errors.clone();
+            if others.is_empty() {
+                others.push(result::tail(&b.stderr_tail, 1500));
+            }
+            blamed = submission::MODULES
+                .iter()
+                .filter(|m| !replaced.contains_key(**m) && files.modules.contains_key(**m))
+                .map(|m| ((*m).to_owned(), others.clone()))
+                .collect();
+        }
+        if blamed.is_empty() {
+            let why = if b.timed_out {
+                Msg::new(
+                    format!("ビルドが制限時間 {} 秒を超えました", options.build_limit.as_secs()),
+                    format!("the build ran over its limit of {} s", options.build_limit.as_secs()),
+                )
+            } else {
+                Msg::new(
+                    format!("ビルドできません:\n{}", b.stderr_tail),
+                    format!("does not build:\n{}", b.stderr_tail),
+                )
+            };
+            facts.fatal = Some(why);
+            break;
+        }
+        for (m, errors) in blamed {
+            if let Err(e) = write_if_changed(
+                &slot.kit.join(format!("exercises/src/{m}.rs")),
+                stubs[&m].as_bytes(),
+            ) {
+                io_fail(&mut facts, e);
+                return facts;
+            }
+            replaced.insert(m, errors);
+        }
+    }
+    facts.build = Some(started.elapsed());
+    facts.compile_errors = replaced;
+    if facts.fatal.is_some() {
+        return facts;
+    }
+    let mut run_time = Duration::ZERO;
+    for m in submission::MODULES {
+        let (run, took) = run_checks(slot, m, &student_toml, options, runner);
+        run_time += took;
+        facts.runs.insert(m.to_owned(), run);
+    }
+    // A run that died left no list of its checks: the module's stub lists them (every check
+    // "not done"), for this student's variant.
+    let died: Vec<&str> = submission::MODULES
+        .iter()
+        .copied()
+        .filter(|m| matches!(facts.runs.get(*m), Some(AssignmentRun::Died { .. })))
+        .collect();
+    if !died.is_empty() {
+        for m in &died {
+            if let Err(e) = write_if_changed(
+                &slot.kit.join(format!("exercises/src/{m}.rs")),
+                stubs[*m].as_bytes(),
+            ) {
+                io_fail(&mut facts, e);
+                return facts;
+            }
+        }
+        let t = Instant::now();
+        if build::cargo_build(&slot.kit, &slot.target, package, options.build_limit)
+            .is_ok_and(|b| b.success)
+        {
+            facts.build = facts.build.map(|b| b + t.elapsed());
+            for m in died {
+                if let (AssignmentRun::Report(r), took) =
+                    run_checks(slot, m, &student_toml, options, runner)
+                {
+                    run_time += took;
+                    facts.baseline.insert(m.to_owned(), result::check_list(&r));
+                }
+            }
+        }
+    }
+    facts.run = Some(run_time);
+    facts
+}
+
+fn write_if_changed(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    if std::fs::read(path).ok().as_deref() == Some(bytes) {
+        return Ok(());
+    }
+    std::fs::write(path, bytes)
+}
+
+/// The next submission in the queue (the lock is held only while taking it).
+fn next(queue: &Mutex<VecDeque<Pending>>) -> Option<Pending> {
+    queue.lock().ok().and_then(|mut q| q.pop_front())
+}
+
+/// Grades every submission in `options.submissions` with `runner` as the sandbox; writes
+/// `out/<student>.json`, `out/class.csv` and `out/summary.md`; calls `progress` after each.
+///
+/// # Errors
+/// The submissions folder or the kit could not be read, or the results not written.
+pub fn grade(
+    options: &Options,
+    runner: Runner,
+    progress: &(dyn Fn(&Graded) + Sync),
+) -> Result<Vec<Graded>, GradeError> {
+    let io = |p: &Path, e: std::io::Error| GradeError::Io(format!("{}: {e}", p.display()));
+    std::fs::create_dir_all(&options.out).map_err(|e| io(&options.out, e))?;
+    let out = options.out.canonicalize().map_err(|e| io(&options.out, e))?;
+    let subs = options.submissions.canonicalize().map_err(|e| io(&options.submissions, e))?;
+    // Neither the results nor the submissions go into a handout or the kit's hash.
+    let skip = |p: &Path| {
+        let p = p.canonicalize().unwrap_or_else(|_| p.to_path_buf());
+        p.starts_with(&out) || p.starts_with(&subs)
+    };
+    let kit_hash = kit_version(&options.kit, &skip)?;
+    let stubs: BTreeMap<String, String> =
+        cg_harness::stubs::generate(&options.kit.join("solutions"))
+            .map_err(|e| GradeError::Io(e.to_string()))?
+            .into_iter()
+            .filter_map(|(rel, text)| {
+                let name = rel.file_stem()?.to_string_lossy().into_owned();
+                submission::MODULES.contains(&name.as_str()).then_some((name, text))
+            })
+            .collect();
+    if stubs.len() != submission::MODULES.len() {
+        return Err(GradeError::Io("the kit's stubs are incomplete".into()));
+    }
+    let pending = collect(options, &kit_hash)?;
+    let mut done = Vec::new();
+    let mut queue = VecDeque::new();
+    for p in pending {
+        if let Some(v) = already_graded(&out, &p.name, &p.hash) {
+            let g = Graded {
+                entry: p.entry,
+                name: p.name,
+                score: v["score"].as_f64().unwrap_or(0.0),
+                max_score: v["max_score"].as_f64(),
+                skipped: true,
+            };
+            progress(&g);
+            done.push(g);
+        } else {
+            queue.push_back(p);
+        }
+    }
+    let queue = Mutex::new(queue);
+    let results = Mutex::new(Vec::new());
+    let failure: Mutex<Option<GradeError>> = Mutex::new(None);
+    let waiting = queue.lock().map(|q| q.iter().filter(|p| p.files.is_ok()).count()).unwrap_or(0);
+    let slots = options.jobs.max(1).min(waiting.max(1));
+    let first = Slot::at(&out, 0);
+    if waiting > 0 {
+        prepare_first(&first, options, &kit_hash, &stubs, &skip)?;
+        // The copies are made before any slot starts building.
+        for k in 1..slots {
+            prepare_copy(&Slot::at(&out, k), &first, &kit_hash)
+                .map_err(|m| GradeError::Io(m.en))?;
+        }
+    }
+    std::thread::scope(|scope| {
+        for k in 0..slots {
+            let (queue, results, failure, stubs, out) = (&queue, &results, &failure, &stubs, &out);
+            scope.spawn(move || {
+                let mut slot = Slot::at(out, k);
+                while let Some(p) = next(queue) {
+                    let started = Instant::now();
+                    let facts = match &p.files {
+                        Err(why) => {
+                            result::Facts { refused: Some(why.clone()), ..result::Facts::default() }
+                        }
+                        Ok((files, _)) => grade_one(&mut slot, files, stubs, options, runner),
+                    };
+                    let student = p.files.as_ref().ok().map(|(_, s)| s.student.to_string());
+                    let value = result::build(
+                        &result::Meta {
+                            entry: &p.entry,
+                            student: student.as_deref(),
+                            // A machine's problem is not the submission's: not kept.
+                            hash: if facts.retry { "" } else { &p.hash },
+                            isolation: options.isolation,
+                            total: started.elapsed(),
+                        },
+                        &facts,
+                        &options.config,
+                        options.lang,
+                    );
+                    let path = out.join(format!("{}.json", p.name));
+                    let text = serde_json::to_string_pretty(&value).unwrap_or_default();
+                    if let Err(e) = write_atomic(&path, text.as_bytes()) {
+                        if let Ok(mut f) = failure.lock() {
+                            *f = Some(io(&path, e));
+                        }
+                        break;
+                    }
+                    let g = Graded {
+                        entry: p.entry.clone(),
+                        name: p.name.clone(),
+                        score: value["score"].as_f64().unwrap_or(0.0),
+                        max_score: value["max_score"].as_f64(),
+                        skipped: false,
+                    };
+                    progress(&g);
+                    if let Ok(mut r) = results.lock() {
+                        r.push(g);
+                    }
+                }
+            });
+        }
+    });
+    if let Some(e) = failure.into_inner().ok().flatten() {
+        return Err(e);
+    }
+    done.extend(results.into_inner().unwrap_or_default());
+    done.sort_by(|a, b| a.name.cmp(&b.name));
+    let all: Vec<serde_json::Value> = done
+        .iter()
+        .filter_map(|g| std::fs::read_to_string(out.join(format!("{}.json", g.name))).ok())
+        .filter_map(|t| serde_json::from_str(&t).ok())
+        .collect();
+    let csv = result::class_csv(&all);
+    write_atomic(&out.join("class.csv"), csv.as_bytes()).map_err(|e| io(&out, e))?;
+    let md = result::summary_md(&all, options.lang);
+    write_atomic(&out.join("summary.md"), md.as_bytes()).map_err(|e| io(&out, e))?;
+    Ok(done)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reports_are_found_after_the_students_own_output() {
+        let json = "[\n  {\n    \"assignment\": \"a1\"\n  }\n]\n";
+        assert_eq!(find_reports(json).unwrap()[0]["assignment"], "a1");
+        let noisy = format!("debug: [1, 2]\n[oops\n{json}");
+        assert_eq!(find_reports(&noisy).unwrap()[0]["assignment"], "a1");
+        assert!(find_reports("[1, 2").is_none());
+        assert!(find_reports("").is_none());
+        assert_eq!(file_name("../a b.zip"), "_a_b.zip");
+        assert_eq!(file_name(""), "_");
+    }
+
+    #[test]
+    fn hashes_are_stable_and_length_prefixed() {
+        let mut a = Hasher::default();
+        a.add(b"ab");
+        a.add(b"c");
+        let mut b = Hasher::default();
+        b.add(b"a");
+        b.add(b"bc");
+        assert_ne!(a.hex(), b.hex());
+        assert_eq!(Hasher::default().hex(), "cbf29ce484222325");
+    }
+}

@@ -1,0 +1,338 @@
+//! A submission's result in the shape of Gradescope's `results.json` — `{score, max_score,
+//! output, tests: [{name, number, score, max_score, status, output}]}` plus a `cg` object (the
+//! student, the hash, the isolation, timings, per-assignment scores) — and the class's table
+//! and summary built from those files.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::time::Duration;
+
+use cg_core::lang::Lang;
+use cg_sandbox::Isolation;
+use serde_json::{Value, json};
+
+use crate::{AssignmentRun, Baseline, Config, Msg};
+
+/// What grading one submission found.
+#[derive(Clone, Debug, Default)]
+pub struct Facts {
+    /// The submission was refused before building (why).
+    pub refused: Option<Msg>,
+    /// Grading could not finish (why): the kit does not build, the build ran over its limit…
+    pub fatal: Option<Msg>,
+    /// Whether the problem was the machine's (a work copy, cargo): the result is not kept for
+    /// resuming, so the next run grades it again.
+    pub retry: bool,
+    /// Modules replaced by their stubs, with their compiler errors.
+    pub compile_errors: BTreeMap<String, Vec<String>>,
+    /// Each assignment's run.
+    pub runs: BTreeMap<String, AssignmentRun>,
+    /// The checks of each assignment whose run died, listed by its stub.
+    pub baseline: Baseline,
+    /// The submission's builds.
+    pub build: Option<Duration>,
+    /// The runs of its checks.
+    pub run: Option<Duration>,
+}
+
+/// Who and how.
+#[derive(Clone, Copy, Debug)]
+pub struct Meta<'a> {
+    /// The entry name in the submissions folder.
+    pub entry: &'a str,
+    /// The student number, when the submission had a readable one.
+    pub student: Option<&'a str>,
+    /// The submission's hash (files, config, kit).
+    pub hash: &'a str,
+    /// The isolation of the runs.
+    pub isolation: Isolation,
+    /// The whole time spent on it.
+    pub total: Duration,
+}
+
+/// The end of `text`, at most `max` bytes (on a character boundary).
+#[must_use]
+pub fn tail(text: &str, max: usize) -> String {
+    if text.len() <= max {
+        return text.to_owned();
+    }
+    let mut start = text.len() - max;
+    while !text.is_char_boundary(start) {
+        start += 1;
+    }
+    format!("…{}", &text[start..])
+}
+
+fn text_of(v: &Value) -> Msg {
+    match v {
+        Value::String(s) => Msg::new(s.clone(), s.clone()),
+        Value::Object(_) => {
+            Msg::new(v["ja"].as_str().unwrap_or_default(), v["en"].as_str().unwrap_or_default())
+        }
+        _ => Msg::default(),
+    }
+}
+
+/// The checks of a report (`Report::to_json`): ID and title.
+#[must_use]
+pub fn check_list(report: &Value) -> Vec<(String, Msg)> {
+    report["checks"]
+        .as_array()
+        .map(|checks| {
+            checks
+                .iter()
+                .map(|c| (c["id"].as_str().unwrap_or("?").to_owned(), text_of(&c["title"])))
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+/// What a failed check's JSON says, in `lang`.
+fn explain(check: &Value, lang: Lang) -> String {
+    let t = |k: &str| text_of(&check[k]).pick(lang).to_owned();
+    let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
+    match check["status"].as_str().unwrap_or("") {
+        "pass" => String::new(),
+        "not_done" => format!(
+            "{}: {}",
+            l("未実装", "not done yet"),
+            cg_harness::check::stub_message(check["message"].as_str().unwrap_or(""), lang)
+        ),
+        "panicked" => format!(
+            "{}: {}{}",
+            l("パニックしました", "panicked"),
+            check["message"].as_str().unwrap_or(""),
+            check["location"].as_str().map(|w| format!(" ({w})")).unwrap_or_default()
+        ),
+        _ => {
+            let mut s = format!(
+                "{}: {}\n{}: {}",
+                l("期待", "expected"),
+                t("expected"),
+                l("実際", "found"),
+                t("actual")
+            );
+            if check["where"].is_object() || check["where"].is_string() {
+                let _ = write!(s, "\n{}: {}", l("場所", "where"), t("where"));
+            }
+            for (k, ja, en) in [("cause", "原因", "cause"), ("hint", "ヒント", "hint")] {
+                let v = t(k);
+                if !v.is_empty() {
+                    let _ = write!(s, "\n{}: {v}", l(ja, en));
+                }
+            }
+            s
+        }
+    }
+}
+
+fn round(x: f64) -> f64 {
+    (x * 1000.0).round() / 1000.0
+}
+
+/// The result JSON of one submission.
+#[must_use]
+pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Value {
+    let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
+    let mut output = format!(
+        "{}: {}\n{}: {}\n",
+        l("学生番号", "student"),
+        meta.student.unwrap_or("?"),
+        l("提出物", "submission"),
+        meta.entry
+    );
+    let mut tests = Vec::new();
+    let mut per: BTreeMap<String, (f64, f64)> = BTreeMap::new();
+    let ended_early = facts.refused.as_ref().or(facts.fatal.as_ref());
+    if let Some(why) = ended_early {
+        let head = if facts.refused.is_some() {
+            l("受け付けられません", "refused")
+        } else {
+            l("採点できませんでした", "could not be graded")
+        };
+        let _ = writeln!(output, "{head}: {}", why.pick(lang));
+    }
+    for (m, run) in &facts.runs {
+        let entry = per.entry(m.clone()).or_insert((0.0, 0.0));
+        let compile = facts.compile_errors.get(m);
+        let checks: Vec<(String, Msg, bool, String)> = match (run, compile) {
+            (AssignmentRun::Report(r), None) => r["checks"]
+                .as_array()
+                .cloned()
+                .unwrap_or_default()
+                .iter()
+                .map(|c| {
+                    let passed = c["status"] == "pass";
+                    (
+                        c["id"].as_str().unwrap_or("?").to_owned(),
+                        text_of(&c["title"]),
+                        passed,
+                        explain(c, lang),
+                    )
+                })
+                .collect(),
+            (run, compile) => {
+                let list = match run {
+                    AssignmentRun::Report(r) => check_list(r),
+                    AssignmentRun::Died { .. } => {
+                        facts.baseline.get(m).cloned().unwrap_or_default()
+                    }
+                };
+                let why = match (compile, run) {
+                    (Some(errors), _) => format!(
+                        "{} ({m}.rs):\n{}",
+                        l("コンパイルエラー", "compile errors"),
+                        errors.join("\n")
+                    ),
+                    (None, AssignmentRun::Died { how, stderr }) => {
+                        if stderr.trim().is_empty() {
+                            how.pick(lang).to_owned()
+                        } else {
+                            format!("{}\n{}", how.pick(lang), stderr.trim_end())
+                        }
+                    }
+                    (None, AssignmentRun::Report(_)) => String::new(),
+                };
+                let _ = writeln!(output, "{m}: {}", why.lines().next().unwrap_or(""));
+                if list.is_empty() {
+                    // Not even the list of checks is known: one line for the assignment.
+                    vec![(format!("{m}.run"), Msg::new(m.clone(), m.clone()), false, why)]
+                } else {
+                    list.into_iter().map(|(id, title)| (id, title, false, why.clone())).collect()
+                }
+            }
+        };
+        for (id, title, passed, text) in checks {
+            let max = config.points(&id);
+            let score = if passed { max } else { 0.0 };
+            entry.0 += score;
+            entry.1 += max;
+            tests.push(json!({
+                "name": format!("{id}: {}", title.pick(lang)),
+                "number": id,
+                "score": round(score),
+                "max_score": round(max),
+                "status": if passed { "passed" } else { "failed" },
+                "output": text,
+            }));
+        }
+    }
+    let score = per.values().fold(0.0, |a, p| a + p.0);
+    let max = per.values().fold(0.0, |a, p| a + p.1);
+    for (m, (s, x)) in &per {
+        let _ = writeln!(output, "{m}: {} / {}", round(*s), round(*x));
+    }
+    let secs = |d: Option<Duration>| d.map(|d| round(d.as_secs_f64()));
+    let assignments: serde_json::Map<String, Value> = per
+        .iter()
+        .map(|(m, (s, x))| (m.clone(), json!({"score": round(*s), "max_score": round(*x)})))
+        .collect();
+    let mut value = json!({
+        "score": round(score),
+        "output": output,
+        "tests": tests,
+        "cg": {
+            "student": meta.student,
+            "submission": meta.entry,
+            "hash": meta.hash,
+            "isolation": meta.isolation.describe(Lang::En),
+            "refused": facts.refused.as_ref().map(|m| m.en.clone()),
+            "error": facts.fatal.as_ref().map(|m| m.en.clone()),
+            "compile_errors": facts.compile_errors,
+            "assignments": assignments,
+            "timings": {
+                "build_s": secs(facts.build),
+                "run_s": secs(facts.run),
+                "total_s": round(meta.total.as_secs_f64()),
+            },
+        },
+    });
+    if !per.is_empty() {
+        value["max_score"] = json!(round(max));
+    }
+    value
+}
+
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_owned()
+    }
+}
+
+/// `class.csv`: one row per result — student, submission, a1 … s, score, max_score.
+#[must_use]
+pub fn class_csv(results: &[Value]) -> String {
+    let mut out = String::from("student,submission,a1,a2,a3,a4,s,score,max_score\n");
+    for r in results {
+        let cg = &r["cg"];
+        let mut row = vec![
+            csv_field(cg["student"].as_str().unwrap_or("")),
+            csv_field(cg["submission"].as_str().unwrap_or("")),
+        ];
+        for m in crate::submission::MODULES {
+            row.push(
+                cg["assignments"][m]["score"].as_f64().map(|s| s.to_string()).unwrap_or_default(),
+            );
+        }
+        row.push(r["score"].as_f64().unwrap_or(0.0).to_string());
+        row.push(r["max_score"].as_f64().map(|s| s.to_string()).unwrap_or_default());
+        out.push_str(&row.join(","));
+        out.push('\n');
+    }
+    out
+}
+
+/// `summary.md`: how many students failed each check, most failed first — the class's most
+/// common mistakes — and the submissions that could not be graded.
+#[must_use]
+pub fn summary_md(results: &[Value], lang: Lang) -> String {
+    let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
+    let mut counts: BTreeMap<String, (String, usize, usize)> = BTreeMap::new();
+    let mut problems = Vec::new();
+    for r in results {
+        for t in r["tests"].as_array().map(Vec::as_slice).unwrap_or_default() {
+            let id = t["number"].as_str().unwrap_or("?").to_owned();
+            let e = counts
+                .entry(id)
+                .or_insert_with(|| (t["name"].as_str().unwrap_or("").to_owned(), 0, 0));
+            e.2 += 1;
+            if t["status"] != "passed" {
+                e.1 += 1;
+            }
+        }
+        let cg = &r["cg"];
+        if let Some(why) = cg["refused"].as_str().or(cg["error"].as_str()) {
+            problems.push(format!(
+                "- {} ({}): {}",
+                cg["submission"].as_str().unwrap_or(""),
+                cg["student"].as_str().unwrap_or("?"),
+                why.lines().next().unwrap_or("")
+            ));
+        }
+    }
+    let mut rows: Vec<(String, (String, usize, usize))> = counts.into_iter().collect();
+    rows.sort_by(|a, b| b.1.1.cmp(&a.1.1).then_with(|| a.0.cmp(&b.0)));
+    let mut out = format!(
+        "# {}\n\n{}: {}\n\n| {} | {} | {} |\n|---|---:|---:|\n",
+        l("採点のまとめ", "Grading summary"),
+        l("提出数", "submissions"),
+        results.len(),
+        l("チェック", "check"),
+        l("不合格", "failed"),
+        l("採点数", "graded"),
+    );
+    for (_, (name, failed, of)) in &rows {
+        let _ = writeln!(out, "| {} | {failed} | {of} |", name.replace('|', "\\|"));
+    }
+    if !problems.is_empty() {
+        let _ = write!(
+            out,
+            "\n## {}\n\n{}\n",
+            l("採点できなかった提出物", "Not graded"),
+            problems.join("\n")
+        );
+    }
+    out
+}

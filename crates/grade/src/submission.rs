@@ -1,0 +1,224 @@
+//! Reading a submission — a folder or a `.zip` holding an `exercises/` tree — as hostile input:
+//! only `exercises/src/{a1,a2,a3,a4,s}.rs` and `exercises/student.toml` are read, nothing is
+//! extracted to disk, and a zip with an absolute or `..` path, a symlink or an oversized entry is
+//! refused with the reason.
+
+use std::collections::BTreeMap;
+use std::io::Read;
+use std::path::{Path, PathBuf};
+
+use crate::Msg;
+
+/// The modules a student writes, in order.
+pub const MODULES: [&str; 5] = ["a1", "a2", "a3", "a4", "s"];
+
+/// The most bytes one file of a submission may have.
+pub const MAX_FILE_BYTES: u64 = 1 << 20;
+
+/// The most entries a zip may hold.
+pub const MAX_ZIP_ENTRIES: usize = 10_000;
+
+/// The files taken from a submission.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Files {
+    /// `a1` … `s` → the text of `exercises/src/<m>.rs`, for those present.
+    pub modules: BTreeMap<String, Vec<u8>>,
+    /// `exercises/student.toml`, when present.
+    pub student_toml: Option<Vec<u8>>,
+}
+
+/// The relative paths (inside `exercises/`) of the files a submission contributes.
+fn wanted() -> Vec<(String, Option<&'static str>)> {
+    let mut w: Vec<(String, Option<&'static str>)> =
+        MODULES.iter().map(|m| (format!("exercises/src/{m}.rs"), Some(*m))).collect();
+    w.push(("exercises/student.toml".to_owned(), None));
+    w
+}
+
+fn too_big(name: &str, size: u64) -> Msg {
+    Msg::new(
+        format!("{name} が大きすぎます（{size} バイト、上限 {MAX_FILE_BYTES}）"),
+        format!("{name} is too big ({size} bytes, at most {MAX_FILE_BYTES})"),
+    )
+}
+
+/// Reads the submission at `path` (a folder, or a file ending in `.zip`).
+///
+/// # Errors
+/// Why the submission is refused: unreadable, not a zip or folder, no `exercises/` in it, or (in
+/// a zip) an entry with an absolute or `..` path, a symlink, too many or too big entries.
+pub fn read(path: &Path) -> Result<Files, Msg> {
+    let meta = std::fs::symlink_metadata(path)
+        .map_err(|e| Msg::new(format!("読めません: {e}"), format!("cannot be read: {e}")))?;
+    if meta.file_type().is_symlink() {
+        return Err(Msg::new(
+            "シンボリックリンクは受け付けません",
+            "a symbolic link is not accepted as a submission",
+        ));
+    }
+    if meta.is_dir() {
+        read_folder(path)
+    } else if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("zip")) {
+        read_zip(path)
+    } else {
+        Err(Msg::new("フォルダでも .zip でもありません", "neither a folder nor a .zip file"))
+    }
+}
+
+fn no_exercises() -> Msg {
+    Msg::new(
+        "exercises/ が見つかりません（exercises/src/a1.rs … と exercises/student.toml を入れてください）",
+        "no exercises/ found (it must hold exercises/src/a1.rs … and exercises/student.toml)",
+    )
+}
+
+/// The folder inside `dir` (itself, or a folder at most two levels down) that holds `exercises/`.
+fn find_base(dir: &Path, depth: usize) -> Option<PathBuf> {
+    let ex = dir.join("exercises");
+    if std::fs::symlink_metadata(&ex).is_ok_and(|m| m.is_dir()) {
+        return Some(dir.to_path_buf());
+    }
+    if depth == 0 {
+        return None;
+    }
+    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
+        .ok()?
+        .flatten()
+        .filter(|e| e.file_type().is_ok_and(|t| t.is_dir()))
+        .map(|e| e.path())
+        .collect();
+    entries.sort();
+    entries.into_iter().find_map(|d| find_base(&d, depth - 1))
+}
+
+fn read_folder(dir: &Path) -> Result<Files, Msg> {
+    let base = find_base(dir, 2).ok_or_else(no_exercises)?;
+    let mut files = Files::default();
+    for (relative, module) in wanted() {
+        let path = base.join(&relative);
+        let Ok(meta) = std::fs::symlink_metadata(&path) else { continue };
+        if meta.file_type().is_symlink() {
+            return Err(Msg::new(
+                format!("{relative} はシンボリックリンクです（受け付けません）"),
+                format!("{relative} is a symbolic link (not accepted)"),
+            ));
+        }
+        if !meta.is_file() {
+            continue;
+        }
+        if meta.len() > MAX_FILE_BYTES {
+            return Err(too_big(&relative, meta.len()));
+        }
+        let bytes = std::fs::read(&path).map_err(|e| {
+            Msg::new(
+                format!("{relative} を読めません: {e}"),
+                format!("cannot read {relative}: {e}"),
+            )
+        })?;
+        match module {
+            Some(m) => {
+                files.modules.insert(m.to_owned(), bytes);
+            }
+            None => files.student_toml = Some(bytes),
+        }
+    }
+    Ok(files)
+}
+
+/// Whether a zip entry's name is unsafe to use as a path: absolute, a drive, or with `..`.
+#[must_use]
+pub fn unsafe_name(name: &str) -> bool {
+    let name = name.replace('\\', "/");
+    name.starts_with('/')
+        || name.as_bytes().get(1) == Some(&b':')
+        || name.split('/').any(|part| part == "..")
+}
+
+fn read_zip(path: &Path) -> Result<Files, Msg> {
+    let bad = |e: &dyn std::fmt::Display| {
+        Msg::new(format!("zip として読めません: {e}"), format!("not a readable zip: {e}"))
+    };
+    let file = std::fs::File::open(path).map_err(|e| bad(&e))?;
+    let mut zip = zip::ZipArchive::new(file).map_err(|e| bad(&e))?;
+    if zip.len() > MAX_ZIP_ENTRIES {
+        return Err(Msg::new(
+            format!("zip の項目が多すぎます（{}、上限 {MAX_ZIP_ENTRIES}）", zip.len()),
+            format!("too many entries in the zip ({}, at most {MAX_ZIP_ENTRIES})", zip.len()),
+        ));
+    }
+    // Every entry is looked at: one hostile entry refuses the whole submission.
+    let mut names = Vec::with_capacity(zip.len());
+    for i in 0..zip.len() {
+        let entry = zip.by_index_raw(i).map_err(|e| bad(&e))?;
+        let name = entry.name().map_err(|e| bad(&e))?.into_owned();
+        if unsafe_name(&name) || entry.enclosed_name().is_none() {
+            return Err(Msg::new(
+                format!("zip の項目 {name} の場所が不正です（絶対パスまたは ..）"),
+                format!("zip entry {name} has an unsafe path (absolute or ..)"),
+            ));
+        }
+        if entry.is_symlink() {
+            return Err(Msg::new(
+                format!("zip の項目 {name} はシンボリックリンクです（受け付けません）"),
+                format!("zip entry {name} is a symbolic link (not accepted)"),
+            ));
+        }
+        if entry.size() > MAX_FILE_BYTES.saturating_mul(64) {
+            return Err(too_big(&name, entry.size()));
+        }
+        names.push(name.replace('\\', "/"));
+    }
+    // The shortest prefix under which a wanted file lies is the submission's base.
+    let wanted = wanted();
+    let base = names
+        .iter()
+        .filter_map(|n| {
+            wanted.iter().find_map(|(w, _)| {
+                n.strip_suffix(w.as_str()).filter(|p| p.is_empty() || p.ends_with('/'))
+            })
+        })
+        .min_by_key(|p| (p.len(), p.to_string()))
+        .map(str::to_owned)
+        .ok_or_else(no_exercises)?;
+    let mut files = Files::default();
+    for (i, name) in names.iter().enumerate() {
+        let Some((relative, module)) =
+            wanted.iter().find(|(w, _)| name.strip_prefix(base.as_str()) == Some(w.as_str()))
+        else {
+            continue;
+        };
+        let entry = zip.by_index(i).map_err(|e| bad(&e))?;
+        if entry.size() > MAX_FILE_BYTES {
+            return Err(too_big(relative, entry.size()));
+        }
+        // The declared size may lie: read at most one byte more than allowed.
+        let mut bytes = Vec::new();
+        entry.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes).map_err(|e| bad(&e))?;
+        if bytes.len() as u64 > MAX_FILE_BYTES {
+            return Err(too_big(relative, bytes.len() as u64));
+        }
+        match module {
+            Some(m) => {
+                files.modules.insert((*m).to_owned(), bytes);
+            }
+            None => files.student_toml = Some(bytes),
+        }
+    }
+    Ok(files)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unsafe_names_are_recognised() {
+        assert!(unsafe_name("/etc/passwd"));
+        assert!(unsafe_name("../x"));
+        assert!(unsafe_name("a/../../x"));
+        assert!(unsafe_name("C:\\x"));
+        assert!(unsafe_name("a\\..\\x"));
+        assert!(!unsafe_name("sub/exercises/src/a1.rs"));
+        assert!(!unsafe_name("a..b/x"));
+    }
+}

@@ -1,0 +1,358 @@
+//! A generated class is graded end to end: the correct submission (a nested zip), one with a
+//! reversed face, one whose a2 does not compile, hostile ones (an endless loop, a run-away
+//! allocation, a panic) and a zip-slip zip. Each gets exactly its expected scores; the class
+//! table, the summary and resuming (a second run keeps everything) are checked too.
+//!
+//! Needs the kit's own repository (solutions/): in a student handout it says so and passes.
+//!
+//! The sandbox here is a stand-in ([`stand_in`]: prlimit for memory, a wall clock that kills
+//! the process group) until cg-sandbox's `run` lands; the pipeline takes the sandbox as one
+//! function, so switching is `cg_sandbox::run` in place of `stand_in`.
+
+use std::io::{Read, Write};
+use std::os::unix::process::CommandExt;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use cg_core::lang::Lang;
+use cg_grade::{Config, Options};
+use cg_sandbox::{Ended, Isolation, Job, Limits, Run, SandboxError};
+use serde_json::Value;
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").canonicalize().unwrap()
+}
+
+/// A minimal sandbox for this test: `prlimit --as` and a wall clock over the process group.
+fn stand_in(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Run, SandboxError> {
+    let started = Instant::now();
+    let mut child = Command::new("prlimit")
+        .arg(format!("--as={}", limits.memory_bytes))
+        .arg("--core=0")
+        .arg("--")
+        .arg(&job.program)
+        .args(&job.args)
+        .current_dir(&job.workdir)
+        .env_clear()
+        .envs(job.env.iter().map(|(k, v)| (k, v)))
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .process_group(0)
+        .spawn()
+        .map_err(|e| SandboxError::Start {
+            program: job.program.display().to_string(),
+            message: e.to_string(),
+        })?;
+    let keep = limits.output_bytes;
+    let reader = |r: Option<Box<dyn Read + Send>>| {
+        std::thread::spawn(move || {
+            let mut all = Vec::new();
+            if let Some(mut r) = r {
+                let _ = r.read_to_end(&mut all);
+            }
+            let cut = all.len() > keep;
+            all.truncate(keep);
+            (String::from_utf8_lossy(&all).into_owned(), cut)
+        })
+    };
+    let out = reader(child.stdout.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
+    let err = reader(child.stderr.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
+    let ended = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            use std::os::unix::process::ExitStatusExt;
+            break match (status.code(), status.signal()) {
+                (Some(c), _) => Ended::Exited(c),
+                (None, Some(s)) => Ended::Signalled(s),
+                _ => Ended::Exited(-1),
+            };
+        }
+        if started.elapsed() > limits.wall {
+            let _ = Command::new("kill").arg("-KILL").arg(format!("-{}", child.id())).status();
+            let _ = child.wait();
+            break Ended::TimedOut;
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let (stdout, c1) = out.join().unwrap();
+    let (stderr, c2) = err.join().unwrap();
+    Ok(Run { ended, stdout, stderr, output_cut: c1 || c2, wall: started.elapsed(), isolation })
+}
+
+fn solution(module: &str) -> String {
+    std::fs::read_to_string(root().join(format!("solutions/src/{module}.rs"))).unwrap()
+}
+
+fn edit(text: &str, from: &str, to: &str) -> String {
+    assert!(text.contains(from), "the solution no longer contains {from:?}");
+    text.replacen(from, to, 1)
+}
+
+fn student_toml(n: &str) -> String {
+    format!("student = \"{n}\"\ntable = 1\n")
+}
+
+/// Writes a submission folder `dir` with the solutions, `changes` applied.
+fn folder(dir: &Path, student: &str, changes: &[(&str, String)]) {
+    std::fs::create_dir_all(dir.join("exercises/src")).unwrap();
+    for m in ["a1", "a2", "a3", "a4", "s"] {
+        let text =
+            changes.iter().find(|(c, _)| *c == m).map_or_else(|| solution(m), |(_, t)| t.clone());
+        std::fs::write(dir.join(format!("exercises/src/{m}.rs")), text).unwrap();
+    }
+    std::fs::write(dir.join("exercises/student.toml"), student_toml(student)).unwrap();
+    // Something the grader must never copy: a fake check crate.
+    std::fs::create_dir_all(dir.join("crates/a1-polygon/src")).unwrap();
+    std::fs::write(dir.join("crates/a1-polygon/src/lib.rs"), "compile_error!(\"copied\");")
+        .unwrap();
+}
+
+fn zip(path: &Path, entries: &[(&str, String)]) {
+    let mut z = zip::ZipWriter::new(std::fs::File::create(path).unwrap());
+    let options = zip::write::SimpleFileOptions::default()
+        .compression_method(zip::CompressionMethod::Deflated);
+    for (name, text) in entries {
+        z.start_file(*name, options).unwrap();
+        z.write_all(text.as_bytes()).unwrap();
+    }
+    z.finish().unwrap();
+}
+
+fn tests_of(result: &Value) -> Vec<(String, String, f64)> {
+    result["tests"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|t| {
+            (
+                t["number"].as_str().unwrap().to_owned(),
+                t["status"].as_str().unwrap().to_owned(),
+                t["score"].as_f64().unwrap(),
+            )
+        })
+        .collect()
+}
+
+fn failed_ids(result: &Value) -> Vec<String> {
+    tests_of(result).into_iter().filter(|t| t.1 != "passed").map(|t| t.0).collect()
+}
+
+fn read(path: &Path) -> Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+#[test]
+fn a_generated_class_gets_exactly_its_expected_grades() {
+    if !root().join("solutions/src/a1.rs").exists() {
+        eprintln!("no solutions/ (a student handout): grading is tested in the kit's repository");
+        return;
+    }
+    let base = Path::new(env!("CARGO_TARGET_TMPDIR")).join("grade-class");
+    let subs = base.join("submissions");
+    let out = base.join("out");
+    let _ = std::fs::remove_dir_all(&subs);
+    // Results go; the work copies (and their build folders) stay between runs of this test.
+    if let Ok(entries) = std::fs::read_dir(&out) {
+        for e in entries.flatten().filter(|e| e.file_name() != ".work") {
+            let _ = std::fs::remove_file(e.path());
+        }
+    }
+    std::fs::create_dir_all(&subs).unwrap();
+
+    // 1. Correct, zipped inside a folder of its own (deflated), with a stray file.
+    let mut entries: Vec<(String, String)> = ["a1", "a2", "a3", "a4", "s"]
+        .iter()
+        .map(|m| (format!("handin/exercises/src/{m}.rs"), solution(m)))
+        .collect();
+    entries.push(("handin/exercises/student.toml".into(), student_toml("20260001")));
+    entries.push(("handin/notes.txt".into(), "hello".into()));
+    let refs: Vec<(&str, String)> = entries.iter().map(|(n, t)| (n.as_str(), t.clone())).collect();
+    zip(&subs.join("01-correct.zip"), &refs);
+    // 2. A classic mistake: the first face listed clockwise.
+    let reversed = edit(
+        &solution("a1"),
+        "canonical_faces(&spec.shape).iter().map(|f| f.map(|c| map[c as usize])).collect()",
+        "let mut v: Vec<[u32; 3]> = canonical_faces(&spec.shape).iter().map(|f| f.map(|c| map[c as usize])).collect(); v[0].swap(1, 2); v",
+    );
+    folder(&subs.join("02-reversed"), "20260002", &[("a1", reversed)]);
+    // 3. a2 does not compile.
+    let broken = edit(&solution("a2"), "pub fn camera(", "pub fn camera(;");
+    folder(&subs.join("03-a2-syntax"), "20260003", &[("a2", broken)]);
+    // 4. a1 loops forever.
+    let looping = edit(
+        &solution("a1"),
+        "pub fn vertices(spec: &Spec) -> Vec<Vec3> {",
+        "pub fn vertices(spec: &Spec) -> Vec<Vec3> {\n    #[allow(clippy::empty_loop)]\n    loop {}\n",
+    );
+    folder(&subs.join("04-loop"), "20260004", &[("a1", looping)]);
+    // 5. a3 allocates without bound; s panics.
+    let greedy = edit(
+        &solution("a3"),
+        "pub fn idle(spec: &Spec, state: &mut State) {",
+        "pub fn idle(spec: &Spec, state: &mut State) {\n    let mut hog: Vec<Vec<u8>> = Vec::new();\n    loop { hog.push(vec![1u8; 64 << 20]); if hog.len() == usize::MAX { break; } }\n",
+    );
+    let panicking = edit(
+        &solution("s"),
+        "pub fn ambient(ia: Rgb, ka: Rgb) -> Rgb {",
+        "pub fn ambient(ia: Rgb, ka: Rgb) -> Rgb {\n    if ia.x >= 0.0 { panic!(\"boom in ambient\"); }\n",
+    );
+    folder(&subs.join("05-alloc-panic"), "20260005", &[("a3", greedy), ("s", panicking)]);
+    // 6. Zip slip.
+    zip(
+        &subs.join("06-slip.zip"),
+        &[("exercises/student.toml", student_toml("20260006")), ("../../evil.rs", "x".into())],
+    );
+
+    let options = Options {
+        kit: root(),
+        submissions: subs.clone(),
+        out: out.clone(),
+        config: Config::parse("[points]\na1 = 2\n\"a1.t3\" = 3\n").unwrap(),
+        config_text: "[points]\na1 = 2\n\"a1.t3\" = 3\n".into(),
+        jobs: 2,
+        limits: Limits {
+            wall: Duration::from_secs(20),
+            memory_bytes: 2 << 30,
+            output_bytes: 4 << 20,
+        },
+        build_limit: Duration::from_secs(1500),
+        isolation: Isolation::Limits,
+        lang: Lang::En,
+    };
+    let started = Instant::now();
+    let graded = cg_grade::grade(&options, stand_in, &|g| eprintln!("{g:?}")).unwrap();
+    eprintln!("graded {} submissions in {:.1} s", graded.len(), started.elapsed().as_secs_f64());
+    assert_eq!(graded.len(), 6);
+    assert!(graded.iter().all(|g| !g.skipped));
+
+    // Every result: the score is the sum of the passed checks' points, the maximum the sum of
+    // all; the points follow the config (a1.t3 3, the rest of a1 2, others the default 1).
+    let results: Vec<Value> =
+        (1..=5).map(|i| read(&out.join(format!("2026000{i}.json")))).collect();
+    for r in &results {
+        let tests = tests_of(r);
+        let mut max = 0.0;
+        for (id, status, score) in &tests {
+            let points = if id.starts_with("a1.t3.") {
+                3.0
+            } else if id.starts_with("a1.") {
+                2.0
+            } else {
+                1.0
+            };
+            max += points;
+            assert_eq!(*score, if status == "passed" { points } else { 0.0 }, "{id}");
+        }
+        let passed: f64 = tests.iter().map(|t| t.2).sum();
+        assert_eq!(r["score"].as_f64().unwrap(), passed);
+        assert_eq!(r["max_score"].as_f64().unwrap(), max);
+        for m in ["a1", "a2", "a3", "a4", "s"] {
+            let n = tests.iter().filter(|t| t.0.starts_with(&format!("{m}."))).count();
+            assert!(n >= 3, "{}: only {n} {m} checks", r["cg"]["student"]);
+        }
+    }
+    let of = |r: &Value, prefix: &str| -> Vec<String> {
+        tests_of(r).into_iter().map(|t| t.0).filter(|i| i.starts_with(prefix)).collect()
+    };
+
+    // The correct one passes everything.
+    assert!(failed_ids(&results[0]).is_empty(), "{:#}", results[0]);
+    assert_eq!(results[0]["score"], results[0]["max_score"]);
+
+    // The reversed face: exactly the winding and outward checks of a1.t2 fail.
+    assert_eq!(failed_ids(&results[1]), ["a1.t2.winding", "a1.t2.outward"]);
+    let winding = &results[1]["tests"].as_array().unwrap()
+        [tests_of(&results[1]).iter().position(|t| t.0 == "a1.t2.winding").unwrap()];
+    assert!(winding["output"].as_str().unwrap().contains("expected"), "{winding:#}");
+
+    // a2 does not compile: its checks 0 with the error; the others all pass.
+    let syntax = &results[2];
+    assert_eq!(failed_ids(syntax), of(syntax, "a2."));
+    let a2 = syntax["tests"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["number"].as_str().unwrap().starts_with("a2."))
+        .unwrap();
+    assert!(a2["output"].as_str().unwrap().contains("exercises/src/a2.rs:"), "{a2:#}");
+    assert_eq!(
+        syntax["cg"]["compile_errors"].as_object().unwrap().keys().collect::<Vec<_>>(),
+        ["a2"]
+    );
+
+    // The loop: a1 stopped (every a1 check 0, the time limit named); the rest pass.
+    let looping = &results[3];
+    assert_eq!(failed_ids(looping), of(looping, "a1."));
+    assert!(looping["output"].as_str().unwrap().contains("time limit"), "{looping:#}");
+
+    // The allocation stops a3's run (every a3 check 0); the panic fails the one check that
+    // calls ambient, with its message; everything else passes.
+    let hostile = &results[4];
+    let mut expected = of(hostile, "a3.");
+    expected.push("s.t1.ambient".into());
+    assert_eq!(failed_ids(hostile), expected);
+    let ambient = hostile["tests"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["number"] == "s.t1.ambient")
+        .unwrap();
+    assert!(ambient["output"].as_str().unwrap().contains("boom in ambient"), "{ambient:#}");
+    assert!(hostile["output"].as_str().unwrap().contains("a3: aborted"), "{hostile:#}");
+
+    // The zip slip: refused, said why, nothing written outside.
+    let slip = read(&out.join("_06-slip.zip.json"));
+    assert_eq!(slip["score"], 0.0);
+    assert!(slip["tests"].as_array().unwrap().is_empty());
+    assert!(slip["cg"]["refused"].as_str().unwrap().contains("../../evil.rs"), "{slip:#}");
+    assert!(!base.join("evil.rs").exists() && !subs.join("../evil.rs").exists());
+
+    // The class table and the summary.
+    let csv = std::fs::read_to_string(out.join("class.csv")).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines[0], "student,submission,a1,a2,a3,a4,s,score,max_score");
+    assert_eq!(lines.len(), 7, "{csv}");
+    for (i, r) in results.iter().enumerate() {
+        let a = &r["cg"]["assignments"];
+        let row = format!(
+            "2026000{},{},{},{},{},{},{},{},{}",
+            i + 1,
+            r["cg"]["submission"].as_str().unwrap(),
+            a["a1"]["score"],
+            a["a2"]["score"],
+            a["a3"]["score"],
+            a["a4"]["score"],
+            a["s"]["score"],
+            r["score"],
+            r["max_score"]
+        )
+        .replace(".0,", ",");
+        assert!(lines.contains(&row.trim_end_matches(".0")), "{row} not in\n{csv}");
+    }
+    assert!(lines.contains(&"20260003,03-a2-syntax,31,0,13,9,22,75,89"), "{csv}");
+    assert!(lines.iter().any(|l| l.starts_with(",06-slip.zip,,,,,,0,")), "{csv}");
+    let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
+    // Most failed first: a1.t2.outward and a1.t2.winding (the loop and the reversed face),
+    // then the checks one submission failed; the refused zip is listed.
+    let rows: Vec<&str> =
+        md.lines().filter(|l| l.starts_with("| a") || l.starts_with("| s")).collect();
+    assert!(rows[0].starts_with("| a1.t2.outward:") && rows[0].ends_with("| 2 | 5 |"), "{md}");
+    assert!(rows[1].starts_with("| a1.t2.winding:") && rows[1].ends_with("| 2 | 5 |"), "{md}");
+    assert!(rows[2].ends_with("| 1 | 5 |"), "{md}");
+    assert!(rows.last().unwrap().ends_with("| 0 | 5 |"), "{md}");
+    assert!(md.contains("06-slip.zip"), "{md}");
+
+    // Resuming: a second run keeps every result, byte for byte.
+    let before: Vec<(String, Vec<u8>)> = std::fs::read_dir(&out)
+        .unwrap()
+        .flatten()
+        .filter(|e| e.path().is_file())
+        .map(|e| (e.file_name().to_string_lossy().into_owned(), std::fs::read(e.path()).unwrap()))
+        .collect();
+    let again = cg_grade::grade(&options, stand_in, &|_| {}).unwrap();
+    assert!(again.iter().all(|g| g.skipped), "{again:?}");
+    for (name, bytes) in before {
+        assert_eq!(std::fs::read(out.join(&name)).unwrap(), bytes, "{name} changed");
+    }
+}

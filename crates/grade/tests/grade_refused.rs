@@ -1,0 +1,113 @@
+//! Submissions refused before any build — a zip slip, a symlink in a zip, an oversized entry, no
+//! `exercises/`, a bad student number, a submission that is a symlink — each get a result that
+//! says why, a row in the class table and a line in the summary, and a second run keeps them.
+//! No kit build is needed, so this runs in seconds.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+use cg_core::lang::Lang;
+use cg_grade::{Config, Options};
+use cg_sandbox::{Isolation, Job, Limits, Run, SandboxError};
+use serde_json::Value;
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").canonicalize().unwrap()
+}
+
+/// Never called: nothing here gets as far as running.
+fn no_runs(job: &Job, _: &Limits, _: Isolation) -> Result<Run, SandboxError> {
+    panic!("a refused submission was run: {job:?}")
+}
+
+fn zip(path: &Path, files: &[(&str, &[u8])], symlink: Option<(&str, &str)>) {
+    let mut z = zip::ZipWriter::new(std::fs::File::create(path).unwrap());
+    let o = zip::write::SimpleFileOptions::default()
+        .compression_method(zip::CompressionMethod::Deflated);
+    for (name, bytes) in files {
+        z.start_file(*name, o).unwrap();
+        z.write_all(bytes).unwrap();
+    }
+    if let Some((name, target)) = symlink {
+        z.add_symlink(name, target, o).unwrap();
+    }
+    z.finish().unwrap();
+}
+
+#[test]
+fn refused_submissions_say_why_and_are_kept() {
+    if !root().join("solutions/src/a1.rs").exists() {
+        eprintln!("no solutions/ (a student handout): grading is tested in the kit's repository");
+        return;
+    }
+    let base = Path::new(env!("CARGO_TARGET_TMPDIR")).join("grade-refused");
+    let _ = std::fs::remove_dir_all(&base);
+    let subs = base.join("submissions");
+    let out = base.join("out");
+    std::fs::create_dir_all(&subs).unwrap();
+    let toml = b"student = \"20269999\"\ntable = 1\n";
+    zip(&subs.join("slip.zip"), &[("exercises/student.toml", toml), ("/etc/cron.d/x", b"x")], None);
+    zip(
+        &subs.join("link.zip"),
+        &[("exercises/student.toml", toml)],
+        Some(("exercises/src/a1.rs", "/etc/passwd")),
+    );
+    let big = vec![b' '; (1 << 20) + 10];
+    zip(
+        &subs.join("big.zip"),
+        &[("exercises/student.toml", toml), ("exercises/src/a1.rs", &big)],
+        None,
+    );
+    zip(&subs.join("empty.zip"), &[("readme.txt", b"hi")], None);
+    std::fs::write(subs.join("notzip.zip"), b"PK but not really").unwrap();
+    std::fs::create_dir_all(subs.join("badnumber/exercises/src")).unwrap();
+    std::fs::write(subs.join("badnumber/exercises/student.toml"), "student = 1234\n").unwrap();
+    std::os::unix::fs::symlink(root().join("solutions"), subs.join("sneaky")).unwrap();
+
+    let options = Options {
+        kit: root(),
+        submissions: subs.clone(),
+        out: out.clone(),
+        config: Config::default(),
+        config_text: String::new(),
+        jobs: 4,
+        limits: Limits { wall: Duration::from_secs(5), ..Limits::default() },
+        build_limit: Duration::from_secs(60),
+        isolation: Isolation::Limits,
+        lang: Lang::En,
+    };
+    let graded = cg_grade::grade(&options, no_runs, &|_| {}).unwrap();
+    assert_eq!(graded.len(), 7);
+    let why = |name: &str| -> String {
+        let v: Value = serde_json::from_str(
+            &std::fs::read_to_string(out.join(format!("_{name}.json"))).unwrap(),
+        )
+        .unwrap();
+        assert_eq!(v["score"], 0.0, "{name}");
+        assert!(v.get("max_score").is_none(), "{name}");
+        assert_eq!(v["tests"], serde_json::json!([]), "{name}");
+        assert!(v["output"].as_str().unwrap().contains("refused"), "{name}");
+        v["cg"]["refused"].as_str().unwrap().to_owned()
+    };
+    assert!(why("slip.zip").contains("/etc/cron.d/x") && why("slip.zip").contains("unsafe path"));
+    assert!(why("link.zip").contains("symbolic link"), "{}", why("link.zip"));
+    assert!(why("big.zip").contains("too big"), "{}", why("big.zip"));
+    assert!(why("empty.zip").contains("no exercises/"), "{}", why("empty.zip"));
+    assert!(why("notzip.zip").contains("not a readable zip"), "{}", why("notzip.zip"));
+    assert!(why("badnumber").contains("student.toml"), "{}", why("badnumber"));
+    assert!(why("sneaky").contains("symbolic link"), "{}", why("sneaky"));
+    assert!(!out.join(".work/slot-0").exists(), "nothing to build, no kit copy");
+
+    let csv = std::fs::read_to_string(out.join("class.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 8, "{csv}");
+    assert!(csv.contains("\n,slip.zip,,,,,,0,\n"), "{csv}");
+    let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
+    assert!(md.contains("submissions: 7") && md.contains("## Not graded"), "{md}");
+    assert_eq!(md.matches("\n- ").count(), 7, "{md}");
+
+    let before = std::fs::read(out.join("_slip.zip.json")).unwrap();
+    let again = cg_grade::grade(&options, no_runs, &|_| {}).unwrap();
+    assert!(again.iter().all(|g| g.skipped));
+    assert_eq!(std::fs::read(out.join("_slip.zip.json")).unwrap(), before);
+}
