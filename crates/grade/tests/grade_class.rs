@@ -5,79 +5,21 @@
 //!
 //! Needs the kit's own repository (solutions/): in a student handout it says so and passes.
 //!
-//! The sandbox here is a stand-in ([`stand_in`]: prlimit for memory, a wall clock that kills
-//! the process group) until cg-sandbox's `run` lands; the pipeline takes the sandbox as one
-//! function, so switching is `cg_sandbox::run` in place of `stand_in`.
+//! The sandbox is the real one (`cg_sandbox::run` with the strongest isolation the machine
+//! offers; bubblewrap under CI): the panicking submission also tries to write outside its folder
+//! and to start a shell, and both must fail.
 
-use std::io::{Read, Write};
-use std::os::unix::process::CommandExt;
+use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 use cg_core::lang::Lang;
 use cg_grade::{Config, Options};
-use cg_sandbox::{Ended, Isolation, Job, Limits, Run, SandboxError};
+use cg_sandbox::{Isolation, Limits};
 use serde_json::Value;
 
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").canonicalize().unwrap()
-}
-
-/// A minimal sandbox for this test: `prlimit --as` and a wall clock over the process group.
-fn stand_in(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Run, SandboxError> {
-    let started = Instant::now();
-    let mut child = Command::new("prlimit")
-        .arg(format!("--as={}", limits.memory_bytes))
-        .arg("--core=0")
-        .arg("--")
-        .arg(&job.program)
-        .args(&job.args)
-        .current_dir(&job.workdir)
-        .env_clear()
-        .envs(job.env.iter().map(|(k, v)| (k, v)))
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .process_group(0)
-        .spawn()
-        .map_err(|e| SandboxError::Start {
-            program: job.program.display().to_string(),
-            message: e.to_string(),
-        })?;
-    let keep = limits.output_bytes;
-    let reader = |r: Option<Box<dyn Read + Send>>| {
-        std::thread::spawn(move || {
-            let mut all = Vec::new();
-            if let Some(mut r) = r {
-                let _ = r.read_to_end(&mut all);
-            }
-            let cut = all.len() > keep;
-            all.truncate(keep);
-            (String::from_utf8_lossy(&all).into_owned(), cut)
-        })
-    };
-    let out = reader(child.stdout.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
-    let err = reader(child.stderr.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
-    let ended = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            use std::os::unix::process::ExitStatusExt;
-            break match (status.code(), status.signal()) {
-                (Some(c), _) => Ended::Exited(c),
-                (None, Some(s)) => Ended::Signalled(s),
-                _ => Ended::Exited(-1),
-            };
-        }
-        if started.elapsed() > limits.wall {
-            let _ = Command::new("kill").arg("-KILL").arg(format!("-{}", child.id())).status();
-            let _ = child.wait();
-            break Ended::TimedOut;
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let (stdout, c1) = out.join().unwrap();
-    let (stderr, c2) = err.join().unwrap();
-    Ok(Run { ended, stdout, stderr, output_cut: c1 || c2, wall: started.elapsed(), isolation })
 }
 
 fn solution(module: &str) -> String {
@@ -192,10 +134,16 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         "pub fn idle(spec: &Spec, state: &mut State) {",
         "pub fn idle(spec: &Spec, state: &mut State) {\n    let mut hog: Vec<Vec<u8>> = Vec::new();\n    loop { hog.push(vec![1u8; 64 << 20]); if hog.len() == usize::MAX { break; } }\n",
     );
+    // The panic comes after trying to write outside its folder and to start a shell.
+    let escape = base.join("escaped.txt");
+    let _ = std::fs::remove_file(&escape);
     let panicking = edit(
         &solution("s"),
         "pub fn ambient(ia: Rgb, ka: Rgb) -> Rgb {",
-        "pub fn ambient(ia: Rgb, ka: Rgb) -> Rgb {\n    if ia.x >= 0.0 { panic!(\"boom in ambient\"); }\n",
+        &format!(
+            "pub fn ambient(ia: Rgb, ka: Rgb) -> Rgb {{\n    if ia.x >= 0.0 {{ let wrote = std::fs::write({:?}, \"x\").is_ok(); let spawned = std::process::Command::new(\"sh\").arg(\"-c\").arg(\"true\").status().is_ok(); panic!(\"boom in ambient (wrote outside: {{wrote}}, spawned: {{spawned}})\"); }}\n",
+            escape.display().to_string()
+        ),
     );
     folder(&subs.join("05-alloc-panic"), "20260005", &[("a3", greedy), ("s", panicking)]);
     // 6. Zip slip.
@@ -217,11 +165,16 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
             output_bytes: 4 << 20,
         },
         build_limit: Duration::from_secs(1500),
-        isolation: Isolation::Limits,
+        isolation: cg_sandbox::detect(),
         lang: Lang::En,
     };
+    let isolated = options.isolation == Isolation::Bubblewrap;
+    assert!(
+        isolated || std::env::var_os("CI").is_none(),
+        "CI installs bubblewrap (scripts/setup.sh): the class must be graded in the sandbox"
+    );
     let started = Instant::now();
-    let graded = cg_grade::grade(&options, stand_in, &|g| eprintln!("{g:?}")).unwrap();
+    let graded = cg_grade::grade(&options, cg_sandbox::run, &|g| eprintln!("{g:?}")).unwrap();
     eprintln!("graded {} submissions in {:.1} s", graded.len(), started.elapsed().as_secs_f64());
     assert_eq!(graded.len(), 6);
     assert!(graded.iter().all(|g| !g.skipped));
@@ -299,6 +252,16 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         .find(|t| t["number"] == "s.t1.ambient")
         .unwrap();
     assert!(ambient["output"].as_str().unwrap().contains("boom in ambient"), "{ambient:#}");
+    if isolated {
+        assert!(
+            ambient["output"].as_str().unwrap().contains("wrote outside: false, spawned: false"),
+            "the sandbox stops writes outside and new processes: {ambient:#}"
+        );
+        assert!(!escape.exists(), "nothing was written outside the submission's folder");
+    } else {
+        eprintln!("note: no bubblewrap here; writes outside and new processes are not stopped");
+        let _ = std::fs::remove_file(&escape);
+    }
     assert!(hostile["output"].as_str().unwrap().contains("a3: aborted"), "{hostile:#}");
 
     // The zip slip: refused, said why, nothing written outside.
@@ -350,7 +313,7 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         .filter(|e| e.path().is_file())
         .map(|e| (e.file_name().to_string_lossy().into_owned(), std::fs::read(e.path()).unwrap()))
         .collect();
-    let again = cg_grade::grade(&options, stand_in, &|_| {}).unwrap();
+    let again = cg_grade::grade(&options, cg_sandbox::run, &|_| {}).unwrap();
     assert!(again.iter().all(|g| g.skipped), "{again:?}");
     for (name, bytes) in before {
         assert_eq!(std::fs::read(out.join(&name)).unwrap(), bytes, "{name} changed");
