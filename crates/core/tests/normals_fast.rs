@@ -54,7 +54,7 @@ fn random_mesh(s: &mut Inputs) -> Mesh {
     let n = s.int(3, 60) as usize;
     let mut positions: Vec<Vec3> = (0..n).map(|_| corner(s)).collect();
     let mut faces = Vec::new();
-    let mut index = |s: &mut Inputs| s.int(0, n as i64) as u32;
+    let index = |s: &mut Inputs| s.int(0, n as i64) as u32;
     for _ in 0..s.int(1, 120) {
         let [a, b, c] = [index(s), index(s), index(s)];
         match s.int(0, 8) {
