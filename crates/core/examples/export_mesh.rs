@@ -1,0 +1,123 @@
+//! Writes the kit's icosphere as `.npy` files for `scripts/compare-normals.py`, or times the
+//! kit's area-weighted vertex normals on it.
+//!
+//! ```text
+//! cargo run --release -p cg-core --example export_mesh -- export 7 DIR   # DIR/ico7-{v,f}.npy
+//! cargo run --release -p cg-core --example export_mesh -- time 7 REPEATS # one line per measure
+//! ```
+//!
+//! `time` prints `name value` lines: the best and median nanoseconds of
+//! [`vertex_normals`]`(mesh, Weighting::Area)`, of the sequential reference kept for tests, and
+//! of a STREAM-like copy of 64 MiB (bytes per second), the memory-bandwidth yardstick.
+
+use std::io::Write;
+use std::time::Instant;
+
+use cg_core::normals::{Weighting, vertex_normals, vertex_normals_reference};
+use cg_core::shapes::icosphere;
+
+fn npy_header(descr: &str, shape: &[usize]) -> Vec<u8> {
+    let shape = match shape {
+        [n] => format!("({n},)"),
+        _ => format!("({})", shape.iter().map(|s| s.to_string()).collect::<Vec<_>>().join(", ")),
+    };
+    let mut dict = format!("{{'descr': '{descr}', 'fortran_order': False, 'shape': {shape}, }}");
+    // Magic (6) + version (2) + length (2) + dict + newline, padded to a multiple of 64.
+    while (10 + dict.len() + 1) % 64 != 0 {
+        dict.push(' ');
+    }
+    dict.push('\n');
+    let mut out = b"\x93NUMPY\x01\x00".to_vec();
+    out.extend_from_slice(&(dict.len() as u16).to_le_bytes());
+    out.extend_from_slice(dict.as_bytes());
+    out
+}
+
+fn write_npy(path: &std::path::Path, descr: &str, shape: &[usize], data: &[u8]) {
+    let mut file = std::fs::File::create(path).expect("the output file can be created");
+    file.write_all(&npy_header(descr, shape)).expect("write");
+    file.write_all(data).expect("write");
+}
+
+/// Best and median of `repeats` timings of `f`, in nanoseconds.
+fn time(repeats: usize, mut f: impl FnMut()) -> (f64, f64) {
+    let mut ns: Vec<f64> = (0..repeats.max(1))
+        .map(|_| {
+            let t = Instant::now();
+            f();
+            t.elapsed().as_nanos() as f64
+        })
+        .collect();
+    ns.sort_by(f64::total_cmp);
+    (ns[0], ns[ns.len() / 2])
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let usage = "usage: export_mesh export LEVEL DIR | time LEVEL REPEATS";
+    let (Some(what), Some(level)) = (args.first(), args.get(1)) else {
+        eprintln!("{usage}");
+        std::process::exit(2);
+    };
+    let level: u32 = level.parse().expect("LEVEL is a number 0..=8");
+    let mesh = icosphere(1.0, level).expect("the icosphere level is allowed (0..=8)");
+    match what.as_str() {
+        "export" => {
+            let dir = std::path::PathBuf::from(args.get(2).expect(usage));
+            std::fs::create_dir_all(&dir).expect("the directory can be created");
+            let v: Vec<u8> = mesh
+                .positions
+                .iter()
+                .flat_map(|p| p.to_array())
+                .flat_map(f32::to_le_bytes)
+                .collect();
+            let f: Vec<u8> = mesh.faces.iter().flatten().flat_map(|i| i.to_le_bytes()).collect();
+            write_npy(
+                &dir.join(format!("ico{level}-v.npy")),
+                "<f4",
+                &[mesh.positions.len(), 3],
+                &v,
+            );
+            write_npy(&dir.join(format!("ico{level}-f.npy")), "<u4", &[mesh.faces.len(), 3], &f);
+            println!("faces {}\nvertices {}", mesh.faces.len(), mesh.positions.len());
+        }
+        "time" => {
+            let repeats: usize =
+                args.get(2).map_or(20, |r| r.parse().expect("REPEATS is a number"));
+            let fast = vertex_normals(&mesh, Weighting::Area);
+            let reference = vertex_normals_reference(&mesh, Weighting::Area);
+            assert_eq!(fast, reference, "the fast path gives the reference's bits");
+            let (best, median) = time(repeats, || {
+                std::hint::black_box(vertex_normals(std::hint::black_box(&mesh), Weighting::Area));
+            });
+            println!("faces {}\nvertices {}", mesh.faces.len(), mesh.positions.len());
+            println!("kit_ns_best {best:.0}\nkit_ns_median {median:.0}");
+            let (best, median) = time(repeats.div_ceil(4), || {
+                std::hint::black_box(vertex_normals_reference(
+                    std::hint::black_box(&mesh),
+                    Weighting::Area,
+                ));
+            });
+            println!("reference_ns_best {best:.0}\nreference_ns_median {median:.0}");
+            // STREAM-like copy: 64 MiB read and 64 MiB written, far beyond the caches.
+            let src = vec![1.0f64; 8 << 20];
+            let mut dst = vec![0.0f64; 8 << 20];
+            let (best, _) = time(repeats.max(5), || {
+                dst.copy_from_slice(std::hint::black_box(&src));
+                std::hint::black_box(&mut dst);
+            });
+            let bytes = 2.0 * (src.len() * 8) as f64;
+            println!("copy_bytes_per_s {:.0}", bytes / (best * 1e-9));
+        }
+        "profile" => {
+            // Only the fast path, for a profiler.
+            for _ in 0..args.get(2).map_or(50, |r| r.parse().expect("REPEATS is a number")) {
+                std::hint::black_box(vertex_normals(std::hint::black_box(&mesh), Weighting::Area));
+            }
+        }
+        _ => {
+            eprintln!("{usage}");
+            std::process::exit(2);
+        }
+    }
+}

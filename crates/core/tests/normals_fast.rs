@@ -1,0 +1,130 @@
+//! The fast path of `vertex_normals(mesh, Weighting::Area)` against the plain loop
+//! (`vertex_normals_reference`), bit for bit: on icospheres near and far from the origin, and on
+//! seeded random meshes full of what the fast path must hand to the exact code — repeated and
+//! collinear corners, slivers through rounded midpoints, needles, corners with wide exponent
+//! ranges, back-to-back faces that cancel, isolated vertices, non-finite corners, indices out of
+//! range.
+
+use cg_core::mesh::Mesh;
+use cg_core::normals::{
+    Fallback, VertexNormals, Weighting, vertex_normals, vertex_normals_reference,
+};
+use cg_core::shapes::icosphere;
+use cg_testkit::Inputs;
+use glam::Vec3;
+
+/// The normals as bits (so −0.0 and +0.0 differ, and NaN would be seen), and the fallbacks.
+fn bits(v: &VertexNormals) -> (Vec<[u32; 3]>, Vec<(u32, Fallback)>) {
+    (v.normals.iter().map(|n| n.to_array().map(f32::to_bits)).collect(), v.fallbacks.clone())
+}
+
+fn assert_same(mesh: &Mesh, what: &str) {
+    let fast = vertex_normals(mesh, Weighting::Area);
+    let reference = vertex_normals_reference(mesh, Weighting::Area);
+    assert_eq!(bits(&fast), bits(&reference), "{what}");
+}
+
+#[test]
+fn icospheres_near_and_far_from_the_origin() {
+    for level in 0..=5 {
+        let sphere = icosphere(1.0, level).unwrap();
+        assert_same(&sphere, &format!("icosphere level {level}"));
+        for (scale, offset) in [(1e-3, 0.0), (1e3, 0.0), (1.0, 1e3), (1.0, 1e6), (1e-20, 1e-18)] {
+            let mut moved = sphere.clone();
+            for p in &mut moved.positions {
+                *p = *p * scale + Vec3::new(offset, -offset, 0.5 * offset);
+            }
+            assert_same(&moved, &format!("icosphere level {level} ×{scale} +{offset}"));
+        }
+    }
+}
+
+/// A corner for a random mesh: ordinary, tiny, huge, or with wide-ranging exponents.
+fn corner(s: &mut Inputs) -> Vec3 {
+    match s.int(0, 5) {
+        0 => s.vec3_in_cube(1.0),
+        1 => s.vec3_log_uniform(-30.0, 30.0),
+        2 => s.vec3_in_cube(1.0) + Vec3::splat(1e6),
+        3 => s.vec3_log_uniform(-8.0, 2.0),
+        _ => s.vec3_in_cube(1e-3),
+    }
+}
+
+fn random_mesh(s: &mut Inputs) -> Mesh {
+    let n = s.int(3, 60) as usize;
+    let mut positions: Vec<Vec3> = (0..n).map(|_| corner(s)).collect();
+    let mut faces = Vec::new();
+    let index = |s: &mut Inputs| s.int(0, n as i64) as u32;
+    for _ in 0..s.int(1, 120) {
+        let [a, b, c] = [index(s), index(s), index(s)];
+        match s.int(0, 8) {
+            // A sliver through the rounded midpoint of an edge (collinear within f32).
+            0 => {
+                positions.push((positions[a as usize] + positions[b as usize]) * 0.5);
+                faces.push([a, b, positions.len() as u32 - 1]);
+            }
+            // A needle: the third corner a hair off the edge.
+            1 => {
+                let (p, q) = (positions[a as usize], positions[b as usize]);
+                positions.push(p.lerp(q, 0.3) + Vec3::new(0.0, 1e-6, 1e-7));
+                faces.push([a, b, positions.len() as u32 - 1]);
+            }
+            // Back to back: the same face twice, opposite windings (their normals cancel).
+            2 => faces.extend([[a, b, c], [a, c, b]]),
+            // A repeated corner.
+            3 => faces.push([a, a, c]),
+            _ => faces.push([a, b, c]),
+        }
+    }
+    // A few isolated vertices, and now and then a corner that is not finite.
+    positions.extend((0..s.int(0, 3)).map(|_| corner(s)));
+    if s.int(0, 10) == 0 {
+        let k = s.int(0, n as i64) as usize;
+        positions[k].y = if s.coin() { f32::NAN } else { f32::INFINITY };
+    }
+    Mesh { positions, faces, normals: None, uvs: None, colors: None }
+}
+
+#[test]
+fn random_meshes_with_every_hard_case() {
+    let mut s = Inputs::seeded(0x0a3e_a5e1);
+    let mut cancelled = 0;
+    for case in 0..3000 {
+        let mesh = random_mesh(&mut s);
+        let reference = vertex_normals_reference(&mesh, Weighting::Area);
+        cancelled += reference
+            .fallbacks
+            .iter()
+            .filter(|(_, f)| matches!(f, Fallback::Cancelled { .. }))
+            .count();
+        assert_eq!(
+            bits(&vertex_normals(&mesh, Weighting::Area)),
+            bits(&reference),
+            "case {case} (seed {:#x})",
+            s.seed()
+        );
+    }
+    assert!(cancelled > 100, "premise: the meshes have cancelling vertices ({cancelled})");
+}
+
+#[test]
+fn an_index_out_of_range_gives_the_reference_result() {
+    let mut mesh = icosphere(1.0, 1).unwrap();
+    mesh.faces.push([0, 1, 9999]);
+    assert_same(&mesh, "index out of range");
+    let vn = vertex_normals(&mesh, Weighting::Area);
+    assert!(vn.normals.iter().all(|n| (n.length() - 1.0).abs() < 1e-6));
+}
+
+#[test]
+fn the_fast_path_agrees_with_the_sphere() {
+    // Independent of the reference: area-weighted normals of a fine icosphere are within 3 mrad (the faces are
+    // not all alike) of p/|p|, and no vertex falls back.
+    let sphere = icosphere(1.0, 5).unwrap();
+    let vn = vertex_normals(&sphere, Weighting::Area);
+    assert!(vn.fallbacks.is_empty());
+    for (p, n) in sphere.positions.iter().zip(&vn.normals) {
+        let angle = p.normalize().angle_between(*n);
+        assert!(angle < 3e-3, "{p} {n} {angle}");
+    }
+}

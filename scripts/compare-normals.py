@@ -1,0 +1,102 @@
+#!/usr/bin/env python3
+"""Area-weighted vertex normals, side by side in one run: the kit's `vertex_normals(mesh,
+Weighting::Area)` against trimesh's `Trimesh.vertex_normals` and Open3D's
+`TriangleMesh.compute_vertex_normals`, on the kit's icosphere at subdivision 7 (327 680 faces)
+and 8 (1 310 720 faces), plus a memory-bandwidth bound from a STREAM-like copy.
+
+    python3 -m venv .venv && .venv/bin/pip install numpy scipy trimesh open3d
+    .venv/bin/python scripts/compare-normals.py [--repeats N]
+
+The meshes come from `cargo run --release -p cg-core --example export_mesh -- export LEVEL DIR`
+(.npy files), the kit's times from `... -- time LEVEL N` (ns, best of N). Notes: trimesh weights
+its vertex normals by the corner angles, not the areas (its `vertex_normals` is what a user calls);
+Open3D reuses triangle normals it already has, so they are cleared before each call. Both are
+timed best of N like the kit. Writes nothing; prints a table (docs/performance.md).
+"""
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+EXAMPLE = ["cargo", "run", "--quiet", "--release", "-p", "cg-core", "--example", "export_mesh", "--"]
+
+
+def kit(*args):
+    out = subprocess.run(EXAMPLE + [str(a) for a in args], cwd=ROOT, check=True,
+                         capture_output=True, text=True).stdout
+    return dict(line.split() for line in out.splitlines())
+
+
+def best(repeats, setup, call):
+    times = []
+    for _ in range(repeats):
+        state = setup()
+        t = time.perf_counter_ns()
+        call(state)
+        times.append(time.perf_counter_ns() - t)
+    return min(times)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--repeats", type=int, default=20)
+    parser.add_argument("--levels", default="7,8")
+    args = parser.parse_args()
+    try:
+        import trimesh
+    except ImportError:
+        trimesh = None
+    try:
+        import open3d as o3d
+    except ImportError as e:
+        print(f"open3d not available ({e}); comparing with trimesh only", file=sys.stderr)
+        o3d = None
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for level in [int(x) for x in args.levels.split(",")]:
+            kit("export", level, tmp)
+            v = np.load(os.path.join(tmp, f"ico{level}-v.npy"))
+            f = np.load(os.path.join(tmp, f"ico{level}-f.npy"))
+            k = kit("time", level, args.repeats)
+            row = {"level": level, "faces": len(f), "vertices": len(v),
+                   "kit": float(k["kit_ns_best"]), "reference": float(k["reference_ns_best"]),
+                   "copy": float(k["copy_bytes_per_s"])}
+            if trimesh is not None:
+                row["trimesh"] = best(
+                    max(3, args.repeats // 4),
+                    lambda: trimesh.Trimesh(vertices=v, faces=f, process=False),
+                    lambda m: m.vertex_normals)
+            if o3d is not None:
+                mesh = o3d.geometry.TriangleMesh(o3d.utility.Vector3dVector(v.astype(np.float64)),
+                                                 o3d.utility.Vector3iVector(f.astype(np.int32)))
+
+                def clear():
+                    mesh.triangle_normals = o3d.utility.Vector3dVector()
+                    mesh.vertex_normals = o3d.utility.Vector3dVector()
+                    return mesh
+                row["open3d"] = best(args.repeats, clear, lambda m: m.compute_vertex_normals())
+            # Bandwidth bound: per face its 3 indices (12 B) and its record is not needed in a
+            # streaming ideal; per vertex its position (12 B) read and its normal (12 B) written;
+            # V ≈ F/2, so ≈ 24 B per face at the measured copy rate (bytes read + written / s).
+            row["bound"] = (12 * row["faces"] + 24 * row["vertices"]) / row["copy"] * 1e9
+            rows.append(row)
+    print(f"machine: {os.cpu_count()} CPUs; load average {os.getloadavg()}")
+    print("| faces | kit ms | plain loop ms | trimesh ms | Open3D ms | bound ms "
+          "| plain/kit | trimesh/kit | Open3D/kit | kit/bound |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        ms = lambda key: f"{r[key] / 1e6:.2f}" if key in r else "—"
+        ratio = lambda key: f"{r[key] / r['kit']:.2f}" if key in r else "—"
+        print(f"| {r['faces']} | {ms('kit')} | {ms('reference')} | {ms('trimesh')} | {ms('open3d')} "
+              f"| {ms('bound')} | {ratio('reference')} | {ratio('trimesh')} | {ratio('open3d')} "
+              f"| {r['kit'] / r['bound']:.2f} |")
+    print(f"copy bandwidth: {rows[0]['copy'] / 1e9:.1f} GB/s (read + written)")
+
+
+if __name__ == "__main__":
+    main()
