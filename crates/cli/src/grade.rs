@@ -15,7 +15,7 @@ pub struct Args {
     /// Where the results go / 結果の出力先
     #[arg(long, default_value = "grades")]
     out: PathBuf,
-    /// Points per check (TOML: default = 1, [points] by check-ID prefix) / 配点の設定ファイル
+    /// Points per check (TOML: default = 1, `[points]` by check-ID prefix) / 配点の設定ファイル
     #[arg(long, value_name = "TOML")]
     config: Option<PathBuf>,
     /// Submissions graded at once (default: the number of cores) / 同時に採点する数
