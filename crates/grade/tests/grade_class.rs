@@ -253,9 +253,12 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         .unwrap();
     assert!(ambient["output"].as_str().unwrap().contains("boom in ambient"), "{ambient:#}");
     if isolated {
+        // A write outside may "succeed" inside the sandbox's private, throwaway /tmp (where the
+        // folders bound in live when the kit itself is under /tmp, as in CI); what matters is
+        // that nothing reaches the real file system, and that no process starts.
         assert!(
-            ambient["output"].as_str().unwrap().contains("wrote outside: false, spawned: false"),
-            "the sandbox stops writes outside and new processes: {ambient:#}"
+            ambient["output"].as_str().unwrap().contains("spawned: false"),
+            "the sandbox stops new processes: {ambient:#}"
         );
         assert!(!escape.exists(), "nothing was written outside the submission's folder");
     } else {

@@ -23,7 +23,9 @@
 //! - **Bubblewrap** ([`Isolation::Bubblewrap`]): a new root holding only `/lib*` and
 //!   `/usr/lib*` (read-only: the dynamic loader and the libraries), the program (read-only),
 //!   [`Job::read_only`] (read-only), [`Job::workdir`] (writable), a private `/tmp`, a minimal
-//!   `/dev`, no `/proc`; the root itself is read-only. No `/bin`, `/usr/bin` or `/sbin`: there
+//!   `/dev`, no `/proc`; the root itself is read-only. The private `/tmp` is a throwaway tmpfs:
+//!   when a bound folder lies under `/tmp` its parents exist there too and a write into them
+//!   succeeds inside the sandbox but never reaches the real file system. No `/bin`, `/usr/bin` or `/sbin`: there
 //!   is no shell or other tool to start. Every namespace is new (no network: only a loopback
 //!   without addresses), the user inside is `nobody` (65534) with no capabilities, a new
 //!   session (no terminal), and the environment is only [`Job::env`] plus `HOME`. A seccomp
