@@ -11,34 +11,7 @@ use cg_core::scene::Scene;
 use cg_harness::check::{Outcome, Report, guarded};
 use cg_harness::{TableVersion, Text};
 
-/// One of the assignments.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Which {
-    /// 1. ポリゴンモデルの描画 / polygon model
-    A1,
-    /// 2. 視点操作インターフェースの拡張 / camera interface
-    A2,
-    /// 3. アニメーション / animation
-    A3,
-    /// 4. テクスチャマッピング / texture mapping
-    A4,
-    /// 第11回 シェーディング / shading
-    S,
-}
-
-impl Which {
-    const ALL: [Which; 5] = [Which::A1, Which::A2, Which::A3, Which::A4, Which::S];
-
-    fn id(self) -> &'static str {
-        match self {
-            Which::A1 => cg_a1::ID,
-            Which::A2 => cg_a2::ID,
-            Which::A3 => cg_a3::ID,
-            Which::A4 => cg_a4::ID,
-            Which::S => cg_shading::ID,
-        }
-    }
-}
+use cg_check_runner::Which;
 
 /// Where the student's files are: `exercises/` of the kit being run.
 fn exercises_dir() -> PathBuf {
@@ -112,25 +85,13 @@ pub struct CheckArgs {
     time_limit: u64,
 }
 
-/// The checks of one assignment against the student's exercises.
-fn report(which: Which, a: &Assignment) -> Report {
-    let checks = match which {
-        Which::A1 => cg_a1::checks(&a.a1, &cg_exercises::a1::implementation()),
-        Which::A2 => cg_a2::checks(&a.a2, &cg_exercises::a2::implementation()),
-        Which::A3 => cg_a3::checks(&a.a3, &cg_exercises::a3::implementation()),
-        Which::A4 => cg_a4::checks(&a.a4, &cg_exercises::a4::implementation()),
-        Which::S => cg_shading::checks(&a.s, &cg_exercises::s::implementation()),
-    };
-    Report { assignment: which.id().to_owned(), student: Some(a.student.to_string()), checks }
-}
-
 /// `cg check`: runs the student's checks; fails (exit status 1) unless every check passes.
 pub fn check(args: &CheckArgs, lang: Lang) -> Result<bool, String> {
     let record = student(args.student.as_deref(), None, lang)?;
     let a = Assignment::for_student(&record.student, record.table);
     cg_harness::check::watchdog(Duration::from_secs(args.time_limit.max(1)), lang);
     let which: Vec<Which> = args.which.map_or_else(|| Which::ALL.to_vec(), |w| vec![w]);
-    let reports: Vec<Report> = which.iter().map(|&w| report(w, &a)).collect();
+    let reports: Vec<Report> = which.iter().map(|&w| cg_check_runner::report(w, &a)).collect();
     if args.json {
         let value = serde_json::Value::Array(reports.iter().map(Report::to_json).collect());
         println!("{}", serde_json::to_string_pretty(&value).unwrap_or_default());

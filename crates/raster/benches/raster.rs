@@ -6,12 +6,11 @@
 use std::hint::black_box;
 use std::path::Path;
 
-use cg_core::glam::Vec3;
-use cg_core::light::{Light, LightKind, LightModel, Material, Specular};
-use cg_core::product::MatrixProduct;
-use cg_core::scene::{Camera, NormalSource, Object, Projection, Scene, Shading};
-use cg_core::shapes::icosphere;
+mod common;
+
+use cg_core::scene::Shading;
 use cg_raster::{Options, render};
+use common::icosphere_scene;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 
 fn course(c: &mut Criterion) {
@@ -24,49 +23,6 @@ fn course(c: &mut Criterion) {
         group.bench_function(name, |b| b.iter(|| render(black_box(&scene), &options).unwrap()));
     }
     group.finish();
-}
-
-/// One unit sphere of `icosphere(1, 8)` (1 310 720 faces) seen from 3 units away, its given
-/// normals the exact sphere normals (so the benchmark measures drawing, not normal averaging).
-fn icosphere_scene() -> Scene {
-    let mut mesh = icosphere(1.0, 8).expect("level 8 is allowed");
-    mesh.normals = Some(mesh.positions.iter().map(|p| p.normalize()).collect());
-    Scene {
-        name: "icosphere-8".into(),
-        width: 1920,
-        height: 1080,
-        clear_color: Vec3::new(0.5, 0.5, 0.8),
-        camera: Camera::LookAt { eye: Vec3::new(0.0, 0.0, 3.0), target: Vec3::ZERO, up: Vec3::Y },
-        projection: Projection { fovy_deg: 45.0, near: 1.0, far: 500.0 },
-        light_model: LightModel::Lecture { specular: Specular::Phong, local_viewer: true },
-        global_ambient: Vec3::splat(0.2),
-        lights: vec![Light {
-            kind: LightKind::Point { position: Vec3::new(10.0, 10.0, 10.0) },
-            ambient: Vec3::splat(0.1),
-            diffuse: Vec3::splat(0.8),
-            specular: Vec3::ONE,
-            attenuation: Default::default(),
-        }],
-        shading: Shading::Phong,
-        cull_back_faces: true,
-        objects: vec![Object {
-            name: "icosphere".into(),
-            mesh,
-            normals: NormalSource::Given,
-            material: Material {
-                ka: Vec3::new(0.2, 0.3, 0.8),
-                kd: Vec3::new(0.2, 0.3, 0.8),
-                ks: Vec3::splat(0.9),
-                shininess: 60.0,
-                ..Material::default()
-            },
-            transform: MatrixProduct::identity(),
-            texture: None,
-            weld: None,
-            analytic: None,
-        }],
-        textures: vec![],
-    }
 }
 
 fn icosphere_phong(c: &mut Criterion) {

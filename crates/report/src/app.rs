@@ -347,13 +347,17 @@ fn texture_image(t: &cg_core::texture::Texture) -> Option<cg_core::image::Image>
     cg_core::image::Image::from_rgba8(t.width, t.height, &rows)
 }
 
-/// Writes the figures and the fragments of `g` into `folder`.
+/// Every placeholder's value in each format, computed once: written as fragments, then
+/// filled into the templates.
+type Values = Vec<(Format, BTreeMap<String, String>)>;
+
+/// Writes the figures and the fragments of `g` into `folder`; returns the placeholders' values.
 fn write_derived(
     g: &Gathered,
     folder: &Path,
     lang: Lang,
     written: &mut Written,
-) -> Result<(), String> {
+) -> Result<Values, String> {
     if let Some(p) = &g.derived.polygon {
         for view in VIEWS {
             let svg = figures::svg(&figures::layout(p, view), lang);
@@ -372,16 +376,19 @@ fn write_derived(
         let svg = figures::texture_svg(t, files::TEXTURE_PNG, lang);
         write(folder, files::TEXTURE_SVG, svg.as_bytes(), written)?;
     }
+    let mut all = Values::new();
     for format in [Format::Markdown, Format::Latex] {
         let ext = match format {
             Format::Markdown => "md",
             Format::Latex => "tex",
         };
-        for (key, value) in fill::values(&g.derived, &g.context, lang, format) {
+        let values = fill::values(&g.derived, &g.context, lang, format);
+        for (key, value) in &values {
             write(folder, &format!("fragments/{key}.{ext}"), value.as_bytes(), written)?;
         }
+        all.push((format, values));
     }
-    Ok(())
+    Ok(all)
 }
 
 /// `derive`: gathers and writes everything into the output folder.
@@ -393,19 +400,15 @@ pub fn derive_to(args: &DeriveArgs, kit: &Kit, lang: Lang) -> Result<Written, St
     Ok(written)
 }
 
-fn derive_gathered(
-    args: &DeriveArgs,
-    kit: &Kit,
-    lang: Lang,
-) -> Result<(Gathered, Written), String> {
+fn derive_gathered(args: &DeriveArgs, kit: &Kit, lang: Lang) -> Result<(Values, Written), String> {
     let mut g = gather(&args.source, kit, lang)?;
     let mut written = Written { folder: args.output.clone(), ..Written::default() };
     if !args.no_render {
         render_all(&mut g, &kit.impls, &args.output, &mut written, lang)?;
     }
-    write_derived(&g, &args.output, lang, &mut written)?;
-    written.missing = g.context.missing.clone();
-    Ok((g, written))
+    let values = write_derived(&g, &args.output, lang, &mut written)?;
+    written.missing = g.context.missing;
+    Ok((values, written))
 }
 
 /// `fill`: derives, then writes the filled template (`report.md`, `report.tex`), keeping
@@ -414,18 +417,15 @@ fn derive_gathered(
 /// # Errors
 /// What could not be read or written; a template placeholder the kit does not know.
 pub fn fill_to(args: &FillArgs, kit: &Kit, lang: Lang) -> Result<Written, String> {
-    let (g, mut written) = derive_gathered(&args.derive, kit, lang)?;
-    for format in [Format::Markdown, Format::Latex] {
+    let (values, mut written) = derive_gathered(&args.derive, kit, lang)?;
+    for (format, values) in &values {
         let name = format.file_name();
         if args.derive.output.join(name).exists() && !args.force {
             written.kept.push(name.to_owned());
             continue;
         }
-        let text = template::fill(
-            template::template(lang, format),
-            &fill::values(&g.derived, &g.context, lang, format),
-        )
-        .map_err(|e| e.to_string())?;
+        let text =
+            template::fill(template::template(lang, *format), values).map_err(|e| e.to_string())?;
         write(&args.derive.output, name, text.as_bytes(), &mut written)?;
     }
     Ok(written)
