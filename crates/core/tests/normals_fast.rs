@@ -7,7 +7,8 @@
 
 use cg_core::mesh::Mesh;
 use cg_core::normals::{
-    Fallback, VertexNormals, Weighting, vertex_normals, vertex_normals_reference,
+    Fallback, VertexNormals, Weighting, area_vertex_normals_without_fma, vertex_normals,
+    vertex_normals_reference,
 };
 use cg_core::shapes::icosphere;
 use cg_testkit::Inputs;
@@ -18,15 +19,20 @@ fn bits(v: &VertexNormals) -> (Vec<[u32; 3]>, Vec<(u32, Fallback)>) {
     (v.normals.iter().map(|n| n.to_array().map(f32::to_bits)).collect(), v.fallbacks.clone())
 }
 
+/// Both kernels of the fast path (the one this CPU picks, and the one a CPU without FMA runs)
+/// give the reference's bits.
 fn assert_same(mesh: &Mesh, what: &str) {
-    let fast = vertex_normals(mesh, Weighting::Area);
-    let reference = vertex_normals_reference(mesh, Weighting::Area);
-    assert_eq!(bits(&fast), bits(&reference), "{what}");
+    let reference = bits(&vertex_normals_reference(mesh, Weighting::Area));
+    assert_eq!(bits(&vertex_normals(mesh, Weighting::Area)), reference, "{what}");
+    if let Some(portable) = area_vertex_normals_without_fma(mesh) {
+        assert_eq!(bits(&portable), reference, "{what} (kernel without FMA)");
+    }
 }
 
 #[test]
 fn icospheres_near_and_far_from_the_origin() {
-    for level in 0..=5 {
+    // Level 5 and up (20 480 faces and more) take the parallel path; 6 has 5 blocks of faces.
+    for level in 0..=6 {
         let sphere = icosphere(1.0, level).unwrap();
         assert_same(&sphere, &format!("icosphere level {level}"));
         for (scale, offset) in [(1e-3, 0.0), (1e3, 0.0), (1.0, 1e3), (1.0, 1e6), (1e-20, 1e-18)] {
@@ -97,14 +103,43 @@ fn random_meshes_with_every_hard_case() {
             .iter()
             .filter(|(_, f)| matches!(f, Fallback::Cancelled { .. }))
             .count();
-        assert_eq!(
-            bits(&vertex_normals(&mesh, Weighting::Area)),
-            bits(&reference),
-            "case {case} (seed {:#x})",
-            s.seed()
-        );
+        assert_same(&mesh, &format!("case {case} (seed {:#x})", s.seed()));
     }
     assert!(cancelled > 100, "premise: the meshes have cancelling vertices ({cancelled})");
+}
+
+/// Many random meshes side by side in one mesh of more than 300 000 faces: the parallel path
+/// (several blocks of faces, one vertex range per thread) on every hard case at once, with the
+/// vertices numbered in random order so that faces straddle the threads' vertex ranges.
+#[test]
+fn one_large_mesh_with_every_hard_case_in_random_vertex_order() {
+    let mut s = Inputs::seeded(0x1a29_e5e5);
+    let mut big = Mesh { positions: vec![], faces: vec![], normals: None, uvs: None, colors: None };
+    while big.faces.len() < 300_000 {
+        let mut part = random_mesh(&mut s);
+        // Keep the non-finite corners rare: one part in ten has one.
+        let offset = big.positions.len() as u32;
+        big.positions.append(&mut part.positions);
+        big.faces.extend(part.faces.iter().map(|f| f.map(|v| v + offset)));
+    }
+    // A random renumbering of the vertices (Fisher–Yates with the seeded stream).
+    let n = big.positions.len();
+    let mut order: Vec<u32> = (0..n as u32).collect();
+    for i in (1..n).rev() {
+        order.swap(i, s.int(0, i as i64 + 1) as usize);
+    }
+    let mut positions = vec![Vec3::ZERO; n];
+    for (old, &new) in order.iter().enumerate() {
+        positions[new as usize] = big.positions[old];
+    }
+    big.faces.iter_mut().for_each(|f| *f = f.map(|v| order[v as usize]));
+    big.positions = positions;
+    let reference = vertex_normals_reference(&big, Weighting::Area);
+    let count = |what: fn(&Fallback) -> bool| reference.fallbacks.iter().filter(|(_, f)| what(f)).count();
+    assert!(count(|f| matches!(f, Fallback::Cancelled { .. })) > 1000, "premise: cancelling vertices");
+    assert!(count(|f| *f == Fallback::Isolated) > 1000, "premise: isolated vertices");
+    assert!(count(|f| *f == Fallback::Degenerate) > 100, "premise: degenerate-only vertices");
+    assert_same(&big, "one large mesh");
 }
 
 #[test]

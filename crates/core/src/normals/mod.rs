@@ -25,6 +25,8 @@ use crate::math::{cross_f64, cross_kahan_f64, try_normalize, try_normalize_f64};
 use crate::mesh::{CornersByVertex, Mesh, MeshError, find_root, gather, union};
 use crate::scene::NormalSource;
 
+mod fast;
+
 // ---------------------------------------------------------------------------------------------
 // Face normals
 
@@ -332,11 +334,21 @@ impl Accumulator {
 #[must_use]
 pub fn vertex_normals(mesh: &Mesh, weighting: Weighting) -> VertexNormals {
     if weighting == Weighting::Area
-        && let Some(fast) = area_vertex_normals(mesh)
+        && let Some(fast) = fast::area_vertex_normals(mesh, false)
     {
         return fast;
     }
     vertex_normals_reference(mesh, weighting)
+}
+
+/// The fast path of [`vertex_normals`] with [`Weighting::Area`] as it runs on a CPU without FMA
+/// (plain x86-64), whatever this CPU has: for the tests, which must cover both kernels on any
+/// machine, and for the benchmark. `None` where `vertex_normals` would take the plain loop (an
+/// index out of range).
+#[doc(hidden)]
+#[must_use]
+pub fn area_vertex_normals_without_fma(mesh: &Mesh) -> Option<VertexNormals> {
+    fast::area_vertex_normals(mesh, true)
 }
 
 /// [`vertex_normals`] as one plain sequential loop over the faces, for every weighting: the
@@ -365,209 +377,6 @@ pub fn vertex_normals_reference(mesh: &Mesh, weighting: Weighting) -> VertexNorm
         }
     }
     VertexNormals { normals, fallbacks }
-}
-
-// ---------------------------------------------------------------------------------------------
-// The fast path of area-weighted vertex normals
-
-/// Faces per task of the fast path's parallel first pass (4 096 faces: 128 KiB of records).
-const FACE_CHUNK: usize = 4096;
-/// Vertices per task of the fast path's parallel last pass.
-const VERTEX_CHUNK: usize = 8192;
-/// The significand field of an f64.
-const SIGNIFICAND: u64 = (1 << 52) - 1;
-
-/// How many significant bits (1..=53) the widest of `v`'s components has, for finite normal
-/// numbers and zeros (an edge of f32 corners is never an f64 subnormal).
-#[inline]
-fn significant_bits(v: DVec3) -> u32 {
-    let field = (v.x.to_bits() | v.y.to_bits() | v.z.to_bits()) & SIGNIFICAND;
-    53 - (field | (1 << 52)).trailing_zeros()
-}
-
-/// Whether `to − from`, rounded to f64, is exact (the `lo` of [`exact_edge`] is zero).
-#[inline]
-fn edge_is_exact(from: DVec3, to: DVec3, hi: DVec3) -> bool {
-    let y = -from;
-    let y_part = hi - to;
-    let x_part = hi - y_part;
-    (to - x_part) + (y - y_part) == DVec3::ZERO
-}
-
-/// One face of the fast path: `[x, y, z, |n|]` with `n` the area vector that
-/// [`usable_area_vector`] returns and `|n|` its `length()`, bit for bit, or `None` when this
-/// shortcut cannot vouch for the bits (the caller then takes [`face_geometry`]).
-///
-/// The shortcut: when both edges are exact in f64 and the significant bits of the widest
-/// components of the two edges add up to at most 53, every product in the cross product is exact,
-/// so the plain `a·b − c·d` rounds once, exactly like Kahan's difference of products (whose
-/// error term is then an exact zero): the same bits, without the fused multiply-adds that cost a
-/// library call per product on a CPU target without FMA. The degeneracy test compares squared
-/// lengths against upper bounds of the noise and only accepts a face whose squared area vector
-/// is 1 + 10⁻⁶ times above them (far beyond their rounding); any other face goes the exact way.
-#[inline]
-fn quick_area_record(a: Vec3, b: Vec3, c: Vec3) -> Option<[f64; 4]> {
-    if !(a.is_finite() && b.is_finite() && c.is_finite()) {
-        return None;
-    }
-    let (ad, bd, cd) = (a.as_dvec3(), b.as_dvec3(), c.as_dvec3());
-    let (e1, e2) = (bd - ad, cd - ad);
-    if !(edge_is_exact(ad, bd, e1) && edge_is_exact(ad, cd, e2))
-        || significant_bits(e1) + significant_bits(e2) > 53
-    {
-        return None;
-    }
-    let n =
-        DVec3::new(e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x)
-            + DVec3::ZERO;
-    // Squared upper bounds of the two noises of `usable_area_vector`. `rounding_noise` is at most
-    // √3·(|d₁|·|e₂| + |e₁|·|d₂|) (each component of `abs_cross(x, y)` is at most |x|·|y|) with
-    // |dᵢ| ≤ 2u·max|corner|, so its square is at most 24u²·P·(|e₁|² + |e₂|²), P = max|corner|²;
-    // 32u² leaves room for the rounding of these few operations.
-    let (l1, l2) = (e1.length_squared(), e2.length_squared());
-    let p = ad.length_squared().max(bd.length_squared()).max(cd.length_squared());
-    let exact_noise = DEGENERATE_SINE * DEGENERATE_SINE * l1 * l2;
-    let noise = exact_noise.max(32.0 * F32_UNIT_ROUNDOFF * F32_UNIT_ROUNDOFF * p * (l1 + l2));
-    let length_squared = n.length_squared();
-    (length_squared > noise * (1.0 + 1e-6)).then(|| [n.x, n.y, n.z, length_squared.sqrt()])
-}
-
-/// `try_normalize_f64(v).map(DVec3::as_vec3)` for a finite `v` of length `length`
-/// (`v.length()`), with one division instead of six, or `None` when this shortcut cannot vouch
-/// for the bits.
-///
-/// `v · (1/length)` is within 4 units of f64 rounding (u = 2⁻⁵³) of the exact unit vector, and
-/// `try_normalize_f64`'s `(v/m)/|v/m|` within 6 of it, so the two are within 2⁻⁴⁹ relative of
-/// each other. When `x·(1 − 2⁻⁴⁶)` and `x·(1 + 2⁻⁴⁶)` round to the same f32 for every component
-/// `x` of the shortcut, so does everything in between, the reference included. Otherwise (a
-/// component within 2⁻⁴⁶ of an f32 rounding boundary, once in ~10⁷) the caller divides.
-#[inline]
-fn quick_unit_f32(v: DVec3, length: f64) -> Option<Vec3> {
-    const SLACK: f64 = 1.0 / (1u64 << 46) as f64;
-    if !(v.is_finite() && length > 0.0 && length.is_finite()) {
-        return None;
-    }
-    let unit = v * (1.0 / length);
-    let (low, high) = ((unit * (1.0 - SLACK)).as_vec3(), (unit * (1.0 + SLACK)).as_vec3());
-    (low == high).then_some(low)
-}
-
-/// [`vertex_normals`] with [`Weighting::Area`] on a mesh whose indices are all in range (`None`
-/// otherwise): bit for bit [`vertex_normals_reference`], in three passes over flat arrays.
-///
-/// 1. Every face's area vector and its length, `[x, y, z, |n|]` (zeros for an unusable face),
-///    in parallel over chunks of faces.
-/// 2. Scattered to the corners' vertices in face order — the order of the reference's sums, so
-///    the same bits — into `[Σx, Σy, Σz, Σ|n|]` per vertex. The last entry starts at −0.0: the
-///    first corner adds +0.0 or a length and makes it +0.0 or positive, so −0.0 marks a vertex no
-///    face uses, +0.0 one used only by unusable faces (the sums of the reference are never −0.0,
-///    so adding +0.0 for an unusable face changes no bit).
-/// 3. Every vertex resolved as [`Accumulator::resolve`] does, in parallel; the rare vertex whose
-///    normals cancel finds its largest face in one more pass over the faces.
-fn area_vertex_normals(mesh: &Mesh) -> Option<VertexNormals> {
-    use rayon::prelude::*;
-
-    let positions = &mesh.positions;
-    let n = positions.len();
-    if mesh.faces.iter().flatten().any(|&v| v as usize >= n) {
-        return None;
-    }
-
-    // 1. Face records.
-    let mut records = vec![[0.0f64; 4]; mesh.faces.len()];
-    records.par_chunks_mut(FACE_CHUNK).zip(mesh.faces.par_chunks(FACE_CHUNK)).enumerate().for_each(
-        |(chunk, (out, faces))| {
-            for (i, (record, face)) in out.iter_mut().zip(faces).enumerate() {
-                let [a, b, c] = face.map(|v| positions[v as usize]);
-                *record = quick_area_record(a, b, c).unwrap_or_else(|| {
-                    face_geometry(mesh, chunk * FACE_CHUNK + i).map_or([0.0; 4], |g| {
-                        let v = g.area_vector;
-                        [v.x, v.y, v.z, v.length()]
-                    })
-                });
-            }
-        },
-    );
-
-    // 2. Sums per vertex, in face order.
-    let mut sums = vec![[0.0f64, 0.0, 0.0, -0.0]; n];
-    for (face, record) in mesh.faces.iter().zip(&records) {
-        for &v in face {
-            let s = &mut sums[v as usize];
-            s[0] += record[0];
-            s[1] += record[1];
-            s[2] += record[2];
-            s[3] += record[3];
-        }
-    }
-
-    // 3. Normals and fallbacks.
-    let mut normals = vec![Vec3::ZERO; n];
-    let chunks: Vec<Vec<(u32, Fallback)>> = normals
-        .par_chunks_mut(VERTEX_CHUNK)
-        .zip(sums.par_chunks(VERTEX_CHUNK))
-        .enumerate()
-        .map(|(chunk, (out, sums))| {
-            let mut fallbacks = Vec::new();
-            for (i, (normal, s)) in out.iter_mut().zip(sums).enumerate() {
-                let v = (chunk * VERTEX_CHUNK + i) as u32;
-                let (sum, magnitude) = (DVec3::new(s[0], s[1], s[2]), s[3]);
-                if magnitude.to_bits() == (-0.0f64).to_bits() {
-                    fallbacks.push((v, Fallback::Isolated));
-                } else if magnitude <= 0.0 {
-                    fallbacks.push((v, Fallback::Degenerate));
-                } else if let length = sum.length()
-                    && length > CANCEL_FRACTION * magnitude
-                    && let Some(unit) = quick_unit_f32(sum, length)
-                        .or_else(|| try_normalize_f64(sum).map(DVec3::as_vec3))
-                {
-                    *normal = unit;
-                } else {
-                    // The face is filled in below.
-                    fallbacks.push((v, Fallback::Cancelled { face: u32::MAX }));
-                }
-            }
-            fallbacks
-        })
-        .collect();
-    let mut fallbacks: Vec<(u32, Fallback)> = chunks.into_iter().flatten().collect();
-
-    // The largest usable face at each cancelled vertex (the first of equal ones), as the
-    // reference's accumulator keeps it.
-    let cancelled: Vec<usize> = (0..fallbacks.len())
-        .filter(|&i| matches!(fallbacks[i].1, Fallback::Cancelled { .. }))
-        .collect();
-    if !cancelled.is_empty() {
-        let mut slot = vec![u32::MAX; n];
-        for (k, &i) in cancelled.iter().enumerate() {
-            slot[fallbacks[i].0 as usize] = k as u32;
-        }
-        let mut largest: Vec<Option<(f64, u32)>> = vec![None; cancelled.len()];
-        for (f, (face, record)) in mesh.faces.iter().zip(&records).enumerate() {
-            let area = record[3];
-            if area <= 0.0 {
-                continue;
-            }
-            for &v in face {
-                if let Some(best) = largest.get_mut(slot[v as usize] as usize)
-                    && best.is_none_or(|(l, _)| area > l)
-                {
-                    *best = Some((area, f as u32));
-                }
-            }
-        }
-        for (k, &i) in cancelled.iter().enumerate() {
-            let v = fallbacks[i].0 as usize;
-            // Every cancelled vertex has a usable face (its magnitude is positive).
-            if let Some((_, face)) = largest[k] {
-                let r = records[face as usize];
-                let unit = try_normalize_f64(DVec3::new(r[0], r[1], r[2])).unwrap_or(DVec3::ZERO);
-                normals[v] = unit.as_vec3();
-                fallbacks[i].1 = Fallback::Cancelled { face };
-            }
-        }
-    }
-    Some(VertexNormals { normals, fallbacks })
 }
 
 // ---------------------------------------------------------------------------------------------
