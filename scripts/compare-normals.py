@@ -8,7 +8,8 @@ and 8 (1 310 720 faces), plus a memory-bandwidth bound from a STREAM-like copy.
     .venv/bin/python scripts/compare-normals.py [--repeats N]
 
 The meshes come from `cargo run --release -p cg-core --example export_mesh -- export LEVEL DIR`
-(.npy files), the kit's times from `... -- time LEVEL N` (ns, best of N). Notes: trimesh weights
+(.npy files), the kit's times from `... -- time LEVEL N` (ns, best of N; also the kit on one
+thread, the kit with the kernel of a CPU without FMA, and a naive f32 loop with its error). Notes: trimesh weights
 its vertex normals by the corner angles, not the areas (its `vertex_normals` is what a user calls);
 Open3D reuses triangle normals it already has, so they are cleared before each call. Both are
 timed best of N like the kit. Writes nothing; prints a table (docs/performance.md).
@@ -65,6 +66,10 @@ def main():
             k = kit("time", level, args.repeats)
             row = {"level": level, "faces": len(f), "vertices": len(v),
                    "kit": float(k["kit_ns_best"]), "reference": float(k["reference_ns_best"]),
+                   "one_thread": float(k["kit_one_thread_ns_best"]),
+                   "without_fma": float(k["kit_without_fma_ns_best"]),
+                   "naive": float(k["naive_f32_ns_best"]),
+                   "naive_angle": float(k["naive_f32_max_angle_rad"]),
                    "copy": float(k["copy_bytes_per_s"])}
             if trimesh is not None:
                 row["trimesh"] = best(
@@ -96,6 +101,14 @@ def main():
               f"| {ms('bound')} | {ratio('reference')} | {ratio('trimesh')} | {ratio('open3d')} "
               f"| {r['kit'] / r['bound']:.2f} |")
     print(f"copy bandwidth: {rows[0]['copy'] / 1e9:.1f} GB/s (read + written)")
+    print()
+    print("| faces | kit ms (all cores) | kit, one thread | kit without FMA | naive f32 loop, "
+          "one thread | naive f32: largest angle from the kit's normals |")
+    print("|---|---|---|---|---|---|")
+    for r in rows:
+        print(f"| {r['faces']} | {r['kit'] / 1e6:.2f} | {r['one_thread'] / 1e6:.2f} "
+              f"| {r['without_fma'] / 1e6:.2f} | {r['naive'] / 1e6:.2f} "
+              f"| {r['naive_angle']:.1e} rad |")
 
 
 if __name__ == "__main__":

@@ -8,12 +8,18 @@
 //!
 //! `time` prints `name value` lines: the best and median nanoseconds of
 //! [`vertex_normals`]`(mesh, Weighting::Area)`, of the sequential reference kept for tests, and
-//! of a STREAM-like copy of 64 MiB (bytes per second), the memory-bandwidth yardstick.
+//! of a STREAM-like copy of 64 MiB (bytes per second), the memory-bandwidth yardstick; then the
+//! fast path on one thread, the fast path with the kernel of a CPU without FMA, and a naive f32
+//! loop with its largest angle from the kit's normals.
 
 use std::io::Write;
 use std::time::Instant;
 
-use cg_core::normals::{Weighting, vertex_normals, vertex_normals_reference};
+use cg_core::glam::Vec3;
+use cg_core::mesh::Mesh;
+use cg_core::normals::{
+    Weighting, area_vertex_normals_without_fma, vertex_normals, vertex_normals_reference,
+};
 use cg_core::shapes::icosphere;
 
 fn npy_header(descr: &str, shape: &[usize]) -> Vec<u8> {
@@ -50,6 +56,19 @@ fn time(repeats: usize, mut f: impl FnMut()) -> (f64, f64) {
         .collect();
     ns.sort_by(f64::total_cmp);
     (ns[0], ns[ns.len() / 2])
+}
+
+/// Area-weighted vertex normals as a first attempt computes them: f32, one loop, no care.
+fn naive_f32(mesh: &Mesh) -> Vec<Vec3> {
+    let mut sums = vec![Vec3::ZERO; mesh.positions.len()];
+    for &[a, b, c] in &mesh.faces {
+        let p = |i: u32| mesh.positions[i as usize];
+        let n = (p(b) - p(a)).cross(p(c) - p(a));
+        for v in [a, b, c] {
+            sums[v as usize] += n;
+        }
+    }
+    sums.into_iter().map(Vec3::normalize_or_zero).collect()
 }
 
 fn main() {
@@ -99,6 +118,30 @@ fn main() {
                 ));
             });
             println!("reference_ns_best {best:.0}\nreference_ns_median {median:.0}");
+            // The same fast path on one thread, and with the kernel of a CPU without FMA.
+            let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("a pool");
+            let (best, _) = time(repeats, || {
+                one.install(|| {
+                    std::hint::black_box(vertex_normals(&mesh, Weighting::Area));
+                });
+            });
+            println!("kit_one_thread_ns_best {best:.0}");
+            let (best, _) = time(repeats, || {
+                std::hint::black_box(area_vertex_normals_without_fma(std::hint::black_box(&mesh)));
+            });
+            println!("kit_without_fma_ns_best {best:.0}");
+            // What a first attempt looks like: f32 throughout, no degenerate or cancelling faces
+            // handled, one thread. Its largest angle from the kit's normals shows what it costs.
+            let naive = naive_f32(&mesh);
+            let worst = naive
+                .iter()
+                .zip(&fast.normals)
+                .map(|(a, b)| f64::from(a.dot(*b).clamp(-1.0, 1.0)).acos())
+                .fold(0.0f64, f64::max);
+            let (best, _) = time(repeats, || {
+                std::hint::black_box(naive_f32(std::hint::black_box(&mesh)));
+            });
+            println!("naive_f32_ns_best {best:.0}\nnaive_f32_max_angle_rad {worst:e}");
             // STREAM-like copy: 64 MiB read and 64 MiB written, far beyond the caches.
             let src = vec![1.0f64; 8 << 20];
             let mut dst = vec![0.0f64; 8 << 20];

@@ -135,8 +135,12 @@ fn one_large_mesh_with_every_hard_case_in_random_vertex_order() {
     big.faces.iter_mut().for_each(|f| *f = f.map(|v| order[v as usize]));
     big.positions = positions;
     let reference = vertex_normals_reference(&big, Weighting::Area);
-    let count = |what: fn(&Fallback) -> bool| reference.fallbacks.iter().filter(|(_, f)| what(f)).count();
-    assert!(count(|f| matches!(f, Fallback::Cancelled { .. })) > 1000, "premise: cancelling vertices");
+    let count =
+        |what: fn(&Fallback) -> bool| reference.fallbacks.iter().filter(|(_, f)| what(f)).count();
+    assert!(
+        count(|f| matches!(f, Fallback::Cancelled { .. })) > 1000,
+        "premise: cancelling vertices"
+    );
     assert!(count(|f| *f == Fallback::Isolated) > 1000, "premise: isolated vertices");
     assert!(count(|f| *f == Fallback::Degenerate) > 100, "premise: degenerate-only vertices");
     assert_same(&big, "one large mesh");

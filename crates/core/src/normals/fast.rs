@@ -345,8 +345,8 @@ fn block_records(
 /// [`LANES`] faces at once (structure of arrays, so the compiler vectorises every step): for each
 /// face, whether the shortcut vouches for its record, and the record. For a CPU with FMA.
 ///
-/// The shortcut: both edges exact in f64 (TwoSum's error term is zero, which also rules out
-/// non-finite corners), the cross product as [`cross_kahan_f64`](crate::math::cross_kahan_f64)
+/// The shortcut: both edges exact in f64 ([`difference_fits`], which also rules out non-finite
+/// corners), the cross product as [`cross_kahan_f64`](crate::math::cross_kahan_f64)
 /// computes it, and the degeneracy test of [`quick_area_record`] (squared upper bounds of the
 /// noise with room for their rounding). Then the record has the reference's bits.
 #[inline(always)]
@@ -364,51 +364,60 @@ fn lane_records(
             p[3 * k + 2][i] = q.z;
         }
     }
-    // Widened to f64 lane by lane in the loop below (four at a time, not one by one here).
     let [ax, ay, az, bx, by, bz, cx, cy, cz] = &*p;
+    // On the f32 coordinates, eight lanes at a time: whether both edges are exact in f64 (see
+    // `difference_fits`), and the largest coordinate magnitude.
+    let mut exact = [false; LANES];
+    let mut largest = [0.0f32; LANES];
+    for i in 0..LANES {
+        exact[i] = difference_fits(ax[i], bx[i])
+            & difference_fits(ay[i], by[i])
+            & difference_fits(az[i], bz[i])
+            & difference_fits(ax[i], cx[i])
+            & difference_fits(ay[i], cy[i])
+            & difference_fits(az[i], cz[i]);
+        largest[i] = [ay[i], az[i], bx[i], by[i], bz[i], cx[i], cy[i], cz[i]]
+            .iter()
+            .fold(ax[i].abs(), |m, c| m.max(c.abs()));
+    }
     let mut ok = [false; LANES];
     const K: f64 = 32.0 * F32_UNIT_ROUNDOFF * F32_UNIT_ROUNDOFF;
     const D2: f64 = DEGENERATE_SINE * DEGENERATE_SINE;
+    // Then in f64, four lanes at a time (the coordinates widened here, not one by one above).
     for i in 0..LANES {
         let (ax, ay, az) = (f64::from(ax[i]), f64::from(ay[i]), f64::from(az[i]));
         let (bx, by, bz) = (f64::from(bx[i]), f64::from(by[i]), f64::from(bz[i]));
         let (cx, cy, cz) = (f64::from(cx[i]), f64::from(cy[i]), f64::from(cz[i]));
         let (e1x, e1y, e1z) = (bx - ax, by - ay, bz - az);
         let (e2x, e2y, e2z) = (cx - ax, cy - ay, cz - az);
-        let exact = two_sum_error(ax, bx, e1x)
-            + two_sum_error(ay, by, e1y)
-            + two_sum_error(az, bz, e1z)
-            + two_sum_error(ax, cx, e2x)
-            + two_sum_error(ay, cy, e2y)
-            + two_sum_error(az, cz, e2z);
         let x = difference_of_products_f64(e1y, e2z, e1z, e2y) + 0.0;
         let y = difference_of_products_f64(e1z, e2x, e1x, e2z) + 0.0;
         let z = difference_of_products_f64(e1x, e2y, e1y, e2x) + 0.0;
         let l1 = e1x * e1x + e1y * e1y + e1z * e1z;
         let l2 = e2x * e2x + e2y * e2y + e2z * e2z;
-        let pa = ax * ax + ay * ay + az * az;
-        let pb = bx * bx + by * by + bz * bz;
-        let pc = cx * cx + cy * cy + cz * cz;
-        let pm = if pa > pb { pa } else { pb };
-        let pm = if pm > pc { pm } else { pc };
+        // max |corner|² ≤ 3·(largest coordinate)².
+        let pm = 3.0 * f64::from(largest[i]) * f64::from(largest[i]);
         let exact_noise = D2 * l1 * l2;
         let round_noise = K * pm * (l1 + l2);
         let noise = if exact_noise > round_noise { exact_noise } else { round_noise };
         let length_squared = x * x + y * y + z * z;
-        ok[i] = (exact == 0.0) & (length_squared > noise * (1.0 + 1e-6));
+        ok[i] = exact[i] & (length_squared > noise * (1.0 + 1e-6));
         out[i] = [x, y, z, length_squared.sqrt()];
     }
     ok
 }
 
-/// The error of `to − from` rounded to f64 (TwoSum): 0 exactly when the edge is exact, NaN or
-/// infinite when a coordinate is not finite.
+/// Whether `b − a` is exact in f64, from the exponents of the two f32 numbers: with exponents
+/// `E_max ≥ E_min` (a subnormal counted as −126), the difference is a multiple of `2^(E_min−23)`
+/// below `2^(E_max+2)` in magnitude, so it has at most `E_max − E_min + 25` significant bits:
+/// at most 53 when the exponents differ by 28 or less. A zero operand makes it exact too; an
+/// infinite or NaN operand never passes. (Stricter than TwoSum's test: a difference it rejects
+/// goes the exact way.)
 #[inline(always)]
-fn two_sum_error(from: f64, to: f64, hi: f64) -> f64 {
-    let y = -from;
-    let y_part = hi - to;
-    let x_part = hi - y_part;
-    ((to - x_part) + (y - y_part)).abs()
+fn difference_fits(a: f32, b: f32) -> bool {
+    let (ea, eb) = ((a.to_bits() >> 23) & 0xff, (b.to_bits() >> 23) & 0xff);
+    let finite = (ea != 0xff) & (eb != 0xff);
+    finite & ((ea.max(1).abs_diff(eb.max(1)) <= 28) | (a == 0.0) | (b == 0.0))
 }
 
 /// The significand field of an f64.
