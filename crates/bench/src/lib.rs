@@ -90,7 +90,7 @@ impl Config {
             depth_reference: 16,
             features_size: 512,
             features_gpu_size: 1024,
-            gpu_draws: 8,
+            gpu_draws: 4,
         }
     }
 
