@@ -14,7 +14,7 @@
 //! | `fresnel` | exact, Schlick, Schlick on the wrong side | [`cg_core::optics::fresnel_dielectric`] |
 //! | `area-light` | area-light samples per side | many samples |
 //! | `ray-depth` | the tracer's `max_depth` | depth 16 |
-//! | `features` | each renderer with and without each feature | the scene without it |
+//! | `features` | each renderer (rasterizer, ray tracer, GPU) with and without each feature | the scene without it |
 //!
 //! Nothing here asserts a time: the figures are for the report (NUMERICS.md lists figures seen
 //! elsewhere, for comparison). The errors are deterministic (seeded inputs); the times are not.
@@ -60,8 +60,14 @@ pub struct Config {
     pub depths: Vec<u32>,
     /// The converged ray depth.
     pub depth_reference: u32,
-    /// Image side of the "only what the scene needs" experiment, pixels.
+    /// Image side of the "only what the scene needs" experiment, pixels (the CPU renderers).
     pub features_size: u32,
+    /// Image side of the same experiment's GPU rows, pixels: larger, so that the shading and not
+    /// the fixed cost of a submission dominates the time.
+    pub features_gpu_size: u32,
+    /// Draws per timed GPU run: the GPU's time per frame is `draws` draws into a prepared frame
+    /// and one wait, divided by `draws`.
+    pub gpu_draws: u32,
 }
 
 impl Config {
@@ -82,7 +88,12 @@ impl Config {
             area_reference: 32,
             depths: vec![0, 1, 2, 3, 4, 6, 8],
             depth_reference: 16,
-            features_size: 256,
+            // 512: the time saved by a skipped term shows above the noise (at 256 it hardly did).
+            features_size: 512,
+            // Lavapipe on 2 cores: about 1.2 ms a frame at 64 × 64 whatever the shader (the fixed
+            // cost), about 50 ms at 1024 × 1024: the shading dominates.
+            features_gpu_size: 1024,
+            gpu_draws: 2,
         }
     }
 
@@ -104,6 +115,8 @@ impl Config {
             depths: vec![0, 1, 2, 4],
             depth_reference: 16,
             features_size: 128,
+            features_gpu_size: 512,
+            gpu_draws: 4,
         }
     }
 
@@ -126,6 +139,8 @@ impl Config {
             depths: vec![0, 2],
             depth_reference: 8,
             features_size: 48,
+            features_gpu_size: 64,
+            gpu_draws: 2,
         }
     }
 }
@@ -158,7 +173,8 @@ impl Column {
 pub struct Row {
     /// The knob settings, in [`Experiment::keys`] order.
     pub key: Vec<String>,
-    /// The measurements, in [`Experiment::columns`] order.
+    /// The measurements, in [`Experiment::columns`] order; NaN where a measure does not apply to
+    /// the row (the table shows `—`).
     pub values: Vec<f64>,
 }
 
@@ -340,10 +356,13 @@ pub fn run(
     Ok(Report { config: config.clone(), machine, experiments })
 }
 
-/// A number for a table: 4 significant digits, scientific when very small or large.
+/// A number for a table: 4 significant digits, scientific when very small or large; NaN (a
+/// measure that does not apply to the row, such as a CPU counter on a GPU row) is `—`.
 #[must_use]
 pub fn format_value(x: f64) -> String {
-    if x == 0.0 {
+    if x.is_nan() {
+        "—".into()
+    } else if x == 0.0 {
         "0".into()
     } else if !x.is_finite() {
         format!("{x}")

@@ -1,14 +1,21 @@
-//! "Only what the scene needs": the rasterizer and the ray tracer on one scene with and without
-//! each feature. Each feature is measured three ways: absent (the renderer skips the term, as
-//! [`cg_core::scene::Scene::features`] says), present with a coefficient too small to see (the
-//! term is computed and changes nothing visible: the cost of *not* skipping), and present in
-//! full.
+//! "Only what the scene needs": the rasterizer, the ray tracer and the GPU renderer on one scene
+//! with and without each feature. Each feature is measured three ways: absent (the renderer skips
+//! the term, as [`cg_core::scene::Scene::features`] says), present with a coefficient too small to
+//! see (the term is computed and changes nothing visible: the cost of *not* skipping), and present
+//! in full.
+//!
+//! The GPU renderer ([`cg_gpu`]) skips by generating its WGSL from the scene's features: its rows
+//! count the terms the shader contains ([`cg_gpu::enabled`]) and the shader's length. They are
+//! timed on a prepared [`cg_gpu::Frame`] ([`Config::gpu_draws`] draws and one wait, no readback)
+//! at [`Config::features_gpu_size`]. Without an adapter (no Vulkan driver) the GPU rows are
+//! absent and the experiment's text says why.
 
 use cg_core::Rgb;
 use cg_core::glam::Vec3;
 use cg_core::light::{LightKind, Material};
 use cg_core::scene::{Scene, TextureUse};
 use cg_core::texture::{Sampler, TexEnv, Texture};
+use cg_gpu::{Gpu, GpuError};
 
 use super::{empty_scene, ground, matte, point_light, raster, rms, sphere, trace};
 use crate::measure::median_time;
@@ -78,10 +85,118 @@ const VARIANTS: [(&str, Tweak); 11] = [
     ("reflection, k_r = 0.3", |s, _| sphere_material(s).kr = Rgb::splat(0.3)),
 ];
 
-/// Runs the experiment.
+/// Whether the GPU renderer draws what the variant asks for: not the tracer's shadows, nor
+/// reflection or transmission (they need rays).
+fn gpu_can_draw(scene: &Scene, options: &cg_trace::Options) -> bool {
+    let f = scene.features();
+    !options.shadows && !f.reflection && !f.transmission
+}
+
+/// What the GPU measured for one variant.
+struct GpuMeasure {
+    /// Seconds per frame.
+    time: f64,
+    /// The frame read back.
+    image: cg_core::image::Image,
+    /// Terms in the generated shader ([`cg_gpu::enabled`]).
+    terms: usize,
+    /// Lines of the generated WGSL.
+    lines: usize,
+}
+
+/// Prepares `scene` once at `config.features_gpu_size`, then times `config.gpu_draws` draws into
+/// one target followed by one wait (median over `config.reps` runs, divided by the draws), and
+/// reads the frame back once, untimed.
+fn gpu_measure(gpu: &Gpu, scene: &Scene, config: &Config) -> Result<GpuMeasure, GpuError> {
+    use cg_gpu::wgpu;
+    let size = config.features_gpu_size;
+    let options = cg_gpu::Options { shading: None, size: Some((size, size)) };
+    let frame = gpu.frame(scene, &options, cg_gpu::READBACK_FORMAT)?;
+    let device = gpu.device();
+    let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let target = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("cg-bench features"),
+        size: wgpu::Extent3d { width: frame.width, height: frame.height, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: frame.format,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+        view_formats: &[],
+    });
+    let view = target.create_view(&wgpu::TextureViewDescriptor::default());
+    let draws = config.gpu_draws.max(1);
+    let mut failure = None;
+    let time = median_time(config.reps, || {
+        for _ in 0..draws {
+            gpu.render_to_view(&frame, &view);
+        }
+        if let Err(e) = device.poll(wgpu::PollType::wait_indefinitely()) {
+            failure = Some(e.to_string());
+        }
+    }) / f64::from(draws);
+    if let Some(e) = pollster::block_on(scope.pop()) {
+        return Err(GpuError::Wgpu(e.to_string()));
+    }
+    if let Some(e) = failure {
+        return Err(GpuError::Wgpu(e));
+    }
+    let image = gpu.read_back(&frame)?;
+    Ok(GpuMeasure {
+        time,
+        image,
+        terms: cg_gpu::enabled(&frame.features).len(),
+        lines: frame.shader.lines().count(),
+    })
+}
+
+/// The GPU's rows for every variant it can draw, keyed `GPU (<adapter>)`, with RMS against its
+/// own `none` image.
+fn gpu_rows(gpu: &Gpu, key: &str, base: &Scene, config: &Config) -> Result<Vec<Row>, GpuError> {
+    let base_trace = cg_trace::Options { shadows: false, ..cg_trace::Options::default() };
+    let mut none = None;
+    let mut rows = Vec::new();
+    for (name, tweak) in VARIANTS {
+        let mut scene = base.clone();
+        let mut options = base_trace.clone();
+        tweak(&mut scene, &mut options);
+        if !gpu_can_draw(&scene, &options) {
+            continue;
+        }
+        let m = gpu_measure(gpu, &scene, config)?;
+        let reference = none.get_or_insert_with(|| m.image.clone());
+        let nan = f64::NAN;
+        rows.push(Row {
+            key: vec![key.into(), name.into()],
+            values: vec![
+                m.time * 1e3,
+                rms(&m.image, reference, None),
+                nan,
+                nan,
+                nan,
+                nan,
+                m.terms as f64,
+                m.lines as f64,
+            ],
+        });
+    }
+    Ok(rows)
+}
+
+/// The adapter's name up to its first parenthesis (`llvmpipe (LLVM 15.0.7, 256 bits)` →
+/// `llvmpipe`).
+fn short_name(gpu: &Gpu) -> String {
+    let name = gpu.adapter().get_info().name;
+    let short = name.split(" (").next().unwrap_or(&name).trim();
+    if short.is_empty() { "adapter".into() } else { short.to_string() }
+}
+
+/// Runs the experiment: two rows (rasterizer, ray tracer) per variant, and one GPU row per
+/// variant the GPU can draw when an adapter exists.
 ///
 /// # Errors
-/// [`BenchError::Render`] if a renderer refuses the scene.
+/// [`BenchError::Render`] if a CPU renderer refuses the scene. A GPU that is missing or fails
+/// is no error: its rows are left out and [`Experiment::about`] says why.
 pub fn run(config: &Config) -> Result<Experiment, BenchError> {
     let base = base_scene(config.features_size)?;
     let base_trace = cg_trace::Options { shadows: false, ..cg_trace::Options::default() };
@@ -121,6 +236,55 @@ pub fn run(config: &Config) -> Result<Experiment, BenchError> {
             ],
         });
     }
+    for row in &mut rows {
+        row.values.extend([f64::NAN, f64::NAN]);
+    }
+    let gpu = Gpu::new().and_then(|gpu| {
+        let name = short_name(&gpu);
+        let key = format!("GPU ({name})");
+        let gpu_rows = gpu_rows(&gpu, &key, &base, config)?;
+        Ok((gpu.adapter_info(), gpu_rows))
+    });
+    let gpu_text = match gpu {
+        Ok((adapter, gpu_rows)) => {
+            rows.extend(gpu_rows);
+            let on_cpu = adapter.contains("llvmpipe");
+            let cpu_ja = if on_cpu {
+                "lavapipe (llvmpipe) は CPU で動く Vulkan 実装で、すべてのコアを使う。"
+            } else {
+                ""
+            };
+            let cpu_en = if on_cpu {
+                " Lavapipe (llvmpipe) is a Vulkan implementation on the CPU and uses every core."
+            } else {
+                ""
+            };
+            format!(
+                "GPU の行 ({adapter}) は {g}×{g} 画素: 用意したフレーム (`cg_gpu::Frame`) への \
+                 {k} 回の描画と 1 回の待ちの時間を {k} で割ったもので、読み戻しは含まない \
+                 (小さな画像では提出ごとの固定費が時間の大半になるため、CPU の行より大きな画像で\
+                 測る)。RMS は GPU 自身の「なし」の画像との差。GPU のシェーダ (WGSL) は \
+                 `Scene::features` から生成され、使わない項のコードを含まない: `GPU shader terms` \
+                 はシェーダに含まれる項の数 (`cg_gpu::enabled`)、`WGSL lines` はその行数。影と反射は\
+                 レイトレーサだけの機能なので GPU の行はない。{cpu_ja}\n\n\
+                 The GPU rows ({adapter}) are {g} × {g} pixels: the time of {k} draws into a \
+                 prepared frame (`cg_gpu::Frame`) and one wait, divided by {k}, without the \
+                 readback (measured larger than the CPU rows because at small sizes the fixed \
+                 cost of a submission would dominate). Their RMS is against the GPU's own `none` \
+                 image. The GPU's shader (WGSL) is generated from `Scene::features` and has no \
+                 code for unused terms: `GPU shader terms` counts the terms it contains \
+                 (`cg_gpu::enabled`), `WGSL lines` its length. Shadows and reflection are the \
+                 tracer's alone: no GPU rows.{cpu_en}",
+                g = config.features_gpu_size,
+                k = config.gpu_draws.max(1),
+            )
+        }
+        Err(e) => format!(
+            "GPU の行はありません: {}\n\nNo GPU rows: {}",
+            e.message(cg_core::lang::Lang::Ja),
+            e.message(cg_core::lang::Lang::En)
+        ),
+    };
     Ok(Experiment {
         id: "features",
         title: "シーンに必要なものだけ / Only what the scene needs",
@@ -128,7 +292,7 @@ pub fn run(config: &Config) -> Result<Experiment, BenchError> {
             "球と床、点光源 1 つの基本シーンに機能を 1 つずつ加える。係数がごく小さい行 (k_s = 1e-6、\
              k_l = 1e-7、白いテクスチャ、範囲 180° のスポット) は画像がほぼ変わらないのに項を計算する: \
              「なし」の行との時間差が、使わない項を省くことで節約している時間。{s}×{s} 画素、Phong \
-             シェーディング、1 スレッド。\n\n\
+             シェーディング、CPU の描画は 1 スレッド。\n\n\
              A sphere on a ground under one point light, then one feature at a time. The rows \
              with a coefficient too small to see (k_s = 1e-6, k_l = 1e-7, a white texture, a \
              spot light without a cone) compute the term yet leave the image as it was: their \
@@ -136,7 +300,8 @@ pub fn run(config: &Config) -> Result<Experiment, BenchError> {
              skip by `Scene::features`, and count what they evaluate). `RMS vs none` is the \
              image difference from the base scene; the last column is texture samples for the \
              rasterizer and shadow + secondary rays for the tracer (shadows off except in the \
-             `shadows` row). {s} × {s} pixels, Phong shading, one thread.",
+             `shadows` row). {s} × {s} pixels, Phong shading, the CPU renderers on one \
+             thread.\n\n{gpu_text}",
             s = config.features_size
         ),
         keys: vec!["renderer", "feature"],
@@ -147,6 +312,8 @@ pub fn run(config: &Config) -> Result<Experiment, BenchError> {
             Column::value("specular terms"),
             Column::value("attenuations"),
             Column::value("texture samples / rays"),
+            Column::value("GPU shader terms"),
+            Column::value("WGSL lines"),
         ],
         rows,
         series_key: 0,
