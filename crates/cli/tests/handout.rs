@@ -37,6 +37,10 @@ fn the_handout_builds_and_checks_on_its_own_without_solutions() {
             .args(args)
             .current_dir(&dir)
             .env("CARGO_TARGET_DIR", &target)
+            // A one-off build: no debug info and no incremental cache to write (faster, and
+            // what is tested — that the copy builds and checks — does not depend on either).
+            .env("CARGO_PROFILE_DEV_DEBUG", "0")
+            .env("CARGO_INCREMENTAL", "0")
             .output()
             .unwrap()
     };
