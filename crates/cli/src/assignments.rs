@@ -267,7 +267,7 @@ fn view_window(
     };
     cg_viewer::print_keys(lang);
     let backends = cg_viewer::default_backends(None, lang);
-    cg_viewer::run_app(&mut app, backends, &options).map_err(|e| e.to_string())
+    cg_viewer::run_app(&mut app, backends, &options).map_err(|e| e.message(lang))
 }
 
 /// `cg sync-stubs`: regenerates exercises/ from solutions/ (the kit's maintainers only).

@@ -209,7 +209,7 @@ pub fn main_job(lang: Lang) -> Result<(), String> {
             )
         );
         let options = cg_viewer::ViewerOptions { scene: Some(path), lang, ..Default::default() };
-        cg_viewer::run(&options).map_err(|e| e.to_string())?;
+        cg_viewer::run(&options).map_err(|e| e.message(lang))?;
     }
     Ok(())
 }

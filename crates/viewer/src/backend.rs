@@ -470,7 +470,9 @@ impl RendererChoice {
             "auto" => Ok(RendererChoice::Auto),
             "cpu" => Ok(RendererChoice::Cpu),
             "gpu" => Ok(RendererChoice::Gpu),
-            _ => Err(format!("'{s}' is not a renderer: auto, cpu or gpu")),
+            _ => Err(format!(
+                "「{s}」はレンダラではありません（auto, cpu, gpu のどれか） / '{s}' is not a renderer: auto, cpu or gpu"
+            )),
         }
     }
 }
@@ -539,7 +541,8 @@ mod tests {
         assert_eq!(RendererChoice::parse("GPU"), Ok(RendererChoice::Gpu));
         assert_eq!(RendererChoice::parse("cpu"), Ok(RendererChoice::Cpu));
         assert_eq!(RendererChoice::parse("auto"), Ok(RendererChoice::Auto));
-        assert!(RendererChoice::parse("vulkan").unwrap_err().contains("auto, cpu or gpu"));
+        let e = RendererChoice::parse("vulkan").unwrap_err();
+        assert!(e.contains("auto, cpu or gpu") && e.contains("レンダラではありません"), "{e}");
         let cpu = backends_for(RendererChoice::Cpu, Some(1), Lang::En).unwrap();
         assert_eq!(cpu[0].name(), "CPU");
     }

@@ -24,15 +24,19 @@ pub enum LightChoice {
 }
 
 /// The keys of the course app, for the help text: `(key, what it does)`.
-pub const KEYS: &[(&str, &str)] = &[
-    ("right-drag", "pitch (up/down) and yaw (left/right)"),
-    ("left-drag", "distance (up/down)"),
-    ("f / g / p", "flat / Gouraud / Phong shading"),
-    ("l", "lecture / OpenGL light model"),
-    ("r", "next renderer (CPU rasterizer / GPU, when an adapter exists)"),
-    ("space", "pause / resume the animation"),
-    ("s", "save a screenshot (PNG)"),
-    ("q / Esc", "quit"),
+pub const KEYS: &[(&str, &str, &str)] = &[
+    ("right-drag", "上下で仰角、左右で方位角", "pitch (up/down) and yaw (left/right)"),
+    ("left-drag", "上下で距離", "distance (up/down)"),
+    ("f / g / p", "フラット / グロー / フォンシェーディング", "flat / Gouraud / Phong shading"),
+    ("l", "講義の光のモデル / OpenGL の光のモデル", "lecture / OpenGL light model"),
+    (
+        "r",
+        "次のレンダラ（CPU ラスタライザ / GPU、アダプタがあるとき）",
+        "next renderer (CPU rasterizer / GPU, when an adapter exists)",
+    ),
+    ("space", "アニメーションの一時停止 / 再開", "pause / resume the animation"),
+    ("s", "スクリーンショットを保存（PNG）", "save a screenshot (PNG)"),
+    ("q / Esc", "終了", "quit"),
 ];
 
 /// The course's sample program as an [`App`]: the scene, the orbit camera, the mouse state, the
@@ -386,5 +390,16 @@ mod tests {
         let below = orbit_from_eye(Vec3::new(0.0, -5.0, 5.0), Vec3::ZERO);
         assert_eq!(below.pitch_deg, 0.0);
         assert_eq!(orbit_from_eye(Vec3::ZERO, Vec3::ZERO), OrbitCamera::course_sample());
+    }
+
+    #[test]
+    fn every_key_is_explained_in_japanese_and_english() {
+        let japanese = |s: &str| {
+            s.chars().any(|c| matches!(c, '\u{3040}'..='\u{30ff}' | '\u{4e00}'..='\u{9fff}'))
+        };
+        for (key, ja, en) in KEYS {
+            assert!(japanese(ja), "{key}: {ja}");
+            assert!(!en.is_empty() && !japanese(en), "{key}: {en}");
+        }
     }
 }

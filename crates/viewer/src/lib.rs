@@ -97,6 +97,21 @@ pub enum ViewerError {
     Window(String),
 }
 
+impl ViewerError {
+    /// The message in `lang` (the `Display` text is the English one).
+    #[must_use]
+    pub fn message(&self, lang: Lang) -> String {
+        match (lang, self) {
+            (Lang::En, _) | (Lang::Ja, ViewerError::Scene(_)) => self.to_string(),
+            (Lang::Ja, ViewerError::Render(m)) => format!("フレームを描画できません: {m}"),
+            (Lang::Ja, ViewerError::Save { path, message }) => {
+                format!("{} を保存できません: {message}", path.display())
+            }
+            (Lang::Ja, ViewerError::Window(m)) => format!("ウィンドウでエラーが起きました: {m}"),
+        }
+    }
+}
+
 /// How [`run`] runs. `ViewerOptions::default()`: the course's sample scene in a window until it
 /// is closed, PNGs to `out/` when there is no display.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -178,8 +193,8 @@ pub fn run(options: &ViewerOptions) -> Result<(), ViewerError> {
 /// Prints the keys and drags the viewer understands.
 pub fn print_keys(lang: Lang) {
     println!("{}", lang.pick("操作:", "controls:"));
-    for (key, what) in course::KEYS {
-        println!("  {key:<12} {what}");
+    for (key, ja, en) in course::KEYS {
+        println!("  {key:<12} {}", lang.pick(ja, en));
     }
 }
 
@@ -320,7 +335,7 @@ impl Shared {
             return;
         }
         self.current = (self.current + 1) % self.backends.len();
-        println!("renderer: {}", self.backend().name());
+        println!("{} {}", self.options.lang.pick("レンダラ:", "renderer:"), self.backend().name());
     }
 
     pub(crate) fn out_dir(&self) -> PathBuf {
@@ -364,6 +379,18 @@ pub fn save_png(path: &Path, image: &Image) -> Result<(), ViewerError> {
 mod tests {
     use super::*;
     use cg_core::Rgb;
+
+    #[test]
+    fn errors_read_in_both_languages() {
+        let e = ViewerError::Save { path: PathBuf::from("out/a.png"), message: "disk full".into() };
+        assert_eq!(e.message(Lang::En), "cannot save out/a.png: disk full");
+        assert_eq!(e.message(Lang::Ja), "out/a.png を保存できません: disk full");
+        let w = ViewerError::Window("lost".into());
+        assert_ne!(w.message(Lang::Ja), w.message(Lang::En));
+        assert!(w.message(Lang::Ja).contains("lost"));
+        // A scene error already comes in the chosen language.
+        assert_eq!(ViewerError::Scene("x".into()).message(Lang::Ja), "x");
+    }
 
     /// A backend that fills the frame with one colour.
     struct Fill(&'static str, Rgb);

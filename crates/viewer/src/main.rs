@@ -56,12 +56,15 @@ fn parse_shading(s: &str) -> Result<Shading, String> {
         "flat" => Ok(Shading::Flat),
         "gouraud" => Ok(Shading::Gouraud),
         "phong" => Ok(Shading::Phong),
-        _ => Err(format!("'{s}' is not a shading mode: flat, gouraud or phong")),
+        _ => Err(format!(
+            "「{s}」はシェーディングの方式ではありません（flat, gouraud, phong のどれか） / '{s}' is not a shading mode: flat, gouraud or phong"
+        )),
     }
 }
 
 fn main() -> ExitCode {
     let args = Args::parse();
+    let lang = if args.ja { Lang::Ja } else { Lang::En };
     let options = cg_viewer::ViewerOptions {
         scene: args.scene,
         shading: args.shading,
@@ -73,12 +76,12 @@ fn main() -> ExitCode {
         headless: args.headless,
         threads: args.threads.map(usize::from),
         renderer: args.renderer,
-        lang: if args.ja { Lang::Ja } else { Lang::En },
+        lang,
     };
     match cg_viewer::run(&options) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e}");
+            eprintln!("{}: {}", lang.pick("エラー", "error"), e.message(lang));
             ExitCode::FAILURE
         }
     }
