@@ -92,6 +92,7 @@ fn main() -> ExitCode {
         Some(Command::Check(args)) => assignments::check(&args, lang),
         Some(Command::View(args)) => assignments::view(&args, lang).map(|()| true),
         Some(Command::Report(command)) => {
+            cg_report::app::start_watchdog(cg_report::app::TIME_LIMIT, lang);
             cg_report::app::run(&command, &cg_report::app::Kit::exercises(), lang)
         }
         Some(Command::SyncStubs) => assignments::sync_stubs(lang).map(|()| true),

@@ -187,6 +187,9 @@ pub fn run(
     CheckResult { id: id.to_owned(), task: task.to_owned(), title, outcome }
 }
 
+/// The name [`guarded`] runs under (what the [`watchdog`] sees).
+const GUARDED: &str = "guarded";
+
 /// Calls `f` (a student's function, outside any check) and turns a panic into the [`Outcome`] a
 /// check would report: [`Outcome::NotDone`] for a stub, [`Outcome::Panicked`] otherwise.
 ///
@@ -194,7 +197,7 @@ pub fn run(
 /// The outcome when `f` panicked.
 pub fn guarded<T>(f: impl FnOnce() -> T) -> Result<T, Outcome> {
     let mut value = None;
-    let result = run("guarded", "guarded", crate::text::Text::default(), || {
+    let result = run(GUARDED, GUARDED, crate::text::Text::default(), || {
         value = Some(f());
         Ok(())
     });
@@ -204,9 +207,9 @@ pub fn guarded<T>(f: impl FnOnce() -> T) -> Result<T, Outcome> {
     }
 }
 
-/// Starts a thread that ends the process when one check runs longer than `limit` (a student's
-/// loop that never ends), after printing which check it was in `lang`. For the command line;
-/// tests do not use it.
+/// Starts a thread that ends the process (exit code 3) when one check — or one [`guarded`] call
+/// of a student's function — runs longer than `limit` (a student's loop that never ends), after
+/// printing which check it was in `lang`. For the command line; tests do not use it.
 pub fn watchdog(limit: Duration, lang: Lang) {
     std::thread::spawn(move || {
         loop {
@@ -215,16 +218,22 @@ pub fn watchdog(limit: Duration, lang: Lang) {
                 c.as_ref().filter(|(_, since)| since.elapsed() > limit).map(|(id, _)| id.clone())
             });
             if let Some(id) = over {
+                let seconds = limit.as_secs_f64();
                 eprintln!(
                     "{}",
-                    match lang {
-                        Lang::Ja => format!(
-                            "チェック {id} が {} 秒を超えても終わりません。無限ループになっていないか確認してください。",
-                            limit.as_secs()
+                    match (lang, id.as_str()) {
+                        // A student's function called outside a check (`guarded`: the report).
+                        (Lang::Ja, GUARDED) => format!(
+                            "あなたのプログラムが {seconds} 秒を超えても終わりません。無限ループになっていないか確認してください。"
                         ),
-                        Lang::En => format!(
-                            "check {id} has run for more than {} s: does your code loop forever?",
-                            limit.as_secs()
+                        (Lang::En, GUARDED) => format!(
+                            "your code has run for more than {seconds} s without returning: does it loop forever?"
+                        ),
+                        (Lang::Ja, _) => format!(
+                            "チェック {id} が {seconds} 秒を超えても終わりません。無限ループになっていないか確認してください。"
+                        ),
+                        (Lang::En, _) => format!(
+                            "check {id} has run for more than {seconds} s: does your code loop forever?"
                         ),
                     }
                 );

@@ -92,6 +92,16 @@ pub struct CheckArgs {
     pub json: bool,
 }
 
+/// How long one of the student's functions may run while a report command calls it.
+pub const TIME_LIMIT: std::time::Duration = std::time::Duration::from_secs(20);
+
+/// For the command line (`cg report`, `report-checker`): a student's function that never returns
+/// ends the command after `limit` with exit code 3 and a message in `lang`, instead of hanging
+/// (the watchdog of `cg check`). Call once, before [`run`].
+pub fn start_watchdog(limit: std::time::Duration, lang: Lang) {
+    cg_harness::check::watchdog(limit, lang);
+}
+
 /// What the commands need from the program that runs them.
 #[derive(Clone, Copy, Debug)]
 pub struct Kit {

@@ -1,0 +1,88 @@
+//! A student's function that never returns does not hang `cg report`: the watchdog that
+//! `cg report` and `report-checker` start ends the command with exit code 3 and says why, in the
+//! student's language. The test runs itself a second time as the child that hangs.
+
+use std::path::PathBuf;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use cg_core::lang::Lang;
+use cg_report::app::{self, DeriveArgs, Kit, Source};
+use cg_report::derive::Impls;
+
+const CHILD: &str = "CG_REPORT_WATCHDOG_CHILD";
+
+/// The reference solutions, but `a1.t1 vertices()` loops forever.
+fn kit() -> Kit {
+    let mut a1 = cg_solutions::a1::implementation();
+    a1.vertices = |_| loop {
+        std::hint::spin_loop();
+    };
+    let impls = Impls {
+        a1,
+        a2: cg_solutions::a2::implementation(),
+        a3: cg_solutions::a3::implementation(),
+        a4: cg_solutions::a4::implementation(),
+    };
+    Kit { impls, student_file: || PathBuf::from("/nonexistent/student.toml") }
+}
+
+/// In the child: derive the report with the looping function, under a 1-second watchdog.
+#[test]
+fn child_derives_with_a_function_that_never_returns() {
+    let Some(lang) = std::env::var(CHILD).ok() else { return };
+    let lang = if lang == "ja" { Lang::Ja } else { Lang::En };
+    app::start_watchdog(Duration::from_secs(1), lang);
+    let output = std::env::temp_dir().join(format!("cg-report-watchdog-{}", std::process::id()));
+    let command = app::Command::Derive(DeriveArgs {
+        source: Source { student: Some("12345678".into()), table: None, data: None },
+        output,
+        no_render: true,
+    });
+    let _ = app::run(&command, &kit(), lang);
+    // Only reached if the watchdog did not end the process.
+    std::process::exit(0);
+}
+
+fn run_child(lang: &str) -> (Option<i32>, String) {
+    let mut child = Command::new(std::env::current_exe().unwrap())
+        .args(["--exact", "child_derives_with_a_function_that_never_returns", "--nocapture"])
+        .env(CHILD, lang)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let started = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if started.elapsed() > Duration::from_secs(120) {
+            let _ = child.kill();
+            panic!("the child still runs after 120 s: the watchdog did not stop it");
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    };
+    let mut stderr = String::new();
+    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut stderr).unwrap();
+    (status.code(), stderr)
+}
+
+#[test]
+fn a_function_that_never_returns_ends_the_report_command_with_a_message() {
+    if std::env::var_os(CHILD).is_some() {
+        return;
+    }
+    let (code, stderr) = run_child("en");
+    assert_eq!(code, Some(3), "exit code; stderr:\n{stderr}");
+    assert!(
+        stderr.contains("your code has run for more than 1 s without returning"),
+        "stderr:\n{stderr}"
+    );
+    let (code, stderr) = run_child("ja");
+    assert_eq!(code, Some(3), "exit code; stderr:\n{stderr}");
+    assert!(
+        stderr.contains("あなたのプログラムが 1 秒を超えても終わりません"),
+        "stderr:\n{stderr}"
+    );
+}
