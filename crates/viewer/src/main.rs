@@ -46,9 +46,9 @@ struct Args {
     /// Threads for the CPU rasterizer (default: all cores)
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
     threads: Option<u16>,
-    /// Messages in Japanese
-    #[arg(long)]
-    ja: bool,
+    /// Language of messages: ja or en (default: from CG_LANG or LANG) / メッセージの言語
+    #[arg(long, value_name = "ja|en")]
+    lang: Option<Lang>,
 }
 
 fn parse_shading(s: &str) -> Result<Shading, String> {
@@ -64,7 +64,7 @@ fn parse_shading(s: &str) -> Result<Shading, String> {
 
 fn main() -> ExitCode {
     let args = Args::parse();
-    let lang = if args.ja { Lang::Ja } else { Lang::En };
+    let lang = args.lang.unwrap_or_else(Lang::from_env);
     let options = cg_viewer::ViewerOptions {
         scene: args.scene,
         shading: args.shading,

@@ -107,6 +107,7 @@ fn assert_png_is_headless_render_within(
 fn without_a_display_it_renders_a_png_and_says_so() {
     let dir = scratch("nodisplay");
     let out = Command::new(BIN)
+        .env("CG_LANG", "en")
         .env_remove("DISPLAY")
         .env_remove("WAYLAND_DISPLAY")
         .args(["--frames", "3", "--width", "160", "--height", "120", "--out"])
@@ -130,6 +131,7 @@ fn headless_writes_the_screenshot_path_in_the_shading_asked_for() {
     let dir = scratch("headless");
     let shot = dir.join("sub/shot.png");
     let out = Command::new(BIN)
+        .env("CG_LANG", "en")
         .args(["--headless", "--paused", "--shading", "phong", "--width", "96", "--height", "64"])
         .arg("--screenshot")
         .arg(&shot)
@@ -144,11 +146,23 @@ fn headless_writes_the_screenshot_path_in_the_shading_asked_for() {
 
 #[test]
 fn a_missing_scene_file_is_an_error_message_not_a_panic() {
-    let out = Command::new(BIN).args(["--headless", "no/such/scene.toml"]).output().unwrap();
+    let out = Command::new(BIN)
+        .env("CG_LANG", "en")
+        .args(["--headless", "no/such/scene.toml"])
+        .output()
+        .unwrap();
     let all = text(&out);
     assert_eq!(out.status.code(), Some(1), "{all}");
     assert!(all.contains("error:") && all.contains("scene.toml"), "{all}");
     assert!(!all.contains("panicked"), "{all}");
+    // The same in Japanese (`--lang ja`, or CG_LANG=ja).
+    let out = Command::new(BIN)
+        .args(["--headless", "--lang", "ja", "no/such/scene.toml"])
+        .output()
+        .unwrap();
+    let all = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{all}");
+    assert!(all.contains("エラー:") && all.contains("読めません"), "{all}");
 }
 
 /// Whether the window tests can run: xvfb-run and xdotool on PATH. Without them the test is
@@ -183,6 +197,7 @@ fn under_xvfb(script: &str) -> Output {
     Command::new("xvfb-run")
         .args(["-a", "-s", "-screen 0 1024x768x24", "bash", "-c", script])
         .env("BIN", BIN)
+        .env("CG_LANG", "en")
         .env_remove("WAYLAND_DISPLAY")
         .output()
         .unwrap()
