@@ -117,7 +117,6 @@ fn one_large_mesh_with_every_hard_case_in_random_vertex_order() {
     let mut big = Mesh { positions: vec![], faces: vec![], normals: None, uvs: None, colors: None };
     while big.faces.len() < 300_000 {
         let mut part = random_mesh(&mut s);
-        // Keep the non-finite corners rare: one part in ten has one.
         let offset = big.positions.len() as u32;
         big.positions.append(&mut part.positions);
         big.faces.extend(part.faces.iter().map(|f| f.map(|v| v + offset)));

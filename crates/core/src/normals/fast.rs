@@ -75,8 +75,9 @@ pub(super) fn area_vertex_normals(mesh: &Mesh, portable: bool) -> Option<VertexN
     }
     // Two buffers of records: while one thread adds block k to the sums (in face order, as the
     // reference does), the others compute the records of block k + 1 in the other buffer.
+    let block_of = |b: usize| &faces[b * BLOCK..((b + 1) * BLOCK).min(faces.len())];
     let records = |b: usize, out: &mut [Record]| -> bool {
-        let block = &faces[b * BLOCK..((b + 1) * BLOCK).min(faces.len())];
+        let block = block_of(b);
         let out = &mut out[..block.len()];
         if parallel {
             out.par_chunks_mut(TASK).zip(block.par_chunks(TASK)).enumerate().all(
@@ -93,7 +94,7 @@ pub(super) fn area_vertex_normals(mesh: &Mesh, portable: bool) -> Option<VertexN
         return None;
     }
     for b in 0..blocks {
-        let block = &faces[b * BLOCK..((b + 1) * BLOCK).min(faces.len())];
+        let block = block_of(b);
         let add = |sums: &mut [Record]| scatter(block, &current, sums);
         let in_range = if b + 1 < blocks {
             if parallel {
