@@ -2,14 +2,17 @@
 """Area-weighted vertex normals, side by side in one run: the kit's `vertex_normals(mesh,
 Weighting::Area)` against trimesh's `Trimesh.vertex_normals` and Open3D's
 `TriangleMesh.compute_vertex_normals`, on the kit's icosphere at subdivision 7 (327 680 faces)
-and 8 (1 310 720 faces), plus a memory-bandwidth bound from a STREAM-like copy.
+and 8 (1 310 720 faces), plus a memory-bandwidth bound from a STREAM-like copy on all cores,
+and two yardsticks of what any loop that adds face normals to vertices costs on this machine: a
+naive f32 loop on all cores, and the additions alone (no arithmetic).
 
     python3 -m venv .venv && .venv/bin/pip install numpy scipy trimesh open3d
     .venv/bin/python scripts/compare-normals.py [--repeats N]
 
 The meshes come from `cargo run --release -p cg-core --example export_mesh -- export LEVEL DIR`
 (.npy files), the kit's times from `... -- time LEVEL N` (ns, best of N; also the kit on one
-thread, the kit with the kernel of a CPU without FMA, and a naive f32 loop with its error). Notes: trimesh weights
+thread, the kit with the kernel of a CPU without FMA, a naive f32 loop on one thread and on all
+cores with its error, and the additions alone on all cores). Notes: trimesh weights
 its vertex normals by the corner angles, not the areas (its `vertex_normals` is what a user calls);
 Open3D reuses triangle normals it already has, so they are cleared before each call. Both are
 timed best of N like the kit. Writes nothing; prints a table (docs/performance.md).
@@ -70,7 +73,10 @@ def main():
                    "without_fma": float(k["kit_without_fma_ns_best"]),
                    "naive": float(k["naive_f32_ns_best"]),
                    "naive_angle": float(k["naive_f32_max_angle_rad"]),
-                   "copy": float(k["copy_bytes_per_s"])}
+                   "naive_all": float(k["naive_f32_all_cores_ns_best"]),
+                   "additions": float(k["additions_all_cores_ns_best"]),
+                   "copy_one": float(k["copy_bytes_per_s"]),
+                   "copy": float(k["copy_all_cores_bytes_per_s"])}
             if trimesh is not None:
                 row["trimesh"] = best(
                     max(3, args.repeats // 4),
@@ -85,9 +91,9 @@ def main():
                     mesh.vertex_normals = o3d.utility.Vector3dVector()
                     return mesh
                 row["open3d"] = best(args.repeats, clear, lambda m: m.compute_vertex_normals())
-            # Bandwidth bound: per face its 3 indices (12 B) and its record is not needed in a
-            # streaming ideal; per vertex its position (12 B) read and its normal (12 B) written;
-            # V ≈ F/2, so ≈ 24 B per face at the measured copy rate (bytes read + written / s).
+            # Bandwidth bound: per face its 3 indices (12 B); per vertex its position (12 B) read
+            # and its normal (12 B) written; V ≈ F/2, so ≈ 24 B per face, at the copy rate the
+            # kit's threads get together (all cores; bytes read + written per second).
             row["bound"] = (12 * row["faces"] + 24 * row["vertices"]) / row["copy"] * 1e9
             rows.append(row)
     print(f"machine: {os.cpu_count()} CPUs; load average {os.getloadavg()}")
@@ -100,7 +106,9 @@ def main():
         print(f"| {r['faces']} | {ms('kit')} | {ms('reference')} | {ms('trimesh')} | {ms('open3d')} "
               f"| {ms('bound')} | {ratio('reference')} | {ratio('trimesh')} | {ratio('open3d')} "
               f"| {r['kit'] / r['bound']:.2f} |")
-    print(f"copy bandwidth: {rows[0]['copy'] / 1e9:.1f} GB/s (read + written)")
+    for r in rows:
+        print(f"copy bandwidth ({r['faces']} faces run): {r['copy'] / 1e9:.1f} GB/s on all cores, "
+              f"{r['copy_one'] / 1e9:.1f} GB/s on one (read + written)")
     print()
     print("| faces | kit ms (all cores) | kit, one thread | kit without FMA | naive f32 loop, "
           "one thread | naive f32: largest angle from the kit's normals |")
@@ -109,6 +117,15 @@ def main():
         print(f"| {r['faces']} | {r['kit'] / 1e6:.2f} | {r['one_thread'] / 1e6:.2f} "
               f"| {r['without_fma'] / 1e6:.2f} | {r['naive'] / 1e6:.2f} "
               f"| {r['naive_angle']:.1e} rad |")
+    print()
+    print("| faces | bound ms | additions alone, all cores | naive f32 loop, all cores | kit "
+          "| additions/bound | naive/bound | kit/bound |")
+    print("|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        print(f"| {r['faces']} | {r['bound'] / 1e6:.2f} | {r['additions'] / 1e6:.2f} "
+              f"| {r['naive_all'] / 1e6:.2f} | {r['kit'] / 1e6:.2f} "
+              f"| {r['additions'] / r['bound']:.2f} | {r['naive_all'] / r['bound']:.2f} "
+              f"| {r['kit'] / r['bound']:.2f} |")
 
 
 if __name__ == "__main__":

@@ -8,14 +8,17 @@
 //!
 //! `time` prints `name value` lines: the best and median nanoseconds of
 //! [`vertex_normals`]`(mesh, Weighting::Area)`, of the sequential reference kept for tests, and
-//! of a STREAM-like copy of 64 MiB (bytes per second), the memory-bandwidth yardstick; then the
-//! fast path on one thread, the fast path with the kernel of a CPU without FMA, and a naive f32
-//! loop with its largest angle from the kit's normals.
+//! of a STREAM-like copy of 64 MiB on one thread and on all cores (bytes per second), the
+//! memory-bandwidth yardstick; then the fast path on one thread, the fast path with the kernel of
+//! a CPU without FMA, a naive f32 loop on one thread and on all cores with their largest angle
+//! from the kit's normals, and the additions alone (three random 16-byte read-modify-writes per
+//! face, no arithmetic, on all cores), the least any loop that adds face normals to vertices
+//! does.
 
 use std::io::Write;
 use std::time::Instant;
 
-use cg_core::glam::Vec3;
+use cg_core::glam::{Vec3, Vec4};
 use cg_core::mesh::Mesh;
 use cg_core::normals::{
     Weighting, area_vertex_normals_without_fma, vertex_normals, vertex_normals_reference,
@@ -69,6 +72,61 @@ fn naive_f32(mesh: &Mesh) -> Vec<Vec3> {
         }
     }
     sums.into_iter().map(Vec3::normalize_or_zero).collect()
+}
+
+/// The naive loop on every core: each task adds its share of the faces to its own sums (f32,
+/// 16 bytes per vertex, allocated per call as a user's loop would), then the sums are merged and
+/// normalised in parallel. No care for degenerate, cancelling or non-finite faces.
+fn naive_f32_all_cores(mesh: &Mesh) -> Vec<Vec3> {
+    use rayon::prelude::*;
+    let n = mesh.positions.len();
+    let share = mesh.faces.len().div_ceil(rayon::current_num_threads()).max(1);
+    let sums: Vec<Vec<Vec4>> = mesh
+        .faces
+        .par_chunks(share)
+        .map(|faces| {
+            let mut sums = vec![Vec4::ZERO; n];
+            for &[a, b, c] in faces {
+                let p = |i: u32| mesh.positions[i as usize];
+                let normal = (p(b) - p(a)).cross(p(c) - p(a)).extend(0.0);
+                for v in [a, b, c] {
+                    sums[v as usize] += normal;
+                }
+            }
+            sums
+        })
+        .collect();
+    (0..n)
+        .into_par_iter()
+        .map(|v| sums.iter().map(|s| s[v]).sum::<Vec4>().truncate().normalize_or_zero())
+        .collect()
+}
+
+/// The additions alone, on every core: each task adds a constant to the sums (its own, zeroed
+/// beforehand) of the three corners of each of its faces. No loop that adds face normals to
+/// vertices does less.
+fn additions_all_cores(faces: &[[u32; 3]], sums: &mut [Vec<Vec4>]) {
+    use rayon::prelude::*;
+    let share = faces.len().div_ceil(sums.len()).max(1);
+    faces.par_chunks(share).zip(sums.par_iter_mut()).for_each(|(faces, sums)| {
+        for &[a, b, c] in faces {
+            for v in [a, b, c] {
+                sums[v as usize] += Vec4::ONE;
+            }
+        }
+    });
+}
+
+/// The largest angle (radians, f64, as atan2(|a×b|, a·b): accurate for tiny angles, unlike the
+/// arc cosine of an f32 dot product) between corresponding normals.
+fn largest_angle(a: &[Vec3], b: &[Vec3]) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(a, b)| {
+            let (a, b) = (a.as_dvec3(), b.as_dvec3());
+            a.cross(b).length().atan2(a.dot(b))
+        })
+        .fold(0.0f64, f64::max)
 }
 
 fn main() {
@@ -132,16 +190,32 @@ fn main() {
             println!("kit_without_fma_ns_best {best:.0}");
             // What a first attempt looks like: f32 throughout, no degenerate or cancelling faces
             // handled, one thread. Its largest angle from the kit's normals shows what it costs.
-            let naive = naive_f32(&mesh);
-            let worst = naive
-                .iter()
-                .zip(&fast.normals)
-                .map(|(a, b)| f64::from(a.dot(*b).clamp(-1.0, 1.0)).acos())
-                .fold(0.0f64, f64::max);
+            let worst = largest_angle(&naive_f32(&mesh), &fast.normals);
             let (best, _) = time(repeats, || {
                 std::hint::black_box(naive_f32(std::hint::black_box(&mesh)));
             });
             println!("naive_f32_ns_best {best:.0}\nnaive_f32_max_angle_rad {worst:e}");
+            let worst = largest_angle(&naive_f32_all_cores(&mesh), &fast.normals);
+            let (best, _) = time(repeats, || {
+                std::hint::black_box(naive_f32_all_cores(std::hint::black_box(&mesh)));
+            });
+            println!(
+                "naive_f32_all_cores_ns_best {best:.0}\nnaive_f32_all_cores_max_angle_rad {worst:e}"
+            );
+            let mut sums =
+                vec![vec![Vec4::ZERO; mesh.positions.len()]; rayon::current_num_threads()];
+            let best = (0..repeats.max(1))
+                .map(|_| {
+                    for s in &mut sums {
+                        s.fill(Vec4::ZERO);
+                    }
+                    let t = Instant::now();
+                    additions_all_cores(&mesh.faces, &mut sums);
+                    std::hint::black_box(&mut sums);
+                    t.elapsed().as_nanos() as f64
+                })
+                .fold(f64::INFINITY, f64::min);
+            println!("additions_all_cores_ns_best {best:.0}");
             // STREAM-like copy: 64 MiB read and 64 MiB written, far beyond the caches.
             let src = vec![1.0f64; 8 << 20];
             let mut dst = vec![0.0f64; 8 << 20];
@@ -151,6 +225,16 @@ fn main() {
             });
             let bytes = 2.0 * (src.len() * 8) as f64;
             println!("copy_bytes_per_s {:.0}", bytes / (best * 1e-9));
+            // The same copy split over every core (what the kit's threads can draw on together).
+            let (best, _) = time(repeats.max(5), || {
+                use rayon::prelude::*;
+                let share = src.len().div_ceil(rayon::current_num_threads());
+                dst.par_chunks_mut(share)
+                    .zip(src.par_chunks(share))
+                    .for_each(|(d, s)| d.copy_from_slice(std::hint::black_box(s)));
+                std::hint::black_box(&mut dst);
+            });
+            println!("copy_all_cores_bytes_per_s {:.0}", bytes / (best * 1e-9));
         }
         "profile" => {
             // Only the fast path, for a profiler.
