@@ -29,7 +29,7 @@ struct Args {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args: Args = cg_harness::args::parse();
     let lang = args.lang.unwrap_or_else(Lang::from_env);
     let file = cg_harness::kit_path(None, "exercises").join("student.toml");
     let record = match cg_assign::resolve_student(args.student.as_deref(), None, &file, lang) {

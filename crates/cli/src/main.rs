@@ -83,7 +83,7 @@ fn quiet_on_closed_pipe() {
 
 fn main() -> ExitCode {
     quiet_on_closed_pipe();
-    let cli = Cli::parse();
+    let cli: Cli = cg_harness::args::parse();
     let lang = cli.lang.unwrap_or_else(Lang::from_env);
     let result = match cli.command {
         Some(Command::Inspect(args)) => inspect::run(&args, lang).map(|()| true),

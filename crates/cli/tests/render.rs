@@ -161,6 +161,20 @@ fn mistakes_are_clear_errors() {
     let o = cg_in(&root(), &["render", "no/such.toml", "--lang", "ja"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.starts_with("エラー") && err.contains("no/such.toml"), "{err}");
+    // The argument parser's own mistakes, in Japanese too (language from --lang or CG_LANG),
+    // with clap's exit code; English stays clap's text.
+    let o = cg_in(&root(), &["render", "--widht", "8", "--lang", "ja"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.starts_with("エラー: '--widht' という引数はありません"), "{err}");
+    assert!(err.contains("似た引数があります: '--width'"), "{err}");
+    let o = cg_in(&root(), &["render", "--renderer", "opengl", "--lang=ja"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("に値 'opengl' は使えません") && err.contains("使える値:"), "{err}");
+    let o = cg_in(&root(), &["render", "--width", "0", "--lang", "en"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.starts_with("error: invalid value '0' for '--width <WIDTH>'"), "{err}");
 }
 
 #[test]

@@ -15,6 +15,7 @@
 //! Task IDs (`a1.t2`) name a task everywhere: the stub, its checks (`a1.t2.closed`), the
 //! assignment text, the report section and the grade file.
 
+pub mod args;
 pub mod check;
 pub mod course;
 pub mod stubs;

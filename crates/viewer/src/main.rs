@@ -63,7 +63,7 @@ fn parse_shading(s: &str) -> Result<Shading, String> {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args: Args = cg_harness::args::parse();
     let lang = args.lang.unwrap_or_else(Lang::from_env);
     let options = cg_viewer::ViewerOptions {
         scene: args.scene,

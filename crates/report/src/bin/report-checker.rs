@@ -21,7 +21,7 @@ struct Cli {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli: Cli = cg_harness::args::parse();
     let lang = cli.lang.unwrap_or_else(Lang::from_env);
     cg_report::app::start_watchdog(cg_report::app::TIME_LIMIT, lang);
     match cg_report::app::run(&cli.command, &cg_report::app::Kit::exercises(), lang) {

@@ -1,0 +1,267 @@
+//! The command line of every kit program, with clap's own mistakes explained in Japanese too.
+//!
+//! clap writes its errors (an unknown option, a bad value, a missing argument) in English only.
+//! [`parse`] is `P::parse()` for the kit's programs: when the user's language is Japanese
+//! (`--lang ja` on the same command line, else `CG_LANG` / `LANG`), the error is written in
+//! Japanese — what is wrong, clap's hint if it has one, the usage line and where to read more —
+//! with the exit code clap would give. Help and version output are clap's (the kit's help texts
+//! are bilingual already).
+//!
+//! コマンドラインの誤り (知らないオプション・値の誤り・引数の不足) を、利用者の言語が日本語なら
+//! 日本語で説明します。
+
+use std::ffi::OsString;
+use std::fmt::Write as _;
+
+use cg_core::lang::Lang;
+use clap::error::{ContextKind, ContextValue, ErrorKind};
+
+/// Parses this process's command line into `P`, or explains the mistake in the user's language
+/// and exits with clap's exit code (2 for a usage error, 0 for `--help` and `--version`).
+#[must_use]
+pub fn parse<P: clap::Parser>() -> P {
+    parse_from(std::env::args_os())
+}
+
+/// [`parse`] on the given arguments (the first is the program's name).
+#[must_use]
+pub fn parse_from<P, I, T>(args: I) -> P
+where
+    P: clap::Parser,
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
+    match P::try_parse_from(&args) {
+        Ok(parsed) => parsed,
+        Err(error) => {
+            let lang = lang_in(&args).unwrap_or_else(Lang::from_env);
+            match explain(&error, lang) {
+                Some(text) => {
+                    eprint!("{text}");
+                    std::process::exit(error.exit_code());
+                }
+                None => error.exit(),
+            }
+        }
+    }
+}
+
+/// The language the command line asks for with `--lang ja|en` or `--lang=ja|en`, if it does.
+fn lang_in(args: &[OsString]) -> Option<Lang> {
+    let args: Vec<&str> = args.iter().filter_map(|a| a.to_str()).collect();
+    args.iter().enumerate().rev().find_map(|(i, a)| match a.strip_prefix("--lang") {
+        Some("") => args.get(i + 1)?.parse().ok(),
+        Some(value) => value.strip_prefix('=')?.parse().ok(),
+        None => None,
+    })
+}
+
+/// The text to print for `error` in `lang`, or `None` where clap's own output is the right one:
+/// English, help, version.
+#[must_use]
+pub fn explain(error: &clap::Error, lang: Lang) -> Option<String> {
+    if lang == Lang::En
+        || matches!(
+            error.kind(),
+            ErrorKind::DisplayHelp
+                | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+                | ErrorKind::DisplayVersion
+        )
+    {
+        return None;
+    }
+    let get = |kind| error.get(kind).map(text).filter(|s| !s.is_empty());
+    let arg = get(ContextKind::InvalidArg).unwrap_or_default();
+    let value = get(ContextKind::InvalidValue).unwrap_or_default();
+    let what = match error.kind() {
+        ErrorKind::InvalidValue if value.is_empty() => format!("'{arg}' に値がありません"),
+        ErrorKind::InvalidValue => format!("'{arg}' に値 '{value}' は使えません"),
+        ErrorKind::UnknownArgument => format!("'{arg}' という引数はありません"),
+        ErrorKind::InvalidSubcommand => {
+            let name = get(ContextKind::InvalidSubcommand).unwrap_or_default();
+            format!("'{name}' というコマンドはありません")
+        }
+        ErrorKind::NoEquals => format!("'{arg}' の値は '=' でつないでください"),
+        ErrorKind::ValueValidation => {
+            let why = std::error::Error::source(error).map(ToString::to_string);
+            let why = why.map(|w| format!(": {w}")).unwrap_or_default();
+            format!("'{arg}' の値 '{value}' が正しくありません{why}")
+        }
+        ErrorKind::TooManyValues => format!("'{arg}' に値 '{value}' は多すぎます"),
+        ErrorKind::TooFewValues => format!(
+            "'{arg}' には値が {} 個以上必要ですが、{} 個しかありません",
+            get(ContextKind::MinValues).unwrap_or_default(),
+            get(ContextKind::ActualNumValues).unwrap_or_default()
+        ),
+        ErrorKind::WrongNumberOfValues => format!(
+            "'{arg}' には値が {} 個必要ですが、{} 個あります",
+            get(ContextKind::ExpectedNumValues).unwrap_or_default(),
+            get(ContextKind::ActualNumValues).unwrap_or_default()
+        ),
+        ErrorKind::ArgumentConflict => match get(ContextKind::PriorArg) {
+            Some(prior) => format!("'{arg}' と '{prior}' は一緒には使えません"),
+            None => format!("'{arg}' は 1 回しか指定できません"),
+        },
+        ErrorKind::MissingRequiredArgument => format!("必要な引数が指定されていません: {arg}"),
+        ErrorKind::MissingSubcommand => {
+            let name = get(ContextKind::InvalidSubcommand).unwrap_or_default();
+            format!("'{name}' の後にコマンドを指定してください")
+        }
+        ErrorKind::InvalidUtf8 => "引数に UTF-8 として読めない文字が含まれています".to_owned(),
+        // Any other kind (clap adds kinds over time): say so, and keep clap's own words.
+        _ => format!(
+            "コマンドラインが正しくありません ({})",
+            first_line(&error.render().to_string()).trim_start_matches("error: ")
+        ),
+    };
+    let mut out = format!("エラー: {what}\n");
+    let mut tips = Vec::new();
+    if let Some(s) = get(ContextKind::SuggestedSubcommand) {
+        tips.push(format!("似たコマンドがあります: '{s}'"));
+    }
+    if let Some(s) = get(ContextKind::SuggestedArg) {
+        tips.push(format!("似た引数があります: '{s}'"));
+    }
+    if let Some(s) = get(ContextKind::SuggestedValue) {
+        tips.push(format!("似た値があります: '{s}'"));
+    }
+    if let Some(s) = get(ContextKind::TrailingArg) {
+        tips.push(format!("'{s}' を値として渡すには '-- {s}' としてください"));
+    }
+    if let Some(s) = get(ContextKind::ValidValue) {
+        tips.push(format!("使える値: {s}"));
+    }
+    if let Some(s) = get(ContextKind::ValidSubcommand) {
+        tips.push(format!("使えるコマンド: {s}"));
+    }
+    if !tips.is_empty() {
+        out.push('\n');
+        for tip in tips {
+            let _ = writeln!(out, "  ヒント: {tip}");
+        }
+    }
+    if let Some(usage) = get(ContextKind::Usage) {
+        let usage = usage.trim();
+        let usage = usage.strip_prefix("Usage:").map_or(usage, str::trim_start);
+        let _ = write!(out, "\n使い方: {usage}\n");
+    }
+    out.push_str("\n詳しくは '--help' を付けて実行してください。\n");
+    Some(out)
+}
+
+/// A context value as plain text: lists joined with ", ", styled text without its styles.
+fn text(value: &ContextValue) -> String {
+    match value {
+        ContextValue::String(s) => s.clone(),
+        ContextValue::Strings(list) => list.join(", "),
+        ContextValue::StyledStr(s) => s.to_string(),
+        ContextValue::StyledStrs(list) => {
+            list.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")
+        }
+        ContextValue::Number(n) => n.to_string(),
+        ContextValue::Bool(b) => b.to_string(),
+        _ => String::new(),
+    }
+}
+
+fn first_line(s: &str) -> &str {
+    s.lines().next().unwrap_or("")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::{Parser, Subcommand, ValueEnum};
+
+    #[derive(Parser, Debug)]
+    #[command(name = "demo")]
+    struct Demo {
+        #[arg(long)]
+        lang: Option<String>,
+        #[arg(long, value_enum)]
+        shading: Option<Shading>,
+        #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
+        samples: Option<u16>,
+        #[arg(long, conflicts_with = "samples")]
+        exact: bool,
+        #[command(subcommand)]
+        command: Option<Command>,
+    }
+
+    #[derive(Subcommand, Debug)]
+    enum Command {
+        Check {
+            #[arg(long)]
+            student: String,
+        },
+    }
+
+    #[derive(Clone, Debug, ValueEnum)]
+    enum Shading {
+        Flat,
+        Gouraud,
+        Phong,
+    }
+
+    /// The Japanese text for `args`' mistake (the parse must fail).
+    fn ja(args: &[&str]) -> String {
+        let error = Demo::try_parse_from(args).expect_err("the command line is wrong");
+        explain(&error, Lang::Ja).expect("a Japanese explanation")
+    }
+
+    #[test]
+    fn an_unknown_option_is_named_with_clap_s_suggestion_and_the_usage() {
+        let text = ja(&["demo", "--shadng", "flat"]);
+        assert!(text.starts_with("エラー: '--shadng' という引数はありません\n"), "{text}");
+        assert!(text.contains("ヒント: 似た引数があります: '--shading'"), "{text}");
+        assert!(text.contains("\n使い方: demo "), "{text}");
+        assert!(text.ends_with("詳しくは '--help' を付けて実行してください。\n"), "{text}");
+    }
+
+    #[test]
+    fn a_bad_choice_lists_the_values_that_work() {
+        let text = ja(&["demo", "--shading", "phon"]);
+        assert!(text.contains("'--shading <SHADING>' に値 'phon' は使えません"), "{text}");
+        assert!(text.contains("使える値: flat, gouraud, phong"), "{text}");
+        assert!(text.contains("似た値があります: 'phong'"), "{text}");
+    }
+
+    #[test]
+    fn a_value_out_of_range_keeps_the_reason() {
+        let text = ja(&["demo", "--samples", "1000"]);
+        assert!(text.contains("'--samples <SAMPLES>' の値 '1000' が正しくありません: "), "{text}");
+        assert!(text.contains("1..=256"), "{text}");
+    }
+
+    #[test]
+    fn conflicts_missing_arguments_and_commands() {
+        let text = ja(&["demo", "--samples", "4", "--exact"]);
+        assert!(text.contains("は一緒には使えません"), "{text}");
+        let text = ja(&["demo", "check"]);
+        assert!(text.contains("必要な引数が指定されていません: --student <STUDENT>"), "{text}");
+        let text = ja(&["demo", "chek"]);
+        assert!(text.contains("'chek' というコマンドはありません"), "{text}");
+        assert!(text.contains("似たコマンドがあります: 'check'"), "{text}");
+        let text = ja(&["demo", "--shading"]);
+        assert!(text.contains("'--shading <SHADING>' に値がありません"), "{text}");
+    }
+
+    #[test]
+    fn english_help_and_version_stay_clap_s() {
+        let error = Demo::try_parse_from(["demo", "--bogus"]).unwrap_err();
+        assert_eq!(explain(&error, Lang::En), None);
+        let help = Demo::try_parse_from(["demo", "--help"]).unwrap_err();
+        assert_eq!(explain(&help, Lang::Ja), None);
+    }
+
+    #[test]
+    fn the_language_comes_from_the_command_line_when_it_is_there() {
+        let args = |a: &[&str]| a.iter().map(OsString::from).collect::<Vec<_>>();
+        assert_eq!(lang_in(&args(&["cg", "--lang", "ja", "--bogus"])), Some(Lang::Ja));
+        assert_eq!(lang_in(&args(&["cg", "--bogus", "--lang=en"])), Some(Lang::En));
+        assert_eq!(lang_in(&args(&["cg", "--lang", "fr"])), None);
+        assert_eq!(lang_in(&args(&["cg", "--lang"])), None);
+        assert_eq!(lang_in(&args(&["cg", "check"])), None);
+    }
+}
