@@ -63,6 +63,12 @@ fn a_filled_report_reads_back_and_every_number_follows_from_the_data() {
             let (text, derived) = filled(student, lang);
             let (parsed, problems) = parse::parse_report(&text);
             assert!(problems.is_empty(), "{student} {lang}: {problems:?}");
+            // a4.t3: the solution's sampler, clamped both ways (the figure's line, not parsed).
+            let wrap = lang.pick(
+                "折り返し: s 方向 GL_CLAMP_TO_EDGE (Wrap::Clamp)、t 方向 GL_CLAMP_TO_EDGE",
+                "Wrap: GL_CLAMP_TO_EDGE (Wrap::Clamp) along s, GL_CLAMP_TO_EDGE",
+            );
+            assert!(text.contains(wrap), "{student} {lang}: no sampler line");
             let p = derived.polygon.as_ref().unwrap();
             assert_eq!(parsed.vertices.len(), p.vertices.len(), "{student}: every vertex row read");
             assert_eq!(parsed.faces.len(), p.faces.len(), "{student}: every face row read");

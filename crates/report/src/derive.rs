@@ -1450,14 +1450,30 @@ fn texture_part(spec: &cg_a4::Spec, imp: &cg_a4::Impl) -> Part<TextureData> {
             }
         }
     }
+    // a4.t3 is reported on its own: without it the coordinates and the figure still derive.
+    let mut missing = Vec::new();
+    let sampler = guarded(|| (imp.sampler)())
+        .map_err(|o| missing.push(Missing::from_outcome("a4.t3", "sampler()", o)))
+        .ok();
+    let image = cg_a4::prepared_image();
+    let square = coords[0][0];
+    let spread = |axis: fn(Vec2) -> f32| {
+        let values = square.map(axis);
+        values.iter().copied().fold(f32::MIN, f32::max)
+            - values.iter().copied().fold(f32::MAX, f32::min)
+    };
+    let texels_per_square =
+        Vec2::new(spread(|v| v.x) * image.width as f32, spread(|v| v.y) * image.height as f32);
     (
         Ok(TextureData {
             rows: texture_rows(&coords),
             formula: texture_formula(spec),
             region: (Vec2::new(range.s_min, range.t_min), Vec2::new(range.s_max, range.t_max)),
-            image: cg_a4::prepared_image(),
+            image,
+            sampler,
+            texels_per_square,
         }),
-        Vec::new(),
+        missing,
     )
 }
 
@@ -1751,6 +1767,30 @@ mod tests {
     #[allow(clippy::todo)]
     fn coords_todo(_: &cg_a4::Spec, _: u32, _: u32) -> [Vec2; 4] {
         todo!("a4.t2: the texture coordinates")
+    }
+
+    #[allow(clippy::todo)]
+    fn sampler_todo() -> cg_core::texture::Sampler {
+        todo!("a4.t3: the sampler")
+    }
+
+    #[test]
+    fn the_sampler_and_the_pixels_per_square_derive_and_a_missing_sampler_is_named() {
+        // by_vertex gives square (0, 0) the corners (0, 0)…(1, 1): one unit of s and t, times the
+        // prepared image's size.
+        let imp = cg_a4::Impl { tex_range: range_quarter, tex_coords: by_vertex, sampler };
+        let (t, missing) = texture_part(&a4_spec(), &imp);
+        let t = t.unwrap();
+        assert!(missing.is_empty(), "{missing:?}");
+        assert_eq!(t.sampler, Some(cg_core::texture::Sampler::default()));
+        let image = cg_a4::prepared_image();
+        assert_eq!(t.texels_per_square, Vec2::new(image.width as f32, image.height as f32));
+        // Without a4.t3 the coordinates still derive; the sampler is named as missing.
+        let imp = cg_a4::Impl { sampler: sampler_todo, ..imp };
+        let (t, missing) = texture_part(&a4_spec(), &imp);
+        assert_eq!(t.unwrap().sampler, None);
+        assert_eq!(missing.iter().map(|m| m.task.as_str()).collect::<Vec<_>>(), ["a4.t3"]);
+        assert!(missing[0].message(Lang::En).contains("sampler()"), "{:?}", missing[0]);
     }
 
     #[test]

@@ -199,6 +199,11 @@ pub fn values(
             put("a4.formula", tables::formula(t, lang, format));
             put("a4.table", tables::tex_table(t, lang, format));
             put(
+                "a4.sampler",
+                tables::sampler(t, lang, format)
+                    .unwrap_or_else(|| missing_text(ctx, "a4.t3", lang, format)),
+            );
+            put(
                 "a4.figure",
                 match format {
                     Format::Markdown => format!(
@@ -211,7 +216,7 @@ pub fn values(
             );
         }
         None => {
-            for k in ["a4.formula", "a4.table", "a4.figure"] {
+            for k in ["a4.formula", "a4.table", "a4.figure", "a4.sampler"] {
                 put(k, missing_text(ctx, "a4", lang, format));
             }
         }

@@ -3,7 +3,7 @@
 
 use cg_core::glam::{Vec2, Vec3};
 use cg_core::product::MatrixProduct;
-use cg_core::texture::Texture;
+use cg_core::texture::{Sampler, Texture};
 use cg_harness::Text;
 
 /// A number as a student wrote it: its value and how many decimals it has, so the checker can
@@ -92,6 +92,12 @@ pub struct TextureData {
     pub region: (Vec2, Vec2),
     /// The prepared image.
     pub image: Texture,
+    /// The student's sampler (a4.t3): filter and wrap modes; `None` when `sampler()` is not
+    /// written or panics (the rest of the part still derives).
+    pub sampler: Option<Sampler>,
+    /// How many pixels of the image one ground square shows, along s and along t (square
+    /// (0, 0): the spread of its corners' coordinates times the image's size).
+    pub texels_per_square: Vec2,
 }
 
 /// Everything derived for one report.

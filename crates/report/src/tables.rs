@@ -14,6 +14,7 @@
 use cg_core::glam::{Mat4, Vec2, Vec3};
 use cg_core::lang::Lang;
 use cg_core::product::{MatrixProduct, format_number};
+use cg_core::texture::{Filter, Wrap};
 use cg_harness::Text;
 
 use crate::model::{NamedMatrix, PolygonData, TextureData};
@@ -466,10 +467,39 @@ pub fn formula(t: &TextureData, lang: Lang, format: Format) -> String {
     }
 }
 
+/// The student's sampler (a4.t3) with the OpenGL names, and how many pixels of the image one
+/// ground square shows (for the choice of filter); `None` when a4.t3 did not derive.
+#[must_use]
+pub fn sampler(t: &TextureData, lang: Lang, format: Format) -> Option<String> {
+    let s = t.sampler?;
+    let filter = match s.filter {
+        Filter::Nearest => "GL_NEAREST (Filter::Nearest)",
+        Filter::Bilinear => "GL_LINEAR (Filter::Bilinear)",
+    };
+    let wrap = |w: Wrap| match w {
+        Wrap::Repeat => "GL_REPEAT (Wrap::Repeat)",
+        Wrap::Clamp => "GL_CLAMP_TO_EDGE (Wrap::Clamp)",
+    };
+    let (u, v) = (wrap(s.wrap_u), wrap(s.wrap_v));
+    let (x, y) = (format_number(t.texels_per_square.x), format_number(t.texels_per_square.y));
+    let text = match lang {
+        Lang::Ja => format!(
+            "フィルタ: {filter}。折り返し: s 方向 {u}、t 方向 {v}。地面の四角形 1 つに画像の {x} × {y} 画素が貼られる。"
+        ),
+        Lang::En => format!(
+            "Filter: {filter}. Wrap: {u} along s, {v} along t. One ground square shows {x} × {y} pixels of the image."
+        ),
+    };
+    Some(match format {
+        Format::Markdown => format!("{text}\n"),
+        Format::Latex => format!("{}\n", tex_text(&text)),
+    })
+}
+
 #[cfg(test)]
 pub(crate) mod tests {
     use cg_core::product::{Axis, Factor, Param};
-    use cg_core::texture::Texture;
+    use cg_core::texture::{Sampler, Texture};
 
     use super::*;
     use crate::derive::polygon_from_data;
@@ -797,7 +827,30 @@ pub(crate) mod tests {
             region: (Vec2::new(0.25, 0.5), Vec2::new(0.75, 1.0)),
             image: Texture::new(200, 100, vec![[255, 255, 255, 255]; 200 * 100])
                 .expect("a valid texture"),
+            sampler: Some(Sampler {
+                filter: Filter::Nearest,
+                wrap_u: Wrap::Clamp,
+                wrap_v: Wrap::Repeat,
+            }),
+            texels_per_square: Vec2::new(10.0, 5.0),
         }
+    }
+
+    #[test]
+    fn the_sampler_line_names_the_opengl_modes_and_the_pixels_per_square() {
+        let mut t = texture_data();
+        let en = sampler(&t, Lang::En, Format::Markdown).unwrap();
+        assert_eq!(
+            en,
+            "Filter: GL_NEAREST (Filter::Nearest). Wrap: GL_CLAMP_TO_EDGE (Wrap::Clamp) along s, \
+             GL_REPEAT (Wrap::Repeat) along t. One ground square shows 10 × 5 pixels of \
+             the image.\n"
+        );
+        let ja = sampler(&t, Lang::Ja, Format::Latex).unwrap();
+        assert!(ja.contains("s 方向 GL\\_CLAMP\\_TO\\_EDGE"), "{ja}");
+        assert!(ja.contains("10 × 5 画素"), "{ja}");
+        t.sampler = None;
+        assert_eq!(sampler(&t, Lang::En, Format::Markdown), None);
     }
 
     #[test]

@@ -901,6 +901,8 @@ mod tests {
                 formula: Text::default(),
                 region: (Vec2::ZERO, Vec2::ONE),
                 image: Texture::new(1, 1, vec![[255; 4]]).unwrap(),
+                sampler: None,
+                texels_per_square: Vec2::ZERO,
             }),
         }
     }
