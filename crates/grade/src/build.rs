@@ -8,6 +8,7 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
+use crate::result::tail;
 use crate::submission::MODULES;
 
 /// How a build ended.
@@ -71,17 +72,6 @@ pub fn parse_messages(stdout: &str) -> (BTreeMap<String, Vec<String>>, Vec<Strin
         }
     }
     (by_module, other)
-}
-
-fn tail(text: &str, max: usize) -> String {
-    if text.len() <= max {
-        return text.to_owned();
-    }
-    let mut start = text.len() - max;
-    while !text.is_char_boundary(start) {
-        start += 1;
-    }
-    format!("…{}", &text[start..])
 }
 
 /// Runs `cargo build --release --offline --locked -p <package> --message-format=json` in `kit`
