@@ -14,10 +14,11 @@
 //! サンプルプログラムのうち変更する 3 か所を書きます。確かめ方: `cargo run --release -- check a2`、
 //! 絵で見る: `cargo run --release -- view a2`。
 
-use cg_a2::{CameraState, Drag, Gl, Spec};
+use cg_student::a2::{CameraState, Drag, Spec};
+use cg_student::gl::Gl;
 // What your code will need: buttons and directions (a2.t1), the light and the objects (a2.t3).
 #[allow(unused_imports)]
-use cg_a2::{DragAxis, LIGHT0_POSITION, MouseButton, draw_course_objects};
+use cg_student::a2::{DragAxis, LIGHT0_POSITION, MouseButton, draw_course_objects};
 
 /// **a2.t1** — GLUT's `motion()`: changes the camera variables in `state` for one `drag`, as
 /// your spec says.
@@ -60,7 +61,8 @@ pub fn motion(spec: &Spec, state: &mut CameraState, drag: &Drag) {
 /// Hint: the sample has `glTranslatef(0, 0, -camera_distance)` then
 /// `glRotatef(-camera_pitch, 1, 0, 0)`. The yaw turns about Y; the target's translation moves the
 /// target to the origin. Which factor comes first? The call made last acts on the vertices
-/// first. Your report writes exactly this product (`cg_a2::camera_product` prints it).
+/// first. Your report writes exactly this product (the kit prints it into your report:
+/// `{{a2.matrices}}`).
 ///
 /// **a2.t2** — 視点の変換: `gl.translate`（glTranslatef）と `gl.rotate`（glRotatef、角度は度）で、
 /// 現在の行列に視点の変換を掛けます（`gl.load_identity()` は display で呼ぶのでここでは呼ばない）。
@@ -91,6 +93,6 @@ pub fn display(gl: &mut Gl, state: &CameraState) {
 
 /// The functions of this module, for the checks and the view.
 #[must_use]
-pub fn implementation() -> cg_a2::Impl {
-    cg_a2::Impl { motion, camera, display }
+pub fn implementation() -> cg_student::a2::Impl {
+    cg_student::a2::Impl { motion, camera, display }
 }

@@ -20,22 +20,20 @@
 //! Param::sym("theta_1", theta1)))` does what `gl.rotate(theta1, 0.0, 1.0, 0.0)` does and prints
 //! as `Ry(theta_1)`.
 
-use cg_a3::{Spec, State};
-use cg_core::gl::Gl;
+use cg_student::a3::{Spec, State};
+use cg_student::gl::Gl;
 
 // You will need some of these; remove `allow` once you use them.
 #[allow(unused_imports)]
-use cg_a3::{Motion, Object, WorldAxis};
+use cg_student::a3::{Motion, Object, WorldAxis, warmup_box};
 #[allow(unused_imports)]
-use cg_core::glam::Vec3;
-#[allow(unused_imports)]
-use cg_core::product::{Axis, Factor, Param};
+use cg_student::product::{Axis, Factor, Param};
 
 /// **a3.t0 — 演習課題 (warm-up)**: draws the three boxes at time `t` seconds.
 ///
 /// When this is called, the camera (`T(0, 0, -15) · Rx(30°)`) and the light are already set. Draw
 /// three boxes 1.2 × 0.6 × 0.6, named `"box 1"`, `"box 2"`, `"box 3"`
-/// (`let mesh = cg_core::shapes::cuboid(Vec3::new(1.2, 0.6, 0.6)).unwrap_or_default();`):
+/// (`let mesh = warmup_box();`, the box centred on its origin):
 ///
 /// - box 1 (回転運動): at (−3, 1, 0), turning about the Y axis, one turn in 4 s,
 ///   counter-clockwise seen from above: `θ = 360°·t/4`;
@@ -64,7 +62,7 @@ pub fn warmup_display(gl: &mut Gl, t: f64) {
 /// - Then compute each parameter *from the frame count*, reduced by the object's period (in
 ///   frames `P = 60·T`, `motion.period_frames()`): the phase `u = (frame % P) / P` (0 ≤ u < 1),
 ///   then `θ = 360°·u` for a turn, `θ = A·sin(360°·u)` for a swing, the offset and height for a
-///   hop (see `cg_a3::Motion`'s formulas). Keep the units: degrees for angles.
+///   hop (see `cg_student::a3::Motion`'s formulas). Keep the units: degrees for angles.
 /// - Do **not** add a step to an f32 angle every frame: after 10⁶ frames the rounding errors add
 ///   up to a visible drift (check `a3.t1.drift`). Do the arithmetic in u64 and f64 and store the
 ///   result as f32.
@@ -87,7 +85,7 @@ pub fn idle(spec: &Spec, state: &mut State) {
 ///    `gl.light_position(0, [10.0, 10.0, 10.0, 1.0])`.
 /// 3. Each object (モデル座標系→ワールド座標系): `gl.push_matrix()`, its translations and
 ///    rotations from `state.params`, `gl.color(r, g, b)` with `object.color`,
-///    `gl.draw(&object.name, &object.shape.mesh())`, `gl.pop_matrix()`. Do not scale.
+///    `gl.draw(&object.name, &object.mesh)`, `gl.pop_matrix()`. Do not scale.
 /// 4. The child (`Motion::Satellite`) moves in its parent's coordinate system: draw it after the
 ///    parent's transforms and *before* the parent's `gl.pop_matrix()`, inside its own
 ///    push/pop: `…parent… · Ry(θ) · T(0, 0, r)`.
@@ -106,6 +104,6 @@ pub fn display(spec: &Spec, state: &State, gl: &mut Gl) {
 
 /// The functions of this module, for the checks and the view.
 #[must_use]
-pub fn implementation() -> cg_a3::Impl {
-    cg_a3::Impl { warmup_display, idle, display }
+pub fn implementation() -> cg_student::a3::Impl {
+    cg_student::a3::Impl { warmup_display, idle, display }
 }

@@ -18,9 +18,8 @@
 //! Check: `cargo run --release -- check a4`; look: `cargo run --release -- view a4` (PNG under
 //! `out/`).
 
-use cg_a4::{Spec, TexRange};
-use cg_core::glam::Vec2;
-use cg_core::texture::Sampler;
+use cg_student::a4::{Impl, Sampler, Spec, TexRange};
+use cg_student::glam::Vec2;
 
 /// **a4.t1** — the texture-coordinate range of your region (テクスチャ座標の範囲).
 ///
@@ -29,9 +28,9 @@ use cg_core::texture::Sampler;
 /// coordinates, `s_min ≤ s ≤ s_max` (left to right), `t_min ≤ t ≤ t_max` (bottom to top), each
 /// in `[0, 1]`. The answers are multiples of 1/8; they are checked within 1e-6.
 ///
-/// Hint: the image has `cg_a4::CELLS` = 8 columns and rows, so one cell is 1/8 wide and high.
-/// `s` counts from the left like the columns, but `t` counts from the **bottom** while the rows
-/// count from the top: row 1 is `t = 7/8 … 1`.
+/// Hint: the image has `cg_student::a4::CELLS` = 8 columns and rows, so one cell is 1/8 wide
+/// and high. `s` counts from the left like the columns, but `t` counts from the **bottom** while
+/// the rows count from the top: row 1 is `t = 7/8 … 1`.
 ///
 /// 入力: `spec.region`（マスの長方形。`column` は列の番号で 0 が `A`、`row` は行の番号で 0 が一番**上**の
 /// 行 `1`、`columns`・`rows` はその数）。出力: テクスチャ座標での範囲（`s` は左から右、`t` は下から上、
@@ -78,7 +77,7 @@ pub fn tex_coords(spec: &Spec, i: u32, j: u32) -> [Vec2; 4] {
 /// **a4.t3** — how the texture is sampled (フィルタと折り返し): glTexParameteri's
 /// GL_TEXTURE_MIN/MAG_FILTER and GL_TEXTURE_WRAP_S/T.
 ///
-/// Output: a `Sampler { filter, wrap_u, wrap_v }` (`cg_core::texture::{Filter, Wrap}`):
+/// Output: a `Sampler { filter, wrap_u, wrap_v }` (`cg_student::a4::{Filter, Wrap}`):
 /// `Filter::Nearest` (GL_NEAREST) or `Filter::Bilinear` (GL_LINEAR) — your choice, say why in the
 /// report — and the wrap modes along `s` (`wrap_u`) and `t` (`wrap_v`), `Wrap::Repeat`
 /// (GL_REPEAT) or `Wrap::Clamp` (GL_CLAMP_TO_EDGE), which are checked.
@@ -98,6 +97,6 @@ pub fn sampler() -> Sampler {
 
 /// The functions of this module, for the checks and the view.
 #[must_use]
-pub fn implementation() -> cg_a4::Impl {
-    cg_a4::Impl { tex_range, tex_coords, sampler }
+pub fn implementation() -> Impl {
+    Impl { tex_range, tex_coords, sampler }
 }

@@ -23,10 +23,10 @@
 //! `cargo run --release -- view s`. / 確認は `cargo run --release -- check s`、
 //! 画像は `cargo run --release -- view s`。
 
-use cg_core::Rgb;
-use cg_core::glam::Vec3;
-use cg_core::mesh::Mesh;
-use cg_shading::{Pixel, Shading};
+use cg_student::Rgb;
+use cg_student::glam::Vec3;
+use cg_student::mesh::Mesh;
+use cg_student::s::{Pixel, Shading};
 
 /// **s.t1 環境光 (ambient light)**: `Ia·ka`.
 ///
@@ -122,11 +122,14 @@ pub fn spot_factor(l: Vec3, spot_direction: Vec3, cutoff_deg: f32, exponent: f32
 /// - A zero-area face (a repeated corner, collinear corners) has no normal and adds nothing; a
 ///   vertex that no usable face touches gets the zero vector. Never NaN.
 ///
-/// Hint: `cg_core::normals::face_normal(a, b, c)` gives the unit face normal, or `None` for a
-/// zero-area face; add it to the three corners, then `normalize_or_zero()` each sum.
+/// Hint: the face normal of `F { a, b, c }` is the cross product `(b − a).cross(c − a)`,
+/// normalised. `try_normalize()` gives the unit vector, or `None` when the cross product has
+/// length 0 (a zero-area face: skip it); add it to the three corners, then `normalize_or_zero()`
+/// each sum.
 ///
-/// 面の法線（単位ベクトル）を、その面の 3 つの頂点に足していき、最後に正規化します。面積 0 の面は
-/// 足しません（`face_normal` が `None`）。どの面にも使われない頂点はゼロベクトル。NaN にしないこと。
+/// 面の法線は外積 (b−a)×(c−a) を正規化したもの（単位ベクトル）。それをその面の 3 つの頂点に足して
+/// いき、最後に正規化します。面積 0 の面は外積がゼロベクトルなので足しません（`try_normalize()` が
+/// `None`）。どの面にも使われない頂点はゼロベクトル。NaN にしないこと。
 pub fn vertex_normals(mesh: &Mesh) -> Vec<Vec3> {
     // TODO s.t5: every vertex points straight up for now, so the view still draws.
     vec![Vec3::Y; mesh.positions.len()]
@@ -216,8 +219,8 @@ pub fn refract(i: Vec3, n: Vec3, n1: f32, n2: f32) -> Option<Vec3> {
 
 /// The functions of this module, for the checks and the view.
 #[must_use]
-pub fn implementation() -> cg_shading::Impl {
-    cg_shading::Impl {
+pub fn implementation() -> cg_student::s::Impl {
+    cg_student::s::Impl {
         ambient,
         diffuse,
         specular,

@@ -2,7 +2,7 @@
 //!
 //! Your polyhedron, its dimensions, the vertex numbering and its placement are printed by
 //! `cargo run --release -- assignment --only a1`; the same numbers are in `spec` (a
-//! [`cg_a1::Spec`]). Write the four functions below, then run
+//! [`cg_student::a1::Spec`]). Write the four functions below, then run
 //! `cargo run --release -- check a1` (the checks explain what is wrong, and where) and
 //! `cargo run --release -- view a1` (your model on the course's stage, lit with *your* normals).
 //!
@@ -24,10 +24,10 @@
 //! 値の導出をレポートで説明します）。
 
 #[allow(unused_imports)]
-use cg_a1::{Order, RidgeAxis, Shape, Spec, Turn};
-use cg_core::glam::Vec3;
+use cg_student::a1::{Order, RidgeAxis, Shape, Spec, Turn};
+use cg_student::glam::Vec3;
 #[allow(unused_imports)]
-use cg_core::product::{Axis, Factor, MatrixProduct, Param};
+use cg_student::product::{Axis, Factor, MatrixProduct, Param};
 
 // BEGIN SOLUTION
 /// A group of vertices at one height, listed counter-clockwise seen from above.
@@ -372,6 +372,6 @@ pub fn model_transform(spec: &Spec) -> MatrixProduct {
 
 /// The functions of this module, for the checks and the view.
 #[must_use]
-pub fn implementation() -> cg_a1::Impl {
-    cg_a1::Impl { vertices, faces, face_normals, model_transform }
+pub fn implementation() -> cg_student::a1::Impl {
+    cg_student::a1::Impl { vertices, faces, face_normals, model_transform }
 }

@@ -14,15 +14,15 @@
 //! サンプルプログラムのうち変更する 3 か所を書きます。確かめ方: `cargo run --release -- check a2`、
 //! 絵で見る: `cargo run --release -- view a2`。
 
-use cg_a2::{CameraState, Drag, Gl, Spec};
+use cg_student::a2::{CameraState, Drag, Spec};
+use cg_student::gl::Gl;
 // BEGIN SOLUTION
-use cg_a2::{DragAxis, LIGHT0_POSITION, Operation, draw_course_objects};
-use cg_core::math::wrap_degrees;
+use cg_student::a2::{DragAxis, LIGHT0_POSITION, Operation, draw_course_objects};
 // END SOLUTION
 // BEGIN STUB
 // // What your code will need: buttons and directions (a2.t1), the light and the objects (a2.t3).
 // #[allow(unused_imports)]
-// use cg_a2::{DragAxis, LIGHT0_POSITION, MouseButton, draw_course_objects};
+// use cg_student::a2::{DragAxis, LIGHT0_POSITION, MouseButton, draw_course_objects};
 // END STUB
 
 /// **a2.t1** — GLUT's `motion()`: changes the camera variables in `state` for one `drag`, as
@@ -52,7 +52,9 @@ use cg_core::math::wrap_degrees;
 pub fn motion(spec: &Spec, state: &mut CameraState, drag: &Drag) {
     // BEGIN SOLUTION
     if let Some(change) = change(&spec.yaw, drag) {
-        state.camera_yaw = wrap_degrees(state.camera_yaw + change);
+        // rem_euclid can round up to 360.0 itself (for a tiny negative angle): that is 0 too.
+        let yaw = (state.camera_yaw + change).rem_euclid(360.0);
+        state.camera_yaw = if yaw >= 360.0 { 0.0 } else { yaw };
     }
     if let Some(change) = change(&spec.pitch, drag) {
         state.camera_pitch = (state.camera_pitch + change).clamp(spec.pitch_min, spec.pitch_max);
@@ -103,7 +105,8 @@ fn change(op: &Operation, drag: &Drag) -> Option<f32> {
 /// Hint: the sample has `glTranslatef(0, 0, -camera_distance)` then
 /// `glRotatef(-camera_pitch, 1, 0, 0)`. The yaw turns about Y; the target's translation moves the
 /// target to the origin. Which factor comes first? The call made last acts on the vertices
-/// first. Your report writes exactly this product (`cg_a2::camera_product` prints it).
+/// first. Your report writes exactly this product (the kit prints it into your report:
+/// `{{a2.matrices}}`).
 ///
 /// **a2.t2** — 視点の変換: `gl.translate`（glTranslatef）と `gl.rotate`（glRotatef、角度は度）で、
 /// 現在の行列に視点の変換を掛けます（`gl.load_identity()` は display で呼ぶのでここでは呼ばない）。
@@ -150,6 +153,6 @@ pub fn display(gl: &mut Gl, state: &CameraState) {
 
 /// The functions of this module, for the checks and the view.
 #[must_use]
-pub fn implementation() -> cg_a2::Impl {
-    cg_a2::Impl { motion, camera, display }
+pub fn implementation() -> cg_student::a2::Impl {
+    cg_student::a2::Impl { motion, camera, display }
 }

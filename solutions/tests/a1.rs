@@ -6,14 +6,16 @@
 
 use std::collections::{BTreeSet, HashSet};
 
+use cg_a1::ShapeExt as _;
+use cg_a1::SpecDescribe as _;
 use cg_a1::{Impl, Order, RidgeAxis, Shape, Spec, Turn};
 use cg_core::glam::{Mat4, Vec3};
 use cg_core::lang::Lang;
-use cg_core::product::{Factor, MatrixProduct};
 use cg_core::scene::NormalSource;
 use cg_harness::check::{CheckResult, Outcome, guarded};
 use cg_harness::{StudentNumber, TableVersion, VariantRng};
 use cg_solutions::a1 as sol;
+use cg_student::product::{Factor, MatrixProduct};
 
 mod common;
 
@@ -353,7 +355,7 @@ fn v_centred(s: &Spec) -> Vec<Vec3> {
     v.into_iter().map(|p| p - Vec3::new(0.0, top / 2.0, 0.0)).collect()
 }
 fn v_placed(s: &Spec) -> Vec<Vec3> {
-    let m = sol::model_transform(s).matrix().unwrap();
+    let m = cg_core::product::MatrixProduct::from(sol::model_transform(s)).matrix().unwrap();
     sol::vertices(s).into_iter().map(|p| m.transform_point3(p)).collect()
 }
 fn n_placed(s: &Spec) -> Vec<Vec3> {
@@ -782,7 +784,7 @@ fn the_view_lights_each_face_with_the_students_own_normal() {
             assert_eq!(names, ["ground", "model"]);
             let model = &scene.objects[1];
             assert_eq!(model.normals, NormalSource::Given);
-            assert_eq!(model.transform, (imp.model_transform)(&spec));
+            assert_eq!(model.transform, (imp.model_transform)(&spec).into());
             let (v, f, n) = ((imp.vertices)(&spec), (imp.faces)(&spec), (imp.face_normals)(&spec));
             assert_eq!(model.mesh.faces.len(), f.len());
             let corner_normals = model.mesh.normals.as_ref().unwrap();

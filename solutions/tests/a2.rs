@@ -5,6 +5,7 @@
 
 use std::collections::BTreeSet;
 
+use cg_a2::SpecExt as _;
 use cg_a2::{CameraState, DragAxis, Gesture, MouseButton, Spec};
 use cg_core::lang::Lang;
 use cg_harness::check::Outcome;

@@ -5,12 +5,14 @@
 
 use std::collections::BTreeSet;
 
-use cg_a2::{CameraState, Drag, DragAxis, Gl, Impl, LIGHT0_POSITION, MouseButton, Operation, Spec};
+use cg_a2::SpecExt as _;
+use cg_a2::{CameraState, Drag, DragAxis, Impl, LIGHT0_POSITION, MouseButton, Operation, Spec};
 use cg_core::glam::Vec3;
 use cg_core::lang::Lang;
 use cg_core::product::Factor;
 use cg_harness::check::Outcome;
 use cg_harness::{CheckResult, StudentNumber, TableVersion, VariantRng};
+use cg_student::gl::Gl;
 
 mod common;
 
@@ -124,7 +126,7 @@ fn camera_with<const BUG: u8>(gl: &mut Gl, s: &CameraState) {
             let (sy, cy) = s.camera_yaw.to_radians().sin_cos();
             let eye = target + s.camera_distance * Vec3::new(cp * sy, -sp, cp * cy);
             let view = cg_core::transform::look_at(eye, target, Vec3::Y).unwrap();
-            gl.mult(Factor::named("LookAt", view));
+            gl.mult(Factor::named("LookAt", view).into());
         }
         CAMERA_TRANSLATE_LAST => {
             gl.rotate(-s.camera_pitch, 1.0, 0.0, 0.0);
@@ -162,7 +164,7 @@ fn display_calling<const CAMERA: u8>(gl: &mut Gl, s: &CameraState) {
     gl.load_identity();
     camera_with::<CAMERA>(gl, s);
     gl.light_position(0, LIGHT0_POSITION);
-    cg_a2::draw_course_objects(gl);
+    cg_student::a2::draw_course_objects(gl);
 }
 
 /// The reference's display() with `BUG`.
@@ -178,10 +180,10 @@ fn display_with<const BUG: u8>(gl: &mut Gl, s: &CameraState) {
         LIGHT_BEFORE_CAMERA => {
             gl.light_position(0, LIGHT0_POSITION);
             camera(gl, s);
-            cg_a2::draw_course_objects(gl);
+            cg_student::a2::draw_course_objects(gl);
         }
         OBJECTS_BEFORE_CAMERA => {
-            cg_a2::draw_course_objects(gl);
+            cg_student::a2::draw_course_objects(gl);
             camera(gl, s);
             gl.light_position(0, LIGHT0_POSITION);
         }
@@ -190,7 +192,7 @@ fn display_with<const BUG: u8>(gl: &mut Gl, s: &CameraState) {
                 camera(gl, s);
             }
             gl.light_position(0, LIGHT0_POSITION);
-            cg_a2::draw_course_objects(gl);
+            cg_student::a2::draw_course_objects(gl);
         }
     }
 }

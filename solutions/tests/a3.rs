@@ -7,12 +7,13 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::f64::consts::TAU;
 use std::sync::OnceLock;
 
+use cg_a3::SpecDescribe as _;
 use cg_a3::{Impl, Motion, Object, Spec, State, WorldAxis};
-use cg_core::gl::Gl;
 use cg_core::glam::Vec3;
 use cg_core::lang::Lang;
 use cg_harness::check::{CheckResult, Outcome, Report};
 use cg_harness::{StudentNumber, TableVersion, VariantRng};
+use cg_student::gl::Gl;
 
 mod common;
 
@@ -267,9 +268,9 @@ fn draw(gl: &mut Gl, object: &Object, bug: Bug) {
         object.name.clone()
     };
     let mesh = if bug == Bug::WrongMesh {
-        cg_core::shapes::cuboid(Vec3::ONE).unwrap()
+        (&cg_core::shapes::cuboid(Vec3::ONE).unwrap()).into()
     } else {
-        object.shape.mesh()
+        object.mesh.clone()
     };
     gl.draw(&name, &mesh);
 }
@@ -338,7 +339,7 @@ fn display_with(bug: Bug, spec: &Spec, state: &State, gl: &mut Gl) {
 }
 
 fn warmup_with(bug: Bug, gl: &mut Gl, t: f64) {
-    let mesh = cg_core::shapes::cuboid(Vec3::new(1.2, 0.6, 0.6)).unwrap();
+    let mesh = cg_student::a3::warmup_box();
     let push = |gl: &mut Gl| {
         if bug != Bug::WarmupNoPushPop {
             gl.push_matrix();

@@ -7,9 +7,12 @@
 //! coordinates the spec's orientation table puts at each block corner. The symbolic products
 //! name the variables and multiply out to the numeric ones.
 
+use cg_a1::ShapeExt as _;
 use cg_a2::{CameraState, Drag, DragAxis, Operation};
+use cg_a3::SpecExt as _;
+use cg_a4::RegionExt as _;
+use cg_a4::SpecExt as _;
 use cg_assign::Assignment;
-use cg_core::gl::Gl;
 use cg_core::glam::{DVec2, DVec3, Mat4, Vec2};
 use cg_core::product::{Factor, MatrixProduct, Param};
 use cg_harness::{StudentNumber, TableVersion};
@@ -264,15 +267,15 @@ fn plain(f: &Factor) -> Factor {
 
 /// The reference's frame drawn with plain numbers only (no `Param::sym`): the matrices are the
 /// same, the names must then come from the derivation's own matching.
-fn plain_display(spec: &cg_a3::Spec, state: &cg_a3::State, gl: &mut Gl) {
-    let mut reference = Gl::new();
+fn plain_display(spec: &cg_a3::Spec, state: &cg_a3::State, gl: &mut cg_student::gl::Gl) {
+    let mut reference = cg_student::gl::Gl::new();
     cg_solutions::a3::display(spec, state, &mut reference);
-    for draw in reference.draws() {
+    for draw in cg_a3::replay(&reference).draws() {
         gl.load_identity();
         for f in &draw.model_view.factors {
-            gl.mult(plain(f));
+            gl.mult(plain(f).into());
         }
-        gl.draw(&draw.name, &draw.mesh);
+        gl.draw(&draw.name, &(&draw.mesh).into());
     }
 }
 
@@ -385,8 +388,8 @@ fn a4_rows_are_the_specs_coordinates() {
 fn a_camera_with_its_own_names_keeps_them() {
     // A camera that multiplies a factor it named itself (`Param::sym`) keeps that name; the
     // plain numbers after it are named by the derivation.
-    fn camera_mult(gl: &mut Gl, s: &CameraState) {
-        gl.mult(cg_a2::expected_product(&cg_a2_spec(), s).factors[0].clone());
+    fn camera_mult(gl: &mut cg_student::gl::Gl, s: &CameraState) {
+        gl.mult(cg_a2::expected_product(&cg_a2_spec(), s).factors[0].clone().into());
         gl.rotate(-s.camera_pitch, 1.0, 0.0, 0.0);
         gl.rotate(-s.camera_yaw, 0.0, 1.0, 0.0);
     }

@@ -17,12 +17,12 @@ use std::sync::OnceLock;
 use cg_core::Rgb;
 use cg_core::glam::Vec3;
 use cg_core::lang::Lang;
-use cg_core::mesh::Mesh;
 use cg_harness::check::Outcome;
 use cg_harness::{CheckResult, StudentNumber, TableVersion, VariantRng};
 use cg_shading::render::kit_image;
 use cg_shading::{Impl, Pixel, Shading, Spec};
 use cg_solutions::s as solution;
+use cg_student::mesh::Mesh;
 
 mod common;
 

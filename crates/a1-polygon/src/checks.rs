@@ -16,6 +16,9 @@ use cg_core::transform::{rotate_y, rotate_y_deg, translate};
 use cg_harness::check::{self, CheckResult, Failure};
 use cg_harness::text::{Text, t};
 
+use crate::spec::NumberingExt;
+use crate::spec::ShapeExt;
+use crate::spec::SpecExt;
 use crate::spec::{Numbering, Spec, Turn};
 use crate::{Impl, format_deg};
 
@@ -1270,7 +1273,7 @@ fn matrices_close(a: Mat4, b: Mat4) -> bool {
 }
 
 fn placement(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
-    let product: MatrixProduct = (imp.model_transform)(spec);
+    let product: MatrixProduct = (imp.model_transform)(spec).into();
     let p = spec.placement;
     let angle = format_deg(p.angle_deg);
     let expected = expected_transform(spec);

@@ -1,10 +1,12 @@
 //! The assignment text, like the course's assignment program prints it, in Japanese and English.
 
+use easy_ext::ext;
 use std::fmt::Write as _;
 
 use cg_core::lang::Lang;
 use cg_core::notation::decimal;
 
+use crate::spec::ShapeExt;
 use crate::spec::{Order, Part, PartKind, RidgeAxis, Shape, Spec, Turn, kanji};
 
 /// A length as the text prints it: `1.5`, `2.0`.
@@ -25,7 +27,9 @@ fn gon(n: u32) -> &'static str {
     }
 }
 
-impl Shape {
+/// A shape's dimensions and parts in words.
+#[ext(ShapeDescribe)]
+pub(crate) impl Shape {
     /// The dimensions in words.
     fn dimensions(&self, lang: Lang) -> String {
         let ja = lang == Lang::Ja;
@@ -235,9 +239,11 @@ fn part_rule(part: &Part, ring: Turn, lang: Lang) -> String {
     }
 }
 
-impl Spec {
+/// The assignment text of a variant.
+#[ext(SpecDescribe)]
+pub impl Spec {
     /// The numbering rule as lines `V0–V5: …`.
-    pub(crate) fn numbering_lines(&self, lang: Lang) -> Vec<String> {
+    fn numbering_lines(&self, lang: Lang) -> Vec<String> {
         let parts = self.shape.parts();
         let ordered: Vec<&Part> = match self.numbering.order {
             Order::BottomUp => parts.iter().collect(),
@@ -256,7 +262,7 @@ impl Spec {
     }
 
     /// The placement in words.
-    pub(crate) fn placement_text(&self, lang: Lang) -> String {
+    fn placement_text(&self, lang: Lang) -> String {
         let p = self.placement;
         let at = format!("({}, {}, {})", num(p.x), num(p.y), num(p.z));
         let angle = crate::format_deg(p.angle_deg);
@@ -287,8 +293,7 @@ impl Spec {
     /// The assignment text for this variant, in `lang`: the model, its dimensions, the
     /// numbering rule, the placement, the tasks `a1.t1`–`a1.t4` with their functions, and what
     /// the report must show.
-    #[must_use]
-    pub fn describe(&self, lang: Lang) -> String {
+    fn describe(&self, lang: Lang) -> String {
         let ja = lang == Lang::Ja;
         let (v, f) = (self.shape.vertex_count(), self.shape.face_count());
         let mut out = String::new();

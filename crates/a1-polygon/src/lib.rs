@@ -14,7 +14,7 @@
 //! | `a1.t1` | `vertices(spec)` | `Vec<Vec3>`, model space, numbered by the spec's rule | `a1.t1.count`, `a1.t1.positions` |
 //! | `a1.t2` | `faces(spec)` | `Vec<[u32; 3]>`, counter-clockwise seen from outside | `a1.t2.indices`, `.degenerate`, `.closed`, `.manifold`, `.winding`, `.outward`, `.count`, `.surface` |
 //! | `a1.t3` | `face_normals(spec)` | `Vec<Vec3>`, one unit normal per face | `a1.t3.count`, `a1.t3.unit`, `a1.t3.normals` |
-//! | `a1.t4` | `model_transform(spec)` | [`MatrixProduct`] `T(x, y, z) · Ry(θ)` | `a1.t4.placement` |
+//! | `a1.t4` | `model_transform(spec)` | [`MatrixProduct`](cg_student::product::MatrixProduct) `T(x, y, z) · Ry(θ)` | `a1.t4.placement` |
 //!
 //! The view draws the student's mesh face by face with the student's own normals
 //! ([`NormalSource::Given`](cg_core::scene::NormalSource::Given)) on the course's stage, so a
@@ -25,32 +25,22 @@ mod describe;
 mod spec;
 mod view;
 
-use cg_core::glam::Vec3;
-use cg_core::product::{MatrixProduct, format_number};
+use cg_core::product::format_number;
 
 pub use checks::{
     MATRIX_TOLERANCE, NORMAL_TOLERANCE, SURFACE_TOLERANCE, UNIT_TOLERANCE, VERTEX_TOLERANCE, checks,
 };
-pub use spec::{FAMILIES, Numbering, Order, Placement, RidgeAxis, Shape, Spec, Turn, variant};
+pub use describe::SpecDescribe;
+pub use spec::{
+    FAMILIES, Numbering, NumberingExt, Order, Placement, RidgeAxis, Shape, ShapeExt, Spec, SpecExt,
+    Turn, variant,
+};
 pub use view::{MODEL_COLOR, view};
 
 /// The assignment's ID, the prefix of its task IDs (`a1.t1`, …).
 pub const ID: &str = "a1";
 
-/// The functions a student writes (see `exercises/src/a1.rs`). Each gets the student's
-/// [`Spec`]; a student may read the numbers from it or write their own numbers by hand.
-#[derive(Clone, Copy, Debug)]
-pub struct Impl {
-    /// `a1.t1`: the vertex positions in model space, numbered by `spec.numbering`.
-    pub vertices: fn(&Spec) -> Vec<Vec3>,
-    /// `a1.t2`: the triangles as vertex numbers, counter-clockwise seen from outside.
-    pub faces: fn(&Spec) -> Vec<[u32; 3]>,
-    /// `a1.t3`: one unit normal per face, in the order of `faces`.
-    pub face_normals: fn(&Spec) -> Vec<Vec3>,
-    /// `a1.t4`: model space → world space as a product of named factors, in glTranslatef /
-    /// glRotatef order (degrees).
-    pub model_transform: fn(&Spec) -> MatrixProduct,
-}
+pub use cg_student::a1::Impl;
 
 /// An angle in degrees as the texts print it: `30`, `-22.5`.
 pub(crate) fn format_deg(x: f32) -> String {

@@ -7,207 +7,9 @@
 use cg_core::glam::{DVec3, Vec3};
 use cg_core::lang::Lang;
 use cg_harness::VariantRng;
-use serde::Serialize;
+use easy_ext::ext;
 
-/// Serialises an f32 as the f64 with the same shortest decimal digits, so JSON shows the table's
-/// friendly `1.6`, not `1.600000023841858` (the f32 widened).
-fn friendly<S: serde::Serializer>(x: &f32, s: S) -> Result<S::Ok, S::Error> {
-    s.serialize_f64(x.to_string().parse::<f64>().unwrap_or(f64::from(*x)))
-}
-
-/// Which way a ring of vertices runs, seen from above (from +Y, looking down).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Turn {
-    /// Counter-clockwise seen from above: +X → −Z → −X → +Z (angle θ: `(r·cos θ, y, −r·sin θ)`,
-    /// the direction of glRotatef(θ, 0, 1, 0)).
-    Ccw,
-    /// Clockwise seen from above: +X → +Z → −X → −Z (`(r·cos θ, y, r·sin θ)`).
-    Cw,
-}
-
-/// In which order the parts of the model (apexes, rings, ridge ends) are numbered.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Order {
-    /// From the bottom up: the lowest part gets V0.
-    BottomUp,
-    /// From the top down: the highest part gets V0.
-    TopDown,
-}
-
-/// The required vertex numbering (頂点番号の付け方), so that vertex `Vi` can be compared with the
-/// expected position `i`.
-///
-/// The model is made of *parts* stacked along the Y axis: single points (an apex), pairs of
-/// points (the two ends of a ridge), and *rings* (the corners of a regular polygon or of a
-/// rectangle at one height). Parts are numbered in `order`; inside a ring the first vertex is
-/// the corner on +X (a regular polygon) or the corner at (+X, +Z) (a rectangle), and the others
-/// follow in the direction `ring`. A pair lists the end on the + side of its axis first.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-pub struct Numbering {
-    /// Bottom up or top down.
-    pub order: Order,
-    /// The direction of every ring, seen from above.
-    pub ring: Turn,
-}
-
-/// The axis a house's ridge (棟) runs along.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum RidgeAxis {
-    /// Along X: the gable walls (妻壁, with the triangles) face ±X.
-    X,
-    /// Along Z: the gable walls face ±Z.
-    Z,
-}
-
-/// The polyhedron, in model space (モデル座標系): its axis is the Y axis and its lowest point (or
-/// bottom face) lies in the plane y = 0. Lengths in scene units; a `radius` is the circumradius
-/// of a regular polygon (the distance from the axis to each corner), whose first corner is on +X.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum Shape {
-    /// A pyramid (角すい): a regular `sides`-gon of circumradius `radius` at y = 0, the apex at
-    /// (0, `height`, 0).
-    Pyramid {
-        /// Corners of the base, 3–8.
-        sides: u32,
-        /// Circumradius of the base.
-        #[serde(serialize_with = "friendly")]
-        radius: f32,
-        /// Height of the apex.
-        #[serde(serialize_with = "friendly")]
-        height: f32,
-    },
-    /// A prism (角柱): regular `sides`-gons of circumradius `radius` at y = 0 and y = `height`.
-    Prism {
-        /// Corners of each cap, 3–8.
-        sides: u32,
-        /// Circumradius of the caps.
-        #[serde(serialize_with = "friendly")]
-        radius: f32,
-        /// Height.
-        #[serde(serialize_with = "friendly")]
-        height: f32,
-    },
-    /// A frustum (角すい台): a regular `sides`-gon of circumradius `bottom_radius` at y = 0 and
-    /// one of circumradius `top_radius` at y = `height`, corners above corners.
-    Frustum {
-        /// Corners of each cap, 3–8.
-        sides: u32,
-        /// Circumradius of the bottom.
-        #[serde(serialize_with = "friendly")]
-        bottom_radius: f32,
-        /// Circumradius of the top (smaller).
-        #[serde(serialize_with = "friendly")]
-        top_radius: f32,
-        /// Height.
-        #[serde(serialize_with = "friendly")]
-        height: f32,
-    },
-    /// A tower (塔, a pencil): a prism of height `height` with a pyramid of height `tip_height`
-    /// on top (apex at (0, `height` + `tip_height`, 0)).
-    Tower {
-        /// Corners of each ring, 3–8.
-        sides: u32,
-        /// Circumradius of the rings.
-        #[serde(serialize_with = "friendly")]
-        radius: f32,
-        /// Height of the prism part.
-        #[serde(serialize_with = "friendly")]
-        height: f32,
-        /// Height of the pyramid on top.
-        #[serde(serialize_with = "friendly")]
-        tip_height: f32,
-    },
-    /// A bipyramid (双角すい): the lower apex at the origin, a regular `sides`-gon of circumradius
-    /// `radius` at y = `lower_height`, the upper apex at (0, `lower_height` + `upper_height`, 0).
-    Bipyramid {
-        /// Corners of the middle ring, 3–6.
-        sides: u32,
-        /// Circumradius of the middle ring.
-        #[serde(serialize_with = "friendly")]
-        radius: f32,
-        /// Height of the ring above the lower apex.
-        #[serde(serialize_with = "friendly")]
-        lower_height: f32,
-        /// Height of the upper apex above the ring.
-        #[serde(serialize_with = "friendly")]
-        upper_height: f32,
-    },
-    /// A regular octahedron (正八面体): the lower vertex at the origin, the square of corners
-    /// (distance `radius` from the axis) at y = `radius`, the upper vertex at (0, 2·`radius`, 0).
-    Octahedron {
-        /// Distance from the centre to each vertex.
-        #[serde(serialize_with = "friendly")]
-        radius: f32,
-    },
-    /// A house (家): a box `width` (X) × `depth` (Z) × `wall_height` with a gable roof (切妻屋根)
-    /// whose ridge runs along `ridge` through the middle, `roof_height` above the walls.
-    House {
-        /// Size along X.
-        #[serde(serialize_with = "friendly")]
-        width: f32,
-        /// Size along Z.
-        #[serde(serialize_with = "friendly")]
-        depth: f32,
-        /// Height of the walls (the eaves, 軒).
-        #[serde(serialize_with = "friendly")]
-        wall_height: f32,
-        /// Height of the ridge above the eaves.
-        #[serde(serialize_with = "friendly")]
-        roof_height: f32,
-        /// The axis the ridge runs along.
-        ridge: RidgeAxis,
-    },
-    /// A wedge (くさび形, a ramp): a `width` (X) × `depth` (Z) rectangle at y = 0 with a vertical
-    /// rectangle `height` high standing on its −X edge; the slope runs from the +X edge up to the
-    /// top of that wall.
-    Wedge {
-        /// Size along X.
-        #[serde(serialize_with = "friendly")]
-        width: f32,
-        /// Size along Z.
-        #[serde(serialize_with = "friendly")]
-        depth: f32,
-        /// Height of the vertical wall on the −X side.
-        #[serde(serialize_with = "friendly")]
-        height: f32,
-    },
-}
-
-/// Where the model stands in the world (ワールド座標系): first turned by `angle_deg` about its own
-/// axis (Y, counter-clockwise seen from above, as glRotatef(angle_deg, 0, 1, 0)), then moved so
-/// that its model-space origin lands on (`x`, `y`, `z`). As a product in program order:
-/// `T(x, y, z) · Ry(angle_deg)`.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Placement {
-    /// World X of the model's origin.
-    #[serde(serialize_with = "friendly")]
-    pub x: f32,
-    /// World Y of the model's origin: 0 (standing on the ground) or, for the models that end in
-    /// a point at the bottom, the height it hovers at.
-    #[serde(serialize_with = "friendly")]
-    pub y: f32,
-    /// World Z of the model's origin.
-    #[serde(serialize_with = "friendly")]
-    pub z: f32,
-    /// The turn about Y, in degrees (a multiple of 15°).
-    #[serde(serialize_with = "friendly")]
-    pub angle_deg: f32,
-}
-
-/// What one student must build.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Spec {
-    /// The polyhedron and its dimensions, in model space.
-    pub shape: Shape,
-    /// The required vertex numbering.
-    pub numbering: Numbering,
-    /// Where it stands in the world.
-    pub placement: Placement,
-}
+pub use cg_student::a1::{Numbering, Order, Placement, RidgeAxis, Shape, Spec, Turn};
 
 // ---------------------------------------------------------------------------------------------
 // The frozen tables of version 1.
@@ -309,7 +111,7 @@ pub fn variant(rng: &mut VariantRng) -> Spec {
 
 /// What kind of part a group of vertices is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum PartKind {
+pub enum PartKind {
     /// One point (an apex).
     Point,
     /// Two points on a line parallel to an axis, the + end first.
@@ -322,7 +124,7 @@ pub(crate) enum PartKind {
 
 /// One part of the model, listed bottom up, ring corners counter-clockwise seen from above.
 #[derive(Clone, Debug, PartialEq)]
-pub(crate) struct Part {
+pub struct Part {
     pub kind: PartKind,
     /// Its name, in Japanese and English.
     pub name: (&'static str, &'static str),
@@ -365,17 +167,18 @@ fn rectangle(width: f32, depth: f32, y: f32) -> Vec<Vec3> {
     vec![Vec3::new(x, y, z), Vec3::new(x, y, -z), Vec3::new(-x, y, -z), Vec3::new(-x, y, z)]
 }
 
-impl Shape {
+/// What the kit derives from a shape (trusted side): its parts, counts, height and name.
+#[ext(ShapeExt)]
+pub impl Shape {
     /// Whether the model ends in a point at the bottom (it hovers above the ground).
-    #[must_use]
-    pub fn pointed_bottom(&self) -> bool {
+    fn pointed_bottom(&self) -> bool {
         matches!(self, Shape::Bipyramid { .. } | Shape::Octahedron { .. })
     }
 
     /// The shape's parts, bottom up. Regular polygons come from [`cg_core::shapes`] where the
     /// core has the shape (pyramid, prism, frustum, octahedron; shifted so the bottom is at
     /// y = 0), so the oracle does not share code with the reference solution.
-    pub(crate) fn parts(&self) -> Vec<Part> {
+    fn parts(&self) -> Vec<Part> {
         use cg_core::shapes;
         let polygon =
             |name, y: f32, points: Vec<Vec3>| Part { kind: PartKind::Polygon, name, y, points };
@@ -504,26 +307,23 @@ impl Shape {
     }
 
     /// The number of vertices.
-    #[must_use]
-    pub fn vertex_count(&self) -> usize {
+    fn vertex_count(&self) -> usize {
         self.parts().iter().map(|p| p.points.len()).sum()
     }
 
     /// The number of triangles of any closed triangulation of the surface with these vertices:
     /// `2·V − 4` (Euler's formula V − E + F = 2 with 3F = 2E).
-    #[must_use]
-    pub fn face_count(&self) -> usize {
+    fn face_count(&self) -> usize {
         (2 * self.vertex_count()).saturating_sub(4)
     }
 
     /// The extent of the model along Y.
-    pub(crate) fn height(&self) -> f32 {
+    fn height(&self) -> f32 {
         self.parts().last().map_or(0.0, |p| p.y)
     }
 
     /// The shape's name, `六角すい` / `hexagonal pyramid`.
-    #[must_use]
-    pub fn name(&self, lang: Lang) -> String {
+    fn name(&self, lang: Lang) -> String {
         let gon = |n: u32| match n {
             3 => "triangular",
             4 => "square",
@@ -560,9 +360,11 @@ impl Shape {
     }
 }
 
-impl Numbering {
+/// The numbering rule applied to a shape's parts (trusted side).
+#[ext(NumberingExt)]
+pub impl Numbering {
     /// `parts` (bottom up, rings counter-clockwise) numbered by this rule.
-    pub(crate) fn apply(&self, parts: &[Part]) -> Vec<Vec3> {
+    fn apply(&self, parts: &[Part]) -> Vec<Vec3> {
         let ordered: Vec<&Part> = match self.order {
             Order::BottomUp => parts.iter().collect(),
             Order::TopDown => parts.iter().rev().collect(),
@@ -582,7 +384,7 @@ impl Numbering {
     }
 
     /// Every numbering rule there is (for diagnosing a student's order).
-    pub(crate) fn all() -> [Numbering; 4] {
+    fn all() -> [Numbering; 4] {
         let n = |order, ring| Numbering { order, ring };
         [
             n(Order::BottomUp, Turn::Ccw),
@@ -593,7 +395,7 @@ impl Numbering {
     }
 
     /// The rule in a few words: `bottom up, rings counter-clockwise seen from above`.
-    pub(crate) fn short(&self, lang: Lang) -> String {
+    fn short(&self, lang: Lang) -> String {
         let order = match self.order {
             Order::BottomUp => lang.pick("下から上へ", "bottom up"),
             Order::TopDown => lang.pick("上から下へ", "top down"),
@@ -609,9 +411,11 @@ impl Numbering {
     }
 }
 
-impl Spec {
+/// The expected vertex positions (trusted side: the checks' oracle).
+#[ext(SpecExt)]
+pub impl Spec {
     /// The expected vertex positions in model space, in the required numbering.
-    pub(crate) fn expected_vertices(&self) -> Vec<Vec3> {
+    fn expected_vertices(&self) -> Vec<Vec3> {
         self.numbering.apply(&self.shape.parts())
     }
 }

@@ -56,7 +56,7 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
         Err(Outcome::NotDone { .. }) => None,
         Err(other) => return Err(panicked("face_normals", &other)),
     };
-    let transform = match guarded(|| (imp.model_transform)(spec)) {
+    let transform = match guarded(|| MatrixProduct::from((imp.model_transform)(spec))) {
         Ok(p) => p,
         Err(Outcome::NotDone { .. }) => MatrixProduct::identity(),
         Err(other) => return Err(panicked("model_transform", &other)),

@@ -8,10 +8,11 @@ use cg_core::lang::Lang;
 use cg_harness::check::{self, Failure};
 use cg_harness::text::t;
 use cg_harness::{CheckResult, Text, VariantRng};
+use cg_student::gl::Gl as Recorder;
 
 use crate::oracle;
 use crate::show;
-use crate::{CameraState, Gl, Impl, Spec};
+use crate::{CameraState, Impl, Spec};
 
 const TASK: &str = "a2.t2";
 
@@ -87,8 +88,9 @@ pub(crate) fn pole_states(spec: &Spec) -> Vec<CameraState> {
 
 /// What the student's camera leaves on a fresh context at `s`: the matrix, or what went wrong.
 pub(crate) fn student_view(imp: &Impl, s: &CameraState) -> Result<Mat4, (Text, Text)> {
-    let mut gl = Gl::new();
-    (imp.camera)(&mut gl, s);
+    let mut rec = Recorder::new();
+    (imp.camera)(&mut rec, s);
+    let gl = crate::replay(&rec);
     if let Some(e) = gl.errors().first() {
         return Err((
             Text::new(

@@ -9,6 +9,7 @@ use cg_core::transform::translate;
 use cg_harness::check::{self, Failure};
 use cg_harness::text::t;
 use cg_harness::{CheckResult, Text};
+use cg_student::gl::Gl as Recorder;
 
 use crate::checks_camera::student_view;
 use crate::oracle::{self, matrices_close};
@@ -76,9 +77,9 @@ fn display_states(spec: &Spec) -> Vec<CameraState> {
 
 /// One frame of the student's display() on a fresh context.
 fn frame(imp: &Impl, s: &CameraState) -> Gl {
-    let mut gl = Gl::new();
-    (imp.display)(&mut gl, s);
-    gl
+    let mut rec = Recorder::new();
+    (imp.display)(&mut rec, s);
+    crate::replay(&rec)
 }
 
 /// Component-wise within `1e-4 · (1 + |expected|)`.
@@ -346,14 +347,16 @@ fn starts_from_identity(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         )));
     };
     // The previous frame left a transform on the stack; a second frame runs on the same context.
-    let mut leftover = Gl::new();
+    let mut leftover = Recorder::new();
     leftover.translate(3.0, -2.0, 7.0);
     leftover.rotate(25.0, 0.0, 0.0, 1.0);
     (imp.display)(&mut leftover, &s);
-    let mut twice = Gl::new();
+    let leftover = crate::replay(&leftover);
+    let mut twice = Recorder::new();
     (imp.display)(&mut twice, &s);
-    let first_draws = twice.draws().len();
+    let first_draws = crate::replay(&twice).draws().len();
     (imp.display)(&mut twice, &s);
+    let twice = crate::replay(&twice);
     for (gl, from, situation) in [
         (
             &leftover,

@@ -13,6 +13,7 @@ use cg_harness::{CheckResult, Text, VariantRng};
 
 use crate::oracle;
 use crate::show::{self, ALL_GESTURES, Var};
+use crate::spec::SpecVars;
 use crate::{CameraState, Drag, DragAxis, Gesture, Impl, Operation, Spec};
 
 /// Tolerance for camera variables after a drag (degrees or scene units).

@@ -46,142 +46,16 @@ use cg_core::scene::Scene;
 use cg_harness::check::Outcome;
 use cg_harness::text::t;
 use cg_harness::{CheckResult, Text};
-use serde::Serialize;
 
-pub use cg_core::camera::MouseButton;
 pub use cg_core::gl::Gl;
-pub use spec::variant;
+pub use spec::{SpecExt, variant};
 
 /// The assignment's ID, the prefix of its task IDs (`a2.t1`, …).
 pub const ID: &str = "a2";
 
-/// The course's light position, `light0_position = { 10.0, 10.0, 10.0, 1.0 }` (a point light:
-/// w = 1), in world coordinates. `display()` (a2.t3) sets it *after* the camera, so OpenGL
-/// multiplies it by the view matrix and the light stays fixed in the world.
-pub const LIGHT0_POSITION: [f32; 4] = [10.0, 10.0, 10.0, 1.0];
-
-/// The camera variables of the program (the sample's global variables), the state that
-/// `motion()` changes and `display()` draws from.
-///
-/// | field | unit | meaning |
-/// |---|---|---|
-/// | `camera_yaw` | degrees | turn of the camera about +Y (方位角), kept in `[0, 360)` |
-/// | `camera_pitch` | degrees | elevation (仰角); negative looks down on the target, −90 straight down |
-/// | `camera_distance` | scene units | from the target to the camera |
-/// | `target_x`, `target_z` | scene units | the point the camera looks at (注視点), on the ground `y = 0` |
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct CameraState {
-    /// camera_yaw in degrees.
-    pub camera_yaw: f32,
-    /// camera_pitch in degrees.
-    pub camera_pitch: f32,
-    /// camera_distance in scene units.
-    pub camera_distance: f32,
-    /// The target's x (注視点の x 座標).
-    pub target_x: f32,
-    /// The target's z (注視点の z 座標).
-    pub target_z: f32,
-}
-
-/// A button with or without Shift held when it was pressed (GLUT: `glutGetModifiers()` in
-/// `mouse()`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-pub struct Gesture {
-    /// The button held during the drag.
-    #[serde(serialize_with = "show::serialize_button")]
-    pub button: MouseButton,
-    /// Whether Shift was held.
-    pub shift: bool,
-}
-
-/// One call of GLUT's `motion(x, y)` while a button is held: which button, whether Shift was
-/// held when it was pressed, and how far the pointer moved since the last call, in pixels
-/// (`dx = x − last_mouse_x`, positive to the **right**; `dy = y − last_mouse_y`, positive
-/// **down**: GLUT's window coordinates have y down). Both are whole numbers of pixels in GLUT;
-/// the checks use whole numbers too.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Drag {
-    /// The button held (`drag_mouse_l`, `drag_mouse_m`, `drag_mouse_r` in the sample).
-    pub button: MouseButton,
-    /// Whether Shift was held when the button was pressed.
-    pub shift: bool,
-    /// Pixels moved to the right since the last `motion()` (left: negative).
-    pub dx: f32,
-    /// Pixels moved down since the last `motion()` (up: negative).
-    pub dy: f32,
-}
-
-/// Which component of a drag an operation reads.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum DragAxis {
-    /// `dx`: dragging left and right.
-    Horizontal,
-    /// `dy`: dragging up and down.
-    Vertical,
-}
-
-/// One mouse operation of the spec: while `gesture` is dragged, the variable changes by
-/// `per_px × d`, where `d` is the drag's `dx` ([`DragAxis::Horizontal`]) or `dy`
-/// ([`DragAxis::Vertical`]). The sign of `per_px` is the direction: the sample's pitch is
-/// `per_px = −1.0` on `Vertical` (`camera_pitch −= 1.0 × dy`: dragging down lowers it).
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Operation {
-    /// The button (and Shift) that drives it.
-    pub gesture: Gesture,
-    /// `dx` or `dy`.
-    pub axis: DragAxis,
-    /// Change per pixel, with its sign: degrees for angles, scene units for lengths.
-    pub per_px: f32,
-}
-
-/// Moving the target (注視点) on the ground: `target_x` by `x`, `target_z` by `z`, each kept in
-/// `[−limit, limit]`.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Pan {
-    /// How target_x changes.
-    pub x: Operation,
-    /// How target_z changes.
-    pub z: Operation,
-    /// `|target_x|` and `|target_z|` stay at most this (the ground is ±5).
-    pub limit: f32,
-}
-
-/// What one student must build: their mouse operations, ranges and starting state.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Spec {
-    /// The variables when the program starts (the sample: yaw 0°, pitch −30°, distance 15).
-    pub start: CameraState,
-    /// How camera_yaw changes; it wraps into `[0, 360)`.
-    pub yaw: Operation,
-    /// How camera_pitch changes.
-    pub pitch: Operation,
-    /// The lowest camera_pitch in degrees (−90: looking straight down).
-    pub pitch_min: f32,
-    /// The highest camera_pitch in degrees.
-    pub pitch_max: f32,
-    /// How camera_distance changes.
-    pub distance: Operation,
-    /// The closest camera_distance (一定値以上は近づかないように制限).
-    pub distance_min: f32,
-    /// The farthest camera_distance.
-    pub distance_max: f32,
-    /// How the target moves, for students who have it; without it the target stays at the
-    /// origin.
-    pub pan: Option<Pan>,
-}
-
-/// The functions a student writes (see `exercises/src/a2.rs`).
-#[derive(Clone, Copy, Debug)]
-pub struct Impl {
-    /// a2.t1 — GLUT's `motion()`: changes `state` for one drag as the spec says.
-    pub motion: fn(&Spec, &mut CameraState, &Drag),
-    /// a2.t2 — the view transform (ワールド座標系→カメラ座標系), multiplied onto the current
-    /// matrix with glTranslatef / glRotatef-style calls.
-    pub camera: fn(&mut Gl, &CameraState),
-    /// a2.t3 — `display()`: identity, [`Impl::camera`], the light, the course's objects.
-    pub display: fn(&mut Gl, &CameraState),
-}
+pub use cg_student::a2::{
+    CameraState, Drag, DragAxis, Gesture, Impl, LIGHT0_POSITION, MouseButton, Operation, Pan, Spec,
+};
 
 /// Every check of this assignment for `spec`, run against `imp`.
 ///
@@ -223,7 +97,7 @@ static COURSE_OBJECTS: LazyLock<Vec<(String, Mesh, Rgb, MatrixProduct)>> = LazyL
 /// and the lecture's pyramid after `glTranslatef(0, 1, 0)`.
 ///
 /// Call it after the camera and the light; it leaves the matrix stack as it found it.
-pub fn draw_course_objects(gl: &mut Gl) {
+pub fn draw_course_objects(gl: &mut cg_core::gl::Gl) {
     for (name, mesh, color, transform) in COURSE_OBJECTS.iter() {
         gl.push_matrix();
         for factor in &transform.factors {
@@ -233,6 +107,13 @@ pub fn draw_course_objects(gl: &mut Gl) {
         gl.draw(name, mesh);
         gl.pop_matrix();
     }
+}
+
+/// A student's recorded frame replayed on the kit's [`Gl`], with [`draw_course_objects`] for
+/// the course's objects: the draws, lights and stack errors the same calls give in OpenGL.
+#[must_use]
+pub fn replay(recorded: &cg_student::gl::Gl) -> Gl {
+    Gl::replay(recorded, &draw_course_objects)
 }
 
 /// The view transform as the student's [`Impl::camera`] builds it, with the report's names:
@@ -249,9 +130,9 @@ pub fn draw_course_objects(gl: &mut Gl) {
 /// What keeps the product from being read (a stub not written yet, a panic), in words.
 pub fn camera_product(imp: &Impl) -> Result<MatrixProduct, Text> {
     let probe = show::PROBE;
-    let mut gl = Gl::new();
-    match cg_harness::check::guarded(|| (imp.camera)(&mut gl, &probe)) {
-        Ok(()) => Ok(show::symbolize(gl.model_view(), &probe)),
+    let mut rec = cg_student::gl::Gl::new();
+    match cg_harness::check::guarded(|| (imp.camera)(&mut rec, &probe)) {
+        Ok(()) => Ok(show::symbolize(replay(&rec).model_view(), &probe)),
         Err(Outcome::NotDone { message }) => {
             Err(Text::new(format!("まだです: {message}"), format!("not done yet: {message}")))
         }
@@ -296,8 +177,9 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
         }
         state = next;
     }
-    let mut gl = Gl::new();
-    (imp.display)(&mut gl, &state);
+    let mut rec = cg_student::gl::Gl::new();
+    (imp.display)(&mut rec, &state);
+    let gl = replay(&rec);
     if gl.draws().is_empty() {
         return Err(t(
             "まだ何も描かれていません: display()（a2.t3）で視点の変換・光源・物体を設定してください",

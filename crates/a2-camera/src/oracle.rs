@@ -424,11 +424,15 @@ mod tests {
         let (mut x, mut y) = (320.0f32, 320.0f32);
         for _ in 0..500 {
             let button = *rng.pick(&[MouseButton::Left, MouseButton::Right]);
-            mouse.mouse(button, true, x, y);
+            let core_button = match button {
+                MouseButton::Left => cg_core::camera::MouseButton::Left,
+                _ => cg_core::camera::MouseButton::Right,
+            };
+            mouse.mouse(core_button, true, x, y);
             let (dx, dy) = (rng.range(-60, 60) as f32, rng.range(-60, 60) as f32);
             (x, y) = (x + dx, y + dy);
             mouse.motion(x, y, &mut camera);
-            mouse.mouse(button, false, x, y);
+            mouse.mouse(core_button, false, x, y);
             motion(&spec, &mut s, &Drag { button, shift: false, dx, dy });
             assert!((s.camera_yaw - camera.yaw_deg).abs() < 1e-3, "{s:?} {camera:?}");
             assert!((s.camera_pitch - camera.pitch_deg).abs() < 1e-3, "{s:?} {camera:?}");

@@ -6,6 +6,7 @@ use cg_core::lang::Lang;
 use cg_core::product::{Factor, MatrixProduct, Param, format_number};
 use cg_harness::Text;
 
+use crate::spec::SpecVars;
 use crate::{CameraState, Drag, DragAxis, Gesture, MouseButton, Operation, Spec};
 
 /// A camera variable.
@@ -218,18 +219,6 @@ pub(crate) fn matrix(m: &Mat4) -> String {
 /// `(x, y, z, w)`.
 pub(crate) fn vec4(v: Vec4) -> String {
     format!("({}, {}, {}, {})", num(v.x), num(v.y), num(v.z), num(v.w))
-}
-
-/// The serde form of a button: `"left"`, `"middle"`, `"right"`.
-pub(crate) fn serialize_button<S: serde::Serializer>(
-    b: &MouseButton,
-    s: S,
-) -> Result<S::Ok, S::Error> {
-    s.serialize_str(match b {
-        MouseButton::Left => "left",
-        MouseButton::Middle => "middle",
-        MouseButton::Right => "right",
-    })
 }
 
 /// The state [`crate::camera_product`] runs the camera at: every value (and its negative)

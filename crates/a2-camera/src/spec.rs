@@ -1,5 +1,6 @@
 //! The per-student variant (table version 1, frozen) and the assignment text.
 
+use easy_ext::ext;
 use std::fmt::Write as _;
 
 use cg_core::lang::Lang;
@@ -114,10 +115,11 @@ pub fn variant(rng: &mut VariantRng) -> Spec {
     Spec { start, yaw, pitch, pitch_min, pitch_max, distance, distance_min, distance_max, pan }
 }
 
-impl Spec {
+/// The spec's variables as the kit lists them.
+#[ext(SpecVars)]
+pub(crate) impl Spec {
     /// The spec's operations with the variable each one drives, in the report's order.
-    #[must_use]
-    pub(crate) fn operations(&self) -> Vec<(Var, Operation)> {
+    fn operations(&self) -> Vec<(Var, Operation)> {
         let mut ops =
             vec![(Var::Yaw, self.yaw), (Var::Pitch, self.pitch), (Var::Distance, self.distance)];
         if let Some(pan) = &self.pan {
@@ -129,7 +131,7 @@ impl Spec {
 
     /// The range a variable is kept in, in words: `wrapped into [0, 360)`, `-90 ≤ camera_pitch
     /// ≤ 0 (clamped)`.
-    pub(crate) fn range_text(&self, var: Var, lang: Lang) -> String {
+    fn range_text(&self, var: Var, lang: Lang) -> String {
         let n = show::num;
         let name = var.name();
         let clamp = |lo: f32, hi: f32| match lang {
@@ -151,13 +153,16 @@ impl Spec {
             }
         }
     }
+}
 
+/// What the kit says about a spec: its variables and its assignment text.
+#[ext(SpecExt)]
+pub impl Spec {
     /// Each camera variable with what changes it and how, in `lang` — the explanation the
     /// report gives for every variable of the view transform (各変数の説明: どのような操作により、
     /// どのように変化する変数か): `("camera_yaw", "右ボタンで左右にドラッグ: camera_yaw -= 0.5 * dx
     /// [度] …")`.
-    #[must_use]
-    pub fn variables(&self, lang: Lang) -> Vec<(String, String)> {
+    fn variables(&self, lang: Lang) -> Vec<(String, String)> {
         self.operations()
             .into_iter()
             .map(|(var, op)| {
@@ -190,8 +195,7 @@ impl Spec {
 
     /// The assignment text for this variant, in `lang`: the operations with this student's
     /// numbers, the tasks a2.t1–a2.t3, and what the report must show.
-    #[must_use]
-    pub fn describe(&self, lang: Lang) -> String {
+    fn describe(&self, lang: Lang) -> String {
         let mut out = String::new();
         let s = &self.start;
         let start = show::state(s, self.pan.is_some());

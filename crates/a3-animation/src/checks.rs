@@ -24,7 +24,7 @@ use crate::describe::shape_text;
 use crate::oracle::{Variation, expected_model_with, warmup_model_with};
 use crate::{
     CAMERA_DISTANCE, CAMERA_PITCH_DEG, DRIFT_FRAMES, FPS, Impl, LIGHT0_POSITION, Motion, Object,
-    Spec, State, camera_product, model_product, warmup_frame, warmup_objects,
+    ShapeExt, Spec, SpecExt, State, camera_product, model_product, warmup_frame, warmup_objects,
 };
 
 /// The frames at which poses are compared (after that many calls of `idle`): spread over the
@@ -245,8 +245,8 @@ fn the_draw<'a>(gl: &'a Gl, object: &Object, location: &Text) -> Result<&'a Draw
                 format!("\"{}\" is not drawn (a different name, or not drawn yet)", object.name),
             ))
             .hint(t(
-                "各物体を gl.draw(&object.name, &object.shape.mesh()) で描いてください",
-                "draw each object with gl.draw(&object.name, &object.shape.mesh())",
+                "各物体を gl.draw(&object.name, &object.mesh) で描いてください",
+                "draw each object with gl.draw(&object.name, &object.mesh)",
             ))),
         n => Err(Failure::new(
             once_per_frame(object),
@@ -286,9 +286,9 @@ fn each_frame(
             (imp.idle)(spec, &mut state);
             done += 1;
         }
-        let mut gl = Gl::new();
-        (imp.display)(spec, &state, &mut gl);
-        visit(frame, &gl)?;
+        let mut rec = cg_student::gl::Gl::new();
+        (imp.display)(spec, &state, &mut rec);
+        visit(frame, &crate::replay(&rec))?;
     }
     Ok(())
 }
@@ -607,8 +607,8 @@ fn warmup_box(imp: &Impl, k: usize) -> Result<(), Failure> {
                 "a3.t0 is not done yet: nothing is drawn",
             ))
             .hint(t(
-                "warmup_display() で 3 つの直方体を gl.draw(\"box 1\", &mesh) などで描いてください",
-                "draw the three boxes in warmup_display() with gl.draw(\"box 1\", &mesh) and so on",
+                "warmup_display() で 3 つの直方体を gl.draw(\"box 1\", &warmup_box()) などで描いてください",
+                "draw the three boxes in warmup_display() with gl.draw(\"box 1\", &warmup_box()) and so on",
             )));
         }
         let draw = the_draw(&gl, object, &location)?;
@@ -756,8 +756,8 @@ fn objects(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                     "the mesh drawn has a different size or is not centred on its origin",
                 ))
                 .hint(t(
-                    "メッシュは spec.objects[i].shape.mesh() を使い、glScalef は使わないでください",
-                    "draw spec.objects[i].shape.mesh() and do not scale it",
+                    "メッシュは spec.objects[i].mesh を使い、glScalef は使わないでください",
+                    "draw spec.objects[i].mesh and do not scale it",
                 )));
             }
         }

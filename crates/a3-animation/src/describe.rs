@@ -5,7 +5,9 @@ use std::fmt::Write as _;
 use cg_core::lang::Lang;
 use cg_core::product::format_number;
 
-use crate::{Motion, Object, Shape, Spec, Turn, warmup_objects};
+use easy_ext::ext;
+
+use crate::{Motion, Object, Shape, Spec, SpecExt, Turn, WorldAxisExt, warmup_objects};
 
 fn num(x: f32) -> String {
     format_number(x)
@@ -199,12 +201,13 @@ fn color_text(c: [f32; 3]) -> String {
     point(c)
 }
 
-impl Spec {
+/// The assignment text of a variant.
+#[ext(SpecDescribe)]
+pub impl Spec {
     /// The assignment text for this variant, in `lang`: every object with its shape, motion
     /// (formula, start, direction, period), the ratios of the periods, the warm-up, the tasks
     /// `a3.t0`–`a3.t2` and what the report must show.
-    #[must_use]
-    pub fn describe(&self, lang: Lang) -> String {
+    fn describe(&self, lang: Lang) -> String {
         let ja = lang == Lang::Ja;
         let mut out = String::new();
         let _ = writeln!(out, "{}", lang.pick("3. アニメーション（a3）", "3. Animation (a3)"));
@@ -220,8 +223,8 @@ impl Spec {
             out,
             "\n{}",
             lang.pick(
-                "物体（\"…\" は gl.draw に渡す名前。メッシュは spec.objects[i].shape.mesh()、色は gl.color の値）:",
-                "Objects (\"…\" is the name to give gl.draw; the mesh is spec.objects[i].shape.mesh(), the colour gl.color's):"
+                "物体（\"…\" は gl.draw に渡す名前。メッシュは spec.objects[i].mesh、色は gl.color の値）:",
+                "Objects (\"…\" is the name to give gl.draw; the mesh is spec.objects[i].mesh, the colour gl.color's):"
             )
         );
         for (i, o) in self.objects.iter().enumerate() {
@@ -272,8 +275,8 @@ impl Spec {
             out,
             "\n{}",
             lang.pick(
-                "a3.t0 演習課題（全員共通）: warmup_display(gl, t) で 3 つの直方体を描く（カメラと光源は設定済み、t は秒）。",
-                "a3.t0 Warm-up (the same for everybody): draw three boxes in warmup_display(gl, t) (the camera and light are set; t in seconds)."
+                "a3.t0 演習課題（全員共通）: warmup_display(gl, t) で 3 つの直方体を描く（カメラと光源は設定済み、t は秒。メッシュは warmup_box()）。",
+                "a3.t0 Warm-up (the same for everybody): draw three boxes in warmup_display(gl, t) (the camera and light are set; t in seconds; the mesh is warmup_box())."
             )
         );
         for (i, o) in warmup_objects().iter().enumerate() {

@@ -8,7 +8,7 @@
 //! whole multiples of one unit, so the report can state their ratios (1 : 2, 2 : 3, …).
 //!
 //! Every assignment crate has the same shape (the command line and the tests rely on it):
-//! [`ID`], a per-student [`Spec`] drawn by [`variant`] and described by [`Spec::describe`], the
+//! [`ID`], a per-student [`Spec`] drawn by [`variant`] and described by [`SpecDescribe::describe`], the
 //! exercise API [`Impl`] (the functions a student writes, in `exercises/src/a3.rs`),
 //! [`checks`] and [`view`].
 //!
@@ -36,79 +36,24 @@ use cg_core::product::{Factor, MatrixProduct};
 use cg_core::scene::Scene;
 use cg_core::shapes;
 use cg_harness::{Text, VariantRng};
-use serde::Serialize;
+use easy_ext::ext;
 
+pub use cg_student::a3::{
+    CAMERA_DISTANCE, CAMERA_PITCH_DEG, DRIFT_FRAMES, FPS, Impl, LIGHT0_POSITION, Motion, Object,
+    PARAMS, SPHERE_SLICES, SPHERE_STACKS, Shape, Spec, State, Turn, WorldAxis, warmup_box,
+};
 pub use checks::checks;
+pub use describe::SpecDescribe;
 pub use oracle::{expected_model, model_product, warmup_model};
-
-/// The spec's numbers in JSON by their shortest decimal form (`0.6`, not the f64 widening
-/// `0.6000000238418579`), so tools and the report read the table's numbers.
-mod short {
-    use serde::Serializer;
-
-    fn widen(x: f32) -> f64 {
-        x.to_string().parse().unwrap_or(f64::from(x))
-    }
-
-    pub(crate) fn f32<S: Serializer>(x: &f32, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_f64(widen(*x))
-    }
-
-    pub(crate) fn vec3<S: Serializer>(v: &[f32; 3], s: S) -> Result<S::Ok, S::Error> {
-        s.collect_seq(v.iter().map(|&x| widen(x)))
-    }
-}
 
 /// The assignment's ID, the prefix of its task IDs (`a3.t1`, …).
 pub const ID: &str = "a3";
 
-/// Frames per second: one call of `idle` advances the time by 1/60 s.
-pub const FPS: u32 = 60;
-
-/// How many frames the drift check (`a3.t1.drift`) runs `idle` for: 10⁶ frames, about 4.6 hours
-/// of animation.
-pub const DRIFT_FRAMES: u64 = 1_000_000;
-
-/// How many motion parameters a [`State`] holds (two per object is enough for every motion).
-pub const PARAMS: usize = 8;
-
-/// The common camera (the sample program's): `glTranslatef(0, 0, -15)`, then
-/// `glRotatef(-camera_pitch, 1, 0, 0)` with `camera_pitch = -30°`.
-pub const CAMERA_DISTANCE: f32 = 15.0;
-
-/// The camera's pitch in degrees (the sample program's `camera_pitch`); the rotation is
-/// `Rx(-camera_pitch) = Rx(30°)`.
-pub const CAMERA_PITCH_DEG: f32 = -30.0;
-
-/// `GL_LIGHT0`'s position, set right after the camera so it stays fixed in the world.
-pub const LIGHT0_POSITION: [f32; 4] = [10.0, 10.0, 10.0, 1.0];
-
-/// A coordinate axis of the world (or of a parent's coordinate system).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum WorldAxis {
-    /// +X
-    X,
-    /// +Y (up)
-    Y,
-    /// +Z (towards the camera at the start)
-    Z,
-}
-
-impl WorldAxis {
-    /// The unit vector along the axis: `glRotatef(angle, x, y, z)` takes its components.
-    #[must_use]
-    pub fn vector(self) -> Vec3 {
-        match self {
-            WorldAxis::X => Vec3::X,
-            WorldAxis::Y => Vec3::Y,
-            WorldAxis::Z => Vec3::Z,
-        }
-    }
-
+/// Names of the axes, for the texts.
+#[ext(WorldAxisExt)]
+pub impl WorldAxis {
     /// `"X"`, `"Y"` or `"Z"`.
-    #[must_use]
-    pub fn name(self) -> &'static str {
+    fn name(self) -> &'static str {
         match self {
             WorldAxis::X => "X",
             WorldAxis::Y => "Y",
@@ -117,75 +62,18 @@ impl WorldAxis {
     }
 }
 
-/// Which way a rotation turns, seen from the positive end of its axis looking towards the origin.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Turn {
-    /// Counter-clockwise (反時計回り): the angle grows, as glRotatef with a positive angle.
-    Ccw,
-    /// Clockwise (時計回り): the angle shrinks.
-    Cw,
-}
-
-impl Turn {
-    /// `+1` for [`Turn::Ccw`], `-1` for [`Turn::Cw`]: the sign of the angle's growth.
-    #[must_use]
-    pub fn sign(self) -> f32 {
-        match self {
-            Turn::Ccw => 1.0,
-            Turn::Cw => -1.0,
-        }
-    }
-}
-
-/// A polygon model from the core's shapes, in model space centred on its origin.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum Shape {
-    /// 直方体: [`shapes::cuboid`] with these edge lengths along X, Y, Z.
-    Box {
-        /// Edge lengths along X, Y, Z.
-        #[serde(serialize_with = "short::vec3")]
-        size: [f32; 3],
-    },
-    /// 角すい: [`shapes::pyramid`], base at y = −height/2, apex at +height/2.
-    Pyramid {
-        /// Sides of the base polygon.
-        sides: u32,
-        /// Circumradius of the base.
-        #[serde(serialize_with = "short::f32")]
-        radius: f32,
-        /// Height.
-        #[serde(serialize_with = "short::f32")]
-        height: f32,
-    },
-    /// 球: [`shapes::uv_sphere`] with [`SPHERE_SLICES`] × [`SPHERE_STACKS`].
-    Sphere {
-        /// Radius.
-        #[serde(serialize_with = "short::f32")]
-        radius: f32,
-    },
-    /// 正八面体: [`shapes::octahedron`].
-    Octahedron {
-        /// Distance of the vertices from the centre.
-        #[serde(serialize_with = "short::f32")]
-        radius: f32,
-    },
-}
-
-/// Meridians of a [`Shape::Sphere`]'s mesh.
-pub const SPHERE_SLICES: u32 = 16;
-/// Bands of a [`Shape::Sphere`]'s mesh.
-pub const SPHERE_STACKS: u32 = 8;
-
-impl Shape {
-    /// The polygon model to draw: `gl.draw(&object.name, &object.shape.mesh())`.
+/// The polygon model of a [`Shape`], built from its parameters with the core's shapes (what
+/// fills [`Object::mesh`]).
+#[ext(ShapeExt)]
+pub impl Shape {
+    /// The polygon model to draw: [`shapes::cuboid`], [`shapes::pyramid`] (base at
+    /// y = −height/2, apex at +height/2), [`shapes::uv_sphere`] with [`SPHERE_SLICES`] ×
+    /// [`SPHERE_STACKS`], [`shapes::octahedron`].
     ///
     /// Every shape of the variant tables is valid; a shape with an invalid parameter (only
     /// possible when built by hand) gives the lecture's pyramid instead of panicking — see
-    /// [`Shape::try_mesh`].
-    #[must_use]
-    pub fn mesh(&self) -> Mesh {
+    /// [`ShapeExt::try_mesh`].
+    fn mesh(&self) -> Mesh {
         self.try_mesh().unwrap_or_else(|_| shapes::lecture_pyramid())
     }
 
@@ -193,7 +81,7 @@ impl Shape {
     ///
     /// # Errors
     /// A size, radius or height not finite and positive, or too few sides.
-    pub fn try_mesh(&self) -> Result<Mesh, shapes::ShapeError> {
+    fn try_mesh(&self) -> Result<Mesh, shapes::ShapeError> {
         match *self {
             Shape::Box { size } => shapes::cuboid(Vec3::from_array(size)),
             Shape::Pyramid { sides, radius, height } => shapes::pyramid(sides, radius, height),
@@ -203,8 +91,7 @@ impl Shape {
     }
 
     /// Half the shape's extent along Y (how high its centre is when it rests on the ground).
-    #[must_use]
-    pub fn half_height(&self) -> f32 {
+    fn half_height(&self) -> f32 {
         match *self {
             Shape::Box { size } => size[1] / 2.0,
             Shape::Pyramid { height, .. } => height / 2.0,
@@ -213,163 +100,24 @@ impl Shape {
     }
 }
 
-/// How an object moves. `t` is the time in seconds, `T` the period, `u = (t mod T) / T ∈ [0, 1)`
-/// the phase (how far into its period the motion is). Every angle is in degrees.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum Motion {
-    /// 回転運動 (spin): turns about an axis through `position`, parallel to `axis`:
-    /// `M = T(position) · R_axis(θ)`, `θ = ±360°·u` (0° at t = 0).
-    Spin {
-        /// Where the object's centre stays.
-        #[serde(serialize_with = "short::vec3")]
-        position: [f32; 3],
-        /// The axis it turns about.
-        axis: WorldAxis,
-        /// Which way.
-        turn: Turn,
-        /// One turn takes this long (s).
-        #[serde(serialize_with = "short::f32")]
-        period_s: f32,
-    },
-    /// 往復回転運動 (back-and-forth rotation): hangs `arm` below `pivot` and swings about an axis
-    /// through the pivot: `M = T(pivot) · R_axis(θ) · T(0, −arm, 0)`,
-    /// `θ = amplitude·sin(360°·u)` (0° at t = 0, first towards +amplitude). `arm = 0`: it turns
-    /// back and forth in place.
-    Swing {
-        /// The point it swings about.
-        #[serde(serialize_with = "short::vec3")]
-        pivot: [f32; 3],
-        /// The axis it swings about.
-        axis: WorldAxis,
-        /// The largest angle (°) either way.
-        #[serde(serialize_with = "short::f32")]
-        amplitude_deg: f32,
-        /// How far below the pivot its centre hangs (0: it turns in place).
-        #[serde(serialize_with = "short::f32")]
-        arm: f32,
-        /// One swing there and back takes this long (s).
-        #[serde(serialize_with = "short::f32")]
-        period_s: f32,
-    },
-    /// 放物往復移動運動 (parabolic back-and-forth motion): moves along `along` between the two
-    /// ends `center ∓ span/2`, hopping over a parabola of height `height` on the way there and
-    /// on the way back: `M = T(center) · T(s·along + y·Y)`, with `w = 2u` for `u < 1/2` and
-    /// `w = 2 − 2u` after (0 → 1 → 0, linear in t), `s = span·(w − 1/2)` and
-    /// `y = height·(1 − (2s/span)²) = 4·height·w·(1 − w)`. At t = 0 at the −end, at T/4 on top,
-    /// at T/2 at the +end, at 3T/4 on top again.
-    Hop {
-        /// The middle of the path, on the ground (the object rests there at height 0 + half its size).
-        #[serde(serialize_with = "short::vec3")]
-        center: [f32; 3],
-        /// The horizontal direction it moves along (X or Z).
-        along: WorldAxis,
-        /// The distance between the two ends.
-        #[serde(serialize_with = "short::f32")]
-        span: f32,
-        /// How high it hops above `center`.
-        #[serde(serialize_with = "short::f32")]
-        height: f32,
-        /// There and back takes this long (s).
-        #[serde(serialize_with = "short::f32")]
-        period_s: f32,
-    },
-    /// 公転 (orbit): goes round `center` on a horizontal circle of radius `radius`, turning with
-    /// it (the same face towards the centre): `M = T(center) · Ry(θ) · T(0, 0, radius)`,
-    /// `θ = ±360°·u`; at t = 0 at `center + (0, 0, radius)`, the camera's side.
-    Orbit {
-        /// The centre of the circle.
-        #[serde(serialize_with = "short::vec3")]
-        center: [f32; 3],
-        /// Its radius.
-        #[serde(serialize_with = "short::f32")]
-        radius: f32,
-        /// Which way, seen from above (+Y).
-        turn: Turn,
-        /// One round takes this long (s).
-        #[serde(serialize_with = "short::f32")]
-        period_s: f32,
-    },
-    /// 階層的な運動 (hierarchical motion): goes round its parent in the parent's coordinate
-    /// system (which moves and turns with the parent): `M = M_parent · Ry(φ) · T(0, 0, radius)`,
-    /// `φ = ±360°·u`; at t = 0 at `(0, 0, radius)` in the parent's coordinates.
-    Satellite {
-        /// The parent's index in [`Spec::objects`] (0-based: object 1 is 0). The parent comes
-        /// before its child and is never a satellite itself.
-        parent_index: usize,
-        /// The radius of the circle about the parent's centre.
-        #[serde(serialize_with = "short::f32")]
-        radius: f32,
-        /// Which way, seen from the parent's +Y.
-        turn: Turn,
-        /// One round (relative to the parent) takes this long (s).
-        #[serde(serialize_with = "short::f32")]
-        period_s: f32,
-    },
+/// An [`Object`] with its [`Object::mesh`] built from `shape` ([`ShapeExt::mesh`]): how the
+/// variant generator, the warm-up and tests make objects.
+#[must_use]
+pub fn new_object(
+    name: impl Into<String>,
+    shape: Shape,
+    color: [f32; 3],
+    motion: Motion,
+) -> Object {
+    Object { name: name.into(), shape, mesh: (&shape.mesh()).into(), color, motion }
 }
 
-impl Motion {
-    /// The period in seconds.
-    #[must_use]
-    pub fn period_s(&self) -> f32 {
-        match *self {
-            Motion::Spin { period_s, .. }
-            | Motion::Swing { period_s, .. }
-            | Motion::Hop { period_s, .. }
-            | Motion::Orbit { period_s, .. }
-            | Motion::Satellite { period_s, .. } => period_s,
-        }
-    }
-
-    /// The period in frames, `60 · period_s` (every period of the tables is a whole number of
-    /// frames); at least 1.
-    #[must_use]
-    pub fn period_frames(&self) -> u64 {
-        let frames = (f64::from(self.period_s()) * f64::from(FPS)).round();
-        if frames.is_finite() && frames >= 1.0 { frames as u64 } else { 1 }
-    }
-
-    /// The parent's index for a [`Motion::Satellite`], `None` otherwise.
-    #[must_use]
-    pub fn parent(&self) -> Option<usize> {
-        match *self {
-            Motion::Satellite { parent_index, .. } => Some(parent_index),
-            _ => None,
-        }
-    }
-}
-
-/// One object of the animation.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Object {
-    /// The name to draw it with: `gl.draw("object 1", &mesh)` (`"object 1"` … `"object 4"`).
-    pub name: String,
-    /// Its polygon model.
-    pub shape: Shape,
-    /// The colour to set with `gl.color(r, g, b)` before drawing it (not checked; it tells the
-    /// objects apart in the view).
-    #[serde(serialize_with = "short::vec3")]
-    pub color: [f32; 3],
-    /// How it moves.
-    pub motion: Motion,
-}
-
-/// What one student must build: 3 or 4 objects, one pair of them a parent and its child.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Spec {
-    /// The objects, object 1 first. A child ([`Motion::Satellite`]) comes right after its parent.
-    pub objects: Vec<Object>,
-    /// The unit of time (s): every period is a whole multiple of it (1, 2, 3 or 4 units, each
-    /// used once), so the ratios of the periods are those multiples.
-    #[serde(serialize_with = "short::f32")]
-    pub unit_s: f32,
-}
-
-impl Spec {
+/// What the kit derives from a spec's periods.
+#[ext(SpecExt)]
+pub impl Spec {
     /// Each object's period as a multiple of the shortest common unit: the ratios the report
     /// states (`[2, 1, 4]` for 2 : 1 : 4).
-    #[must_use]
-    pub fn period_ratios(&self) -> Vec<u64> {
+    fn period_ratios(&self) -> Vec<u64> {
         let frames: Vec<u64> = self.objects.iter().map(|o| o.motion.period_frames()).collect();
         let g = frames.iter().copied().fold(0, gcd).max(1);
         frames.iter().map(|f| f / g).collect()
@@ -377,18 +125,9 @@ impl Spec {
 
     /// After how many seconds the whole animation repeats (the least common multiple of the
     /// periods).
-    #[must_use]
-    pub fn common_period_s(&self) -> f64 {
+    fn common_period_s(&self) -> f64 {
         let l = self.objects.iter().map(|o| o.motion.period_frames()).fold(1, lcm);
         l as f64 / f64::from(FPS)
-    }
-
-    /// The indices of `parent`'s children.
-    #[must_use]
-    pub fn children(&self, parent: usize) -> Vec<usize> {
-        (0..self.objects.len())
-            .filter(|&i| self.objects[i].motion.parent() == Some(parent))
-            .collect()
     }
 }
 
@@ -402,44 +141,6 @@ pub(crate) fn lcm(a: u64, b: u64) -> u64 {
     if a == 0 || b == 0 { 0 } else { (a / gcd(a, b)).saturating_mul(b) }
 }
 
-/// The animation's state: what `idle` changes and `display` reads (the course's global
-/// variables). `State::default()` is the start: frame 0, every parameter 0.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct State {
-    /// Frames since the start: `idle` adds 1 each call. The time is `frame / 60` s
-    /// ([`State::time_s`]).
-    pub frame: u64,
-    /// The motion parameters (運動を表す媒介変数) that `idle` computes and `display` reads —
-    /// yours to lay out (the reference uses `params[2·i]` and `params[2·i + 1]` for object
-    /// `i + 1`: an angle in degrees, or the offset and height of a hop).
-    pub params: [f32; PARAMS],
-}
-
-impl State {
-    /// The start: frame 0, every parameter 0.
-    #[must_use]
-    pub fn new() -> State {
-        State::default()
-    }
-
-    /// The time in seconds, `frame / 60`, in f64 (exact enough for 10⁶ frames and far beyond).
-    #[must_use]
-    pub fn time_s(&self) -> f64 {
-        self.frame as f64 / f64::from(FPS)
-    }
-}
-
-/// The functions a student writes (see `exercises/src/a3.rs`).
-#[derive(Clone, Copy, Debug)]
-pub struct Impl {
-    /// a3.t0: draws the warm-up's three boxes at time `t` (s); the camera and light are set.
-    pub warmup_display: fn(&mut Gl, f64),
-    /// a3.t1: advances `state` by one frame and computes its motion parameters.
-    pub idle: fn(&Spec, &mut State),
-    /// a3.t2: draws the frame of `state`: camera, light and every object.
-    pub display: fn(&Spec, &State, &mut Gl),
-}
-
 /// The common camera as the report writes it: `T(0, 0, -15) · Rx(30°)`.
 #[must_use]
 pub fn camera_product() -> MatrixProduct {
@@ -449,8 +150,9 @@ pub fn camera_product() -> MatrixProduct {
 }
 
 /// Sets the common camera and the light, as the warm-up's `display()` does before the boxes:
-/// `glLoadIdentity`, `T(0, 0, -15)`, `Rx(30°)`, `glLightfv(GL_LIGHT0, GL_POSITION, (10, 10, 10, 1))`.
-pub(crate) fn camera_and_light(gl: &mut Gl) {
+/// `glLoadIdentity`, `T(0, 0, -15)`, `Rx(30°)`, `glLightfv(GL_LIGHT0, GL_POSITION, (10, 10, 10, 1))`
+/// — on the student's recorder, so the call numbers of a replayed frame count them.
+pub(crate) fn camera_and_light(gl: &mut cg_student::gl::Gl) {
     gl.load_identity();
     gl.translate(0.0, 0.0, -CAMERA_DISTANCE);
     gl.rotate(-CAMERA_PITCH_DEG, 1.0, 0.0, 0.0);
@@ -609,12 +311,12 @@ pub fn variant(rng: &mut VariantRng) -> Spec {
                 (shape, Motion::Orbit { center: [0.0, LIFT, 0.0], radius, turn, period_s })
             }
         };
-        objects.push(Object {
-            name: format!("object {}", i + 1),
+        objects.push(new_object(
+            format!("object {}", i + 1),
             shape,
-            color: COLORS[i % COLORS.len()],
+            COLORS[i % COLORS.len()],
             motion,
-        });
+        ));
     }
     Spec { objects, unit_s }
 }
@@ -625,41 +327,41 @@ pub fn variant(rng: &mut VariantRng) -> Spec {
 pub fn warmup_objects() -> Vec<Object> {
     let shape = Shape::Box { size: [1.2, 0.6, 0.6] };
     vec![
-        Object {
-            name: "box 1".to_owned(),
+        new_object(
+            "box 1",
             shape,
-            color: COLORS[0],
-            motion: Motion::Spin {
+            COLORS[0],
+            Motion::Spin {
                 position: [-3.0, 1.0, 0.0],
                 axis: WorldAxis::Y,
                 turn: Turn::Ccw,
                 period_s: 4.0,
             },
-        },
-        Object {
-            name: "box 2".to_owned(),
+        ),
+        new_object(
+            "box 2",
             shape,
-            color: COLORS[1],
-            motion: Motion::Swing {
+            COLORS[1],
+            Motion::Swing {
                 pivot: [0.0, 1.0, 0.0],
                 axis: WorldAxis::Z,
                 amplitude_deg: 30.0,
                 arm: 0.0,
                 period_s: 2.0,
             },
-        },
-        Object {
-            name: "box 3".to_owned(),
+        ),
+        new_object(
+            "box 3",
             shape,
-            color: COLORS[2],
-            motion: Motion::Hop {
+            COLORS[2],
+            Motion::Hop {
                 center: [3.0, 0.3, 0.0],
                 along: WorldAxis::X,
                 span: 2.0,
                 height: 1.5,
                 period_s: 2.0,
             },
-        },
+        ),
     ]
 }
 
@@ -679,9 +381,17 @@ fn run_idle(spec: &Spec, imp: &Impl, frames: u64) -> State {
 #[must_use]
 pub fn record_frame(spec: &Spec, imp: &Impl, frames: u64) -> Gl {
     let state = run_idle(spec, imp, frames);
-    let mut gl = Gl::new();
-    (imp.display)(spec, &state, &mut gl);
-    gl
+    let mut rec = cg_student::gl::Gl::new();
+    (imp.display)(spec, &state, &mut rec);
+    replay(&rec)
+}
+
+/// A student's recorded frame replayed on the kit's [`Gl`]: the draws (with their model-view
+/// matrices), lights and stack errors the same calls give in OpenGL. This assignment draws no
+/// course objects.
+#[must_use]
+pub fn replay(recorded: &cg_student::gl::Gl) -> Gl {
+    Gl::replay(recorded, &|_| {})
 }
 
 /// The longest time [`view`] animates to (s): 10⁶ frames.
@@ -710,10 +420,10 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
 /// The warm-up's frame at time `t` (s): the camera and light set, then `warmup_display`.
 #[must_use]
 pub fn warmup_frame(imp: &Impl, t: f64) -> Gl {
-    let mut gl = Gl::new();
-    camera_and_light(&mut gl);
-    (imp.warmup_display)(&mut gl, t);
-    gl
+    let mut rec = cg_student::gl::Gl::new();
+    camera_and_light(&mut rec);
+    (imp.warmup_display)(&mut rec, t);
+    replay(&rec)
 }
 
 /// The warm-up's three boxes at time `t` (s), drawn like [`view`].
@@ -869,12 +579,36 @@ mod tests {
     }
 
     #[test]
+    fn the_students_warmup_box_is_the_cores_cuboid() {
+        let core = shapes::cuboid(Vec3::new(1.2, 0.6, 0.6)).unwrap();
+        let student = warmup_box();
+        assert_eq!(student.positions, core.positions);
+        assert_eq!(student.faces, core.faces);
+        assert!(cg_core::mesh::Mesh::from(&student).validate().is_clean());
+        for object in warmup_objects() {
+            assert_eq!(object.mesh, student, "{}", object.name);
+        }
+    }
+
+    #[test]
+    fn every_object_carries_its_shapes_mesh() {
+        for n in 0..50 {
+            let spec = spec_of(20_260_000 + n);
+            for o in &spec.objects {
+                let mesh = o.shape.mesh();
+                assert_eq!(o.mesh.positions, mesh.positions, "{o:?}");
+                assert_eq!(o.mesh.faces, mesh.faces, "{o:?}");
+            }
+        }
+    }
+
+    #[test]
     fn the_view_rejects_bad_times() {
-        fn nothing(_: &mut Gl, _: f64) {}
+        fn nothing(_: &mut cg_student::gl::Gl, _: f64) {}
         fn idle(_: &Spec, s: &mut State) {
             s.frame += 1;
         }
-        fn display(_: &Spec, _: &State, _: &mut Gl) {}
+        fn display(_: &Spec, _: &State, _: &mut cg_student::gl::Gl) {}
         let imp = Impl { warmup_display: nothing, idle, display };
         let spec = spec_of(12_345_678);
         assert!(view(&spec, &imp, -1.0).is_err());

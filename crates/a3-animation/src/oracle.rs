@@ -208,7 +208,7 @@ pub(crate) fn local_product(motion: &Motion, n: usize, u: f64) -> MatrixProduct 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Shape, Turn, warmup_objects};
+    use crate::{Shape, Turn, new_object, warmup_objects};
 
     fn close(a: DMat4, b: DMat4) -> bool {
         a.abs_diff_eq(b, 1e-5)
@@ -224,12 +224,7 @@ mod tests {
         assert!(at(0.25).abs_diff_eq(DVec3::new(1.5, 1.0, 0.0), 1e-12));
         // The symbolic product multiplies out to the same matrix.
         let spec = Spec {
-            objects: vec![Object {
-                name: "object 1".into(),
-                shape: Shape::Sphere { radius: 0.4 },
-                color: [1.0; 3],
-                motion: m,
-            }],
+            objects: vec![new_object("object 1", Shape::Sphere { radius: 0.4 }, [1.0; 3], m)],
             unit_s: 1.0,
         };
         let p = model_product(&spec, 0, 60);
@@ -268,12 +263,7 @@ mod tests {
             Motion::Orbit { center: [0.0, 1.0, 0.0], radius: 2.0, turn: Turn::Ccw, period_s: 4.0 };
         let child =
             Motion::Satellite { parent_index: 0, radius: 1.0, turn: Turn::Cw, period_s: 2.0 };
-        let o = |m| Object {
-            name: "o".into(),
-            shape: Shape::Sphere { radius: 0.3 },
-            color: [1.0; 3],
-            motion: m,
-        };
+        let o = |m| new_object("o", Shape::Sphere { radius: 0.3 }, [1.0; 3], m);
         let spec = Spec { objects: vec![o(parent), o(child)], unit_s: 2.0 };
         for frame in [0, 17, 60, 100, 239] {
             let p = expected_model(&spec, 0, frame);

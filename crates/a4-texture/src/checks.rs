@@ -12,15 +12,16 @@
 use cg_core::glam::{DVec2, Vec2};
 use cg_core::lang::Lang;
 use cg_core::notation::decimal;
-use cg_core::texture::{Sampler, Wrap};
 use cg_harness::CheckResult;
 use cg_harness::check::{self, Failure};
 use cg_harness::text::{Text, t};
 
 use crate::prepared::{CELLS, cell_name, column_name};
-use crate::spec::{CORNER_STEPS, Corner, GroundCorner, Spec};
+use crate::spec::{
+    CORNER_STEPS, Corner, GroundCorner, RegionExt, RegionOracle, Spec, SpecExt, SpecOracle,
+};
 use crate::view::{Coordinates, coordinates};
-use crate::{Impl, SQUARES, TexRange};
+use crate::{Impl, SQUARES, Sampler, TexRange, Wrap};
 
 /// `a4.t1`'s tolerance.
 const TOL_RANGE: f32 = 1e-6;

@@ -22,54 +22,69 @@
 //! | repeat | by the coordinates: `repeat × repeat` blocks of `10 / repeat` squares, each showing the whole region; the vertices on a block's edge belong to two blocks and so to two coordinates. GL_REPEAT cannot do this (it repeats the *whole* image), so the wrap mode is GL_CLAMP_TO_EDGE |
 //!
 //! Every assignment crate has the same shape (the command line and the tests rely on it):
-//! [`ID`], a per-student [`Spec`] drawn by [`variant`] and described by [`Spec::describe`], the
+//! [`ID`], a per-student [`Spec`] drawn by [`variant`] and described by [`SpecExt::describe`], the
 //! exercise API [`Impl`], [`checks`] and [`view`].
+//!
+//! The plain data a student sees ([`Spec`], [`Region`], [`TexRange`], [`Sampler`], [`Impl`], the
+//! constants [`CELLS`], [`SQUARES`], [`CORNER_STEPS`]) lives in [`cg_student::a4`] and is
+//! re-exported here; what is worked out from it (cell names, pixels, where each corner lands, the
+//! assignment text) is this crate's, as the extension traits [`RegionExt`] and [`SpecExt`], and
+//! `cg assignment --json` shows the spec through [`Presented`] / [`serialize_spec`].
 
 mod checks;
+mod json;
 mod prepared;
 mod spec;
 mod view;
 
-use cg_core::glam::Vec2;
-use cg_core::texture::Sampler;
-use serde::Serialize;
-
+pub use cg_student::a4::{Filter, Impl, SQUARES, Sampler, TexRange, Wrap};
 pub use checks::checks;
+pub use json::{Presented, serialize_spec};
 pub use prepared::{
     CELL_PIXELS, CELLS, FRAME_COLOR, IMAGE_PIXELS, INK_COLOR, cell_color, cell_name, column_name,
     prepared_image,
 };
-pub use spec::{CORNER_STEPS, Corner, GroundCorner, Region, Spec, variant};
+pub use spec::{CORNER_STEPS, Corner, GroundCorner, Region, RegionExt, Spec, SpecExt, variant};
 pub use view::{Coordinates, coordinates, ground_mesh, view};
 
 /// The assignment's ID, the prefix of its task IDs (`a4.t1`, …).
 pub const ID: &str = "a4";
 
-/// Squares along each side of the course's ground (10 × 10, one unit each).
-pub const SQUARES: u32 = 10;
-
-/// A rectangle in texture coordinates: `s` from `s_min` to `s_max` (left to right), `t` from
-/// `t_min` to `t_max` (bottom to top). `(0, 0)` is the image's bottom-left corner.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
-pub struct TexRange {
-    /// The left edge (`s` of the region's left side).
-    pub s_min: f32,
-    /// The right edge.
-    pub s_max: f32,
-    /// The bottom edge (`t` of the region's bottom side).
-    pub t_min: f32,
-    /// The top edge.
-    pub t_max: f32,
+/// The kit's sampler for a student's [`Sampler`] (`a4.t3`): the same filter and wrap modes as
+/// [`cg_core::texture::Sampler`], which the renderer and the report use.
+#[must_use]
+pub fn core_sampler(s: Sampler) -> cg_core::texture::Sampler {
+    let filter = match s.filter {
+        Filter::Nearest => cg_core::texture::Filter::Nearest,
+        Filter::Bilinear => cg_core::texture::Filter::Bilinear,
+    };
+    let wrap = |w: Wrap| match w {
+        Wrap::Repeat => cg_core::texture::Wrap::Repeat,
+        Wrap::Clamp => cg_core::texture::Wrap::Clamp,
+    };
+    cg_core::texture::Sampler { filter, wrap_u: wrap(s.wrap_u), wrap_v: wrap(s.wrap_v) }
 }
 
-/// The functions a student writes (see `exercises/src/a4.rs`).
-#[derive(Clone, Copy, Debug)]
-pub struct Impl {
-    /// `a4.t1`: the region's texture-coordinate range.
-    pub tex_range: fn(&Spec) -> TexRange,
-    /// `a4.t2`: the texture coordinates of the corners of square `(i, j)` (`i, j = 0…9`), in the
-    /// order of [`CORNER_STEPS`].
-    pub tex_coords: fn(&Spec, u32, u32) -> [Vec2; 4],
-    /// `a4.t3`: the sampler (filter, wrap modes).
-    pub sampler: fn() -> Sampler,
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cg_core::texture as core;
+
+    #[test]
+    fn the_students_sampler_becomes_the_kits_mode_for_mode() {
+        assert_eq!(core_sampler(Sampler::default()), core::Sampler::default());
+        let s = Sampler { filter: Filter::Nearest, wrap_u: Wrap::Clamp, wrap_v: Wrap::Repeat };
+        let want = core::Sampler {
+            filter: core::Filter::Nearest,
+            wrap_u: core::Wrap::Clamp,
+            wrap_v: core::Wrap::Repeat,
+        };
+        assert_eq!(core_sampler(s), want);
+        let s = Sampler { filter: Filter::Bilinear, wrap_u: Wrap::Repeat, wrap_v: Wrap::Clamp };
+        assert_eq!(core_sampler(s).filter, core::Filter::Bilinear);
+        assert_eq!(
+            (core_sampler(s).wrap_u, core_sampler(s).wrap_v),
+            (core::Wrap::Repeat, core::Wrap::Clamp)
+        );
+    }
 }

@@ -19,8 +19,7 @@
 
 use cg_core::texture::Texture;
 
-/// Cells along each side of the prepared image (columns A–H, rows 1–8).
-pub const CELLS: u32 = 8;
+pub use cg_student::a4::CELLS;
 /// Pixels (texels) along each side of one cell.
 pub const CELL_PIXELS: u32 = 64;
 /// Pixels along each side of the prepared image.

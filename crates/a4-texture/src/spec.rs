@@ -7,7 +7,10 @@ use cg_core::glam::{DVec2, Vec2};
 use cg_core::lang::Lang;
 use cg_harness::VariantRng;
 use cg_harness::text::{Text, t};
-use serde::{Serialize, Serializer};
+use easy_ext::ext;
+use serde::Serialize;
+
+pub use cg_student::a4::{CORNER_STEPS, Region, Spec};
 
 use crate::prepared::{CELL_PIXELS, CELLS, IMAGE_PIXELS, cell_name, column_name};
 use crate::{SQUARES, TexRange};
@@ -40,36 +43,22 @@ const ORIENTATIONS: [(u32, bool); 12] = [
     (270, true),
 ];
 
-/// A rectangle of cells of the prepared image, counted like a spreadsheet: `column` 0 is `A`
-/// (left), `row` 0 is row `1` (**top**).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct Region {
-    /// The leftmost column (0 = `A`).
-    pub column: u32,
-    /// The top row (0 = row `1`, the image's top row of cells).
-    pub row: u32,
-    /// How many columns (≥ 1).
-    pub columns: u32,
-    /// How many rows (≥ 1).
-    pub rows: u32,
-}
-
-impl Region {
+/// The region's cell names and pixels, worked out from its plain data
+/// ([`cg_student::a4::Region`]): what the assignment text and the messages print.
+#[ext(RegionExt)]
+pub impl Region {
     /// The top-left cell's name (`C4`).
-    #[must_use]
-    pub fn first(&self) -> String {
+    fn first(&self) -> String {
         cell_name(self.column, self.row)
     }
 
     /// The bottom-right cell's name (`D5`).
-    #[must_use]
-    pub fn last(&self) -> String {
+    fn last(&self) -> String {
         cell_name(self.column + self.columns - 1, self.row + self.rows - 1)
     }
 
     /// The region as a spreadsheet range, `C4–D5` (one cell: `C4`).
-    #[must_use]
-    pub fn name(&self) -> String {
+    fn name(&self) -> String {
         if self.columns == 1 && self.rows == 1 {
             self.first()
         } else {
@@ -78,8 +67,7 @@ impl Region {
     }
 
     /// The cell at one of the region's corners.
-    #[must_use]
-    pub fn corner_cell(&self, corner: Corner) -> String {
+    fn corner_cell(&self, corner: Corner) -> String {
         let (x, y) = corner.xy();
         let column = self.column + x * (self.columns - 1);
         // Up in the image (y = 1) is the region's *top* row.
@@ -89,8 +77,7 @@ impl Region {
 
     /// The region in pixels, measured from the image's **top-left** corner as image viewers do:
     /// `[x_from, y_from, x_to, y_to]` (pixel edges; `x_to − x_from` pixels wide).
-    #[must_use]
-    pub fn pixels(&self) -> [u32; 4] {
+    fn pixels(&self) -> [u32; 4] {
         [
             self.column * CELL_PIXELS,
             self.row * CELL_PIXELS,
@@ -98,40 +85,19 @@ impl Region {
             (self.row + self.rows) * CELL_PIXELS,
         ]
     }
+}
 
+/// The oracle of `a4.t1`, for the checks only.
+#[ext(RegionOracle)]
+pub(crate) impl Region {
     /// The region's texture-coordinate range, exact (multiples of 1/8): the oracle of `a4.t1`,
     /// worked from the pixels (`s = x / 512`, `t = 1 − y / 512` since `y` counts from the top).
-    pub(crate) fn range(&self) -> TexRange {
+    fn range(&self) -> TexRange {
         let [x0, y0, x1, y1] = self.pixels();
         let size = f64::from(IMAGE_PIXELS);
         let s = |x: u32| (f64::from(x) / size) as f32;
         let t = |y: u32| (1.0 - f64::from(y) / size) as f32;
         TexRange { s_min: s(x0), s_max: s(x1), t_min: t(y1), t_max: t(y0) }
-    }
-}
-
-impl Serialize for Region {
-    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        #[derive(Serialize)]
-        struct Json {
-            first: String,
-            last: String,
-            column: u32,
-            row: u32,
-            columns: u32,
-            rows: u32,
-            pixels: [u32; 4],
-        }
-        Json {
-            first: self.first(),
-            last: self.last(),
-            column: self.column,
-            row: self.row,
-            columns: self.columns,
-            rows: self.rows,
-            pixels: self.pixels(),
-        }
-        .serialize(serializer)
     }
 }
 
@@ -254,67 +220,6 @@ impl GroundCorner {
     }
 }
 
-/// What one student must build: which region of the prepared image goes onto the ground, turned
-/// which way, repeated how often.
-///
-/// As JSON (`cg assignment --json`) it also lists, under `corners`, where each corner of the
-/// region lands — the table the assignment text prints.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Spec {
-    /// The region of the prepared image (cells, counted from the top-left like a spreadsheet).
-    pub region: Region,
-    /// How far the region is turned, counter-clockwise as seen from the course's camera (from
-    /// above): 0, 90, 180 or 270 degrees. At 0 (unmirrored) the region stands upright in front of
-    /// the camera: its top away from the camera (−z), its right to the right (+x).
-    pub rotation_deg: u32,
-    /// Whether the region is mirrored left to right before it is turned (its names then read
-    /// as mirror writing).
-    pub mirrored: bool,
-    /// How many times the region repeats along each side of the ground (1, 2 or 5): the ground's
-    /// 10 × 10 squares form `repeat × repeat` blocks of `10/repeat` squares a side, and each
-    /// block shows the whole region the same way.
-    pub repeat: u32,
-}
-
-impl Serialize for Spec {
-    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        #[derive(Serialize)]
-        struct CornerJson {
-            corner: Corner,
-            cell: String,
-            ground: GroundCorner,
-            vertex: (u32, u32),
-        }
-        #[derive(Serialize)]
-        struct Json {
-            region: Region,
-            rotation_deg: u32,
-            mirrored: bool,
-            repeat: u32,
-            corners: Vec<CornerJson>,
-        }
-        Json {
-            region: self.region,
-            rotation_deg: self.rotation_deg,
-            mirrored: self.mirrored,
-            repeat: self.repeat,
-            corners: Corner::ALL
-                .into_iter()
-                .map(|corner| {
-                    let ground = self.ground_corner_of(corner);
-                    CornerJson {
-                        corner,
-                        cell: self.region.corner_cell(corner),
-                        ground,
-                        vertex: ground.vertex(),
-                    }
-                })
-                .collect(),
-        }
-        .serialize(serializer)
-    }
-}
-
 /// The student's variant, drawn from the frozen stream of their number and table version.
 ///
 /// Table version 1 draws, in this order: the repeat count from [1, 1, 2, 5]; the region's width
@@ -333,12 +238,10 @@ pub fn variant(rng: &mut VariantRng) -> Spec {
     Spec { region: Region { column, row, columns, rows }, rotation_deg, mirrored, repeat }
 }
 
-impl Spec {
-    /// Ground squares along each side of one block (`10 / repeat`).
-    pub(crate) fn block(&self) -> u32 {
-        SQUARES / self.repeat.clamp(1, SQUARES)
-    }
-
+/// What the spec's plain data ([`cg_student::a4::Spec`]) means: where each corner of the region
+/// lands, and the assignment text.
+#[ext(SpecExt)]
+pub impl Spec {
     /// The ground corner (of the ground, and of every block) where the region's `corner` lands:
     /// the table of the assignment text.
     ///
@@ -346,8 +249,7 @@ impl Spec {
     /// region's centre `(±1, ±1)` is mirrored (x → −x), then turned counter-clockwise in quarter
     /// turns `(x, y) → (−y, x)`, as the camera sees the ground: screen right is +x (i grows),
     /// screen up is −z (j shrinks).
-    #[must_use]
-    pub fn ground_corner_of(&self, corner: Corner) -> GroundCorner {
+    fn ground_corner_of(&self, corner: Corner) -> GroundCorner {
         let (x, y) = corner.xy();
         let (mut dx, mut dy) = (2 * x as i32 - 1, 2 * y as i32 - 1);
         if self.mirrored {
@@ -362,84 +264,15 @@ impl Spec {
     }
 
     /// The region's corner that lands on ground corner `g` (and on that corner of every block).
-    #[must_use]
-    pub fn corner_at(&self, g: GroundCorner) -> Corner {
+    fn corner_at(&self, g: GroundCorner) -> Corner {
         Corner::ALL
             .into_iter()
             .find(|&c| self.ground_corner_of(c) == g)
             .unwrap_or(Corner::BottomLeft)
     }
 
-    /// The texture coordinate of the region's `corner`.
-    pub(crate) fn corner_coord(&self, corner: Corner) -> Vec2 {
-        let r = self.region.range();
-        let (x, y) = corner.xy();
-        Vec2::new(if x == 0 { r.s_min } else { r.s_max }, if y == 0 { r.t_min } else { r.t_max })
-    }
-
-    /// The expected texture coordinate at `(p, q)` of a block (`0..=1` along i and j), in f64:
-    /// the bilinear blend of the coordinates its four corners must have.
-    pub(crate) fn expected_at(&self, p: f64, q: f64) -> DVec2 {
-        let at = |g: GroundCorner| self.corner_coord(self.corner_at(g)).as_dvec2();
-        let (c00, c10, c11, c01) = (
-            at(GroundCorner::FarLeft),
-            at(GroundCorner::FarRight),
-            at(GroundCorner::NearRight),
-            at(GroundCorner::NearLeft),
-        );
-        c00 * ((1.0 - p) * (1.0 - q))
-            + c10 * (p * (1.0 - q))
-            + c11 * (p * q)
-            + c01 * ((1.0 - p) * q)
-    }
-
-    /// What `a4.t2` must return for square `(i, j)`: its corners in drawing order, from the
-    /// f64 oracle.
-    #[cfg(test)]
-    pub(crate) fn expected_square(&self, i: u32, j: u32) -> [Vec2; 4] {
-        let k = f64::from(self.block());
-        CORNER_STEPS.map(|(di, dj)| {
-            let p = f64::from(i % self.block() + di) / k;
-            let q = f64::from(j % self.block() + dj) / k;
-            self.expected_at(p, q).as_vec2()
-        })
-    }
-
-    /// The orientation in words: `turned 90° counter-clockwise…`.
-    fn orientation_text(&self, lang: Lang) -> String {
-        let turn = match (self.rotation_deg, lang) {
-            (90, Lang::Ja) => {
-                "カメラから（上から）見て反時計回りに 90° 回す（画像の上が左、−x の向き）"
-            }
-            (90, Lang::En) => {
-                "turned 90° counter-clockwise as seen from the camera (from above): the image's top points left (−x)"
-            }
-            (180, Lang::Ja) => "180° 回す（画像の上が手前、+z の向き）",
-            (180, Lang::En) => "turned 180°: the image's top points towards the camera (+z)",
-            (270, Lang::Ja) => {
-                "カメラから（上から）見て時計回りに 90° 回す（画像の上が右、+x の向き）"
-            }
-            (270, Lang::En) => {
-                "turned 90° clockwise as seen from the camera (from above): the image's top points right (+x)"
-            }
-            (_, Lang::Ja) => "回さない（カメラから見て正立。画像の上が奥、−z の向き）",
-            (_, Lang::En) => {
-                "not turned: upright as seen from the camera, the image's top away from it (−z)"
-            }
-        };
-        match (self.mirrored, lang) {
-            (false, Lang::Ja) => format!("左右反転なし、{turn}"),
-            (false, Lang::En) => format!("not mirrored, {turn}"),
-            (true, Lang::Ja) => format!("左右反転（名前が鏡文字に見える）してから、{turn}"),
-            (true, Lang::En) => {
-                format!("mirrored left to right (the names read as mirror writing), then {turn}")
-            }
-        }
-    }
-
     /// The assignment text for this variant, in `lang`.
-    #[must_use]
-    pub fn describe(&self, lang: Lang) -> String {
+    fn describe(&self, lang: Lang) -> String {
         let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
         let r = &self.region;
         let [x0, y0, x1, y1] = r.pixels();
@@ -598,10 +431,81 @@ impl Spec {
     }
 }
 
-/// The corners of square `(i, j)` in drawing order as `(di, dj)` steps from vertex `(i, j)`:
-/// `(i, j), (i, j+1), (i+1, j+1), (i+1, j)`, counter-clockwise seen from above, as
-/// `cg_core::shapes::grid` splits it into `{0, 1, 2}` and `{0, 2, 3}`.
-pub const CORNER_STEPS: [(u32, u32); 4] = [(0, 0), (0, 1), (1, 1), (1, 0)];
+/// The oracle of `a4.t2`, for the checks only.
+#[ext(SpecOracle)]
+pub(crate) impl Spec {
+    /// Ground squares along each side of one block (`10 / repeat`).
+    fn block(&self) -> u32 {
+        SQUARES / self.repeat.clamp(1, SQUARES)
+    }
+
+    /// The texture coordinate of the region's `corner`.
+    fn corner_coord(&self, corner: Corner) -> Vec2 {
+        let r = self.region.range();
+        let (x, y) = corner.xy();
+        Vec2::new(if x == 0 { r.s_min } else { r.s_max }, if y == 0 { r.t_min } else { r.t_max })
+    }
+
+    /// The expected texture coordinate at `(p, q)` of a block (`0..=1` along i and j), in f64:
+    /// the bilinear blend of the coordinates its four corners must have.
+    fn expected_at(&self, p: f64, q: f64) -> DVec2 {
+        let at = |g: GroundCorner| self.corner_coord(self.corner_at(g)).as_dvec2();
+        let (c00, c10, c11, c01) = (
+            at(GroundCorner::FarLeft),
+            at(GroundCorner::FarRight),
+            at(GroundCorner::NearRight),
+            at(GroundCorner::NearLeft),
+        );
+        c00 * ((1.0 - p) * (1.0 - q))
+            + c10 * (p * (1.0 - q))
+            + c11 * (p * q)
+            + c01 * ((1.0 - p) * q)
+    }
+
+    /// What `a4.t2` must return for square `(i, j)`: its corners in drawing order, from the
+    /// f64 oracle.
+    #[cfg(test)]
+    fn expected_square(&self, i: u32, j: u32) -> [Vec2; 4] {
+        let k = f64::from(self.block());
+        CORNER_STEPS.map(|(di, dj)| {
+            let p = f64::from(i % self.block() + di) / k;
+            let q = f64::from(j % self.block() + dj) / k;
+            self.expected_at(p, q).as_vec2()
+        })
+    }
+
+    /// The orientation in words: `turned 90° counter-clockwise…`.
+    fn orientation_text(&self, lang: Lang) -> String {
+        let turn = match (self.rotation_deg, lang) {
+            (90, Lang::Ja) => {
+                "カメラから（上から）見て反時計回りに 90° 回す（画像の上が左、−x の向き）"
+            }
+            (90, Lang::En) => {
+                "turned 90° counter-clockwise as seen from the camera (from above): the image's top points left (−x)"
+            }
+            (180, Lang::Ja) => "180° 回す（画像の上が手前、+z の向き）",
+            (180, Lang::En) => "turned 180°: the image's top points towards the camera (+z)",
+            (270, Lang::Ja) => {
+                "カメラから（上から）見て時計回りに 90° 回す（画像の上が右、+x の向き）"
+            }
+            (270, Lang::En) => {
+                "turned 90° clockwise as seen from the camera (from above): the image's top points right (+x)"
+            }
+            (_, Lang::Ja) => "回さない（カメラから見て正立。画像の上が奥、−z の向き）",
+            (_, Lang::En) => {
+                "not turned: upright as seen from the camera, the image's top away from it (−z)"
+            }
+        };
+        match (self.mirrored, lang) {
+            (false, Lang::Ja) => format!("左右反転なし、{turn}"),
+            (false, Lang::En) => format!("not mirrored, {turn}"),
+            (true, Lang::Ja) => format!("左右反転（名前が鏡文字に見える）してから、{turn}"),
+            (true, Lang::En) => {
+                format!("mirrored left to right (the names read as mirror writing), then {turn}")
+            }
+        }
+    }
+}
 
 #[cfg(test)]
 mod tests {

@@ -96,7 +96,7 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
         Err(other) => return Err(panicked("a4.t2 tex_coords", other)),
     };
     let sampler = match guarded(imp.sampler) {
-        Ok(s) => s,
+        Ok(s) => crate::core_sampler(s),
         Err(Outcome::NotDone { .. }) => Sampler::default(),
         Err(other) => return Err(panicked("a4.t3 sampler", other)),
     };

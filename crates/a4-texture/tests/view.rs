@@ -2,10 +2,13 @@
 //! solution) passes every check, and the rasterizer draws, at the ground points the picture says,
 //! the cells the assignment asks for; a flipped answer visibly puts other cells there.
 
-use cg_a4::{CELL_PIXELS, Corner, IMAGE_PIXELS, Impl, Region, Spec, TexRange, cell_color};
+use cg_a4::{
+    CELL_PIXELS, Corner, Filter, IMAGE_PIXELS, Impl, Region, RegionExt, Sampler, Spec, SpecExt,
+    TexRange, Wrap, cell_color,
+};
 use cg_core::glam::{Vec2, Vec3, Vec4};
 use cg_core::scene::Scene;
-use cg_core::texture::{Filter, Sampler, TexEnv, Wrap};
+use cg_core::texture::TexEnv;
 
 /// Cells C4–D5, upright, once over the ground: s = 2/8 … 4/8, t = 3/8 … 5/8.
 fn spec() -> Spec {

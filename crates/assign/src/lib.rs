@@ -12,6 +12,10 @@
 //! table = 1
 //! ```
 
+use cg_a1::SpecDescribe as _;
+use cg_a2::SpecExt as _;
+use cg_a3::SpecDescribe as _;
+use cg_a4::SpecExt as _;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -33,6 +37,7 @@ pub struct Assignment {
     /// 3. アニメーション
     pub a3: cg_a3::Spec,
     /// 4. テクスチャマッピング
+    #[serde(serialize_with = "cg_a4::serialize_spec")]
     pub a4: cg_a4::Spec,
     /// 第11回 シェーディング
     pub s: cg_shading::Spec,

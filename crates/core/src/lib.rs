@@ -44,6 +44,7 @@ pub mod product;
 pub mod scene;
 pub mod shapes;
 pub mod stack;
+pub mod student;
 pub mod texture;
 pub mod transform;
 

@@ -9,6 +9,8 @@ use std::fmt;
 
 use glam::{Mat4, Vec3};
 
+use cg_student::product as student;
+
 use crate::transform::{self, TransformError};
 
 /// A number in a factor: its value and, optionally, the variable it stands for in the report
@@ -197,13 +199,13 @@ impl Factor {
     /// T(v), glTranslatef(v.x, v.y, v.z), with plain numbers.
     #[must_use]
     pub fn translate(v: Vec3) -> Factor {
-        Factor::Translate([Param::num(v.x), Param::num(v.y), Param::num(v.z)])
+        student::Factor::translate(v).into()
     }
 
     /// S(v), glScalef(v.x, v.y, v.z), with plain numbers.
     #[must_use]
     pub fn scale(v: Vec3) -> Factor {
-        Factor::Scale([Param::num(v.x), Param::num(v.y), Param::num(v.z)])
+        student::Factor::scale(v).into()
     }
 
     /// R(angle) about `axis`, with the angle in degrees as a [`Param`] (for symbols).
@@ -215,19 +217,19 @@ impl Factor {
     /// Rx(angle_deg), glRotatef(angle_deg, 1, 0, 0).
     #[must_use]
     pub fn rotate_x_deg(angle_deg: f32) -> Factor {
-        Factor::rotate(Axis::X, Param::num(angle_deg))
+        student::Factor::rotate_x_deg(angle_deg).into()
     }
 
     /// Ry(angle_deg), glRotatef(angle_deg, 0, 1, 0).
     #[must_use]
     pub fn rotate_y_deg(angle_deg: f32) -> Factor {
-        Factor::rotate(Axis::Y, Param::num(angle_deg))
+        student::Factor::rotate_y_deg(angle_deg).into()
     }
 
     /// Rz(angle_deg), glRotatef(angle_deg, 0, 0, 1).
     #[must_use]
     pub fn rotate_z_deg(angle_deg: f32) -> Factor {
-        Factor::rotate(Axis::Z, Param::num(angle_deg))
+        student::Factor::rotate_z_deg(angle_deg).into()
     }
 
     /// R(angle_deg, axis), glRotatef(angle_deg, x, y, z). An axis along +X, +Y or +Z (any
@@ -236,29 +238,20 @@ impl Factor {
     /// Other axes are kept as given and checked by [`Factor::matrix`], not here.
     #[must_use]
     pub fn rotate_deg(angle_deg: f32, axis: Vec3) -> Factor {
-        let along = |a: f32, b: f32, c: f32| a > 0.0 && a.is_finite() && b == 0.0 && c == 0.0;
-        let axis = if along(axis.x, axis.y, axis.z) {
-            Axis::X
-        } else if along(axis.y, axis.z, axis.x) {
-            Axis::Y
-        } else if along(axis.z, axis.x, axis.y) {
-            Axis::Z
-        } else {
-            Axis::Any(axis)
-        };
-        Factor::rotate(axis, Param::num(angle_deg))
+        // One rule for the kit and the students' recorder: cg_student's.
+        student::Factor::rotate_deg(angle_deg, axis).into()
     }
 
     /// P(fovy, aspect, near, far) with wgpu's `[0, 1]` depth; checked by [`Factor::matrix`].
     #[must_use]
     pub fn perspective(fovy_deg: f32, aspect: f32, near: f32, far: f32) -> Factor {
-        Factor::Perspective { fovy_deg, aspect, near, far, gl_depth: false }
+        student::Factor::perspective(fovy_deg, aspect, near, far).into()
     }
 
     /// P(fovy, aspect, near, far) with OpenGL's `[-1, 1]` depth (gluPerspective's matrix).
     #[must_use]
     pub fn perspective_gl(fovy_deg: f32, aspect: f32, near: f32, far: f32) -> Factor {
-        Factor::Perspective { fovy_deg, aspect, near, far, gl_depth: true }
+        student::Factor::perspective_gl(fovy_deg, aspect, near, far).into()
     }
 
     /// Any matrix, printed as `name` in products.

@@ -26,6 +26,10 @@ use crate::model::{Derived, PolygonData};
 use crate::parse::{self, ParseProblem};
 use crate::template::{self, Format};
 use crate::verify::{self, Verification};
+use cg_a1::SpecDescribe as _;
+use cg_a2::SpecExt as _;
+use cg_a3::SpecDescribe as _;
+use cg_a4::SpecExt as _;
 
 /// The report commands.
 #[derive(Clone, Debug, clap::Subcommand)]

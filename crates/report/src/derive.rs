@@ -30,6 +30,12 @@ use cg_harness::check::{Outcome, guarded, stub_message};
 use crate::model::{
     AnimationData, CameraData, Derived, NamedMatrix, PolygonData, TexRow, TextureData,
 };
+use cg_a1::ShapeExt as _;
+use cg_a2::SpecExt as _;
+use cg_a3::SpecExt as _;
+use cg_a3::WorldAxisExt as _;
+use cg_a4::RegionExt as _;
+use cg_a4::SpecExt as _;
 
 // ---------------------------------------------------------------------------------------------
 // The student's functions, and what could not be derived
@@ -214,7 +220,7 @@ fn polygon_part(spec: &cg_a1::Spec, imp: &cg_a1::Impl) -> Part<PolygonData> {
             None
         }
     };
-    let transform = match guarded(|| (imp.model_transform)(spec)) {
+    let transform = match guarded(|| MatrixProduct::from((imp.model_transform)(spec))) {
         Ok(p) => match p.matrix() {
             Ok(_) => Some(p),
             Err(e) => {
@@ -600,9 +606,9 @@ fn state_finite(s: &CameraState) -> bool {
 /// The student's view matrix at `state`: what `camera()` multiplies onto a fresh context.
 fn record_camera(imp: &cg_a2::Impl, state: &CameraState) -> Result<MatrixProduct, Outcome> {
     guarded(|| {
-        let mut gl = Gl::new();
-        (imp.camera)(&mut gl, state);
-        gl.model_view().clone()
+        let mut rec = cg_student::gl::Gl::new();
+        (imp.camera)(&mut rec, state);
+        cg_a2::replay(&rec).model_view().clone()
     })
 }
 
@@ -1118,9 +1124,9 @@ fn animation_part(spec: &cg_a3::Spec, imp: &cg_a3::Impl) -> Part<AnimationData> 
         }
         done = frame;
         match guarded(|| {
-            let mut gl = Gl::new();
-            (imp.display)(spec, &state, &mut gl);
-            gl
+            let mut rec = cg_student::gl::Gl::new();
+            (imp.display)(spec, &state, &mut rec);
+            cg_a3::replay(&rec)
         }) {
             Ok(gl) => recorded.push((frame, gl)),
             Err(o) => return (Err(Missing::from_outcome("a3.t2", "display()", o)), notes),
@@ -1470,7 +1476,7 @@ fn texture_part(spec: &cg_a4::Spec, imp: &cg_a4::Impl) -> Part<TextureData> {
             formula: texture_formula(spec),
             region: (Vec2::new(range.s_min, range.t_min), Vec2::new(range.s_max, range.t_max)),
             image,
-            sampler,
+            sampler: sampler.map(cg_a4::core_sampler),
             texels_per_square,
         }),
         missing,
@@ -1538,7 +1544,8 @@ mod tests {
         vec![Vec3::Y; 6]
     }
 
-    fn placement(spec: &cg_a1::Spec) -> MatrixProduct {
+    fn placement(spec: &cg_a1::Spec) -> cg_student::product::MatrixProduct {
+        use cg_student::product::{Factor, MatrixProduct};
         let p = spec.placement;
         MatrixProduct::identity()
             .then(Factor::translate(Vec3::new(p.x, p.y, p.z)))
@@ -1551,7 +1558,7 @@ mod tests {
     }
 
     #[allow(clippy::panic)]
-    fn transform_panics(_: &cg_a1::Spec) -> MatrixProduct {
+    fn transform_panics(_: &cg_a1::Spec) -> cg_student::product::MatrixProduct {
         panic!("index out of bounds")
     }
 
@@ -1569,7 +1576,7 @@ mod tests {
         assert_eq!(p.vertices, pyramid_vertices(&spec));
         assert_eq!(p.faces, pyramid_faces(&spec));
         assert_eq!(p.student_normals, Some(vec![Vec3::Y; 6]));
-        assert_eq!(p.transform, Some(placement(&spec)));
+        assert_eq!(p.transform, Some(placement(&spec).into()));
         // The oracle: (Vb − Va) × (Vc − Va) / |…| in f64 from the numbers written above.
         let v = [
             DVec3::new(1.0, 0.0, 0.0),
@@ -1694,8 +1701,8 @@ mod tests {
         [0.0, 1.0, 2.0, 3.0].map(|c| Vec2::new((10 * i + j) as f32, c))
     }
 
-    fn sampler() -> cg_core::texture::Sampler {
-        cg_core::texture::Sampler::default()
+    fn sampler() -> cg_a4::Sampler {
+        cg_a4::Sampler::default()
     }
 
     fn a4_spec() -> cg_a4::Spec {
@@ -1770,7 +1777,7 @@ mod tests {
     }
 
     #[allow(clippy::todo)]
-    fn sampler_todo() -> cg_core::texture::Sampler {
+    fn sampler_todo() -> cg_a4::Sampler {
         todo!("a4.t3: the sampler")
     }
 
@@ -1822,11 +1829,8 @@ mod tests {
 
     /// Object 1 spins about Y at (1, 1, 0), once in 2 s; object 2 orbits, but is never drawn.
     fn a3_spec() -> cg_a3::Spec {
-        let object = |name: &str, motion| cg_a3::Object {
-            name: name.to_owned(),
-            shape: cg_a3::Shape::Sphere { radius: 0.3 },
-            color: [1.0; 3],
-            motion,
+        let object = |name: &str, motion| {
+            cg_a3::new_object(name, cg_a3::Shape::Sphere { radius: 0.3 }, [1.0; 3], motion)
         };
         cg_a3::Spec {
             objects: vec![
@@ -1859,7 +1863,7 @@ mod tests {
     }
 
     /// The course's camera, then object 1 only, with plain glTranslatef / glRotatef numbers.
-    fn a3_display(_: &cg_a3::Spec, state: &cg_a3::State, gl: &mut Gl) {
+    fn a3_display(_: &cg_a3::Spec, state: &cg_a3::State, gl: &mut cg_student::gl::Gl) {
         gl.load_identity();
         gl.translate(0.0, 0.0, -15.0);
         gl.rotate(30.0, 1.0, 0.0, 0.0);
@@ -1867,11 +1871,11 @@ mod tests {
         gl.push_matrix();
         gl.translate(1.0, 1.0, 0.0);
         gl.rotate(state.params[0], 0.0, 1.0, 0.0);
-        gl.draw("Object_1", &cg_core::shapes::lecture_pyramid());
+        gl.draw("Object_1", &(&cg_core::shapes::lecture_pyramid()).into());
         gl.pop_matrix();
     }
 
-    fn no_warmup(_: &mut Gl, _: f64) {}
+    fn no_warmup(_: &mut cg_student::gl::Gl, _: f64) {}
 
     #[test]
     fn an_object_not_drawn_is_left_out_and_the_others_derive() {

@@ -3,7 +3,9 @@
 //! Every assignment crate has the same shape (the command line and the tests rely on it):
 //! [`ID`], a per-student [`Spec`] drawn by [`variant`] and described by [`Spec::describe`], the
 //! exercise API [`Impl`] (the functions a student writes, in `exercises/src/s.rs`),
-//! [`checks`] and [`view`].
+//! [`checks`] and [`view`]. [`Impl`], [`Pixel`] and [`Shading`] are the students' own types
+//! (`cg_student::s`), re-exported; the renderer's [`cg_core::scene::Shading`] converts with
+//! [`kit_shading`] and [`student_shading`].
 //!
 //! ## The tasks
 //!
@@ -37,10 +39,7 @@
 //! from the shading mode, the face normal, the vertex normals and the weights. A correct
 //! `shade_pixel` reproduces the renderer's own images; the checks compare them.
 
-use cg_core::Rgb;
-use cg_core::glam::Vec3;
 use cg_core::lang::Lang;
-use cg_core::mesh::Mesh;
 use cg_core::scene::Scene;
 use cg_harness::{CheckResult, Text, VariantRng};
 
@@ -54,63 +53,30 @@ mod view;
 
 pub use checks::kit_rule;
 
-pub use cg_core::scene::Shading;
+pub use cg_student::s::{Impl, Pixel, Shading};
 pub use spec::Spec;
 
 /// The assignment's ID, the prefix of its task IDs (`s.t1`, …).
 pub const ID: &str = "s";
 
-/// What `shade_pixel` (s.t6) knows about one pixel of a triangle, everything in world space
-/// (ワールド座標系), where the light is.
-///
-/// The corners are the face's corners in its own order (`F { V0, V1, V2 }` of the report); the
-/// weights say how much of each corner there is at the pixel (画素と頂点の距離により決まるウェイト):
-/// `w₀ + w₁ + w₂ = 1`, each in `[0, 1]`, already corrected for perspective — the weights the
-/// renderer itself interpolates with.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Pixel {
-    /// The corner positions P₀, P₁, P₂.
-    pub positions: [Vec3; 3],
-    /// The vertex normals N₀, N₁, N₂ at the corners (頂点の法線), unit length.
-    pub normals: [Vec3; 3],
-    /// The face normal (面の法線), unit length.
-    pub face_normal: Vec3,
-    /// The weights w₀, w₁, w₂ of the corners at this pixel.
-    pub weights: [f32; 3],
+/// The kit's shading mode (the renderer's [`cg_core::scene::Shading`]) for the student's `mode`.
+#[must_use]
+pub fn kit_shading(mode: Shading) -> cg_core::scene::Shading {
+    match mode {
+        Shading::Flat => cg_core::scene::Shading::Flat,
+        Shading::Gouraud => cg_core::scene::Shading::Gouraud,
+        Shading::Phong => cg_core::scene::Shading::Phong,
+    }
 }
 
-/// The functions a student writes (see `exercises/src/s.rs`), as plain function pointers.
-///
-/// Every vector is in world space; colours and reflectances are RGB ([`Rgb`]); angles are in
-/// degrees where the name says `_deg`.
-#[derive(Clone, Copy, Debug)]
-pub struct Impl {
-    /// s.t1 環境光: `ambient(ia, ka) = Ia·ka`.
-    pub ambient: fn(ia: Rgb, ka: Rgb) -> Rgb,
-    /// s.t2 拡散反射光: `diffuse(ii, kd, n, l) = Iᵢ·kd·max(N·L, 0)`.
-    pub diffuse: fn(ii: Rgb, kd: Rgb, n: Vec3, l: Vec3) -> Rgb,
-    /// s.t3 鏡面反射光: `specular(ii, ks, n, l, v, shininess) = Iᵢ·ks·max(R·V, 0)ⁿ`, 0 where
-    /// `N·L ≤ 0`.
-    pub specular: fn(ii: Rgb, ks: Rgb, n: Vec3, l: Vec3, v: Vec3, shininess: f32) -> Rgb,
-    /// s.t4 減衰: `attenuation(kc, kl, kq, d) = 1/(kc + kl·d + kq·d²)`.
-    pub attenuation: fn(kc: f32, kl: f32, kq: f32, d: f32) -> f32,
-    /// s.t4 スポットライト: the factor of a spot light with axis `spot_direction`, cut-off
-    /// `cutoff_deg` and `exponent` for a point that sees the light in direction `l`.
-    pub spot_factor: fn(l: Vec3, spot_direction: Vec3, cutoff_deg: f32, exponent: f32) -> f32,
-    /// s.t5 頂点の法線: the plain average of the adjacent face normals, one per vertex.
-    pub vertex_normals: fn(mesh: &Mesh) -> Vec<Vec3>,
-    /// s.t5 頂点の法線: the area-weighted average (面の面積に応じて加重平均).
-    pub vertex_normals_area: fn(mesh: &Mesh) -> Vec<Vec3>,
-    /// s.t6 フラット／グロー／フォン: the colour of one pixel in shading mode `mode`; `light(p, n)`
-    /// is the lighting stage (光源処理): the colour, clamped to `[0, 1]`, that the scene's light
-    /// gives a point `p` with unit normal `n`.
-    // Spelled out as the student writes it in exercises/src/s.rs (a type alias would hide it).
-    #[allow(clippy::type_complexity)]
-    pub shade_pixel: fn(mode: Shading, pixel: &Pixel, light: &dyn Fn(Vec3, Vec3) -> Rgb) -> Rgb,
-    /// s.t7 鏡面反射: the mirror direction of `i` about `n`.
-    pub reflect: fn(i: Vec3, n: Vec3) -> Vec3,
-    /// s.t8 屈折: the refracted direction by Snell's law, `None` under total internal reflection.
-    pub refract: fn(i: Vec3, n: Vec3, n1: f32, n2: f32) -> Option<Vec3>,
+/// The student's shading mode ([`Shading`], what `shade_pixel` is given) for the kit's `mode`.
+#[must_use]
+pub fn student_shading(mode: cg_core::scene::Shading) -> Shading {
+    match mode {
+        cg_core::scene::Shading::Flat => Shading::Flat,
+        cg_core::scene::Shading::Gouraud => Shading::Gouraud,
+        cg_core::scene::Shading::Phong => Shading::Phong,
+    }
 }
 
 /// The student's variant, drawn from the frozen stream of their number and table version (see
@@ -150,4 +116,17 @@ pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
 pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
     let _ = time_s;
     view::view(spec, imp)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_shading_modes_convert_both_ways() {
+        for mode in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+            assert_eq!(student_shading(kit_shading(mode)), mode);
+            assert_eq!(format!("{:?}", kit_shading(mode)), format!("{mode:?}"));
+        }
+    }
 }

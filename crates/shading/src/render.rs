@@ -26,12 +26,12 @@ use cg_core::light::{LightModel, Material, shade};
 use cg_core::math::try_normalize;
 use cg_core::mesh::Mesh;
 use cg_core::normals::{face_normal, face_split};
-use cg_core::scene::{Camera, NormalSource, Object, Projection, Scene, Shading, TextureUse};
+use cg_core::scene::{Camera, NormalSource, Object, Projection, Scene, TextureUse};
 use cg_core::texture::{Filter, Sampler, TexEnv, Texture, Wrap};
 use cg_core::transform::transform_point;
 use cg_raster::{Options, RenderError, SurfacePoint};
 
-use crate::Pixel;
+use crate::{Pixel, Shading, kit_shading};
 
 /// One face as the renderer sees it, in world space.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -145,7 +145,7 @@ pub fn gbuffer(scene: &Scene, width: u32, height: u32) -> Result<GBuffer, Render
     }
     let unlit = |_: &Scene, point: &SurfacePoint<'_>| point.material.kd;
     let options = |shading| Options {
-        shading: Some(shading),
+        shading: Some(kit_shading(shading)),
         size: Some((width, height)),
         ..Options::default()
     };
@@ -165,12 +165,13 @@ pub fn gbuffer(scene: &Scene, width: u32, height: u32) -> Result<GBuffer, Render
 
 /// The renderer's own image of `scene`, lit by the scene's light model
 /// ([`cg_raster::SceneLighting`]), in shading mode `mode` (`None`: the scene's), at the scene's
-/// size.
+/// size. `mode` is the student's [`Shading`], converted with [`kit_shading`].
 ///
 /// # Errors
 /// What keeps the scene from being drawn ([`RenderError`]).
 pub fn kit_image(scene: &Scene, mode: Option<Shading>) -> Result<Image, RenderError> {
-    cg_raster::render(scene, &Options { shading: mode, ..Options::default() }).map(|o| o.image)
+    let shading = mode.map(kit_shading);
+    cg_raster::render(scene, &Options { shading, ..Options::default() }).map(|o| o.image)
 }
 
 /// The lighting stage of the kit for one material of `scene`: `light(p, n)` is the scene's
@@ -283,7 +284,7 @@ pub fn screen(image: &Image, name: &str) -> Result<Scene, cg_core::texture::Text
         light_model: LightModel::OpenGl { local_viewer: false },
         global_ambient: Rgb::ZERO,
         lights: Vec::new(),
-        shading: Shading::Flat,
+        shading: cg_core::scene::Shading::Flat,
         cull_back_faces: true,
         objects: vec![Object {
             name: "screen".to_owned(),

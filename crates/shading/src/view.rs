@@ -10,6 +10,7 @@ use cg_core::scene::Scene;
 use cg_harness::Text;
 use cg_harness::check::guarded;
 use cg_raster::{Options, RenderError};
+use cg_student::mesh::Mesh as StudentMesh;
 
 use crate::render::{compose, gbuffer, saturate, screen};
 use crate::scenes::{STAGE_SPHERES, material, sphere_mesh, stage_scene};
@@ -60,7 +61,7 @@ pub(crate) fn view(spec: &Spec, imp: &Impl) -> Result<Scene, Text> {
     let base = cg_raster::render(&scene, &Options::default()).map_err(|e| text(&e))?.image;
 
     let mesh = sphere_mesh(spec);
-    let mut normals = (imp.vertex_normals)(&mesh);
+    let mut normals = (imp.vertex_normals)(&StudentMesh::from(&mesh));
     normals.resize(mesh.positions.len(), Vec3::ZERO);
 
     let terms = Terms::of(imp);

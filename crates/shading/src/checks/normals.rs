@@ -11,6 +11,7 @@ use cg_core::normals::{Weighting, vertex_normals};
 use cg_core::shapes::{cuboid, lecture_pyramid};
 use cg_harness::check::Failure;
 use cg_harness::text::{Text, t};
+use cg_student::mesh::Mesh as StudentMesh;
 
 use crate::inputs::{max_diff, num, vec};
 use crate::scenes::sphere_mesh;
@@ -127,8 +128,8 @@ fn compare(
                     "NaN (or infinite). Normalising the normal of a zero-area face (a zero vector) gives NaN.",
                 ),
                 t(
-                    "cg_core::normals::face_normal(a, b, c) は面積 0 の面で None を返します。None の面は飛ばします。最後の正規化には normalize_or_zero() を使います。",
-                    "cg_core::normals::face_normal(a, b, c) returns None for a zero-area face: skip those. Normalise the sums with normalize_or_zero().",
+                    "面の法線は外積 (b−a)×(c−a) を正規化したものです。面積 0 の面では外積がゼロベクトルなので、(b - a).cross(c - a).try_normalize() が None になります。その面は飛ばします。最後の正規化には normalize_or_zero() を使います。",
+                    "the face normal is the cross product (b−a)×(c−a) normalised; for a zero-area face that cross product is the zero vector and (b - a).cross(c - a).try_normalize() gives None: skip those faces. Normalise the sums with normalize_or_zero().",
                 ),
             )
         } else if e == Vec3::ZERO {
@@ -213,7 +214,7 @@ fn compare(
 
 pub(super) fn average(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     for (name, mesh) in meshes(spec) {
-        let got = (imp.vertex_normals)(&mesh);
+        let got = (imp.vertex_normals)(&StudentMesh::from(&mesh));
         compare(&name, &mesh, &got, Weighting::Uniform, Weighting::Area)?;
     }
     Ok(())
@@ -221,7 +222,7 @@ pub(super) fn average(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 
 pub(super) fn area_weighted(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     for (name, mesh) in meshes(spec) {
-        let got = (imp.vertex_normals_area)(&mesh);
+        let got = (imp.vertex_normals_area)(&StudentMesh::from(&mesh));
         compare(&name, &mesh, &got, Weighting::Area, Weighting::Uniform)?;
     }
     Ok(())
@@ -229,7 +230,7 @@ pub(super) fn area_weighted(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 
 pub(super) fn degenerate(imp: &Impl) -> Result<(), Failure> {
     let mesh = degenerate_fan();
-    let got = (imp.vertex_normals)(&mesh);
+    let got = (imp.vertex_normals)(&StudentMesh::from(&mesh));
     compare(
         &t("面積 0 の面を含む扇形（単純平均）", "fan with zero-area faces (plain average)"),
         &mesh,
@@ -237,7 +238,7 @@ pub(super) fn degenerate(imp: &Impl) -> Result<(), Failure> {
         Weighting::Uniform,
         Weighting::Area,
     )?;
-    let got = (imp.vertex_normals_area)(&mesh);
+    let got = (imp.vertex_normals_area)(&StudentMesh::from(&mesh));
     compare(
         &t("面積 0 の面を含む扇形（面積の加重平均）", "fan with zero-area faces (area-weighted)"),
         &mesh,
