@@ -531,8 +531,8 @@ fn yaw_wraps(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             ))
             .cause(cause)
             .hint(t(
-                "camera_yaw = (camera_yaw + 変化量).rem_euclid(360.0); か cg_core::math::wrap_degrees を使えます",
-                "camera_yaw = (camera_yaw + change).rem_euclid(360.0); or cg_core::math::wrap_degrees does it",
+                "camera_yaw = (camera_yaw + 変化量).rem_euclid(360.0); で折り返します（丸めで 360.0 になったら 0）",
+                "camera_yaw = (camera_yaw + change).rem_euclid(360.0); wraps it (make a rounded 360.0 a 0)",
             )));
         }
         s = after;
