@@ -307,7 +307,12 @@ fn view(id: &str, a: &Assignment, impls: &Impls) -> Result<Result<Scene, Text>, 
         "a1" => cg_a1::view(&a.a1, &impls.a1, 0.0),
         "a2" => cg_a2::view(&a.a2, &impls.a2, 0.0),
         "a3" => cg_a3::view(&a.a3, &impls.a3, 1.0),
-        _ => cg_a4::view(&a.a4, &impls.a4, 0.0),
+        "a4" => cg_a4::view(&a.a4, &impls.a4, 0.0),
+        // Never another assignment's picture under this one's name.
+        other => Err(Text::new(
+            format!("課題 {other} の描画はありません"),
+            format!("assignment {other} has no picture"),
+        )),
     })
 }
 
@@ -571,4 +576,21 @@ pub fn check(args: &CheckArgs, kit: &Kit, lang: Lang) -> Result<CheckOutcome, St
     let g = gather(&args.source, kit, lang)?;
     let verification = verify::verify(&parsed, &g.derived);
     Ok(CheckOutcome { report, problems, verification, missing: g.context.missing })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_assignment_without_a_picture_is_named_not_drawn_as_another() {
+        let a = Assignment::for_student(
+            &"12345678".parse::<cg_harness::StudentNumber>().expect("a student number"),
+            cg_harness::TableVersion::V1,
+        );
+        let impls = Impls::exercises();
+        let Ok(Err(why)) = view("a5", &a, &impls) else { panic!("a5 must not be drawn") };
+        assert_eq!(why.en, "assignment a5 has no picture");
+        assert!(why.ja.contains("a5"));
+    }
 }
