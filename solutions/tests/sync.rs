@@ -1,6 +1,6 @@
 //! The student's stubs in `exercises/` are exactly what `solutions/` generates (its `BEGIN
 //! SOLUTION` blocks removed, its `BEGIN STUB` blocks uncommented). Regenerate them with
-//! `cargo run -- sync-stubs` (or run this test with `CG_BLESS=1`).
+//! `cargo run --release -- sync-stubs` (or run this test with `CG_BLESS=1`).
 
 use std::path::Path;
 
@@ -15,7 +15,7 @@ fn exercises_are_the_stubs_the_solutions_generate() {
         cg_harness::stubs::out_of_sync(&solutions, &exercises).unwrap_or_else(|e| panic!("{e}"));
     assert!(
         stale.is_empty(),
-        "exercises/ differs from what solutions/ generates in {stale:?}: run `cargo run -- sync-stubs` (never edit exercises/ by hand in the kit's own repository)"
+        "exercises/ differs from what solutions/ generates in {stale:?}: run `cargo run --release -- sync-stubs` (never edit exercises/ by hand in the kit's own repository)"
     );
 }
 

@@ -212,12 +212,12 @@ fn changes_by_amount(spec: &Spec, imp: &Impl, var: Var, op: &Operation) -> Resul
             .cause(amount_cause(spec, imp, var, op, &s, actual_change, expected_change))
             .hint(t(
                 &format!(
-                    "motion() で {} のドラッグのときに {} としてください（課題文: cargo run -- assignment --only a2）",
+                    "motion() で {} のドラッグのときに {} としてください（課題文: cargo run --release -- assignment --only a2）",
                     show::gesture(op.gesture, cg_core::lang::Lang::Ja),
                     show::formula(var, op)
                 ),
                 &format!(
-                    "in motion(), on a {} drag do {} (your assignment text: cargo run -- assignment --only a2)",
+                    "in motion(), on a {} drag do {} (your assignment text: cargo run --release -- assignment --only a2)",
                     show::gesture(op.gesture, cg_core::lang::Lang::En),
                     show::formula(var, op)
                 ),

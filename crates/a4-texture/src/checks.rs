@@ -760,8 +760,8 @@ fn orientation(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     .at(place)
     .cause(cause)
     .hint(t(
-        "課題の表の 4 隅から、画像の右（s が増える向き）と上（t が増える向き）が地面のどちらを向くかを図に描いて確かめる。cargo run -- view a4 で名前と矢印を見る",
-        "draw which way the image's right (s growing) and top (t growing) point on the ground, from the 4 corners in your assignment's table; look at the names and arrows with cargo run -- view a4",
+        "課題の表の 4 隅から、画像の右（s が増える向き）と上（t が増える向き）が地面のどちらを向くかを図に描いて確かめる。cargo run --release -- view a4 で名前と矢印を見る",
+        "draw which way the image's right (s growing) and top (t growing) point on the ground, from the 4 corners in your assignment's table; look at the names and arrows with cargo run --release -- view a4",
     )))
 }
 
