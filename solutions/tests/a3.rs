@@ -677,7 +677,7 @@ fn the_view_draws_the_objects_on_the_ground() {
 fn the_spec_json_has_the_tables_numbers() {
     for s in STUDENTS {
         let student: StudentNumber = s.parse().unwrap();
-        let json = cg_assign::Assignment::for_student(&student, TableVersion::V1).to_json()["a3"]
+        let json = cg_assign::Variants::for_student(&student, TableVersion::V1).to_json()["a3"]
             .to_string();
         assert!(!json.contains("0000000") && !json.contains("9999999"), "{json}");
         assert!(json.contains("\"period_s\"") && json.contains("\"unit_s\""), "{json}");

@@ -25,7 +25,7 @@ const STUDENTS: [&str; 10] = [
 
 fn spec_of(student: &str) -> Spec {
     let number = student.parse().expect("a valid student number");
-    cg_assign::Assignment::for_student(&number, TableVersion::V1).a4
+    cg_assign::Variants::for_student(&number, TableVersion::V1).a4
 }
 
 fn specs() -> Vec<(String, Spec)> {

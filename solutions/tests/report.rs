@@ -5,11 +5,12 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use cg_assign::Assignment;
+use cg_assign::Impls;
+use cg_assign::Variants;
 use cg_core::lang::Lang;
 use cg_harness::{StudentNumber, TableVersion};
 use cg_report::app::{self, DeriveArgs, FillArgs, Kit, Source};
-use cg_report::derive::{self, Impls};
+use cg_report::derive;
 use cg_report::fill::{self, Context};
 use cg_report::parse;
 use cg_report::template::{self, Format};
@@ -18,21 +19,16 @@ use cg_report::verify;
 const STUDENTS: [&str; 4] = ["20250000", "20250003", "20250017", "12345678"];
 
 fn impls() -> Impls {
-    Impls {
-        a1: cg_solutions::a1::implementation(),
-        a2: cg_solutions::a2::implementation(),
-        a3: cg_solutions::a3::implementation(),
-        a4: cg_solutions::a4::implementation(),
-    }
+    cg_assign::impls!(cg_solutions)
 }
 
 fn kit() -> Kit {
     Kit { impls: impls(), student_file: || PathBuf::from("/nonexistent/student.toml") }
 }
 
-fn assignment(student: &str) -> Assignment {
+fn assignment(student: &str) -> Variants {
     let n: StudentNumber = student.parse().unwrap();
-    Assignment::for_student(&n, TableVersion::LATEST)
+    Variants::for_student(&n, TableVersion::LATEST)
 }
 
 /// The filled Markdown report of a correct student, with its derived data.
@@ -69,13 +65,13 @@ fn a_filled_report_reads_back_and_every_number_follows_from_the_data() {
                 "Wrap: GL_CLAMP_TO_EDGE (Wrap::Clamp) along s, GL_CLAMP_TO_EDGE",
             );
             assert!(text.contains(wrap), "{student} {lang}: no sampler line");
-            let p = derived.polygon.as_ref().unwrap();
+            let p = derived.a1.as_ref().unwrap();
             assert_eq!(parsed.vertices.len(), p.vertices.len(), "{student}: every vertex row read");
             assert_eq!(parsed.faces.len(), p.faces.len(), "{student}: every face row read");
             assert_eq!(parsed.tex.len(), 121, "{student}: every grid vertex read");
-            let camera = derived.camera.as_ref().unwrap().matrices.len();
+            let camera = derived.a2.as_ref().unwrap().matrices.len();
             let animation: usize =
-                derived.animation.as_ref().unwrap().objects.iter().map(|o| o.1.len()).sum();
+                derived.a3.as_ref().unwrap().objects.iter().map(|o| o.1.len()).sum();
             assert_eq!(
                 parsed.matrices.len(),
                 1 + camera + animation,
@@ -120,7 +116,7 @@ fn tuple_text(s: &str) -> Vec<f64> {
 fn planted_mistakes_are_named_exactly_and_nothing_else() {
     for student in STUDENTS {
         let (text, derived) = filled(student, Lang::En);
-        let p = derived.polygon.as_ref().unwrap();
+        let p = derived.a1.as_ref().unwrap();
 
         // 1. A wrong normal: F1's normal, its first component moved by 0.2.
         let line = text.lines().find(|l| l.starts_with("| F1 |")).unwrap().to_owned();
@@ -140,7 +136,7 @@ fn planted_mistakes_are_named_exactly_and_nothing_else() {
         );
 
         // 3. A wrong matrix entry: the first view matrix, row 1 column 4 (the x translation).
-        let id = derived.camera.as_ref().unwrap().matrices[0].id.clone();
+        let id = derived.a2.as_ref().unwrap().matrices[0].id.clone();
         let tag = format!("<!-- cg: {id} -->");
         let lines: Vec<&str> = text.lines().collect();
         let tag_at = lines.iter().position(|l| l.contains(&tag)).unwrap();

@@ -8,36 +8,34 @@
 //! name the variables and multiply out to the numeric ones.
 
 use cg_a1::ShapeExt as _;
+use cg_a2::report::{camera, camera_drags};
 use cg_a2::{CameraState, Drag, DragAxis, Operation};
 use cg_a3::SpecExt as _;
+use cg_a3::report::{animation, animation_times};
 use cg_a4::RegionExt as _;
 use cg_a4::SpecExt as _;
-use cg_assign::Assignment;
+use cg_assign::Impls;
+use cg_assign::Variants;
 use cg_core::glam::{DVec2, DVec3, Mat4, Vec2};
 use cg_core::product::{Factor, MatrixProduct, Param};
 use cg_harness::{StudentNumber, TableVersion};
-use cg_report::derive::{Impls, animation, animation_times, camera, camera_drags, derive};
+use cg_report::derive::derive;
 use cg_report::model::{NamedMatrix, TextureData};
 
 /// The reference answers.
 fn solutions() -> Impls {
-    Impls {
-        a1: cg_solutions::a1::implementation(),
-        a2: cg_solutions::a2::implementation(),
-        a3: cg_solutions::a3::implementation(),
-        a4: cg_solutions::a4::implementation(),
-    }
+    cg_assign::impls!(cg_solutions)
 }
 
-fn assignment(number: u32) -> Assignment {
+fn assignment(number: u32) -> Variants {
     let student: StudentNumber = format!("{number:08}").parse().unwrap();
-    Assignment::for_student(&student, TableVersion::V1)
+    Variants::for_student(&student, TableVersion::V1)
 }
 
 /// Students that together cover every a1 family, a2 with and without a pan, a3's parent
 /// orbiting and hopping with 3 and 4 objects, and every a4 repeat, turn and mirror: picked
 /// greedily, in order, from a range of numbers (the variants are frozen, so the pick is too).
-fn students() -> Vec<Assignment> {
+fn students() -> Vec<Variants> {
     let mut seen = std::collections::BTreeSet::new();
     let mut picked = Vec::new();
     for number in 20_260_000..20_260_400 {
@@ -94,8 +92,8 @@ fn everything_derives_for_the_reference_answers() {
         let (d, missing) = derive(&a, &solutions());
         assert!(missing.is_empty(), "{}: {missing:?}", a.student);
         assert_eq!(d.student.as_deref(), Some(a.student.to_string().as_str()));
-        assert!(d.polygon.is_some() && d.camera.is_some(), "{}", a.student);
-        assert!(d.animation.is_some() && d.texture.is_some(), "{}", a.student);
+        assert!(d.a1.is_some() && d.a2.is_some(), "{}", a.student);
+        assert!(d.a3.is_some() && d.a4.is_some(), "{}", a.student);
     }
 }
 
@@ -104,7 +102,7 @@ fn everything_derives_for_the_reference_answers() {
 #[test]
 fn a1_normals_are_unit_outward_and_the_students_own() {
     for a in students() {
-        let p = cg_report::derive::polygon(&a.a1, &solutions().a1).unwrap();
+        let p = cg_a1::report::polygon(&a.a1, &solutions().a1).unwrap();
         assert_eq!(p.vertices.len(), a.a1.shape.vertex_count());
         assert_eq!(p.faces.len(), a.a1.shape.face_count());
         let v: Vec<DVec3> = p.vertices.iter().map(|v| v.as_dvec3()).collect();
@@ -209,7 +207,7 @@ fn a2_view_matrices_are_a2s_own_at_the_stated_states() {
 // --- a3 ------------------------------------------------------------------------------------
 
 /// Checks `matrices` (of object `i`) against a3's oracle at the stated times.
-fn check_object(a: &Assignment, i: usize, matrices: &[NamedMatrix], times: &[f64]) {
+fn check_object(a: &Variants, i: usize, matrices: &[NamedMatrix], times: &[f64]) {
     let spec = &a.a3;
     assert_eq!(matrices.len(), times.len());
     for (m, &t) in matrices.iter().zip(times) {
@@ -335,7 +333,7 @@ fn expected_row(spec: &cg_a4::Spec, i: u32, j: u32) -> Vec<DVec2> {
     out
 }
 
-fn check_texture(a: &Assignment, t: &TextureData) {
+fn check_texture(a: &Variants, t: &TextureData) {
     let spec = &a.a4;
     assert_eq!(t.rows.len(), 121);
     for row in &t.rows {
@@ -374,7 +372,7 @@ fn check_texture(a: &Assignment, t: &TextureData) {
 fn a4_rows_are_the_specs_coordinates() {
     let mut edges = 0;
     for a in students() {
-        let t = cg_report::derive::texture(&a.a4, &solutions().a4).unwrap();
+        let t = cg_a4::report::texture(&a.a4, &solutions().a4).unwrap();
         check_texture(&a, &t);
         edges += t.rows.iter().filter(|r| r.tex.len() > 1).count();
     }

@@ -6,23 +6,17 @@ use std::path::PathBuf;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
+use cg_assign::Impls;
 use cg_core::lang::Lang;
 use cg_report::app::{self, DeriveArgs, Kit, Source};
-use cg_report::derive::Impls;
 
 const CHILD: &str = "CG_REPORT_WATCHDOG_CHILD";
 
 /// The reference solutions, but `a1.t1 vertices()` loops forever.
 fn kit() -> Kit {
-    let mut a1 = cg_solutions::a1::implementation();
-    a1.vertices = |_| loop {
+    let mut impls: Impls = cg_assign::impls!(cg_solutions);
+    impls.a1.vertices = |_| loop {
         std::hint::spin_loop();
-    };
-    let impls = Impls {
-        a1,
-        a2: cg_solutions::a2::implementation(),
-        a3: cg_solutions::a3::implementation(),
-        a4: cg_solutions::a4::implementation(),
     };
     Kit { impls, student_file: || PathBuf::from("/nonexistent/student.toml") }
 }

@@ -98,7 +98,7 @@ fn students_cover_every_option() {
 fn variants_are_deterministic_and_differ_between_students() {
     assert_eq!(spec_of("12345678"), spec_of("12345678"));
     let json = |s: &str| {
-        let a = cg_assign::Assignment::for_student(&s.parse().unwrap(), TableVersion::V1);
+        let a = cg_assign::Variants::for_student(&s.parse().unwrap(), TableVersion::V1);
         assert_eq!(a.s, spec_of(s), "cg-assign draws the same variant");
         a.to_json()["s"].clone()
     };

@@ -113,48 +113,39 @@ fn expected_transform(spec: &Spec) -> Mat4 {
 #[must_use]
 pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
     vec![
-        check::run("a1.t1.count", "a1.t1", t("頂点の数", "vertex count"), || {
-            vertex_count(spec, imp)
-        }),
+        check::run("a1.t1.count", t("頂点の数", "vertex count"), || vertex_count(spec, imp)),
         check::run(
             "a1.t1.positions",
-            "a1.t1",
             t("頂点の座標と番号", "vertex positions and numbering"),
             || vertex_positions(spec, imp),
         ),
         check::run(
             "a1.t2.indices",
-            "a1.t2",
             t("面の頂点番号が存在する頂点を指す", "face indices refer to existing vertices"),
             || face_indices(spec, imp),
         ),
         check::run(
             "a1.t2.degenerate",
-            "a1.t2",
             t("面積 0 の面がない", "no face without area"),
             || degenerate(spec, imp),
         ),
         check::run(
             "a1.t2.closed",
-            "a1.t2",
             t("閉じている（どの辺も 2 つの面が共有）", "closed (every edge shared by two faces)"),
             || closed(spec, imp),
         ),
         check::run(
             "a1.t2.manifold",
-            "a1.t2",
             t("どの辺も 3 つ以上の面に使われていない", "no edge used by more than two faces"),
             || manifold(spec, imp),
         ),
         check::run(
             "a1.t2.winding",
-            "a1.t2",
             t("隣り合う面の向きがそろっている", "neighbouring faces wound consistently"),
             || winding(spec, imp),
         ),
         check::run(
             "a1.t2.outward",
-            "a1.t2",
             t(
                 "どの面も外側から見て反時計回り（法線が外向き）",
                 "every face counter-clockwise seen from outside (normals outward)",
@@ -163,13 +154,11 @@ pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
         ),
         check::run(
             "a1.t2.count",
-            "a1.t2",
             t("面の数（オイラーの公式）", "face count (Euler's formula)"),
             || face_count(spec, imp),
         ),
         check::run(
             "a1.t2.surface",
-            "a1.t2",
             t(
                 "どの面も立体の表面上にあり、すべての頂点を使う",
                 "every face on the surface, every vertex used",
@@ -178,19 +167,14 @@ pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
         ),
         check::run(
             "a1.t3.count",
-            "a1.t3",
             t("法線の数（1 面に 1 つ）", "one normal per face"),
             || normal_count(spec, imp),
         ),
-        check::run(
-            "a1.t3.unit",
-            "a1.t3",
-            t("法線の長さが 1", "normals of unit length"),
-            || normal_unit(spec, imp),
-        ),
+        check::run("a1.t3.unit", t("法線の長さが 1", "normals of unit length"), || {
+            normal_unit(spec, imp)
+        }),
         check::run(
             "a1.t3.normals",
-            "a1.t3",
             t(
                 "法線が面の頂点から求めた値と一致する",
                 "normals equal the ones derived from each face's vertices",
@@ -199,7 +183,6 @@ pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
         ),
         check::run(
             "a1.t4.placement",
-            "a1.t4",
             t("配置の変換 T(x, y, z)·Ry(θ)", "the placement T(x, y, z) · Ry(θ)"),
             || placement(spec, imp),
         ),

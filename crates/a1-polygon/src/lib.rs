@@ -22,6 +22,7 @@
 
 mod checks;
 mod describe;
+pub mod report;
 mod spec;
 mod view;
 
@@ -45,4 +46,45 @@ pub use cg_student::a1::Impl;
 /// An angle in degrees as the texts print it: `30`, `-22.5`.
 pub(crate) fn format_deg(x: f32) -> String {
     format_number(x)
+}
+
+/// Assignment 1 as a unit of the kit: what `cg assignment`, `cg check`, `cg view`, the report and the
+/// grader need of it (see [`cg_harness::Assignment`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct A1;
+
+impl cg_harness::Assignment for A1 {
+    const ID: &'static str = ID;
+    const TITLE: (&'static str, &'static str) = ("ポリゴンモデルの描画", "polygon model");
+    type Spec = Spec;
+    type Impl = Impl;
+    type Report = report::PolygonData;
+
+    fn variant(rng: &mut cg_harness::VariantRng) -> Spec {
+        variant(rng)
+    }
+
+    fn describe(spec: &Spec, lang: cg_core::lang::Lang) -> String {
+        SpecDescribe::describe(spec, lang)
+    }
+
+    fn spec_json(spec: &Spec) -> cg_harness::unit::Json {
+        cg_harness::unit::json(spec)
+    }
+
+    fn checks(spec: &Spec, imp: &Impl) -> Vec<cg_harness::CheckResult> {
+        checks(spec, imp)
+    }
+
+    fn report(spec: &Spec, imp: &Impl) -> cg_harness::report::Part<report::PolygonData> {
+        report::polygon_part(spec, imp)
+    }
+
+    fn view(
+        spec: &Spec,
+        imp: &Impl,
+        time_s: f64,
+    ) -> Result<cg_core::scene::Scene, cg_harness::Text> {
+        view(spec, imp, time_s)
+    }
 }

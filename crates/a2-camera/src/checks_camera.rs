@@ -14,17 +14,14 @@ use crate::oracle;
 use crate::show;
 use crate::{CameraState, Impl, Spec};
 
-const TASK: &str = "a2.t2";
-
 /// The checks of a2.t2.
 pub(crate) fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
     vec![
-        check::run("a2.t2.view", TASK, t("視点の変換行列", "the view transform"), || {
+        check::run("a2.t2.view", t("視点の変換行列", "the view transform"), || {
             view_matches(spec, imp, &view_states(spec))
         }),
         check::run(
             "a2.t2.pole",
-            TASK,
             t(
                 "真上・真下から見た視点の変換行列（camera_pitch = ±90°）",
                 "the view transform looking straight down or up (camera_pitch = ±90°)",

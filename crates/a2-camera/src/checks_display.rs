@@ -16,14 +16,11 @@ use crate::oracle::{self, matrices_close};
 use crate::show;
 use crate::{CameraState, Gl, Impl, LIGHT0_POSITION, Spec};
 
-const TASK: &str = "a2.t3";
-
 /// The checks of a2.t3.
 pub(crate) fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
     vec![
         check::run(
             "a2.t3.light",
-            TASK,
             t(
                 "光源の位置を視点の変換の後に設定（ワールド座標系に固定）",
                 "the light is set after the camera (fixed in the world)",
@@ -32,13 +29,11 @@ pub(crate) fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
         ),
         check::run(
             "a2.t3.objects",
-            TASK,
             t("地面と四角すいの位置", "where the ground and the pyramid are drawn"),
             || objects_in_place(spec, imp),
         ),
         check::run(
             "a2.t3.stack",
-            TASK,
             t(
                 "何かが描かれ、glPushMatrix と glPopMatrix が対応し、GL のエラーがない",
                 "something is drawn, push and pop match, no GL errors",
@@ -47,7 +42,6 @@ pub(crate) fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
         ),
         check::run(
             "a2.t3.identity",
-            TASK,
             t(
                 "display() が単位行列から始まる（前のフレームに依存しない）",
                 "display() starts from the identity (no dependence on the previous frame)",

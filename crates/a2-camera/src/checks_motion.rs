@@ -19,8 +19,6 @@ use crate::{CameraState, Drag, DragAxis, Gesture, Impl, Operation, Spec};
 /// Tolerance for camera variables after a drag (degrees or scene units).
 pub(crate) const TOL: f32 = 1e-3;
 
-const TASK: &str = "a2.t1";
-
 /// The checks of a2.t1 for `spec` (the pan ones only when the spec has a pan).
 pub(crate) fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
     let mut out = Vec::new();
@@ -40,13 +38,12 @@ pub(crate) fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
         if let (Var::TargetX, Some(pan)) = (var, &spec.pan) {
             ops.push((Var::TargetZ, pan.z));
         }
-        out.push(check::run(id, TASK, title, || {
+        out.push(check::run(id, title, || {
             ops.iter().try_for_each(|(var, op)| changes_by_amount(spec, imp, *var, op))
         }));
     }
     out.push(check::run(
         "a2.t1.buttons",
-        TASK,
         t(
             "指定のボタン・方向のドラッグだけが変数を変える",
             "only the listed buttons and directions change a variable",
@@ -55,26 +52,22 @@ pub(crate) fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
     ));
     out.push(check::run(
         "a2.t1.wrap",
-        TASK,
         t("camera_yaw を 0〜360 に折り返す", "camera_yaw wraps into [0, 360)"),
         || yaw_wraps(spec, imp),
     ));
     out.push(check::run(
         "a2.t1.pitch_range",
-        TASK,
         t("camera_pitch の範囲の制限", "camera_pitch is clamped"),
         || clamped(spec, imp, Var::Pitch, &spec.pitch, spec.pitch_min, spec.pitch_max),
     ));
     out.push(check::run(
         "a2.t1.distance_range",
-        TASK,
         t("camera_distance の範囲の制限", "camera_distance is clamped"),
         || clamped(spec, imp, Var::Distance, &spec.distance, spec.distance_min, spec.distance_max),
     ));
     if let Some(pan) = spec.pan {
         out.push(check::run(
             "a2.t1.pan_range",
-            TASK,
             t("注視点の範囲の制限", "the target is clamped"),
             || {
                 clamped(spec, imp, Var::TargetX, &pan.x, -pan.limit, pan.limit)?;
@@ -84,7 +77,6 @@ pub(crate) fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
     }
     out.push(check::run(
         "a2.t1.sequence",
-        TASK,
         t(
             "いろいろなドラッグを続けたあとの変数（斜めのドラッグを含む）",
             "the variables after a long mix of drags (diagonal ones too)",

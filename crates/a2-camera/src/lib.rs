@@ -34,6 +34,7 @@ mod checks_camera;
 mod checks_display;
 mod checks_motion;
 mod oracle;
+pub mod report;
 mod show;
 mod spec;
 
@@ -187,4 +188,47 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
         ));
     }
     Ok(gl.to_scene(&cg_harness::course::stage()))
+}
+
+/// Assignment 2 as a unit of the kit: what `cg assignment`, `cg check`, `cg view`, the report and the
+/// grader need of it (see [`cg_harness::Assignment`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct A2;
+
+impl cg_harness::Assignment for A2 {
+    const ID: &'static str = ID;
+    const TITLE: (&'static str, &'static str) =
+        ("視点操作インターフェースの拡張", "camera interface");
+    const OWN_CAMERA: bool = true;
+    type Spec = Spec;
+    type Impl = Impl;
+    type Report = report::CameraData;
+
+    fn variant(rng: &mut cg_harness::VariantRng) -> Spec {
+        variant(rng)
+    }
+
+    fn describe(spec: &Spec, lang: cg_core::lang::Lang) -> String {
+        SpecExt::describe(spec, lang)
+    }
+
+    fn spec_json(spec: &Spec) -> cg_harness::unit::Json {
+        cg_harness::unit::json(spec)
+    }
+
+    fn checks(spec: &Spec, imp: &Impl) -> Vec<cg_harness::CheckResult> {
+        checks(spec, imp)
+    }
+
+    fn report(spec: &Spec, imp: &Impl) -> cg_harness::report::Part<report::CameraData> {
+        report::camera_part(spec, imp)
+    }
+
+    fn view(
+        spec: &Spec,
+        imp: &Impl,
+        time_s: f64,
+    ) -> Result<cg_core::scene::Scene, cg_harness::Text> {
+        view(spec, imp, time_s)
+    }
 }

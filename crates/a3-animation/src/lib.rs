@@ -28,6 +28,8 @@
 mod checks;
 mod describe;
 mod oracle;
+mod pose;
+pub mod report;
 
 use cg_core::gl::Gl;
 use cg_core::glam::Vec3;
@@ -444,6 +446,53 @@ fn on_ground(gl: &Gl) -> Scene {
     ground.append(&mut scene.objects);
     scene.objects = ground;
     scene
+}
+
+/// Assignment 3 as a unit of the kit: what `cg assignment`, `cg check`, `cg view`, the report and the
+/// grader need of it (see [`cg_harness::Assignment`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct A3;
+
+impl cg_harness::Assignment for A3 {
+    const ID: &'static str = ID;
+    const TITLE: (&'static str, &'static str) = ("アニメーション", "animation");
+    const REPORT_TIME: f64 = 1.0;
+    const WARMUP: bool = true;
+    type Spec = Spec;
+    type Impl = Impl;
+    type Report = report::AnimationData;
+
+    fn variant(rng: &mut cg_harness::VariantRng) -> Spec {
+        variant(rng)
+    }
+
+    fn describe(spec: &Spec, lang: cg_core::lang::Lang) -> String {
+        SpecDescribe::describe(spec, lang)
+    }
+
+    fn spec_json(spec: &Spec) -> cg_harness::unit::Json {
+        cg_harness::unit::json(spec)
+    }
+
+    fn checks(spec: &Spec, imp: &Impl) -> Vec<cg_harness::CheckResult> {
+        checks(spec, imp)
+    }
+
+    fn report(spec: &Spec, imp: &Impl) -> cg_harness::report::Part<report::AnimationData> {
+        report::animation_part(spec, imp)
+    }
+
+    fn view(
+        spec: &Spec,
+        imp: &Impl,
+        time_s: f64,
+    ) -> Result<cg_core::scene::Scene, cg_harness::Text> {
+        view(spec, imp, time_s)
+    }
+
+    fn warmup(imp: &Impl, time_s: f64) -> Option<cg_core::scene::Scene> {
+        Some(warmup_view(imp, time_s))
+    }
 }
 
 #[cfg(test)]

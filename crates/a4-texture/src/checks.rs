@@ -34,19 +34,16 @@ pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
     vec![
         check::run(
             "a4.t1.s_range",
-            "a4.t1",
             t("s の範囲（左右）", "the range of s (left to right)"),
             || s_range(spec, imp),
         ),
         check::run(
             "a4.t1.t_range",
-            "a4.t1",
             t("t の範囲（上下）", "the range of t (bottom to top)"),
             || t_range(spec, imp),
         ),
         check::run(
             "a4.t2.corners",
-            "a4.t2",
             t(
                 "地面の 4 隅に範囲の正しい角が来る",
                 "the ground's 4 corners get the right corners of the region",
@@ -55,31 +52,26 @@ pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
         ),
         check::run(
             "a4.t2.range",
-            "a4.t2",
             t("まとまりごとに範囲をちょうど覆う", "each block covers exactly the region"),
             || block_range(spec, imp),
         ),
         check::run(
             "a4.t2.shared",
-            "a4.t2",
             t("共有する頂点は同じ座標", "shared vertices share coordinates"),
             || shared(spec, imp),
         ),
         check::run(
             "a4.t2.linear",
-            "a4.t2",
             t("i と j の 1 次式（特別扱いなし）", "a linear formula in i and j (no special cases)"),
             || linear(spec, imp),
         ),
         check::run(
             "a4.t2.orientation",
-            "a4.t2",
             t("向き（回転・反転）", "orientation (turn and mirror)"),
             || orientation(spec, imp),
         ),
         check::run(
             "a4.t2.cells",
-            "a4.t2",
             t(
                 "どの四角形にも範囲の正しい場所が映る",
                 "every square shows the right place of the region",
@@ -88,7 +80,6 @@ pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
         ),
         check::run(
             "a4.t3.wrap",
-            "a4.t3",
             t("折り返しが繰り返しの作り方に合う", "the wrap modes suit how the region repeats"),
             || wrap(spec, imp),
         ),

@@ -34,6 +34,7 @@
 mod checks;
 mod json;
 mod prepared;
+pub mod report;
 mod spec;
 mod view;
 
@@ -63,6 +64,47 @@ pub fn core_sampler(s: Sampler) -> cg_core::texture::Sampler {
         Wrap::Clamp => cg_core::texture::Wrap::Clamp,
     };
     cg_core::texture::Sampler { filter, wrap_u: wrap(s.wrap_u), wrap_v: wrap(s.wrap_v) }
+}
+
+/// Assignment 4 as a unit of the kit: what `cg assignment`, `cg check`, `cg view`, the report and the
+/// grader need of it (see [`cg_harness::Assignment`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct A4;
+
+impl cg_harness::Assignment for A4 {
+    const ID: &'static str = ID;
+    const TITLE: (&'static str, &'static str) = ("テクスチャマッピング", "texture mapping");
+    type Spec = Spec;
+    type Impl = Impl;
+    type Report = report::TextureData;
+
+    fn variant(rng: &mut cg_harness::VariantRng) -> Spec {
+        variant(rng)
+    }
+
+    fn describe(spec: &Spec, lang: cg_core::lang::Lang) -> String {
+        SpecExt::describe(spec, lang)
+    }
+
+    fn checks(spec: &Spec, imp: &Impl) -> Vec<cg_harness::CheckResult> {
+        checks(spec, imp)
+    }
+
+    fn report(spec: &Spec, imp: &Impl) -> cg_harness::report::Part<report::TextureData> {
+        report::texture_part(spec, imp)
+    }
+
+    fn view(
+        spec: &Spec,
+        imp: &Impl,
+        time_s: f64,
+    ) -> Result<cg_core::scene::Scene, cg_harness::Text> {
+        view(spec, imp, time_s)
+    }
+
+    fn spec_json(spec: &Spec) -> cg_harness::unit::Json {
+        cg_harness::unit::json(&Presented(spec))
+    }
 }
 
 #[cfg(test)]

@@ -1,9 +1,18 @@
-//! # cg-assign — one student's assignments
+//! # cg-assign — the list of assignments, and one student's assignments
 //!
-//! Like the course's `opengl_report2019.exe`: from a student number, every assignment's variant
-//! (which polyhedron, which camera operations, which animations, which texture region), drawn
-//! from the frozen stream of [`cg_harness::variant`] for a [`TableVersion`], printed in Japanese
-//! or English, or as JSON for tools.
+//! **The one list.** [`for_each_assignment!`] names every assignment crate's unit (an
+//! implementation of [`cg_harness::Assignment`]) once, with the module of the student's file
+//! (`exercises/src/<id>.rs`). Everything that needs "every assignment" is derived from it:
+//! [`Which`] (the `a1|a2|…` argument of `cg assignment`, `cg check`, `cg view` and the check
+//! runner), [`Variants`] (every variant of one student), [`Impls`] (the student's functions,
+//! built by [`impls!`] from `cg_exercises` or `cg_solutions`), the report's sections and the
+//! grader's files and CSV columns ([`IDS`]). Adding an assignment: `docs/adding-an-assignment.md`.
+//!
+//! **One student's assignments.** Like the course's `opengl_report2019.exe`: from a student
+//! number, every assignment's variant (which polyhedron, which camera operations, which
+//! animations, which texture region), drawn from the frozen stream of [`cg_harness::variant`]
+//! for a [`TableVersion`](cg_harness::TableVersion), printed in Japanese or English, or as JSON
+//! for tools.
 //!
 //! The student records their number once, in `exercises/student.toml`:
 //!
@@ -12,292 +21,53 @@
 //! table = 1
 //! ```
 
-use cg_a1::SpecDescribe as _;
-use cg_a2::SpecExt as _;
-use cg_a3::SpecDescribe as _;
-use cg_a4::SpecExt as _;
-use std::fmt::Write as _;
-use std::path::Path;
+mod student_file;
+mod units;
 
-use cg_core::lang::Lang;
-use cg_harness::{StudentNumber, TableVersion, VariantRng};
-use serde::Serialize;
+pub use student_file::{
+    StudentFile, StudentFileError, read_student_file, resolve_student, write_student_file,
+};
+pub use units::{Derived, IDS, Impls, Variants, Which};
 
-/// Every assignment's variant for one student.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Assignment {
-    /// The student number.
-    pub student: StudentNumber,
-    /// The table the variants come from.
-    pub table: TableVersion,
-    /// 1. ポリゴンモデルの描画
-    pub a1: cg_a1::Spec,
-    /// 2. 視点操作インターフェースの拡張
-    pub a2: cg_a2::Spec,
-    /// 3. アニメーション
-    pub a3: cg_a3::Spec,
-    /// 4. テクスチャマッピング
-    #[serde(serialize_with = "cg_a4::serialize_spec")]
-    pub a4: cg_a4::Spec,
-    /// 第11回 シェーディング
-    pub s: cg_shading::Spec,
-}
+// The assignment crates, for the list's expansions in other crates (they name the crates
+// through `cg_assign` only, so a new assignment is one dependency here).
+#[doc(hidden)]
+pub use {cg_a1, cg_a2, cg_a3, cg_a4, cg_shading};
 
-impl Assignment {
-    /// `student`'s assignments in table `table`. Each assignment draws from its own stream, so
-    /// adding a draw to one never changes another.
-    #[must_use]
-    pub fn for_student(student: &StudentNumber, table: TableVersion) -> Assignment {
-        let rng = |id: &str| VariantRng::new(student, table, id);
-        Assignment {
-            student: student.clone(),
-            table,
-            a1: cg_a1::variant(&mut rng(cg_a1::ID)),
-            a2: cg_a2::variant(&mut rng(cg_a2::ID)),
-            a3: cg_a3::variant(&mut rng(cg_a3::ID)),
-            a4: cg_a4::variant(&mut rng(cg_a4::ID)),
-            s: cg_shading::variant(&mut rng(cg_shading::ID)),
-        }
-    }
-
-    /// The whole assignment text in `lang`, or one assignment's (`only` = `a1`, …).
-    #[must_use]
-    pub fn describe(&self, lang: Lang, only: Option<&str>) -> String {
-        let mut out = String::new();
-        let _ = writeln!(
-            out,
-            "{}: {}  ({} {})",
-            lang.pick("学生番号", "Student ID"),
-            self.student,
-            lang.pick("課題表", "table"),
-            self.table
-        );
-        let _ = writeln!(
-            out,
-            "{}\n",
-            lang.pick(
-                "コンピューターグラフィックス レポート課題",
-                "Computer graphics: report assignments"
-            )
-        );
-        let parts = [
-            (cg_a1::ID, self.a1.describe(lang)),
-            (cg_a2::ID, self.a2.describe(lang)),
-            (cg_a3::ID, self.a3.describe(lang)),
-            (cg_a4::ID, self.a4.describe(lang)),
-            (cg_shading::ID, self.s.describe(lang)),
-        ];
-        for (id, text) in parts {
-            if only.is_none_or(|o| o == id) {
-                let _ = writeln!(out, "{}\n", text.trim_end());
-            }
-        }
-        out
-    }
-
-    /// The assignments as JSON (`student`, `table`, and one object per assignment).
-    #[must_use]
-    pub fn to_json(&self) -> serde_json::Value {
-        let mut value = serde_json::to_value(self).unwrap_or(serde_json::Value::Null);
-        cg_harness::tidy_f32_numbers(&mut value);
-        value
-    }
-}
-
-/// What `exercises/student.toml` records.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct StudentFile {
-    /// The student number.
-    pub student: StudentNumber,
-    /// The table the student works from.
-    pub table: TableVersion,
-}
-
-/// Why `exercises/student.toml` could not be read.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("{}", self.message(Lang::En))]
-pub enum StudentFileError {
-    /// There is no such file yet.
-    Missing {
-        /// Where it was looked for.
-        path: String,
-    },
-    /// It is not valid, or lacks `student`.
-    Invalid {
-        /// The file.
-        path: String,
-        /// What is wrong (the TOML parser's message, with the line).
-        reason: String,
-    },
-    /// `student` is not an 8-digit number.
-    Number {
-        /// The file.
-        path: String,
-        /// Why.
-        error: cg_harness::variant::StudentNumberError,
-    },
-    /// `table` names no table.
-    Table {
-        /// The file.
-        path: String,
-        /// What was written.
-        given: String,
-    },
-}
-
-impl StudentFileError {
-    /// The message in `lang`, with what to do.
-    #[must_use]
-    pub fn message(&self, lang: Lang) -> String {
-        match (self, lang) {
-            (StudentFileError::Missing { path }, Lang::Ja) => format!(
-                "{path} がありません。最初に一度だけ学生番号を記録してください: cargo run --release -- assignment --student 12345678 --save（12345678 を自分の学生番号に）"
-            ),
-            (StudentFileError::Missing { path }, Lang::En) => format!(
-                "{path} does not exist. Record your student number once: cargo run --release -- assignment --student 12345678 --save (with your own number)"
-            ),
-            (StudentFileError::Invalid { path, reason }, Lang::Ja) => {
-                format!("{path} を読めません: {reason}（例: student = \"12345678\"）")
-            }
-            (StudentFileError::Invalid { path, reason }, Lang::En) => {
-                format!("{path} cannot be read: {reason} (example: student = \"12345678\")")
-            }
-            (StudentFileError::Number { path, error }, _) => {
-                format!("{path}: {}", error.message(lang))
-            }
-            (StudentFileError::Table { path, given }, Lang::Ja) => {
-                format!("{path}: table = {given} という課題表はありません（1 を使ってください）")
-            }
-            (StudentFileError::Table { path, given }, Lang::En) => {
-                format!("{path}: there is no table {given} (use 1)")
-            }
-        }
-    }
-}
-
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawStudentFile {
-    student: toml::Value,
-    table: Option<toml::Value>,
-}
-
-/// Reads `exercises/student.toml` (or another path).
+/// **The list of assignments**, in the order every listing uses: `id: unit,` for each, where
+/// `id` is the assignment's ID (`a1`), which is also the module of the student's file
+/// (`exercises/src/a1.rs`, `cg_exercises::a1`), and `unit` its [`cg_harness::Assignment`].
 ///
-/// # Errors
-/// A missing or malformed file, a bad number, an unknown table — each with what to do.
-pub fn read_student_file(path: &Path) -> Result<StudentFile, StudentFileError> {
-    let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|_| StudentFileError::Missing { path: shown.clone() })?;
-    let raw: RawStudentFile = toml::from_str(&text)
-        .map_err(|e| StudentFileError::Invalid { path: shown.clone(), reason: e.to_string() })?;
-    let digits = match &raw.student {
-        toml::Value::String(s) => s.clone(),
-        // A number written without quotes loses leading zeros, so it is refused with the reason.
-        other => {
-            return Err(StudentFileError::Invalid {
-                path: shown,
-                reason: format!("student = {other} must be in quotes: student = \"{other}\""),
-            });
+/// `for_each_assignment!(path::to::callback!(args))` expands to
+/// `path::to::callback! { (args) a1: …, a2: …, … }`: a callback macro derives what it needs
+/// from the list. A test (`tests/units.rs`) fails when an assignment is missing from a place
+/// derived by hand (its files, its documentation).
+#[macro_export]
+macro_rules! for_each_assignment {
+    ($($callback:ident)::+ ! $args:tt) => {
+        $($callback)::+! { $args
+            a1: $crate::cg_a1::A1,
+            a2: $crate::cg_a2::A2,
+            a3: $crate::cg_a3::A3,
+            a4: $crate::cg_a4::A4,
+            s: $crate::cg_shading::S,
         }
     };
-    let student =
-        digits.parse().map_err(|error| StudentFileError::Number { path: shown.clone(), error })?;
-    let table = match raw.table {
-        None => TableVersion::LATEST,
-        Some(v) => {
-            let given = v.to_string();
-            given
-                .trim_matches('"')
-                .parse()
-                .map_err(|_| StudentFileError::Table { path: shown, given })?
-        }
+}
+
+/// The student's functions from a crate laid out like `exercises/` (`cg_exercises` or
+/// `cg_solutions`): an [`Impls`] with `<crate>::<id>::implementation()` for each assignment.
+#[macro_export]
+macro_rules! impls {
+    ($krate:ident) => {
+        $crate::for_each_assignment!($crate::__impls_from!($krate))
     };
-    Ok(StudentFile { student, table })
 }
 
-/// Writes `exercises/student.toml` (or another path).
-///
-/// # Errors
-/// The file cannot be written; the message says which file and why.
-pub fn write_student_file(path: &Path, record: &StudentFile) -> Result<(), String> {
-    let text = format!(
-        "# Your student number, recorded once (cargo run --release -- assignment --student N --save).\n\
-         # 学生番号（最初に一度だけ記録します）。\n\
-         student = \"{}\"\ntable = {}\n",
-        record.student, record.table
-    );
-    std::fs::write(path, text).map_err(|e| format!("{}: {e}", path.display()))
-}
-
-/// The student a command is about: `given` (a `--student` option) when there is one, with
-/// `table` or the newest table; else the record in `file` (`exercises/student.toml`), with
-/// `table` replacing its table when given.
-///
-/// # Errors
-/// A malformed student number, or a missing or malformed student file, as a message in `lang`.
-pub fn resolve_student(
-    given: Option<&str>,
-    table: Option<TableVersion>,
-    file: &Path,
-    lang: Lang,
-) -> Result<StudentFile, String> {
-    match given {
-        Some(n) => {
-            let student: StudentNumber =
-                n.parse().map_err(|e: cg_harness::variant::StudentNumberError| e.message(lang))?;
-            Ok(StudentFile { student, table: table.unwrap_or(TableVersion::LATEST) })
-        }
-        None => {
-            let mut record = read_student_file(file).map_err(|e| e.message(lang))?;
-            if let Some(t) = table {
-                record.table = t;
-            }
-            Ok(record)
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn dir(name: &str) -> std::path::PathBuf {
-        let d = std::env::temp_dir().join(format!("cg-assign-{name}-{}", std::process::id()));
-        std::fs::create_dir_all(&d).unwrap();
-        d
-    }
-
-    #[test]
-    fn the_student_file_round_trips_and_explains_mistakes() {
-        let d = dir("file");
-        let path = d.join("student.toml");
-        let e = read_student_file(&path).unwrap_err();
-        assert!(e.message(Lang::Ja).contains("--save"), "{e}");
-        let record = StudentFile { student: "01234567".parse().unwrap(), table: TableVersion::V1 };
-        write_student_file(&path, &record).unwrap();
-        assert_eq!(read_student_file(&path), Ok(record));
-        for (text, needle) in [
-            ("student = 1234567\n", "in quotes"),
-            ("student = \"1234567\"\n", "8 digits"),
-            ("studnet = \"12345678\"\n", "unknown field"),
-            ("student = \"12345678\"\ntable = 9\n", "no table 9"),
-        ] {
-            std::fs::write(&path, text).unwrap();
-            let e = read_student_file(&path).unwrap_err();
-            assert!(e.message(Lang::En).contains(needle), "{text:?}: {}", e.message(Lang::En));
-        }
-        std::fs::remove_dir_all(&d).ok();
-    }
-
-    #[test]
-    fn assignments_are_deterministic_and_differ_between_students() {
-        let a: StudentNumber = "12345678".parse().unwrap();
-        let one = Assignment::for_student(&a, TableVersion::V1);
-        assert_eq!(one, Assignment::for_student(&a, TableVersion::V1));
-        let text = one.describe(Lang::Ja, None);
-        assert!(text.starts_with("学生番号: 12345678"), "{text}");
-        assert_eq!(one.to_json()["student"], "12345678");
-    }
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __impls_from {
+    (($krate:ident) $($id:ident : $unit:path,)*) => {
+        $crate::Impls { $($id: $krate::$id::implementation(),)* }
+    };
 }

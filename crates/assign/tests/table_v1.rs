@@ -9,7 +9,7 @@
 
 use std::path::Path;
 
-use cg_assign::Assignment;
+use cg_assign::Variants;
 use cg_harness::{StudentNumber, TableVersion};
 
 fn students() -> Vec<StudentNumber> {
@@ -31,7 +31,7 @@ fn students() -> Vec<StudentNumber> {
 #[test]
 fn table_1_never_changes() {
     let table: serde_json::Value =
-        students().iter().map(|s| Assignment::for_student(s, TableVersion::V1).to_json()).collect();
+        students().iter().map(|s| Variants::for_student(s, TableVersion::V1).to_json()).collect();
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/table-v1.json");
     let text = serde_json::to_string_pretty(&table).unwrap() + "\n";
     if !path.exists() && std::env::var("CG_BLESS").is_ok_and(|v| v == "1") {
@@ -58,7 +58,7 @@ fn table_1_never_changes() {
 #[test]
 fn the_64_students_cover_every_assignment_with_different_variants() {
     let all: Vec<serde_json::Value> =
-        students().iter().map(|s| Assignment::for_student(s, TableVersion::V1).to_json()).collect();
+        students().iter().map(|s| Variants::for_student(s, TableVersion::V1).to_json()).collect();
     for id in ["a1", "a2", "a3", "a4", "s"] {
         let distinct: std::collections::BTreeSet<String> =
             all.iter().map(|a| a[id].to_string()).collect();

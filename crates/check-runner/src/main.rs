@@ -4,8 +4,8 @@ use std::io::Write;
 use std::process::ExitCode;
 use std::time::Duration;
 
-use cg_assign::Assignment;
-use cg_check_runner::{Which, report, to_json};
+use cg_assign::{Variants, Which};
+use cg_check_runner::{report, to_json};
 use cg_core::lang::Lang;
 use cg_harness::check::Report;
 use clap::Parser;
@@ -39,7 +39,7 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let a = Assignment::for_student(&record.student, record.table);
+    let a = Variants::for_student(&record.student, record.table);
     cg_harness::check::watchdog(Duration::from_secs(args.time_limit.max(1)), lang);
     let which: Vec<Which> = args.only.map_or_else(|| Which::ALL.to_vec(), |w| vec![w]);
     let reports: Vec<Report> = which.iter().map(|&w| report(w, &a)).collect();

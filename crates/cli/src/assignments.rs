@@ -5,13 +5,11 @@
 use std::path::PathBuf;
 use std::time::Duration;
 
-use cg_assign::{Assignment, StudentFile, write_student_file};
+use cg_assign::{Impls, StudentFile, Variants, Which, write_student_file};
 use cg_core::lang::Lang;
 use cg_core::scene::Scene;
 use cg_harness::check::{Outcome, Report, guarded};
 use cg_harness::{TableVersion, Text};
-
-use cg_check_runner::Which;
 
 /// Where the student's files are: `exercises/` of the kit being run.
 fn exercises_dir() -> PathBuf {
@@ -55,15 +53,15 @@ pub fn assignment(args: &AssignmentArgs, lang: Lang) -> Result<(), String> {
         write_student_file(&path, &record)?;
         eprintln!("{} {}", lang.pick("記録しました:", "recorded in"), path.display());
     }
-    let a = Assignment::for_student(&record.student, record.table);
+    let a = Variants::for_student(&record.student, record.table);
     if args.json {
         let value = match args.only {
             None => a.to_json(),
-            Some(w) => a.to_json()[w.id()].clone(),
+            Some(w) => a.spec_json(w),
         };
         println!("{}", serde_json::to_string_pretty(&value).unwrap_or_default());
     } else {
-        print!("{}", a.describe(lang, args.only.map(Which::id)));
+        print!("{}", a.describe(lang, args.only));
     }
     Ok(())
 }
@@ -88,7 +86,7 @@ pub struct CheckArgs {
 /// `cg check`: runs the student's checks; fails (exit status 1) unless every check passes.
 pub fn check(args: &CheckArgs, lang: Lang) -> Result<bool, String> {
     let record = student(args.student.as_deref(), None, lang)?;
-    let a = Assignment::for_student(&record.student, record.table);
+    let a = Variants::for_student(&record.student, record.table);
     cg_harness::check::watchdog(Duration::from_secs(args.time_limit.max(1)), lang);
     let which: Vec<Which> = args.which.map_or_else(|| Which::ALL.to_vec(), |w| vec![w]);
     let reports: Vec<Report> = which.iter().map(|&w| cg_check_runner::report(w, &a)).collect();
@@ -143,49 +141,48 @@ pub struct ViewArgs {
     paused: bool,
 }
 
+/// The functions a side of `cg view` draws: the student's, or the reference solutions' when
+/// they are part of this kit.
+fn impls(reference: bool) -> Impls {
+    let _ = reference;
+    #[cfg(feature = "reference")]
+    if reference {
+        return cg_assign::impls!(cg_solutions);
+    }
+    cg_check_runner::exercises()
+}
+
 fn view_scene(
     which: Which,
-    a: &Assignment,
+    a: &Variants,
     reference: bool,
     time: f64,
     warmup: bool,
 ) -> Result<Result<Scene, Text>, Outcome> {
-    let _ = reference;
-    #[cfg(feature = "reference")]
-    if reference && warmup {
-        return guarded(|| Ok(cg_a3::warmup_view(&cg_solutions::a3::implementation(), time)));
-    }
+    let impls = impls(reference);
     if warmup {
-        return guarded(|| Ok(cg_a3::warmup_view(&cg_exercises::a3::implementation(), time)));
+        return guarded(|| Variants::warmup(which, &impls, time).ok_or_else(|| no_warmup(which)));
     }
-    #[cfg(feature = "reference")]
-    if reference {
-        return guarded(|| match which {
-            Which::A1 => cg_a1::view(&a.a1, &cg_solutions::a1::implementation(), time),
-            Which::A2 => cg_a2::view(&a.a2, &cg_solutions::a2::implementation(), time),
-            Which::A3 => cg_a3::view(&a.a3, &cg_solutions::a3::implementation(), time),
-            Which::A4 => cg_a4::view(&a.a4, &cg_solutions::a4::implementation(), time),
-            Which::S => cg_shading::view(&a.s, &cg_solutions::s::implementation(), time),
-        });
-    }
-    guarded(|| match which {
-        Which::A1 => cg_a1::view(&a.a1, &cg_exercises::a1::implementation(), time),
-        Which::A2 => cg_a2::view(&a.a2, &cg_exercises::a2::implementation(), time),
-        Which::A3 => cg_a3::view(&a.a3, &cg_exercises::a3::implementation(), time),
-        Which::A4 => cg_a4::view(&a.a4, &cg_exercises::a4::implementation(), time),
-        Which::S => cg_shading::view(&a.s, &cg_exercises::s::implementation(), time),
-    })
+    guarded(|| a.view(which, &impls, time))
+}
+
+/// Why `--warmup` does not apply to `which`, naming the assignments it applies to.
+fn no_warmup(which: Which) -> Text {
+    let with: Vec<&str> = Which::ALL.iter().filter(|w| w.has_warmup()).map(|w| w.id()).collect();
+    let with = with.join(", ");
+    Text::new(
+        format!("--warmup は {with} だけの設定です（{which} には演習課題がありません）"),
+        format!("--warmup belongs to {with} only ({which} has no warm-up)"),
+    )
 }
 
 /// `cg view`: draws the student's result (and the reference beside it when the solutions are
 /// part of this kit) to PNG files.
 pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
     let record = student(args.student.as_deref(), None, lang)?;
-    let a = Assignment::for_student(&record.student, record.table);
-    if args.warmup && args.which != Which::A3 {
-        return Err(lang
-            .pick("--warmup は a3 だけの設定です", "--warmup belongs to a3 only")
-            .to_owned());
+    let a = Variants::for_student(&record.student, record.table);
+    if args.warmup && !args.which.has_warmup() {
+        return Err(no_warmup(args.which).get(lang).to_owned());
     }
     let mut sides = vec![(false, lang.pick("あなたの結果", "yours"), "yours")];
     if cfg!(feature = "reference") {
@@ -202,7 +199,8 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
         )
     );
     for (reference, label, file) in sides {
-        let name = if args.warmup { "a3-warmup" } else { args.which.id() };
+        let name =
+            if args.warmup { format!("{}-warmup", args.which) } else { args.which.to_string() };
         let path = args.output.join(format!("view-{name}-{file}.png"));
         match view_scene(args.which, &a, reference, args.time, args.warmup) {
             Ok(Ok(scene)) => {
@@ -229,7 +227,7 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
 /// and from the same camera (assignment 2's camera is the student's own), animated.
 fn view_window(
     args: &ViewArgs,
-    a: &Assignment,
+    a: &Variants,
     sides: &[(bool, &str, &str)],
     lang: Lang,
 ) -> Result<(), String> {
@@ -250,12 +248,12 @@ fn view_window(
                     )),
                     Err(other) => Err(format!("{other:?}")),
                 }),
-                own_camera: which == Which::A2 && !warmup,
+                own_camera: which.own_camera() && !warmup,
             }
         })
         .collect();
-    let name = if warmup { "a3-warmup" } else { which.id() };
-    let mut app = cg_viewer::SideBySide::new(name, sources, args.time)?;
+    let name = if warmup { format!("{which}-warmup") } else { which.to_string() };
+    let mut app = cg_viewer::SideBySide::new(&name, sources, args.time)?;
     app.view.paused = args.paused;
     let options = cg_viewer::ViewerOptions {
         frames: args.frames,

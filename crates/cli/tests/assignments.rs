@@ -32,7 +32,7 @@ fn the_assignment_follows_from_the_number_and_is_recorded_once() {
     // JSON, whole and for one assignment, is the library's.
     let json: serde_json::Value =
         serde_json::from_slice(&cg(&dir, &["assignment", "--json"]).stdout).unwrap();
-    let expected = cg_assign::Assignment::for_student(
+    let expected = cg_assign::Variants::for_student(
         &"12345678".parse().unwrap(),
         cg_harness::TableVersion::V1,
     );

@@ -315,11 +315,12 @@ fn prepare_first(
         std::fs::create_dir_all(&slot.kit).map_err(|e| io(&e))?;
         handout::write_handout_filtered(&options.kit, &slot.kit, skip).map_err(|e| io(&e))?;
     }
-    for m in submission::MODULES {
+    for &m in submission::MODULES {
         write_if_changed(&slot.kit.join(format!("exercises/src/{m}.rs")), stubs[m].as_bytes())
             .map_err(|e| io(&e))?;
     }
-    let package = runner_command(&slot.kit, &slot.target, "a1", &options.limits).0;
+    let package =
+        runner_command(&slot.kit, &slot.target, submission::MODULES[0], &options.limits).0;
     let b = build::cargo_build(&slot.kit, &slot.target, package, options.build_limit)
         .map_err(|e| io(&e))?;
     if !b.success {
@@ -488,14 +489,15 @@ fn grade_one(
         return facts;
     }
     let mut replaced: BTreeMap<String, Vec<String>> = BTreeMap::new();
-    for m in submission::MODULES {
+    for &m in submission::MODULES {
         let text = files.modules.get(m).map_or_else(|| stubs[m].as_bytes().to_vec(), Clone::clone);
         if let Err(e) = write_if_changed(&slot.kit.join(format!("exercises/src/{m}.rs")), &text) {
             io_fail(&mut facts, e);
             return facts;
         }
     }
-    let package = runner_command(&slot.kit, &slot.target, "a1", &options.limits).0;
+    let package =
+        runner_command(&slot.kit, &slot.target, submission::MODULES[0], &options.limits).0;
     let started = Instant::now();
     // Build; replace the modules that do not compile by their stubs; build again.
     loop {
@@ -560,7 +562,7 @@ fn grade_one(
         return facts;
     }
     let mut run_time = Duration::ZERO;
-    for m in submission::MODULES {
+    for &m in submission::MODULES {
         let (run, took) = run_checks(slot, m, &student_toml, options, runner);
         run_time += took;
         facts.runs.insert(m.to_owned(), run);

@@ -261,17 +261,23 @@ fn csv_field(s: &str) -> String {
     }
 }
 
-/// `class.csv`: one row per result — student, submission, a1 … s, score, max_score.
+/// `class.csv`: one row per result — student, submission, each assignment's score (a column
+/// per ID of the kit's list), score, max_score.
 #[must_use]
 pub fn class_csv(results: &[Value]) -> String {
-    let mut out = String::from("student,submission,a1,a2,a3,a4,s,score,max_score\n");
+    let columns: Vec<&str> = ["student", "submission"]
+        .into_iter()
+        .chain(crate::submission::MODULES.iter().copied())
+        .chain(["score", "max_score"])
+        .collect();
+    let mut out = columns.join(",") + "\n";
     for r in results {
         let cg = &r["cg"];
         let mut row = vec![
             csv_field(cg["student"].as_str().unwrap_or("")),
             csv_field(cg["submission"].as_str().unwrap_or("")),
         ];
-        for m in crate::submission::MODULES {
+        for &m in crate::submission::MODULES {
             row.push(
                 cg["assignments"][m]["score"].as_f64().map(|s| s.to_string()).unwrap_or_default(),
             );

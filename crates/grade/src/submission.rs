@@ -9,8 +9,8 @@ use std::path::{Path, PathBuf};
 
 use crate::Msg;
 
-/// The modules a student writes, in order.
-pub const MODULES: [&str; 5] = ["a1", "a2", "a3", "a4", "s"];
+/// The student's files, `exercises/src/<id>.rs`: one per assignment, from the kit's one list.
+pub const MODULES: &[&str] = cg_assign::IDS;
 
 /// The most bytes one file of a submission may have.
 pub const MAX_FILE_BYTES: u64 = 1 << 20;

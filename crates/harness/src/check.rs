@@ -5,14 +5,14 @@
 //! use cg_harness::check::{self, Failure};
 //! use cg_harness::text::t;
 //!
-//! let closed = check::run("a1.t2.closed", "a1.t2", t("閉じている", "closed"), || {
+//! let closed = check::run("a1.t2.closed", t("閉じている", "closed"), || {
 //!     Err(Failure::new("every edge shared by two faces", "edge V1–V3 in F2 only")
 //!         .at("edge V1–V3")
 //!         .cause(t("面が足りない", "a face is missing"))
 //!         .hint(t("F2 の隣の面を確認", "look at F2's neighbours")))
 //! });
 //! assert!(!closed.passed());
-//! let stub = check::run("a1.t3.normals", "a1.t3", t("法線", "normals"), || {
+//! let stub = check::run("a1.t3.normals", t("法線", "normals"), || {
 //!     todo!("a1.t3: write the face normals")
 //! });
 //! assert!(matches!(stub.outcome, check::Outcome::NotDone { .. }));
@@ -145,16 +145,11 @@ fn install_hook() {
     });
 }
 
-/// Runs one check. `body` returns `Ok(())` or the [`Failure`] it found; a `todo!()` or
+/// Runs one check, `id` (`a1.t2.closed`; its task, `a1.t2`, is derived from it). `body` returns `Ok(())` or the [`Failure`] it found; a `todo!()` or
 /// `unimplemented!()` inside it (a stub not written yet) becomes [`Outcome::NotDone`], any other
 /// panic [`Outcome::Panicked`] with its message and location. Nothing is printed for those
 /// panics; other threads' panics print as usual.
-pub fn run(
-    id: &str,
-    task: &str,
-    title: Text,
-    body: impl FnOnce() -> Result<(), Failure>,
-) -> CheckResult {
+pub fn run(id: &str, title: Text, body: impl FnOnce() -> Result<(), Failure>) -> CheckResult {
     install_hook();
     if let Ok(mut current) = CURRENT.lock() {
         *current = Some((id.to_owned(), Instant::now()));
@@ -184,7 +179,7 @@ pub fn run(
             }
         }
     };
-    CheckResult { id: id.to_owned(), task: task.to_owned(), title, outcome }
+    CheckResult { id: id.to_owned(), task: crate::unit::task_of(id).to_owned(), title, outcome }
 }
 
 /// The name [`guarded`] runs under (what the [`watchdog`] sees).
@@ -197,7 +192,7 @@ const GUARDED: &str = "guarded";
 /// The outcome when `f` panicked.
 pub fn guarded<T>(f: impl FnOnce() -> T) -> Result<T, Outcome> {
     let mut value = None;
-    let result = run(GUARDED, GUARDED, crate::text::Text::default(), || {
+    let result = run(GUARDED, crate::text::Text::default(), || {
         value = Some(f());
         Ok(())
     });
@@ -432,15 +427,15 @@ mod tests {
 
     #[test]
     fn outcomes_are_told_apart() {
-        let pass = run("x.t1.a", "x.t1", t("a", "a"), || Ok(()));
+        let pass = run("x.t1.a", t("a", "a"), || Ok(()));
         assert!(pass.passed());
-        let fail = run("x.t1.b", "x.t1", t("b", "b"), || Err(Failure::new("1", "2").at("V3")));
+        let fail = run("x.t1.b", t("b", "b"), || Err(Failure::new("1", "2").at("V3")));
         assert!(matches!(&fail.outcome, Outcome::Fail(f) if f.location == Some("V3".into())));
-        let stub = run("x.t2.c", "x.t2", t("c", "c"), || todo!("x.t2: write it"));
+        let stub = run("x.t2.c", t("c", "c"), || todo!("x.t2: write it"));
         assert_eq!(stub.outcome, Outcome::NotDone { message: "x.t2: write it".into() });
-        let bare = run("x.t2.d", "x.t2", t("d", "d"), || unimplemented!());
+        let bare = run("x.t2.d", t("d", "d"), || unimplemented!());
         assert!(matches!(bare.outcome, Outcome::NotDone { .. }), "{bare:?}");
-        let oops = run("x.t3.e", "x.t3", t("e", "e"), || {
+        let oops = run("x.t3.e", t("e", "e"), || {
             let v: Vec<u32> = Vec::new();
             let i = v.len() + 2;
             Err(Failure::new(v[i].to_string(), ""))
@@ -488,14 +483,14 @@ mod tests {
             assignment: "a1".into(),
             student: Some("12345678".into()),
             checks: vec![
-                run("a1.t1.count", "a1.t1", t("頂点の数", "vertex count"), || Ok(())),
-                run("a1.t2.closed", "a1.t2", t("閉じている", "closed"), || {
+                run("a1.t1.count", t("頂点の数", "vertex count"), || Ok(())),
+                run("a1.t2.closed", t("閉じている", "closed"), || {
                     Err(Failure::new("every edge in two faces", "V1–V3 in F2 only")
                         .at("edge V1–V3")
                         .cause(t("面が足りない", "a missing face"))
                         .hint(t("F2 の隣を見る", "look next to F2")))
                 }),
-                run("a1.t3.normals", "a1.t3", t("法線", "normals"), || todo!("a1.t3: normals")),
+                run("a1.t3.normals", t("法線", "normals"), || todo!("a1.t3: normals")),
             ],
         };
         assert_eq!((report.passed(), report.total()), (1, 3));

@@ -18,8 +18,11 @@
 pub mod args;
 pub mod check;
 pub mod course;
+pub mod report;
 pub mod stubs;
+pub mod symbolic;
 pub mod text;
+pub mod unit;
 pub mod variant;
 
 pub use check::{CheckResult, Failure, Outcome, Report};
@@ -50,6 +53,7 @@ pub fn tidy_f32_numbers(value: &mut serde_json::Value) {
 }
 
 pub use text::Text;
+pub use unit::Assignment;
 pub use variant::{StudentNumber, TableVersion, VariantRng};
 
 /// A path inside the kit: `default` relative to the current folder when it exists there (the

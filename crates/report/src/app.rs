@@ -13,23 +13,19 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use cg_assign::Assignment;
+use cg_assign::Variants;
 use cg_core::lang::Lang;
-use cg_core::scene::Scene;
 use cg_harness::check::{Outcome, guarded};
 use cg_harness::{TableVersion, Text};
 
-use crate::derive::{self, Impls, Missing};
+use crate::derive::{self, Missing};
 use crate::figures;
 use crate::fill::{self, Context, VIEWS, files};
 use crate::model::{Derived, PolygonData};
 use crate::parse::{self, ParseProblem};
 use crate::template::{self, Format};
 use crate::verify::{self, Verification};
-use cg_a1::SpecDescribe as _;
-use cg_a2::SpecExt as _;
-use cg_a3::SpecDescribe as _;
-use cg_a4::SpecExt as _;
+use cg_assign::{Impls, Which};
 
 /// The report commands.
 #[derive(Clone, Debug, clap::Subcommand)]
@@ -120,7 +116,7 @@ impl Kit {
     #[must_use]
     pub fn exercises() -> Kit {
         Kit {
-            impls: Impls::exercises(),
+            impls: cg_assign::impls!(cg_exercises),
             student_file: || cg_harness::kit_path(None, "exercises").join("student.toml"),
         }
     }
@@ -165,7 +161,7 @@ pub struct Gathered {
     /// The placeholders' context (student, assignment texts, missing parts).
     pub context: Context,
     /// The assignment, when the data came from the exercises.
-    pub assignment: Option<Assignment>,
+    pub assignment: Option<Variants>,
 }
 
 fn read_text(path: &Path, lang: Lang) -> Result<String, String> {
@@ -205,7 +201,7 @@ pub fn gather(source: &Source, kit: &Kit, lang: Lang) -> Result<Gathered, String
     if let Some(path) = &source.data {
         let polygon = read_data(path, lang)?;
         return Ok(Gathered {
-            derived: Derived { polygon: Some(polygon), ..Derived::default() },
+            derived: Derived { a1: Some(polygon), ..Derived::default() },
             context: Context::default(),
             assignment: None,
         });
@@ -216,17 +212,13 @@ pub fn gather(source: &Source, kit: &Kit, lang: Lang) -> Result<Gathered, String
         &(kit.student_file)(),
         lang,
     )?;
-    let a = Assignment::for_student(&record.student, record.table);
+    let a = Variants::for_student(&record.student, record.table);
     let (derived, missing) = derive::derive(&a, &kit.impls);
-    let assignments: BTreeMap<String, String> = [
-        ("a1", a.a1.describe(lang)),
-        ("a2", a.a2.describe(lang)),
-        ("a3", a.a3.describe(lang)),
-        ("a4", a.a4.describe(lang)),
-    ]
-    .into_iter()
-    .map(|(k, v)| (k.to_owned(), v))
-    .collect();
+    let assignments: BTreeMap<String, String> = Which::ALL
+        .iter()
+        .filter(|w| w.in_report())
+        .map(|&w| (w.id().to_owned(), a.describe_one(w, lang)))
+        .collect();
     let context = Context {
         student: Some(record.student.to_string()),
         table: Some(record.table.to_string()),
@@ -301,21 +293,6 @@ fn write(folder: &Path, name: &str, bytes: &[u8], written: &mut Written) -> Resu
     Ok(())
 }
 
-/// The scene of assignment `id` drawn by the student's code, at the time the report shows.
-fn view(id: &str, a: &Assignment, impls: &Impls) -> Result<Result<Scene, Text>, Outcome> {
-    guarded(|| match id {
-        "a1" => cg_a1::view(&a.a1, &impls.a1, 0.0),
-        "a2" => cg_a2::view(&a.a2, &impls.a2, 0.0),
-        "a3" => cg_a3::view(&a.a3, &impls.a3, 1.0),
-        "a4" => cg_a4::view(&a.a4, &impls.a4, 0.0),
-        // Never another assignment's picture under this one's name.
-        other => Err(Text::new(
-            format!("課題 {other} の描画はありません"),
-            format!("assignment {other} has no picture"),
-        )),
-    })
-}
-
 /// Draws each assignment's result to `render-aN.png`; what cannot be drawn goes to `missing`.
 fn render_all(
     g: &mut Gathered,
@@ -325,8 +302,9 @@ fn render_all(
     lang: Lang,
 ) -> Result<(), String> {
     let Some(a) = g.assignment.clone() else { return Ok(()) };
-    for id in ["a1", "a2", "a3", "a4"] {
-        let scene = match view(id, &a, impls) {
+    for which in Which::ALL.iter().copied().filter(|w| w.in_report()) {
+        let id = which.id();
+        let scene = match guarded(|| a.view(which, impls, which.report_time())) {
             Ok(Ok(scene)) => scene,
             Ok(Err(why)) => {
                 g.context.missing.push(Missing { task: id.to_owned(), why });
@@ -377,13 +355,13 @@ fn write_derived(
     lang: Lang,
     written: &mut Written,
 ) -> Result<Values, String> {
-    if let Some(p) = &g.derived.polygon {
+    if let Some(p) = &g.derived.a1 {
         for view in VIEWS {
             let svg = figures::svg(&figures::layout(p, view), lang);
             write(folder, files::view_svg(view), svg.as_bytes(), written)?;
         }
     }
-    if let Some(t) = &g.derived.texture {
+    if let Some(t) = &g.derived.a4 {
         let png = folder.join(files::TEXTURE_PNG);
         std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
         let image = texture_image(&t.image).ok_or_else(|| {
@@ -576,21 +554,4 @@ pub fn check(args: &CheckArgs, kit: &Kit, lang: Lang) -> Result<CheckOutcome, St
     let g = gather(&args.source, kit, lang)?;
     let verification = verify::verify(&parsed, &g.derived);
     Ok(CheckOutcome { report, problems, verification, missing: g.context.missing })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn an_assignment_without_a_picture_is_named_not_drawn_as_another() {
-        let a = Assignment::for_student(
-            &"12345678".parse::<cg_harness::StudentNumber>().expect("a student number"),
-            cg_harness::TableVersion::V1,
-        );
-        let impls = Impls::exercises();
-        let Ok(Err(why)) = view("a5", &a, &impls) else { panic!("a5 must not be drawn") };
-        assert_eq!(why.en, "assignment a5 has no picture");
-        assert!(why.ja.contains("a5"));
-    }
 }

@@ -124,7 +124,7 @@ pub fn values(
     };
     put("student", plain(ctx.student.as_deref().unwrap_or(unknown)));
     put("table", plain(ctx.table.as_deref().unwrap_or(unknown)));
-    for id in ["a1", "a2", "a3", "a4"] {
+    for id in cg_assign::Which::ALL.iter().filter(|w| w.in_report()).map(|w| w.id()) {
         let text = ctx
             .assignments
             .get(id)
@@ -138,7 +138,7 @@ pub fn values(
         put(&format!("{id}.render"), render);
     }
 
-    match &derived.polygon {
+    match &derived.a1 {
         Some(p) => {
             put("a1.vertex_table", tables::vertex_table(p, lang, format));
             put("a1.face_table", tables::face_table(p, lang, format));
@@ -168,7 +168,7 @@ pub fn values(
         }
     }
 
-    match &derived.camera {
+    match &derived.a2 {
         Some(c) => {
             let vars = c.matrices.first().map(|m| m.variables.as_slice()).unwrap_or_default();
             put("a2.variables", tables::variables(vars, lang, format));
@@ -181,7 +181,7 @@ pub fn values(
         }
     }
 
-    match &derived.animation {
+    match &derived.a3 {
         Some(a) => {
             put("a3.periods", plain(a.periods.get(lang)));
             let all: Vec<_> = a.objects.iter().flat_map(|(_, ms)| ms.iter().cloned()).collect();
@@ -194,7 +194,7 @@ pub fn values(
         }
     }
 
-    match &derived.texture {
+    match &derived.a4 {
         Some(t) => {
             put("a4.formula", tables::formula(t, lang, format));
             put("a4.table", tables::tex_table(t, lang, format));

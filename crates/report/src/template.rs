@@ -173,6 +173,24 @@ mod tests {
     use super::*;
 
     #[test]
+    fn every_assignment_in_the_report_has_its_text_and_picture_in_every_template() {
+        for lang in [Lang::Ja, Lang::En] {
+            for format in [Format::Markdown, Format::Latex] {
+                let names: Vec<String> =
+                    placeholders(template(lang, format)).into_iter().map(|(_, n)| n).collect();
+                for which in cg_assign::Which::ALL.iter().filter(|w| w.in_report()) {
+                    for part in ["assignment", "render"] {
+                        let name = format!("{which}.{part}");
+                        assert!(names.contains(&name), "{lang:?} {format:?}: no {{{{{name}}}}}");
+                    }
+                }
+                // And none for an assignment the list does not have.
+                assert!(!names.iter().any(|n| n.starts_with("a9.")));
+            }
+        }
+    }
+
+    #[test]
     fn every_template_uses_the_same_placeholders() {
         let reference: Vec<String> = placeholders(template(Lang::Ja, Format::Markdown))
             .into_iter()

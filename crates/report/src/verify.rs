@@ -547,13 +547,13 @@ fn unmatched(written: &[[Written; 2]], derived: &[Vec2]) -> Vec<usize> {
 /// camera's and the animation's.
 fn known_matrices(derived: &Derived) -> Vec<(String, Option<Mat4>)> {
     let mut out = Vec::new();
-    if let Some(t) = derived.polygon.as_ref().and_then(|p| p.transform.as_ref()) {
+    if let Some(t) = derived.a1.as_ref().and_then(|p| p.transform.as_ref()) {
         out.push(("a1.transform".to_owned(), t.matrix().ok()));
     }
-    if let Some(c) = &derived.camera {
+    if let Some(c) = &derived.a2 {
         out.extend(c.matrices.iter().map(|m| (m.id.clone(), m.numeric.matrix().ok())));
     }
-    if let Some(a) = &derived.animation {
+    if let Some(a) = &derived.a3 {
         for (_, ms) in &a.objects {
             out.extend(ms.iter().map(|m| (m.id.clone(), m.numeric.matrix().ok())));
         }
@@ -605,7 +605,7 @@ fn tables_missing(c: &mut Checker, report: &ParsedReport) {
 #[must_use]
 pub fn verify(report: &ParsedReport, derived: &Derived) -> Verification {
     let mut c = Checker::default();
-    match &derived.polygon {
+    match &derived.a1 {
         Some(p) => {
             c.vertices(&report.vertices, &p.vertices);
             for f in &report.faces {
@@ -636,7 +636,7 @@ pub fn verify(report: &ParsedReport, derived: &Derived) -> Verification {
         }
     }
     c.matrices(&report.matrices, derived);
-    match &derived.texture {
+    match &derived.a4 {
         Some(t) => {
             c.texture(&report.tex, t);
             if report.tex.is_empty() {
@@ -886,13 +886,13 @@ mod tests {
             .then(Factor::translate(Vec3::new(2.0, 0.0, 0.0)));
         Derived {
             student: Some("12345678".to_owned()),
-            polygon: Some(polygon),
-            camera: Some(CameraData { matrices: vec![named("a2.view.start", view)] }),
-            animation: Some(AnimationData {
+            a1: Some(polygon),
+            a2: Some(CameraData { matrices: vec![named("a2.view.start", view)] }),
+            a3: Some(AnimationData {
                 objects: vec![("object0".to_owned(), vec![named("a3.object0.t1.5", object)])],
                 periods: Text::default(),
             }),
-            texture: Some(TextureData {
+            a4: Some(TextureData {
                 rows: vec![
                     tex_row(0, 0, &[(0.0, 0.0)]),
                     tex_row(3, 5, &[(0.3, 0.5), (1.0, 0.5)]),
@@ -904,6 +904,7 @@ mod tests {
                 sampler: None,
                 texels_per_square: Vec2::ZERO,
             }),
+            s: None,
         }
     }
 

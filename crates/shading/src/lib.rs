@@ -108,6 +108,48 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
     view::view(spec, imp)
 }
 
+/// The shading set (lecture 11) as a unit of the kit: what `cg assignment`, `cg check`, `cg view`, the report and the
+/// grader need of it (see [`cg_harness::Assignment`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct S;
+
+impl cg_harness::Assignment for S {
+    const ID: &'static str = ID;
+    const TITLE: (&'static str, &'static str) = ("第11回 シェーディング", "shading");
+    const IN_REPORT: bool = false;
+    type Spec = Spec;
+    type Impl = Impl;
+    type Report = ();
+
+    fn variant(rng: &mut cg_harness::VariantRng) -> Spec {
+        variant(rng)
+    }
+
+    fn describe(spec: &Spec, lang: cg_core::lang::Lang) -> String {
+        spec.describe(lang)
+    }
+
+    fn spec_json(spec: &Spec) -> cg_harness::unit::Json {
+        cg_harness::unit::json(spec)
+    }
+
+    fn checks(spec: &Spec, imp: &Impl) -> Vec<cg_harness::CheckResult> {
+        checks(spec, imp)
+    }
+
+    fn report(_: &Spec, _: &Impl) -> cg_harness::report::Part<()> {
+        (Ok(()), Vec::new())
+    }
+
+    fn view(
+        spec: &Spec,
+        imp: &Impl,
+        time_s: f64,
+    ) -> Result<cg_core::scene::Scene, cg_harness::Text> {
+        view(spec, imp, time_s)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -19,8 +19,7 @@ mod terms;
 /// Every check, in task order.
 pub(crate) fn all(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
     let run = |id: &str, title: cg_harness::Text, body: &dyn Fn() -> Result<(), check::Failure>| {
-        let task = id.rsplit_once('.').map_or(id, |(task, _)| task);
-        check::run(id, task, title, body)
+        check::run(id, title, body)
     };
     vec![
         run("s.t1.ambient", t("環境光 Ia·ka", "ambient term Ia·ka"), &|| {
