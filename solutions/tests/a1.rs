@@ -4,6 +4,9 @@
 //! to catch it (and explains itself, in both languages, naming the place); the view draws the
 //! student's own normals.
 
+// The assignment crates, through the kit's one list (cg-assign).
+use cg_assign::cg_a1;
+
 use std::collections::{BTreeSet, HashSet};
 
 use cg_a1::ShapeExt as _;

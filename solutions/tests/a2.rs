@@ -3,6 +3,9 @@
 //! table is deterministic, valid and diverse; the texts name the tasks in both languages; the
 //! report's product and the view come out of the student's code.
 
+// The assignment crates, through the kit's one list (cg-assign).
+use cg_assign::cg_a2;
+
 use std::collections::BTreeSet;
 
 use cg_a2::SpecExt as _;

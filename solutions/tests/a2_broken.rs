@@ -3,6 +3,9 @@
 //! their messages say what, where and why in both languages, and that every check of the
 //! assignment fails for at least one of them.
 
+// The assignment crates, through the kit's one list (cg-assign).
+use cg_assign::cg_a2;
+
 use std::collections::BTreeSet;
 
 use cg_a2::SpecExt as _;

@@ -3,6 +3,9 @@
 //! and each broken answer of a kind students really hand in fails the checks it should (and the
 //! ones that name its mistake) — while every check ID fails for at least one of them.
 
+// The assignment crates, through the kit's one list (cg-assign).
+use cg_assign::cg_a3;
+
 use std::collections::{BTreeMap, BTreeSet};
 use std::f64::consts::TAU;
 use std::sync::OnceLock;

@@ -7,6 +7,9 @@
 //! coordinates the spec's orientation table puts at each block corner. The symbolic products
 //! name the variables and multiply out to the numeric ones.
 
+// The assignment crates, through the kit's one list (cg-assign).
+use cg_assign::{cg_a1, cg_a2, cg_a3, cg_a4};
+
 use cg_a1::ShapeExt as _;
 use cg_a2::report::{camera, camera_drags};
 use cg_a2::{CameraState, Drag, DragAxis, Operation};

@@ -11,6 +11,9 @@
 //!   every combination that matters;
 //! - the view shows the student's shading on the course's stage.
 
+// The assignment crates, through the kit's one list (cg-assign).
+use cg_assign::cg_shading;
+
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::OnceLock;
 

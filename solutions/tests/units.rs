@@ -75,3 +75,43 @@ fn each_check_carries_its_assignments_id_and_task() {
         }
     }
 }
+
+/// The assignment crates in `crates/`: those whose `lib.rs` implements the trait, with the ID
+/// their `pub const ID` names.
+fn assignment_crates() -> Vec<(PathBuf, String)> {
+    let mut found = Vec::new();
+    for entry in std::fs::read_dir(root().join("crates")).unwrap().flatten() {
+        let lib = entry.path().join("src/lib.rs");
+        let Ok(text) = std::fs::read_to_string(&lib) else { continue };
+        if !text.contains("impl cg_harness::Assignment for") {
+            continue;
+        }
+        let id = text
+            .lines()
+            .find_map(|l| l.strip_prefix("pub const ID: &str = \""))
+            .and_then(|rest| rest.split('"').next())
+            .unwrap_or_else(|| panic!("{}: no `pub const ID`", lib.display()));
+        found.push((entry.path(), id.to_owned()));
+    }
+    found.sort();
+    found
+}
+
+#[test]
+fn every_assignment_crate_is_listed_and_has_the_common_layout() {
+    let crates = assignment_crates();
+    let mut ids: Vec<&str> = crates.iter().map(|(_, id)| id.as_str()).collect();
+    ids.sort_unstable();
+    let mut listed: Vec<&str> = Which::ALL.iter().map(|w| w.id()).collect();
+    listed.sort_unstable();
+    // A crate that implements the trait but is not in the list (or the other way round).
+    assert_eq!(ids, listed, "assignment crates vs cg_assign::for_each_assignment!");
+    for (dir, id) in &crates {
+        for file in ["spec.rs", "describe.rs", "checks/mod.rs", "view.rs", "report.rs"] {
+            let path = dir.join("src").join(file);
+            assert!(path.exists(), "{id}: {} is missing", path.display());
+        }
+        // One file per task: checks/t1.rs at least.
+        assert!(dir.join("src/checks/t1.rs").exists(), "{id}: no checks/t1.rs");
+    }
+}

@@ -384,6 +384,15 @@ pub(crate) fn demo_drags(spec: &Spec, time_s: f64) -> Vec<Drag> {
     drags
 }
 
+/// The view transform the spec asks for, with the report's names:
+/// `T(0, 0, -camera_distance) · Rx(-camera_pitch) · Ry(-camera_yaw)`, then
+/// `T(-target_x, 0, -target_z)` when the spec has a pan. Its matrix is the one of
+/// `cg_core::camera::OrbitCamera::view_matrix` for the state.
+#[must_use]
+pub fn expected_product(spec: &Spec, state: &CameraState) -> MatrixProduct {
+    view_product(spec.pan.is_some(), state)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

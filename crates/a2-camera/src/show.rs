@@ -5,9 +5,10 @@ use cg_core::glam::{Mat4, Vec4};
 use cg_core::lang::Lang;
 use cg_core::product::{Factor, MatrixProduct, Param, format_number};
 use cg_harness::Text;
+use cg_harness::check::Outcome;
 
 use crate::spec::SpecVars;
-use crate::{CameraState, Drag, DragAxis, Gesture, MouseButton, Operation, Spec};
+use crate::{CameraState, Drag, DragAxis, Gesture, Impl, MouseButton, Operation, Spec};
 
 /// A camera variable.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -265,6 +266,39 @@ pub(crate) fn symbolize(product: &MatrixProduct, s: &CameraState) -> MatrixProdu
         })
         .collect();
     MatrixProduct { factors }
+}
+
+/// The view transform as the student's [`Impl::camera`] builds it, with the report's names:
+/// `T(0, 0, -camera_distance) · Rx(-camera_pitch) · Ry(-camera_yaw) · T(-target_x, 0, -target_z)`
+/// for the reference answer. Print it with [`MatrixProduct::symbolic`] or
+/// [`MatrixProduct::latex`].
+///
+/// The camera is run once at a probe state whose values are all different (yaw 37°, pitch −23°,
+/// distance 13.5, target (1.25, −0.75)); every number of a factor that equals one of them, or
+/// its negative, is named after its variable. Numbers that match none (a constant, or an angle
+/// in radians) stay numbers, which itself shows a mistake.
+///
+/// # Errors
+/// What keeps the product from being read (a stub not written yet, a panic), in words.
+pub fn camera_product(imp: &Impl) -> Result<MatrixProduct, Text> {
+    let probe = PROBE;
+    let mut rec = cg_student::gl::Gl::new();
+    match cg_harness::check::guarded(|| (imp.camera)(&mut rec, &probe)) {
+        Ok(()) => Ok(symbolize(crate::replay(&rec).model_view(), &probe)),
+        Err(Outcome::NotDone { message }) => {
+            Err(Text::new(format!("まだです: {message}"), format!("not done yet: {message}")))
+        }
+        Err(other) => {
+            let message = match other {
+                Outcome::Panicked { message, .. } => message,
+                _ => String::new(),
+            };
+            Err(Text::new(
+                format!("camera()（a2.t2）が異常終了しました（panic）: {message}"),
+                format!("camera() (a2.t2) panicked: {message}"),
+            ))
+        }
+    }
 }
 
 #[cfg(test)]

@@ -1,6 +1,6 @@
 //! The report's data for `a3`: each object's model matrix at the stated times, numerically and
 //! with the animation's variables named (see [`cg_harness::symbolic`]), and the periods. The
-//! poses are read as the checks read them ([`crate::pose`]).
+//! poses are read as the checks read them (`pose.rs`).
 
 use cg_core::gl::{Draw, Gl};
 use cg_core::product::{Factor, MatrixProduct, format_number};

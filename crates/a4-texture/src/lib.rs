@@ -32,6 +32,7 @@
 //! `cg assignment --json` shows the spec through [`Presented`] / [`serialize_spec`].
 
 mod checks;
+mod describe;
 mod json;
 mod prepared;
 pub mod report;

@@ -9,7 +9,7 @@ use std::ops::ControlFlow;
 
 use glam::{DVec3, Vec2, Vec3};
 
-use crate::lang::Lang;
+use crate::lang::{Lang, Text, t};
 use crate::notation;
 
 /// An indexed triangle mesh. Vertex `i` has `positions[i]` and, where present, `normals[i]`,
@@ -112,7 +112,8 @@ impl Mesh {
 /// A structural error that makes a mesh unusable (as opposed to a validation finding such as an
 /// open boundary, which is reported by [`Mesh::validate`]).
 ///
-/// `Display` gives the English message; [`MeshError::message`] gives it in either language.
+/// `Display` gives the English message; [`MeshError::message`] gives it in either language,
+/// [`MeshError::text`] in both.
 #[derive(Clone, Debug, PartialEq)]
 pub enum MeshError {
     /// A face refers to a vertex that does not exist.
@@ -150,43 +151,47 @@ impl MeshError {
     /// one is the `Display` text.
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        let ja = lang == Lang::Ja;
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message for a student in both languages (see [`MeshError::message`]).
+    #[must_use]
+    pub fn text(&self) -> Text {
         match self {
             MeshError::IndexOutOfRange { face, corner, index, vertex_count } => {
-                let range = match (ja, vertex_count) {
-                    (true, 0) => "頂点が 1 つもありません".to_owned(),
-                    (false, 0) => "the mesh has no vertices".to_owned(),
-                    (true, n) => format!("頂点は V0–V{} の {n} 個です", n - 1),
-                    (false, n) => format!("the mesh has only {n} vertices, V0–V{}", n - 1),
+                let range = match vertex_count {
+                    0 => t("頂点が 1 つもありません", "the mesh has no vertices"),
+                    n => Text::new(
+                        format!("頂点は V0–V{} の {n} 個です", n - 1),
+                        format!("the mesh has only {n} vertices, V0–V{}", n - 1),
+                    ),
                 };
-                if ja {
+                Text::new(
                     format!(
-                        "面 F{face} の {corner} 番目 (0 から数えて) の頂点番号 V{index} は存在しません（{range}）"
-                    )
-                } else {
-                    format!("face F{face} corner {corner} refers to V{index}, but {range}")
-                }
+                        "面 F{face} の {corner} 番目 (0 から数えて) の頂点番号 V{index} は存在しません（{}）",
+                        range.ja
+                    ),
+                    format!("face F{face} corner {corner} refers to V{index}, but {}", range.en),
+                )
             }
             MeshError::AttributeLength { attribute, len, expected } => {
-                if ja {
-                    let name = match *attribute {
-                        "normals" => "法線",
-                        "uvs" => "テクスチャ座標",
-                        "colors" => "色",
-                        other => other,
-                    };
-                    format!("頂点は {expected} 個ですが、{name} ({attribute}) が {len} 個あります")
-                } else {
-                    format!("the mesh has {expected} vertices but {len} {attribute}")
-                }
+                let name = match *attribute {
+                    "normals" => "法線",
+                    "uvs" => "テクスチャ座標",
+                    "colors" => "色",
+                    other => other,
+                };
+                Text::new(
+                    format!("頂点は {expected} 個ですが、{name} ({attribute}) が {len} 個あります"),
+                    format!("the mesh has {expected} vertices but {len} {attribute}"),
+                )
             }
             MeshError::NonFinitePosition { vertex, position } => {
                 let p = format!("({}, {}, {})", position.x, position.y, position.z);
-                if ja {
-                    format!("頂点 V{vertex} の座標 {p} に無限大または NaN が含まれています")
-                } else {
-                    format!("vertex V{vertex} has a non-finite position {p}")
-                }
+                Text::new(
+                    format!("頂点 V{vertex} の座標 {p} に無限大または NaN が含まれています"),
+                    format!("vertex V{vertex} has a non-finite position {p}"),
+                )
             }
         }
     }
@@ -321,121 +326,108 @@ impl Problem {
     /// the same direction: one of them is wound the wrong way`.
     #[must_use]
     pub fn describe(&self, lang: Lang) -> String {
-        let ja = lang == Lang::Ja;
+        self.text().get(lang).to_owned()
+    }
+
+    /// What is wrong, in both languages (see [`Problem::describe`]).
+    #[must_use]
+    pub fn text(&self) -> Text {
         match self {
-            Problem::Structure(e) => e.message(lang),
+            Problem::Structure(e) => e.text(),
             Problem::RepeatedIndex { face, vertices } => {
                 let f = notation::face(*face, *vertices);
-                if ja {
-                    format!("面 {f} は同じ頂点を 2 回使っています（面積 0 の面）")
-                } else {
-                    format!("face {f} uses the same vertex twice: it has no area")
-                }
+                Text::new(
+                    format!("面 {f} は同じ頂点を 2 回使っています（面積 0 の面）"),
+                    format!("face {f} uses the same vertex twice: it has no area"),
+                )
             }
             Problem::ZeroArea { face, vertices } => {
                 let f = notation::face(*face, *vertices);
-                if ja {
+                Text::new(
                     format!(
                         "面 {f} の面積が 0 です（3 頂点が一致するか、座標の精度の範囲で一直線上にあります）"
-                    )
-                } else {
+                    ),
                     format!(
                         "face {f} has zero area: its vertices coincide or lie on one line (within the precision of their coordinates)"
-                    )
-                }
+                    ),
+                )
             }
             Problem::BoundaryEdge { edge, face } => {
                 let e = notation::edge(edge[0], edge[1]);
-                if ja {
+                Text::new(
                     format!(
                         "面 F{face} の辺 {e} を共有する面がありません（モデルがここで閉じていません）"
-                    )
-                } else {
+                    ),
                     format!(
                         "edge {e} of F{face} is not shared with any other face: the model is not closed there"
-                    )
-                }
+                    ),
+                )
             }
             Problem::NonManifoldEdge { edge, faces } => {
                 let e = notation::edge(edge[0], edge[1]);
                 let n = faces.len();
-                if ja {
+                Text::new(
                     format!(
                         "辺 {e} を {n} 個の面 ({}) が共有しています（閉じたモデルでは 1 つの辺を共有する面はちょうど 2 つです）",
-                        face_list(faces, lang)
-                    )
-                } else {
+                        face_list(faces, Lang::Ja)
+                    ),
                     format!(
                         "edge {e} is used by {n} faces ({}): an edge of a closed model belongs to exactly two",
-                        face_list(faces, lang)
-                    )
-                }
+                        face_list(faces, Lang::En)
+                    ),
+                )
             }
             Problem::InconsistentWinding { edge, faces } => {
                 let e = notation::edge(edge[0], edge[1]);
                 let [f, g] = faces;
-                if ja {
+                Text::new(
                     format!(
                         "辺 {e} を F{f} と F{g} が同じ向きにたどっています: どちらかの頂点の順番（回る向き）が逆です"
-                    )
-                } else {
+                    ),
                     format!(
                         "edge {e} is used by F{f} and F{g} in the same direction: one of them is wound the wrong way"
-                    )
-                }
+                    ),
+                )
             }
-            Problem::NonManifoldVertex { vertex, fans } => {
-                if ja {
-                    format!(
-                        "頂点 V{vertex} で {fans} 組の面が点だけで接しています（蝶ネクタイ形: 頂点のまわりの面が 1 つの扇になっていません）"
-                    )
-                } else {
-                    format!(
-                        "vertex V{vertex} joins {fans} separate fans of faces (a bow-tie): the parts touch only at this vertex"
-                    )
-                }
-            }
+            Problem::NonManifoldVertex { vertex, fans } => Text::new(
+                format!(
+                    "頂点 V{vertex} で {fans} 組の面が点だけで接しています（蝶ネクタイ形: 頂点のまわりの面が 1 つの扇になっていません）"
+                ),
+                format!(
+                    "vertex V{vertex} joins {fans} separate fans of faces (a bow-tie): the parts touch only at this vertex"
+                ),
+            ),
             Problem::TJunction { vertex, edge, face } => {
                 let e = notation::edge(edge[0], edge[1]);
-                if ja {
+                Text::new(
                     format!(
                         "頂点 V{vertex} が面 F{face} の辺 {e} の途中にありますが、F{face} はこの頂点を使っていません（T 字接合: 隣接する面が辺を共有していません）"
-                    )
-                } else {
+                    ),
                     format!(
                         "vertex V{vertex} lies on edge {e} of F{face}, but F{face} does not use it (a T-junction): the neighbouring faces do not share their edges"
-                    )
-                }
+                    ),
+                )
             }
-            Problem::InwardFacing { signed_volume } => {
-                if ja {
-                    format!(
-                        "すべての面が外から見て時計回りです（符号付き体積 {signed_volume:.6e} < 0）: 面の法線が内側を向いています"
-                    )
-                } else {
-                    format!(
-                        "every face is wound clockwise seen from outside (signed volume {signed_volume:.6e} < 0): the normals point inward"
-                    )
-                }
-            }
-            Problem::ZeroVolume { signed_volume } => {
-                if ja {
-                    format!(
-                        "閉じた面が体積を囲んでいません（符号付き体積 {signed_volume:.3e}）: 面の向き（表裏）が決まりません"
-                    )
-                } else {
-                    format!(
-                        "the closed surface encloses no volume (signed volume {signed_volume:.3e}): which side is outside is undefined"
-                    )
-                }
-            }
-            Problem::UnreferencedVertex { vertex } => {
-                if ja {
-                    format!("頂点 V{vertex} はどの面にも使われていません")
-                } else {
-                    format!("vertex V{vertex} is used by no face")
-                }
-            }
+            Problem::InwardFacing { signed_volume } => Text::new(
+                format!(
+                    "すべての面が外から見て時計回りです（符号付き体積 {signed_volume:.6e} < 0）: 面の法線が内側を向いています"
+                ),
+                format!(
+                    "every face is wound clockwise seen from outside (signed volume {signed_volume:.6e} < 0): the normals point inward"
+                ),
+            ),
+            Problem::ZeroVolume { signed_volume } => Text::new(
+                format!(
+                    "閉じた面が体積を囲んでいません（符号付き体積 {signed_volume:.3e}）: 面の向き（表裏）が決まりません"
+                ),
+                format!(
+                    "the closed surface encloses no volume (signed volume {signed_volume:.3e}): which side is outside is undefined"
+                ),
+            ),
+            Problem::UnreferencedVertex { vertex } => Text::new(
+                format!("頂点 V{vertex} はどの面にも使われていません"),
+                format!("vertex V{vertex} is used by no face"),
+            ),
         }
     }
 
@@ -1199,5 +1191,120 @@ impl SpatialHash {
             f(item);
             at = next;
         }
+    }
+}
+
+#[cfg(test)]
+mod text_tests {
+    use super::*;
+
+    /// Every variant of [`MeshError`] and [`Problem`], and each branch of their messages.
+    fn samples() -> (Vec<MeshError>, Vec<Problem>) {
+        let errors = vec![
+            MeshError::IndexOutOfRange { face: 6, corner: 2, index: 9, vertex_count: 5 },
+            MeshError::IndexOutOfRange { face: 0, corner: 0, index: 0, vertex_count: 0 },
+            MeshError::AttributeLength { attribute: "normals", len: 3, expected: 4 },
+            MeshError::AttributeLength { attribute: "uvs", len: 3, expected: 4 },
+            MeshError::AttributeLength { attribute: "colors", len: 3, expected: 4 },
+            MeshError::NonFinitePosition { vertex: 2, position: Vec3::new(f32::NAN, 0.0, 1.0) },
+        ];
+        let mut problems: Vec<Problem> = errors.iter().cloned().map(Problem::Structure).collect();
+        problems.extend([
+            Problem::RepeatedIndex { face: 7, vertices: [1, 1, 3] },
+            Problem::ZeroArea { face: 2, vertices: [0, 1, 2] },
+            Problem::BoundaryEdge { edge: [1, 3], face: 4 },
+            Problem::NonManifoldEdge { edge: [1, 3], faces: vec![0, 3, 6] },
+            Problem::NonManifoldEdge { edge: [2, 5], faces: vec![1, 2] },
+            Problem::InconsistentWinding { edge: [1, 3], faces: [0, 4] },
+            Problem::NonManifoldVertex { vertex: 4, fans: 2 },
+            Problem::TJunction { vertex: 5, edge: [0, 2], face: 1 },
+            Problem::InwardFacing { signed_volume: -1.5 },
+            Problem::ZeroVolume { signed_volume: 1e-12 },
+            Problem::UnreferencedVertex { vertex: 8 },
+        ]);
+        // Exhaustive: a new variant does not compile until it has a sample above.
+        for p in &problems {
+            match p {
+                Problem::Structure(
+                    MeshError::IndexOutOfRange { .. }
+                    | MeshError::AttributeLength { .. }
+                    | MeshError::NonFinitePosition { .. },
+                )
+                | Problem::RepeatedIndex { .. }
+                | Problem::ZeroArea { .. }
+                | Problem::BoundaryEdge { .. }
+                | Problem::NonManifoldEdge { .. }
+                | Problem::InconsistentWinding { .. }
+                | Problem::NonManifoldVertex { .. }
+                | Problem::TJunction { .. }
+                | Problem::InwardFacing { .. }
+                | Problem::ZeroVolume { .. }
+                | Problem::UnreferencedVertex { .. } => {}
+            }
+        }
+        (errors, problems)
+    }
+
+    /// Both languages' messages of `e` (and `message` gives the same).
+    fn error_text(e: &MeshError) -> Text {
+        let text = e.text();
+        assert_eq!([e.message(Lang::Ja), e.message(Lang::En)], [&*text.ja, &*text.en]);
+        text
+    }
+
+    /// Both languages' messages of `p` (and `describe` gives the same).
+    fn problem_text(p: &Problem) -> Text {
+        let text = p.text();
+        assert_eq!([p.describe(Lang::Ja), p.describe(Lang::En)], [&*text.ja, &*text.en]);
+        text
+    }
+
+    /// What is wrong with `text` as a one-line message in each language (empty when nothing).
+    fn problems(what: &str, text: &Text) -> Vec<String> {
+        let kana_or_kanji =
+            |c: char| matches!(c, '\u{3040}'..='\u{30ff}' | '\u{4e00}'..='\u{9fff}');
+        let japanese = |c: char| {
+            kana_or_kanji(c) || matches!(c, '\u{3000}'..='\u{303f}' | '\u{ff00}'..='\u{ffef}')
+        };
+        let mut found = Vec::new();
+        for (lang, s) in [(Lang::Ja, &text.ja), (Lang::En, &text.en)] {
+            let mut complain = |why: &str| found.push(format!("{what} ({lang}): {why}: {s:?}"));
+            if s.is_empty() {
+                complain("empty");
+            }
+            if s.contains("  ") {
+                complain("a run of spaces");
+            }
+            if s.trim() != s.as_str() {
+                complain("leading or trailing whitespace");
+            }
+            if s.contains(['\n', '\r', '\t']) {
+                complain("a line break or tab");
+            }
+            match lang {
+                Lang::Ja if !s.chars().any(kana_or_kanji) => complain("no Japanese"),
+                Lang::En if s.chars().any(japanese) => complain("Japanese in the English text"),
+                _ => {}
+            }
+        }
+        if text.ja == text.en {
+            found.push(format!("{what}: the same in both languages: {:?}", text.en));
+        }
+        found
+    }
+
+    #[test]
+    fn every_message_is_one_clean_line_in_each_language() {
+        let (errors, findings) = samples();
+        let mut found = Vec::new();
+        for e in &errors {
+            let text = error_text(e);
+            assert_eq!(e.to_string(), text.en);
+            found.extend(problems(&format!("{e:?}"), &text));
+        }
+        for p in &findings {
+            found.extend(problems(&format!("{p:?}"), &problem_text(p)));
+        }
+        assert!(found.is_empty(), "{} problems:\n{}", found.len(), found.join("\n"));
     }
 }

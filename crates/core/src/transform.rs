@@ -23,7 +23,7 @@
 
 use glam::{DVec3, Mat4, Vec3, Vec4};
 
-use crate::lang::Lang;
+use crate::lang::{Lang, Text};
 use crate::math::{angle_between, try_normalize, try_normalize_f64};
 
 /// [`look_at`] refuses an `up` vector closer than this to the view direction (or its opposite),
@@ -36,7 +36,8 @@ use crate::math::{angle_between, try_normalize, try_normalize_f64};
 pub const LOOK_AT_MIN_UP_ANGLE_DEG: f64 = 0.01;
 
 /// Why a transform could not be built. Each message names the offending value;
-/// [`TransformError::message`] gives it in Japanese or English (`Display` is the English one).
+/// [`TransformError::text`] gives it in Japanese and English, [`TransformError::message`] in
+/// either (`Display` is the English one).
 #[derive(Clone, Debug, PartialEq)]
 pub enum TransformError {
     /// A rotation axis that is zero or not finite (glRotatef needs a direction).
@@ -130,124 +131,91 @@ impl TransformError {
     /// The message for a student in `lang`, naming the offending value.
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        let ja = lang == Lang::Ja;
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message for a student in both languages, naming the offending value.
+    #[must_use]
+    pub fn text(&self) -> Text {
         match self {
-            TransformError::RotationAxis { axis } => {
-                if ja {
-                    format!(
-                        "回転軸 {axis} がゼロまたは有限でない値です（glRotatef には長さのある方向が必要です）"
-                    )
-                } else {
-                    format!(
-                        "rotation axis {axis} is zero or not finite: glRotatef needs a non-zero direction"
-                    )
-                }
-            }
-            TransformError::NotFinite { what, value } => {
-                if ja {
-                    format!("{what} = {value} が有限の値ではありません")
-                } else {
-                    format!("{what} = {value} is not finite")
-                }
-            }
-            TransformError::MatrixNotFinite { name, value } => {
-                if ja {
-                    format!("行列 {name} に有限でない要素 {value} があります")
-                } else {
-                    format!("matrix {name} has a non-finite entry {value}")
-                }
-            }
-            TransformError::NearPlane { near } => {
-                if ja {
-                    format!(
-                        "透視投影: near = {near:e} は正の有限値（非正規化数ではない値）でなければなりません"
-                    )
-                } else {
-                    format!(
-                        "perspective: near = {near:e} must be a finite, normal (not subnormal) number > 0"
-                    )
-                }
-            }
-            TransformError::FarPlane { near, far } => {
-                if ja {
-                    format!(
-                        "透視投影: far = {far} は有限で near = {near} より大きくなければなりません"
-                    )
-                } else {
-                    format!(
-                        "perspective: far = {far} must be finite and greater than near = {near}"
-                    )
-                }
-            }
-            TransformError::DepthRange { near, far } => {
-                if ja {
-                    format!("透視投影: near = {near} と far = {far} が近すぎて奥行きを表せません")
-                } else {
-                    format!(
-                        "perspective: near = {near} and far = {far} are too close for an f32 depth mapping"
-                    )
-                }
-            }
-            TransformError::FieldOfView { fovy_deg } => {
-                if ja {
-                    format!(
-                        "透視投影: 視野角 fovy = {fovy_deg}° は 0° より大きく 180° より小さくなければなりません"
-                    )
-                } else {
-                    format!("perspective: fovy = {fovy_deg}° must lie strictly between 0° and 180°")
-                }
-            }
-            TransformError::AspectRatio { aspect } => {
-                if ja {
-                    format!(
-                        "透視投影: アスペクト比 aspect = {aspect:e} は正の有限値で、投影行列があふれない大きさでなければなりません"
-                    )
-                } else {
-                    format!(
-                        "perspective: aspect = {aspect:e} must be a finite number > 0, not so extreme that the projection overflows"
-                    )
-                }
-            }
-            TransformError::LookAtNotFinite { eye, target, up } => {
-                if ja {
-                    format!(
-                        "look_at: 視点 {eye}・注視点 {target}・上方向 {up} は有限の値でなければなりません"
-                    )
-                } else {
-                    format!("look_at: eye {eye}, target {target} and up {up} must be finite")
-                }
-            }
-            TransformError::EyeAtTarget { eye } => {
-                if ja {
-                    format!("look_at: 視点と注視点が同じ点 {eye} です（視線の方向が決まりません）")
-                } else {
-                    format!("look_at: eye and target are the same point {eye}: no view direction")
-                }
-            }
-            TransformError::UpParallelToView { up, direction, angle_deg } => {
-                if ja {
-                    format!(
-                        "look_at: 上方向 {up} が視線方向 {direction} とほぼ平行です（{angle_deg}°、最小 {LOOK_AT_MIN_UP_ANGLE_DEG}°）"
-                    )
-                } else {
-                    format!(
-                        "look_at: up {up} is within {angle_deg}° of the view direction {direction} (minimum {LOOK_AT_MIN_UP_ANGLE_DEG}°)"
-                    )
-                }
-            }
-            TransformError::Overflow { what } => {
-                if ja {
-                    format!("{what} が f32 の範囲を超えます")
-                } else {
-                    format!("{what} overflows f32")
-                }
-            }
+            TransformError::RotationAxis { axis } => Text::new(
+                format!(
+                    "回転軸 {axis} がゼロまたは有限でない値です（glRotatef には長さのある方向が必要です）"
+                ),
+                format!(
+                    "rotation axis {axis} is zero or not finite: glRotatef needs a non-zero direction"
+                ),
+            ),
+            TransformError::NotFinite { what, value } => Text::new(
+                format!("{what} = {value} が有限の値ではありません"),
+                format!("{what} = {value} is not finite"),
+            ),
+            TransformError::MatrixNotFinite { name, value } => Text::new(
+                format!("行列 {name} に有限でない要素 {value} があります"),
+                format!("matrix {name} has a non-finite entry {value}"),
+            ),
+            TransformError::NearPlane { near } => Text::new(
+                format!(
+                    "透視投影: near = {near:e} は正の有限値（非正規化数ではない値）でなければなりません"
+                ),
+                format!(
+                    "perspective: near = {near:e} must be a finite, normal (not subnormal) number > 0"
+                ),
+            ),
+            TransformError::FarPlane { near, far } => Text::new(
+                format!(
+                    "透視投影: far = {far} は有限で near = {near} より大きくなければなりません"
+                ),
+                format!("perspective: far = {far} must be finite and greater than near = {near}"),
+            ),
+            TransformError::DepthRange { near, far } => Text::new(
+                format!("透視投影: near = {near} と far = {far} が近すぎて奥行きを表せません"),
+                format!(
+                    "perspective: near = {near} and far = {far} are too close for an f32 depth mapping"
+                ),
+            ),
+            TransformError::FieldOfView { fovy_deg } => Text::new(
+                format!(
+                    "透視投影: 視野角 fovy = {fovy_deg}° は 0° より大きく 180° より小さくなければなりません"
+                ),
+                format!("perspective: fovy = {fovy_deg}° must lie strictly between 0° and 180°"),
+            ),
+            TransformError::AspectRatio { aspect } => Text::new(
+                format!(
+                    "透視投影: アスペクト比 aspect = {aspect:e} は正の有限値で、投影行列があふれない大きさでなければなりません"
+                ),
+                format!(
+                    "perspective: aspect = {aspect:e} must be a finite number > 0, not so extreme that the projection overflows"
+                ),
+            ),
+            TransformError::LookAtNotFinite { eye, target, up } => Text::new(
+                format!(
+                    "look_at: 視点 {eye}・注視点 {target}・上方向 {up} は有限の値でなければなりません"
+                ),
+                format!("look_at: eye {eye}, target {target} and up {up} must be finite"),
+            ),
+            TransformError::EyeAtTarget { eye } => Text::new(
+                format!("look_at: 視点と注視点が同じ点 {eye} です（視線の方向が決まりません）"),
+                format!("look_at: eye and target are the same point {eye}: no view direction"),
+            ),
+            TransformError::UpParallelToView { up, direction, angle_deg } => Text::new(
+                format!(
+                    "look_at: 上方向 {up} が視線方向 {direction} とほぼ平行です（{angle_deg}°、最小 {LOOK_AT_MIN_UP_ANGLE_DEG}°）"
+                ),
+                format!(
+                    "look_at: up {up} is within {angle_deg}° of the view direction {direction} (minimum {LOOK_AT_MIN_UP_ANGLE_DEG}°)"
+                ),
+            ),
+            TransformError::Overflow { what } => Text::new(
+                format!("{what} が f32 の範囲を超えます"),
+                format!("{what} overflows f32"),
+            ),
             TransformError::InFactor { index, source } => {
-                if ja {
-                    format!("積の {index} 番目の因子: {}", source.message(lang))
-                } else {
-                    format!("factor {index} of the product: {}", source.message(lang))
-                }
+                let source = source.text();
+                Text::new(
+                    format!("積の {index} 番目の因子: {}", source.ja),
+                    format!("factor {index} of the product: {}", source.en),
+                )
             }
         }
     }
@@ -600,4 +568,106 @@ pub fn project_point(m: Mat4, p: Vec3) -> Option<Vec3> {
     }
     let r = h.truncate() / h.w;
     r.is_finite().then_some(r)
+}
+
+#[cfg(test)]
+mod text_tests {
+    use super::*;
+
+    /// Every variant, and both branches of the ones whose message has two.
+    fn samples() -> Vec<TransformError> {
+        let all = vec![
+            TransformError::RotationAxis { axis: Vec3::ZERO },
+            TransformError::NotFinite { what: "translation", value: f32::NAN },
+            TransformError::MatrixNotFinite { name: "T".into(), value: f32::INFINITY },
+            TransformError::NearPlane { near: 1e-40 },
+            TransformError::FarPlane { near: 1.0, far: 0.5 },
+            TransformError::DepthRange { near: 1e30, far: 1.000_001e30 },
+            TransformError::FieldOfView { fovy_deg: 180.0 },
+            TransformError::AspectRatio { aspect: -1.0 },
+            TransformError::LookAtNotFinite { eye: Vec3::ZERO, target: Vec3::X, up: Vec3::NAN },
+            TransformError::EyeAtTarget { eye: Vec3::ONE },
+            TransformError::UpParallelToView {
+                up: Vec3::Z,
+                direction: Vec3::NEG_Z,
+                angle_deg: 0.001,
+            },
+            TransformError::Overflow { what: "the product" },
+            TransformError::InFactor {
+                index: 2,
+                source: Box::new(TransformError::NearPlane { near: 0.0 }),
+            },
+        ];
+        // Exhaustive: a new variant does not compile until it has a sample above.
+        for e in &all {
+            match e {
+                TransformError::RotationAxis { .. }
+                | TransformError::NotFinite { .. }
+                | TransformError::MatrixNotFinite { .. }
+                | TransformError::NearPlane { .. }
+                | TransformError::FarPlane { .. }
+                | TransformError::DepthRange { .. }
+                | TransformError::FieldOfView { .. }
+                | TransformError::AspectRatio { .. }
+                | TransformError::LookAtNotFinite { .. }
+                | TransformError::EyeAtTarget { .. }
+                | TransformError::UpParallelToView { .. }
+                | TransformError::Overflow { .. }
+                | TransformError::InFactor { .. } => {}
+            }
+        }
+        all
+    }
+
+    /// Both languages' messages of `e` (and `message` gives the same).
+    fn text_of(e: &TransformError) -> Text {
+        let text = e.text();
+        assert_eq!([e.message(Lang::Ja), e.message(Lang::En)], [&*text.ja, &*text.en]);
+        text
+    }
+
+    /// What is wrong with `text` as a one-line message in each language (empty when nothing).
+    fn problems(what: &str, text: &Text) -> Vec<String> {
+        let kana_or_kanji =
+            |c: char| matches!(c, '\u{3040}'..='\u{30ff}' | '\u{4e00}'..='\u{9fff}');
+        let japanese = |c: char| {
+            kana_or_kanji(c) || matches!(c, '\u{3000}'..='\u{303f}' | '\u{ff00}'..='\u{ffef}')
+        };
+        let mut found = Vec::new();
+        for (lang, s) in [(Lang::Ja, &text.ja), (Lang::En, &text.en)] {
+            let mut complain = |why: &str| found.push(format!("{what} ({lang}): {why}: {s:?}"));
+            if s.is_empty() {
+                complain("empty");
+            }
+            if s.contains("  ") {
+                complain("a run of spaces");
+            }
+            if s.trim() != s.as_str() {
+                complain("leading or trailing whitespace");
+            }
+            if s.contains(['\n', '\r', '\t']) {
+                complain("a line break or tab");
+            }
+            match lang {
+                Lang::Ja if !s.chars().any(kana_or_kanji) => complain("no Japanese"),
+                Lang::En if s.chars().any(japanese) => complain("Japanese in the English text"),
+                _ => {}
+            }
+        }
+        if text.ja == text.en {
+            found.push(format!("{what}: the same in both languages: {:?}", text.en));
+        }
+        found
+    }
+
+    #[test]
+    fn every_message_is_one_clean_line_in_each_language() {
+        let mut found = Vec::new();
+        for e in samples() {
+            let text = text_of(&e);
+            assert_eq!(e.to_string(), text.en);
+            found.extend(problems(&format!("{e:?}"), &text));
+        }
+        assert!(found.is_empty(), "{} problems:\n{}", found.len(), found.join("\n"));
+    }
 }

@@ -1,6 +1,6 @@
 //! Why the OpenGL reference could not draw a scene, in Japanese and English.
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text, t};
 use cg_core::scene::PrepareError;
 use cg_core::texture::TextureError;
 use cg_core::transform::TransformError;
@@ -23,41 +23,26 @@ pub fn install_hint(lang: Lang) -> &'static str {
 }
 
 /// Why the OpenGL reference could not draw a scene. `Display` is the English message;
-/// [`GlRefError::message`] gives it in either language.
-#[derive(Debug, thiserror::Error)]
+/// [`GlRefError::message`] gives it in either language, [`GlRefError::text`] in both.
+#[derive(Debug)]
 pub enum GlRefError {
     /// The reference cannot run on this machine: no C compiler, no OSMesa, or the program did
     /// not build or start.
-    #[error("the OpenGL reference is not available: {detail}. {}", install_hint(Lang::En))]
     NotAvailable {
         /// What went wrong, with the compiler's or the program's own words.
         detail: String,
     },
     /// The scene uses the lecture's light model, which OpenGL does not have.
-    #[error(
-        "the scene uses the lecture's light model (light_model = \"lecture\"), which OpenGL 1.x \
-         does not have: the OpenGL reference draws only light_model = \"opengl\""
-    )]
     LectureLightModel,
     /// The scene asks for Phong shading, which OpenGL's fixed-function pipeline does not have.
-    #[error(
-        "the scene asks for Phong shading (shading = \"phong\"), which OpenGL's fixed-function \
-         pipeline does not have: the OpenGL reference draws only \"flat\" (GL_FLAT) and \
-         \"gouraud\" (GL_SMOOTH)"
-    )]
     PhongShading,
     /// More point lights than OpenGL's eight (GL_LIGHT0 … GL_LIGHT7); area lights count as
     /// their samples.
-    #[error(
-        "the scene has {count} point lights (area lights count as their samples), but OpenGL \
-         has only 8 (GL_LIGHT0 … GL_LIGHT7)"
-    )]
     TooManyLights {
         /// How many point lights the scene's lights stand for.
         count: usize,
     },
     /// An image side of zero pixels, or larger than OSMesa draws.
-    #[error("the image must be 1×1 to {max}×{max} pixels, got {width}×{height}")]
     Size {
         /// The width asked for.
         width: u32,
@@ -67,16 +52,12 @@ pub enum GlRefError {
         max: u32,
     },
     /// The projection cannot be built.
-    #[error("the projection: {0}")]
     Projection(TransformError),
     /// The view cannot be built.
-    #[error("the camera: {0}")]
     View(TransformError),
     /// An object cannot be made ready to draw.
-    #[error("{0}")]
     Prepare(PrepareError),
     /// A number the reference must pass to OpenGL is NaN or infinite.
-    #[error("{what} is not finite ({value}): OpenGL cannot draw it")]
     NotFinite {
         /// Which number (`object "pyramid": vertex 3 position`).
         what: String,
@@ -84,7 +65,6 @@ pub enum GlRefError {
         value: f32,
     },
     /// A value outside the range OpenGL accepts (GL_INVALID_VALUE).
-    #[error("{what} is {value}, but OpenGL accepts only {range}")]
     OutsideGlRange {
         /// Which value (`material "shiny": shininess`).
         what: String,
@@ -94,13 +74,11 @@ pub enum GlRefError {
         range: &'static str,
     },
     /// A directional light whose direction is zero.
-    #[error("light {light}: a directional light needs a non-zero direction")]
     ZeroDirection {
         /// The light's index in the scene (from 0).
         light: usize,
     },
     /// An object refers to a texture the scene does not have.
-    #[error("object \"{object}\": texture {texture} does not exist (the scene has {count})")]
     MissingTexture {
         /// The object's name.
         object: String,
@@ -110,7 +88,6 @@ pub enum GlRefError {
         count: usize,
     },
     /// A texture whose size and texels do not agree.
-    #[error("texture {texture}: {source}")]
     BadTexture {
         /// The texture's index in the scene.
         texture: usize,
@@ -118,13 +95,11 @@ pub enum GlRefError {
         source: TextureError,
     },
     /// A textured object whose mesh has no texture coordinates.
-    #[error("object \"{object}\" has a texture but its mesh has no texture coordinates")]
     MissingTextureCoordinates {
         /// The object's name.
         object: String,
     },
     /// The program ran and reported an error (a GL error or an OSMesa failure).
-    #[error("the OpenGL reference program failed ({status}): {stderr}")]
     Program {
         /// How it ended (`exit status: 1`).
         status: String,
@@ -132,7 +107,6 @@ pub enum GlRefError {
         stderr: String,
     },
     /// The program's image could not be read.
-    #[error("the OpenGL reference program wrote an unreadable image: {detail}")]
     BadOutput {
         /// What is wrong with it.
         detail: String,
@@ -143,55 +117,233 @@ impl GlRefError {
     /// The message for a student in `lang` (English is also the `Display`).
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        if lang == Lang::En {
-            return self.to_string();
-        }
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message for a student in both languages.
+    #[must_use]
+    pub fn text(&self) -> Text {
         match self {
-            GlRefError::NotAvailable { detail } => {
-                format!("OpenGL の参照レンダラーが使えません: {detail}。{}", install_hint(lang))
-            }
-            GlRefError::LectureLightModel => "シーンが講義の光のモデル (light_model = \"lecture\") \
+            GlRefError::NotAvailable { detail } => Text::new(
+                format!(
+                    "OpenGL の参照レンダラーが使えません: {detail}。{}",
+                    install_hint(Lang::Ja)
+                ),
+                format!(
+                    "the OpenGL reference is not available: {detail}. {}",
+                    install_hint(Lang::En)
+                ),
+            ),
+            GlRefError::LectureLightModel => t(
+                "シーンが講義の光のモデル (light_model = \"lecture\") \
                  を使っていますが、OpenGL 1.x にはありません。OpenGL の参照レンダラーが描けるのは \
-                 light_model = \"opengl\" だけです"
-                .to_owned(),
-            GlRefError::PhongShading => "シーンがフォンシェーディング (shading = \"phong\") を\
+                 light_model = \"opengl\" だけです",
+                "the scene uses the lecture's light model (light_model = \"lecture\"), which OpenGL 1.x \
+                 does not have: the OpenGL reference draws only light_model = \"opengl\"",
+            ),
+            GlRefError::PhongShading => t(
+                "シーンがフォンシェーディング (shading = \"phong\") を\
                  指定していますが、OpenGL の固定機能パイプラインにはありません。描けるのは \"flat\" \
-                 (GL_FLAT) と \"gouraud\" (GL_SMOOTH) だけです"
-                .to_owned(),
-            GlRefError::TooManyLights { count } => format!(
-                "シーンの点光源は {count} 個です（面光源はサンプル数で数えます）が、OpenGL の光源は \
-                 8 個 (GL_LIGHT0 … GL_LIGHT7) までです"
+                 (GL_FLAT) と \"gouraud\" (GL_SMOOTH) だけです",
+                "the scene asks for Phong shading (shading = \"phong\"), which OpenGL's fixed-function \
+                 pipeline does not have: the OpenGL reference draws only \"flat\" (GL_FLAT) and \
+                 \"gouraud\" (GL_SMOOTH)",
             ),
-            GlRefError::Size { width, height, max } => format!(
-                "画像の大きさは 1×1 から {max}×{max} ピクセルまでです（{width}×{height} が指定されました）"
+            GlRefError::TooManyLights { count } => Text::new(
+                format!(
+                    "シーンの点光源は {count} 個です（面光源はサンプル数で数えます）が、OpenGL の光源は \
+                     8 個 (GL_LIGHT0 … GL_LIGHT7) までです"
+                ),
+                format!(
+                    "the scene has {count} point lights (area lights count as their samples), but OpenGL \
+                     has only 8 (GL_LIGHT0 … GL_LIGHT7)"
+                ),
             ),
-            GlRefError::Projection(e) => format!("投影変換: {e}"),
-            GlRefError::View(e) => format!("カメラ: {e}"),
-            GlRefError::Prepare(e) => e.message(lang),
-            GlRefError::NotFinite { what, value } => {
-                format!("{what} が有限の値ではありません ({value})。OpenGL では描けません")
-            }
-            GlRefError::OutsideGlRange { what, value, range } => {
-                format!("{what} が {value} ですが、OpenGL が受け付けるのは {range} だけです")
-            }
-            GlRefError::ZeroDirection { light } => {
-                format!("光源 {light}: 平行光源の方向がゼロです")
-            }
-            GlRefError::MissingTexture { object, texture, count } => format!(
-                "オブジェクト \"{object}\": テクスチャ {texture} がありません（シーンのテクスチャは {count} 個）"
+            GlRefError::Size { width, height, max } => Text::new(
+                format!(
+                    "画像の大きさは 1×1 から {max}×{max} ピクセルまでです（{width}×{height} が指定されました）"
+                ),
+                format!("the image must be 1×1 to {max}×{max} pixels, got {width}×{height}"),
             ),
-            GlRefError::BadTexture { texture, source } => {
-                format!("テクスチャ {texture}: {}", source.describe(lang))
+            GlRefError::Projection(e) => {
+                let e = e.text();
+                Text::new(format!("投影変換: {}", e.ja), format!("the projection: {}", e.en))
             }
-            GlRefError::MissingTextureCoordinates { object } => format!(
-                "オブジェクト \"{object}\" にはテクスチャがありますが、メッシュにテクスチャ座標がありません"
+            GlRefError::View(e) => {
+                let e = e.text();
+                Text::new(format!("カメラ: {}", e.ja), format!("the camera: {}", e.en))
+            }
+            GlRefError::Prepare(e) => Text::new(e.message(Lang::Ja), e.message(Lang::En)),
+            GlRefError::NotFinite { what, value } => Text::new(
+                format!("{what} が有限の値ではありません ({value})。OpenGL では描けません"),
+                format!("{what} is not finite ({value}): OpenGL cannot draw it"),
             ),
-            GlRefError::Program { status, stderr } => {
-                format!("OpenGL の参照プログラムがエラーで終了しました ({status}): {stderr}")
+            GlRefError::OutsideGlRange { what, value, range } => Text::new(
+                format!("{what} が {value} ですが、OpenGL が受け付けるのは {range} だけです"),
+                format!("{what} is {value}, but OpenGL accepts only {range}"),
+            ),
+            GlRefError::ZeroDirection { light } => Text::new(
+                format!("光源 {light}: 平行光源の方向がゼロです"),
+                format!("light {light}: a directional light needs a non-zero direction"),
+            ),
+            GlRefError::MissingTexture { object, texture, count } => Text::new(
+                format!(
+                    "オブジェクト \"{object}\": テクスチャ {texture} がありません（シーンのテクスチャは {count} 個）"
+                ),
+                format!(
+                    "object \"{object}\": texture {texture} does not exist (the scene has {count})"
+                ),
+            ),
+            GlRefError::BadTexture { texture, source } => Text::new(
+                format!("テクスチャ {texture}: {}", source.describe(Lang::Ja)),
+                format!("texture {texture}: {}", source.describe(Lang::En)),
+            ),
+            GlRefError::MissingTextureCoordinates { object } => Text::new(
+                format!(
+                    "オブジェクト \"{object}\" にはテクスチャがありますが、メッシュにテクスチャ座標がありません"
+                ),
+                format!(
+                    "object \"{object}\" has a texture but its mesh has no texture coordinates"
+                ),
+            ),
+            GlRefError::Program { status, stderr } => Text::new(
+                format!("OpenGL の参照プログラムがエラーで終了しました ({status}): {stderr}"),
+                format!("the OpenGL reference program failed ({status}): {stderr}"),
+            ),
+            GlRefError::BadOutput { detail } => Text::new(
+                format!("OpenGL の参照プログラムの出力画像が読めません: {detail}"),
+                format!("the OpenGL reference program wrote an unreadable image: {detail}"),
+            ),
+        }
+    }
+}
+
+impl std::fmt::Display for GlRefError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.text().en)
+    }
+}
+
+impl std::error::Error for GlRefError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            GlRefError::BadTexture { source, .. } => Some(source),
+            _ => None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every variant (the match in the loop is exhaustive: a new one does not compile until it
+    /// has a sample here).
+    fn samples() -> Vec<GlRefError> {
+        let all = vec![
+            GlRefError::NotAvailable { detail: "ENOENT".into() },
+            GlRefError::LectureLightModel,
+            GlRefError::PhongShading,
+            GlRefError::TooManyLights { count: 12 },
+            GlRefError::Size { width: 0, height: 4, max: 4096 },
+            GlRefError::Projection(TransformError::FieldOfView { fovy_deg: 180.0 }),
+            GlRefError::View(TransformError::EyeAtTarget { eye: cg_core::glam::Vec3::ONE }),
+            GlRefError::Prepare(PrepareError::Normals {
+                object: "ball".into(),
+                source: cg_core::normals::NormalsError::Missing,
+            }),
+            GlRefError::NotFinite { what: "V3".into(), value: f32::NAN },
+            GlRefError::OutsideGlRange { what: "shininess".into(), value: 200.0, range: "0..=128" },
+            GlRefError::ZeroDirection { light: 1 },
+            GlRefError::MissingTexture { object: "ball".into(), texture: 2, count: 1 },
+            GlRefError::BadTexture {
+                texture: 0,
+                source: TextureError::ZeroSize { width: 0, height: 4 },
+            },
+            GlRefError::MissingTextureCoordinates { object: "ball".into() },
+            GlRefError::Program { status: "SIGSEGV".into(), stderr: "GL_ERROR".into() },
+            GlRefError::BadOutput { detail: "EOF".into() },
+        ];
+        for e in &all {
+            match e {
+                GlRefError::NotAvailable { .. }
+                | GlRefError::LectureLightModel
+                | GlRefError::PhongShading
+                | GlRefError::TooManyLights { .. }
+                | GlRefError::Size { .. }
+                | GlRefError::Projection(_)
+                | GlRefError::View(_)
+                | GlRefError::Prepare(_)
+                | GlRefError::NotFinite { .. }
+                | GlRefError::OutsideGlRange { .. }
+                | GlRefError::ZeroDirection { .. }
+                | GlRefError::MissingTexture { .. }
+                | GlRefError::BadTexture { .. }
+                | GlRefError::MissingTextureCoordinates { .. }
+                | GlRefError::Program { .. }
+                | GlRefError::BadOutput { .. } => {}
             }
-            GlRefError::BadOutput { detail } => {
-                format!("OpenGL の参照プログラムの出力画像が読めません: {detail}")
+        }
+        all
+    }
+
+    /// Runs of two or more ASCII words with only spaces between them (`is not finite`): English
+    /// inside a Japanese sentence. Names and formulas (`light_model = "opengl"`, `GL_FLAT`) stand
+    /// alone; commands in backquotes (`` `bash scripts/setup.sh` ``) are left out.
+    fn english_fragments(text: &str) -> Vec<String> {
+        let prose: String = text.split('`').step_by(2).collect::<Vec<_>>().join(" ");
+        let is_word = |w: &&str| w.chars().filter(char::is_ascii_alphabetic).count() >= 2;
+        prose
+            .split(|c: char| !(c == ' ' || c == '_' || c.is_ascii_alphanumeric()))
+            .flat_map(|segment| {
+                let words: Vec<&str> = segment.split_whitespace().collect();
+                let pairs: Vec<String> = words
+                    .windows(2)
+                    .filter(|w| is_word(&w[0]) && is_word(&w[1]))
+                    .map(|w| w.join(" "))
+                    .collect();
+                pairs
+            })
+            .collect()
+    }
+
+    #[test]
+    fn every_message_is_one_clean_line_in_each_language() {
+        let kana_or_kanji =
+            |c: char| matches!(c, '\u{3040}'..='\u{30ff}' | '\u{4e00}'..='\u{9fff}');
+        let mut found = Vec::new();
+        for e in samples() {
+            let text = e.text();
+            assert_eq!([e.message(Lang::Ja), e.message(Lang::En)], [&*text.ja, &*text.en]);
+            assert_eq!(e.to_string(), text.en);
+            for (lang, s) in [(Lang::Ja, &text.ja), (Lang::En, &text.en)] {
+                let mut complain = |why: &str| found.push(format!("{e:?} ({lang}): {why}: {s:?}"));
+                if s.is_empty() || s.trim() != s.as_str() {
+                    complain("empty, or whitespace at an end");
+                }
+                if s.contains("  ") || s.contains(['\n', '\r', '\t']) {
+                    complain("a run of spaces or a line break");
+                }
+                match lang {
+                    Lang::Ja if !s.chars().any(kana_or_kanji) => complain("no Japanese"),
+                    Lang::Ja if !english_fragments(s).is_empty() => {
+                        complain("English words in the Japanese text");
+                    }
+                    Lang::En if s.chars().any(kana_or_kanji) => {
+                        complain("Japanese in the English text");
+                    }
+                    _ => {}
+                }
             }
+        }
+        assert!(found.is_empty(), "{} problems:\n{}", found.len(), found.join("\n"));
+    }
+
+    #[test]
+    fn only_a_bad_texture_has_a_source() {
+        use std::error::Error as _;
+        for e in samples() {
+            assert_eq!(e.source().is_some(), matches!(e, GlRefError::BadTexture { .. }), "{e:?}");
         }
     }
 }

@@ -6,10 +6,14 @@
 //! bilinear, repeat / clamp, modulate / replace), a depth test (GL_LESS), back-face culling and
 //! the scene's perspective projection.
 //!
-//! **Only what the scene needs.** The WGSL is generated per scene from
-//! [`Scene::features`](cg_core::scene::Scene::features) ([`shader_source`]): a scene without
-//! specular, spot lights or textures gets a shader with no code for them; [`enabled`] names
-//! what a shader contains.
+//! **Only what the scene needs.** The WGSL is one file a TA reads, `src/shader.wgsl`, from
+//! which [`shader_source`] keeps the parts [`Scene::features`](cg_core::scene::Scene::features)
+//! need: a scene without specular, spot lights or textures gets a shader with no code for them;
+//! [`enabled`] names what a shader contains.
+//!
+//! **Preparation apart from the device.** `prepare.rs` turns a scene into what the GPU draws
+//! (the expanded vertices, the uniforms, the lights) on the CPU alone, tested without a GPU;
+//! [`Gpu::frame`] only uploads it.
 //!
 //! ```no_run
 //! use cg_gpu::{Gpu, Options};
@@ -45,22 +49,19 @@
 //! [`Gpu::device`] and [`Gpu::queue`] give the wgpu objects a surface needs.
 
 mod error;
+mod prepare;
 pub mod shader;
 
 use std::collections::HashMap;
 use std::sync::Mutex;
 
-use bytemuck::{Pod, Zeroable};
-use cg_core::Rgb;
 use cg_core::features::Features;
-use cg_core::glam::{Vec2, Vec3};
 use cg_core::image::{Image, check_size};
-use cg_core::light::{Light, LightKind, LightModel};
-use cg_core::math::try_normalize;
 use cg_core::scene::{Scene, Shading};
-use cg_core::texture::{Filter, TexEnv, Wrap};
-use cg_core::transform::transform_point;
+use cg_core::texture::{Filter, Wrap};
 use wgpu::util::DeviceExt;
+
+use prepare::{FrameUniform, GpuLight, GpuVertex, Prepared, frame_uniform, prepare};
 
 pub use error::GpuError;
 pub use shader::{enabled, shader_source};
@@ -123,50 +124,6 @@ struct PipelineKey {
 const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 /// The format [`Gpu::render`] draws and reads back.
 pub const READBACK_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
-
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
-struct GpuVertex {
-    position: [f32; 3],
-    normal: [f32; 3],
-    face_normal: [f32; 3],
-    color: [f32; 3],
-    uv: [f32; 2],
-    centroid: [f32; 3],
-}
-
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
-struct FrameUniform {
-    view_proj: [[f32; 4]; 4],
-    eye: [f32; 4],
-    backward: [f32; 4],
-    ambient: [f32; 4],
-    light_count: [u32; 4],
-}
-
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
-struct GpuLight {
-    position: [f32; 4],
-    ambient: [f32; 4],
-    diffuse: [f32; 4],
-    /// The specular colour (WGSL `highlight`: a shader without specular code has no word for it).
-    highlight: [f32; 4],
-    attenuation: [f32; 4],
-    cone_axis: [f32; 4],
-    cone: [f32; 4],
-}
-
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
-struct ObjectUniform {
-    ka: [f32; 4],
-    kd: [f32; 4],
-    ks: [f32; 4],
-    emission: [f32; 4],
-    flags: [u32; 4],
-}
 
 /// One object ready to draw: its vertices and its bind group.
 #[derive(Debug)]
@@ -489,27 +446,14 @@ impl Gpu {
         options: &Options,
         format: wgpu::TextureFormat,
     ) -> Result<Frame, GpuError> {
-        let (width, height) = options.size.unwrap_or((scene.width, scene.height));
-        check_size(width, height)?;
-        let shading = options.shading.unwrap_or(scene.shading);
-        let mut features = scene.features();
-        features.reflection = false;
-        features.transmission = false;
-        let shader = shader_source(&features, shading, scene.light_model);
+        let prepared = prepare(scene, options)?;
+        let Prepared { width, height, shading, features, shader, frame: uniform, lights, objects } =
+            prepared;
 
         let device = &self.device;
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
 
         // Frame uniforms and lights.
-        let uniform = frame_uniform(scene, width, height)?;
-        let lecture = matches!(scene.light_model, LightModel::Lecture { .. });
-        let lights: Vec<GpuLight> = scene
-            .lights
-            .iter()
-            .flat_map(Light::point_lights)
-            .map(|l| gpu_light(&l, lecture))
-            .collect();
-        let uniform = FrameUniform { light_count: [lights.len() as u32, 0, 0, 0], ..uniform };
         let frame_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("cg-gpu frame"),
             contents: bytemuck::bytes_of(&uniform),
@@ -534,98 +478,24 @@ impl Gpu {
         let mut textures: HashMap<usize, wgpu::TextureView> = HashMap::new();
         let white = features.textures.then(|| self.upload_texture(1, 1, &[[255; 4]]));
 
-        let mut draws = Vec::with_capacity(scene.objects.len());
-        for object in &scene.objects {
-            let prepared = object.prepare()?;
-            let texture_use = match &object.texture {
-                None => None,
-                Some(t) => {
-                    let texture =
-                        scene.textures.get(t.texture).ok_or_else(|| GpuError::MissingTexture {
-                            object: object.name.clone(),
-                            texture: t.texture,
-                            count: scene.textures.len(),
-                        })?;
-                    Some((t, texture))
-                }
-            };
-            let mesh = &prepared.mesh;
-            let world: Vec<Vec3> =
-                mesh.positions.iter().map(|&p| transform_point(prepared.model, p)).collect();
-            if let Some(i) = world.iter().position(|p| !p.is_finite()) {
-                return Err(GpuError::NonFinite {
-                    object: object.name.clone(),
-                    vertex: i,
-                    position: world[i].to_array(),
-                });
-            }
-            let normal = |i: usize| {
-                let n = mesh.normals.as_ref().and_then(|n| n.get(i)).copied().unwrap_or(Vec3::ZERO);
-                prepared.world_normal(n).unwrap_or(Vec3::ZERO)
-            };
-            let color =
-                |i: usize| mesh.colors.as_ref().and_then(|c| c.get(i)).copied().unwrap_or(Rgb::ONE);
-            let uv =
-                |i: usize| mesh.uvs.as_ref().and_then(|u| u.get(i)).copied().unwrap_or(Vec2::ZERO);
-            let mut vertices = Vec::with_capacity(mesh.faces.len() * 3);
-            for face in &mesh.faces {
-                let idx = face.map(|i| i as usize);
-                let corners = idx.map(|i| world[i]);
-                let face_normal = prepared.world_face_normal(corners).unwrap_or(Vec3::ZERO);
-                let centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
-                let average = (color(idx[0]) + color(idx[1]) + color(idx[2])) / 3.0;
-                let origin =
-                    texture_use.map_or(Vec2::ZERO, |(t, _)| t.sampler.repeat_origin(uv(idx[0])));
-                // Mirrored objects: re-wound so the front face stays counter-clockwise.
-                let order = if prepared.mirrored { [0, 2, 1] } else { [0, 1, 2] };
-                for k in order {
-                    let i = idx[k];
-                    let flat = shading == Shading::Flat;
-                    vertices.push(GpuVertex {
-                        position: corners[k].to_array(),
-                        normal: if flat { face_normal } else { normal(i) }.to_array(),
-                        face_normal: face_normal.to_array(),
-                        color: if flat { average } else { color(i) }.to_array(),
-                        uv: (uv(i) - origin).to_array(),
-                        centroid: centroid.to_array(),
-                    });
-                }
-            }
-            if vertices.is_empty() {
-                continue;
-            }
-            let mut material = object.material.clone();
-            if !features.specular {
-                material.ks = Rgb::ZERO;
-            }
-            let replace = matches!(texture_use, Some((t, _)) if t.env == TexEnv::Replace);
-            let object_uniform = ObjectUniform {
-                ka: material.ka.extend(0.0).to_array(),
-                kd: material.kd.extend(0.0).to_array(),
-                ks: material.ks.extend(material.shininess.max(0.0)).to_array(),
-                emission: material.emission.extend(0.0).to_array(),
-                flags: [
-                    u32::from(mesh.colors.is_some()),
-                    u32::from(!replace),
-                    u32::from(texture_use.is_some()),
-                    u32::from(replace),
-                ],
-            };
+        let mut draws = Vec::with_capacity(objects.len());
+        for object in objects {
             let uniform_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("cg-gpu object"),
-                contents: bytemuck::bytes_of(&object_uniform),
+                contents: bytemuck::bytes_of(&object.uniform),
                 usage: wgpu::BufferUsages::UNIFORM,
             });
             let bind_group = if let Some(white) = &white {
-                let (view, sampler) = match texture_use {
-                    Some((t, texture)) => {
+                let (view, sampler) = match object.texture {
+                    Some((index, sampler)) => {
+                        let texture = &scene.textures[index];
                         let view = textures
-                            .entry(t.texture)
+                            .entry(index)
                             .or_insert_with(|| {
                                 self.upload_texture(texture.width, texture.height, &texture.texels)
                             })
                             .clone();
-                        (view, self.sampler(t.sampler))
+                        (view, self.sampler(sampler))
                     }
                     None => (white.clone(), self.sampler(cg_core::texture::Sampler::default())),
                 };
@@ -659,10 +529,14 @@ impl Gpu {
             };
             let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("cg-gpu vertices"),
-                contents: bytemuck::cast_slice(&vertices),
+                contents: bytemuck::cast_slice(&object.vertices),
                 usage: wgpu::BufferUsages::VERTEX,
             });
-            draws.push(DrawCall { vertices: buffer, count: vertices.len() as u32, bind_group });
+            draws.push(DrawCall {
+                vertices: buffer,
+                count: object.vertices.len() as u32,
+                bind_group,
+            });
         }
 
         let pipeline = self.pipeline(PipelineKey {
@@ -851,67 +725,4 @@ impl Gpu {
         cache.insert(key, pipeline.clone());
         pipeline
     }
-}
-
-/// The frame's uniforms for `scene` at `width × height` (the light count left 0): the
-/// rasterizer's view, projection, eye, backward axis (the infinite viewer's V) and ambient sum.
-fn frame_uniform(scene: &Scene, width: u32, height: u32) -> Result<FrameUniform, GpuError> {
-    let view = scene.view_product().and_then(|v| v.matrix()).map_err(GpuError::Camera)?;
-    let projection = scene.projection_matrix_for(width, height).map_err(GpuError::Projection)?;
-    // Camera +Z in world space: the third row of the view rotation.
-    let backward =
-        try_normalize(Vec3::new(view.x_axis.z, view.y_axis.z, view.z_axis.z)).unwrap_or(Vec3::Z);
-    // Lecture: ka·(Ia + Σ Ia,i) unattenuated; OpenGL: the global ambient here, per light in the loop.
-    let ambient = if matches!(scene.light_model, LightModel::Lecture { .. }) {
-        scene.lights.iter().fold(scene.global_ambient, |sum, l| sum + l.ambient)
-    } else {
-        scene.global_ambient
-    };
-    Ok(FrameUniform {
-        view_proj: (projection * view).to_cols_array_2d(),
-        eye: scene.camera.eye_position().extend(1.0).to_array(),
-        backward: backward.extend(0.0).to_array(),
-        ambient: ambient.extend(1.0).to_array(),
-        light_count: [0; 4],
-    })
-}
-
-/// A point light (or an area-light sample) as the shader reads it.
-fn gpu_light(light: &Light, lecture: bool) -> GpuLight {
-    let mut g = GpuLight {
-        ambient: light.ambient.extend(0.0).to_array(),
-        diffuse: light.diffuse.extend(0.0).to_array(),
-        highlight: light.specular.extend(0.0).to_array(),
-        ..GpuLight::default()
-    };
-    let a = light.attenuation;
-    g.attenuation =
-        [a.constant, a.linear, a.quadratic, if light.needs_attenuation() { 1.0 } else { 0.0 }];
-    match light.kind {
-        LightKind::Directional { to_light } => {
-            g.position = try_normalize(to_light).unwrap_or(Vec3::ZERO).extend(0.0).to_array();
-        }
-        LightKind::Point { position } => g.position = position.extend(1.0).to_array(),
-        LightKind::Spot { position, direction, cutoff_deg, exponent, inner_deg } => {
-            g.position = position.extend(1.0).to_array();
-            // No cone (cutoff above 90° or NaN): a point light.
-            if !(cutoff_deg.is_nan() || cutoff_deg > 90.0) {
-                let axis = try_normalize(direction);
-                let cutoff = f64::from(cutoff_deg.max(0.0));
-                let inner = inner_deg
-                    .filter(|_| lecture)
-                    .map(|i| f64::from(i.max(0.0)))
-                    .filter(|&i| i < cutoff)
-                    .map_or(2.0, |i| i.to_radians().cos() as f32);
-                g.cone_axis = axis.map_or([0.0; 4], |s| s.extend(1.0).to_array());
-                let exponent = if exponent > 0.0 { exponent } else { 0.0 };
-                g.cone = [1.0, cutoff.to_radians().cos() as f32, exponent, inner];
-            }
-        }
-        // `point_lights` has turned area lights into samples already.
-        LightKind::Area { corner, edge_u, edge_v, .. } => {
-            g.position = (corner + 0.5 * (edge_u + edge_v)).extend(1.0).to_array();
-        }
-    }
-    g
 }

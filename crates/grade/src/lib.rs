@@ -30,28 +30,7 @@ pub mod submission;
 
 pub use config::Config;
 
-/// A message in Japanese and English.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Msg {
-    /// 日本語
-    pub ja: String,
-    /// English
-    pub en: String,
-}
-
-impl Msg {
-    /// A message from its two languages.
-    #[must_use]
-    pub fn new(ja: impl Into<String>, en: impl Into<String>) -> Msg {
-        Msg { ja: ja.into(), en: en.into() }
-    }
-
-    /// The message in `lang`.
-    #[must_use]
-    pub fn pick(&self, lang: Lang) -> &str {
-        lang.pick(&self.ja, &self.en)
-    }
-}
+pub use cg_core::lang::Text;
 
 /// The function that runs a job in the sandbox: [`cg_sandbox::run`], or a stand-in in tests.
 pub type Runner = fn(&Job, &Limits, Isolation) -> Result<Run, SandboxError>;
@@ -180,7 +159,7 @@ struct Pending {
     entry: String,
     name: String,
     hash: String,
-    files: Result<(submission::Files, cg_assign::StudentFile), Msg>,
+    files: Result<(submission::Files, cg_assign::StudentFile), Text>,
 }
 
 /// The entries of the submissions folder, read and hashed, with their result names.
@@ -198,16 +177,19 @@ fn collect(options: &Options, kit_hash: &str) -> Result<Vec<Pending>, GradeError
         let entry = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
         let files = submission::read(&path).and_then(|files| {
             let toml = files.student_toml.clone().ok_or_else(|| {
-                Msg::new("exercises/student.toml がありません", "exercises/student.toml is missing")
+                Text::new(
+                    "exercises/student.toml がありません",
+                    "exercises/student.toml is missing",
+                )
             })?;
             let temp =
                 options.out.join(".work").join(format!("student-{}.toml", file_name(&entry)));
             let _ = std::fs::create_dir_all(options.out.join(".work"));
-            std::fs::write(&temp, &toml).map_err(|e| Msg::new(format!("{e}"), format!("{e}")))?;
+            std::fs::write(&temp, &toml).map_err(|e| Text::new(format!("{e}"), format!("{e}")))?;
             let student = cg_assign::read_student_file(&temp);
             let _ = std::fs::remove_file(&temp);
             let student = student.map_err(|e| {
-                Msg::new(
+                Text::new(
                     format!("exercises/student.toml: {}", e.message(Lang::Ja)),
                     format!("exercises/student.toml: {}", e.message(Lang::En)),
                 )
@@ -251,7 +233,7 @@ fn already_graded(out: &Path, name: &str, hash: &str) -> Option<serde_json::Valu
 }
 
 /// The checks of each assignment, with their titles, as one run reported them.
-pub type Baseline = BTreeMap<String, Vec<(String, Msg)>>;
+pub type Baseline = BTreeMap<String, Vec<(String, Text)>>;
 
 /// A parallel slot: a kit copy, its build folder, and the folder a run may write.
 struct Slot {
@@ -336,11 +318,11 @@ fn prepare_first(
 
 /// Slot K > 0: a copy of slot 0's kit and build folder (`cp -a` keeps the times cargo compares,
 /// so only the student's crate rebuilds), unless it is already current.
-fn prepare_copy(slot: &Slot, first: &Slot, kit_hash: &str) -> Result<(), Msg> {
+fn prepare_copy(slot: &Slot, first: &Slot, kit_hash: &str) -> Result<(), Text> {
     if slot.is_current(kit_hash) {
         return Ok(());
     }
-    let fail = |e: String| Msg::new(format!("作業用コピー: {e}"), format!("work copy: {e}"));
+    let fail = |e: String| Text::new(format!("作業用コピー: {e}"), format!("work copy: {e}"));
     let _ = std::fs::remove_dir_all(&slot.kit);
     let _ = std::fs::remove_dir_all(&slot.target);
     if let Some(parent) = slot.kit.parent() {
@@ -368,37 +350,37 @@ pub enum AssignmentRun {
     /// The run ended without a report: how, and the end of its stderr.
     Died {
         /// How it ended, in both languages.
-        how: Msg,
+        how: Text,
         /// The end of what it printed on stderr.
         stderr: String,
     },
 }
 
-fn describe_end(run: &Run, limits: &Limits) -> Msg {
+fn describe_end(run: &Run, limits: &Limits) -> Text {
     match run.ended {
-        Ended::TimedOut => Msg::new(
+        Ended::TimedOut => Text::new(
             format!("制限時間 {} 秒を超えたため止めました（無限ループ？）", limits.wall.as_secs()),
             format!(
                 "stopped after the time limit of {} s (an endless loop?)",
                 limits.wall.as_secs()
             ),
         ),
-        Ended::Signalled(9) => Msg::new(
+        Ended::Signalled(9) => Text::new(
             format!("強制終了されました（メモリ上限 {} MB を超えた？）", limits.memory_bytes >> 20),
             format!("killed (over the memory limit of {} MB?)", limits.memory_bytes >> 20),
         ),
-        Ended::Signalled(6) => Msg::new(
+        Ended::Signalled(6) => Text::new(
             format!("異常終了しました（メモリ確保の失敗？ 上限 {} MB）", limits.memory_bytes >> 20),
             format!("aborted (a failed allocation? the limit is {} MB)", limits.memory_bytes >> 20),
         ),
         Ended::Signalled(s) => {
-            Msg::new(format!("シグナル {s} で終了しました"), format!("ended by signal {s}"))
+            Text::new(format!("シグナル {s} で終了しました"), format!("ended by signal {s}"))
         }
-        Ended::Exited(3) => Msg::new(
+        Ended::Exited(3) => Text::new(
             "チェックが制限時間を超えました（無限ループ？）",
             "a check ran over its time limit (an endless loop?)",
         ),
-        Ended::Exited(c) => Msg::new(
+        Ended::Exited(c) => Text::new(
             format!("終了コード {c} で終わり、結果を出力しませんでした"),
             format!("exited with status {c} without printing its results"),
         ),
@@ -428,7 +410,7 @@ fn run_checks(
     let prepared = std::fs::create_dir_all(slot.run.join("exercises"))
         .and_then(|()| std::fs::write(slot.run.join("exercises/student.toml"), student_toml));
     if let Err(e) = prepared {
-        let how = Msg::new(format!("作業フォルダ: {e}"), format!("work folder: {e}"));
+        let how = Text::new(format!("作業フォルダ: {e}"), format!("work folder: {e}"));
         return (AssignmentRun::Died { how, stderr: String::new() }, started.elapsed());
     }
     let (_, program, args) = runner_command(&slot.kit, &slot.target, which, &options.limits);
@@ -441,7 +423,7 @@ fn run_checks(
     };
     let outcome = match runner(&job, &options.limits, options.isolation) {
         Err(e) => AssignmentRun::Died {
-            how: Msg::new(format!("起動できません: {e}"), format!("could not start: {e}")),
+            how: Text::new(format!("起動できません: {e}"), format!("could not start: {e}")),
             stderr: String::new(),
         },
         Ok(run) => {
@@ -450,7 +432,7 @@ fn run_checks(
             match report {
                 Some(r) if run.ended != Ended::TimedOut => AssignmentRun::Report(r),
                 _ if run.output_cut => AssignmentRun::Died {
-                    how: Msg::new(
+                    how: Text::new(
                         format!("出力が上限（{} バイト）を超えました", options.limits.output_bytes),
                         format!(
                             "printed more than the limit of {} bytes",
@@ -480,7 +462,7 @@ fn grade_one(
     let mut facts = result::Facts::default();
     let student_toml = files.student_toml.clone().unwrap_or_default();
     let io_fail = |facts: &mut result::Facts, e: std::io::Error| {
-        facts.fatal = Some(Msg::new(format!("作業用コピー: {e}"), format!("work copy: {e}")));
+        facts.fatal = Some(Text::new(format!("作業用コピー: {e}"), format!("work copy: {e}")));
         facts.retry = true;
     };
     let student_path = slot.kit.join("exercises/student.toml");
@@ -504,7 +486,7 @@ fn grade_one(
         let b = match build::cargo_build(&slot.kit, &slot.target, package, options.build_limit) {
             Ok(b) => b,
             Err(e) => {
-                facts.fatal = Some(Msg::new(
+                facts.fatal = Some(Text::new(
                     format!("cargo を起動できません: {e}"),
                     format!("cannot start cargo: {e}"),
                 ));
@@ -532,12 +514,12 @@ fn grade_one(
         }
         if blamed.is_empty() {
             let why = if b.timed_out {
-                Msg::new(
+                Text::new(
                     format!("ビルドが制限時間 {} 秒を超えました", options.build_limit.as_secs()),
                     format!("the build ran over its limit of {} s", options.build_limit.as_secs()),
                 )
             } else {
-                Msg::new(
+                Text::new(
                     format!("ビルドできません:\n{}", b.stderr_tail),
                     format!("does not build:\n{}", b.stderr_tail),
                 )

@@ -11,15 +11,15 @@ use cg_core::lang::Lang;
 use cg_sandbox::Isolation;
 use serde_json::{Value, json};
 
-use crate::{AssignmentRun, Baseline, Config, Msg};
+use crate::{AssignmentRun, Baseline, Config, Text};
 
 /// What grading one submission found.
 #[derive(Clone, Debug, Default)]
 pub struct Facts {
     /// The submission was refused before building (why).
-    pub refused: Option<Msg>,
+    pub refused: Option<Text>,
     /// Grading could not finish (why): the kit does not build, the build ran over its limit…
-    pub fatal: Option<Msg>,
+    pub fatal: Option<Text>,
     /// Whether the problem was the machine's (a work copy, cargo): the result is not kept for
     /// resuming, so the next run grades it again.
     pub retry: bool,
@@ -63,19 +63,19 @@ pub fn tail(text: &str, max: usize) -> String {
     format!("…{}", &text[start..])
 }
 
-fn text_of(v: &Value) -> Msg {
+fn text_of(v: &Value) -> Text {
     match v {
-        Value::String(s) => Msg::new(s.clone(), s.clone()),
+        Value::String(s) => Text::new(s.clone(), s.clone()),
         Value::Object(_) => {
-            Msg::new(v["ja"].as_str().unwrap_or_default(), v["en"].as_str().unwrap_or_default())
+            Text::new(v["ja"].as_str().unwrap_or_default(), v["en"].as_str().unwrap_or_default())
         }
-        _ => Msg::default(),
+        _ => Text::default(),
     }
 }
 
 /// The checks of a report (`Report::to_json`): ID and title.
 #[must_use]
-pub fn check_list(report: &Value) -> Vec<(String, Msg)> {
+pub fn check_list(report: &Value) -> Vec<(String, Text)> {
     report["checks"]
         .as_array()
         .map(|checks| {
@@ -89,7 +89,7 @@ pub fn check_list(report: &Value) -> Vec<(String, Msg)> {
 
 /// What a failed check's JSON says, in `lang`.
 fn explain(check: &Value, lang: Lang) -> String {
-    let t = |k: &str| text_of(&check[k]).pick(lang).to_owned();
+    let t = |k: &str| text_of(&check[k]).get(lang).to_owned();
     let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
     match check["status"].as_str().unwrap_or("") {
         "pass" => String::new(),
@@ -150,12 +150,12 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
         } else {
             l("採点できませんでした", "could not be graded")
         };
-        let _ = writeln!(output, "{head}: {}", why.pick(lang));
+        let _ = writeln!(output, "{head}: {}", why.get(lang));
     }
     for (m, run) in &facts.runs {
         let entry = per.entry(m.clone()).or_insert((0.0, 0.0));
         let compile = facts.compile_errors.get(m);
-        let checks: Vec<(String, Msg, bool, String)> = match (run, compile) {
+        let checks: Vec<(String, Text, bool, String)> = match (run, compile) {
             (AssignmentRun::Report(r), None) => r["checks"]
                 .as_array()
                 .cloned()
@@ -186,9 +186,9 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
                     ),
                     (None, AssignmentRun::Died { how, stderr }) => {
                         if stderr.trim().is_empty() {
-                            how.pick(lang).to_owned()
+                            how.get(lang).to_owned()
                         } else {
-                            format!("{}\n{}", how.pick(lang), stderr.trim_end())
+                            format!("{}\n{}", how.get(lang), stderr.trim_end())
                         }
                     }
                     (None, AssignmentRun::Report(_)) => String::new(),
@@ -196,7 +196,7 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
                 let _ = writeln!(output, "{m}: {}", why.lines().next().unwrap_or(""));
                 if list.is_empty() {
                     // Not even the list of checks is known: one line for the assignment.
-                    vec![(format!("{m}.run"), Msg::new(m.clone(), m.clone()), false, why)]
+                    vec![(format!("{m}.run"), Text::new(m.clone(), m.clone()), false, why)]
                 } else {
                     list.into_iter().map(|(id, title)| (id, title, false, why.clone())).collect()
                 }
@@ -208,7 +208,7 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
             entry.0 += score;
             entry.1 += max;
             tests.push(json!({
-                "name": format!("{id}: {}", title.pick(lang)),
+                "name": format!("{id}: {}", title.get(lang)),
                 "number": id,
                 "score": round(score),
                 "max_score": round(max),

@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
-use crate::Msg;
+use crate::Text;
 
 /// The student's files, `exercises/src/<id>.rs`: one per assignment, from the kit's one list.
 pub const MODULES: &[&str] = cg_assign::IDS;
@@ -35,8 +35,8 @@ fn wanted() -> Vec<(String, Option<&'static str>)> {
     w
 }
 
-fn too_big(name: &str, size: u64) -> Msg {
-    Msg::new(
+fn too_big(name: &str, size: u64) -> Text {
+    Text::new(
         format!("{name} が大きすぎます（{size} バイト、上限 {MAX_FILE_BYTES}）"),
         format!("{name} is too big ({size} bytes, at most {MAX_FILE_BYTES})"),
     )
@@ -47,11 +47,11 @@ fn too_big(name: &str, size: u64) -> Msg {
 /// # Errors
 /// Why the submission is refused: unreadable, not a zip or folder, no `exercises/` in it, or (in
 /// a zip) an entry with an absolute or `..` path, a symlink, too many or too big entries.
-pub fn read(path: &Path) -> Result<Files, Msg> {
+pub fn read(path: &Path) -> Result<Files, Text> {
     let meta = std::fs::symlink_metadata(path)
-        .map_err(|e| Msg::new(format!("読めません: {e}"), format!("cannot be read: {e}")))?;
+        .map_err(|e| Text::new(format!("読めません: {e}"), format!("cannot be read: {e}")))?;
     if meta.file_type().is_symlink() {
-        return Err(Msg::new(
+        return Err(Text::new(
             "シンボリックリンクは受け付けません",
             "a symbolic link is not accepted as a submission",
         ));
@@ -61,12 +61,12 @@ pub fn read(path: &Path) -> Result<Files, Msg> {
     } else if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("zip")) {
         read_zip(path)
     } else {
-        Err(Msg::new("フォルダでも .zip でもありません", "neither a folder nor a .zip file"))
+        Err(Text::new("フォルダでも .zip でもありません", "neither a folder nor a .zip file"))
     }
 }
 
-fn no_exercises() -> Msg {
-    Msg::new(
+fn no_exercises() -> Text {
+    Text::new(
         "exercises/ が見つかりません（exercises/src/a1.rs … と exercises/student.toml を入れてください）",
         "no exercises/ found (it must hold exercises/src/a1.rs … and exercises/student.toml)",
     )
@@ -91,14 +91,14 @@ fn find_base(dir: &Path, depth: usize) -> Option<PathBuf> {
     entries.into_iter().find_map(|d| find_base(&d, depth - 1))
 }
 
-fn read_folder(dir: &Path) -> Result<Files, Msg> {
+fn read_folder(dir: &Path) -> Result<Files, Text> {
     let base = find_base(dir, 2).ok_or_else(no_exercises)?;
     let mut files = Files::default();
     for (relative, module) in wanted() {
         let path = base.join(&relative);
         let Ok(meta) = std::fs::symlink_metadata(&path) else { continue };
         if meta.file_type().is_symlink() {
-            return Err(Msg::new(
+            return Err(Text::new(
                 format!("{relative} はシンボリックリンクです（受け付けません）"),
                 format!("{relative} is a symbolic link (not accepted)"),
             ));
@@ -110,7 +110,7 @@ fn read_folder(dir: &Path) -> Result<Files, Msg> {
             return Err(too_big(&relative, meta.len()));
         }
         let bytes = std::fs::read(&path).map_err(|e| {
-            Msg::new(
+            Text::new(
                 format!("{relative} を読めません: {e}"),
                 format!("cannot read {relative}: {e}"),
             )
@@ -134,14 +134,14 @@ pub fn unsafe_name(name: &str) -> bool {
         || name.split('/').any(|part| part == "..")
 }
 
-fn read_zip(path: &Path) -> Result<Files, Msg> {
+fn read_zip(path: &Path) -> Result<Files, Text> {
     let bad = |e: &dyn std::fmt::Display| {
-        Msg::new(format!("zip として読めません: {e}"), format!("not a readable zip: {e}"))
+        Text::new(format!("zip として読めません: {e}"), format!("not a readable zip: {e}"))
     };
     let file = std::fs::File::open(path).map_err(|e| bad(&e))?;
     let mut zip = zip::ZipArchive::new(file).map_err(|e| bad(&e))?;
     if zip.len() > MAX_ZIP_ENTRIES {
-        return Err(Msg::new(
+        return Err(Text::new(
             format!("zip の項目が多すぎます（{}、上限 {MAX_ZIP_ENTRIES}）", zip.len()),
             format!("too many entries in the zip ({}, at most {MAX_ZIP_ENTRIES})", zip.len()),
         ));
@@ -152,13 +152,13 @@ fn read_zip(path: &Path) -> Result<Files, Msg> {
         let entry = zip.by_index_raw(i).map_err(|e| bad(&e))?;
         let name = entry.name().map_err(|e| bad(&e))?.into_owned();
         if unsafe_name(&name) || entry.enclosed_name().is_none() {
-            return Err(Msg::new(
+            return Err(Text::new(
                 format!("zip の項目 {name} の場所が不正です（絶対パスまたは ..）"),
                 format!("zip entry {name} has an unsafe path (absolute or ..)"),
             ));
         }
         if entry.is_symlink() {
-            return Err(Msg::new(
+            return Err(Text::new(
                 format!("zip の項目 {name} はシンボリックリンクです（受け付けません）"),
                 format!("zip entry {name} is a symbolic link (not accepted)"),
             ));

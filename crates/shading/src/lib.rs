@@ -47,6 +47,7 @@ mod checks;
 mod describe;
 mod inputs;
 pub mod render;
+pub mod report;
 pub mod scenes;
 pub mod spec;
 mod view;
@@ -89,7 +90,7 @@ impl Spec {
 /// `docs/assignments/s.md` for the list).
 #[must_use]
 pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
-    checks::all(spec, imp)
+    checks::checks(spec, imp)
 }
 
 /// The scene that shows `imp`'s result: the course's stage (its window, camera and ground) with
@@ -137,8 +138,8 @@ impl cg_harness::Assignment for S {
         checks(spec, imp)
     }
 
-    fn report(_: &Spec, _: &Impl) -> cg_harness::report::Part<()> {
-        (Ok(()), Vec::new())
+    fn report(spec: &Spec, imp: &Impl) -> cg_harness::report::Part<()> {
+        report::report(spec, imp)
     }
 
     fn view(

@@ -1,90 +1,22 @@
-//! The checks of assignment 4, one property each, every one calling the student's code inside its
-//! closure. Expected values come from the f64 oracle in [`crate::spec`] (the region worked from
-//! its pixels; each block's coordinates as the bilinear blend of the four corner coordinates the
-//! orientation puts there, the orientation worked forwards with quarter turns of integer
-//! vectors) — never from the reference solution.
-//!
-//! Tolerances: `a4.t1` is exact up to 1e-6 (the answers are multiples of 1/8, exact in f32; a
-//! division may round). `a4.t2` compares within 1e-5: a formula in f32 rounds by a few ulp of 1
-//! (≈ 1e-7) per operation, and one texel is 1/512 ≈ 2e-3, so 1e-5 accepts every honest formula
-//! and refuses every mistake a viewer could see.
+//! `a4.t2`, `tex_coords`: the corners of the ground, each block's range, shared vertices, a linear
+//! formula, the orientation and the cell every square shows, against the f64 oracle
+//! ([`SpecOracle`]).
 
 use cg_core::glam::{DVec2, Vec2};
 use cg_core::lang::Lang;
 use cg_core::notation::decimal;
-use cg_harness::CheckResult;
-use cg_harness::check::{self, Failure};
+use cg_harness::check::Failure;
 use cg_harness::text::{Text, t};
 
-use crate::prepared::{CELLS, cell_name, column_name};
+use crate::prepared::{CELLS, cell_name};
 use crate::spec::{
     CORNER_STEPS, Corner, GroundCorner, RegionExt, RegionOracle, Spec, SpecExt, SpecOracle,
 };
 use crate::view::{Coordinates, coordinates};
-use crate::{Impl, SQUARES, Sampler, TexRange, Wrap};
+use crate::{Impl, SQUARES};
 
-/// `a4.t1`'s tolerance.
-const TOL_RANGE: f32 = 1e-6;
 /// `a4.t2`'s tolerance on each coordinate.
 const TOL: f64 = 1e-5;
-
-/// Every check of this assignment for `spec`, run against `imp`.
-#[must_use]
-pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
-    vec![
-        check::run(
-            "a4.t1.s_range",
-            t("s の範囲（左右）", "the range of s (left to right)"),
-            || s_range(spec, imp),
-        ),
-        check::run(
-            "a4.t1.t_range",
-            t("t の範囲（上下）", "the range of t (bottom to top)"),
-            || t_range(spec, imp),
-        ),
-        check::run(
-            "a4.t2.corners",
-            t(
-                "地面の 4 隅に範囲の正しい角が来る",
-                "the ground's 4 corners get the right corners of the region",
-            ),
-            || corners(spec, imp),
-        ),
-        check::run(
-            "a4.t2.range",
-            t("まとまりごとに範囲をちょうど覆う", "each block covers exactly the region"),
-            || block_range(spec, imp),
-        ),
-        check::run(
-            "a4.t2.shared",
-            t("共有する頂点は同じ座標", "shared vertices share coordinates"),
-            || shared(spec, imp),
-        ),
-        check::run(
-            "a4.t2.linear",
-            t("i と j の 1 次式（特別扱いなし）", "a linear formula in i and j (no special cases)"),
-            || linear(spec, imp),
-        ),
-        check::run(
-            "a4.t2.orientation",
-            t("向き（回転・反転）", "orientation (turn and mirror)"),
-            || orientation(spec, imp),
-        ),
-        check::run(
-            "a4.t2.cells",
-            t(
-                "どの四角形にも範囲の正しい場所が映る",
-                "every square shows the right place of the region",
-            ),
-            || cells(spec, imp),
-        ),
-        check::run(
-            "a4.t3.wrap",
-            t("折り返しが繰り返しの作り方に合う", "the wrap modes suit how the region repeats"),
-            || wrap(spec, imp),
-        ),
-    ]
-}
 
 // ---------------------------------------------------------------------------------------------
 // Words and numbers
@@ -102,11 +34,6 @@ fn uv64(v: DVec2) -> String {
 /// Whether `a` and `b` agree within `tol` in both coordinates (false for NaN).
 fn near(a: DVec2, b: DVec2, tol: f64) -> bool {
     (a - b).abs().max_element() <= tol
-}
-
-/// Whether two f32 values agree within `tol` (false for NaN).
-fn close(a: f32, b: f32, tol: f32) -> bool {
-    (a - b).abs() <= tol
 }
 
 /// The cell a texture coordinate falls in, or why there is none: `cell E3` / `outside the
@@ -195,110 +122,9 @@ fn corner_index(i: u32, j: u32, vi: u32, vj: u32) -> usize {
 }
 
 // ---------------------------------------------------------------------------------------------
-// a4.t1
+// The checks
 
-fn s_range(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
-    let got = (imp.tex_range)(spec);
-    let want = spec.region.range();
-    if close(got.s_min, want.s_min, TOL_RANGE) && close(got.s_max, want.s_max, TOL_RANGE) {
-        return Ok(());
-    }
-    let r = &spec.region;
-    let [x0, _, x1, _] = r.pixels();
-    let is = |a: f32, b: f32| close(got.s_min, a, TOL_RANGE) && close(got.s_max, b, TOL_RANGE);
-    let cause = if is(0.0, 1.0) {
-        t("画像全体の範囲になっている", "this is the whole image, not the region")
-    } else if is(x0 as f32, x1 as f32) {
-        t(
-            "画素の値のまま: テクスチャ座標は画像の幅 512 で割った 0〜1 の値",
-            "these are pixels: texture coordinates are 0…1, the pixels divided by the image's width 512",
-        )
-    } else if is(want.t_min, want.t_max) {
-        t("s と t（列と行）を取り違えている", "s and t (columns and rows) are swapped")
-    } else {
-        t(
-            "列 A が s = 0〜1/8、列 B が 1/8〜2/8、…: 左端は（最初の列の番号）/8、右端は（最後の列の番号 + 1）/8",
-            "column A is s = 0…1/8, column B 1/8…2/8, …: the left edge is (first column's index)/8, the right edge (last column's index + 1)/8",
-        )
-    };
-    Err(Failure::new(
-        format!("s_min = {}, s_max = {}", decimal(want.s_min, 4), decimal(want.s_max, 4)),
-        format!("s_min = {}, s_max = {}", decimal(got.s_min, 4), decimal(got.s_max, 4)),
-    )
-    .at({
-        let columns = if r.columns == 1 {
-            column_name(r.column).to_string()
-        } else {
-            format!("{}–{}", column_name(r.column), column_name(r.column + r.columns - 1))
-        };
-        Text::new(
-            format!("tex_range、範囲 {}、列 {columns}", r.name()),
-            format!("tex_range, region {}: columns {columns}", r.name()),
-        )
-    })
-    .cause(cause)
-    .hint(t(
-        "s は画像の左端で 0、右端で 1。マスは 8 列なので 1 列の幅は 1/8",
-        "s is 0 at the image's left edge and 1 at its right edge; there are 8 columns, each 1/8 wide",
-    )))
-}
-
-fn t_range(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
-    let got = (imp.tex_range)(spec);
-    let want = spec.region.range();
-    if close(got.t_min, want.t_min, TOL_RANGE) && close(got.t_max, want.t_max, TOL_RANGE) {
-        return Ok(());
-    }
-    let r = &spec.region;
-    let [_, y0, _, y1] = r.pixels();
-    let n = CELLS as f32;
-    let is = |a: f32, b: f32| close(got.t_min, a, TOL_RANGE) && close(got.t_max, b, TOL_RANGE);
-    let cause = if is(r.row as f32 / n, (r.row + r.rows) as f32 / n) {
-        t(
-            "行を上から数えたまま t にしている: t は画像の下端で 0、上端で 1（テクスチャ座標 (0, 0) は画像の左下）。上下が反転して貼られる",
-            "the rows are counted from the top, but t grows from the bottom (texture coordinate (0, 0) is the image's bottom-left corner): the region would come out flipped top to bottom, and from the wrong rows",
-        )
-    } else if is(0.0, 1.0) {
-        t("画像全体の範囲になっている", "this is the whole image, not the region")
-    } else if is(y0 as f32, y1 as f32) || is(512.0 - y1 as f32, 512.0 - y0 as f32) {
-        t(
-            "画素の値のまま: テクスチャ座標は画像の高さ 512 で割った 0〜1 の値",
-            "these are pixels: texture coordinates are 0…1, the pixels divided by the image's height 512",
-        )
-    } else if is(want.s_min, want.s_max) {
-        t("s と t（列と行）を取り違えている", "s and t (columns and rows) are swapped")
-    } else {
-        t(
-            "行 1 が t = 7/8〜1、行 8 が t = 0〜1/8: 下端は (8 − 最後の行の番号)/8、上端は (8 − 最初の行の番号 + 1)/8",
-            "row 1 is t = 7/8…1 and row 8 is t = 0…1/8: the bottom edge is (8 − last row)/8, the top edge (8 − first row + 1)/8",
-        )
-    };
-    Err(Failure::new(
-        format!("t_min = {}, t_max = {}", decimal(want.t_min, 4), decimal(want.t_max, 4)),
-        format!("t_min = {}, t_max = {}", decimal(got.t_min, 4), decimal(got.t_max, 4)),
-    )
-    .at({
-        let rows = if r.rows == 1 {
-            (r.row + 1).to_string()
-        } else {
-            format!("{}–{}", r.row + 1, r.row + r.rows)
-        };
-        Text::new(
-            format!("tex_range、範囲 {}、行 {rows}", r.name()),
-            format!("tex_range, region {}: rows {rows}", r.name()),
-        )
-    })
-    .cause(cause)
-    .hint(t(
-        "画素の y は上から、t は下から数える: t = 1 − y / 512",
-        "pixel y counts from the top, t from the bottom: t = 1 − y / 512",
-    )))
-}
-
-// ---------------------------------------------------------------------------------------------
-// a4.t2
-
-fn corners(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
+pub(super) fn corners(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let table = finite_coordinates(spec, imp)?;
     let last = SQUARES - 1;
     let mut wrong = Vec::new();
@@ -354,7 +180,7 @@ fn squares_text(b: u32, k: u32) -> String {
     format!("{}…{}", b * k, b * k + k - 1)
 }
 
-fn block_range(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
+pub(super) fn block_range(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let table = finite_coordinates(spec, imp)?;
     let (n, k) = (spec.repeat, spec.block());
     let want = spec.region.range();
@@ -468,7 +294,7 @@ fn block_range(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     Ok(())
 }
 
-fn shared(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
+pub(super) fn shared(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let table = finite_coordinates(spec, imp)?;
     let k = spec.block();
     for vj in 0..=SQUARES {
@@ -519,7 +345,7 @@ fn shared(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     Ok(())
 }
 
-fn linear(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
+pub(super) fn linear(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let table = finite_coordinates(spec, imp)?;
     let (n, k) = (spec.repeat, spec.block());
     for bj in 0..n {
@@ -643,7 +469,7 @@ fn transpose(a: M2) -> M2 {
     [[a[0][0], a[1][0]], [a[0][1], a[1][1]]]
 }
 
-fn orientation(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
+pub(super) fn orientation(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let table = finite_coordinates(spec, imp)?;
     let k = f64::from(spec.block());
     // Steps per square along i and j, from vertex (0, 0) of the first block.
@@ -756,7 +582,7 @@ fn orientation(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     )))
 }
 
-fn cells(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
+pub(super) fn cells(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let table = finite_coordinates(spec, imp)?;
     // A point 3/8 of the way along each square's diagonal from corner (i, j) to (i+1, j+1): on
     // both of its triangles, so the renderer shows exactly this blend there; and never on a
@@ -811,67 +637,5 @@ fn cells(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     .hint(t(
         "cargo run --release -- view a4 で自分の結果と参考解答を並べ、マスの名前と矢印で何がどこに来たかを見る",
         "compare yours with the reference (cargo run --release -- view a4): the cell names and arrows show what went where",
-    )))
-}
-
-// ---------------------------------------------------------------------------------------------
-// a4.t3
-
-fn wrap(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
-    let Sampler { filter: _, wrap_u, wrap_v } = (imp.sampler)();
-    if (wrap_u, wrap_v) == (Wrap::Clamp, Wrap::Clamp) {
-        return Ok(());
-    }
-    let name = |w: Wrap| match w {
-        Wrap::Repeat => "Wrap::Repeat (GL_REPEAT)",
-        Wrap::Clamp => "Wrap::Clamp (GL_CLAMP_TO_EDGE)",
-    };
-    let (axis, gl) = if wrap_u == Wrap::Clamp {
-        ("wrap_v", "GL_TEXTURE_WRAP_T")
-    } else {
-        ("wrap_u", "GL_TEXTURE_WRAP_S")
-    };
-    let TexRange { s_min, s_max, t_min, t_max } = spec.region.range();
-    let edge = |ja: &str, en: &str| Some(t(ja, en));
-    let touches = if axis == "wrap_u" && s_max == 1.0 {
-        edge(
-            "右端（s = 1）。GL_REPEAT では列 A の色が線になって出る",
-            "right edge (s = 1): with GL_REPEAT a line of column A shows along it",
-        )
-    } else if axis == "wrap_u" && s_min == 0.0 {
-        edge(
-            "左端（s = 0）。GL_LINEAR と GL_REPEAT では列 H の色が混ざる",
-            "left edge (s = 0): with GL_LINEAR and GL_REPEAT column H bleeds in",
-        )
-    } else if axis == "wrap_v" && t_max == 1.0 {
-        edge(
-            "上端（t = 1）。GL_REPEAT では行 8 の色が線になって出る",
-            "top edge (t = 1): with GL_REPEAT a line of row 8 shows along it",
-        )
-    } else if axis == "wrap_v" && t_min == 0.0 {
-        edge(
-            "下端（t = 0）。GL_LINEAR と GL_REPEAT では行 1 の色が混ざる",
-            "bottom edge (t = 0): with GL_LINEAR and GL_REPEAT row 1 bleeds in",
-        )
-    } else {
-        None
-    };
-    let mut cause = t(
-        "GL_REPEAT が繰り返すのは画像全体で、画像の一部（範囲）は繰り返せない。この課題では繰り返しは座標で作り（a4.t2）、座標は範囲の中、0〜1 に収まる。GL_REPEAT のままだと、座標が画像の端（0 や 1）に来たところで反対側の端の色を拾う",
-        "GL_REPEAT repeats the whole image, never a part of it: here the repeat is made by the coordinates (a4.t2), which stay inside the region, within 0…1. Left at GL_REPEAT, a coordinate on the image's edge (0 or 1) picks up the opposite edge",
-    );
-    if let Some(touch) = touches {
-        cause.ja.push_str(&format!("。あなたの範囲は画像の{}", touch.ja));
-        cause.en.push_str(&format!("; your region touches the image's {}", touch.en));
-    }
-    Err(Failure::new(
-        "wrap_u = wrap_v = Wrap::Clamp (GL_CLAMP_TO_EDGE)",
-        format!("wrap_u = {}, wrap_v = {}", name(wrap_u), name(wrap_v)),
-    )
-    .at(format!("sampler(): {axis} ({gl})"))
-    .cause(cause)
-    .hint(t(
-        "Sampler { filter: …, wrap_u: Wrap::Clamp, wrap_v: Wrap::Clamp }（glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE) と T も同じ）",
-        "Sampler { filter: …, wrap_u: Wrap::Clamp, wrap_v: Wrap::Clamp } (glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE), and the same for T)",
     )))
 }

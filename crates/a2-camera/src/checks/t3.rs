@@ -6,50 +6,16 @@
 use cg_core::glam::{Mat4, Vec3, Vec4};
 use cg_core::lang::Lang;
 use cg_core::transform::translate;
-use cg_harness::check::{self, Failure};
+use cg_harness::Text;
+use cg_harness::check::Failure;
 use cg_harness::text::t;
-use cg_harness::{CheckResult, Text};
 use cg_student::gl::Gl as Recorder;
 
-use crate::checks_camera::student_view;
 use crate::oracle::{self, matrices_close};
 use crate::show;
 use crate::{CameraState, Gl, Impl, LIGHT0_POSITION, Spec};
 
-/// The checks of a2.t3.
-pub(crate) fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
-    vec![
-        check::run(
-            "a2.t3.light",
-            t(
-                "光源の位置を視点の変換の後に設定（ワールド座標系に固定）",
-                "the light is set after the camera (fixed in the world)",
-            ),
-            || light_after_camera(spec, imp),
-        ),
-        check::run(
-            "a2.t3.objects",
-            t("地面と四角すいの位置", "where the ground and the pyramid are drawn"),
-            || objects_in_place(spec, imp),
-        ),
-        check::run(
-            "a2.t3.stack",
-            t(
-                "何かが描かれ、glPushMatrix と glPopMatrix が対応し、GL のエラーがない",
-                "something is drawn, push and pop match, no GL errors",
-            ),
-            || stack_balanced(spec, imp),
-        ),
-        check::run(
-            "a2.t3.identity",
-            t(
-                "display() が単位行列から始まる（前のフレームに依存しない）",
-                "display() starts from the identity (no dependence on the previous frame)",
-            ),
-            || starts_from_identity(spec, imp),
-        ),
-    ]
-}
+use super::student_view;
 
 /// The states the display checks draw: the spec's start and two turned ones.
 fn display_states(spec: &Spec) -> Vec<CameraState> {
@@ -104,7 +70,7 @@ fn camera_note(imp: &Impl, s: &CameraState) -> Option<Text> {
 }
 
 /// a2.t3.light: GL_LIGHT0 at (10, 10, 10, 1), stored in eye space as `V · (10, 10, 10, 1)`.
-fn light_after_camera(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
+pub(super) fn light_after_camera(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let with_target = spec.pan.is_some();
     for s in display_states(spec) {
         let gl = frame(imp, &s);
@@ -192,7 +158,7 @@ fn light_after_camera(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 }
 
 /// a2.t3.objects: one ground drawn with `V`, one pyramid with `V · T(0, 1, 0)`.
-fn objects_in_place(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
+pub(super) fn objects_in_place(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let with_target = spec.pan.is_some();
     for s in display_states(spec) {
         let gl = frame(imp, &s);
@@ -257,7 +223,7 @@ fn objects_in_place(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 }
 
 /// a2.t3.stack: a frame draws something, ends at stack depth 1, and records no GL error.
-fn stack_balanced(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
+pub(super) fn stack_balanced(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let s = spec.start;
     let gl = frame(imp, &s);
     let at = show::state(&s, spec.pan.is_some());
@@ -324,7 +290,7 @@ fn fingerprint(gl: &Gl, from_draw: usize) -> (Option<Mat4>, Option<Vec4>) {
 
 /// a2.t3.identity: a frame drawn over a leftover model-view matrix, and a second frame on the
 /// same context, are the same as a frame on a fresh context.
-fn starts_from_identity(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
+pub(super) fn starts_from_identity(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let s = display_states(spec)[1];
     let at = show::state(&s, spec.pan.is_some());
     let fresh = frame(imp, &s);

@@ -1,74 +1,19 @@
-//! s.t7 and s.t8: reflection and refraction against [`cg_core::optics`] (NUMERICS.md row 12).
+//! s.t8: refraction by Snell's law and total internal reflection against
+//! [`cg_core::optics::refract`] with [`Interface`] (NUMERICS.md row 12).
 //!
-//! Tolerances: reflection 1e-5·(1 + |i|) per component; refraction 1e-5 per component (unit
-//! vectors). The refraction checks leave out incidence angles within 1e-3 rad of the critical
-//! angle, where f32 and the core's f64 may decide total internal reflection differently; exactly
-//! at the critical angle either answer is accepted — `None`, or a unit vector along the surface
-//! (|t·n| ≤ 2e-3, the f32 square root of a cosine² of rounding size) — but never NaN.
+//! Tolerance: 1e-5 per component (unit vectors). The refraction checks leave out incidence
+//! angles within 1e-3 rad of the critical angle, where f32 and the core's f64 may decide total
+//! internal reflection differently; exactly at the critical angle either answer is accepted —
+//! `None`, or a unit vector along the surface (|t·n| ≤ 2e-3, the f32 square root of a cosine² of
+//! rounding size) — but never NaN.
 
 use cg_core::glam::Vec3;
 use cg_core::optics::{self, Interface};
 use cg_harness::check::Failure;
 use cg_harness::text::{Text, t};
 
-use crate::inputs::{Inputs, case_at, max_diff, num, opt, random_case, vec};
+use crate::inputs::{Inputs, max_diff, num, opt, random_case, vec};
 use crate::{Impl, Spec};
-
-pub(super) fn reflect(imp: &Impl) -> Result<(), Failure> {
-    let mut cases: Vec<(Text, Vec3, Vec3)> = vec![
-        (t("垂直入射 (i = -n)", "normal incidence (i = -n)"), Vec3::NEG_Y, Vec3::Y),
-        (t("かすめる入射 (i ⟂ n)", "grazing (i ⟂ n)"), Vec3::X, Vec3::Y),
-        ("45°".into(), Vec3::new(1.0, -1.0, 0.0).normalize(), Vec3::Y),
-        (
-            t("n が反対側", "n on the other side"),
-            Vec3::new(1.0, -1.0, 0.0).normalize(),
-            Vec3::NEG_Y,
-        ),
-        ("|i| = 2.5".into(), Vec3::new(1.5, -2.0, 0.0), Vec3::Y),
-    ];
-    let mut r = Inputs::new(0x5_0007);
-    for k in 0..40 {
-        let n = r.unit_vector();
-        let i = r.unit_vector() * r.range(0.5, 2.0);
-        cases.push((random_case(k), i, n));
-    }
-    for (name, i, n) in cases {
-        let expected = optics::reflect(i, n);
-        let actual = (imp.reflect)(i, n);
-        if max_diff(actual, expected) <= 1e-5 * (1.0 + i.length()) {
-            continue;
-        }
-        let (cause, hint) = if max_diff(actual, i + 2.0 * i.dot(n) * n) <= 1e-5 * (1.0 + i.length())
-        {
-            (
-                t(
-                    "符号が逆です: i + 2(i·n)n になっています。",
-                    "the sign is wrong: this is i + 2(i·n)n.",
-                ),
-                t(
-                    "r = i − 2(i·n)n。i は面へ向かう向き、r は面から離れる向きです（n·r = −n·i）。",
-                    "r = i − 2(i·n)n: i travels towards the surface, r away from it (n·r = −n·i).",
-                ),
-            )
-        } else {
-            (
-                t(
-                    "正反射方向 i − 2(i·n)n になっていません。",
-                    "this is not the mirror direction i − 2(i·n)n.",
-                ),
-                t(
-                    "n は単位ベクトル。i の長さは変えません（正規化しない）。",
-                    "n is unit length; keep the length of i (do not normalise).",
-                ),
-            )
-        };
-        return Err(Failure::new(vec(expected), vec(actual))
-            .at(case_at(&name, &format!("i = {}, n = {}", vec(i), vec(n))))
-            .cause(cause)
-            .hint(hint));
-    }
-    Ok(())
-}
 
 /// The core's answer for the student's convention: `n` the outward normal, `n1` outside, `n2`
 /// inside; a hit from inside flips the normal and swaps the indices ([`Interface::at`]).

@@ -7,9 +7,9 @@
 //! per drag. The smallest real mistake (a speed off by one table step on a 1-pixel drag) is
 //! 0.01 or more.
 
-use cg_harness::check::{self, Failure};
+use cg_harness::check::Failure;
 use cg_harness::text::t;
-use cg_harness::{CheckResult, Text, VariantRng};
+use cg_harness::{Text, VariantRng};
 
 use crate::oracle;
 use crate::show::{self, ALL_GESTURES, Var};
@@ -18,73 +18,6 @@ use crate::{CameraState, Drag, DragAxis, Gesture, Impl, Operation, Spec};
 
 /// Tolerance for camera variables after a drag (degrees or scene units).
 pub(crate) const TOL: f32 = 1e-3;
-
-/// The checks of a2.t1 for `spec` (the pan ones only when the spec has a pan).
-pub(crate) fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
-    let mut out = Vec::new();
-    for (var, op) in spec.operations() {
-        if var == Var::TargetZ {
-            continue; // a2.t1.pan checks target_x and target_z together
-        }
-        let (id, title) = match var {
-            Var::Yaw => ("a2.t1.yaw", t("camera_yaw の変化量", "how camera_yaw changes")),
-            Var::Pitch => ("a2.t1.pitch", t("camera_pitch の変化量", "how camera_pitch changes")),
-            Var::Distance => {
-                ("a2.t1.distance", t("camera_distance の変化量", "how camera_distance changes"))
-            }
-            _ => ("a2.t1.pan", t("注視点の移動量", "how the target moves")),
-        };
-        let mut ops = vec![(var, op)];
-        if let (Var::TargetX, Some(pan)) = (var, &spec.pan) {
-            ops.push((Var::TargetZ, pan.z));
-        }
-        out.push(check::run(id, title, || {
-            ops.iter().try_for_each(|(var, op)| changes_by_amount(spec, imp, *var, op))
-        }));
-    }
-    out.push(check::run(
-        "a2.t1.buttons",
-        t(
-            "指定のボタン・方向のドラッグだけが変数を変える",
-            "only the listed buttons and directions change a variable",
-        ),
-        || only_listed_drags(spec, imp),
-    ));
-    out.push(check::run(
-        "a2.t1.wrap",
-        t("camera_yaw を 0〜360 に折り返す", "camera_yaw wraps into [0, 360)"),
-        || yaw_wraps(spec, imp),
-    ));
-    out.push(check::run(
-        "a2.t1.pitch_range",
-        t("camera_pitch の範囲の制限", "camera_pitch is clamped"),
-        || clamped(spec, imp, Var::Pitch, &spec.pitch, spec.pitch_min, spec.pitch_max),
-    ));
-    out.push(check::run(
-        "a2.t1.distance_range",
-        t("camera_distance の範囲の制限", "camera_distance is clamped"),
-        || clamped(spec, imp, Var::Distance, &spec.distance, spec.distance_min, spec.distance_max),
-    ));
-    if let Some(pan) = spec.pan {
-        out.push(check::run(
-            "a2.t1.pan_range",
-            t("注視点の範囲の制限", "the target is clamped"),
-            || {
-                clamped(spec, imp, Var::TargetX, &pan.x, -pan.limit, pan.limit)?;
-                clamped(spec, imp, Var::TargetZ, &pan.z, -pan.limit, pan.limit)
-            },
-        ));
-    }
-    out.push(check::run(
-        "a2.t1.sequence",
-        t(
-            "いろいろなドラッグを続けたあとの変数（斜めのドラッグを含む）",
-            "the variables after a long mix of drags (diagonal ones too)",
-        ),
-        || sequence(spec, imp),
-    ));
-    out
-}
 
 /// The student's `motion()` applied to a copy of `s`.
 fn motion(spec: &Spec, imp: &Impl, s: &CameraState, drag: &Drag) -> CameraState {
@@ -148,7 +81,12 @@ fn other_axis(axis: DragAxis) -> DragAxis {
 }
 
 /// a2.t1.yaw / pitch / distance / pan: `var` changes by `per_px · d` for its own drag.
-fn changes_by_amount(spec: &Spec, imp: &Impl, var: Var, op: &Operation) -> Result<(), Failure> {
+pub(super) fn changes_by_amount(
+    spec: &Spec,
+    imp: &Impl,
+    var: Var,
+    op: &Operation,
+) -> Result<(), Failure> {
     let mut s = middle(spec);
     for (k, px) in [10.0f32, -4.0, 1.0].into_iter().enumerate() {
         let drag = drag_along(op.gesture, op.axis, px);
@@ -322,7 +260,7 @@ fn amount_cause(
 /// a2.t1.buttons: for every button (with and without Shift) and each direction, the variables
 /// the spec does not give that drag stay unchanged — and some listed drag does change something
 /// (or a `motion()` that does nothing would pass).
-fn only_listed_drags(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
+pub(super) fn only_listed_drags(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let base = middle(spec);
     let moves_anything = spec
         .operations()
@@ -459,7 +397,7 @@ fn drags_of(op: &Operation, amount: f32, max_step: f32) -> Vec<Drag> {
 
 /// a2.t1.wrap: yaw drags across 360 and 0, several turns, and one ending exactly on 360
 /// (which must read 0). Each drag turns by less than 360°, as real mouse drags do.
-fn yaw_wraps(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
+pub(super) fn yaw_wraps(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let op = spec.yaw;
     let mut s = CameraState { camera_yaw: 354.0, ..middle(spec) };
     // Every amount is a multiple of 6°, so the pixels are whole for every table speed.
@@ -534,7 +472,7 @@ fn yaw_wraps(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 
 /// a2.t1.*_range: from the middle, drags far past `lo` (in three drags) must stop exactly at
 /// `lo`, and a short drag back must move away from it at once; the same at `hi`.
-fn clamped(
+pub(super) fn clamped(
     spec: &Spec,
     imp: &Impl,
     var: Var,
@@ -674,7 +612,7 @@ fn range_of(spec: &Spec, var: Var) -> (f32, f32) {
 
 /// a2.t1.sequence: 150 seeded drags from the spec's start — listed and unlisted buttons,
 /// diagonal drags, and long ones that reach the limits — give the spec's state after each.
-fn sequence(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
+pub(super) fn sequence(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let mut rng = VariantRng::from_seed(0x0A25_E90E);
     let listed: Vec<Gesture> = spec.operations().iter().map(|(_, op)| op.gesture).collect();
     let mut s = spec.start;

@@ -4,32 +4,15 @@
 //! mismatch is explained by the usual wrong products ([`oracle::diagnose_view`]).
 
 use cg_core::glam::{Mat4, Vec4};
-use cg_core::lang::Lang;
-use cg_harness::check::{self, Failure};
+use cg_harness::check::Failure;
 use cg_harness::text::t;
-use cg_harness::{CheckResult, Text, VariantRng};
-use cg_student::gl::Gl as Recorder;
+use cg_harness::{Text, VariantRng};
 
 use crate::oracle;
 use crate::show;
 use crate::{CameraState, Impl, Spec};
 
-/// The checks of a2.t2.
-pub(crate) fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
-    vec![
-        check::run("a2.t2.view", t("視点の変換行列", "the view transform"), || {
-            view_matches(spec, imp, &view_states(spec))
-        }),
-        check::run(
-            "a2.t2.pole",
-            t(
-                "真上・真下から見た視点の変換行列（camera_pitch = ±90°）",
-                "the view transform looking straight down or up (camera_pitch = ±90°)",
-            ),
-            || view_matches(spec, imp, &pole_states(spec)),
-        ),
-    ]
-}
+use super::student_view;
 
 fn state(yaw: f32, pitch: f32, distance: f32, target: (f32, f32)) -> CameraState {
     CameraState {
@@ -83,34 +66,6 @@ pub(crate) fn pole_states(spec: &Spec) -> Vec<CameraState> {
     ]
 }
 
-/// What the student's camera leaves on a fresh context at `s`: the matrix, or what went wrong.
-pub(crate) fn student_view(imp: &Impl, s: &CameraState) -> Result<Mat4, (Text, Text)> {
-    let mut rec = Recorder::new();
-    (imp.camera)(&mut rec, s);
-    let gl = crate::replay(&rec);
-    if let Some(e) = gl.errors().first() {
-        return Err((
-            Text::new(
-                format!("{}: {}", e.function, e.error.message(Lang::Ja)),
-                format!("{}: {}", e.function, e.error.message(Lang::En)),
-            ),
-            Text::new(
-                format!("camera() の {} がエラーです: {}", e.function, e.error.message(Lang::Ja)),
-                format!("{} in camera() is an error: {}", e.function, e.error.message(Lang::En)),
-            ),
-        ));
-    }
-    gl.model_view().matrix().map_err(|e| {
-        (
-            Text::new(e.message(Lang::Ja), e.message(Lang::En)),
-            Text::new(
-                format!("camera() の変換が不正です: {}", e.message(Lang::Ja)),
-                format!("camera() builds an invalid transform: {}", e.message(Lang::En)),
-            ),
-        )
-    })
-}
-
 /// Where the camera is in world space for a view matrix `m` (`m⁻¹ · (0, 0, 0, 1)`), if `m` is
 /// invertible.
 fn eye(m: &Mat4) -> Option<String> {
@@ -123,7 +78,7 @@ fn eye(m: &Mat4) -> Option<String> {
 }
 
 /// The student's camera gives the spec's view at every state of `states`.
-fn view_matches(spec: &Spec, imp: &Impl, states: &[CameraState]) -> Result<(), Failure> {
+pub(super) fn view_matches(spec: &Spec, imp: &Impl, states: &[CameraState]) -> Result<(), Failure> {
     let with_target = spec.pan.is_some();
     let mut matrices = Vec::with_capacity(states.len());
     for s in states {

@@ -1,0 +1,126 @@
+//! The scene the student's functions draw (`a3`): [`view`] (the spec's animation at a time),
+//! [`warmup_view`] (the warm-up's boxes), the frames they come from ([`record_frame`],
+//! [`warmup_frame`], [`replay`]) and the course's ground under them.
+
+use cg_core::gl::Gl;
+use cg_core::scene::Scene;
+use cg_harness::Text;
+
+use crate::{
+    CAMERA_DISTANCE, CAMERA_PITCH_DEG, DRIFT_FRAMES, FPS, Impl, LIGHT0_POSITION, Spec, State,
+    camera_product,
+};
+
+/// Sets the common camera and the light, as the warm-up's `display()` does before the boxes:
+/// `glLoadIdentity`, `T(0, 0, -15)`, `Rx(30°)`, `glLightfv(GL_LIGHT0, GL_POSITION, (10, 10, 10, 1))`
+/// — on the student's recorder, so the call numbers of a replayed frame count them.
+pub(crate) fn camera_and_light(gl: &mut cg_student::gl::Gl) {
+    gl.load_identity();
+    gl.translate(0.0, 0.0, -CAMERA_DISTANCE);
+    gl.rotate(-CAMERA_PITCH_DEG, 1.0, 0.0, 0.0);
+    gl.light_position(0, LIGHT0_POSITION);
+}
+
+/// The state after `frames` calls of `idle` from the start.
+fn run_idle(spec: &Spec, imp: &Impl, frames: u64) -> State {
+    let mut state = State::new();
+    for _ in 0..frames {
+        (imp.idle)(spec, &mut state);
+    }
+    state
+}
+
+/// The frame after `frames` calls of `idle` from the start, as `display` records it: every
+/// draw's model-view matrix as a product of named factors (with the student's symbols where
+/// `gl.mult(Factor::rotate(…, Param::sym(…)))` was used), the light, the stack errors — what a
+/// report derives the transforms from.
+#[must_use]
+pub fn record_frame(spec: &Spec, imp: &Impl, frames: u64) -> Gl {
+    let state = run_idle(spec, imp, frames);
+    let mut rec = cg_student::gl::Gl::new();
+    (imp.display)(spec, &state, &mut rec);
+    replay(&rec)
+}
+
+/// A student's recorded frame replayed on the kit's [`Gl`]: the draws (with their model-view
+/// matrices), lights and stack errors the same calls give in OpenGL. This assignment draws no
+/// course objects.
+#[must_use]
+pub fn replay(recorded: &cg_student::gl::Gl) -> Gl {
+    Gl::replay(recorded, &|_| {})
+}
+
+/// The longest time [`view`] animates to (s): 10⁶ frames.
+const VIEW_MAX_S: f64 = DRIFT_FRAMES as f64 / FPS as f64;
+
+/// The scene that shows `imp`'s result at time `time_s` (seconds): `idle` called
+/// `round(60·time_s)` times from the start, then `display` recorded and drawn in eye space on the
+/// course's ground (the ground with the kit's camera, so a wrong camera shows as objects off the
+/// ground). A frame that draws nothing shows the ground alone.
+///
+/// # Errors
+/// A time that is negative, not finite or beyond 10⁶ frames.
+pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
+    if !time_s.is_finite() || !(0.0..=VIEW_MAX_S).contains(&time_s) {
+        return Err(Text::new(
+            format!(
+                "時刻は 0 以上 {VIEW_MAX_S:.0} 秒以下にしてください（{time_s} が指定されました）"
+            ),
+            format!("the time must be between 0 and {VIEW_MAX_S:.0} s (got {time_s})"),
+        ));
+    }
+    let frames = (time_s * f64::from(FPS)).round() as u64;
+    Ok(on_ground(&record_frame(spec, imp, frames)))
+}
+
+/// The warm-up's frame at time `t` (s): the camera and light set, then `warmup_display`.
+#[must_use]
+pub fn warmup_frame(imp: &Impl, t: f64) -> Gl {
+    let mut rec = cg_student::gl::Gl::new();
+    camera_and_light(&mut rec);
+    (imp.warmup_display)(&mut rec, t);
+    replay(&rec)
+}
+
+/// The warm-up's three boxes at time `t` (s), drawn like [`view`].
+#[must_use]
+pub fn warmup_view(imp: &Impl, t: f64) -> Scene {
+    on_ground(&warmup_frame(imp, t))
+}
+
+/// A recorded frame as a scene on the course's stage, with the course's ground added in eye
+/// space.
+fn on_ground(gl: &Gl) -> Scene {
+    let mut scene = gl.to_scene(&cg_harness::course::stage());
+    let view = cg_harness::course::scene().view_product().unwrap_or_else(|_| camera_product());
+    let mut ground = cg_harness::course::ground_only().objects;
+    for g in &mut ground {
+        g.transform = view.concat(&g.transform);
+    }
+    ground.append(&mut scene.objects);
+    scene.objects = ground;
+    scene
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::spec::spec_of;
+
+    #[test]
+    fn the_view_rejects_bad_times() {
+        fn nothing(_: &mut cg_student::gl::Gl, _: f64) {}
+        fn idle(_: &Spec, s: &mut State) {
+            s.frame += 1;
+        }
+        fn display(_: &Spec, _: &State, _: &mut cg_student::gl::Gl) {}
+        let imp = Impl { warmup_display: nothing, idle, display };
+        let spec = spec_of(12_345_678);
+        assert!(view(&spec, &imp, -1.0).is_err());
+        assert!(view(&spec, &imp, f64::NAN).is_err());
+        assert!(view(&spec, &imp, 1e9).is_err());
+        let scene = view(&spec, &imp, 1.0).unwrap();
+        assert_eq!(scene.objects.len(), 1, "the ground alone");
+        assert_eq!(warmup_view(&imp, 0.0).objects.len(), 1);
+    }
+}
