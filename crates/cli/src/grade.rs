@@ -27,6 +27,9 @@ pub struct Args {
     /// Memory one run may use, in MB / 1 回の実行のメモリ上限（MB）
     #[arg(long, value_name = "MB", default_value_t = 2048)]
     memory_limit: u64,
+    /// Grade even without bubblewrap: the students' code then runs as you, unisolated (every result says so) / bubblewrap なしでも採点する（学生のコードが隔離されずに動きます）
+    #[arg(long)]
+    unsafe_no_sandbox: bool,
 }
 
 /// `cg grade`.
@@ -48,6 +51,8 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     };
     let config = Config::parse(&config_text).map_err(|e| e.message(lang).to_owned())?;
     let isolation = cg_sandbox::detect();
+    cg_grade::require_isolation(isolation, args.unsafe_no_sandbox)
+        .map_err(|why| why.get(lang).to_owned())?;
     let options = Options {
         kit,
         submissions: args.submissions.clone(),

@@ -2,8 +2,8 @@
 //! file, from which [`shader_source`] keeps only the code for the terms of the light model, the
 //! light types and the texturing that the scene's [`Features`] say it uses, for one shading
 //! mode and one light model. The file marks each optional part with `//#if FLAGS` …
-//! [`//#else` …] `//#endif` (WGSL comments, so a TA reads it as WGSL); [`Flags`] says which
-//! flag holds for a scene.
+//! (optionally `//#else` …) `//#endif` (WGSL comments, so a TA reads it as WGSL); [`Flags`]
+//! says which flag holds for a scene.
 //!
 //! | shading | where [`shade`](#the-shade-function) runs | what is interpolated |
 //! |---|---|---|

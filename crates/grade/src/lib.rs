@@ -26,6 +26,7 @@ pub mod build;
 pub mod config;
 pub mod handout;
 pub mod result;
+pub mod screen;
 pub mod submission;
 
 pub use config::Config;
@@ -158,6 +159,8 @@ pub fn file_name(raw: &str) -> String {
 struct Pending {
     entry: String,
     name: String,
+    /// The other entries that claim the same student number.
+    same_number: Vec<String>,
     hash: String,
     files: Result<(submission::Files, cg_assign::StudentFile), Text>,
 }
@@ -171,7 +174,7 @@ fn collect(options: &Options, kit_hash: &str) -> Result<Vec<Pending>, GradeError
         .filter(|p| !p.file_name().is_some_and(|n| n.to_string_lossy().starts_with('.')))
         .collect();
     entries.sort();
-    let mut used: BTreeMap<String, usize> = BTreeMap::new();
+    let mut used: BTreeMap<String, Vec<String>> = BTreeMap::new();
     let mut pending = Vec::new();
     for path in entries {
         let entry = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
@@ -216,13 +219,34 @@ fn collect(options: &Options, kit_hash: &str) -> Result<Vec<Pending>, GradeError
                 format!("_{}", file_name(&entry))
             }
         };
-        // Two submissions of one student: the second is named after its entry too.
-        let count = used.entry(base.clone()).or_insert(0);
-        *count += 1;
-        let name = if *count == 1 { base } else { format!("{base}~{}", file_name(&entry)) };
-        pending.push(Pending { entry, name, hash: h.hex(), files });
+        used.entry(base.clone()).or_default().push(entry.clone());
+        pending.push(Pending { entry, name: base, same_number: Vec::new(), hash: h.hex(), files });
+    }
+    // Entries that claim one student number: none takes the student's file; each is named
+    // after its entry too and flagged, whichever sorts first (an impostor could sort first).
+    for p in &mut pending {
+        let claims = &used[&p.name];
+        if claims.len() > 1 {
+            p.same_number = claims.iter().filter(|e| **e != p.entry).cloned().collect();
+            p.name = format!("{}~{}", p.name, file_name(&p.entry));
+        }
     }
     Ok(pending)
+}
+
+/// Whether grading may run with `isolation`: under bubblewrap, or with limits only when the
+/// instructor says so (`--unsafe-no-sandbox`; every result and the summary then say it).
+///
+/// # Errors
+/// Limits only without `unsafe_no_sandbox`: what is missing and how to install it.
+pub fn require_isolation(isolation: Isolation, unsafe_no_sandbox: bool) -> Result<(), Text> {
+    if isolation == Isolation::Bubblewrap || unsafe_no_sandbox {
+        return Ok(());
+    }
+    Err(Text::new(
+        "採点は学生のコードを bubblewrap のサンドボックスで動かしますが、ここでは使えません（未インストールか、ユーザー名前空間が許可されていません）。インストール: sudo apt-get install bubblewrap（Debian・Ubuntu）/ sudo dnf install bubblewrap（Fedora）。コンテナでは user namespace を許可してください。隔離なしで採点するなら --unsafe-no-sandbox（学生のコードが採点者の権限でファイルとネットワークに触れます）",
+        "grading runs the students' code in bubblewrap's sandbox, which is not available here (not installed, or user namespaces are not allowed). Install it: sudo apt-get install bubblewrap (Debian, Ubuntu) or sudo dnf install bubblewrap (Fedora); in a container, allow user namespaces. To grade without isolation anyway: --unsafe-no-sandbox (the students' code then runs as you, with your files and the network)",
+    ))
 }
 
 /// Whether `out/<name>.json` exists with this hash.
@@ -682,6 +706,7 @@ pub fn grade(
                             // A machine's problem is not the submission's: not kept.
                             hash: if facts.retry { "" } else { &p.hash },
                             isolation: options.isolation,
+                            same_number: &p.same_number,
                             total: started.elapsed(),
                         },
                         &facts,
@@ -731,6 +756,57 @@ pub fn grade(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn grading_without_bubblewrap_is_refused_unless_asked_for() {
+        assert_eq!(require_isolation(Isolation::Bubblewrap, false), Ok(()));
+        let why = require_isolation(Isolation::Limits, false).unwrap_err();
+        assert!(why.en.contains("apt-get install bubblewrap"), "{}", why.en);
+        assert!(why.en.contains("--unsafe-no-sandbox") && why.ja.contains("--unsafe-no-sandbox"));
+        assert_eq!(require_isolation(Isolation::Limits, true), Ok(()));
+    }
+
+    #[test]
+    fn entries_that_claim_one_number_are_all_flagged_and_none_takes_the_file() {
+        let root = std::env::temp_dir().join(format!("cg-grade-claims-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&root);
+        let subs = root.join("subs");
+        // "00-impostor" sorts before the real student's entry and claims their number.
+        for (entry, number) in
+            [("00-impostor", "20260001"), ("20260001-taro", "20260001"), ("b", "20260002")]
+        {
+            let ex = subs.join(entry).join("exercises");
+            std::fs::create_dir_all(ex.join("src")).unwrap();
+            std::fs::write(ex.join("student.toml"), format!("student = \"{number}\"\n")).unwrap();
+            std::fs::write(ex.join("src/a1.rs"), format!("// {entry}")).unwrap();
+        }
+        let options = Options {
+            kit: root.clone(),
+            submissions: subs,
+            out: root.join("out"),
+            config: Config::default(),
+            config_text: String::new(),
+            jobs: 1,
+            limits: Limits::default(),
+            build_limit: std::time::Duration::from_secs(1),
+            isolation: Isolation::Bubblewrap,
+            lang: Lang::En,
+        };
+        let pending = collect(&options, "kit").unwrap();
+        let names: Vec<(&str, &str, Vec<String>)> = pending
+            .iter()
+            .map(|p| (p.entry.as_str(), p.name.as_str(), p.same_number.clone()))
+            .collect();
+        assert_eq!(
+            names,
+            [
+                ("00-impostor", "20260001~00-impostor", vec!["20260001-taro".to_owned()]),
+                ("20260001-taro", "20260001~20260001-taro", vec!["00-impostor".to_owned()]),
+                ("b", "20260002", vec![]),
+            ]
+        );
+        let _ = std::fs::remove_dir_all(&root);
+    }
 
     #[test]
     fn reports_are_found_after_the_students_own_output() {

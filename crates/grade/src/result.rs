@@ -46,6 +46,9 @@ pub struct Meta<'a> {
     pub hash: &'a str,
     /// The isolation of the runs.
     pub isolation: Isolation,
+    /// The other entries of the submissions folder that claim the same student number (empty
+    /// when none does): none of them is taken for the student without the instructor.
+    pub same_number: &'a [String],
     /// The whole time spent on it.
     pub total: Duration,
 }
@@ -236,6 +239,8 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
             "submission": meta.entry,
             "hash": meta.hash,
             "isolation": meta.isolation.describe(Lang::En),
+            "sandboxed": meta.isolation == Isolation::Bubblewrap,
+            "same_number": meta.same_number,
             "refused": facts.refused.as_ref().map(|m| m.en.clone()),
             "error": facts.fatal.as_ref().map(|m| m.en.clone()),
             "compile_errors": facts.compile_errors,
@@ -297,7 +302,18 @@ pub fn summary_md(results: &[Value], lang: Lang) -> String {
     let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
     let mut counts: BTreeMap<String, (String, usize, usize)> = BTreeMap::new();
     let mut problems = Vec::new();
+    let mut shared: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    let mut unsandboxed = 0;
     for r in results {
+        if r["cg"]["sandboxed"] == false {
+            unsandboxed += 1;
+        }
+        if r["cg"]["same_number"].as_array().is_some_and(|a| !a.is_empty()) {
+            shared
+                .entry(r["cg"]["student"].as_str().unwrap_or("?").to_owned())
+                .or_default()
+                .push(r["cg"]["submission"].as_str().unwrap_or("").to_owned());
+        }
         for t in r["tests"].as_array().map(Vec::as_slice).unwrap_or_default() {
             let id = t["number"].as_str().unwrap_or("?").to_owned();
             let e = counts
@@ -331,6 +347,31 @@ pub fn summary_md(results: &[Value], lang: Lang) -> String {
     );
     for (_, (name, failed, of)) in &rows {
         let _ = writeln!(out, "| {} | {failed} | {of} |", name.replace('|', "\\|"));
+    }
+    if unsandboxed > 0 {
+        let _ = write!(
+            out,
+            "\n## {}\n\n{unsandboxed} {}\n",
+            l("サンドボックスなしの採点", "Graded without a sandbox"),
+            l(
+                "件の提出物を --unsafe-no-sandbox で採点しました。学生のコードは採点者の権限で、ファイルとネットワークを隔離せずに動いています。",
+                "submissions were graded with --unsafe-no-sandbox: the students' code ran as the grader, its files and network not isolated.",
+            )
+        );
+    }
+    if !shared.is_empty() {
+        let list: Vec<String> =
+            shared.iter().map(|(n, entries)| format!("- {n}: {}", entries.join(", "))).collect();
+        let _ = write!(
+            out,
+            "\n## {}\n\n{}\n\n{}\n",
+            l("同じ学生番号の提出物", "Entries that claim the same student number"),
+            l(
+                "どれも <学生番号>~<提出物>.json に採点しました。どれがその学生のものかを確かめてください。",
+                "Each is graded as <student>~<entry>.json; check which one is the student's.",
+            ),
+            list.join("\n")
+        );
     }
     if !problems.is_empty() {
         let _ = write!(

@@ -46,7 +46,8 @@ fn too_big(name: &str, size: u64) -> Text {
 ///
 /// # Errors
 /// Why the submission is refused: unreadable, not a zip or folder, no `exercises/` in it, or (in
-/// a zip) an entry with an absolute or `..` path, a symlink, too many or too big entries.
+/// a zip) an entry with an absolute or `..` path, a symlink, too many or too big entries; a
+/// file that reaches outside itself at compile time ([`crate::screen`]).
 pub fn read(path: &Path) -> Result<Files, Text> {
     let meta = std::fs::symlink_metadata(path)
         .map_err(|e| Text::new(format!("読めません: {e}"), format!("cannot be read: {e}")))?;
@@ -56,13 +57,24 @@ pub fn read(path: &Path) -> Result<Files, Text> {
             "a symbolic link is not accepted as a submission",
         ));
     }
-    if meta.is_dir() {
-        read_folder(path)
+    let files = if meta.is_dir() {
+        read_folder(path)?
     } else if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("zip")) {
-        read_zip(path)
+        read_zip(path)?
     } else {
-        Err(Text::new("フォルダでも .zip でもありません", "neither a folder nor a .zip file"))
-    }
+        return Err(Text::new(
+            "フォルダでも .zip でもありません",
+            "neither a folder nor a .zip file",
+        ));
+    };
+    let refused: Vec<crate::screen::Refused> = files
+        .modules
+        .iter()
+        .flat_map(|(m, bytes)| {
+            crate::screen::screen(&format!("exercises/src/{m}.rs"), &String::from_utf8_lossy(bytes))
+        })
+        .collect();
+    if refused.is_empty() { Ok(files) } else { Err(crate::screen::message(&refused)) }
 }
 
 fn no_exercises() -> Text {
@@ -91,18 +103,33 @@ fn find_base(dir: &Path, depth: usize) -> Option<PathBuf> {
     entries.into_iter().find_map(|d| find_base(&d, depth - 1))
 }
 
+/// The first component of `relative` under `base` that is a symbolic link, as written
+/// (`exercises/src`), if any: a link anywhere on the path could point into the kit.
+fn symlink_on_path(base: &Path, relative: &str) -> Option<String> {
+    let mut path = base.to_path_buf();
+    let mut shown = Vec::new();
+    for part in relative.split('/') {
+        path.push(part);
+        shown.push(part);
+        if std::fs::symlink_metadata(&path).is_ok_and(|m| m.file_type().is_symlink()) {
+            return Some(shown.join("/"));
+        }
+    }
+    None
+}
+
 fn read_folder(dir: &Path) -> Result<Files, Text> {
+    if let Some(link) = ["exercises"].iter().find_map(|r| symlink_on_path(dir, r)) {
+        return Err(symlink_refused(&link));
+    }
     let base = find_base(dir, 2).ok_or_else(no_exercises)?;
     let mut files = Files::default();
     for (relative, module) in wanted() {
+        if let Some(link) = symlink_on_path(&base, &relative) {
+            return Err(symlink_refused(&link));
+        }
         let path = base.join(&relative);
         let Ok(meta) = std::fs::symlink_metadata(&path) else { continue };
-        if meta.file_type().is_symlink() {
-            return Err(Text::new(
-                format!("{relative} はシンボリックリンクです（受け付けません）"),
-                format!("{relative} is a symbolic link (not accepted)"),
-            ));
-        }
         if !meta.is_file() {
             continue;
         }
@@ -123,6 +150,13 @@ fn read_folder(dir: &Path) -> Result<Files, Text> {
         }
     }
     Ok(files)
+}
+
+fn symlink_refused(link: &str) -> Text {
+    Text::new(
+        format!("{link} はシンボリックリンクです（提出物の中のリンクは受け付けません）"),
+        format!("{link} is a symbolic link (no link is accepted inside a submission)"),
+    )
 }
 
 /// Whether a zip entry's name is unsafe to use as a path: absolute, a drive, or with `..`.
@@ -210,6 +244,63 @@ fn read_zip(path: &Path) -> Result<Files, Text> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A submission folder in a fresh temporary folder, with `exercises/student.toml`.
+    fn folder_path(name: &str) -> PathBuf {
+        std::env::temp_dir().join(format!("cg-grade-sub-{name}-{}", std::process::id()))
+    }
+
+    fn folder(name: &str) -> PathBuf {
+        let d = folder_path(name);
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_symbolic_link_anywhere_on_the_path_is_refused() {
+        use std::os::unix::fs::symlink;
+        // What the links point at: a folder like the kit's solutions, full marks if read.
+        let target = folder("target");
+        std::fs::create_dir_all(target.join("src")).unwrap();
+        std::fs::write(target.join("src/a1.rs"), "// the kit's answers").unwrap();
+        std::fs::write(target.join("student.toml"), "student = \"12345678\"\n").unwrap();
+
+        // exercises/src is a link; the files themselves are plain.
+        let sub = folder("src-link");
+        std::fs::create_dir_all(sub.join("exercises")).unwrap();
+        std::fs::write(sub.join("exercises/student.toml"), "student = \"12345678\"\n").unwrap();
+        symlink(target.join("src"), sub.join("exercises/src")).unwrap();
+        let e = read(&sub).unwrap_err();
+        assert!(e.en.contains("exercises/src is a symbolic link"), "{e:?}");
+        assert!(e.ja.contains("exercises/src"), "{e:?}");
+
+        // exercises itself is a link.
+        let sub = folder("exercises-link");
+        symlink(&target, sub.join("exercises")).unwrap();
+        let e = read(&sub).unwrap_err();
+        assert!(e.en.contains("exercises is a symbolic link"), "{e:?}");
+
+        // The file is a link.
+        let sub = folder("file-link");
+        std::fs::create_dir_all(sub.join("exercises/src")).unwrap();
+        std::fs::write(sub.join("exercises/student.toml"), "student = \"12345678\"\n").unwrap();
+        symlink(target.join("src/a1.rs"), sub.join("exercises/src/a1.rs")).unwrap();
+        let e = read(&sub).unwrap_err();
+        assert!(e.en.contains("exercises/src/a1.rs is a symbolic link"), "{e:?}");
+
+        // The control: the same files, copied, are read.
+        let sub = folder("plain");
+        std::fs::create_dir_all(sub.join("exercises/src")).unwrap();
+        std::fs::write(sub.join("exercises/student.toml"), "student = \"12345678\"\n").unwrap();
+        std::fs::write(sub.join("exercises/src/a1.rs"), "// mine").unwrap();
+        let files = read(&sub).unwrap();
+        assert_eq!(files.modules["a1"], b"// mine");
+        for d in ["target", "src-link", "exercises-link", "file-link", "plain"] {
+            let _ = std::fs::remove_dir_all(folder_path(d));
+        }
+    }
 
     #[test]
     fn unsafe_names_are_recognised() {

@@ -1,5 +1,6 @@
 //! Submissions refused before any build — a zip slip, a symlink in a zip, an oversized entry, no
-//! `exercises/`, a bad student number, a submission that is a symlink — each get a result that
+//! `exercises/`, a bad student number, a submission that is a symlink, a link inside a folder,
+//! `#[path]` or `option_env!` reaching outside the files — each get a result that
 //! says why, a row in the class table and a line in the summary, and a second run keeps them.
 //! No kit build is needed, so this runs in seconds.
 
@@ -64,6 +65,29 @@ fn refused_submissions_say_why_and_are_kept() {
     std::fs::create_dir_all(subs.join("badnumber/exercises/src")).unwrap();
     std::fs::write(subs.join("badnumber/exercises/student.toml"), "student = 1234\n").unwrap();
     std::os::unix::fs::symlink(root().join("solutions"), subs.join("sneaky")).unwrap();
+    // Compile-time reads outside the submission (issue 14): the kit's own solutions compiled in
+    // through #[path], the grader's environment leaked into the feedback, and exercises/src a
+    // link to the kit's solutions. Each would score or leak without the refusal.
+    let solutions_a1 = root().join("solutions/src/a1.rs");
+    std::fs::create_dir_all(subs.join("pathmod/exercises/src")).unwrap();
+    std::fs::write(subs.join("pathmod/exercises/student.toml"), toml).unwrap();
+    std::fs::write(
+        subs.join("pathmod/exercises/src/a1.rs"),
+        format!("#[path = \"{}\"]\nmod r;\npub use r::*;\n", solutions_a1.display()),
+    )
+    .unwrap();
+    zip(
+        &subs.join("envleak.zip"),
+        &[
+            ("exercises/student.toml", toml),
+            ("exercises/src/a2.rs", b"pub const H: Option<&str> = option_env!(\"HOME\");\n"),
+        ],
+        None,
+    );
+    std::fs::create_dir_all(subs.join("srclink/exercises")).unwrap();
+    std::fs::write(subs.join("srclink/exercises/student.toml"), toml).unwrap();
+    std::os::unix::fs::symlink(root().join("solutions/src"), subs.join("srclink/exercises/src"))
+        .unwrap();
 
     let options = Options {
         kit: root(),
@@ -78,7 +102,7 @@ fn refused_submissions_say_why_and_are_kept() {
         lang: Lang::En,
     };
     let graded = cg_grade::grade(&options, no_runs, &|_| {}).unwrap();
-    assert_eq!(graded.len(), 7);
+    assert_eq!(graded.len(), 10);
     let why = |name: &str| -> String {
         let v: Value = serde_json::from_str(
             &std::fs::read_to_string(out.join(format!("_{name}.json"))).unwrap(),
@@ -97,14 +121,21 @@ fn refused_submissions_say_why_and_are_kept() {
     assert!(why("notzip.zip").contains("not a readable zip"), "{}", why("notzip.zip"));
     assert!(why("badnumber").contains("student.toml"), "{}", why("badnumber"));
     assert!(why("sneaky").contains("symbolic link"), "{}", why("sneaky"));
+    let pathmod = why("pathmod");
+    assert!(pathmod.contains("exercises/src/a1.rs:1: #[path]"), "{pathmod}");
+    let envleak = why("envleak.zip");
+    assert!(envleak.contains("exercises/src/a2.rs:1: option_env!"), "{envleak}");
+    assert!(why("srclink").contains("exercises/src is a symbolic link"), "{}", why("srclink"));
     assert!(!out.join(".work/slot-0").exists(), "nothing to build, no kit copy");
 
     let csv = std::fs::read_to_string(out.join("class.csv")).unwrap();
-    assert_eq!(csv.lines().count(), 8, "{csv}");
+    assert_eq!(csv.lines().count(), 11, "{csv}");
     assert!(csv.contains("\n,slip.zip,,,,,,0,\n"), "{csv}");
     let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
-    assert!(md.contains("submissions: 7") && md.contains("## Not graded"), "{md}");
-    assert_eq!(md.matches("\n- ").count(), 7, "{md}");
+    assert!(md.contains("submissions: 10") && md.contains("## Not graded"), "{md}");
+    assert_eq!(md.matches("\n- ").count(), 10, "{md}");
+    // Graded with limits only: the summary says so.
+    assert!(md.contains("## Graded without a sandbox"), "{md}");
 
     let before = std::fs::read(out.join("_slip.zip.json")).unwrap();
     let again = cg_grade::grade(&options, no_runs, &|_| {}).unwrap();

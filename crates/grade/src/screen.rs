@@ -1,0 +1,165 @@
+//! The second line behind the build's sandbox: a submission's files may not reach outside
+//! themselves at compile time. Each file is read as Rust tokens (comments and string contents
+//! are not tokens, so a word in them does not count) and refused, with its file, line and
+//! what, when it uses:
+//!
+//! - `include!`, `include_str!`, `include_bytes!`: read another file into the program;
+//! - `env!`, `option_env!`: read the grader's environment (`HOME`, `PWD`) into the feedback;
+//! - `#[path = …]`: compile another file as a module (the kit's own solutions);
+//! - `extern crate`: link a crate the exercise does not name;
+//! - `proc_macro`, `global_asm!`, `asm!`, `#[link…]`: code generators and foreign code.
+//!
+//! The macros are refused wherever their name appears before `!`, also inside a
+//! `macro_rules!` body or behind a path (`std::include_str!`), so no macro can hide them.
+
+use proc_macro2::{Delimiter, TokenStream, TokenTree};
+
+use crate::Text;
+
+/// One refused use: the file, the line (1-based) and what it is.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Refused {
+    /// `exercises/src/a1.rs`.
+    pub file: String,
+    /// The line.
+    pub line: usize,
+    /// What was found: `include_str!`, `#[path]`, `extern crate`.
+    pub what: String,
+}
+
+/// Macros that read files or the environment at compile time, or bring in foreign code.
+const MACROS: [&str; 7] =
+    ["include", "include_str", "include_bytes", "env", "option_env", "global_asm", "asm"];
+
+/// Attributes that reach outside the file.
+const ATTRIBUTES: [&str; 4] = ["path", "link", "link_name", "proc_macro"];
+
+/// Every refused use in `text`, the file `file` (empty when the file is not Rust the lexer
+/// reads: the compiler then reports it as the student's compile error).
+#[must_use]
+pub fn screen(file: &str, text: &str) -> Vec<Refused> {
+    let Ok(tokens) = text.parse::<TokenStream>() else { return Vec::new() };
+    let mut found = Vec::new();
+    walk(file, tokens, &mut found);
+    found.sort_by_key(|r| r.line);
+    found
+}
+
+fn walk(file: &str, tokens: TokenStream, found: &mut Vec<Refused>) {
+    let tokens: Vec<TokenTree> = tokens.into_iter().collect();
+    let refuse = |found: &mut Vec<Refused>, tt: &TokenTree, what: String| {
+        found.push(Refused { file: file.to_owned(), line: tt.span().start().line, what });
+    };
+    for (k, tt) in tokens.iter().enumerate() {
+        match tt {
+            TokenTree::Ident(ident) => {
+                let name = ident.to_string();
+                let next = tokens.get(k + 1);
+                let bang = matches!(next, Some(TokenTree::Punct(p)) if p.as_char() == '!');
+                if bang && MACROS.contains(&name.as_str()) {
+                    refuse(found, tt, format!("{name}!"));
+                }
+                if name == "extern" && matches!(next, Some(TokenTree::Ident(c)) if c == "crate") {
+                    refuse(found, tt, "extern crate".to_owned());
+                }
+            }
+            TokenTree::Punct(p) if p.as_char() == '#' => {
+                // `#[attr …]` or `#![attr …]`: the group's first word.
+                let group = match (tokens.get(k + 1), tokens.get(k + 2)) {
+                    (Some(TokenTree::Group(g)), _) => Some(g),
+                    (Some(TokenTree::Punct(b)), Some(TokenTree::Group(g)))
+                        if b.as_char() == '!' =>
+                    {
+                        Some(g)
+                    }
+                    _ => None,
+                };
+                if let Some(g) = group.filter(|g| g.delimiter() == Delimiter::Bracket)
+                    && let Some(TokenTree::Ident(first)) = g.stream().into_iter().next()
+                    && ATTRIBUTES.contains(&first.to_string().as_str())
+                {
+                    refuse(found, tt, format!("#[{first}]"));
+                }
+            }
+            TokenTree::Group(g) => walk(file, g.stream(), found),
+            _ => {}
+        }
+    }
+}
+
+/// The message for `refused` (at least one): each use with its file and line, and why.
+#[must_use]
+pub fn message(refused: &[Refused]) -> Text {
+    let list: Vec<String> =
+        refused.iter().map(|r| format!("{}:{}: {}", r.file, r.line, r.what)).collect();
+    let list = list.join(", ");
+    Text::new(
+        format!(
+            "提出物が自分のファイルの外を読もうとしています（{list}）。include!・include_str!・include_bytes!・env!・option_env!・#[path]・extern crate は使えません。課題に必要なものは cg_student から使えます"
+        ),
+        format!(
+            "the submission reaches outside its own files ({list}): include!, include_str!, include_bytes!, env!, option_env!, #[path] and extern crate are not accepted; what the exercises need comes from cg_student"
+        ),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn whats(text: &str) -> Vec<(usize, String)> {
+        screen("a1.rs", text).into_iter().map(|r| (r.line, r.what)).collect()
+    }
+
+    #[test]
+    fn every_way_out_is_refused_with_its_line() {
+        let attacks = [
+            ("#[path = \"/kit/solutions/src/a1.rs\"]\nmod r;", (1, "#[path]")),
+            ("const P: &str = include_str!(\"/etc/passwd\");", (1, "include_str!")),
+            ("const Z: &[u8] = include_bytes!(\"/dev/zero\");", (1, "include_bytes!")),
+            ("\ninclude!(\"/kit/solutions/src/a1.rs\");", (2, "include!")),
+            ("fn f() -> &'static str { env!(\"HOME\") }", (1, "env!")),
+            ("fn f() -> Option<&'static str> { option_env!(\"PWD\") }", (1, "option_env!")),
+            ("extern crate cg_core;", (1, "extern crate")),
+            ("fn f() { let _ = core::include_str!(\"/etc/passwd\"); }", (1, "include_str!")),
+            // Hidden inside a macro of the student's own.
+            ("macro_rules! m { () => { include_str!(\"/etc/passwd\") } }", (1, "include_str!")),
+            ("#![path = \"x\"]", (1, "#[path]")),
+            ("#[doc = include_str!(\"/etc/passwd\")]\nfn f() {}", (1, "include_str!")),
+            ("#[link(name = \"c\")]\nunsafe extern \"C\" {}", (1, "#[link]")),
+            ("fn f() { unsafe { core::arch::asm!(\"nop\") } }", (1, "asm!")),
+        ];
+        for (text, (line, what)) in attacks {
+            assert_eq!(whats(text), [(line, what.to_owned())], "{text}");
+        }
+    }
+
+    #[test]
+    fn words_in_comments_and_strings_and_ordinary_code_pass() {
+        let fine = r#"
+//! include_str!("/etc/passwd") in a comment is only words.
+/// env!("HOME") in a doc comment too.
+use cg_student::a1::Spec;
+pub fn vertices(spec: &Spec) -> Vec<cg_student::glam::Vec3> {
+    let env = "include_bytes!(\"x\")"; // a string
+    let path = std::path::Path::new("path");
+    let _ = (env, path, spec);
+    todo!("a1.t1: write it")
+}
+#[must_use]
+pub fn extern_name() -> &'static str { "extern crate" }
+"#;
+        assert_eq!(whats(fine), []);
+        // Not Rust the lexer reads: left to the compiler.
+        assert_eq!(whats("fn f( {"), []);
+    }
+
+    #[test]
+    fn the_message_names_each_use_in_both_languages() {
+        let r = screen("exercises/src/a1.rs", "\n\nconst P: &str = include_str!(\"/etc/passwd\");");
+        let m = message(&r);
+        assert!(m.en.contains("exercises/src/a1.rs:3: include_str!"), "{}", m.en);
+        assert!(m.ja.contains("exercises/src/a1.rs:3: include_str!"), "{}", m.ja);
+        assert!(m.ja.contains("使えません"));
+    }
+}
