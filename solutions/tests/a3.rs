@@ -120,6 +120,9 @@ fn every_check_fails_on_the_pristine_stubs() {
         for c in &results {
             assert!(!c.passed(), "{} passes on the stubs for {s}", c.id);
         }
+        // Drift says the task is not done yet (nothing is drawn), not that anything drifts.
+        let Outcome::Fail(f) = check_of(&results, "a3.t1.drift").outcome else { unreachable!() };
+        assert!(f.cause.en.contains("not done yet"), "{f:?}");
     });
 }
 
@@ -139,6 +142,9 @@ enum Bug {
     OneFrameLate,
     ThirtyFps,
     LinearHop,
+    /// Every angle with the wrong sign (turns and swings the wrong way), at every frame, exactly:
+    /// a wrong pose, not drift.
+    MirroredTurn,
     // display
     NoPushPop,
     ExtraPop,
@@ -217,6 +223,11 @@ fn idle_with(bug: Bug, spec: &Spec, state: &mut State) {
         };
         let a = if bug == Bug::Radians && !matches!(object.motion, Motion::Hop { .. }) {
             a.to_radians()
+        } else {
+            a
+        };
+        let a = if bug == Bug::MirroredTurn && !matches!(object.motion, Motion::Hop { .. }) {
+            -a
         } else {
             a
         };
@@ -405,7 +416,7 @@ fn broken_answers() -> Vec<(Bug, Impl, &'static [&'static str], &'static [&'stat
             Bug::WrongPeriod,
             imp_for!(Bug::WrongPeriod),
             &["a3.t1.periods", "a3.t1.ratios", "a3.t2.poses"],
-            &["a3.t2.stack", "a3.t2.independent", "a3.t2.light"],
+            &["a3.t2.stack", "a3.t2.independent", "a3.t2.light", "a3.t1.drift"],
         ),
         (
             Bug::Radians,
@@ -420,6 +431,12 @@ fn broken_answers() -> Vec<(Bug, Impl, &'static [&'static str], &'static [&'stat
             &["a3.t2.poses", "a3.t1.periods", "a3.t1.ratios", "a3.t2.hierarchy"],
         ),
         (
+            Bug::MirroredTurn,
+            imp_for!(Bug::MirroredTurn),
+            &["a3.t2.poses"],
+            &["a3.t1.periods", "a3.t1.ratios", "a3.t1.drift", "a3.t2.stack"],
+        ),
+        (
             Bug::OneFrameLate,
             imp_for!(Bug::OneFrameLate),
             &["a3.t2.poses"],
@@ -428,8 +445,8 @@ fn broken_answers() -> Vec<(Bug, Impl, &'static [&'static str], &'static [&'stat
         (
             Bug::ThirtyFps,
             imp_for!(Bug::ThirtyFps),
-            &["a3.t1.periods", "a3.t2.poses", "a3.t1.drift"],
-            &["a3.t1.ratios", "a3.t2.stack"],
+            &["a3.t1.periods", "a3.t2.poses"],
+            &["a3.t1.ratios", "a3.t2.stack", "a3.t1.drift"],
         ),
         (
             Bug::LinearHop,
@@ -466,7 +483,7 @@ fn broken_answers() -> Vec<(Bug, Impl, &'static [&'static str], &'static [&'stat
             Bug::ChildReversed,
             imp_for!(Bug::ChildReversed),
             &["a3.t2.hierarchy", "a3.t2.poses"],
-            &["a3.t2.independent", "a3.t2.stack", "a3.t1.periods"],
+            &["a3.t2.independent", "a3.t2.stack", "a3.t1.periods", "a3.t1.drift"],
         ),
         (
             Bug::ChildOutsideParent,
@@ -619,7 +636,7 @@ fn broken_answers_fail_the_checks_that_name_their_mistake() {
         (Bug::MissingPop, "a3.t2.stack", "glPopMatrix missing", "display()"),
         (Bug::Radians, "a3.t2.poses", "radians", "t = "),
         (Bug::F32Accumulate, "a3.t1.drift", "accumulated in f32", "frame 1000000"),
-        (Bug::ChildReversed, "a3.t1.drift", "not drift", "frame 1000000"),
+        (Bug::Radians, "a3.t1.drift", "drift cannot be measured", "object"),
         (Bug::ChildIgnoresParentRotation, "a3.t2.hierarchy", "not its rotation", "object 3"),
         (Bug::ThirtyFps, "a3.t2.hierarchy", "twice as fast", "object 3"),
         (Bug::ChildReversed, "a3.t2.hierarchy", "reversed", "object 3"),
@@ -643,6 +660,82 @@ fn broken_answers_fail_the_checks_that_name_their_mistake() {
         assert!(at.contains(place), "{bug:?}: {id}: {place:?} not in the location {at:?}");
         assert!(f.cause.ja != f.cause.en && f.hint.ja != f.hint.en, "{id}: {f:?}");
     }
+}
+
+// `a3.t1.drift` measures drift alone (issue 14): it compares the student's own pose at frame
+// 10⁶ with the student's own pose at the frame of the same phase early on, not with the
+// expected pose, so a mistake in the pose is not counted twice.
+
+/// The numbers right after each `word` in `text` (`frame 1000` in `…, frame 1000000 vs frame
+/// 1000` gives 1000000 and 1000).
+fn frames_named(text: &str, word: &str) -> Vec<u64> {
+    text.split(word)
+        .skip(1)
+        .filter_map(|rest| {
+            let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
+            digits.parse().ok()
+        })
+        .collect()
+}
+
+/// The result of check `id` in `results`.
+fn check_of(results: &[CheckResult], id: &str) -> CheckResult {
+    results.iter().find(|c| c.id == id).unwrap().clone()
+}
+
+/// The checks of broken answer `bug`, from [`broken_outcomes`].
+fn outcome_of(bug: Bug) -> &'static [CheckResult] {
+    &broken_outcomes().iter().find(|o| o.0 == bug).unwrap().2
+}
+
+#[test]
+fn drift_passes_the_reference() {
+    let imp = cg_solutions::a3::implementation();
+    for_students(&STUDENTS[..2], |s| {
+        let results = run(&spec_for(s), &imp);
+        assert!(check_of(&results, "a3.t1.drift").passed(), "{}", report(s, &results));
+    });
+}
+
+/// An angle accumulated in f32 every frame (`θ += 360°/P`) fails, and the message says which two
+/// frames it compared: 10⁶ and 10⁶ mod the common period.
+#[test]
+fn drift_fails_an_angle_accumulated_in_f32_and_names_both_frames() {
+    use cg_a3::SpecExt as _;
+    let student = student_for(Bug::F32Accumulate);
+    let spec = spec_for(student);
+    let common = (spec.common_period_s() * f64::from(cg_a3::FPS)).round() as u64;
+    let early = match cg_a3::DRIFT_FRAMES % common {
+        0 => common,
+        r => r,
+    };
+    let results = outcome_of(Bug::F32Accumulate);
+    let Outcome::Fail(f) = check_of(results, "a3.t1.drift").outcome else {
+        panic!("f32 accumulation passes drift:\n{}", report(student, results))
+    };
+    let at = f.location.as_ref().unwrap();
+    for (text, word) in [
+        (&at.en, "frame "),
+        (&at.ja, "フレーム "),
+        (&f.expected.en, "frame "),
+        (&f.expected.ja, "フレーム "),
+    ] {
+        let named = frames_named(text, word);
+        for frame in [cg_a3::DRIFT_FRAMES, early] {
+            assert!(named.contains(&frame), "frame {frame} not in {text:?}");
+        }
+    }
+    assert!(f.cause.en.contains("accumulated in f32"), "{f:?}");
+}
+
+/// Every angle's sign flipped, at every frame and exactly: the pose checks fail, drift passes
+/// (the pose at frame 10⁶ is the same wrong pose as one common period in).
+#[test]
+fn drift_passes_a_pose_wrong_the_same_way_at_every_frame() {
+    let student = student_for(Bug::MirroredTurn);
+    let results = outcome_of(Bug::MirroredTurn);
+    assert!(!check_of(results, "a3.t2.poses").passed(), "{}", report(student, results));
+    assert!(check_of(results, "a3.t1.drift").passed(), "{}", report(student, results));
 }
 
 #[test]

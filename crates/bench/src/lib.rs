@@ -250,6 +250,7 @@ impl Machine {
     /// current directory when `None`). Never fails: what cannot be read is `unknown`.
     #[must_use]
     pub fn detect(repo: Option<&Path>) -> Machine {
+        // platform: Linux's /proc; elsewhere the read fails and the CPU is "unknown".
         let cpu = std::fs::read_to_string("/proc/cpuinfo")
             .ok()
             .and_then(|s| {

@@ -3,7 +3,6 @@
 
 use std::collections::BTreeMap;
 use std::io::Read;
-use std::os::unix::process::CommandExt;
 use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -86,7 +85,8 @@ pub fn cargo_build(
     limit: Duration,
 ) -> std::io::Result<BuildOutput> {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
-    let mut child = Command::new(cargo)
+    let mut command = Command::new(cargo);
+    command
         .args(["build", "--release", "--offline", "--locked", "--message-format=json", "-p"])
         .arg(package)
         .current_dir(kit)
@@ -96,9 +96,12 @@ pub fn cargo_build(
         .env_remove("RUSTFLAGS")
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .process_group(0)
-        .spawn()?;
+        .stderr(Stdio::piped());
+    // Its own process group, so a time-out kills the compilers cargo started too (Unix; grading
+    // runs on Linux, and elsewhere only cargo itself is killed).
+    #[cfg(unix)]
+    std::os::unix::process::CommandExt::process_group(&mut command, 0);
+    let mut child = command.spawn()?;
     let read_all = |mut r: Box<dyn Read + Send>| {
         std::thread::spawn(move || {
             let mut s = Vec::new();
@@ -116,6 +119,7 @@ pub fn cargo_build(
         }
         if started.elapsed() > limit {
             timed_out = true;
+            #[cfg(unix)]
             let _ = Command::new("kill").arg("-KILL").arg(format!("-{}", child.id())).status();
             let _ = child.kill();
             let _ = child.wait();

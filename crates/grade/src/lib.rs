@@ -133,6 +133,46 @@ pub fn kit_version(kit: &Path, skip: &dyn Fn(&Path) -> bool) -> Result<String, G
     Ok(h.hex())
 }
 
+/// The content of a slot's copy of the kit, hashed: every file and link under `kit` (names and
+/// bytes, a link's target), except what each submission writes (`exercises/src/<id>.rs` of
+/// each assignment, `exercises/student.toml`). Checked before every build, so a run that changed the copy (only
+/// possible without bubblewrap) cannot change the next submission's grade.
+///
+/// # Errors
+/// A folder or file of the copy could not be read.
+pub fn slot_content(kit: &Path) -> std::io::Result<String> {
+    let mut entries = Vec::new();
+    let mut stack = vec![PathBuf::new()];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(kit.join(&dir))? {
+            let entry = entry?;
+            let relative = dir.join(entry.file_name());
+            let kind = entry.file_type()?;
+            if kind.is_dir() {
+                stack.push(relative);
+            } else {
+                entries.push((relative, kind.is_symlink()));
+            }
+        }
+    }
+    entries.sort();
+    let written = |r: &Path| {
+        r == Path::new("exercises/student.toml")
+            || submission::MODULES.iter().any(|m| r == Path::new(&format!("exercises/src/{m}.rs")))
+    };
+    let mut h = Hasher::default();
+    for (relative, link) in entries.iter().filter(|(r, _)| !written(r)) {
+        h.add(relative.to_string_lossy().as_bytes());
+        if *link {
+            h.add(b"link");
+            h.add(std::fs::read_link(kit.join(relative))?.to_string_lossy().as_bytes());
+        } else {
+            h.add(&std::fs::read(kit.join(relative))?);
+        }
+    }
+    Ok(h.hex())
+}
+
 /// Writes `bytes` to `path` atomically: a temporary file beside it, then a rename.
 ///
 /// # Errors
@@ -480,10 +520,34 @@ fn grade_one(
     slot: &mut Slot,
     files: &submission::Files,
     stubs: &BTreeMap<String, String>,
+    pristine: (&str, &(dyn Fn(&Path) -> bool + Sync)),
     options: &Options,
     runner: Runner,
 ) -> result::Facts {
+    let (pristine, skip) = pristine;
     let mut facts = result::Facts::default();
+    // The copy of the kit as it was made, or made afresh (see `slot_content`).
+    if slot_content(&slot.kit).ok().as_deref() != Some(pristine) {
+        eprintln!(
+            "{}",
+            options.lang.pick(
+                "作業用のキットのコピーが変わっていたので作り直します",
+                "the work copy of the kit had changed: made afresh"
+            )
+        );
+        let _ = std::fs::remove_dir_all(&slot.kit);
+        let remade = std::fs::create_dir_all(&slot.kit)
+            .map_err(|e| e.to_string())
+            .and_then(|_| handout::write_handout_filtered(&options.kit, &slot.kit, skip));
+        if remade.is_err() || slot_content(&slot.kit).ok().as_deref() != Some(pristine) {
+            facts.fatal = Some(Text::new(
+                "作業用のキットのコピーを作り直せません",
+                "the work copy of the kit cannot be made afresh",
+            ));
+            facts.retry = true;
+            return facts;
+        }
+    }
     let student_toml = files.student_toml.clone().unwrap_or_default();
     let io_fail = |facts: &mut result::Facts, e: std::io::Error| {
         facts.fatal = Some(Text::new(format!("作業用コピー: {e}"), format!("work copy: {e}")));
@@ -677,8 +741,10 @@ pub fn grade(
     let waiting = queue.lock().map(|q| q.iter().filter(|p| p.files.is_ok()).count()).unwrap_or(0);
     let slots = options.jobs.max(1).min(waiting.max(1));
     let first = Slot::at(&out, 0);
+    let mut pristine = String::new();
     if waiting > 0 {
         prepare_first(&first, options, &kit_hash, &stubs, &skip)?;
+        pristine = slot_content(&first.kit).map_err(|e| io(&first.kit, e))?;
         // The copies are made before any slot starts building.
         for k in 1..slots {
             prepare_copy(&Slot::at(&out, k), &first, &kit_hash)
@@ -687,7 +753,8 @@ pub fn grade(
     }
     std::thread::scope(|scope| {
         for k in 0..slots {
-            let (queue, results, failure, stubs, out) = (&queue, &results, &failure, &stubs, &out);
+            let (queue, results, failure, stubs, out, pristine, skip) =
+                (&queue, &results, &failure, &stubs, &out, pristine.as_str(), &skip);
             scope.spawn(move || {
                 let mut slot = Slot::at(out, k);
                 while let Some(p) = next(queue) {
@@ -696,7 +763,9 @@ pub fn grade(
                         Err(why) => {
                             result::Facts { refused: Some(why.clone()), ..result::Facts::default() }
                         }
-                        Ok((files, _)) => grade_one(&mut slot, files, stubs, options, runner),
+                        Ok((files, _)) => {
+                            grade_one(&mut slot, files, stubs, (pristine, skip), options, runner)
+                        }
                     };
                     let student = p.files.as_ref().ok().map(|(_, s)| s.student.to_string());
                     let value = result::build(
@@ -756,6 +825,38 @@ pub fn grade(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_changed_copy_of_the_kit_is_noticed_and_the_students_files_are_not_a_change() {
+        let kit = std::env::temp_dir().join(format!("cg-grade-slot-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&kit);
+        std::fs::create_dir_all(kit.join("exercises/src")).unwrap();
+        std::fs::create_dir_all(kit.join("crates/a1/src")).unwrap();
+        std::fs::write(kit.join("crates/a1/src/checks.rs"), "fn check() -> bool { x == y }")
+            .unwrap();
+        std::fs::write(kit.join("exercises/src/a1.rs"), "todo!()").unwrap();
+        let pristine = slot_content(&kit).unwrap();
+        // What each submission writes is not a change of the kit.
+        std::fs::write(kit.join("exercises/src/a1.rs"), "// the next student's").unwrap();
+        std::fs::write(kit.join("exercises/student.toml"), "student = \"1\"").unwrap();
+        assert_eq!(slot_content(&kit).unwrap(), pristine);
+        // A run that patched a check (the attack without bubblewrap), added a file or a link:
+        // each is noticed.
+        std::fs::write(kit.join("crates/a1/src/checks.rs"), "fn check() -> bool { true }").unwrap();
+        assert_ne!(slot_content(&kit).unwrap(), pristine);
+        std::fs::write(kit.join("crates/a1/src/checks.rs"), "fn check() -> bool { x == y }")
+            .unwrap();
+        assert_eq!(slot_content(&kit).unwrap(), pristine);
+        std::fs::write(kit.join("exercises/src/lib.rs"), "mod evil;").unwrap();
+        assert_ne!(slot_content(&kit).unwrap(), pristine);
+        std::fs::remove_file(kit.join("exercises/src/lib.rs")).unwrap();
+        #[cfg(unix)]
+        {
+            std::os::unix::fs::symlink("/etc/passwd", kit.join("crates/a1/src/link.rs")).unwrap();
+            assert_ne!(slot_content(&kit).unwrap(), pristine);
+        }
+        let _ = std::fs::remove_dir_all(&kit);
+    }
 
     #[test]
     fn grading_without_bubblewrap_is_refused_unless_asked_for() {

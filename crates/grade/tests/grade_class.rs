@@ -163,6 +163,7 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
             wall: Duration::from_secs(20),
             memory_bytes: 2 << 30,
             output_bytes: 4 << 20,
+            ..Limits::default()
         },
         build_limit: Duration::from_secs(1500),
         isolation: cg_sandbox::detect(),

@@ -2,9 +2,9 @@
 //!
 //! [`run`] starts a program with a wall-clock limit (the whole process group is killed when it
 //! runs over), a memory limit, a limit on what it prints, no network, a file system that is
-//! read-only except for the folders it is given, and nothing else to start. How much of that the
-//! machine can enforce is [`Isolation`]: [`detect`] picks the strongest available and
-//! [`Isolation::describe`] says what it does and does not enforce.
+//! read-only except for its work folder and `/tmp`, both of a fixed size, and nothing else to
+//! start. How much of that the machine can enforce is [`Isolation`]: [`detect`] picks the
+//! strongest available and [`Isolation::describe`] says what it does and does not enforce.
 //!
 //! ## How
 //!
@@ -13,6 +13,13 @@
 //!   dumps. rlimits are inherited, so under bubblewrap `prlimit` wraps `bwrap` itself and the
 //!   sandbox holds no tool at all. Without `prlimit` (not a Debian/Ubuntu system) only the wall
 //!   clock and the output limit hold: [`prlimit_available`] tells.
+//! - **What it writes**: under bubblewrap every writable place is a tmpfs of a fixed size —
+//!   the private `/tmp` ([`Limits::tmp_bytes`]) and the work folder ([`Limits::workdir_bytes`])
+//!   — so a write past it fails with `ENOSPC`. A tmpfs lives in memory but outside the address
+//!   space `RLIMIT_AS` counts: a run holds at most `memory_bytes + tmp_bytes + workdir_bytes` of
+//!   the machine's memory, and nothing on its disk. Under [`Isolation::Limits`] the program
+//!   writes the real work folder and `/tmp`: each file is bounded (`RLIMIT_FSIZE`), the total is
+//!   not.
 //! - **Wall clock**: the run starts in its own process group; past [`Limits::wall`] the group is
 //!   killed (`kill -KILL -PGID`, and the leader through [`std::process::Child::kill`]). Under
 //!   bubblewrap the program also lives in its own PID namespace that dies with `bwrap`
@@ -22,21 +29,30 @@
 //!   end cannot block on a full pipe or fill the memory of the grader.
 //! - **Bubblewrap** ([`Isolation::Bubblewrap`]): a new root holding only `/lib*` and
 //!   `/usr/lib*` (read-only: the dynamic loader and the libraries), the program (read-only),
-//!   [`Job::read_only`] (read-only), [`Job::workdir`] (writable), a private `/tmp`, a minimal
-//!   `/dev`, no `/proc`; the root itself is read-only. The private `/tmp` is a throwaway tmpfs:
-//!   when a bound folder lies under `/tmp` its parents exist there too and a write into them
-//!   succeeds inside the sandbox but never reaches the real file system. No `/bin`, `/usr/bin` or `/sbin`: there
-//!   is no shell or other tool to start. Every namespace is new (no network: only a loopback
-//!   without addresses), the user inside is `nobody` (65534) with no capabilities, a new
-//!   session (no terminal), and the environment is only [`Job::env`] plus `HOME`. A seccomp
-//!   filter lets it start threads but no process (not even a copy of itself, whose file is in
-//!   the sandbox): `fork`, `vfork` and `clone` without `CLONE_THREAD` fail (x86_64 and
-//!   aarch64; elsewhere no filter). The filter reaches `bwrap` on the program's stdin, so the
-//!   program finds its stdin closed.
+//!   [`Job::read_only`] (read-only), [`Job::workdir`] (writable, see below), a private `/tmp`,
+//!   a minimal read-only `/dev` (its devices still work), no `/proc`; the root itself is
+//!   read-only. The private `/tmp` is a throwaway tmpfs of [`Limits::tmp_bytes`]: when a bound
+//!   folder lies under `/tmp` its parents exist there too and a write into them succeeds inside
+//!   the sandbox but never reaches the real file system. The work folder is a throwaway tmpfs
+//!   of [`Limits::workdir_bytes`] too, with each entry the real folder held when the run
+//!   started bound into it read-only (a symbolic link recreated as the link it is): the program
+//!   reads its inputs and writes new files beside them, and none of its writes reach the real
+//!   folder. (The inputs are bound, not copied: they cost no room in the tmpfs and no file
+//!   descriptors to hand to `bwrap`, and the program cannot change them.) `bwrap` older than
+//!   0.5 has no `--size`, fails [`detect`]'s trial run and gives [`Isolation::Limits`]. No
+//!   `/bin`, `/usr/bin` or `/sbin`: there is no shell or other tool to start. Every namespace
+//!   is new (no network: only a loopback without addresses), the user inside is `nobody`
+//!   (65534) with no capabilities, a new session (no terminal), and the environment is only
+//!   [`Job::env`] plus `HOME`. A seccomp filter lets it start threads but no process (not even
+//!   a copy of itself, whose file is in the sandbox): `fork`, `vfork` and `clone` without
+//!   `CLONE_THREAD` fail (x86_64 and aarch64; elsewhere no filter). The filter reaches `bwrap`
+//!   on the program's stdin, so the program finds its stdin closed.
 //!
 //! Not limited: the number of threads, and CPU time beyond the wall clock (a program may keep
-//! every core busy until it is killed); under [`Isolation::Limits`], processes the program
-//! starts, other than through the process group, which is killed.
+//! every core busy until it is killed); the number of files it creates in its tmpfs (each empty
+//! file costs the kernel memory, about a kilobyte, that no size counts, until the run ends);
+//! under [`Isolation::Limits`], processes the program starts, other than through the process
+//! group, which is killed, and the total it writes to disk (only each file is bounded).
 //!
 //! ## Environment
 //!
@@ -53,6 +69,7 @@
 
 use std::ffi::OsString;
 use std::io::{Read, Write};
+#[cfg(unix)]
 use std::os::unix::process::CommandExt;
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitStatus, Stdio};
@@ -65,11 +82,12 @@ use cg_core::lang::Lang;
 /// How strongly a run is isolated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Isolation {
-    /// bubblewrap: read-only root with only the program and its libraries, the writable folders
-    /// bound in, private /tmp, no network, own PID namespace, no new processes (seccomp); plus
-    /// the rlimits.
+    /// bubblewrap: read-only root with only the program and its libraries, a sized throwaway
+    /// work folder and private /tmp, no network, own PID namespace, no new processes (seccomp);
+    /// plus the rlimits.
     Bubblewrap,
-    /// rlimits only (prlimit): time, memory, file size; no file-system or network isolation.
+    /// rlimits only (prlimit): time, memory, file size (each file; the total written is not
+    /// bounded); no file-system or network isolation.
     /// Without `prlimit` on the machine, only the wall clock and the output limit
     /// ([`prlimit_available`]).
     Limits,
@@ -82,14 +100,14 @@ impl Isolation {
         match self {
             Isolation::Bubblewrap => lang
                 .pick(
-                    "bubblewrap: 時間・メモリ・出力の制限、ネットワークなし、指定のフォルダ以外は書き込み不可、ほかのプログラムは起動不可",
-                    "bubblewrap: time, memory and output limits, no network, no writes outside the given folders, no other programs to start",
+                    "bubblewrap: 時間・メモリ・出力の制限、ネットワークなし、書き込みは容量制限つきの使い捨ての作業フォルダと /tmp のみ、ほかのプログラムは起動不可",
+                    "bubblewrap: time, memory and output limits, no network, writes only to a throwaway work folder and /tmp of limited size, no other programs to start",
                 )
                 .to_owned(),
             Isolation::Limits => lang
                 .pick(
-                    "制限のみ（bubblewrap が使えません）: 時間・メモリ・出力の制限。ファイルとネットワークは隔離されません",
-                    "limits only (bubblewrap is not available): time, memory and output limits; files and network are NOT isolated",
+                    "制限のみ（bubblewrap が使えません）: 時間・メモリ・出力の制限（書き込みはファイル1つずつの大きさのみ制限し、合計は制限なし）。ファイルとネットワークは隔離されません",
+                    "limits only (bubblewrap is not available): time, memory and output limits (the size of each file written, not their total); files and network are NOT isolated",
                 )
                 .to_owned(),
         }
@@ -169,6 +187,11 @@ fn tool(name: &str) -> Option<PathBuf> {
 }
 
 /// What a run may do.
+///
+/// Under [`Isolation::Bubblewrap`] a run holds at most `memory_bytes + tmp_bytes +
+/// workdir_bytes` of the machine's memory: its address space, plus its private `/tmp` and its
+/// work folder, two tmpfs that live in memory but outside the address space (the sizes are not
+/// taken out of `memory_bytes`). It writes nothing to the disk.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Limits {
     /// Wall-clock time; the process group is killed after it.
@@ -178,11 +201,27 @@ pub struct Limits {
     pub memory_bytes: u64,
     /// Bytes of stdout and of stderr kept; the rest is dropped (and the run marked).
     pub output_bytes: usize,
+    /// Under bubblewrap, the size of the private `/tmp` (a tmpfs): a write past it fails with
+    /// `ENOSPC`. Held in memory, on top of `memory_bytes`. 0 is taken as one page. Under
+    /// [`Isolation::Limits`], `/tmp` is the machine's and not bounded in total.
+    pub tmp_bytes: u64,
+    /// Under bubblewrap, the size of the work folder (a tmpfs over [`Job::workdir`]; what the
+    /// folder held before the run is bound into it read-only and does not count): a write past
+    /// it fails with `ENOSPC`. Held in memory, on top of `memory_bytes`. 0 is taken as one page.
+    /// Under [`Isolation::Limits`], the work folder is the real one, on disk, and only each file
+    /// is bounded (by `memory_bytes`), not the total.
+    pub workdir_bytes: u64,
 }
 
 impl Default for Limits {
     fn default() -> Limits {
-        Limits { wall: Duration::from_secs(60), memory_bytes: 2 << 30, output_bytes: 4 << 20 }
+        Limits {
+            wall: Duration::from_secs(60),
+            memory_bytes: 2 << 30,
+            output_bytes: 4 << 20,
+            tmp_bytes: 64 << 20,
+            workdir_bytes: 64 << 20,
+        }
     }
 }
 
@@ -193,7 +232,11 @@ pub struct Job {
     pub program: PathBuf,
     /// Its arguments.
     pub args: Vec<String>,
-    /// Its working folder (writable).
+    /// Its working folder (writable). Under bubblewrap the program sees a throwaway tmpfs of
+    /// [`Limits::workdir_bytes`] here, with what the folder holds when the run starts bound into
+    /// it read-only: it reads its inputs and writes new files, and what it writes is dropped at
+    /// the end of the run (only stdout and stderr come back). Under [`Isolation::Limits`] it is
+    /// the real folder and the writes stay.
     pub workdir: PathBuf,
     /// Other folders it may read (read-only), besides the program and the system libraries.
     pub read_only: Vec<PathBuf>,
@@ -304,8 +347,11 @@ pub fn run(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Run, Sand
         Isolation::Bubblewrap => {
             let bwrap = tool("bwrap")
                 .ok_or_else(|| start_error(&job.program, "bwrap (bubblewrap) is not installed"))?;
+            let inputs = inputs(&workdir).map_err(|e| {
+                start_error(&job.program, format!("work folder {}: {e}", workdir.display()))
+            })?;
             argv.push(bwrap.into());
-            argv.extend(bwrap_args(&program, &workdir, &read_only, &env));
+            argv.extend(bwrap_args(&program, &workdir, &inputs, &read_only, &env, limits));
             if no_new_processes_filter().is_some() {
                 argv.extend(["--seccomp".into(), "0".into()]);
             }
@@ -328,8 +374,11 @@ pub fn run(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Run, Sand
         .envs(env.iter().map(|(k, v)| (k, v)))
         .stdin(if filter.is_some() { Stdio::piped() } else { Stdio::null() })
         .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .process_group(0);
+        .stderr(Stdio::piped());
+    // Its own process group, so a time-out kills what it started too (Unix; elsewhere the
+    // program alone: only a student's own `check` runs there, never grading).
+    #[cfg(unix)]
+    command.process_group(0);
     let started = Instant::now();
     let mut child = command.spawn().map_err(|e| {
         start_error(&job.program, format!("{}: {e}", Path::new(&argv[0]).display()))
@@ -380,12 +429,37 @@ pub fn run(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Run, Sand
     Ok(Run { ended, stdout, stderr, output_cut: cut_out || cut_err, wall, isolation })
 }
 
-/// The arguments of `bwrap` for one run (without the final `-- program args`).
+/// What the work folder holds when a run starts: each entry, with the target of those that are
+/// symbolic links (recreated as links under bubblewrap, not followed), sorted by name.
+fn inputs(workdir: &Path) -> std::io::Result<Vec<(PathBuf, Option<PathBuf>)>> {
+    let mut found = Vec::new();
+    for entry in std::fs::read_dir(workdir)? {
+        let path = entry?.path();
+        let link = if std::fs::symlink_metadata(&path)?.file_type().is_symlink() {
+            Some(std::fs::read_link(&path)?)
+        } else {
+            None
+        };
+        found.push((path, link));
+    }
+    found.sort();
+    Ok(found)
+}
+
+/// A size for `bwrap --size`, which refuses 0 (the tmpfs rounds it up to a page).
+fn tmpfs_size(bytes: u64) -> OsString {
+    bytes.max(1).to_string().into()
+}
+
+/// The arguments of `bwrap` for one run (without the final `-- program args`): `inputs` is what
+/// the work folder holds ([`inputs`]).
 fn bwrap_args(
     program: &Path,
     workdir: &Path,
+    inputs: &[(PathBuf, Option<PathBuf>)],
     read_only: &[PathBuf],
     env: &[(String, String)],
+    limits: &Limits,
 ) -> Vec<OsString> {
     let mut a: Vec<OsString> = Vec::new();
     let mut push = |items: &[&std::ffi::OsStr]| a.extend(items.iter().map(|s| s.to_os_string()));
@@ -416,14 +490,39 @@ fn bwrap_args(
             _ => {}
         }
     }
-    push(&["--tmpfs".as_ref(), "/tmp".as_ref(), "--dev".as_ref(), "/dev".as_ref()]);
-    // Outer folders first, so that a folder inside another is bound over it, not hidden by it.
-    let mut binds: Vec<(&Path, &str)> =
-        read_only.iter().map(|p| (p.as_path(), "--ro-bind")).collect();
-    binds.push((workdir, "--bind"));
-    binds.sort_by_key(|(p, _)| p.components().count());
-    for (path, how) in binds {
-        push(&[how.as_ref(), path.as_os_str(), path.as_os_str()]);
+    // Every writable place is a sized tmpfs: /tmp and the work folder. /dev (also a tmpfs, with
+    // no size) is made read-only; its devices stay usable.
+    let tmp_size = tmpfs_size(limits.tmp_bytes);
+    push(&["--size".as_ref(), tmp_size.as_os_str(), "--tmpfs".as_ref(), "/tmp".as_ref()]);
+    push(&["--dev".as_ref(), "/dev".as_ref(), "--remount-ro".as_ref(), "/dev".as_ref()]);
+    // Outer folders first, so that a folder inside another is mounted over it, not hidden by it;
+    // the work folder's tmpfs before what it held, which is bound into it.
+    enum Mount<'a> {
+        ReadOnly,
+        Work,
+        Link(&'a Path),
+    }
+    let mut mounts: Vec<(&Path, Mount)> =
+        read_only.iter().map(|p| (p.as_path(), Mount::ReadOnly)).collect();
+    mounts.push((workdir, Mount::Work));
+    mounts.extend(inputs.iter().map(|(path, link)| {
+        (path.as_path(), link.as_deref().map_or(Mount::ReadOnly, Mount::Link))
+    }));
+    mounts.sort_by_key(|(p, _)| p.components().count());
+    let work_size = tmpfs_size(limits.workdir_bytes);
+    for (path, how) in mounts {
+        match how {
+            Mount::ReadOnly => push(&["--ro-bind".as_ref(), path.as_os_str(), path.as_os_str()]),
+            Mount::Work => push(&[
+                "--size".as_ref(),
+                work_size.as_os_str(),
+                "--tmpfs".as_ref(),
+                path.as_os_str(),
+            ]),
+            Mount::Link(target) => {
+                push(&["--symlink".as_ref(), target.as_os_str(), path.as_os_str()])
+            }
+        }
     }
     push(&["--ro-bind".as_ref(), program.as_os_str(), program.as_os_str()]);
     push(&["--chdir".as_ref(), workdir.as_os_str()]);
@@ -509,8 +608,8 @@ fn kill_group(pgid: u32) {
 
 /// How a finished program's status reads.
 fn ended(status: ExitStatus, isolation: Isolation) -> Ended {
-    use std::os::unix::process::ExitStatusExt;
-    if let Some(signal) = status.signal() {
+    #[cfg(unix)]
+    if let Some(signal) = std::os::unix::process::ExitStatusExt::signal(&status) {
         return Ended::Signalled(signal);
     }
     match (status.code(), isolation) {
@@ -607,17 +706,33 @@ mod tests {
         let args = bwrap_args(
             Path::new("/p/prog"),
             Path::new("/k/build/work"),
+            &[
+                (PathBuf::from("/k/build/work/exercises"), None),
+                (PathBuf::from("/k/build/work/link"), Some(PathBuf::from("exercises"))),
+            ],
             &[PathBuf::from("/k")],
             &[("HOME".into(), "/k/build/work".into())],
+            &Limits { tmp_bytes: 1000, workdir_bytes: 0, ..Limits::default() },
         );
         let args: Vec<String> = args.iter().map(|a| a.to_string_lossy().into_owned()).collect();
         let at = |x: &str| args.iter().position(|a| a == x).unwrap();
         assert!(at("/k") < at("/k/build/work"), "{args:?}");
+        // Both writable places are sized tmpfs (bwrap refuses a size of 0); the work folder's
+        // comes before what it held, bound read-only (a link recreated as a link).
+        let has = |w: &[&str]| args.windows(w.len()).any(|x| x == w);
+        assert!(has(&["--size", "1000", "--tmpfs", "/tmp"]), "{args:?}");
+        assert!(has(&["--size", "1", "--tmpfs", "/k/build/work"]), "{args:?}");
+        assert!(!args.iter().any(|a| a == "--bind"), "{args:?}");
+        assert!(at("/k/build/work") < at("/k/build/work/exercises"), "{args:?}");
+        assert!(has(&["--ro-bind", "/k/build/work/exercises", "/k/build/work/exercises"]));
+        assert!(has(&["--symlink", "exercises", "/k/build/work/link"]), "{args:?}");
+        assert!(has(&["--dev", "/dev", "--remount-ro", "/dev"]), "{args:?}");
         assert!(!args.iter().any(|a| a == "/usr/bin" || a == "/bin" || a == "/sbin"), "{args:?}");
         assert!(args.windows(2).any(|w| w[0] == "--chdir" && w[1] == "/k/build/work"));
         assert_eq!(args.last().map(String::as_str), Some("/"));
     }
 
+    #[cfg(unix)]
     #[test]
     fn a_signal_reported_by_bwrap_reads_as_a_signal() {
         use std::os::unix::process::ExitStatusExt;

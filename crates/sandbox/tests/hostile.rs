@@ -45,7 +45,12 @@ fn job(mode: &str, arg: Option<&Path>, workdir: &Dir) -> Job {
 }
 
 fn limits() -> Limits {
-    Limits { wall: Duration::from_secs(30), memory_bytes: 1 << 30, output_bytes: 1 << 20 }
+    Limits {
+        wall: Duration::from_secs(30),
+        memory_bytes: 1 << 30,
+        output_bytes: 1 << 20,
+        ..Limits::default()
+    }
 }
 
 /// Whether bubblewrap works here; a note (or, under CI, a failure) when it does not.
@@ -84,7 +89,10 @@ fn a_program_that_behaves_writes_its_folder_and_is_heard() {
         assert_eq!(r.ended, Ended::Exited(0), "{iso:?}: {r:?}");
         assert_eq!(r.stdout, "done\n", "{iso:?}");
         assert!(!r.output_cut);
-        assert_eq!(std::fs::read_to_string(wd.0.join("result.txt")).unwrap(), "fine", "{iso:?}");
+        // Under bubblewrap the write went to the run's throwaway work folder.
+        let kept = std::fs::read_to_string(wd.0.join("result.txt")).ok();
+        let expected = (iso == Isolation::Limits).then(|| "fine".to_owned());
+        assert_eq!(kept, expected, "{iso:?}");
     }
 }
 
@@ -107,10 +115,14 @@ fn an_endless_loop_is_killed_at_the_wall_clock_limit_and_stays_dead() {
         assert_eq!(r.ended, Ended::TimedOut, "{iso:?}: {r:?}");
         assert!(r.wall >= Duration::from_secs(1), "{iso:?}: {:?}", r.wall);
         assert!(r.wall < Duration::from_secs(6), "{iso:?}: killed only after {:?}", r.wall);
-        // It ran (it ticked), and nothing ticks after the kill.
+        // It ran (it printed ticks), and its output was read to the end: nothing it started
+        // still holds the pipes.
+        assert!(r.stdout.starts_with(".."), "{iso:?}: the loop never ran: {r:?}");
+        assert!(!r.output_cut, "{iso:?}: something still holds its output");
+        // Nothing ticks after the kill (under bubblewrap the ticks never reach the real folder).
         let ticks = || std::fs::metadata(wd.0.join("ticks")).map_or(0, |m| m.len());
         let before = ticks();
-        assert!(before > 0, "{iso:?}: the loop never ran");
+        assert_eq!(before > 0, iso == Isolation::Limits, "{iso:?}: {before} ticks on disk");
         std::thread::sleep(Duration::from_millis(300));
         assert_eq!(ticks(), before, "{iso:?}: still running after the kill");
     }
@@ -188,6 +200,15 @@ fn under_bubblewrap_nothing_outside_the_work_folder_can_be_written() {
     assert!(r.stdout.contains(&format!("denied: {}", target.display())), "{}", r.stdout);
     assert!(r.stdout.contains("denied: /etc/cg-sandbox-hostile"), "{}", r.stdout);
     assert_eq!(r.ended, Ended::Exited(0));
+
+    // /dev is a tmpfs too, with no size: it is read-only (its devices still work).
+    let r = go(
+        &job("write-outside", Some(Path::new("/dev/shm/x")), &wd),
+        &limits(),
+        Isolation::Bubblewrap,
+    );
+    assert!(r.stdout.contains("denied: /dev/shm/x"), "{r:?}");
+    assert_eq!(r.ended, Ended::Exited(0), "{r:?}");
 
     // A read-only folder is readable and not writable.
     let shared = Dir::new("write-ro");
@@ -271,4 +292,94 @@ fn what_cannot_be_started_is_an_error_not_a_run() {
         j.read_only.push(wd.0.join("no-such-folder"));
         assert!(matches!(run(&j, &limits(), iso), Err(SandboxError::Start { .. })), "{iso:?}");
     }
+}
+
+/// What a `fill-*` run of the fixture reports: the bytes it wrote, and whether a write failed
+/// (with its message) rather than the fixture giving up at its own cap.
+fn filled(r: &Run) -> (u64, Option<&str>) {
+    let line =
+        r.stdout.lines().find(|l| l.starts_with("wrote ")).unwrap_or_else(|| panic!("{r:?}"));
+    let bytes = line["wrote ".len()..].split(' ').next().and_then(|b| b.parse().ok());
+    (bytes.unwrap_or_else(|| panic!("{r:?}")), line.split_once(", then: ").map(|(_, e)| e))
+}
+
+/// The limits for a fill test: the fixture's files (1 MiB each) are far under the per-file
+/// limit (`memory_bytes`); the tmpfs are 8 MiB, and the fixture gives up at 64 MiB.
+fn fill_limits() -> Limits {
+    Limits { memory_bytes: 256 << 20, tmp_bytes: 8 << 20, workdir_bytes: 8 << 20, ..limits() }
+}
+
+#[test]
+fn under_bubblewrap_filling_tmp_stops_at_its_size() {
+    if !bubblewrap("fill-tmp") {
+        return;
+    }
+    let wd = Dir::new("fill-tmp");
+    let limits = fill_limits();
+    let r = go(&job("fill-tmp", Some(Path::new("64")), &wd), &limits, Isolation::Bubblewrap);
+    let (wrote, failed) = filled(&r);
+    eprintln!("fill-tmp: {}", r.stdout.trim());
+    // The write failed with ENOSPC, after at most the size of /tmp (and most of it: the limit is
+    // the tmpfs, not something else that stopped it early).
+    assert_eq!(r.ended, Ended::Exited(1), "{r:?}");
+    assert!(failed.is_some_and(|e| e.contains("os error 28")), "{r:?}");
+    assert!(wrote <= limits.tmp_bytes, "{wrote} bytes in a /tmp of {}", limits.tmp_bytes);
+    assert!(wrote >= limits.tmp_bytes / 2, "stopped early: {r:?}");
+    // Nothing reached the real /tmp or the work folder.
+    assert!(!Path::new("/tmp/cg-sandbox-hostile-fill-0").exists());
+    assert_eq!(std::fs::read_dir(&wd.0).unwrap().count(), 0);
+}
+
+#[test]
+fn under_bubblewrap_filling_the_work_folder_stops_at_its_size() {
+    if !bubblewrap("fill-workdir") {
+        return;
+    }
+    let wd = Dir::new("fill-workdir");
+    std::fs::write(wd.0.join("given.txt"), "given").unwrap();
+    let limits = fill_limits();
+    let r = go(&job("fill-workdir", Some(Path::new("64")), &wd), &limits, Isolation::Bubblewrap);
+    let (wrote, failed) = filled(&r);
+    eprintln!("fill-workdir: {}", r.stdout.trim());
+    assert_eq!(r.ended, Ended::Exited(1), "{r:?}");
+    assert!(failed.is_some_and(|e| e.contains("os error 28")), "{r:?}");
+    assert!(wrote <= limits.workdir_bytes, "{wrote} bytes in a folder of {}", limits.workdir_bytes);
+    assert!(wrote >= limits.workdir_bytes / 2, "stopped early: {r:?}");
+    // Many files, each far under the per-file limit: only the total stopped it.
+    let files: u64 =
+        r.stdout.split(" in ").nth(1).and_then(|t| t.split(' ').next()?.parse().ok()).unwrap_or(0);
+    assert!(files >= 8, "{r:?}");
+    // None of it reached the disk: the real folder holds what it held.
+    let names: Vec<_> = std::fs::read_dir(&wd.0).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert_eq!(names, ["given.txt"]);
+    assert_eq!(std::fs::read_to_string(wd.0.join("given.txt")).unwrap(), "given");
+}
+
+#[test]
+fn under_bubblewrap_the_work_folder_holds_its_inputs_read_only() {
+    if !bubblewrap("inputs") {
+        return;
+    }
+    let wd = Dir::new("inputs");
+    std::fs::create_dir_all(wd.0.join("exercises")).unwrap();
+    std::fs::write(wd.0.join("exercises/student.toml"), "id = 1").unwrap();
+    std::os::unix::fs::symlink("exercises/student.toml", wd.0.join("link")).unwrap();
+    let inside = |rel: &str| wd.0.join(rel);
+    // Readable, also through a link (recreated as a link, resolved inside).
+    for rel in ["exercises/student.toml", "link"] {
+        let r = go(&job("read", Some(&inside(rel)), &wd), &limits(), Isolation::Bubblewrap);
+        assert_eq!(r.stdout, "read: id = 1\n", "{rel}: {r:?}");
+    }
+    // Not writable, nor is a folder it held; a new file beside them is (and is dropped).
+    for rel in ["exercises/student.toml", "exercises/new.txt"] {
+        let r =
+            go(&job("write-outside", Some(&inside(rel)), &wd), &limits(), Isolation::Bubblewrap);
+        assert!(r.stdout.contains(&format!("denied: {}", inside(rel).display())), "{r:?}");
+    }
+    let r =
+        go(&job("write-outside", Some(&inside("new.txt")), &wd), &limits(), Isolation::Bubblewrap);
+    assert!(r.stdout.contains(&format!("written: {}", inside("new.txt").display())), "{r:?}");
+    assert_eq!(std::fs::read_to_string(inside("exercises/student.toml")).unwrap(), "id = 1");
+    assert!(!inside("new.txt").exists());
+    assert!(!inside("exercises/new.txt").exists());
 }

@@ -1,6 +1,8 @@
 //! `a3.t1`, `idle`: each object's period measured from its poses, the ratios of the periods, and
-//! no drift after [`DRIFT_FRAMES`] frames.
+//! no drift after [`DRIFT_FRAMES`] frames (the student's own pose then against the student's own
+//! pose at the same phase early on).
 
+use cg_core::gl::Gl;
 use cg_core::glam::{DMat3, DMat4};
 use cg_harness::check::Failure;
 use cg_harness::text::{Text, t};
@@ -8,14 +10,32 @@ use cg_harness::text::{Text, t};
 use super::{
     POSE_TOL, at_frame, close, each_frame, joined, nothing_drawn, object_label, pair, the_draw,
 };
-use crate::oracle::{Variation, expected_model_with};
 use crate::pose::{model_of, pose_error, seconds};
-use crate::{DRIFT_FRAMES, FPS, Impl, Spec, SpecExt, camera_product, model_product};
+use crate::{DRIFT_FRAMES, FPS, Impl, Spec, SpecExt};
 
-/// Drift tolerance after 10⁶ frames (NUMERICS.md row 11).
+/// Drift tolerance after 10⁶ frames (NUMERICS.md row 11): how far the pose at frame 10⁶ may be
+/// from the student's own pose one whole number of common periods earlier. A motion rebuilt
+/// from the frame count gives the same f32 matrices at both (a difference of 0); an f32 angle
+/// accumulated every frame is off by degrees (the tests' one: 6e-2 rad).
 const DRIFT_TOL: f64 = 1e-5;
 /// The reference frames a repetition must hold at: pose(n + L) = pose(n) for each.
 const REPEAT_REFS: [u64; 4] = [1, 5, 12, 30];
+
+/// Object `i`'s pose in the frame `gl` drew: its model matrix, a child's taken relative to its
+/// parent (`M_parent⁻¹ · M_child`, NaN when the parent's is singular), so that each object's own
+/// motion is measured apart from its parent's.
+fn own_pose(spec: &Spec, gl: &Gl, i: usize, frame: u64) -> Result<DMat4, Failure> {
+    let object = &spec.objects[i];
+    let location = pair(&object_label(spec, i), "、", ", ", &at_frame(frame));
+    let m = model_of(the_draw(gl, object, &location)?);
+    match object.motion.parent().and_then(|p| spec.objects.get(p)) {
+        Some(po) => {
+            let pm = model_of(the_draw(gl, po, &location)?);
+            Ok(if pm.determinant().abs() > 1e-9 { pm.inverse() * m } else { DMat4::NAN })
+        }
+        None => Ok(m),
+    }
+}
 
 /// Each object's measured period in frames: the smallest `L ≤ 2·P_max` with
 /// `pose(n + L) = pose(n)` at every reference frame `n` (a child's pose taken relative to its
@@ -31,17 +51,8 @@ fn measure_periods(spec: &Spec, imp: &Impl) -> Result<Vec<Option<u64>>, Failure>
         if gl.draws().is_empty() {
             return Err(nothing_drawn(at_frame(frame), "a3.t1 / a3.t2"));
         }
-        for (i, object) in spec.objects.iter().enumerate() {
-            let location = pair(&object_label(spec, i), "、", ", ", &at_frame(frame));
-            let draw = the_draw(gl, object, &location)?;
-            let mut m = model_of(draw);
-            if let Some(p) = object.motion.parent()
-                && let Some(po) = spec.objects.get(p)
-            {
-                let pm = model_of(the_draw(gl, po, &location)?);
-                m = if pm.determinant().abs() > 1e-9 { pm.inverse() * m } else { DMat4::NAN };
-            }
-            signals[i][frame as usize] = Some(m);
+        for (i, signal) in signals.iter_mut().enumerate() {
+            signal[frame as usize] = Some(own_pose(spec, gl, i, frame)?);
         }
         Ok(())
     })?;
@@ -206,93 +217,177 @@ pub(super) fn ratios(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     )))
 }
 
-/// The drift check: `idle` run 10⁶ times, then every object's pose against the exact pose at
-/// t = 10⁶/60 s. When it is off, the same comparison at the frame with the same phase early on
-/// (10⁶ mod the common period) tells drift (right then, wrong now) from a motion that is wrong
-/// from the start.
+/// The longest common period [`drift`] compares over: the early frame is then at most this far
+/// in, and the two frames it compares are at least 9 of these periods apart.
+const MAX_COMMON: u64 = DRIFT_FRAMES / 10;
+
+/// The drift check (NUMERICS.md row 11): `idle` run [`DRIFT_FRAMES`] times, and every object's
+/// pose at that frame compared with the student's *own* pose at the frame with the same phase
+/// early on, `f₀ = 10⁶ mod L` (`L` when that is 0), `L` the least common multiple of the periods
+/// [`measure_periods`] measures (those of `a3.t1.periods`; for a right answer, the specified
+/// ones). A child's pose is taken relative to its parent, as for the periods, so a drifting
+/// parent is named, not its child.
+///
+/// The check never looks at the expected pose: a motion rebuilt from the frame count each frame
+/// repeats exactly, so the two poses agree to the last bit, right or wrong; an angle accumulated
+/// in f32 (`θ += 360°/P` every frame) is right early on and degrees off after 10⁶ frames. A pose
+/// that is wrong the same way at every frame (the sign, the axis, the order of the transforms,
+/// the wrong period) passes here: it fails only the checks that look at the pose or the period.
+///
+/// When there is no such `L` (an object whose motion does not repeat, or does not move, or
+/// periods with no common multiple within [`MAX_COMMON`] frames) drift cannot be measured, and
+/// the check fails saying so and naming `a3.t1.periods`. Failing, not passing, because a pass
+/// would give credit for a measurement that was never made (an `idle` that does nothing would
+/// pass), and the message points to the one check to fix, as `a3.t1.ratios` does; once the
+/// motion repeats, this check measures drift alone, whether or not the period is the specified
+/// one.
 pub(super) fn drift(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
-    let common = spec.objects.iter().map(|o| o.motion.period_frames()).fold(1, crate::lcm).max(1);
+    let measured = measure_periods(spec, imp)?;
+    let common = drift_period(spec, &measured)?;
     let early = match DRIFT_FRAMES % common {
         0 => common,
         r => r,
     };
-    let mut wrong_early: Vec<usize> = Vec::new();
+    let mut before: Vec<DMat4> = Vec::new();
     each_frame(spec, imp, [early, DRIFT_FRAMES], |frame, gl| {
         if gl.draws().is_empty() {
-            return Err(nothing_drawn(at_frame(frame), "a3.t2"));
+            return Err(nothing_drawn(at_frame(frame), "a3.t1 / a3.t2"));
         }
+        let poses = (0..spec.objects.len())
+            .map(|i| own_pose(spec, gl, i, frame))
+            .collect::<Result<_, _>>()?;
+        if frame == early {
+            before = poses;
+            return Ok(());
+        }
+        let det = |m: DMat4| DMat3::from_mat4(m).determinant();
         let mut worst: Option<(usize, f64, f64, f64)> = None;
-        for (i, object) in spec.objects.iter().enumerate() {
-            let location = pair(&object_label(spec, i), "、", ", ", &at_frame(frame));
-            let draw = the_draw(gl, object, &location)?;
-            let found = model_of(draw);
-            let expected = expected_model_with(spec, i, frame, Variation::EXACT, 0);
-            let (rot, pos) = pose_error(found, expected);
-            if frame == early {
-                if !close(found, expected, POSE_TOL) {
-                    wrong_early.push(i);
-                }
+        for (i, (&then, &now)) in before.iter().zip(&poses).enumerate() {
+            let (rot, pos) = pose_error(now, then);
+            let d = (det(now) - det(then)).abs();
+            let d = if d.is_finite() { d } else { f64::INFINITY };
+            let score = rot.max(pos).max(d);
+            if score > DRIFT_TOL && worst.is_none_or(|w| score > w.1.max(w.2).max(w.3)) {
+                worst = Some((i, rot, pos, d));
+            }
+        }
+        let Some((i, rot, pos, d)) = worst else { return Ok(()) };
+        Err(drift_failure(spec, i, early, common, rot, pos, d))
+    })
+}
+
+/// The common period `L` [`drift`] compares over: the least common multiple of the measured
+/// periods, or why there is none.
+fn drift_period(spec: &Spec, measured: &[Option<u64>]) -> Result<u64, Failure> {
+    let longest = spec.objects.iter().map(|o| o.motion.period_frames()).max().unwrap_or(1);
+    let expected = t(
+        "周期的に繰り返す動き（10⁶ フレーム後の姿勢を、同じ位相の早いフレームの姿勢と比べるため）",
+        "a motion that repeats (the pose after 10⁶ frames is compared with the pose at an early frame of the same phase)",
+    );
+    let cause = t(
+        "動きが繰り返さない（または動かない）ので、同じ位相のフレームがなく、ずれを測れません（このチェックは a3.t1.periods が測る周期を使います）",
+        "the motion does not repeat (or does not move), so there is no frame of the same phase to compare with and drift cannot be measured (this check uses the periods a3.t1.periods measures)",
+    );
+    let hint = t(
+        "先に a3.t1.periods を直してください。直せば、このチェックはずれだけを測ります",
+        "fix a3.t1.periods first; then this check measures drift alone",
+    );
+    let mut common: u64 = 1;
+    for (i, found) in measured.iter().enumerate() {
+        let actual = match *found {
+            Some(l) if l > 1 => {
+                common = crate::lcm(common, l);
                 continue;
             }
-            let det = (DMat3::from_mat4(found).determinant() - 1.0).abs();
-            let det = if det.is_finite() { det } else { f64::INFINITY };
-            let score = rot.max(pos).max(det);
-            if score > DRIFT_TOL && worst.is_none_or(|w| score > w.1.max(w.2).max(w.3)) {
-                worst = Some((i, rot, pos, det));
-            }
-        }
-        let Some((i, rot, pos, det)) = worst else { return Ok(()) };
-        let e = |x: f64| if x.is_finite() { format!("{x:.1e}") } else { "∞".to_owned() };
-        let (cause, hint) = if wrong_early.contains(&i) {
-            (
-                Text::new(
-                    format!(
-                        "ずれではなく、最初から動きが違います（同じ位相の {} でもすでに違う）",
-                        at_frame(early).ja
-                    ),
-                    format!(
-                        "this is not drift: the motion is wrong from the start (already wrong at {}, the same phase)",
-                        at_frame(early).en
-                    ),
-                ),
-                t("先に a3.t2.poses を直してください", "fix a3.t2.poses first"),
+            Some(_) => t(
+                "動いていない（1 フレームあたり 0.06° または 0.001 未満）",
+                "does not move (less than 0.06° or 0.001 per frame)",
+            ),
+            None => Text::new(
+                format!("{}以内に繰り返さない", frames_text(2 * longest).ja),
+                format!("does not repeat within {}", frames_text(2 * longest).en),
+            ),
+        };
+        let actual = if spec.objects[i].motion.parent().is_some() {
+            Text::new(
+                format!("{}（親に対して）", actual.ja),
+                format!("{} (relative to its parent)", actual.en),
             )
         } else {
-            (
-                Text::new(
-                    format!(
-                        "{} では正しいのに 10⁶ フレーム後にずれています: 角度や位置を毎フレーム f32 で足し続けているため、丸め誤差がたまっています（または周期で割った余りを使っていない）",
-                        at_frame(early).ja
-                    ),
-                    format!(
-                        "right at {} (the same phase) but off after 10⁶ frames: the angle or position is accumulated in f32 every frame, so rounding errors pile up (or it is not reduced by the period)",
-                        at_frame(early).en
-                    ),
-                ),
-                t(
-                    "毎フレーム state.frame（整数）から作り直してください: P = 60·T として θ = 360·(state.frame % P) as f64 / P as f64",
-                    "rebuild it every frame from state.frame (an integer): with P = 60·T, θ = 360·(state.frame % P) as f64 / P as f64",
-                ),
-            )
+            actual
         };
-        let product = camera_product().concat(&model_product(spec, i, frame)).numeric();
-        let (rot_e, deg, pos, det) = (e(rot), rot.to_degrees(), e(pos), e(det));
-        Err(Failure::new(
-            Text::new(
-                format!(
-                    "{DRIFT_FRAMES} フレーム後: 回転と位置のずれ < {DRIFT_TOL:.0e}、|det(R) − 1| < {DRIFT_TOL:.0e}; 期待する変換 {product}"
-                ),
-                format!(
-                    "after {DRIFT_FRAMES} frames: pose error < {DRIFT_TOL:.0e} rad and units, |det(R) − 1| < {DRIFT_TOL:.0e}; expected {product}"
-                ),
+        return Err(Failure::new(expected, actual)
+            .at(object_label(spec, i))
+            .cause(cause)
+            .hint(hint));
+    }
+    if common <= MAX_COMMON {
+        return Ok(common);
+    }
+    let found: Vec<Text> = measured.iter().map(|m| frames_text(m.unwrap_or(1))).collect();
+    let found = joined(&found, ", ");
+    let names: Vec<Text> = (0..spec.objects.len()).map(|i| object_label(spec, i)).collect();
+    Err(Failure::new(
+        expected,
+        Text::new(
+            format!("周期 {} の公倍数が {MAX_COMMON} フレーム以内にない", found.ja),
+            format!("the periods {} have no common multiple within {MAX_COMMON} frames", found.en),
+        ),
+    )
+    .at(joined(&names, ", "))
+    .cause(cause)
+    .hint(hint))
+}
+
+/// The failure for object `i` whose pose at [`DRIFT_FRAMES`] is not its pose at `early`.
+fn drift_failure(
+    spec: &Spec,
+    i: usize,
+    early: u64,
+    common: u64,
+    rot: f64,
+    pos: f64,
+    det: f64,
+) -> Failure {
+    let e = |x: f64| if x.is_finite() { format!("{x:.1e}") } else { "∞".to_owned() };
+    let (rot_e, deg, pos, det) = (e(rot), rot.to_degrees(), e(pos), e(det));
+    let k = (DRIFT_FRAMES - early) / common;
+    let relative = if spec.objects[i].motion.parent().is_some() {
+        ["（親に対して）", " (relative to its parent)"]
+    } else {
+        ["", ""]
+    };
+    let (now, then) = (at_frame(DRIFT_FRAMES), at_frame(early));
+    Failure::new(
+        Text::new(
+            format!(
+                "フレーム {DRIFT_FRAMES} の姿勢{} = 同じ位相のフレーム {early} の姿勢（{common} フレームの周期の {k} 倍前）: 回転と位置の差 < {DRIFT_TOL:.0e}、det(R) の差 < {DRIFT_TOL:.0e}",
+                relative[0]
             ),
-            Text::new(
-                format!("回転のずれ {rot_e} rad（{deg:.4}°）、原点のずれ {pos}、|det(R) − 1| = {det}"),
-                format!("rotation {rot_e} rad ({deg:.4}°), origin {pos} units, |det(R) − 1| = {det}"),
+            format!(
+                "the pose{} at frame {DRIFT_FRAMES} = the pose at frame {early}, the same phase ({k} periods of {common} frames earlier): rotation and origin differences < {DRIFT_TOL:.0e} rad and units, det(R) difference < {DRIFT_TOL:.0e}",
+                relative[1]
             ),
-        )
-        .at(pair(&object_label(spec, i), "、", ", ", &at_frame(frame)))
-        .cause(cause)
-        .hint(hint))
-    })
+        ),
+        Text::new(
+            format!("回転の差 {rot_e} rad（{deg:.4}°）、原点の差 {pos}、det(R) の差 {det}"),
+            format!("rotation differs by {rot_e} rad ({deg:.4}°), origin by {pos} units, det(R) by {det}"),
+        ),
+    )
+    .at(Text::new(
+        format!("{}、{} と {}", object_label(spec, i).ja, now.ja, then.ja),
+        format!("{}, {} vs {}", object_label(spec, i).en, now.en, then.en),
+    ))
+    .cause(Text::new(
+        format!(
+            "フレーム {early} と {DRIFT_FRAMES} は同じ位相なのに姿勢が違います: 角度や位置を毎フレーム f32 で足し続けているため、丸め誤差がたまっています（または周期で割った余りを使っていない）"
+        ),
+        format!(
+            "frames {early} and {DRIFT_FRAMES} have the same phase but not the same pose: the angle or position is accumulated in f32 every frame, so rounding errors pile up (or it is not reduced by the period)"
+        ),
+    ))
+    .hint(t(
+        "毎フレーム state.frame（整数）から作り直してください: P = 60·T として θ = 360·(state.frame % P) as f64 / P as f64",
+        "rebuild it every frame from state.frame (an integer): with P = 60·T, θ = 360·(state.frame % P) as f64 / P as f64",
+    ))
 }

@@ -3,11 +3,14 @@
 //! cargo for the crate's tests (`CARGO_BIN_EXE_cg-sandbox-hostile`).
 //!
 //! `cg-sandbox-hostile MODE [PATH]`, MODE one of:
-//! `loop` (appends a byte to `ticks` in the current folder every 20 ms, forever), `alloc` (grows
-//! its memory until an allocation fails), `panic`, `write-outside PATH` (writes PATH and
-//! `/etc/cg-sandbox-hostile`), `read PATH` (prints PATH), `spawn` (starts itself, then `sh`), `net`
-//! (connects to 1.1.1.1:53), `print` (100 MB on stdout and 1 MB on stderr), `env` (prints its
-//! environment), `threads` (sums on 4 threads), `ok` (writes `result.txt` and prints `done`).
+//! `loop` (appends a byte to `ticks` in the current folder and prints `.` every 20 ms, forever),
+//! `alloc` (grows its memory until an allocation fails), `panic`, `write-outside PATH` (writes
+//! PATH and `/etc/cg-sandbox-hostile`), `read PATH` (prints PATH), `spawn` (starts itself, then
+//! `sh`), `net` (connects to 1.1.1.1:53), `print` (100 MB on stdout and 1 MB on stderr), `env`
+//! (prints its environment), `threads` (sums on 4 threads), `ok` (writes `result.txt` and prints
+//! `done`), `fill-tmp MIB` and `fill-workdir MIB` (write files of 1 MiB each, in `/tmp` or in
+//! the current folder, until a write fails or MIB MiB are written, then print `wrote BYTES bytes
+//! in FILES files, then: ERROR` and exit 1, or `... never stopped` and exit 0).
 //! Each mode reports what it could and could not do on stdout.
 
 use std::io::Write;
@@ -22,8 +25,13 @@ fn main() {
             if let Ok(mut f) = std::fs::OpenOptions::new().create(true).append(true).open("ticks") {
                 let _ = f.write_all(b".");
             }
+            let mut out = std::io::stdout().lock();
+            let _ = out.write_all(b".").and_then(|()| out.flush());
+            drop(out);
             std::thread::sleep(Duration::from_millis(20));
         },
+        "fill-tmp" => fill("/tmp/cg-sandbox-hostile-fill", &path),
+        "fill-workdir" => fill("fill", &path),
         "alloc" => {
             let mut held: Vec<Vec<u8>> = Vec::new();
             loop {
@@ -118,6 +126,49 @@ fn main() {
         other => {
             eprintln!("unknown mode {other:?}");
             std::process::exit(2);
+        }
+    }
+}
+
+/// Writes files `{prefix}-0`, `{prefix}-1`, … of 1 MiB each (well under any per-file limit) in
+/// 64 KiB writes until one fails or `cap_mib` MiB are written; reports the bytes written (every
+/// byte a write accepted) and exits.
+fn fill(prefix: &str, cap_mib: &str) -> ! {
+    let cap = cap_mib.parse::<u64>().unwrap_or(64) << 20;
+    let chunk = vec![0x5a_u8; 64 << 10];
+    let mut total: u64 = 0;
+    let mut files: u64 = 0;
+    let failed = 'fill: loop {
+        if total >= cap {
+            break None;
+        }
+        let name = format!("{prefix}-{files}");
+        let mut file = match std::fs::File::create(&name) {
+            Ok(f) => f,
+            Err(e) => break Some(format!("create {name}: {e}")),
+        };
+        files += 1;
+        let mut in_file = 0;
+        while in_file < 1 << 20 && total < cap {
+            match file.write(&chunk) {
+                Ok(0) => break 'fill Some(format!("write {name}: wrote nothing")),
+                Ok(n) => {
+                    in_file += n;
+                    total += n as u64;
+                }
+                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+                Err(e) => break 'fill Some(format!("write {name}: {e}")),
+            }
+        }
+    };
+    match failed {
+        Some(e) => {
+            println!("wrote {total} bytes in {files} files, then: {e}");
+            std::process::exit(1);
+        }
+        None => {
+            println!("wrote {total} bytes in {files} files, never stopped");
+            std::process::exit(0);
         }
     }
 }

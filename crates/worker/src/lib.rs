@@ -1,0 +1,54 @@
+//! # cg-worker — the student's functions in their own process
+//!
+//! Principle 2 of the kit: student code never shares a process with judgement. A **worker** is
+//! a small program built from the student's crate (`exercises/`) and this crate alone: it reads
+//! calls on stdin, runs the named student function under `catch_unwind`, and writes the reply on
+//! stdout ([`serve()`]). The **caller** ([`Worker`]) lives in the trusted process that holds the
+//! checks; it starts the worker, sends one call at a time and waits for the reply within that
+//! call's time budget. A function that loops past its budget, aborts, or is killed for its
+//! memory fails only the call that ran it: the caller kills the worker, reports
+//! [`CallError::TimedOut`] or [`CallError::Crashed`], and starts a fresh worker for the next
+//! call.
+//!
+//! Nothing the worker prints is a result: a reply is only a value for the trusted side to judge
+//! (the student's function can return any value anyway). Replies are framed ([`frame`]), so
+//! whatever the student prints on stdout (`println!` while debugging) is kept apart and handed
+//! back as the student's output, never parsed.
+//!
+//! This crate has no kit code: the worker links it, so nothing here may compute an answer.
+
+pub mod client;
+pub mod frame;
+pub mod serve;
+
+pub use client::{CallError, Worker};
+pub use serve::{Handler, serve};
+
+use serde::{Deserialize, Serialize};
+
+/// One call: the function's name (`a1.vertices`) and its arguments as JSON.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Call {
+    /// The function, `<assignment>.<name>`.
+    pub function: String,
+    /// Its arguments, as the function's handler reads them.
+    pub args: serde_json::Value,
+}
+
+/// The worker's answer to a [`Call`].
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Reply {
+    /// What the function returned (and what it changed through `&mut` arguments), as JSON.
+    Value(serde_json::Value),
+    /// The function panicked: a `todo!()` (`not yet implemented: …`) or any other panic.
+    Panicked {
+        /// The panic's message.
+        message: String,
+        /// `file:line:column`, when known.
+        location: Option<String>,
+    },
+    /// The arguments did not read as the function's (a mismatch of kit and worker).
+    BadArguments(String),
+    /// No such function in this worker.
+    Unknown(String),
+}

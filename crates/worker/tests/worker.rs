@@ -1,0 +1,67 @@
+//! The caller and the worker over a real pipe, with the fixture worker: values come back, a
+//! `todo!()` is a panic with its message, an endless loop fails only its own call (and the next
+//! call gets a fresh worker), an abort is a crash, and the student's prints never break a reply.
+
+use std::time::{Duration, Instant};
+
+use cg_worker::{CallError, Worker};
+
+fn worker() -> Worker {
+    Worker::new(env!("CARGO_BIN_EXE_cg-worker-fixture"), Vec::new())
+}
+
+const BUDGET: Duration = Duration::from_secs(5);
+
+#[test]
+fn values_and_changed_arguments_come_back() {
+    let mut w = worker();
+    assert_eq!(w.call::<_, i64>("add", &(2, 3), BUDGET), Ok(5));
+    assert_eq!(w.call::<_, Vec<f32>>("grow", &vec![0.25f32], BUDGET), Ok(vec![0.25, 1.5]));
+    assert!(matches!(w.call::<_, i64>("nothing", &(), BUDGET), Err(CallError::Broken(_))));
+    assert!(matches!(w.call::<_, i64>("add", &"x", BUDGET), Err(CallError::Broken(_))));
+    // A value of another type than the caller expects is no value.
+    assert!(matches!(w.call::<_, String>("add", &(1, 1), BUDGET), Err(CallError::Broken(_))));
+}
+
+#[test]
+fn a_todo_is_a_panic_with_its_message_and_the_worker_goes_on() {
+    let mut w = worker();
+    match w.call::<_, i64>("todo", &(), BUDGET) {
+        Err(CallError::Panicked { message, location }) => {
+            assert_eq!(message, "not yet implemented: t.t1: write it");
+            assert!(location.is_some_and(|l| l.contains("fixture.rs")));
+        }
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(w.call::<_, i64>("add", &(1, 1), BUDGET), Ok(2));
+}
+
+#[test]
+fn an_endless_loop_fails_its_own_call_only() {
+    let mut w = worker();
+    let started = Instant::now();
+    let budget = Duration::from_millis(300);
+    assert_eq!(w.call::<_, i64>("loop", &(), budget), Err(CallError::TimedOut(budget)));
+    assert!(started.elapsed() < Duration::from_secs(3), "{:?}", started.elapsed());
+    // The next call runs in a fresh worker.
+    assert_eq!(w.call::<_, i64>("add", &(4, 5), BUDGET), Ok(9));
+}
+
+#[test]
+fn an_abort_is_a_crash_of_that_call_with_the_workers_stderr() {
+    let mut w = worker();
+    match w.call::<_, i64>("abort", &(), BUDGET) {
+        Err(CallError::Crashed { status, .. }) => assert!(!status.is_empty()),
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(w.call::<_, i64>("add", &(1, 2), BUDGET), Ok(3));
+}
+
+#[test]
+fn prints_are_kept_apart_from_replies() {
+    let mut w = worker();
+    assert_eq!(w.call::<_, i64>("print", &21, BUDGET), Ok(42));
+    assert_eq!(w.call::<_, i64>("print", &1, BUDGET), Ok(2));
+    let printed = String::from_utf8_lossy(&w.printed).into_owned();
+    assert_eq!(printed, "debugging: x = 21\ndebugging: x = 1\n");
+}

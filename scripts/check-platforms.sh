@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# The kit compiles for the systems students use: Windows and macOS (Linux is the test run itself).
+# `cargo check` of the whole workspace for each target (no linker needed); the targets' standard
+# libraries are added with rustup, idempotently. Run by CI (.ci/run).
+# 学生の使う Windows と macOS 向けにもコンパイルできることを確かめます（CI が実行します）。
+set -euo pipefail
+cd "$(dirname "$0")/.."
+TARGETS=(x86_64-pc-windows-gnu x86_64-apple-darwin)
+for target in "${TARGETS[@]}"; do
+  if ! rustup target list --installed | grep -qx "$target"; then
+    if ! rustup target add "$target"; then
+      echo "check-platforms: could not install the standard library for $target (no network?)." >&2
+      echo "check-platforms: $target NOT checked." >&2
+      continue
+    fi
+  fi
+  echo "check-platforms: cargo check --workspace --target $target"
+  cargo check --workspace --locked --target "$target" --quiet
+done
