@@ -31,7 +31,7 @@ fn child_derives_with_a_function_that_never_returns() {
     app::start_watchdog(Duration::from_secs(1), lang);
     let output = std::env::temp_dir().join(format!("cg-report-watchdog-{}", std::process::id()));
     let command = app::Command::Derive(DeriveArgs {
-        source: Source { student: Some("12345678".into()), table: None, data: None },
+        source: Source { student: Some("12345678".into()), ..Source::default() },
         output,
         no_render: true,
     });

@@ -1,12 +1,13 @@
-//! # cg-core — the lecture's mathematics, with no files, GPU or window
+//! # cg-core — the lecture's mathematics, with no GPU or window
 //!
 //! Everything lecture 11 (シェーディング) and the course's sample program define, as plain
 //! functions and data: transforms and the matrix stack, the orbit camera, meshes and their
 //! validation, face and vertex normals, the light model (環境光・拡散反射光・鏡面反射光), optics
 //! (reflection, refraction, Fresnel), textures and the in-memory scene.
 //!
-//! Loading files (TOML scenes, OBJ, PNG) lives beside this crate in `cg-scene`; renderers,
-//! assignments and the command line build on both.
+//! The one file reader here is [`text::read`]: a student's text (report, table, scene) in the
+//! encodings their editors write, bounded in size. Loading files (TOML scenes, OBJ, PNG) lives
+//! beside this crate in `cg-scene`; renderers, assignments and the command line build on both.
 //!
 //! ## Conventions (written once, used everywhere)
 //!
@@ -45,6 +46,7 @@ pub mod scene;
 pub mod shapes;
 pub mod stack;
 pub mod student;
+pub mod text;
 pub mod texture;
 pub mod transform;
 

@@ -628,32 +628,10 @@ mod text_tests {
 
     /// What is wrong with `text` as a one-line message in each language (empty when nothing).
     fn problems(what: &str, text: &Text) -> Vec<String> {
-        let kana_or_kanji =
-            |c: char| matches!(c, '\u{3040}'..='\u{30ff}' | '\u{4e00}'..='\u{9fff}');
-        let japanese = |c: char| {
-            kana_or_kanji(c) || matches!(c, '\u{3000}'..='\u{303f}' | '\u{ff00}'..='\u{ffef}')
-        };
-        let mut found = Vec::new();
-        for (lang, s) in [(Lang::Ja, &text.ja), (Lang::En, &text.en)] {
-            let mut complain = |why: &str| found.push(format!("{what} ({lang}): {why}: {s:?}"));
-            if s.is_empty() {
-                complain("empty");
-            }
-            if s.contains("  ") {
-                complain("a run of spaces");
-            }
-            if s.trim() != s.as_str() {
-                complain("leading or trailing whitespace");
-            }
-            if s.contains(['\n', '\r', '\t']) {
-                complain("a line break or tab");
-            }
-            match lang {
-                Lang::Ja if !s.chars().any(kana_or_kanji) => complain("no Japanese"),
-                Lang::En if s.chars().any(japanese) => complain("Japanese in the English text"),
-                _ => {}
-            }
-        }
+        let mut found: Vec<String> = cg_testkit::text::line_problems(&text.ja, &text.en, false)
+            .into_iter()
+            .map(|p| format!("{what} {p}"))
+            .collect();
         if text.ja == text.en {
             found.push(format!("{what}: the same in both languages: {:?}", text.en));
         }

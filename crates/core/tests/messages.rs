@@ -9,24 +9,7 @@ use cg_core::normals::{NormalsError, prepare_normals};
 use cg_core::scene::NormalSource;
 use cg_core::shapes::{Allowed, ShapeError, grid, lecture_pyramid, torus, uv_sphere};
 
-/// Runs of two or more ASCII words with only spaces between them (`has a non`, `out of range`): an
-/// English sentence fragment. Names inside a Japanese sentence (`grid の divisions`, `V3`,
-/// `(NaN, 0, 0)`) stand alone between Japanese words or punctuation; single letters (`r g b`,
-/// `x y z`) are coordinates, not words.
-fn english_fragments(text: &str) -> Vec<String> {
-    let is_word = |w: &&str| w.chars().filter(char::is_ascii_alphabetic).count() >= 2;
-    text.split(|c: char| !(c == ' ' || c == '_' || c.is_ascii_alphanumeric()))
-        .flat_map(|segment| {
-            let words: Vec<&str> = segment.split_whitespace().collect();
-            let pairs: Vec<String> = words
-                .windows(2)
-                .filter(|w| is_word(&w[0]) && is_word(&w[1]))
-                .map(|w| w.join(" "))
-                .collect();
-            pairs
-        })
-        .collect()
-}
+use cg_testkit::text::english_fragments;
 
 /// The Japanese message has no English fragment, and the English one does (so the check above
 /// would catch the English text embedded in the Japanese one).

@@ -8,6 +8,10 @@
 //! - `fill`: the same, plus the report template filled into `report.md` and `report.tex`.
 //! - `check`: reads a report (Markdown) and names every number in it that does not follow from
 //!   the data, with the derived value and the tolerance used.
+//!
+//! The report and the data file are read in the encoding the student's editor wrote them in
+//! (UTF-8, UTF-16 with a BOM or Shift_JIS, detected; `--encoding` names it), and the summary says
+//! when it was not UTF-8 ("read as Shift_JIS"). Everything written is UTF-8.
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -15,6 +19,7 @@ use std::path::{Path, PathBuf};
 
 use cg_assign::Variants;
 use cg_core::lang::Lang;
+use cg_core::text::Encoding;
 use cg_harness::check::{Outcome, guarded};
 use cg_harness::{TableVersion, Text};
 
@@ -51,6 +56,11 @@ pub struct Source {
     /// instead of the exercises / 演習のプログラムの代わりに、頂点と面の一覧のファイルを使う
     #[arg(long, value_name = "FILE")]
     pub data: Option<PathBuf>,
+    /// The encoding of the report and the data file: utf-8, utf-16le, utf-16be or shift_jis
+    /// (default: detected; UTF-8, UTF-16 with a BOM and Shift_JIS are told apart)
+    /// / レポートとデータファイルの文字コード（省略時は自動判別）
+    #[arg(long, value_name = "ENCODING")]
+    pub encoding: Option<Encoding>,
 }
 
 /// Options of `derive`.
@@ -162,12 +172,30 @@ pub struct Gathered {
     pub context: Context,
     /// The assignment, when the data came from the exercises.
     pub assignment: Option<Variants>,
+    /// The files read (the data file), each with the encoding it was read in.
+    pub read: Vec<(PathBuf, Encoding)>,
 }
 
-fn read_text(path: &Path, lang: Lang) -> Result<String, String> {
-    std::fs::read_to_string(path).map_err(|e| {
-        format!("{}: {} ({e})", path.display(), lang.pick("読めません", "cannot be read"))
-    })
+/// A student's text file in `forced` or the encoding detected ([`cg_core::text::read`]).
+fn read_text(
+    path: &Path,
+    forced: Option<Encoding>,
+    lang: Lang,
+) -> Result<(String, Encoding), String> {
+    cg_core::text::read(path, forced)
+        .map_err(|e| format!("{}: {}", path.display(), e.text().get(lang)))
+}
+
+/// `  file: read as Shift_JIS` for each file not read as UTF-8, each line starting with
+/// `bullet`.
+fn read_notes(read: &[(PathBuf, Encoding)], bullet: &str, lang: Lang) -> String {
+    let mut out = String::new();
+    for (file, encoding) in read {
+        if let Some(note) = encoding.read_as() {
+            let _ = writeln!(out, "{bullet}{}: {}", file.display(), note.get(lang));
+        }
+    }
+    out
 }
 
 fn problems_text(path: &Path, problems: &[ParseProblem], lang: Lang) -> String {
@@ -187,9 +215,25 @@ fn problems_text(path: &Path, problems: &[ParseProblem], lang: Lang) -> String {
 /// # Errors
 /// The file cannot be read, or its rows do not parse (each problem with its line).
 pub fn read_data(path: &Path, lang: Lang) -> Result<PolygonData, String> {
-    let text = read_text(path, lang)?;
+    read_data_in(path, None, lang).map(|(polygon, _)| polygon)
+}
+
+/// [`read_data`] in `forced` (`--encoding`) or the encoding detected; with the encoding read.
+///
+/// # Errors
+/// As [`read_data`], and text that is not in the encoding (each with its place).
+pub fn read_data_in(
+    path: &Path,
+    forced: Option<Encoding>,
+    lang: Lang,
+) -> Result<(PolygonData, Encoding), String> {
+    let (text, encoding) = read_text(path, forced, lang)?;
+    Ok((polygon_from(path, &text, lang)?, encoding))
+}
+
+fn polygon_from(path: &Path, text: &str, lang: Lang) -> Result<PolygonData, String> {
     let name = path.file_stem().map_or_else(|| "data".to_owned(), |s| s.to_string_lossy().into());
-    parse::polygon_from_text(&text, Text::new(name.clone(), name))
+    parse::polygon_from_text(text, Text::new(name.clone(), name))
         .map_err(|problems| problems_text(path, &problems, lang))
 }
 
@@ -199,11 +243,12 @@ pub fn read_data(path: &Path, lang: Lang) -> Result<PolygonData, String> {
 /// A bad student number or student file, or an unreadable data file.
 pub fn gather(source: &Source, kit: &Kit, lang: Lang) -> Result<Gathered, String> {
     if let Some(path) = &source.data {
-        let polygon = read_data(path, lang)?;
+        let (polygon, encoding) = read_data_in(path, source.encoding, lang)?;
         return Ok(Gathered {
             derived: Derived { a1: Some(polygon), ..Derived::default() },
             context: Context::default(),
             assignment: None,
+            read: vec![(path.clone(), encoding)],
         });
     }
     let record = cg_assign::resolve_student(
@@ -226,7 +271,7 @@ pub fn gather(source: &Source, kit: &Kit, lang: Lang) -> Result<Gathered, String
         renders: Vec::new(),
         missing,
     };
-    Ok(Gathered { derived, context, assignment: Some(a) })
+    Ok(Gathered { derived, context, assignment: Some(a), read: Vec::new() })
 }
 
 /// What a command wrote.
@@ -240,14 +285,19 @@ pub struct Written {
     pub kept: Vec<String>,
     /// What could not be derived.
     pub missing: Vec<Missing>,
+    /// The files read (the data file), each with the encoding it was read in.
+    pub read: Vec<(PathBuf, Encoding)>,
 }
 
 impl Written {
     /// A summary for the terminal.
     #[must_use]
     pub fn summary(&self, lang: Lang) -> String {
-        let mut out = format!(
-            "{} {} ({} {})\n",
+        // What was read first (`table.md: read as Shift_JIS`), then what was written.
+        let mut out = read_notes(&self.read, "", lang);
+        let _ = writeln!(
+            out,
+            "{} {} ({} {})",
             lang.pick("書き出し先:", "written to"),
             self.folder.display(),
             self.files.len(),
@@ -405,6 +455,7 @@ fn derive_gathered(args: &DeriveArgs, kit: &Kit, lang: Lang) -> Result<(Values, 
     }
     let values = write_derived(&g, &args.output, lang, &mut written)?;
     written.missing = g.context.missing;
+    written.read = g.read;
     Ok((values, written))
 }
 
@@ -439,6 +490,8 @@ pub struct CheckOutcome {
     pub verification: Verification,
     /// What could not be derived (those tables were not checked).
     pub missing: Vec<Missing>,
+    /// The files read (the report, the data file), each with the encoding it was read in.
+    pub read: Vec<(PathBuf, Encoding)>,
 }
 
 impl CheckOutcome {
@@ -456,6 +509,7 @@ impl CheckOutcome {
             lang.pick("レポートの確認:", "checking the report"),
             self.report.display()
         );
+        out.push_str(&read_notes(&self.read, "  · ", lang));
         for p in &self.problems {
             let _ = writeln!(out, "  ✗ {}", p.message(lang));
         }
@@ -522,6 +576,9 @@ impl CheckOutcome {
             })).collect::<Vec<_>>(),
             "notes": self.verification.notes.iter().map(|n| n.get(lang)).collect::<Vec<_>>(),
             "not_checked": self.missing.iter().map(|m| m.message(lang)).collect::<Vec<_>>(),
+            "read": self.read.iter().map(|(file, encoding)| serde_json::json!({
+                "file": file.display().to_string(), "encoding": encoding.name(),
+            })).collect::<Vec<_>>(),
         })
     }
 }
@@ -531,9 +588,10 @@ impl CheckOutcome {
 /// # Errors
 /// What could not be read; a bad student number or student file.
 pub fn check(args: &CheckArgs, kit: &Kit, lang: Lang) -> Result<CheckOutcome, String> {
+    let forced = args.source.encoding;
     if let (Some(data), None) = (&args.source.data, &args.report) {
-        let polygon = read_data(data, lang)?;
-        let text = read_text(data, lang)?;
+        let (text, encoding) = read_text(data, forced, lang)?;
+        let polygon = polygon_from(data, &text, lang)?;
         let (parsed, problems) = parse::parse_report(&text);
         let verification = verify::verify_data(&polygon, &parsed);
         return Ok(CheckOutcome {
@@ -541,17 +599,20 @@ pub fn check(args: &CheckArgs, kit: &Kit, lang: Lang) -> Result<CheckOutcome, St
             problems,
             verification,
             missing: Vec::new(),
+            read: vec![(data.clone(), encoding)],
         });
     }
     let report = args.report.clone().unwrap_or_else(|| PathBuf::from("report").join("report.md"));
-    let text = read_text(&report, lang)?;
+    let (text, encoding) = read_text(&report, forced, lang)?;
+    let mut read = vec![(report.clone(), encoding)];
     let (parsed, problems) = parse::parse_report(&text);
     if let Some(data) = &args.source.data {
-        let polygon = read_data(data, lang)?;
+        let (polygon, encoding) = read_data_in(data, forced, lang)?;
+        read.push((data.clone(), encoding));
         let verification = verify::verify_data(&polygon, &parsed);
-        return Ok(CheckOutcome { report, problems, verification, missing: Vec::new() });
+        return Ok(CheckOutcome { report, problems, verification, missing: Vec::new(), read });
     }
     let g = gather(&args.source, kit, lang)?;
     let verification = verify::verify(&parsed, &g.derived);
-    Ok(CheckOutcome { report, problems, verification, missing: g.context.missing })
+    Ok(CheckOutcome { report, problems, verification, missing: g.context.missing, read })
 }

@@ -133,7 +133,118 @@ fn read_error(path: &Path, e: &std::io::Error) -> SceneError {
     SceneError::in_file(path, ErrorKind::Read { reason: e.to_string() })
 }
 
-/// A text file's contents (UTF-8).
+/// A text file's contents, in the encoding a student's editor wrote it in: UTF-8 (a BOM
+/// removed), UTF-16 with a BOM or Shift_JIS ([`cg_core::text::read`]; at most 64 MiB). Line
+/// endings are kept: the TOML parser and the OBJ scan both take `\r\n`.
+///
+/// A file that is not text in any of these is a [`ErrorKind::Read`] at the line and column where
+/// it stops being readable; its reason is in English and Japanese, as `ErrorKind::Read` holds one
+/// text for both (`cg render` and `cg inspect` have no `--encoding`, so the advice is to save the
+/// file as UTF-8).
 fn read_text(path: &Path) -> Result<String, SceneError> {
-    std::fs::read_to_string(path).map_err(|e| read_error(path, &e))
+    use cg_core::text::ReadError;
+    match cg_core::text::read(path, None) {
+        Ok((text, _)) => Ok(text),
+        Err(ReadError::Io { reason }) => Err(SceneError::in_file(path, ErrorKind::Read { reason })),
+        Err(e) => Err(SceneError {
+            position: e.place().map(|p| Position { line: p.line, column: p.column }),
+            ..SceneError::in_file(path, ErrorKind::Encoding { why: e.text_without_option() })
+        }),
+    }
+}
+
+#[cfg(test)]
+mod encoding_tests {
+    //! Scenes and OBJ models saved by students' editors: Shift_JIS, UTF-16 and UTF-8 with a BOM,
+    //! CRLF line endings, under Japanese folder and file names with spaces.
+
+    use std::path::{Path, PathBuf};
+
+    use cg_core::lang::Lang;
+
+    use super::{ErrorKind, Position, load, load_obj};
+
+    /// `# 三角形のシーン` in Shift_JIS (CP932).
+    const SJIS_COMMENT: &[u8] = b"# \x8eO\x8ap\x8c`\x82\xcc\x83V\x81[\x83\x93";
+
+    /// A fresh folder `山田 太郎` under a scratch folder of this test.
+    fn student_folder(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir()
+            .join(format!("cg-scene-encoding-{}-{name}", std::process::id()))
+            .join("山田 太郎");
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    fn remove(dir: &Path) {
+        let _ = std::fs::remove_dir_all(dir.parent().unwrap());
+    }
+
+    fn utf16le(s: &str) -> Vec<u8> {
+        let mut out = vec![0xFF, 0xFE];
+        out.extend(s.encode_utf16().flat_map(u16::to_le_bytes));
+        out
+    }
+
+    const OBJ: &str = "# 三角形\r\nv 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n";
+
+    #[test]
+    fn a_shift_jis_scene_with_crlf_names_a_utf16_model_under_a_japanese_path() {
+        let dir = student_folder("scene");
+        std::fs::write(dir.join("モデル 1.obj"), utf16le(OBJ)).unwrap();
+        let mut scene = SJIS_COMMENT.to_vec();
+        scene.extend_from_slice(
+            b"\r\nformat = 1\r\n[[objects]]\r\nname = \"tri\"\r\nmesh = \"\x83\x82\x83f\x83\x8b 1.obj\"\r\n",
+        );
+        let path = dir.join("シーン 1.toml");
+        std::fs::write(&path, &scene).unwrap();
+        let loaded = load(&path).unwrap();
+        assert_eq!(loaded.objects[0].mesh.face_count(), 1);
+        assert_eq!(loaded.objects[0].mesh.vertex_count(), 3);
+
+        // The same scene in UTF-8 with a BOM, the model in UTF-8 with CRLF.
+        let mut bom = b"\xEF\xBB\xBF".to_vec();
+        bom.extend_from_slice(
+            "# 三角形のシーン\r\nformat = 1\r\n[[objects]]\r\nname = \"tri\"\r\nmesh = \"モデル 1.obj\"\r\n"
+                .as_bytes(),
+        );
+        std::fs::write(&path, bom).unwrap();
+        std::fs::write(dir.join("モデル 1.obj"), OBJ).unwrap();
+        assert_eq!(load(&path).unwrap().objects[0].mesh.face_count(), 1);
+        remove(&dir);
+    }
+
+    /// A CRLF scene's mistakes are still named at the right line and column.
+    #[test]
+    fn crlf_keeps_lines_and_columns() {
+        let dir = student_folder("crlf");
+        let path = dir.join("シーン.toml");
+        std::fs::write(&path, "format = 1\r\n[window]\r\nwidht = 3\r\n").unwrap();
+        let e = load(&path).unwrap_err();
+        assert_eq!(e.position, Some(Position { line: 3, column: 1 }), "{e}");
+        remove(&dir);
+    }
+
+    /// Latin-1 is neither UTF-8 nor Shift_JIS: the place, and advice without `--encoding`
+    /// (the scene commands have none).
+    #[test]
+    fn a_file_that_is_not_text_names_the_place_and_what_to_do() {
+        let dir = student_folder("latin1");
+        let path = dir.join("scène.obj");
+        std::fs::write(&path, b"v 0 0 0\r\n# caf\xE9 au lait\r\n").unwrap();
+        let e = load_obj(&path).unwrap_err();
+        assert!(matches!(*e.kind, ErrorKind::Encoding { .. }), "{e}");
+        assert_eq!(e.position, Some(Position { line: 2, column: 6 }), "{e}");
+        let en = e.describe(Lang::En);
+        assert!(
+            en.contains("neither UTF-8 nor Shift_JIS") && en.contains("Save the file as UTF-8")
+        );
+        assert!(!en.contains("--encoding"), "{en}");
+        let ja = e.describe(Lang::Ja);
+        assert!(ja.contains("エンコード: UTF-8"), "{ja}");
+        // Each language its own sentence: no English in the Japanese text.
+        assert!(!ja.contains("Save the file"), "{ja}");
+        remove(&dir);
+    }
 }

@@ -640,21 +640,7 @@ fn shapes_with_too_many_faces_are_refused_before_anything_is_built() {
     }
 }
 
-/// Runs of two or more ASCII words with only spaces between them (`has a non`, `out of range`): an
-/// English sentence fragment. Names inside a Japanese sentence (`grid の divisions`, `V3`,
-/// `(NaN, 0, 0)`) stand alone between Japanese words or punctuation; single letters (`r g b`,
-/// `x y z`) are coordinates, not words.
-fn english_fragments(text: &str) -> Vec<String> {
-    let is_word = |w: &str| w.chars().filter(char::is_ascii_alphabetic).count() >= 2;
-    let mut found = Vec::new();
-    for segment in text.split(|c: char| !(c == ' ' || c == '_' || c.is_ascii_alphanumeric())) {
-        let words: Vec<&str> = segment.split_whitespace().collect();
-        for pair in words.windows(2).filter(|w| is_word(w[0]) && is_word(w[1])) {
-            found.push(pair.join(" "));
-        }
-    }
-    found
-}
+use cg_testkit::text::english_fragments;
 
 #[test]
 fn japanese_messages_have_no_english_fragments() {

@@ -3,13 +3,13 @@
 //! side, out of your crate's reach.
 
 use glam::Vec3;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
-use crate::friendly;
 use crate::product::MatrixProduct;
+use crate::{friendly, unfriendly};
 
 /// Which way a ring of vertices runs, seen from above (from +Y, looking down).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Turn {
     /// Counter-clockwise seen from above: +X → −Z → −X → +Z (angle θ: `(r·cos θ, y, −r·sin θ)`,
@@ -20,7 +20,7 @@ pub enum Turn {
 }
 
 /// In which order the parts of the model (apexes, rings, ridge ends) are numbered.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Order {
     /// From the bottom up: the lowest part gets V0.
@@ -37,7 +37,7 @@ pub enum Order {
 /// rectangle at one height). Parts are numbered in `order`; inside a ring the first vertex is
 /// the corner on +X (a regular polygon) or the corner at (+X, +Z) (a rectangle), and the others
 /// follow in the direction `ring`. A pair lists the end on the + side of its axis first.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct Numbering {
     /// Bottom up or top down.
     pub order: Order,
@@ -46,7 +46,7 @@ pub struct Numbering {
 }
 
 /// The axis a house's ridge (棟) runs along.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum RidgeAxis {
     /// Along X: the gable walls (妻壁, with the triangles) face ±X.
@@ -58,7 +58,7 @@ pub enum RidgeAxis {
 /// The polyhedron, in model space (モデル座標系): its axis is the Y axis and its lowest point (or
 /// bottom face) lies in the plane y = 0. Lengths in scene units; a `radius` is the circumradius
 /// of a regular polygon (the distance from the axis to each corner), whose first corner is on +X.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Shape {
     /// A pyramid (角すい): a regular `sides`-gon of circumradius `radius` at y = 0, the apex at
@@ -67,10 +67,10 @@ pub enum Shape {
         /// Corners of the base, 3–8.
         sides: u32,
         /// Circumradius of the base.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         radius: f32,
         /// Height of the apex.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         height: f32,
     },
     /// A prism (角柱): regular `sides`-gons of circumradius `radius` at y = 0 and y = `height`.
@@ -78,10 +78,10 @@ pub enum Shape {
         /// Corners of each cap, 3–8.
         sides: u32,
         /// Circumradius of the caps.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         radius: f32,
         /// Height.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         height: f32,
     },
     /// A frustum (角すい台): a regular `sides`-gon of circumradius `bottom_radius` at y = 0 and
@@ -90,13 +90,13 @@ pub enum Shape {
         /// Corners of each cap, 3–8.
         sides: u32,
         /// Circumradius of the bottom.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         bottom_radius: f32,
         /// Circumradius of the top (smaller).
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         top_radius: f32,
         /// Height.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         height: f32,
     },
     /// A tower (塔, a pencil): a prism of height `height` with a pyramid of height `tip_height`
@@ -105,13 +105,13 @@ pub enum Shape {
         /// Corners of each ring, 3–8.
         sides: u32,
         /// Circumradius of the rings.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         radius: f32,
         /// Height of the prism part.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         height: f32,
         /// Height of the pyramid on top.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         tip_height: f32,
     },
     /// A bipyramid (双角すい): the lower apex at the origin, a regular `sides`-gon of circumradius
@@ -120,36 +120,36 @@ pub enum Shape {
         /// Corners of the middle ring, 3–6.
         sides: u32,
         /// Circumradius of the middle ring.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         radius: f32,
         /// Height of the ring above the lower apex.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         lower_height: f32,
         /// Height of the upper apex above the ring.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         upper_height: f32,
     },
     /// A regular octahedron (正八面体): the lower vertex at the origin, the square of corners
     /// (distance `radius` from the axis) at y = `radius`, the upper vertex at (0, 2·`radius`, 0).
     Octahedron {
         /// Distance from the centre to each vertex.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         radius: f32,
     },
     /// A house (家): a box `width` (X) × `depth` (Z) × `wall_height` with a gable roof (切妻屋根)
     /// whose ridge runs along `ridge` through the middle, `roof_height` above the walls.
     House {
         /// Size along X.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         width: f32,
         /// Size along Z.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         depth: f32,
         /// Height of the walls (the eaves, 軒).
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         wall_height: f32,
         /// Height of the ridge above the eaves.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         roof_height: f32,
         /// The axis the ridge runs along.
         ridge: RidgeAxis,
@@ -159,13 +159,13 @@ pub enum Shape {
     /// top of that wall.
     Wedge {
         /// Size along X.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         width: f32,
         /// Size along Z.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         depth: f32,
         /// Height of the vertical wall on the −X side.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         height: f32,
     },
 }
@@ -174,25 +174,25 @@ pub enum Shape {
 /// axis (Y, counter-clockwise seen from above, as glRotatef(angle_deg, 0, 1, 0)), then moved so
 /// that its model-space origin lands on (`x`, `y`, `z`). As a product in program order:
 /// `T(x, y, z) · Ry(angle_deg)`.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Placement {
     /// World X of the model's origin.
-    #[serde(serialize_with = "friendly")]
+    #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
     pub x: f32,
     /// World Y of the model's origin: 0 (standing on the ground) or, for the models that end in
     /// a point at the bottom, the height it hovers at.
-    #[serde(serialize_with = "friendly")]
+    #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
     pub y: f32,
     /// World Z of the model's origin.
-    #[serde(serialize_with = "friendly")]
+    #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
     pub z: f32,
     /// The turn about Y, in degrees (a multiple of 15°).
-    #[serde(serialize_with = "friendly")]
+    #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
     pub angle_deg: f32,
 }
 
 /// What one student must build.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Spec {
     /// The polyhedron and its dimensions, in model space.
     pub shape: Shape,

@@ -3,12 +3,12 @@
 //! functions you write ([`Impl`]). Plain data and the [`Gl`] recorder: the kit computes the
 //! expected view transform on its own side, out of your crate's reach.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::gl::Gl;
 
 /// A mouse button, as GLUT names them.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum MouseButton {
     /// GLUT_LEFT_BUTTON
@@ -33,7 +33,7 @@ pub const LIGHT0_POSITION: [f32; 4] = [10.0, 10.0, 10.0, 1.0];
 /// | `camera_pitch` | degrees | elevation (仰角); negative looks down on the target, −90 straight down |
 /// | `camera_distance` | scene units | from the target to the camera |
 /// | `target_x`, `target_z` | scene units | the point the camera looks at (注視点), on the ground `y = 0` |
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CameraState {
     /// camera_yaw in degrees.
     pub camera_yaw: f32,
@@ -49,7 +49,7 @@ pub struct CameraState {
 
 /// A button with or without Shift held when it was pressed (GLUT: `glutGetModifiers()` in
 /// `mouse()`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct Gesture {
     /// The button held during the drag.
     pub button: MouseButton,
@@ -62,7 +62,7 @@ pub struct Gesture {
 /// (`dx = x − last_mouse_x`, positive to the **right**; `dy = y − last_mouse_y`, positive
 /// **down**: GLUT's window coordinates have y down). Both are whole numbers of pixels in GLUT;
 /// the checks use whole numbers too.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Drag {
     /// The button held (`drag_mouse_l`, `drag_mouse_m`, `drag_mouse_r` in the sample).
     pub button: MouseButton,
@@ -75,7 +75,7 @@ pub struct Drag {
 }
 
 /// Which component of a drag an operation reads.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum DragAxis {
     /// `dx`: dragging left and right.
@@ -88,7 +88,7 @@ pub enum DragAxis {
 /// `per_px × d`, where `d` is the drag's `dx` ([`DragAxis::Horizontal`]) or `dy`
 /// ([`DragAxis::Vertical`]). The sign of `per_px` is the direction: the sample's pitch is
 /// `per_px = −1.0` on `Vertical` (`camera_pitch −= 1.0 × dy`: dragging down lowers it).
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Operation {
     /// The button (and Shift) that drives it.
     pub gesture: Gesture,
@@ -100,7 +100,7 @@ pub struct Operation {
 
 /// Moving the target (注視点) on the ground: `target_x` by `x`, `target_z` by `z`, each kept in
 /// `[−limit, limit]`.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Pan {
     /// How target_x changes.
     pub x: Operation,
@@ -111,7 +111,7 @@ pub struct Pan {
 }
 
 /// What one student must build: their mouse operations, ranges and starting state.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Spec {
     /// The variables when the program starts (the sample: yaw 0°, pitch −30°, distance 15).
     pub start: CameraState,

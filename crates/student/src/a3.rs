@@ -9,15 +9,20 @@
 //! 課題3 アニメーション: 物体とその運動（[`Spec`]）、状態（[`State`]）、書く関数の表（[`Impl`]）。
 
 use glam::Vec3;
-use serde::{Serialize, Serializer};
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
-use crate::friendly;
 use crate::gl::Gl;
 use crate::mesh::Mesh;
+use crate::{friendly, from_friendly, unfriendly};
 
 /// Serialises three f32 as the f64s with the same shortest decimal digits (see `friendly`).
 fn friendly3<S: Serializer>(v: &[f32; 3], s: S) -> Result<S::Ok, S::Error> {
     s.collect_seq(v.iter().map(|&x| x.to_string().parse::<f64>().unwrap_or(f64::from(x))))
+}
+
+/// Reads what `friendly3` wrote back as the same three f32 (see `unfriendly`).
+fn unfriendly3<'de, D: Deserializer<'de>>(d: D) -> Result<[f32; 3], D::Error> {
+    <[f64; 3]>::deserialize(d).map(|v| v.map(from_friendly))
 }
 
 /// Frames per second: one call of `idle` advances the time by 1/60 s.
@@ -47,7 +52,7 @@ pub const SPHERE_SLICES: u32 = 16;
 pub const SPHERE_STACKS: u32 = 8;
 
 /// A coordinate axis of the world (or of a parent's coordinate system).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum WorldAxis {
     /// +X
@@ -71,7 +76,7 @@ impl WorldAxis {
 }
 
 /// Which way a rotation turns, seen from the positive end of its axis looking towards the origin.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Turn {
     /// Counter-clockwise (反時計回り): the angle grows, as glRotatef with a positive angle.
@@ -93,13 +98,13 @@ impl Turn {
 
 /// A polygon model, in model space centred on its origin. Its mesh, ready to draw, is
 /// [`Object::mesh`].
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Shape {
     /// 直方体: a box with these edge lengths along X, Y, Z (8 vertices, 12 triangles).
     Box {
         /// Edge lengths along X, Y, Z.
-        #[serde(serialize_with = "friendly3")]
+        #[serde(serialize_with = "friendly3", deserialize_with = "unfriendly3")]
         size: [f32; 3],
     },
     /// 角すい: a pyramid, base at y = −height/2, apex at +height/2.
@@ -107,43 +112,43 @@ pub enum Shape {
         /// Sides of the base polygon.
         sides: u32,
         /// Circumradius of the base.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         radius: f32,
         /// Height.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         height: f32,
     },
     /// 球: a UV sphere of [`SPHERE_SLICES`] meridians × [`SPHERE_STACKS`] bands.
     Sphere {
         /// Radius.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         radius: f32,
     },
     /// 正八面体: a regular octahedron.
     Octahedron {
         /// Distance of the vertices from the centre.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         radius: f32,
     },
 }
 
 /// How an object moves. `t` is the time in seconds, `T` the period, `u = (t mod T) / T ∈ [0, 1)`
 /// the phase (how far into its period the motion is). Every angle is in degrees.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Motion {
     /// 回転運動 (spin): turns about an axis through `position`, parallel to `axis`:
     /// `M = T(position) · R_axis(θ)`, `θ = ±360°·u` (0° at t = 0).
     Spin {
         /// Where the object's centre stays.
-        #[serde(serialize_with = "friendly3")]
+        #[serde(serialize_with = "friendly3", deserialize_with = "unfriendly3")]
         position: [f32; 3],
         /// The axis it turns about.
         axis: WorldAxis,
         /// Which way.
         turn: Turn,
         /// One turn takes this long (s).
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         period_s: f32,
     },
     /// 往復回転運動 (back-and-forth rotation): hangs `arm` below `pivot` and swings about an axis
@@ -152,18 +157,18 @@ pub enum Motion {
     /// back and forth in place.
     Swing {
         /// The point it swings about.
-        #[serde(serialize_with = "friendly3")]
+        #[serde(serialize_with = "friendly3", deserialize_with = "unfriendly3")]
         pivot: [f32; 3],
         /// The axis it swings about.
         axis: WorldAxis,
         /// The largest angle (°) either way.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         amplitude_deg: f32,
         /// How far below the pivot its centre hangs (0: it turns in place).
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         arm: f32,
         /// One swing there and back takes this long (s).
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         period_s: f32,
     },
     /// 放物往復移動運動 (parabolic back-and-forth motion): moves along `along` between the two
@@ -174,18 +179,18 @@ pub enum Motion {
     /// at T/2 at the +end, at 3T/4 on top again.
     Hop {
         /// The middle of the path, on the ground (the object rests there at height 0 + half its size).
-        #[serde(serialize_with = "friendly3")]
+        #[serde(serialize_with = "friendly3", deserialize_with = "unfriendly3")]
         center: [f32; 3],
         /// The horizontal direction it moves along (X or Z).
         along: WorldAxis,
         /// The distance between the two ends.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         span: f32,
         /// How high it hops above `center`.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         height: f32,
         /// There and back takes this long (s).
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         period_s: f32,
     },
     /// 公転 (orbit): goes round `center` on a horizontal circle of radius `radius`, turning with
@@ -193,15 +198,15 @@ pub enum Motion {
     /// `θ = ±360°·u`; at t = 0 at `center + (0, 0, radius)`, the camera's side.
     Orbit {
         /// The centre of the circle.
-        #[serde(serialize_with = "friendly3")]
+        #[serde(serialize_with = "friendly3", deserialize_with = "unfriendly3")]
         center: [f32; 3],
         /// Its radius.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         radius: f32,
         /// Which way, seen from above (+Y).
         turn: Turn,
         /// One round takes this long (s).
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         period_s: f32,
     },
     /// 階層的な運動 (hierarchical motion): goes round its parent in the parent's coordinate
@@ -212,12 +217,12 @@ pub enum Motion {
         /// before its child and is never a satellite itself.
         parent_index: usize,
         /// The radius of the circle about the parent's centre.
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         radius: f32,
         /// Which way, seen from the parent's +Y.
         turn: Turn,
         /// One round (relative to the parent) takes this long (s).
-        #[serde(serialize_with = "friendly")]
+        #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
         period_s: f32,
     },
 }
@@ -254,7 +259,7 @@ impl Motion {
 }
 
 /// One object of the animation.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Object {
     /// The name to draw it with: `gl.draw(&object.name, &object.mesh)` (`"object 1"` …
     /// `"object 4"`).
@@ -266,20 +271,20 @@ pub struct Object {
     pub mesh: Mesh,
     /// The colour to set with `gl.color(r, g, b)` before drawing it (not checked; it tells the
     /// objects apart in the view).
-    #[serde(serialize_with = "friendly3")]
+    #[serde(serialize_with = "friendly3", deserialize_with = "unfriendly3")]
     pub color: [f32; 3],
     /// How it moves.
     pub motion: Motion,
 }
 
 /// What one student must build: 3 or 4 objects, one pair of them a parent and its child.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Spec {
     /// The objects, object 1 first. A child ([`Motion::Satellite`]) comes right after its parent.
     pub objects: Vec<Object>,
     /// The unit of time (s): every period is a whole multiple of it (1, 2, 3 or 4 units, each
     /// used once), so the ratios of the periods are those multiples.
-    #[serde(serialize_with = "friendly")]
+    #[serde(serialize_with = "friendly", deserialize_with = "unfriendly")]
     pub unit_s: f32,
 }
 
@@ -295,7 +300,7 @@ impl Spec {
 
 /// The animation's state: what `idle` changes and `display` reads (the course's global
 /// variables). `State::default()` is the start: frame 0, every parameter 0.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct State {
     /// Frames since the start: `idle` adds 1 each call. The time is `frame / 60` s
     /// ([`State::time_s`]).

@@ -14,7 +14,7 @@
 //! | ground | [`SQUARES`] × [`SQUARES`] squares: vertex `(i, j)`, `i, j = 0…10`, at `(i·1 − 5, 0, j·1 − 5)`; square `(i, j)` is drawn through its corners in the order of [`CORNER_STEPS`] |
 
 use glam::Vec2;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// Cells along each side of the prepared image (columns `A`–`H`, rows `1`–`8`): one cell is
 /// 1/8 of the image wide and high.
@@ -30,7 +30,7 @@ pub const CORNER_STEPS: [(u32, u32); 4] = [(0, 0), (0, 1), (1, 1), (1, 0)];
 
 /// A rectangle of cells of the prepared image, counted like a spreadsheet: `column` 0 is `A`
 /// (left), `row` 0 is row `1` (**top**).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct Region {
     /// The leftmost column (0 = `A`).
     pub column: u32,
@@ -45,7 +45,7 @@ pub struct Region {
 /// What one student must build: which region of the prepared image goes onto the ground, turned
 /// which way, repeated how often. `cargo run --release -- assignment --only a4` prints it, with
 /// the table of which corner of the region lands on which corner of the ground.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Spec {
     /// The region of the prepared image (cells, counted from the top-left like a spreadsheet).
     pub region: Region,
@@ -64,7 +64,7 @@ pub struct Spec {
 
 /// A rectangle in texture coordinates: `s` from `s_min` to `s_max` (left to right), `t` from
 /// `t_min` to `t_max` (bottom to top). `(0, 0)` is the image's bottom-left corner.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct TexRange {
     /// The left edge (`s` of the region's left side).
     pub s_min: f32,
@@ -77,7 +77,7 @@ pub struct TexRange {
 }
 
 /// How the texture is filtered: GL_TEXTURE_MIN_FILTER and GL_TEXTURE_MAG_FILTER.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum Filter {
     /// GL_NEAREST: the nearest texel.
     Nearest,
@@ -87,7 +87,7 @@ pub enum Filter {
 }
 
 /// What happens to texture coordinates outside `[0, 1]`: GL_TEXTURE_WRAP_S / GL_TEXTURE_WRAP_T.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum Wrap {
     /// GL_REPEAT: the whole image repeats (OpenGL's default).
     #[default]
@@ -98,7 +98,7 @@ pub enum Wrap {
 
 /// The filter and the wrap modes of the texture (glTexParameteri). `Sampler::default()` stands
 /// for OpenGL's defaults: GL_LINEAR (GL_TEXTURE_MAG_FILTER's) and GL_REPEAT.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct Sampler {
     /// GL_TEXTURE_MIN_FILTER and GL_TEXTURE_MAG_FILTER.
     pub filter: Filter,

@@ -32,5 +32,25 @@ pub type Rgb = glam::Vec3;
 /// Serialises an f32 as the f64 with the same shortest decimal digits, so JSON shows the table's
 /// friendly `1.6`, not `1.600000023841858` (the f32 widened).
 pub(crate) fn friendly<S: serde::Serializer>(x: &f32, s: S) -> Result<S::Ok, S::Error> {
-    s.serialize_f64(x.to_string().parse::<f64>().unwrap_or(f64::from(*x)))
+    s.serialize_f64(friendly_f64(*x))
+}
+
+/// The f64 nearest to `x`'s shortest decimal.
+fn friendly_f64(x: f32) -> f64 {
+    x.to_string().parse::<f64>().unwrap_or(f64::from(x))
+}
+
+/// Reads what [`friendly`] wrote back as the same f32 (the worker's pipe: cg-worker's
+/// `tables`). Rounding the f64 to f32 is a second rounding after the decimal's to f64, and for
+/// two f32s (±7.038531e-26, of all 2³²) it lands on the neighbour; so the f32 is the one whose
+/// shortest decimal is the f64 read, and only a number that is no f32's shortest decimal (or
+/// one a parser rounded inexactly) rounds to the nearest.
+pub(crate) fn unfriendly<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f32, D::Error> {
+    <f64 as serde::Deserialize>::deserialize(d).map(from_friendly)
+}
+
+/// The f32 whose [`friendly_f64`] is `v`, else `v` rounded to f32.
+pub(crate) fn from_friendly(v: f64) -> f32 {
+    let x = v as f32;
+    [x, x.next_down(), x.next_up()].into_iter().find(|&c| friendly_f64(c) == v).unwrap_or(x)
 }

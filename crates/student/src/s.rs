@@ -7,13 +7,14 @@
 //! 答えを計算する関数はここにはありません。
 
 use glam::Vec3;
+use serde::{Deserialize, Serialize};
 
 use crate::Rgb;
 use crate::mesh::Mesh;
 
 /// Flat, Gouraud or Phong shading (フラット／グロー／フォンシェーディング): which one
 /// `shade_pixel` (s.t6) is asked for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum Shading {
     /// The face normal lights each face once; one colour per face.
     Flat,
@@ -30,7 +31,7 @@ pub enum Shading {
 /// weights say how much of each corner there is at the pixel (画素と頂点の距離により決まるウェイト):
 /// `w₀ + w₁ + w₂ = 1`, each in `[0, 1]`, already corrected for perspective — the weights the
 /// renderer itself interpolates with.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Pixel {
     /// The corner positions P₀, P₁, P₂.
     pub positions: [Vec3; 3],

@@ -8,11 +8,14 @@
 //!   (`CG_BLESS=1`) may create.
 //! - [`prop`]: the seeded proptest configuration and log-uniform strategies every property test
 //!   uses.
+//! - [`text`]: the rules every message test checks: one clean line in each language, Japanese
+//!   in the Japanese text and no English sentence inside it.
 //! - [`Inputs`]: a seeded source of hard inputs — magnitudes drawn log-uniformly with both signs,
 //!   unit vectors, large offsets — so every random test is reproducible from its seed.
 
 pub mod images;
 pub mod prop;
+pub mod text;
 
 use glam::{DVec3, Vec3};
 use rand::rngs::StdRng;

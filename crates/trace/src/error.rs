@@ -200,50 +200,15 @@ mod tests {
         all
     }
 
-    /// Runs of two or more ASCII words with only spaces between them (`is not finite`): English
-    /// inside a Japanese sentence. Names and formulas (`max_depth = 1000`, `NaN`) stand alone.
-    fn english_fragments(text: &str) -> Vec<String> {
-        let is_word = |w: &&str| w.chars().filter(char::is_ascii_alphabetic).count() >= 2;
-        text.split(|c: char| !(c == ' ' || c == '_' || c.is_ascii_alphanumeric()))
-            .flat_map(|segment| {
-                let words: Vec<&str> = segment.split_whitespace().collect();
-                let pairs: Vec<String> = words
-                    .windows(2)
-                    .filter(|w| is_word(&w[0]) && is_word(&w[1]))
-                    .map(|w| w.join(" "))
-                    .collect();
-                pairs
-            })
-            .collect()
-    }
-
     #[test]
     fn every_message_is_one_clean_line_in_each_language() {
-        let kana_or_kanji =
-            |c: char| matches!(c, '\u{3040}'..='\u{30ff}' | '\u{4e00}'..='\u{9fff}');
         let mut found = Vec::new();
         for e in samples() {
             let text = e.text();
             assert_eq!([e.message(Lang::Ja), e.message(Lang::En)], [&*text.ja, &*text.en]);
             assert_eq!(e.to_string(), text.en);
-            for (lang, s) in [(Lang::Ja, &text.ja), (Lang::En, &text.en)] {
-                let mut complain = |why: &str| found.push(format!("{e:?} ({lang}): {why}: {s:?}"));
-                if s.is_empty() || s.trim() != s.as_str() {
-                    complain("empty, or whitespace at an end");
-                }
-                if s.contains("  ") || s.contains(['\n', '\r', '\t']) {
-                    complain("a run of spaces or a line break");
-                }
-                match lang {
-                    Lang::Ja if !s.chars().any(kana_or_kanji) => complain("no Japanese"),
-                    Lang::Ja if !english_fragments(s).is_empty() => {
-                        complain("English words in the Japanese text");
-                    }
-                    Lang::En if s.chars().any(kana_or_kanji) => {
-                        complain("Japanese in the English text");
-                    }
-                    _ => {}
-                }
+            for p in cg_testkit::text::line_problems(&text.ja, &text.en, true) {
+                found.push(format!("{e:?} {p}"));
             }
         }
         assert!(found.is_empty(), "{} problems:\n{}", found.len(), found.join("\n"));

@@ -15,11 +15,14 @@
 //! whatever the student prints on stdout (`println!` while debugging) is kept apart and handed
 //! back as the student's output, never parsed.
 //!
-//! This crate has no kit code: the worker links it, so nothing here may compute an answer.
+//! This crate has no kit code: the worker links it, so nothing here may compute an answer. Its
+//! only link to the course is the students' API (`cg-student`, types and recorders), for
+//! [`tables`]: each assignment's functions as named handlers.
 
 pub mod client;
 pub mod frame;
 pub mod serve;
+pub mod tables;
 
 pub use client::{CallError, Worker};
 pub use serve::{Handler, serve};

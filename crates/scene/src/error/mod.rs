@@ -54,10 +54,16 @@ pub struct Position {
 /// What is wrong. Each variant has one message in Japanese and English ([`ErrorKind::text`]).
 #[derive(Clone, Debug, PartialEq)]
 pub enum ErrorKind {
-    /// The file could not be read (missing, unreadable, not UTF-8).
+    /// The file could not be read (missing, unreadable).
     Read {
         /// The operating system's reason.
         reason: String,
+    },
+    /// The file is not text in an encoding the kit reads (UTF-8, UTF-16 with a BOM, Shift_JIS;
+    /// see `cg_core::text`).
+    Encoding {
+        /// Why, and where (`cg_core::text`'s message, in both languages).
+        why: cg_core::lang::Text,
     },
     /// The text is not valid TOML (an unquoted string, a missing `=`, a duplicated key, …).
     Syntax {

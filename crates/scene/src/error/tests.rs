@@ -12,7 +12,7 @@ use cg_core::transform::TransformError;
 use super::*;
 
 /// How many variants [`ErrorKind`] has; [`kind_index`] numbers them `0..KINDS`.
-const KINDS: usize = 39;
+const KINDS: usize = 40;
 
 /// A number for each variant of [`ErrorKind`] (the match is exhaustive, so a new variant does not
 /// compile until it is numbered here, and [`every_kind_has_a_sample`] fails until it has a
@@ -20,6 +20,7 @@ const KINDS: usize = 39;
 fn kind_index(kind: &ErrorKind) -> usize {
     match kind {
         ErrorKind::Read { .. } => 0,
+        ErrorKind::Encoding { .. } => 39,
         ErrorKind::Syntax { .. } => 1,
         ErrorKind::UnsupportedFormat { .. } => 2,
         ErrorKind::UnknownKey { .. } => 3,
@@ -197,6 +198,12 @@ fn all_obj_errors() -> Vec<tobj::LoadError> {
 fn samples() -> Vec<ErrorKind> {
     let mut kinds = vec![
         ErrorKind::Read { reason: "No such file or directory (os error 2)".into() },
+        ErrorKind::Encoding {
+            why: cg_core::lang::Text::new(
+                "UTF-8 としても Shift_JIS としても読めません（1 行 3 列）",
+                "neither UTF-8 nor Shift_JIS (line 1, column 3)",
+            ),
+        },
         ErrorKind::Syntax { message: "invalid string".into() },
         ErrorKind::UnsupportedFormat { found: "2".into() },
         ErrorKind::UnknownKey {

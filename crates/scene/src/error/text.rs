@@ -46,6 +46,10 @@ impl ErrorKind {
                 format!("ファイルを読めません: {reason}"),
                 format!("cannot read the file: {reason}"),
             ),
+            ErrorKind::Encoding { why } => Text::new(
+                format!("ファイルの文字コードを読み取れません: {}", why.ja),
+                format!("cannot read the file's text: {}", why.en),
+            ),
             ErrorKind::Syntax { message } => Text::new(
                 format!("TOML の書き方の誤りです（構文エラー）: {message}"),
                 format!("TOML syntax error: {message}"),

@@ -1,0 +1,768 @@
+//! Text files in the encodings students' editors write: UTF-8 with or without a byte-order mark
+//! (BOM), UTF-16 with a BOM (old Windows Notepad's "Unicode") and Shift_JIS (CP932, a Japanese
+//! Windows editor's "ANSI"). Everything the kit reads from a student or a TA (scenes, OBJ
+//! models, reports, data tables) goes through [`read`] or [`decode`]; everything it writes is
+//! UTF-8 without a BOM.
+//!
+//! Detection, when no encoding is named: a BOM decides (and is removed from the text); else
+//! valid UTF-8 is UTF-8; else the text is Shift_JIS when it decodes as Shift_JIS without an
+//! error; else it is refused with a [`DecodeError`] that says where (line, column, byte offset)
+//! and what to do. Line endings are left as they are (`\r\n` included); the kit's parsers
+//! accept both.
+//!
+//! The decoders are `encoding_rs`'s (the WHATWG Encoding Standard's): its Shift_JIS is
+//! Windows' CP932, NEC and IBM extensions included.
+
+use std::borrow::Cow;
+use std::fmt;
+use std::io::Read as _;
+use std::path::Path;
+use std::str::FromStr;
+
+use crate::lang::Text;
+
+/// The largest text file [`read`] reads: 64 MiB (the course's models and reports are a few KiB
+/// to a few MiB).
+pub const MAX_TEXT_BYTES: u64 = 64 << 20;
+
+/// An encoding the kit reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Encoding {
+    /// UTF-8 without a byte-order mark (what the kit writes).
+    Utf8,
+    /// UTF-8 with a byte-order mark (`EF BB BF`; Notepad's "UTF-8 (BOM 付き)").
+    Utf8Bom,
+    /// UTF-16, little-endian (`FF FE`; Notepad's "Unicode").
+    Utf16Le,
+    /// UTF-16, big-endian (`FE FF`).
+    Utf16Be,
+    /// Shift_JIS as Windows writes it (CP932, Windows-31J; a Japanese Windows editor's "ANSI").
+    ShiftJis,
+}
+
+impl Encoding {
+    /// Every encoding, in the order of [`Encoding::name`]'s list in messages.
+    pub const ALL: [Encoding; 5] = [
+        Encoding::Utf8,
+        Encoding::Utf8Bom,
+        Encoding::Utf16Le,
+        Encoding::Utf16Be,
+        Encoding::ShiftJis,
+    ];
+
+    /// The name a student's editor shows: `UTF-8`, `UTF-8 (BOM)`, `UTF-16LE`, `UTF-16BE`,
+    /// `Shift_JIS`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Encoding::Utf8 => "UTF-8",
+            Encoding::Utf8Bom => "UTF-8 (BOM)",
+            Encoding::Utf16Le => "UTF-16LE",
+            Encoding::Utf16Be => "UTF-16BE",
+            Encoding::ShiftJis => "Shift_JIS",
+        }
+    }
+
+    /// Whether the text was UTF-8 (with or without a BOM): what the kit writes, so nothing to
+    /// tell the student.
+    #[must_use]
+    pub fn is_utf8(self) -> bool {
+        matches!(self, Encoding::Utf8 | Encoding::Utf8Bom)
+    }
+
+    /// `read as Shift_JIS` / `Shift_JIS として読みました`, for a command's summary; `None` for
+    /// UTF-8 (with or without a BOM), which needs no mention.
+    #[must_use]
+    pub fn read_as(self) -> Option<Text> {
+        (!self.is_utf8()).then(|| {
+            Text::new(
+                format!("{} として読みました", self.name()),
+                format!("read as {}", self.name()),
+            )
+        })
+    }
+
+    fn decoder(self) -> &'static encoding_rs::Encoding {
+        match self {
+            Encoding::Utf8 | Encoding::Utf8Bom => encoding_rs::UTF_8,
+            Encoding::Utf16Le => encoding_rs::UTF_16LE,
+            Encoding::Utf16Be => encoding_rs::UTF_16BE,
+            Encoding::ShiftJis => encoding_rs::SHIFT_JIS,
+        }
+    }
+
+    /// The byte-order mark this encoding may start with.
+    fn bom(self) -> &'static [u8] {
+        match self {
+            Encoding::Utf8 | Encoding::Utf8Bom => b"\xEF\xBB\xBF",
+            Encoding::Utf16Le => b"\xFF\xFE",
+            Encoding::Utf16Be => b"\xFE\xFF",
+            Encoding::ShiftJis => b"",
+        }
+    }
+}
+
+impl fmt::Display for Encoding {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// The error of parsing an [`Encoding`] from a command line's `--encoding`.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "unknown encoding {0:?}: use utf-8, utf-16le, utf-16be or shift_jis / 文字コード {0:?} は使えません。utf-8・utf-16le・utf-16be・shift_jis のどれかを指定してください"
+)]
+pub struct UnknownEncoding(pub String);
+
+impl FromStr for Encoding {
+    type Err = UnknownEncoding;
+
+    /// `utf-8`, `utf-16le`, `utf-16be`, `shift_jis` (also `sjis`, `cp932`, `windows-31j`), in
+    /// any case, with `-`, `_` or nothing between the parts.
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let key: String =
+            s.chars().filter(|c| !matches!(c, '-' | '_')).collect::<String>().to_ascii_lowercase();
+        match key.as_str() {
+            "utf8" => Ok(Encoding::Utf8),
+            "utf16le" => Ok(Encoding::Utf16Le),
+            "utf16be" => Ok(Encoding::Utf16Be),
+            "shiftjis" | "sjis" | "cp932" | "windows31j" | "ms932" => Ok(Encoding::ShiftJis),
+            _ => Err(UnknownEncoding(s.to_owned())),
+        }
+    }
+}
+
+/// A place in a file that could not be decoded.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Place {
+    /// Line, from 1.
+    pub line: usize,
+    /// Column in characters, from 1 (the first byte that could not be read is this column).
+    pub column: usize,
+    /// Byte offset in the file, from 0 (the BOM included), of the first byte that could not be
+    /// read.
+    pub offset: usize,
+}
+
+impl Place {
+    /// The place after `decoded`, the text decoded before the error, at byte `offset`.
+    fn after(decoded: &str, offset: usize) -> Place {
+        let line_start = decoded.rfind('\n').map_or(0, |i| i + 1);
+        Place {
+            line: 1 + decoded.bytes().filter(|&b| b == b'\n').count(),
+            column: 1 + decoded[line_start..].chars().count(),
+            offset,
+        }
+    }
+
+    fn text(self) -> Text {
+        let Place { line, column, offset } = self;
+        Text::new(
+            format!("{line} 行 {column} 文字目（先頭から {offset} バイトの位置）"),
+            format!("line {line}, column {column} (byte offset {offset})"),
+        )
+    }
+}
+
+/// Bytes that are not text in the encoding they were read as. Each variant has one message in
+/// Japanese and English ([`DecodeError::text`]).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{}", self.text().en)]
+pub enum DecodeError {
+    /// No byte-order mark, and the bytes are neither UTF-8 nor Shift_JIS.
+    Undetected {
+        /// Where the reading that got further (`nearest`) stops.
+        at: Place,
+        /// [`Encoding::Utf8`] or [`Encoding::ShiftJis`], whichever read further (UTF-8 on a tie).
+        nearest: Encoding,
+    },
+    /// The file starts with the byte-order mark of `encoding`, but what follows is not valid
+    /// `encoding` (a UTF-16 file of an odd length, an unpaired surrogate, a stray byte after a
+    /// UTF-8 BOM).
+    AfterBom {
+        /// The encoding the BOM names.
+        encoding: Encoding,
+        /// Where the text stops being valid.
+        at: Place,
+    },
+    /// The text is not valid in the encoding named by the caller (`--encoding`).
+    NotInNamed {
+        /// The encoding named.
+        encoding: Encoding,
+        /// Where the text stops being valid.
+        at: Place,
+    },
+}
+
+impl DecodeError {
+    /// Where the text stops being readable.
+    #[must_use]
+    pub fn place(&self) -> Place {
+        match self {
+            DecodeError::Undetected { at, .. }
+            | DecodeError::AfterBom { at, .. }
+            | DecodeError::NotInNamed { at, .. } => *at,
+        }
+    }
+
+    /// The message in both languages, for a command that has `--encoding`: what is wrong, where,
+    /// and what to do (save the file as UTF-8, or name the encoding with `--encoding`).
+    #[must_use]
+    pub fn text(&self) -> Text {
+        self.message(true)
+    }
+
+    /// [`DecodeError::text`] for a command without `--encoding` (`cg render`, `cg inspect`):
+    /// the same, advising only to save the file as UTF-8.
+    #[must_use]
+    pub fn text_without_option(&self) -> Text {
+        self.message(false)
+    }
+
+    fn message(&self, option: bool) -> Text {
+        let save = Text::new(
+            "エディタで文字コードを UTF-8 にして保存し直してください（名前を付けて保存 → エンコード: UTF-8）",
+            "save the file as UTF-8 in your editor (Save As, Encoding: UTF-8)",
+        );
+        match self {
+            DecodeError::Undetected { at, nearest } => {
+                let at = at.text();
+                let what = Text::new(
+                    format!(
+                        "UTF-8 としても Shift_JIS としても読めません。{nearest} として読むと {}が読めません",
+                        at.ja
+                    ),
+                    format!(
+                        "the text is neither UTF-8 nor Shift_JIS: read as {nearest}, {} cannot be read",
+                        at.en
+                    ),
+                );
+                if option {
+                    Text::new(
+                        format!(
+                            "{}。{}。文字コードが分かっているときは `--encoding shift_jis` のように指定することもできます（utf-8・utf-16le・utf-16be・shift_jis）",
+                            what.ja, save.ja
+                        ),
+                        format!(
+                            "{}. {}, or name its encoding with `--encoding shift_jis` (or utf-8, utf-16le, utf-16be)",
+                            what.en,
+                            capitalized(&save.en)
+                        ),
+                    )
+                } else {
+                    Text::new(
+                        format!("{}。{}", what.ja, save.ja),
+                        format!("{}. {}", what.en, capitalized(&save.en)),
+                    )
+                }
+            }
+            DecodeError::AfterBom { encoding, at } => {
+                let at = at.text();
+                // `UTF-8 (BOM)` names the file's encoding; the mark itself is UTF-8's.
+                let encoding = if encoding.is_utf8() { "UTF-8" } else { encoding.name() };
+                Text::new(
+                    format!(
+                        "ファイルの先頭に {encoding} の BOM がありますが、{}が {encoding} として読めません。{}",
+                        at.ja, save.ja
+                    ),
+                    format!(
+                        "the file starts with a {encoding} byte-order mark, but {} is not valid {encoding}. {}",
+                        at.en,
+                        capitalized(&save.en)
+                    ),
+                )
+            }
+            DecodeError::NotInNamed { encoding, at } => {
+                let at = at.text();
+                Text::new(
+                    format!(
+                        "`--encoding` で指定された {encoding} として読めません（{}）。`--encoding` を付けなければ UTF-8・BOM 付き UTF-16・Shift_JIS を自動で判別します。または{}",
+                        at.ja, save.ja
+                    ),
+                    format!(
+                        "the file is not {encoding} as `--encoding` says: {} cannot be read. Leave out `--encoding` to let the kit tell UTF-8, UTF-16 with a BOM and Shift_JIS apart, or {}",
+                        at.en, save.en
+                    ),
+                )
+            }
+        }
+    }
+}
+
+fn capitalized(s: &str) -> String {
+    let mut chars = s.chars();
+    chars.next().map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
+}
+
+/// A text file that could not be read. Each variant has one message in Japanese and English
+/// ([`ReadError::text`]); the caller names the file.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{}", self.text().en)]
+pub enum ReadError {
+    /// The operating system refused (no such file, no permission, a folder).
+    Io {
+        /// The operating system's reason.
+        reason: String,
+    },
+    /// The file is larger than [`MAX_TEXT_BYTES`]; nothing past the limit was read.
+    TooLarge {
+        /// Its size in bytes, when the file system says (not for a pipe).
+        size: Option<u64>,
+    },
+    /// The bytes are not text in an encoding the kit reads.
+    Decode(DecodeError),
+}
+
+impl ReadError {
+    /// The message in both languages, for a command that has `--encoding`.
+    #[must_use]
+    pub fn text(&self) -> Text {
+        self.message(true)
+    }
+
+    /// The message in both languages, for a command without `--encoding` (see
+    /// [`DecodeError::text_without_option`]).
+    #[must_use]
+    pub fn text_without_option(&self) -> Text {
+        self.message(false)
+    }
+
+    /// Where the text stops being readable, when it is the encoding that is wrong.
+    #[must_use]
+    pub fn place(&self) -> Option<Place> {
+        match self {
+            ReadError::Decode(e) => Some(e.place()),
+            ReadError::Io { .. } | ReadError::TooLarge { .. } => None,
+        }
+    }
+
+    fn message(&self, option: bool) -> Text {
+        const MIB: u64 = MAX_TEXT_BYTES >> 20;
+        match self {
+            ReadError::Io { reason } => {
+                Text::new(format!("読めません ({reason})"), format!("cannot be read ({reason})"))
+            }
+            ReadError::TooLarge { size } => {
+                let (ja, en) = size.map_or_else(
+                    || (String::new(), String::new()),
+                    |n| (format!("（{n} バイト）"), format!(" ({n} bytes)")),
+                );
+                Text::new(
+                    format!(
+                        "ファイルが {MIB} MiB を超えていて{ja}、テキストファイルとしては大きすぎます。指定したファイルが正しいか確かめてください"
+                    ),
+                    format!(
+                        "the file is larger than {MIB} MiB{en}, too large for a text file: check that you named the right file"
+                    ),
+                )
+            }
+            ReadError::Decode(e) => e.message(option),
+        }
+    }
+}
+
+impl From<DecodeError> for ReadError {
+    fn from(e: DecodeError) -> ReadError {
+        ReadError::Decode(e)
+    }
+}
+
+/// Decodes a text file's bytes: in `forced` when given (a BOM of that encoding is removed),
+/// else in the encoding detected as the module documentation says. Returns the text, without a
+/// BOM and with its line endings as they were, and the encoding it was read in
+/// ([`Encoding::Utf8Bom`] for UTF-8 that started with a BOM).
+///
+/// # Errors
+/// A [`DecodeError`] naming the line, column and byte offset of the first byte that cannot be
+/// read.
+pub fn decode(bytes: &[u8], forced: Option<Encoding>) -> Result<(String, Encoding), DecodeError> {
+    decode_cow(Cow::Borrowed(bytes), forced)
+}
+
+/// Reads a text file of at most [`MAX_TEXT_BYTES`] and [`decode`]s it. A larger file is refused
+/// without reading (or allocating) more than the limit.
+///
+/// # Errors
+/// The file cannot be opened or read, is too large, or is not text ([`ReadError`]).
+pub fn read(path: &Path, forced: Option<Encoding>) -> Result<(String, Encoding), ReadError> {
+    let bytes = read_bounded(path, MAX_TEXT_BYTES)?;
+    Ok(decode_cow(Cow::Owned(bytes), forced)?)
+}
+
+/// The file's bytes, refusing more than `limit`; the buffer never grows past `limit`.
+fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, ReadError> {
+    let io = |e: std::io::Error| ReadError::Io { reason: e.to_string() };
+    let mut file = std::fs::File::open(path).map_err(io)?;
+    let size = file.metadata().ok().filter(std::fs::Metadata::is_file).map(|m| m.len());
+    if let Some(size) = size
+        && size > limit
+    {
+        return Err(ReadError::TooLarge { size: Some(size) });
+    }
+    let limit = usize::try_from(limit).unwrap_or(usize::MAX);
+    let expected = size.and_then(|n| usize::try_from(n).ok()).unwrap_or(0);
+    let mut bytes = Vec::with_capacity(expected.min(limit));
+    let mut chunk = vec![0u8; 64 << 10];
+    loop {
+        let n = match file.read(&mut chunk) {
+            Ok(0) => break,
+            Ok(n) => n,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(io(e)),
+        };
+        if bytes.len() + n > limit {
+            return Err(ReadError::TooLarge { size });
+        }
+        if bytes.capacity() - bytes.len() < n {
+            let grown = bytes.capacity().saturating_mul(2).max(bytes.len() + n).min(limit);
+            bytes.reserve_exact(grown - bytes.len());
+        }
+        bytes.extend_from_slice(&chunk[..n]);
+    }
+    Ok(bytes)
+}
+
+fn decode_cow(
+    bytes: Cow<'_, [u8]>,
+    forced: Option<Encoding>,
+) -> Result<(String, Encoding), DecodeError> {
+    if let Some(encoding) = forced {
+        let bom = encoding.bom();
+        let skip = if bytes.starts_with(bom) { bom.len() } else { 0 };
+        let read_as = if encoding.is_utf8() && skip > 0 {
+            Encoding::Utf8Bom
+        } else if encoding.is_utf8() {
+            Encoding::Utf8
+        } else {
+            encoding
+        };
+        return decode_as(bytes, skip, read_as)
+            .map(|text| (text, read_as))
+            .map_err(|at| DecodeError::NotInNamed { encoding, at });
+    }
+    for encoding in [Encoding::Utf8Bom, Encoding::Utf16Le, Encoding::Utf16Be] {
+        let bom = encoding.bom();
+        if bytes.starts_with(bom) {
+            return decode_as(bytes, bom.len(), encoding)
+                .map(|text| (text, encoding))
+                .map_err(|at| DecodeError::AfterBom { encoding, at });
+        }
+    }
+    let not_utf8 = match std::str::from_utf8(&bytes) {
+        Ok(_) => None,
+        Err(e) => Some(e.valid_up_to()),
+    };
+    let Some(valid_up_to) = not_utf8 else {
+        return decode_as(bytes, 0, Encoding::Utf8)
+            .map(|text| (text, Encoding::Utf8))
+            .map_err(|at| DecodeError::Undetected { at, nearest: Encoding::Utf8 });
+    };
+    match decode_with(Encoding::ShiftJis.decoder(), &bytes, 0) {
+        Ok(text) => Ok((text, Encoding::ShiftJis)),
+        Err(sjis) if sjis.offset > valid_up_to => {
+            Err(DecodeError::Undetected { at: sjis, nearest: Encoding::ShiftJis })
+        }
+        Err(_) => {
+            let prefix = std::str::from_utf8(&bytes[..valid_up_to]).unwrap_or_default();
+            Err(DecodeError::Undetected {
+                at: Place::after(prefix, valid_up_to),
+                nearest: Encoding::Utf8,
+            })
+        }
+    }
+}
+
+/// `bytes[skip..]` decoded as `encoding`; the place of the first byte that is not.
+fn decode_as(bytes: Cow<'_, [u8]>, skip: usize, encoding: Encoding) -> Result<String, Place> {
+    if !encoding.is_utf8() {
+        return decode_with(encoding.decoder(), &bytes, skip);
+    }
+    let utf8_error = |valid_up_to: usize, body: &[u8]| {
+        let prefix = std::str::from_utf8(&body[..valid_up_to]).unwrap_or_default();
+        Place::after(prefix, skip + valid_up_to)
+    };
+    match bytes {
+        // The file's own buffer becomes the string: no copy.
+        Cow::Owned(mut v) => {
+            v.drain(..skip);
+            String::from_utf8(v).map_err(|e| utf8_error(e.utf8_error().valid_up_to(), e.as_bytes()))
+        }
+        Cow::Borrowed(b) => std::str::from_utf8(&b[skip..])
+            .map(str::to_owned)
+            .map_err(|e| utf8_error(e.valid_up_to(), &b[skip..])),
+    }
+}
+
+/// `bytes[skip..]` decoded by `encoding_rs` without replacement characters; the place of the
+/// first malformed sequence (line and column counted in the text decoded before it).
+fn decode_with(
+    encoding: &'static encoding_rs::Encoding,
+    bytes: &[u8],
+    skip: usize,
+) -> Result<String, Place> {
+    let body = &bytes[skip..];
+    let mut decoder = encoding.new_decoder_without_bom_handling();
+    let mut text = String::with_capacity(
+        decoder.max_utf8_buffer_length_without_replacement(body.len()).unwrap_or(body.len()),
+    );
+    let mut done = 0;
+    loop {
+        let (result, read) =
+            decoder.decode_to_string_without_replacement(&body[done..], &mut text, true);
+        done += read;
+        match result {
+            encoding_rs::DecoderResult::InputEmpty => return Ok(text),
+            encoding_rs::DecoderResult::OutputFull => {
+                let rest = body.len() - done;
+                text.reserve(
+                    decoder.max_utf8_buffer_length_without_replacement(rest).unwrap_or(rest).max(4),
+                );
+            }
+            encoding_rs::DecoderResult::Malformed(bad, after) => {
+                let start = done.saturating_sub(usize::from(bad) + usize::from(after));
+                return Err(Place::after(&text, skip + start));
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const REPORT: &str = "# レポート\r\n頂点 V0 (1, 0, 0)\r\n";
+
+    fn utf16(s: &str, little: bool) -> Vec<u8> {
+        let mut out = if little { vec![0xFF, 0xFE] } else { vec![0xFE, 0xFF] };
+        for unit in s.encode_utf16() {
+            out.extend(if little { unit.to_le_bytes() } else { unit.to_be_bytes() });
+        }
+        out
+    }
+
+    fn shift_jis(s: &str) -> Vec<u8> {
+        let (bytes, _, unmappable) = encoding_rs::SHIFT_JIS.encode(s);
+        assert!(!unmappable, "{s:?} is all in Shift_JIS");
+        bytes.into_owned()
+    }
+
+    /// The same report in every encoding the kit reads: one text, its encoding named.
+    #[test]
+    fn every_encoding_decodes_to_the_same_text_and_names_itself() {
+        let mut bom = b"\xEF\xBB\xBF".to_vec();
+        bom.extend_from_slice(REPORT.as_bytes());
+        let sjis = shift_jis(REPORT);
+        assert_ne!(sjis, REPORT.as_bytes(), "premise: Shift_JIS bytes differ from UTF-8's");
+        let cases = [
+            (REPORT.as_bytes().to_vec(), Encoding::Utf8),
+            (bom, Encoding::Utf8Bom),
+            (utf16(REPORT, true), Encoding::Utf16Le),
+            (utf16(REPORT, false), Encoding::Utf16Be),
+            (sjis, Encoding::ShiftJis),
+        ];
+        for (bytes, encoding) in &cases {
+            assert_eq!(decode(bytes, None), Ok((REPORT.to_owned(), *encoding)), "{encoding}");
+            // The owned path (files) gives the same.
+            assert_eq!(
+                decode_cow(Cow::Owned(bytes.clone()), None),
+                Ok((REPORT.to_owned(), *encoding))
+            );
+            // Forced to what it is, the same again.
+            let named = if *encoding == Encoding::Utf8Bom { Encoding::Utf8 } else { *encoding };
+            assert_eq!(decode(bytes, Some(named)), Ok((REPORT.to_owned(), *encoding)));
+        }
+        assert_eq!(decode(b"", None), Ok((String::new(), Encoding::Utf8)));
+    }
+
+    #[test]
+    fn only_shift_jis_and_utf16_are_mentioned_in_a_summary() {
+        assert_eq!(Encoding::Utf8.read_as(), None);
+        assert_eq!(Encoding::Utf8Bom.read_as(), None);
+        let said = Encoding::ShiftJis.read_as().unwrap();
+        assert_eq!(said, Text::new("Shift_JIS として読みました", "read as Shift_JIS"));
+        assert_eq!(Encoding::Utf16Le.read_as().unwrap().en, "read as UTF-16LE");
+    }
+
+    /// Seeded bytes of every value (xorshift), and a Latin-1 text: neither UTF-8 nor Shift_JIS.
+    #[test]
+    fn binary_and_latin1_are_refused_with_the_place() {
+        let mut state = 0x9E37_79B9_7F4A_7C15_u64;
+        let random: Vec<u8> = (0..4096)
+            .map(|_| {
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                state.to_le_bytes()[0]
+            })
+            .collect();
+        let e = decode(&random, None).unwrap_err();
+        assert!(matches!(e, DecodeError::Undetected { .. }), "{e}");
+
+        let (latin1, _, _) =
+            encoding_rs::WINDOWS_1252.encode("Caf\u{e9} cr\u{e8}me\r\nna\u{ef}ve\r\n");
+        let e = decode(&latin1, None).unwrap_err();
+        assert_eq!(
+            e,
+            DecodeError::Undetected {
+                at: Place { line: 1, column: 4, offset: 3 },
+                nearest: Encoding::Utf8
+            }
+        );
+        let text = e.text();
+        assert!(text.en.contains("neither UTF-8 nor Shift_JIS"), "{}", text.en);
+        assert!(text.en.contains("line 1, column 4 (byte offset 3)"), "{}", text.en);
+        assert!(
+            text.en.contains("save the file as UTF-8")
+                || text.en.contains("Save the file as UTF-8")
+        );
+        assert!(text.en.contains("`--encoding shift_jis`"), "{}", text.en);
+        assert!(text.ja.contains("1 行 4 文字目"), "{}", text.ja);
+        assert!(text.ja.contains("エンコード: UTF-8"), "{}", text.ja);
+        assert!(!e.text_without_option().en.contains("--encoding"));
+        assert!(!e.text_without_option().ja.contains("--encoding"));
+    }
+
+    /// Shift_JIS that breaks on line 2: the place is where Shift_JIS stops, not where UTF-8 did
+    /// (at the first Japanese character).
+    #[test]
+    fn the_reading_that_gets_further_names_the_place() {
+        let mut bytes = shift_jis("# レポート\r\n頂点 ");
+        let offset = bytes.len();
+        bytes.push(0xFF);
+        bytes.extend_from_slice(b"V0\r\n");
+        let e = decode(&bytes, None).unwrap_err();
+        assert_eq!(
+            e,
+            DecodeError::Undetected {
+                at: Place { line: 2, column: 4, offset },
+                nearest: Encoding::ShiftJis
+            }
+        );
+        // Valid UTF-8 broken on line 3 after Japanese text: UTF-8's place, counted in characters.
+        let mut bytes = "一\n二\n三四".as_bytes().to_vec();
+        bytes.push(0xFF);
+        let e = decode(&bytes, None).unwrap_err();
+        assert_eq!(e.place(), Place { line: 3, column: 3, offset: bytes.len() - 1 });
+    }
+
+    #[test]
+    fn a_bom_decides_and_broken_text_after_it_is_refused() {
+        // Odd length: half a UTF-16 code unit at the end.
+        let mut odd = utf16("ab\n", true);
+        odd.push(b'c');
+        let e = decode(&odd, None).unwrap_err();
+        assert_eq!(
+            e,
+            DecodeError::AfterBom {
+                encoding: Encoding::Utf16Le,
+                at: Place { line: 2, column: 1, offset: 8 }
+            }
+        );
+        assert!(e.text().ja.contains("UTF-16LE の BOM"), "{}", e.text().ja);
+        // An unpaired surrogate.
+        let e = decode(b"\xFE\xFF\x00a\xD8\x00\x00b", None).unwrap_err();
+        assert_eq!(e.place(), Place { line: 1, column: 2, offset: 4 });
+        // A UTF-8 BOM followed by Shift_JIS.
+        let mut mixed = b"\xEF\xBB\xBF".to_vec();
+        mixed.extend(shift_jis("頂点"));
+        let e = decode(&mixed, None).unwrap_err();
+        assert!(e.text().en.starts_with("the file starts with a UTF-8 byte-order mark, but"));
+        assert_eq!(
+            e,
+            DecodeError::AfterBom {
+                encoding: Encoding::Utf8Bom,
+                at: Place { line: 1, column: 1, offset: 3 }
+            }
+        );
+    }
+
+    #[test]
+    fn a_named_encoding_skips_detection() {
+        let sjis = shift_jis(REPORT);
+        assert_eq!(
+            decode(&sjis, Some(Encoding::ShiftJis)),
+            Ok((REPORT.to_owned(), Encoding::ShiftJis))
+        );
+        // ASCII is valid Shift_JIS too: named, it is read as such.
+        assert_eq!(
+            decode(b"V0\n", Some(Encoding::ShiftJis)),
+            Ok(("V0\n".into(), Encoding::ShiftJis))
+        );
+        // Shift_JIS named as UTF-8: refused where UTF-8 stops, naming the option.
+        let e = decode(&sjis, Some(Encoding::Utf8)).unwrap_err();
+        assert_eq!(
+            e,
+            DecodeError::NotInNamed {
+                encoding: Encoding::Utf8,
+                at: Place { line: 1, column: 3, offset: 2 }
+            }
+        );
+        assert!(e.text().en.contains("not UTF-8 as `--encoding` says"), "{}", e.text().en);
+        // A UTF-16 file named as Shift_JIS is read as Shift_JIS (0xFF is not Shift_JIS).
+        let e = decode(&utf16(REPORT, true), Some(Encoding::ShiftJis)).unwrap_err();
+        assert_eq!(e.place().offset, 0);
+        // UTF-8 named as UTF-16BE, odd length.
+        assert!(decode(b"abc", Some(Encoding::Utf16Be)).is_err());
+        // A UTF-16LE BOM is removed when UTF-16LE is named.
+        assert_eq!(
+            decode(&utf16("x", true), Some(Encoding::Utf16Le)),
+            Ok(("x".into(), Encoding::Utf16Le))
+        );
+    }
+
+    #[test]
+    fn parses_the_command_line_names() {
+        for (s, e) in [
+            ("utf-8", Encoding::Utf8),
+            ("UTF8", Encoding::Utf8),
+            ("utf-16le", Encoding::Utf16Le),
+            ("UTF-16BE", Encoding::Utf16Be),
+            ("shift_jis", Encoding::ShiftJis),
+            ("Shift-JIS", Encoding::ShiftJis),
+            ("sjis", Encoding::ShiftJis),
+            ("cp932", Encoding::ShiftJis),
+            ("windows-31j", Encoding::ShiftJis),
+        ] {
+            assert_eq!(s.parse::<Encoding>(), Ok(e), "{s}");
+        }
+        let e = "latin1".parse::<Encoding>().unwrap_err();
+        assert!(e.to_string().contains("shift_jis") && e.to_string().contains("文字コード"));
+        assert!(
+            "utf-16".parse::<Encoding>().is_err(),
+            "UTF-16 without its byte order is ambiguous"
+        );
+        for e in Encoding::ALL {
+            assert_eq!(e.to_string(), e.name());
+        }
+    }
+
+    /// Every message: one line in each language, Japanese in the Japanese one and none in the
+    /// English one.
+    #[test]
+    fn messages_are_one_line_in_each_language() {
+        let at = Place { line: 3, column: 7, offset: 41 };
+        let errors = [
+            ReadError::Io { reason: "No such file or directory (os error 2)".into() },
+            ReadError::TooLarge { size: Some(70_000_000) },
+            ReadError::TooLarge { size: None },
+            ReadError::Decode(DecodeError::Undetected { at, nearest: Encoding::Utf8 }),
+            ReadError::Decode(DecodeError::AfterBom { encoding: Encoding::Utf16Be, at }),
+            ReadError::Decode(DecodeError::NotInNamed { encoding: Encoding::ShiftJis, at }),
+        ];
+        let japanese = |c: char| matches!(c, '\u{3000}'..='\u{30ff}' | '\u{4e00}'..='\u{9fff}' | '\u{ff00}'..='\u{ffef}');
+        for e in &errors {
+            for text in [e.text(), e.text_without_option()] {
+                for s in [&text.ja, &text.en] {
+                    assert!(!s.contains(['\n', '\r', '\t']) && !s.contains("  "), "{s:?}");
+                    assert_eq!(s.trim(), s, "{s:?}");
+                }
+                assert!(text.ja.chars().any(japanese), "{}", text.ja);
+                assert!(!text.en.chars().any(japanese), "{}", text.en);
+            }
+            assert_eq!(e.to_string(), e.text().en);
+        }
+        assert!(errors[1].text().en.contains("larger than 64 MiB (70000000 bytes)"));
+        assert!(errors[1].text().ja.contains("70000000 バイト"), "{}", errors[1].text().ja);
+    }
+}
