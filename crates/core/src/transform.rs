@@ -626,26 +626,13 @@ mod text_tests {
         text
     }
 
-    /// What is wrong with `text` as a one-line message in each language (empty when nothing).
-    fn problems(what: &str, text: &Text) -> Vec<String> {
-        let mut found: Vec<String> = cg_testkit::text::line_problems(&text.ja, &text.en, false)
-            .into_iter()
-            .map(|p| format!("{what} {p}"))
-            .collect();
-        if text.ja == text.en {
-            found.push(format!("{what}: the same in both languages: {:?}", text.en));
-        }
-        found
-    }
-
     #[test]
     fn every_message_is_one_clean_line_in_each_language() {
-        let mut found = Vec::new();
-        for e in samples() {
+        let messages = samples().into_iter().map(|e| {
             let text = text_of(&e);
             assert_eq!(e.to_string(), text.en);
-            found.extend(problems(&format!("{e:?}"), &text));
-        }
-        assert!(found.is_empty(), "{} problems:\n{}", found.len(), found.join("\n"));
+            (format!("{e:?}"), text.ja, text.en)
+        });
+        cg_testkit::text::assert_clean_lines(messages, false, true);
     }
 }

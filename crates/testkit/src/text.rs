@@ -68,6 +68,30 @@ pub fn line_problems(ja: &str, en: &str, no_english_in_ja: bool) -> Vec<String> 
     found
 }
 
+/// Fails with every problem of `messages` — each `(what, ja, en)`, `what` naming it in the
+/// report — as [`line_problems`] finds them, and, with `distinct`, every message that reads the
+/// same in both languages.
+///
+/// # Panics
+/// When any message has a problem; the panic lists them all.
+#[track_caller]
+pub fn assert_clean_lines(
+    messages: impl IntoIterator<Item = (String, String, String)>,
+    no_english_in_ja: bool,
+    distinct: bool,
+) {
+    let mut found = Vec::new();
+    for (what, ja, en) in messages {
+        for p in line_problems(&ja, &en, no_english_in_ja) {
+            found.push(format!("{what} {p}"));
+        }
+        if distinct && ja == en {
+            found.push(format!("{what}: the same in both languages: {en:?}"));
+        }
+    }
+    assert!(found.is_empty(), "{} problems:\n{}", found.len(), found.join("\n"));
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -88,6 +112,8 @@ mod tests {
             let found = line_problems(ja, en, true);
             assert!(found.iter().any(|p| p.contains(why)), "{ja:?}/{en:?}: {found:?}");
         }
+        let same = || vec![("x".to_owned(), "面".to_owned(), "面".to_owned())];
+        assert!(std::panic::catch_unwind(|| assert_clean_lines(same(), true, true)).is_err());
         // Names stand alone in a Japanese sentence.
         assert_eq!(english_fragments("grid の divisions は (NaN, 0, 0)"), Vec::<String>::new());
     }
