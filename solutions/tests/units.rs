@@ -24,6 +24,10 @@ fn places(id: &str) -> Vec<(String, String)> {
         ("solutions/src/lib.rs".to_owned(), format!("pub mod {id};")),
         ("crates/student/src/lib.rs".to_owned(), format!("pub mod {id};")),
         (format!("docs/assignments/{id}.md"), format!("{id}.t1")),
+        // The worker's table of the student's functions, and the trusted side's stand-ins.
+        ("crates/worker/src/tables.rs".to_owned(), format!("pub fn {id}(imp: {id}::Impl)")),
+        ("crates/worker/src/tables.rs".to_owned(), format!("$krate::{id}::implementation()")),
+        ("crates/worker/src/proxy.rs".to_owned(), format!("pub fn {id}() -> {id}::Impl")),
         ("docs/student-guide.md".to_owned(), format!("(assignments/{id}.md)")),
     ]
 }

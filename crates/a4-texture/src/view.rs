@@ -69,6 +69,13 @@ fn panicked(function: &str, outcome: Outcome) -> Text {
     let (message, location) = match outcome {
         Outcome::Panicked { message, location } => (message, location),
         Outcome::NotDone { message } => (message, None),
+        other @ (Outcome::TimedOut { .. } | Outcome::Crashed { .. }) => {
+            let text = other.describe().unwrap_or_default();
+            return Text::new(
+                format!("{function}: {}", text.ja),
+                format!("{function}: {}", text.en),
+            );
+        }
         Outcome::Pass | Outcome::Fail(_) => (String::new(), None),
     };
     let at = location.map(|l| format!(" ({l})")).unwrap_or_default();

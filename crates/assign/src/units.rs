@@ -102,6 +102,16 @@ macro_rules! derive_from_list {
             )*
         }
 
+        impl Impls {
+            /// The student's functions as run by the worker that is current on this thread
+            /// (`cg_worker::proxy::with_worker`): what the kit's checks call when the student's
+            /// code runs in a process of its own.
+            #[must_use]
+            pub fn worker() -> Impls {
+                Impls { $($id: cg_worker::proxy::$id(),)* }
+            }
+        }
+
         impl Variants {
             /// `student`'s assignments in table `table`. Each assignment draws from its own
             /// stream, so adding a draw to one never changes another.
@@ -259,6 +269,24 @@ impl Variants {
             student: Some(self.student.to_string()),
             checks: self.checks(which, impls),
         }
+    }
+
+    /// The check reports of `which`, the student's functions running in `worker` (a process of
+    /// their own: a worker built from the student's crate, `cg-check-runner`), each check's calls
+    /// within `per_check`. The checks run here, in the caller's process; a call that loops,
+    /// crashes or panics ends only the check that made it. The worker comes back with what the
+    /// student's code printed.
+    #[must_use]
+    pub fn reports_in_worker(
+        &self,
+        which: &[Which],
+        worker: cg_worker::Worker,
+        per_check: std::time::Duration,
+    ) -> (Vec<Report>, cg_worker::Worker) {
+        cg_worker::proxy::with_worker(worker, per_check, || {
+            let impls = Impls::worker();
+            which.iter().map(|&w| self.report(w, &impls)).collect()
+        })
     }
 }
 

@@ -1,38 +1,73 @@
-//! # cg-check-runner — a student's checks, and nothing else
+//! # cg-check-runner — the student's functions in a process of their own
 //!
-//! The grader builds this crate from each submission's `exercises/` and runs its program,
-//! `cg-check-runner`, in the sandbox (cg-sandbox): it prints every assignment's check report as
-//! JSON on stdout, exactly what `cg check --json` prints, using the kit's check code (the
-//! assignment crates, listed once in `cg-assign`) against the submission's `cg-exercises`. It depends on
-//! nothing else, so a rebuild after a submission's files change is small; it never uses the
-//! network and writes no files.
+//! The kit's checks never run in the same process as a student's code (principle 2). This crate
+//! is the other process: a **worker** ([`cg_worker`]) that offers every function of the
+//! student's `exercises/` as a named handler ([`cg_worker::tables`]) and runs each call it is
+//! sent. It links the student's crate (`cg-exercises`), the students' API and the worker's
+//! protocol, and nothing of the kit's checks, oracles or renderers: it decides nothing and
+//! prints no result. The trusted side (`cg check`, `cg grade`) holds the checks and calls these
+//! functions over the worker's pipe, each call within its budget.
+//!
+//! The grader builds this crate from each submission's `exercises/` and starts its program,
+//! `cg-check-runner`, in the sandbox (cg-sandbox); `cg check` starts itself in worker mode
+//! (`cg worker`), which serves the same [`handlers`].
 //!
 //! ```text
-//! cg-check-runner [--student NUMBER] [--only ID] [--time-limit SECONDS] [--lang ja|en]
+//! cg-check-runner [--memory-mb N]
 //! ```
 //!
-//! Exit status: 0 every check passed; 1 some did not (the reports are printed all the same);
-//! 2 the student could not be found (no `--student` and no readable `exercises/student.toml`:
-//! a message on stderr, nothing on stdout); 3 a check ran past the time limit (the watchdog of
-//! `cg_harness::check`; nothing on stdout).
+//! It reads calls on stdin until stdin ends. `--memory-mb` limits its address space (Unix; the
+//! grader limits it from outside as well).
 
-use cg_assign::{Impls, Variants, Which};
-use cg_harness::check::Report;
+use cg_worker::serve::Handler;
 
-/// The functions the student wrote: `exercises/src/<id>.rs` of every assignment, as built.
+/// Every function of the student's exercises, by name (`a1.vertices`, …).
 #[must_use]
-pub fn exercises() -> Impls {
-    cg_assign::impls!(cg_exercises)
+pub fn handlers() -> Vec<(&'static str, Handler)> {
+    cg_worker::tables!(cg_exercises)
 }
 
-/// The checks of one assignment against the student's exercises (`cg-exercises` as built).
-#[must_use]
-pub fn report(which: Which, a: &Variants) -> Report {
-    a.report(which, &exercises())
+/// Serves the student's functions on stdin and stdout until stdin ends.
+///
+/// # Errors
+/// stdin or stdout failed.
+pub fn serve() -> std::io::Result<()> {
+    cg_worker::serve(&handlers())
 }
 
-/// The reports as the JSON array `cg check --json` prints.
-#[must_use]
-pub fn to_json(reports: &[Report]) -> serde_json::Value {
-    serde_json::Value::Array(reports.iter().map(Report::to_json).collect())
+/// Limits this process's address space to `mb` MiB (Unix), so that a student's function that
+/// allocates without end fails its call instead of taking the machine's memory. On other
+/// systems nothing is limited (`Ok(false)`).
+///
+/// # Errors
+/// The system refused the limit.
+pub fn limit_memory(mb: u64) -> std::io::Result<bool> {
+    #[cfg(unix)]
+    {
+        // platform: rlimits are Unix's.
+        let bytes = mb.saturating_mul(1 << 20);
+        rlimit::Resource::AS.set(bytes, bytes)?;
+        Ok(true)
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = mb;
+        Ok(false)
+    }
+}
+
+/// The worker's command line: `[--memory-mb N]`; the limit, when given.
+///
+/// # Errors
+/// An argument that is not `--memory-mb` with a number of MiB.
+pub fn parse_args(args: &[String]) -> Result<Option<u64>, String> {
+    match args {
+        [] => Ok(None),
+        [flag, n] if flag == "--memory-mb" => {
+            n.parse().map(Some).map_err(|_| format!("--memory-mb: {n:?} is not a number of MiB"))
+        }
+        other => Err(format!(
+            "usage: cg-check-runner [--memory-mb N] (the kit starts this program; it was given {other:?})"
+        )),
+    }
 }

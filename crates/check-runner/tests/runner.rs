@@ -1,116 +1,118 @@
-//! `cg-check-runner` end to end on the kit's pristine stubs (nothing passes; assignment 1's
-//! checks all say "not done yet"), with the student from `--student` or from
-//! `exercises/student.toml`, and under the grading sandbox.
+//! `cg-check-runner` end to end: the worker serves the kit's pristine stubs (each call a panic
+//! with the stub's `todo!()` message, the worker going on), refuses a bad command line, serves
+//! the same under the grading sandbox's launch line (bubblewrap, with its seccomp filter on a
+//! descriptor of its own, so stdin stays the worker's), and links nothing of the kit's checks.
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Command;
+use std::time::Duration;
 
-const STUDENT: &str = "12345678";
+use cg_student::a1;
+use cg_student::glam::Vec3;
+use cg_worker::{CallError, Worker};
+
+const BUDGET: Duration = Duration::from_secs(20);
 
 fn runner() -> PathBuf {
     PathBuf::from(env!("CARGO_BIN_EXE_cg-check-runner"))
 }
 
-/// Runs the runner in `dir` with `args`, with no language taken from the environment.
-fn run(dir: &Path, args: &[&str]) -> Output {
-    Command::new(runner())
-        .args(args)
-        .current_dir(dir)
-        .env_remove("CG_LANG")
-        .env_remove("LANG")
-        .env_remove("LC_ALL")
-        .env_remove("LC_MESSAGES")
-        .output()
-        .expect("the runner starts")
+/// An a1 spec as `cg assignment --json` writes it (the first of the frozen table).
+fn spec() -> a1::Spec {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../assign/tests/table-v1.json");
+    let table: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    serde_json::from_value(table[0]["a1"].clone()).unwrap()
 }
 
-/// An empty folder `<target tmp>/check-runner/<test>` holding an empty `exercises/`, so that
-/// `exercises/student.toml` is looked for there, not in the kit.
-fn scratch(test: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("check-runner").join(test);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(dir.join("exercises")).unwrap();
-    dir.canonicalize().unwrap()
-}
-
-fn json(o: &Output) -> serde_json::Value {
-    serde_json::from_slice(&o.stdout)
-        .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&o.stdout)))
-}
-
-#[test]
-fn the_stubs_pass_nothing_and_every_assignment_is_reported() {
-    let dir = scratch("stubs");
-    let o = run(&dir, &["--student", STUDENT]);
-    assert_eq!(o.status.code(), Some(1), "{}", String::from_utf8_lossy(&o.stderr));
-    let reports = json(&o);
-    let reports = reports.as_array().unwrap();
-    let ids: Vec<&str> = reports.iter().map(|r| r["assignment"].as_str().unwrap()).collect();
-    assert_eq!(ids, ["a1", "a2", "a3", "a4", "s"]);
-    for r in reports {
-        let checks = r["checks"].as_array().unwrap();
-        assert_eq!(r["student"], STUDENT);
-        assert_eq!(r["passed"], 0, "{r}");
-        assert_eq!(r["total"].as_u64(), Some(checks.len() as u64));
-        assert!(checks.len() >= 5, "{r}");
-        assert!(checks.iter().all(|c| c["status"] != "pass"), "{r}");
-        let prefix = format!("{}.t", r["assignment"].as_str().unwrap());
-        assert!(checks.iter().all(|c| c["id"].as_str().unwrap().starts_with(&prefix)), "{r}");
+fn expect_todo(r: Result<Vec<Vec3>, CallError>, task: &str) {
+    match r {
+        Err(CallError::Panicked { message, location }) => {
+            assert!(message.starts_with(&format!("not yet implemented: {task}")), "{message}");
+            assert!(location.is_some_and(|l| l.contains("exercises/src/")));
+        }
+        other => panic!("{other:?}"),
     }
-    // Assignment 1's stubs are todo!()s: every check says so.
-    let a1 = reports[0]["checks"].as_array().unwrap();
-    assert!(a1.iter().all(|c| c["status"] == "not_done"), "{a1:?}");
-    assert!(a1[0]["message"].as_str().unwrap().starts_with("a1.t1"), "{:?}", a1[0]);
-
-    // --only gives that assignment's report alone, the same as in the whole.
-    let only = run(&dir, &["--student", STUDENT, "--only", "a4"]);
-    assert_eq!(only.status.code(), Some(1));
-    assert_eq!(json(&only), serde_json::Value::Array(vec![reports[3].clone()]));
 }
 
 #[test]
-fn the_student_comes_from_the_student_file_when_not_given() {
-    let dir = scratch("file");
-    let o = run(&dir, &["--only", "a1", "--lang", "en"]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(o.stdout.is_empty());
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert!(err.contains("student.toml"), "{err}");
-
-    let record = cg_assign::StudentFile {
-        student: STUDENT.parse().unwrap(),
-        table: cg_harness::TableVersion::LATEST,
-    };
-    cg_assign::write_student_file(&dir.join("exercises/student.toml"), &record).unwrap();
-    let from_file = run(&dir, &["--only", "a1"]);
-    let given = run(&dir, &["--only", "a1", "--student", STUDENT]);
-    assert_eq!(from_file.status.code(), Some(1));
-    assert_eq!(json(&from_file)[0]["student"], STUDENT);
-    assert_eq!(from_file.stdout, given.stdout);
-    // Another student's variant is another report.
-    let other = run(&dir, &["--only", "a1", "--student", "87654321"]);
-    assert_eq!(json(&other)[0]["student"], "87654321");
+fn the_stubs_are_served_and_each_call_is_its_todo() {
+    let mut w = Worker::new(runner(), ["--memory-mb", "1024"]);
+    expect_todo(w.call("a1.vertices", &spec(), BUDGET), "a1.t1");
+    expect_todo(w.call("a1.face_normals", &spec(), BUDGET), "a1.t3");
+    // An unknown function and arguments of another type are no value, and the worker goes on.
+    assert!(matches!(w.call::<_, u8>("a9.nothing", &(), BUDGET), Err(CallError::Broken(_))));
+    assert!(matches!(w.call::<_, u8>("a1.vertices", &"x", BUDGET), Err(CallError::Broken(_))));
+    expect_todo(w.call("a1.vertices", &spec(), BUDGET), "a1.t1");
 }
 
 #[test]
-fn under_the_sandbox_it_prints_the_same() {
-    use cg_sandbox::{Ended, Job, Limits, detect};
-    let dir = scratch("sandbox");
-    let outside = run(&dir, &["--student", STUDENT]);
+fn a_bad_command_line_is_refused_with_its_usage() {
+    for args in [&["--memory-mb", "lots"][..], &["--only", "a1"]] {
+        let o = Command::new(runner()).args(args).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains("--memory-mb"), "{err}");
+    }
+}
+
+#[test]
+fn under_the_sandboxs_launch_line_it_serves_the_same() {
+    use cg_sandbox::{Isolation, Job, Limits, detect};
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("check-runner-sandbox");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
     let isolation = detect();
-    if isolation != cg_sandbox::Isolation::Bubblewrap {
+    if isolation != Isolation::Bubblewrap {
         assert!(std::env::var_os("CI").is_none(), "bubblewrap does not work on this CI machine");
-        eprintln!("note: bubblewrap is not usable here; the run is under rlimits only");
+        eprintln!("note: bubblewrap is not usable here; the worker runs under rlimits only");
     }
     let job = Job {
         program: runner(),
-        args: vec!["--student".into(), STUDENT.into()],
+        args: Vec::new(),
         workdir: dir.clone(),
         read_only: Vec::new(),
         env: Vec::new(),
     };
-    let r = cg_sandbox::run(&job, &Limits::default(), isolation).unwrap();
-    assert_eq!(r.ended, Ended::Exited(1), "{r:?}");
-    assert!(!r.output_cut);
-    assert_eq!(r.stdout.as_bytes(), outside.stdout.as_slice());
+    let l = cg_sandbox::launch(&job, &Limits::default(), isolation).unwrap();
+    if isolation == Isolation::Bubblewrap {
+        assert_eq!(l.program, Path::new("/bin/sh"));
+        assert!(dir.with_extension("seccomp").is_file());
+    }
+    let mut w = Worker::new(l.program, l.args).clear_env().current_dir(l.workdir);
+    for (k, v) in l.env {
+        w = w.env(k, v);
+    }
+    expect_todo(w.call("a1.vertices", &spec(), BUDGET), "a1.t1");
+    expect_todo(w.call("a1.face_normals", &spec(), BUDGET), "a1.t3");
+}
+
+#[test]
+fn it_links_the_students_crate_and_the_workers_protocol_only() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let deps = |manifest: &Path| -> Vec<String> {
+        let text = std::fs::read_to_string(manifest).unwrap();
+        let value: toml::Table = toml::from_str(&text).unwrap();
+        let mut names: Vec<String> = Vec::new();
+        for table in ["dependencies"] {
+            if let Some(t) = value.get(table).and_then(|t| t.as_table()) {
+                names.extend(t.keys().cloned());
+            }
+        }
+        if let Some(targets) = value.get("target").and_then(|t| t.as_table()) {
+            for t in targets.values() {
+                if let Some(d) = t.get("dependencies").and_then(|d| d.as_table()) {
+                    names.extend(d.keys().cloned());
+                }
+            }
+        }
+        names.sort();
+        names
+    };
+    assert_eq!(deps(&root.join("Cargo.toml")), ["cg-exercises", "cg-worker", "rlimit"]);
+    assert_eq!(
+        deps(&root.join("../worker/Cargo.toml")),
+        ["cg-student", "ciborium", "serde"],
+        "cg-worker is linked into the worker: nothing of the kit's checks may come with it"
+    );
 }

@@ -78,18 +78,49 @@ pub struct CheckArgs {
     /// Print JSON for tools / JSON で出力
     #[arg(long)]
     json: bool,
-    /// Seconds one check may run before it is taken for an endless loop / 1 つのチェックの制限時間（秒）
+    /// Seconds one check may spend in your functions before it is taken for an endless loop / 1 つのチェックの制限時間（秒）
     #[arg(long, default_value_t = 20)]
     time_limit: u64,
+    /// MiB of memory your functions may use (Linux and macOS) / あなたの関数が使えるメモリ（MiB、Linux と macOS）
+    #[arg(long, value_name = "MIB", default_value_t = 2048)]
+    memory_limit: u64,
+}
+
+/// Options of the hidden `cg worker`: the student's functions served on stdin and stdout for
+/// `cg check` (which starts it), as the grader's `cg-check-runner` serves them.
+#[derive(clap::Args)]
+pub struct WorkerArgs {
+    /// MiB of address space (Unix)
+    #[arg(long, value_name = "MIB")]
+    memory_mb: Option<u64>,
+}
+
+/// `cg worker`: serves the student's functions until stdin ends.
+pub fn worker(args: &WorkerArgs) -> Result<(), String> {
+    if let Some(mb) = args.memory_mb {
+        cg_check_runner::limit_memory(mb).map_err(|e| format!("--memory-mb {mb}: {e}"))?;
+    }
+    cg_check_runner::serve().map_err(|e| e.to_string())
 }
 
 /// `cg check`: runs the student's checks; fails (exit status 1) unless every check passes.
+///
+/// The checks run here; the student's functions run in a worker, this program started again
+/// as `cg worker`, each check's calls within `--time-limit` and the worker's memory within
+/// `--memory-limit`: a function that loops, crashes or allocates without end fails only the
+/// checks that called it.
 pub fn check(args: &CheckArgs, lang: Lang) -> Result<bool, String> {
     let record = student(args.student.as_deref(), None, lang)?;
     let a = Variants::for_student(&record.student, record.table);
-    cg_harness::check::watchdog(Duration::from_secs(args.time_limit.max(1)), lang);
     let which: Vec<Which> = args.which.map_or_else(|| Which::ALL.to_vec(), |w| vec![w]);
-    let reports: Vec<Report> = which.iter().map(|&w| cg_check_runner::report(w, &a)).collect();
+    let me = std::env::current_exe().map_err(|e| format!("current_exe: {e}"))?;
+    let worker = cg_worker::Worker::new(
+        me,
+        vec!["worker".into(), "--memory-mb".into(), args.memory_limit.max(64).to_string()],
+    );
+    let per_check = Duration::from_secs(args.time_limit.max(1));
+    let (reports, worker) = a.reports_in_worker(&which, worker, per_check);
+    let printed = String::from_utf8_lossy(&worker.printed).into_owned();
     if args.json {
         let value = serde_json::Value::Array(reports.iter().map(Report::to_json).collect());
         println!("{}", serde_json::to_string_pretty(&value).unwrap_or_default());
@@ -104,6 +135,14 @@ pub fn check(args: &CheckArgs, lang: Lang) -> Result<bool, String> {
             );
             print!("{}", r.render(lang));
             println!();
+        }
+    }
+    if !printed.is_empty() {
+        // On stderr, so that `--json` stays JSON.
+        eprintln!("{}", lang.pick("あなたの関数が出力した内容:", "what your functions printed:"));
+        eprint!("{printed}");
+        if !printed.ends_with('\n') {
+            eprintln!();
         }
     }
     Ok(reports.iter().all(Report::all_passed))
@@ -149,7 +188,7 @@ fn impls(reference: bool) -> Impls {
     if reference {
         return cg_assign::impls!(cg_solutions);
     }
-    cg_check_runner::exercises()
+    cg_assign::impls!(cg_exercises)
 }
 
 fn view_scene(

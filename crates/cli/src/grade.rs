@@ -78,7 +78,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         println!("{} ({}): {}{max}{note}", g.name, g.entry, g.score);
     };
     let graded =
-        cg_grade::grade(&options, cg_sandbox::run, &progress).map_err(|e| e.to_string())?;
+        cg_grade::grade(&options, cg_sandbox::launch, &progress).map_err(|e| e.to_string())?;
     println!(
         "{} {} {}: {}",
         graded.len(),

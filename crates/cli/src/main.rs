@@ -61,6 +61,9 @@ enum Command {
     Bench(bench::Args),
     /// Grade every submission in a folder with the kit's own checks, in a sandbox (instructors) / 提出物をまとめて採点（教員用）
     Grade(grade::Args),
+    /// The student's functions for `cg check`, which starts it (not for use by hand)
+    #[command(hide = true)]
+    Worker(assignments::WorkerArgs),
 }
 
 /// Ends quietly when the reader of our output goes away (`cg check | head`): printing to a closed
@@ -99,6 +102,7 @@ fn main() -> ExitCode {
         Some(Command::Handout(args)) => handout::run(&args, lang).map(|()| true),
         Some(Command::Bench(args)) => bench::run(&args, lang).map(|()| true),
         Some(Command::Grade(args)) => grade::run(&args, lang).map(|()| true),
+        Some(Command::Worker(args)) => assignments::worker(&args).map(|()| true),
         None => render::main_job(lang).map(|()| true),
     };
     match result {

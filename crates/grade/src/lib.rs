@@ -20,7 +20,7 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use cg_core::lang::Lang;
-use cg_sandbox::{Ended, Isolation, Job, Limits, Run, SandboxError};
+use cg_sandbox::{Isolation, Job, Launch, Limits, SandboxError};
 
 pub mod build;
 pub mod config;
@@ -33,8 +33,9 @@ pub use config::Config;
 
 pub use cg_core::lang::Text;
 
-/// The function that runs a job in the sandbox: [`cg_sandbox::run`], or a stand-in in tests.
-pub type Runner = fn(&Job, &Limits, Isolation) -> Result<Run, SandboxError>;
+/// The function that makes the sandbox's command line for the worker of a submission's
+/// functions: [`cg_sandbox::launch`], or a stand-in in tests.
+pub type Launcher = fn(&Job, &Limits, Isolation) -> Result<Launch, SandboxError>;
 
 /// What to grade and how.
 #[derive(Clone, Debug)]
@@ -306,29 +307,10 @@ struct Slot {
     run: PathBuf,
 }
 
-/// Which program runs the checks in a kit copy: `cg-check-runner` when the kit has it, else
-/// `cg check --json` (the same reports, with the whole command line built).
-fn runner_command(
-    kit: &Path,
-    target: &Path,
-    which: &str,
-    limits: &Limits,
-) -> (&'static str, PathBuf, Vec<String>) {
-    if kit.join("crates/check-runner/Cargo.toml").exists() {
-        (
-            "cg-check-runner",
-            target.join("release/cg-check-runner"),
-            vec!["--only".into(), which.into()],
-        )
-    } else {
-        let secs = limits.wall.as_secs().max(1).to_string();
-        (
-            "cg-cli",
-            target.join("release/cg"),
-            vec!["check".into(), which.into(), "--json".into(), "--time-limit".into(), secs],
-        )
-    }
-}
+/// The package the grader builds in a kit copy from a submission's `exercises/`: the worker of
+/// the student's functions (`cg-check-runner`), which links the submission and nothing of the
+/// checks.
+const WORKER_PACKAGE: &str = "cg-check-runner";
 
 impl Slot {
     fn at(out: &Path, k: usize) -> Slot {
@@ -345,7 +327,7 @@ impl Slot {
     }
 }
 
-/// Slot 0: the handout written afresh when the kit changed, and the runner built from the
+/// Slot 0: the handout written afresh when the kit changed, and the worker built from the
 /// pristine stubs (the whole kit's first build, paid once).
 fn prepare_first(
     slot: &Slot,
@@ -365,8 +347,7 @@ fn prepare_first(
         write_if_changed(&slot.kit.join(format!("exercises/src/{m}.rs")), stubs[m].as_bytes())
             .map_err(|e| io(&e))?;
     }
-    let package =
-        runner_command(&slot.kit, &slot.target, submission::MODULES[0], &options.limits).0;
+    let package = WORKER_PACKAGE;
     let b = build::cargo_build(&slot.kit, &slot.target, package, options.build_limit)
         .map_err(|e| io(&e))?;
     if !b.success {
@@ -409,120 +390,85 @@ fn prepare_copy(slot: &Slot, first: &Slot, kit_hash: &str) -> Result<(), Text> {
 /// One assignment's run, as the result needs it.
 #[derive(Clone, Debug)]
 pub enum AssignmentRun {
-    /// The report the checks printed (`Report::to_json`).
+    /// The report of its checks (`Report::to_json`), decided in the grader's process.
     Report(serde_json::Value),
-    /// The run ended without a report: how, and the end of its stderr.
+    /// The checks could not run: why, and the end of what the worker wrote on stderr.
     Died {
-        /// How it ended, in both languages.
+        /// Why, in both languages.
         how: Text,
         /// The end of what it printed on stderr.
         stderr: String,
     },
 }
 
-fn describe_end(run: &Run, limits: &Limits) -> Text {
-    match run.ended {
-        Ended::TimedOut => Text::new(
-            format!("制限時間 {} 秒を超えたため止めました（無限ループ？）", limits.wall.as_secs()),
-            format!(
-                "stopped after the time limit of {} s (an endless loop?)",
-                limits.wall.as_secs()
-            ),
-        ),
-        Ended::Signalled(9) => Text::new(
-            format!("強制終了されました（メモリ上限 {} MB を超えた？）", limits.memory_bytes >> 20),
-            format!("killed (over the memory limit of {} MB?)", limits.memory_bytes >> 20),
-        ),
-        Ended::Signalled(6) => Text::new(
-            format!("異常終了しました（メモリ確保の失敗？ 上限 {} MB）", limits.memory_bytes >> 20),
-            format!("aborted (a failed allocation? the limit is {} MB)", limits.memory_bytes >> 20),
-        ),
-        Ended::Signalled(s) => {
-            Text::new(format!("シグナル {s} で終了しました"), format!("ended by signal {s}"))
-        }
-        Ended::Exited(3) => Text::new(
-            "チェックが制限時間を超えました（無限ループ？）",
-            "a check ran over its time limit (an endless loop?)",
-        ),
-        Ended::Exited(c) => Text::new(
-            format!("終了コード {c} で終わり、結果を出力しませんでした"),
-            format!("exited with status {c} without printing its results"),
-        ),
-    }
-}
-
-/// The reports in a run's stdout: the JSON array the runner prints last, after whatever the
-/// student's code printed (a forgotten `println!` must not cost the assignment).
-#[must_use]
-pub fn find_reports(stdout: &str) -> Option<Vec<serde_json::Value>> {
-    let starts = std::iter::once(0).chain(stdout.match_indices("\n[").map(|(i, _)| i + 1));
-    starts
-        .filter(|&i| stdout[i..].starts_with('['))
-        .find_map(|i| serde_json::from_str::<Vec<serde_json::Value>>(&stdout[i..]).ok())
-}
-
-/// Runs the checks of `which` in the slot, in the sandbox.
+/// Runs every assignment's checks for `student` in this process, the submission's functions in
+/// a worker (`cg-check-runner`, built in the slot) in the sandbox: each check's calls within
+/// [`Limits::wall`], the worker within the rest of `options.limits`. Nothing the worker prints
+/// is read as a result: the checks, their list and their outcomes are the kit's, here.
 fn run_checks(
     slot: &Slot,
-    which: &str,
-    student_toml: &[u8],
+    student: &cg_assign::StudentFile,
     options: &Options,
-    runner: Runner,
-) -> (AssignmentRun, Duration) {
+    launcher: Launcher,
+) -> (BTreeMap<String, AssignmentRun>, Baseline, Duration) {
     let started = Instant::now();
-    let _ = std::fs::remove_dir_all(&slot.run);
-    let prepared = std::fs::create_dir_all(slot.run.join("exercises"))
-        .and_then(|()| std::fs::write(slot.run.join("exercises/student.toml"), student_toml));
-    if let Err(e) = prepared {
-        let how = Text::new(format!("作業フォルダ: {e}"), format!("work folder: {e}"));
-        return (AssignmentRun::Died { how, stderr: String::new() }, started.elapsed());
-    }
-    let (_, program, args) = runner_command(&slot.kit, &slot.target, which, &options.limits);
-    let job = Job {
-        program,
-        args,
-        workdir: slot.run.clone(),
-        read_only: vec![slot.kit.clone()],
-        env: vec![("HOME".into(), slot.run.display().to_string()), ("CG_LANG".into(), "en".into())],
+    let a = cg_assign::Variants::for_student(&student.student, student.table);
+    // The checks could not run: each assignment's list of checks still comes from the kit (its
+    // checks against functions that give nothing), so the maximum score is the same.
+    let died = |how: Text| {
+        let run = AssignmentRun::Died { how, stderr: String::new() };
+        let nothing = cg_assign::Impls::worker();
+        let mut runs = BTreeMap::new();
+        let mut baseline = Baseline::new();
+        for &w in cg_assign::Which::ALL {
+            let list = result::check_list(&a.report(w, &nothing).to_json());
+            baseline.insert(w.id().to_owned(), list);
+            runs.insert(w.id().to_owned(), run.clone());
+        }
+        (runs, baseline, started.elapsed())
     };
-    let outcome = match runner(&job, &options.limits, options.isolation) {
-        Err(e) => AssignmentRun::Died {
-            how: Text::new(format!("起動できません: {e}"), format!("could not start: {e}")),
-            stderr: String::new(),
-        },
-        Ok(run) => {
-            let report = find_reports(&run.stdout)
-                .and_then(|r| r.into_iter().find(|r| r["assignment"] == which));
-            match report {
-                Some(r) if run.ended != Ended::TimedOut => AssignmentRun::Report(r),
-                _ if run.output_cut => AssignmentRun::Died {
-                    how: Text::new(
-                        format!("出力が上限（{} バイト）を超えました", options.limits.output_bytes),
-                        format!(
-                            "printed more than the limit of {} bytes",
-                            options.limits.output_bytes
-                        ),
-                    ),
-                    stderr: result::tail(&run.stderr, 2000),
-                },
-                _ => AssignmentRun::Died {
-                    how: describe_end(&run, &options.limits),
-                    stderr: result::tail(&run.stderr, 2000),
-                },
-            }
+    let _ = std::fs::remove_dir_all(&slot.run);
+    if let Err(e) = std::fs::create_dir_all(&slot.run) {
+        return died(Text::new(format!("作業フォルダ: {e}"), format!("work folder: {e}")));
+    }
+    let job = Job {
+        program: slot.target.join("release").join(WORKER_PACKAGE),
+        args: Vec::new(),
+        workdir: slot.run.clone(),
+        // The worker reads nothing of the kit: its calls bring every input.
+        read_only: Vec::new(),
+        env: vec![("CG_LANG".into(), "en".into())],
+    };
+    let launch = match launcher(&job, &options.limits, options.isolation) {
+        Ok(l) => l,
+        Err(e) => {
+            return died(Text::new(
+                format!("起動できません: {e}"),
+                format!("could not start: {e}"),
+            ));
         }
     };
-    (outcome, started.elapsed())
+    let mut worker =
+        cg_worker::Worker::new(launch.program, launch.args).clear_env().current_dir(launch.workdir);
+    for (k, v) in launch.env {
+        worker = worker.env(k, v);
+    }
+    let (reports, _) = a.reports_in_worker(cg_assign::Which::ALL, worker, options.limits.wall);
+    let runs = reports
+        .into_iter()
+        .map(|r| (r.assignment.clone(), AssignmentRun::Report(r.to_json())))
+        .collect();
+    (runs, Baseline::new(), started.elapsed())
 }
 
 /// Grades one submission in `slot`; returns the result JSON.
 fn grade_one(
     slot: &mut Slot,
-    files: &submission::Files,
+    (files, student): (&submission::Files, &cg_assign::StudentFile),
     stubs: &BTreeMap<String, String>,
     pristine: (&str, &(dyn Fn(&Path) -> bool + Sync)),
     options: &Options,
-    runner: Runner,
+    launcher: Launcher,
 ) -> result::Facts {
     let (pristine, skip) = pristine;
     let mut facts = result::Facts::default();
@@ -566,8 +512,7 @@ fn grade_one(
             return facts;
         }
     }
-    let package =
-        runner_command(&slot.kit, &slot.target, submission::MODULES[0], &options.limits).0;
+    let package = WORKER_PACKAGE;
     let started = Instant::now();
     // Build; replace the modules that do not compile by their stubs; build again.
     loop {
@@ -631,44 +576,9 @@ fn grade_one(
     if facts.fatal.is_some() {
         return facts;
     }
-    let mut run_time = Duration::ZERO;
-    for &m in submission::MODULES {
-        let (run, took) = run_checks(slot, m, &student_toml, options, runner);
-        run_time += took;
-        facts.runs.insert(m.to_owned(), run);
-    }
-    // A run that died left no list of its checks: the module's stub lists them (every check
-    // "not done"), for this student's variant.
-    let died: Vec<&str> = submission::MODULES
-        .iter()
-        .copied()
-        .filter(|m| matches!(facts.runs.get(*m), Some(AssignmentRun::Died { .. })))
-        .collect();
-    if !died.is_empty() {
-        for m in &died {
-            if let Err(e) = write_if_changed(
-                &slot.kit.join(format!("exercises/src/{m}.rs")),
-                stubs[*m].as_bytes(),
-            ) {
-                io_fail(&mut facts, e);
-                return facts;
-            }
-        }
-        let t = Instant::now();
-        if build::cargo_build(&slot.kit, &slot.target, package, options.build_limit)
-            .is_ok_and(|b| b.success)
-        {
-            facts.build = facts.build.map(|b| b + t.elapsed());
-            for m in died {
-                if let (AssignmentRun::Report(r), took) =
-                    run_checks(slot, m, &student_toml, options, runner)
-                {
-                    run_time += took;
-                    facts.baseline.insert(m.to_owned(), result::check_list(&r));
-                }
-            }
-        }
-    }
+    let (runs, baseline, run_time) = run_checks(slot, student, options, launcher);
+    facts.runs = runs;
+    facts.baseline = baseline;
     facts.run = Some(run_time);
     facts
 }
@@ -685,14 +595,15 @@ fn next(queue: &Mutex<VecDeque<Pending>>) -> Option<Pending> {
     queue.lock().ok().and_then(|mut q| q.pop_front())
 }
 
-/// Grades every submission in `options.submissions` with `runner` as the sandbox; writes
+/// Grades every submission in `options.submissions`, each one's functions in a worker started
+/// by `launcher` (the sandbox); writes
 /// `out/<student>.json`, `out/class.csv` and `out/summary.md`; calls `progress` after each.
 ///
 /// # Errors
 /// The submissions folder or the kit could not be read, or the results not written.
 pub fn grade(
     options: &Options,
-    runner: Runner,
+    launcher: Launcher,
     progress: &(dyn Fn(&Graded) + Sync),
 ) -> Result<Vec<Graded>, GradeError> {
     let io = |p: &Path, e: std::io::Error| GradeError::Io(format!("{}: {e}", p.display()));
@@ -763,9 +674,14 @@ pub fn grade(
                         Err(why) => {
                             result::Facts { refused: Some(why.clone()), ..result::Facts::default() }
                         }
-                        Ok((files, _)) => {
-                            grade_one(&mut slot, files, stubs, (pristine, skip), options, runner)
-                        }
+                        Ok((files, student)) => grade_one(
+                            &mut slot,
+                            (files, student),
+                            stubs,
+                            (pristine, skip),
+                            options,
+                            launcher,
+                        ),
                     };
                     let student = p.files.as_ref().ok().map(|(_, s)| s.student.to_string());
                     let value = result::build(
@@ -910,13 +826,7 @@ mod tests {
     }
 
     #[test]
-    fn reports_are_found_after_the_students_own_output() {
-        let json = "[\n  {\n    \"assignment\": \"a1\"\n  }\n]\n";
-        assert_eq!(find_reports(json).unwrap()[0]["assignment"], "a1");
-        let noisy = format!("debug: [1, 2]\n[oops\n{json}");
-        assert_eq!(find_reports(&noisy).unwrap()[0]["assignment"], "a1");
-        assert!(find_reports("[1, 2").is_none());
-        assert!(find_reports("").is_none());
+    fn entry_names_become_file_names() {
         assert_eq!(file_name("../a b.zip"), "_a_b.zip");
         assert_eq!(file_name(""), "_");
     }

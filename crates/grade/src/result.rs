@@ -27,7 +27,7 @@ pub struct Facts {
     pub compile_errors: BTreeMap<String, Vec<String>>,
     /// Each assignment's run.
     pub runs: BTreeMap<String, AssignmentRun>,
-    /// The checks of each assignment whose run died, listed by its stub.
+    /// The checks of each assignment whose run died, as the kit lists them.
     pub baseline: Baseline,
     /// The submission's builds.
     pub build: Option<Duration>,
@@ -107,6 +107,26 @@ fn explain(check: &Value, lang: Lang) -> String {
             check["message"].as_str().unwrap_or(""),
             check["location"].as_str().map(|w| format!(" ({w})")).unwrap_or_default()
         ),
+        "timed_out" => format!(
+            "{}: {} s",
+            l("制限時間を超えました（無限ループ？）", "ran over the time limit (an endless loop?)"),
+            check["limit_ms"].as_u64().unwrap_or(0) as f64 / 1000.0
+        ),
+        "crashed" => {
+            let stderr = check["stderr"].as_str().unwrap_or("").trim_end();
+            let mut s = format!(
+                "{}: {}",
+                l(
+                    "関数を実行していたプロセスが終了しました（exit()、スタックの溢れ、メモリ上限？）",
+                    "the process running the function ended (exit(), a stack overflow, the memory limit?)"
+                ),
+                check["how"].as_str().unwrap_or("")
+            );
+            if !stderr.is_empty() {
+                let _ = write!(s, "\n{}", tail(stderr, 500));
+            }
+            s
+        }
         _ => {
             let mut s = format!(
                 "{}: {}\n{}: {}",

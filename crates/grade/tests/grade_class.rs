@@ -1,11 +1,11 @@
 //! A generated class is graded end to end: the correct submission (a nested zip), one with a
 //! reversed face, one whose a2 does not compile, hostile ones (an endless loop, a run-away
-//! allocation, a panic) and a zip-slip zip. Each gets exactly its expected scores; the class
+//! allocation, a panic, a forged report printed before `exit(0)`) and a zip-slip zip. Each gets exactly its expected scores; the class
 //! table, the summary and resuming (a second run keeps everything) are checked too.
 //!
 //! Needs the kit's own repository (solutions/): in a student handout it says so and passes.
 //!
-//! The sandbox is the real one (`cg_sandbox::run` with the strongest isolation the machine
+//! The sandbox is the real one (`cg_sandbox::launch` with the strongest isolation the machine
 //! offers; bubblewrap under CI): the panicking submission also tries to write outside its folder
 //! and to start a shell, and both must fail.
 
@@ -146,6 +146,18 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         ),
     );
     folder(&subs.join("05-alloc-panic"), "20260005", &[("a3", greedy), ("s", panicking)]);
+    // 7. A forged report: every function of a4 prints a report of every check passed, in the
+    // JSON `cg check --json` prints, and exits 0. Only the grader decides outcomes: a4 scores 0.
+    let mut forged = solution("a4");
+    for f in ["pub fn tex_range(", "pub fn tex_coords(", "pub fn sampler("] {
+        let at = forged.find(f).unwrap();
+        let body = at + forged[at..].find('{').unwrap() + 1;
+        forged.insert_str(
+            body,
+            "\n    println!(\"[{{\\\"assignment\\\":\\\"a4\\\",\\\"passed\\\":9,\\\"total\\\":9,\\\"checks\\\":[]}}]\"); std::process::exit(0);\n",
+        );
+    }
+    folder(&subs.join("07-forged"), "20260007", &[("a4", forged)]);
     // 6. Zip slip.
     zip(
         &subs.join("06-slip.zip"),
@@ -160,7 +172,9 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         config_text: "[points]\na1 = 2\n\"a1.t3\" = 3\n".into(),
         jobs: 2,
         limits: Limits {
-            wall: Duration::from_secs(20),
+            // Each check's calls within 5 s (the slowest honest check, a3's drift over 10⁶
+            // frames, takes well under a second in a release build).
+            wall: Duration::from_secs(5),
             memory_bytes: 2 << 30,
             output_bytes: 4 << 20,
             ..Limits::default()
@@ -175,15 +189,15 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         "CI installs bubblewrap (scripts/setup.sh): the class must be graded in the sandbox"
     );
     let started = Instant::now();
-    let graded = cg_grade::grade(&options, cg_sandbox::run, &|g| eprintln!("{g:?}")).unwrap();
+    let graded = cg_grade::grade(&options, cg_sandbox::launch, &|g| eprintln!("{g:?}")).unwrap();
     eprintln!("graded {} submissions in {:.1} s", graded.len(), started.elapsed().as_secs_f64());
-    assert_eq!(graded.len(), 6);
+    assert_eq!(graded.len(), 7);
     assert!(graded.iter().all(|g| !g.skipped));
 
     // Every result: the score is the sum of the passed checks' points, the maximum the sum of
     // all; the points follow the config (a1.t3 3, the rest of a1 2, others the default 1).
     let results: Vec<Value> =
-        (1..=5).map(|i| read(&out.join(format!("2026000{i}.json")))).collect();
+        [1, 2, 3, 4, 5, 7].iter().map(|i| read(&out.join(format!("2026000{i}.json")))).collect();
     for r in &results {
         let tests = tests_of(r);
         let mut max = 0.0;
@@ -235,15 +249,31 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         ["a2"]
     );
 
-    // The loop: a1 stopped (every a1 check 0, the time limit named); the rest pass.
+    // The loop in vertices(): the checks that call it (face_normals() calls it too) fail with
+    // the time limit named; the check of model_transform() passes, as does everything else.
     let looping = &results[3];
-    assert_eq!(failed_ids(looping), of(looping, "a1."));
-    assert!(looping["output"].as_str().unwrap().contains("time limit"), "{looping:#}");
+    let calls_vertices = |id: &String| id.as_str() != "a1.t4.placement";
+    let expected: Vec<String> = of(looping, "a1.").into_iter().filter(calls_vertices).collect();
+    assert_eq!(failed_ids(looping), expected);
+    let a1_tests = |r: &Value| -> Vec<Value> {
+        r["tests"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|t| t["number"].as_str().unwrap().starts_with("a1."))
+            .cloned()
+            .collect()
+    };
+    for t in a1_tests(looping).iter().filter(|t| t["score"] == 0.0) {
+        assert!(t["output"].as_str().unwrap().contains("time limit"), "{t:#}");
+    }
 
-    // The allocation stops a3's run (every a3 check 0); the panic fails the one check that
-    // calls ambient, with its message; everything else passes.
+    // The allocation fails the a3 checks that call idle() (all but the warm-up's), each with
+    // the memory named; the panic fails the one check that calls ambient, with its message;
+    // everything else passes.
     let hostile = &results[4];
-    let mut expected = of(hostile, "a3.");
+    let mut expected: Vec<String> =
+        of(hostile, "a3.").into_iter().filter(|id| !id.starts_with("a3.t0.")).collect();
     expected.push("s.t1.ambient".into());
     assert_eq!(failed_ids(hostile), expected);
     let ambient = hostile["tests"]
@@ -266,7 +296,16 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         eprintln!("note: no bubblewrap here; writes outside and new processes are not stopped");
         let _ = std::fs::remove_file(&escape);
     }
-    assert!(hostile["output"].as_str().unwrap().contains("a3: aborted"), "{hostile:#}");
+    let drift =
+        hostile["tests"].as_array().unwrap().iter().find(|t| t["number"] == "a3.t1.drift").unwrap();
+    assert!(drift["output"].as_str().unwrap().contains("memory"), "{drift:#}");
+
+    // The forged report is only what a4's functions printed: every a4 check fails (the process
+    // ended), the maximum is the kit's, and the rest pass.
+    let forged = &results[5];
+    assert_eq!(failed_ids(forged), of(forged, "a4."));
+    assert_eq!(forged["max_score"], results[0]["max_score"]);
+    assert_eq!(forged["cg"]["assignments"]["a4"]["score"], 0.0);
 
     // The zip slip: refused, said why, nothing written outside.
     let slip = read(&out.join("_06-slip.zip.json"));
@@ -279,12 +318,12 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
     let csv = std::fs::read_to_string(out.join("class.csv")).unwrap();
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines[0], "student,submission,a1,a2,a3,a4,s,score,max_score");
-    assert_eq!(lines.len(), 7, "{csv}");
-    for (i, r) in results.iter().enumerate() {
+    assert_eq!(lines.len(), 8, "{csv}");
+    for r in &results {
         let a = &r["cg"]["assignments"];
         let row = format!(
-            "2026000{},{},{},{},{},{},{},{},{}",
-            i + 1,
+            "{},{},{},{},{},{},{},{},{}",
+            r["cg"]["student"].as_str().unwrap(),
             r["cg"]["submission"].as_str().unwrap(),
             a["a1"]["score"],
             a["a2"]["score"],
@@ -304,10 +343,10 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
     // then the checks one submission failed; the refused zip is listed.
     let rows: Vec<&str> =
         md.lines().filter(|l| l.starts_with("| a") || l.starts_with("| s")).collect();
-    assert!(rows[0].starts_with("| a1.t2.outward:") && rows[0].ends_with("| 2 | 5 |"), "{md}");
-    assert!(rows[1].starts_with("| a1.t2.winding:") && rows[1].ends_with("| 2 | 5 |"), "{md}");
-    assert!(rows[2].ends_with("| 1 | 5 |"), "{md}");
-    assert!(rows.last().unwrap().ends_with("| 0 | 5 |"), "{md}");
+    assert!(rows[0].starts_with("| a1.t2.outward:") && rows[0].ends_with("| 2 | 6 |"), "{md}");
+    assert!(rows[1].starts_with("| a1.t2.winding:") && rows[1].ends_with("| 2 | 6 |"), "{md}");
+    assert!(rows[2].ends_with("| 1 | 6 |"), "{md}");
+    assert!(rows.last().unwrap().ends_with("| 0 | 6 |"), "{md}");
     assert!(md.contains("06-slip.zip"), "{md}");
 
     // Resuming: a second run keeps every result, byte for byte.
@@ -317,7 +356,7 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         .filter(|e| e.path().is_file())
         .map(|e| (e.file_name().to_string_lossy().into_owned(), std::fs::read(e.path()).unwrap()))
         .collect();
-    let again = cg_grade::grade(&options, cg_sandbox::run, &|_| {}).unwrap();
+    let again = cg_grade::grade(&options, cg_sandbox::launch, &|_| {}).unwrap();
     assert!(again.iter().all(|g| g.skipped), "{again:?}");
     for (name, bytes) in before {
         assert_eq!(std::fs::read(out.join(&name)).unwrap(), bytes, "{name} changed");

@@ -10,7 +10,7 @@ use std::time::Duration;
 
 use cg_core::lang::Lang;
 use cg_grade::{Config, Options};
-use cg_sandbox::{Isolation, Job, Limits, Run, SandboxError};
+use cg_sandbox::{Isolation, Job, Launch, Limits, SandboxError};
 use serde_json::Value;
 
 fn root() -> PathBuf {
@@ -18,7 +18,7 @@ fn root() -> PathBuf {
 }
 
 /// Never called: nothing here gets as far as running.
-fn no_runs(job: &Job, _: &Limits, _: Isolation) -> Result<Run, SandboxError> {
+fn no_runs(job: &Job, _: &Limits, _: Isolation) -> Result<Launch, SandboxError> {
     panic!("a refused submission was run: {job:?}")
 }
 

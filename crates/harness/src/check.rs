@@ -28,6 +28,7 @@ use cg_core::lang::Lang;
 use serde::Serialize;
 
 use crate::text::Text;
+use cg_worker::CallError;
 
 /// Why a check failed, in the words a student needs — every part in Japanese and English
 /// (numbers and names convert from a plain string, the same in both languages).
@@ -95,6 +96,100 @@ pub enum Outcome {
         /// `file:line:column` of the panic, when known.
         location: Option<String>,
     },
+    /// The student's function ran past the check's time limit (an endless loop?); the worker
+    /// running it was stopped, and the other checks went on in a fresh one.
+    TimedOut {
+        /// The check's time limit, in milliseconds.
+        limit_ms: u64,
+    },
+    /// The worker running the student's function ended during the call: an abort, a stack
+    /// overflow, the memory limit, an `exit()`; or its reply did not read.
+    Crashed {
+        /// How it ended, as the system says it (`signal: 6 (SIGABRT)`, `exit status: 0`).
+        how: String,
+        /// The end of what it wrote on stderr.
+        stderr: String,
+    },
+}
+
+impl Outcome {
+    /// The outcome of a call of the student's function that gave no value ([`CallError`]).
+    #[must_use]
+    pub fn of_call(error: &CallError) -> Outcome {
+        match error {
+            CallError::Panicked { message, location } => {
+                Outcome::of_panic(message.clone(), location.clone())
+            }
+            CallError::TimedOut(limit) => {
+                Outcome::TimedOut { limit_ms: u64::try_from(limit.as_millis()).unwrap_or(u64::MAX) }
+            }
+            CallError::Crashed { status, stderr } => {
+                Outcome::Crashed { how: status.clone(), stderr: stderr.clone() }
+            }
+            CallError::Broken(why) => Outcome::Crashed { how: why.clone(), stderr: String::new() },
+        }
+    }
+
+    /// A panic's outcome: [`Outcome::NotDone`] for a stub's `todo!()` or `unimplemented!()`,
+    /// [`Outcome::Panicked`] for any other.
+    #[must_use]
+    pub fn of_panic(message: String, location: Option<String>) -> Outcome {
+        if let Some(rest) = message.strip_prefix("not yet implemented") {
+            Outcome::NotDone { message: rest.trim_start_matches(':').trim().to_owned() }
+        } else if let Some(rest) = message.strip_prefix("not implemented") {
+            Outcome::NotDone { message: rest.trim_start_matches(':').trim().to_owned() }
+        } else {
+            Outcome::Panicked { message, location }
+        }
+    }
+
+    /// What a student's function that gave no value ended with, in one line of both languages
+    /// (`None` for [`Outcome::Pass`] and [`Outcome::Fail`]).
+    #[must_use]
+    pub fn describe(&self) -> Option<Text> {
+        Some(match self {
+            Outcome::Pass | Outcome::Fail(_) => return None,
+            Outcome::NotDone { message } => Text::new(
+                format!("まだです: {}", stub_message(message, Lang::Ja)),
+                format!("not done yet: {}", stub_message(message, Lang::En)),
+            ),
+            Outcome::Panicked { message, location } => {
+                let at = location.as_ref().map(|l| format!(" ({l})")).unwrap_or_default();
+                Text::new(
+                    format!("プログラムが異常終了しました（panic）: {message}{at}"),
+                    format!("your code panicked: {message}{at}"),
+                )
+            }
+            Outcome::TimedOut { limit_ms } => {
+                let seconds = seconds(*limit_ms);
+                Text::new(
+                    format!(
+                        "制限時間 {seconds} 秒を超えても終わらないため止めました。無限ループになっていないか確認してください。"
+                    ),
+                    format!(
+                        "stopped after the time limit of {seconds} s: does your code loop forever?"
+                    ),
+                )
+            }
+            Outcome::Crashed { how: status, .. } => Text::new(
+                format!(
+                    "あなたの関数を実行していたプロセスが途中で終了しました（{status}）。exit() の呼び出し、スタックの溢れ（深すぎる再帰）、メモリの使いすぎを確認してください。"
+                ),
+                format!(
+                    "the process running your function ended during the call ({status}): look for a call of exit(), a stack overflow (recursion too deep) or too much memory"
+                ),
+            ),
+        })
+    }
+}
+
+/// Milliseconds as seconds, without a fraction when there is none.
+fn seconds(ms: u64) -> String {
+    if ms.is_multiple_of(1000) {
+        (ms / 1000).to_string()
+    } else {
+        format!("{:.1}", ms as f64 / 1000.0)
+    }
 }
 
 /// One check's result.
@@ -145,17 +240,22 @@ fn install_hook() {
     });
 }
 
-/// Runs one check, `id` (`a1.t2.closed`; its task, `a1.t2`, is derived from it). `body` returns `Ok(())` or the [`Failure`] it found; a `todo!()` or
-/// `unimplemented!()` inside it (a stub not written yet) becomes [`Outcome::NotDone`], any other
-/// panic [`Outcome::Panicked`] with its message and location. Nothing is printed for those
-/// panics; other threads' panics print as usual.
+/// Runs one check, `id` (`a1.t2.closed`; its task, `a1.t2`, is derived from it). `body` returns
+/// `Ok(())` or the [`Failure`] it found; a `todo!()` or `unimplemented!()` inside it (a stub not
+/// written yet) becomes [`Outcome::NotDone`], any other panic [`Outcome::Panicked`] with its
+/// message and location. Nothing is printed for those panics; other threads' panics print as
+/// usual. When the student's functions run in a worker (`cg_worker::proxy`), the check's calls
+/// share one time budget, and a call that gave no value ends the check with
+/// [`Outcome::of_call`].
 pub fn run(id: &str, title: Text, body: impl FnOnce() -> Result<(), Failure>) -> CheckResult {
     install_hook();
     if let Ok(mut current) = CURRENT.lock() {
         *current = Some((id.to_owned(), Instant::now()));
     }
     let was_in_check = IN_CHECK.with(|c| c.replace(true));
+    cg_worker::proxy::begin_check();
     let result = panic::catch_unwind(AssertUnwindSafe(body));
+    cg_worker::proxy::end_check();
     IN_CHECK.with(|c| c.set(was_in_check));
     if let Ok(mut current) = CURRENT.lock() {
         *current = None;
@@ -164,18 +264,16 @@ pub fn run(id: &str, title: Text, body: impl FnOnce() -> Result<(), Failure>) ->
         Ok(Ok(())) => Outcome::Pass,
         Ok(Err(failure)) => Outcome::Fail(failure),
         Err(payload) => {
-            let message = payload
-                .downcast_ref::<String>()
-                .cloned()
-                .or_else(|| payload.downcast_ref::<&str>().map(|s| (*s).to_owned()))
-                .unwrap_or_else(|| "(no message)".to_owned());
             let location = PANIC_LOCATION.with(|p| p.borrow_mut().take());
-            if let Some(rest) = message.strip_prefix("not yet implemented") {
-                Outcome::NotDone { message: rest.trim_start_matches(':').trim().to_owned() }
-            } else if let Some(rest) = message.strip_prefix("not implemented") {
-                Outcome::NotDone { message: rest.trim_start_matches(':').trim().to_owned() }
+            if let Some(error) = payload.downcast_ref::<CallError>() {
+                Outcome::of_call(error)
             } else {
-                Outcome::Panicked { message, location }
+                let message = payload
+                    .downcast_ref::<String>()
+                    .cloned()
+                    .or_else(|| payload.downcast_ref::<&str>().map(|s| (*s).to_owned()))
+                    .unwrap_or_else(|| "(no message)".to_owned());
+                Outcome::of_panic(message, location)
             }
         }
     };
@@ -306,10 +404,10 @@ impl Report {
         self.tasks_where(|o| matches!(o, Outcome::NotDone { .. }))
     }
 
-    /// The tasks with at least one failing or panicking check, in order.
+    /// The tasks with at least one failing, panicking, timed-out or crashed check, in order.
     #[must_use]
     pub fn tasks_failing(&self) -> Vec<&str> {
-        self.tasks_where(|o| matches!(o, Outcome::Fail(_) | Outcome::Panicked { .. }))
+        self.tasks_where(|o| !matches!(o, Outcome::Pass | Outcome::NotDone { .. }))
     }
 
     fn tasks_where(&self, pick: impl Fn(&Outcome) -> bool) -> Vec<&str> {
@@ -334,7 +432,9 @@ impl Report {
                 Outcome::Pass => ("✓", None),
                 Outcome::Fail(f) => ("✗", Some(f)),
                 Outcome::NotDone { .. } => ("…", None),
-                Outcome::Panicked { .. } => ("!", None),
+                Outcome::Panicked { .. } | Outcome::TimedOut { .. } | Outcome::Crashed { .. } => {
+                    ("!", None)
+                }
             };
             let _ = writeln!(out, "  {mark} {:<width$}  {}", c.id, c.title.get(lang));
             match &c.outcome {
@@ -354,6 +454,18 @@ impl Report {
                     );
                     if let Some(l) = location {
                         let _ = writeln!(out, "      {}: {l}", t("場所", "at"));
+                    }
+                }
+                Outcome::TimedOut { .. } | Outcome::Crashed { .. } => {
+                    if let Some(text) = c.outcome.describe() {
+                        let _ = writeln!(out, "      {}", text.get(lang));
+                    }
+                    if let Outcome::Crashed { stderr, .. } = &c.outcome {
+                        for line in
+                            stderr.lines().rev().take(5).collect::<Vec<_>>().into_iter().rev()
+                        {
+                            let _ = writeln!(out, "        | {line}");
+                        }
                     }
                 }
                 _ => {}

@@ -52,6 +52,10 @@ impl Missing {
                     format!("{function} panicked: {message}{at}"),
                 )
             }
+            other @ (Outcome::TimedOut { .. } | Outcome::Crashed { .. }) => {
+                let text = other.describe().unwrap_or_default();
+                Text::new(format!("{function}: {}", text.ja), format!("{function}: {}", text.en))
+            }
             Outcome::Pass | Outcome::Fail(_) => Text::new(
                 format!("{function} の結果が得られませんでした"),
                 format!("{function} gave no result"),

@@ -299,16 +299,8 @@ const LIBRARY_DIRS: [&str; 8] =
 /// outside the process group still holds its pipes (possible only under [`Isolation::Limits`]).
 const OUTPUT_GRACE: Duration = Duration::from_millis(500);
 
-/// Runs `job` under `limits` with `isolation`.
-///
-/// The program's stdin is empty (closed under bubblewrap); its stdout and stderr are captured (up to
-/// [`Limits::output_bytes`] each). Returns once the program has ended (or was killed at the
-/// wall-clock limit) and its output is read.
-///
-/// # Errors
-/// The program could not be started at all: it is not a file, the work folder or a read-only
-/// folder does not exist, or `bwrap` (for [`Isolation::Bubblewrap`]) is missing.
-pub fn run(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Run, SandboxError> {
+/// The command line of `job` under `limits` with `isolation` (see [`run`]'s errors).
+fn prepare(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Prepared, SandboxError> {
     let program = job
         .program
         .canonicalize()
@@ -366,6 +358,74 @@ pub fn run(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Run, Sand
         Isolation::Bubblewrap => no_new_processes_filter(),
         Isolation::Limits => None,
     };
+    Ok(Prepared { argv, workdir, env, filter })
+}
+
+/// A long-lived program's command line in the sandbox, for a caller that speaks to it over its
+/// stdin and stdout (the worker of the student's functions, `cg-worker`): the same walls as
+/// [`run`] (`prlimit`, bubblewrap, the seccomp filter), with stdin left to the caller. Start it
+/// with the environment cleared and [`Launch::env`] set; stop it by killing it (bubblewrap
+/// takes down everything inside with it, `--die-with-parent`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Launch {
+    /// The program to start.
+    pub program: PathBuf,
+    /// Its arguments.
+    pub args: Vec<OsString>,
+    /// Its whole environment.
+    pub env: Vec<(String, String)>,
+    /// The folder to start it in.
+    pub workdir: PathBuf,
+}
+
+/// `job` under `limits` with `isolation`, as a [`Launch`]. The wall clock is the caller's
+/// ([`Limits::wall`] is not applied here), and so is the output. Under bubblewrap the seccomp
+/// filter goes to `bwrap` through a file, `<workdir>.seccomp`, opened on file descriptor 3 by
+/// `/bin/sh` (`exec … 3<file`), so the program's stdin is free.
+///
+/// # Errors
+/// As [`run`], or the filter's file could not be written.
+pub fn launch(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Launch, SandboxError> {
+    let Prepared { mut argv, workdir, env, filter } = prepare(job, limits, isolation)?;
+    let Some(filter) = filter else {
+        let program = PathBuf::from(argv.remove(0));
+        return Ok(Launch { program, args: argv, env, workdir });
+    };
+    let file = workdir.with_extension("seccomp");
+    std::fs::write(&file, filter)
+        .map_err(|e| start_error(&job.program, format!("{}: {e}", file.display())))?;
+    if let Some(i) = argv.windows(2).position(|w| w[0] == "--seccomp" && w[1] == "0") {
+        argv[i + 1] = "3".into();
+    }
+    let mut args: Vec<OsString> =
+        vec!["-c".into(), "exec \"$@\" 3<\"$0\"".into(), file.into_os_string()];
+    args.extend(argv);
+    Ok(Launch { program: PathBuf::from("/bin/sh"), args, env, workdir })
+}
+
+/// A run's command line, before it starts.
+struct Prepared {
+    /// The program (`prlimit`, `bwrap` or the job's program) and its arguments.
+    argv: Vec<OsString>,
+    /// The work folder, canonical.
+    workdir: PathBuf,
+    /// The environment (nothing else is inherited).
+    env: Vec<(String, String)>,
+    /// The seccomp filter `bwrap --seccomp 0` reads on its stdin, when there is one.
+    filter: Option<Vec<u8>>,
+}
+
+/// Runs `job` under `limits` with `isolation`.
+///
+/// The program's stdin is empty (closed under bubblewrap); its stdout and stderr are captured (up to
+/// [`Limits::output_bytes`] each). Returns once the program has ended (or was killed at the
+/// wall-clock limit) and its output is read.
+///
+/// # Errors
+/// The program could not be started at all: it is not a file, the work folder or a read-only
+/// folder does not exist, or `bwrap` (for [`Isolation::Bubblewrap`]) is missing.
+pub fn run(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Run, SandboxError> {
+    let Prepared { argv, workdir, env, filter } = prepare(job, limits, isolation)?;
     let mut command = Command::new(&argv[0]);
     command
         .args(&argv[1..])

@@ -1,13 +1,18 @@
 //! The trusted side: start a worker, call its functions one at a time, each within a time
 //! budget; a call that runs over, or a worker that dies, fails that call alone.
 
+use std::ffi::OsString;
 use std::io::{BufReader, Read, Write};
 use std::path::PathBuf;
 use std::process::{Child, ChildStdin, Command, Stdio};
 use std::sync::mpsc::{Receiver, RecvTimeoutError, channel};
+use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
-use crate::{Call, Reply, frame};
+use crate::{Call, Reply, decode, encode, frame, from_value, to_value};
+
+/// How much of the end of a worker's stderr is kept.
+pub const STDERR_TAIL: usize = 2000;
 
 /// Why a call gave no value.
 #[derive(Clone, Debug, PartialEq)]
@@ -37,7 +42,10 @@ pub enum CallError {
 /// A running worker and what is needed to start another.
 pub struct Worker {
     program: PathBuf,
-    args: Vec<String>,
+    args: Vec<OsString>,
+    env: Vec<(String, String)>,
+    clear_env: bool,
+    dir: Option<PathBuf>,
     running: Option<Running>,
     /// What the student's functions printed on stdout, in order.
     pub printed: Vec<u8>,
@@ -46,6 +54,9 @@ pub struct Worker {
 struct Running {
     child: Child,
     stdin: ChildStdin,
+    /// The end of what it wrote on stderr (at most [`STDERR_TAIL`] bytes, read on a thread so
+    /// that a worker printing without end never blocks on a full pipe).
+    stderr: Arc<Mutex<Vec<u8>>>,
     /// Each frame read from the worker's stdout (payload or end, and the prints before it).
     replies: Receiver<std::io::Result<frame::Read>>,
 }
@@ -57,24 +68,80 @@ impl std::fmt::Debug for Worker {
 }
 
 impl Worker {
-    /// A worker that runs `program args…` (started at the first call).
+    /// A worker that runs `program args…` (started at the first call), with `RUST_BACKTRACE=0`
+    /// (a crash's stderr is its message, not a backtrace of the worker's loop).
     #[must_use]
-    pub fn new(program: impl Into<PathBuf>, args: Vec<String>) -> Worker {
-        Worker { program: program.into(), args, running: None, printed: Vec::new() }
+    pub fn new<A: Into<OsString>>(
+        program: impl Into<PathBuf>,
+        args: impl IntoIterator<Item = A>,
+    ) -> Worker {
+        Worker {
+            program: program.into(),
+            args: args.into_iter().map(Into::into).collect(),
+            env: vec![("RUST_BACKTRACE".to_owned(), "0".to_owned())],
+            clear_env: false,
+            dir: None,
+            running: None,
+            printed: Vec::new(),
+        }
+    }
+
+    /// The same worker started with only the variables given by [`Worker::env`] (a sandbox's
+    /// launch line, which sets the whole environment).
+    #[must_use]
+    pub fn clear_env(mut self) -> Worker {
+        self.clear_env = true;
+        self
+    }
+
+    /// The same worker started in `dir`.
+    #[must_use]
+    pub fn current_dir(mut self, dir: impl Into<PathBuf>) -> Worker {
+        self.dir = Some(dir.into());
+        self
+    }
+
+    /// The same worker with `key=value` added to its environment.
+    #[must_use]
+    pub fn env(mut self, key: impl Into<String>, value: impl Into<String>) -> Worker {
+        self.env.push((key.into(), value.into()));
+        self
     }
 
     fn start(&mut self) -> Result<&mut Running, CallError> {
         if self.running.is_none() {
-            let mut child = Command::new(&self.program)
+            let mut command = Command::new(&self.program);
+            if self.clear_env {
+                command.env_clear();
+            }
+            if let Some(dir) = &self.dir {
+                command.current_dir(dir);
+            }
+            let mut child = command
                 .args(&self.args)
+                .envs(self.env.iter().map(|(k, v)| (k, v)))
                 .stdin(Stdio::piped())
                 .stdout(Stdio::piped())
                 .stderr(Stdio::piped())
                 .spawn()
                 .map_err(|e| CallError::Broken(format!("{}: {e}", self.program.display())))?;
-            let (Some(stdin), Some(stdout)) = (child.stdin.take(), child.stdout.take()) else {
+            let (Some(stdin), Some(stdout), Some(mut err)) =
+                (child.stdin.take(), child.stdout.take(), child.stderr.take())
+            else {
                 return Err(CallError::Broken("no pipes to the worker".to_owned()));
             };
+            let stderr = Arc::new(Mutex::new(Vec::new()));
+            let tail = Arc::clone(&stderr);
+            std::thread::spawn(move || {
+                let mut buf = [0u8; 4096];
+                while let Ok(n @ 1..) = err.read(&mut buf) {
+                    if let Ok(mut t) = tail.lock() {
+                        t.extend_from_slice(&buf[..n]);
+                        let excess = t.len().saturating_sub(STDERR_TAIL);
+                        t.drain(..excess);
+                    }
+                }
+            });
             let (send, replies) = channel();
             std::thread::spawn(move || {
                 let mut out = BufReader::new(stdout);
@@ -86,7 +153,7 @@ impl Worker {
                     }
                 }
             });
-            self.running = Some(Running { child, stdin, replies });
+            self.running = Some(Running { child, stdin, stderr, replies });
         }
         self.running.as_mut().ok_or_else(|| CallError::Broken("not started".to_owned()))
     }
@@ -110,9 +177,9 @@ impl Worker {
     {
         let call = Call {
             function: function.to_owned(),
-            args: serde_json::to_value(args).map_err(|e| CallError::Broken(e.to_string()))?,
+            args: to_value(args).map_err(CallError::Broken)?,
         };
-        let bytes = serde_json::to_vec(&call).map_err(|e| CallError::Broken(e.to_string()))?;
+        let bytes = encode(&call).map_err(CallError::Broken)?;
         let running = self.start()?;
         let sent = frame::write(&mut running.stdin, &bytes);
         let answer = match sent {
@@ -121,11 +188,11 @@ impl Worker {
         };
         let payload = match answer {
             Ok(Ok((Some(payload), printed))) => {
-                self.printed.extend_from_slice(&printed);
+                self.keep_printed(&printed);
                 payload
             }
             Ok(Ok((None, printed))) => {
-                self.printed.extend_from_slice(&printed);
+                self.keep_printed(&printed);
                 return Err(self.crashed());
             }
             Ok(Err(e)) => {
@@ -138,8 +205,8 @@ impl Worker {
             }
             Err(RecvTimeoutError::Disconnected) => return Err(self.crashed()),
         };
-        match serde_json::from_slice::<Reply>(&payload) {
-            Ok(Reply::Value(v)) => serde_json::from_value(v).map_err(|e| {
+        match decode::<Reply>(&payload) {
+            Ok(Reply::Value(v)) => from_value(&v).map_err(|e| {
                 CallError::Broken(format!("{function} returned a value of another type: {e}"))
             }),
             Ok(Reply::Panicked { message, location }) => {
@@ -154,19 +221,25 @@ impl Worker {
         }
     }
 
+    /// Keeps what the student printed, up to [`frame::MAX_PRINTED`] bytes in all.
+    fn keep_printed(&mut self, printed: &[u8]) {
+        let room = frame::MAX_PRINTED.saturating_sub(self.printed.len());
+        self.printed.extend_from_slice(&printed[..printed.len().min(room)]);
+    }
+
     /// The worker ended during a call: how, with the end of its stderr.
     fn crashed(&mut self) -> CallError {
         let Some(mut r) = self.running.take() else {
             return CallError::Broken("the worker is not running".to_owned());
         };
         let status = r.child.wait().map_or_else(|e| e.to_string(), |s| s.to_string());
-        let mut stderr = String::new();
-        if let Some(mut e) = r.child.stderr.take() {
-            let _ = e.read_to_string(&mut stderr);
+        // The reader thread ends with the pipe; give it a moment to take the last bytes.
+        let until = std::time::Instant::now() + Duration::from_millis(200);
+        while Arc::strong_count(&r.stderr) > 1 && std::time::Instant::now() < until {
+            std::thread::sleep(Duration::from_millis(5));
         }
-        let tail: String =
-            stderr.chars().rev().take(2000).collect::<Vec<_>>().into_iter().rev().collect();
-        CallError::Crashed { status, stderr: tail }
+        let bytes = r.stderr.lock().map(|t| t.clone()).unwrap_or_default();
+        CallError::Crashed { status, stderr: String::from_utf8_lossy(&bytes).into_owned() }
     }
 }
 

@@ -21,6 +21,7 @@
 
 pub mod client;
 pub mod frame;
+pub mod proxy;
 pub mod serve;
 pub mod tables;
 
@@ -29,20 +30,58 @@ pub use serve::{Handler, serve};
 
 use serde::{Deserialize, Serialize};
 
-/// One call: the function's name (`a1.vertices`) and its arguments as JSON.
+/// A value on the pipe: CBOR, which carries what a student's function may return and JSON
+/// cannot (NaN, ±∞) bit for bit, and reads the kit's tagged enums as JSON does.
+pub type Value = ciborium::Value;
+
+/// One call: the function's name (`a1.vertices`) and its arguments.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Call {
     /// The function, `<assignment>.<name>`.
     pub function: String,
     /// Its arguments, as the function's handler reads them.
-    pub args: serde_json::Value,
+    pub args: Value,
+}
+
+/// `value` as a pipe [`Value`].
+///
+/// # Errors
+/// It does not serialise (a map with keys that are no strings, say).
+pub fn to_value(value: &impl Serialize) -> Result<Value, String> {
+    Value::serialized(value).map_err(|e| e.to_string())
+}
+
+/// A pipe [`Value`] read as `T`.
+///
+/// # Errors
+/// It is not a `T`.
+pub fn from_value<T: serde::de::DeserializeOwned>(value: &Value) -> Result<T, String> {
+    value.deserialized().map_err(|e| e.to_string())
+}
+
+/// A call or reply as the bytes of a frame.
+///
+/// # Errors
+/// It does not serialise.
+pub fn encode(message: &impl Serialize) -> Result<Vec<u8>, String> {
+    let mut bytes = Vec::new();
+    ciborium::into_writer(message, &mut bytes).map_err(|e| e.to_string())?;
+    Ok(bytes)
+}
+
+/// A frame's bytes as a call or reply.
+///
+/// # Errors
+/// They do not read as a `T`.
+pub fn decode<T: serde::de::DeserializeOwned>(bytes: &[u8]) -> Result<T, String> {
+    ciborium::from_reader(bytes).map_err(|e| e.to_string())
 }
 
 /// The worker's answer to a [`Call`].
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Reply {
-    /// What the function returned (and what it changed through `&mut` arguments), as JSON.
-    Value(serde_json::Value),
+    /// What the function returned (and what it changed through `&mut` arguments).
+    Value(Value),
     /// The function panicked: a `todo!()` (`not yet implemented: …`) or any other panic.
     Panicked {
         /// The panic's message.

@@ -5,11 +5,11 @@ use std::cell::RefCell;
 use std::io::{self, BufReader};
 use std::panic::{self, AssertUnwindSafe};
 
-use crate::{Call, Reply, frame};
+use crate::{Call, Reply, Value, decode, encode, frame, from_value, to_value};
 
-/// A function the worker offers: its arguments as JSON in, its result as JSON out (`Err`: the
+/// A function the worker offers: its arguments in, its result out, as pipe values (`Err`: the
 /// arguments did not read as the function's).
-pub type Handler = Box<dyn Fn(serde_json::Value) -> Result<serde_json::Value, String>>;
+pub type Handler = Box<dyn Fn(Value) -> Result<Value, String>>;
 
 thread_local! {
     /// The location of the last panic on this thread.
@@ -31,19 +31,19 @@ pub fn serve(handlers: &[(&str, Handler)]) -> io::Result<()> {
     loop {
         let (payload, _) = frame::read(&mut input)?;
         let Some(payload) = payload else { return Ok(()) };
-        let reply = match serde_json::from_slice::<Call>(&payload) {
+        let reply = match decode::<Call>(&payload) {
             Err(e) => Reply::BadArguments(format!("not a call: {e}")),
             Ok(call) => match handlers.iter().find(|(name, _)| *name == call.function) {
                 None => Reply::Unknown(call.function),
                 Some((_, handler)) => run(handler, call.args),
             },
         };
-        let bytes = serde_json::to_vec(&reply).map_err(io::Error::other)?;
+        let bytes = encode(&reply).map_err(io::Error::other)?;
         frame::write(&mut io::stdout().lock(), &bytes)?;
     }
 }
 
-fn run(handler: &Handler, args: serde_json::Value) -> Reply {
+fn run(handler: &Handler, args: Value) -> Reply {
     match panic::catch_unwind(AssertUnwindSafe(|| handler(args))) {
         Ok(Ok(value)) => Reply::Value(value),
         Ok(Err(why)) => Reply::BadArguments(why),
@@ -66,7 +66,7 @@ where
     R: serde::Serialize,
 {
     Box::new(move |args| {
-        let a: A = serde_json::from_value(args).map_err(|e| e.to_string())?;
-        serde_json::to_value(f(a)).map_err(|e| e.to_string())
+        let a: A = from_value(&args)?;
+        to_value(&f(a))
     })
 }

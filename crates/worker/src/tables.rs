@@ -391,3 +391,22 @@ impl<'de> Deserialize<'de> for A3Spec {
         Ok(A3Spec(spec))
     }
 }
+
+/// Every assignment's table from a crate laid out like `exercises/` (`cg_exercises` or
+/// `cg_solutions`): `tables!(cg_exercises)` is the handlers of `cg_exercises::<id>::
+/// implementation()` for each assignment, in one list.
+#[macro_export]
+macro_rules! tables {
+    ($krate:ident) => {
+        [
+            $crate::tables::a1($krate::a1::implementation()),
+            $crate::tables::a2($krate::a2::implementation()),
+            $crate::tables::a3($krate::a3::implementation()),
+            $crate::tables::a4($krate::a4::implementation()),
+            $crate::tables::s($krate::s::implementation()),
+        ]
+        .into_iter()
+        .flatten()
+        .collect::<::std::vec::Vec<_>>()
+    };
+}

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 use cg_worker::{CallError, Worker};
 
 fn worker() -> Worker {
-    Worker::new(env!("CARGO_BIN_EXE_cg-worker-fixture"), Vec::new())
+    Worker::new(env!("CARGO_BIN_EXE_cg-worker-fixture"), Vec::<String>::new())
 }
 
 const BUDGET: Duration = Duration::from_secs(5);

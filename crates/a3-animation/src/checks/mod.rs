@@ -212,6 +212,15 @@ fn each_frame(
     frames: impl IntoIterator<Item = u64>,
     mut visit: impl FnMut(u64, &Gl) -> Result<(), Failure>,
 ) -> Result<(), Failure> {
+    // The student's functions in a worker: every frame in one call, the same calls in the same
+    // order (the worker's `a3.frames`), not one round trip per frame.
+    if cg_worker::proxy::active() {
+        let frames: Vec<u64> = frames.into_iter().collect();
+        for (&frame, (_, rec)) in frames.iter().zip(cg_worker::proxy::a3_frames(spec, &frames)) {
+            visit(frame, &crate::replay(&rec))?;
+        }
+        return Ok(());
+    }
     let mut state = State::new();
     let mut done = 0;
     for frame in frames {

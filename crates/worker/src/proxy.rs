@@ -1,0 +1,251 @@
+//! The trusted side's stand-ins for the student's functions: each assignment's `Impl` whose
+//! functions call the worker ([`a1()`] … [`s()`]), so that the kit's checks, which take an
+//! `Impl`, run unchanged in a process that does not link the student's code.
+//!
+//! [`with_worker`] makes a [`Worker`] the current one on this thread for the length of a
+//! closure; every stand-in calls it. A call that gives no value raises its [`CallError`] as a
+//! panic payload (`std::panic::panic_any`), which `cg_harness::check::run` turns into the
+//! check's outcome: a `todo!()` is "not done yet" as before, a panic is a panic with the
+//! student's own message and location, a call past its budget "timed out", a worker that died
+//! "crashed". Nothing the worker prints is read as a result: a reply is a value of the
+//! function's return type, for the check to judge.
+//!
+//! **Budgets.** A check's calls share one budget, [`Session::per_check`], from the moment the
+//! check starts ([`begin_check`], called by `check::run`); a call outside any check has the
+//! whole budget to itself.
+//!
+//! **Batches.** Where a check would call a function many times (a3's frames, s's pixels), it
+//! asks [`active`] and, when the functions are the worker's, uses one batch call instead
+//! ([`a3_frames`], [`a3_run_idle`], [`shade_pixels`]): the same calls of the student's functions
+//! in the same order, run in the worker, one round trip.
+
+use std::cell::RefCell;
+use std::time::{Duration, Instant};
+
+use cg_student::gl::Gl;
+use cg_student::glam::Vec3;
+use cg_student::s::{Pixel, Shading};
+use cg_student::{Rgb, a1, a2, a3, a4, s};
+use serde::Serialize;
+use serde::de::DeserializeOwned;
+
+use crate::tables::{A3Spec, Queries};
+use crate::{CallError, Worker};
+
+/// The worker the stand-ins call, and the time each check may spend in it.
+#[derive(Debug)]
+pub struct Session {
+    /// The worker.
+    pub worker: Worker,
+    /// The time one check's calls may take together (and one call outside a check).
+    pub per_check: Duration,
+    /// When the running check's budget ends.
+    deadline: Option<Instant>,
+}
+
+thread_local! {
+    static CURRENT: RefCell<Option<Session>> = const { RefCell::new(None) };
+}
+
+/// Runs `f` with `worker` as this thread's current worker (the stand-ins' functions call it),
+/// each check's calls sharing `per_check`; gives the worker back afterwards (with what the
+/// student's code printed in [`Worker::printed`]).
+pub fn with_worker<T>(worker: Worker, per_check: Duration, f: impl FnOnce() -> T) -> (T, Worker) {
+    /// Puts the previous session back, also when `f` panics (the worker is then dropped,
+    /// which stops it).
+    struct Restore(Option<Option<Session>>);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            if let Some(previous) = self.0.take() {
+                CURRENT.with(|c| *c.borrow_mut() = previous);
+            }
+        }
+    }
+    let session = Session { worker, per_check, deadline: None };
+    let restore = Restore(Some(CURRENT.with(|c| c.borrow_mut().replace(session))));
+    let value = f();
+    let session = CURRENT.with(|c| c.borrow_mut().take());
+    drop(restore);
+    match session {
+        Some(session) => (value, session.worker),
+        // `f` cannot take the session: every nested `with_worker` puts it back.
+        None => unreachable!("the session is put back by every nested with_worker"),
+    }
+}
+
+/// Whether the student's functions on this thread are the worker's (inside [`with_worker`]).
+#[must_use]
+pub fn active() -> bool {
+    CURRENT.with(|c| c.borrow().is_some())
+}
+
+/// A check starts: its calls share the session's budget from now on (nothing without a worker).
+pub fn begin_check() {
+    CURRENT.with(|c| {
+        if let Some(s) = c.borrow_mut().as_mut() {
+            s.deadline = Some(Instant::now() + s.per_check);
+        }
+    });
+}
+
+/// The check ended: calls outside a check get the whole budget again.
+pub fn end_check() {
+    CURRENT.with(|c| {
+        if let Some(s) = c.borrow_mut().as_mut() {
+            s.deadline = None;
+        }
+    });
+}
+
+/// Calls `function` in the current worker within the check's budget: its value, or the
+/// [`CallError`] raised as a panic payload.
+///
+/// # Panics
+/// With a [`CallError`] payload when the call gives no value (see the module's documentation).
+pub fn call<A: Serialize, R: DeserializeOwned>(function: &str, args: &A) -> R {
+    let result = CURRENT.with(|c| {
+        let mut current = c.borrow_mut();
+        let Some(session) = current.as_mut() else {
+            return Err(CallError::Broken(format!("{function}: no worker is running")));
+        };
+        let budget = match session.deadline {
+            None => session.per_check,
+            Some(end) => end.saturating_duration_since(Instant::now()),
+        };
+        if budget.is_zero() {
+            return Err(CallError::TimedOut(session.per_check));
+        }
+        match session.worker.call(function, args, budget) {
+            Err(CallError::TimedOut(_)) => Err(CallError::TimedOut(session.per_check)),
+            other => other,
+        }
+    });
+    result.unwrap_or_else(|e| std::panic::panic_any(e))
+}
+
+/// a1's functions, in the worker.
+#[must_use]
+pub fn a1() -> a1::Impl {
+    a1::Impl {
+        vertices: |spec| call("a1.vertices", spec),
+        faces: |spec| call("a1.faces", spec),
+        face_normals: |spec| call("a1.face_normals", spec),
+        model_transform: |spec| call("a1.model_transform", spec),
+    }
+}
+
+/// a2's functions, in the worker (a `&mut` argument is sent, and replaced by what comes back).
+#[must_use]
+pub fn a2() -> a2::Impl {
+    a2::Impl {
+        motion: |spec, state, drag| *state = call("a2.motion", &(spec, &*state, drag)),
+        camera: |gl, state| *gl = call("a2.camera", &(&*gl, state)),
+        display: |gl, state| *gl = call("a2.display", &(&*gl, state)),
+    }
+}
+
+/// a3's functions, in the worker.
+#[must_use]
+pub fn a3() -> a3::Impl {
+    a3::Impl {
+        warmup_display: |gl, t| *gl = call("a3.warmup_display", &(&*gl, t)),
+        idle: |spec, state| *state = call("a3.idle", &(A3Spec(spec.clone()), &*state)),
+        display: |spec, state, gl| {
+            *gl = call("a3.display", &(A3Spec(spec.clone()), state, &*gl));
+        },
+    }
+}
+
+/// a4's functions, in the worker.
+#[must_use]
+pub fn a4() -> a4::Impl {
+    a4::Impl {
+        tex_range: |spec| call("a4.tex_range", spec),
+        tex_coords: |spec, i, j| call("a4.tex_coords", &(spec, i, j)),
+        sampler: || call("a4.sampler", &()),
+    }
+}
+
+/// The shading set's functions, in the worker (`shade_pixel`: [`shade_pixels`] of one pixel).
+#[must_use]
+pub fn s() -> s::Impl {
+    s::Impl {
+        ambient: |ia, ka| call("s.ambient", &(ia, ka)),
+        diffuse: |ii, kd, n, l| call("s.diffuse", &(ii, kd, n, l)),
+        specular: |ii, ks, n, l, v, shininess| call("s.specular", &(ii, ks, n, l, v, shininess)),
+        attenuation: |kc, kl, kq, d| call("s.attenuation", &(kc, kl, kq, d)),
+        spot_factor: |l, axis, cutoff, exponent| {
+            call("s.spot_factor", &(l, axis, cutoff, exponent))
+        },
+        vertex_normals: |mesh| call("s.vertex_normals", mesh),
+        vertex_normals_area: |mesh| call("s.vertex_normals_area", mesh),
+        shade_pixel: |mode, pixel, light| {
+            shade_pixels(mode, std::slice::from_ref(pixel), light).pop().unwrap_or(Vec3::NAN)
+        },
+        reflect: |i, n| call("s.reflect", &(i, n)),
+        refract: |i, n, n1, n2| call("s.refract", &(i, n, n1, n2)),
+    }
+}
+
+/// a3: from the start, `idle` up to each frame count in turn, then `display` on a fresh
+/// recorder: the state and the recording of each frame (the worker's `a3.frames`).
+///
+/// # Panics
+/// With a [`CallError`] payload, as [`call`].
+#[must_use]
+pub fn a3_frames(spec: &a3::Spec, frames: &[u64]) -> Vec<(a3::State, Gl)> {
+    let out: Vec<(a3::State, Gl)> = call("a3.frames", &(A3Spec(spec.clone()), frames));
+    if out.len() != frames.len() {
+        std::panic::panic_any(CallError::Broken(format!(
+            "a3.frames: {} frames for {} asked",
+            out.len(),
+            frames.len()
+        )));
+    }
+    out
+}
+
+/// a3: `idle` called `n` times on `state` (the worker's `a3.run_idle`).
+///
+/// # Panics
+/// With a [`CallError`] payload, as [`call`].
+#[must_use]
+pub fn a3_run_idle(spec: &a3::Spec, state: &a3::State, n: u64) -> a3::State {
+    call("a3.run_idle", &(A3Spec(spec.clone()), state, n))
+}
+
+/// s: `shade_pixel` of each pixel in `mode` with the kit's `light`, in two round trips for any
+/// number of pixels: the worker lists what each pixel asks `light`, the kit lights those points
+/// here, and the worker runs the function again with those answers (see [`crate::tables`]).
+///
+/// # Panics
+/// With a [`CallError`] payload, as [`call`]; a pixel that asked other questions the second
+/// time (a function that is not deterministic) is a [`CallError::Broken`].
+#[must_use]
+pub fn shade_pixels(
+    mode: Shading,
+    pixels: &[Pixel],
+    light: &dyn Fn(Vec3, Vec3) -> Rgb,
+) -> Vec<Rgb> {
+    let queries: Vec<Queries> = call("s.shade_pixels_queries", &(mode, pixels));
+    if queries.len() != pixels.len() {
+        std::panic::panic_any(CallError::Broken(format!(
+            "s.shade_pixels_queries: {} lists for {} pixels",
+            queries.len(),
+            pixels.len()
+        )));
+    }
+    let answers: Vec<Vec<Rgb>> =
+        queries.iter().map(|q| q.iter().map(|&(p, n)| light(p, n)).collect()).collect();
+    let colours: Result<Vec<Rgb>, String> =
+        call("s.shade_pixels", &(mode, pixels, &queries, &answers));
+    match colours {
+        Ok(c) if c.len() == pixels.len() => c,
+        Ok(c) => std::panic::panic_any(CallError::Broken(format!(
+            "s.shade_pixels: {} colours for {} pixels",
+            c.len(),
+            pixels.len()
+        ))),
+        Err(why) => std::panic::panic_any(CallError::Broken(format!("shade_pixel: {why}"))),
+    }
+}
