@@ -73,6 +73,7 @@ fn under_the_sandboxs_launch_line_it_serves_the_same() {
         workdir: dir.clone(),
         read_only: Vec::new(),
         env: Vec::new(),
+        ..Job::default()
     };
     let l = cg_sandbox::launch(&job, &Limits::default(), isolation).unwrap();
     if isolation == Isolation::Bubblewrap {

@@ -1,5 +1,8 @@
 //! Building a slot's kit with a submission's modules: cargo with a time limit, compiler errors
-//! read from `--message-format=json` and put on the module they are in.
+//! read from `--message-format=json` and put on the module they are in. A submission's build
+//! runs in the sandbox ([`cargo_build_sandboxed`]): the toolchain, the crates' sources and the
+//! kit read-only, offline, a cleared environment, no network, memory and time limits, and only
+//! its own target folder writable.
 
 use std::collections::BTreeMap;
 use std::io::Read;
@@ -136,6 +139,115 @@ pub fn cargo_build(
         module_errors,
         other_errors,
         stderr_tail: tail(&stderr, 4000),
+    })
+}
+
+/// The sandbox's limits for a build: the time limit given; 4 GiB of address space for cargo,
+/// rustc and the linker; 512 MiB of `/tmp` (the linker's temporary files); 16 MiB of output.
+#[must_use]
+pub fn build_limits(limit: Duration) -> cg_sandbox::Limits {
+    cg_sandbox::Limits {
+        wall: limit,
+        memory_bytes: 4 << 30,
+        output_bytes: 16 << 20,
+        tmp_bytes: 512 << 20,
+        workdir_bytes: 64 << 20,
+    }
+}
+
+/// Where cargo's home appears inside the sandbox: a folder of the private `/tmp`, so that cargo
+/// can write its lock files, with the real home's `registry` (the crates' sources) bound into
+/// it read-only.
+const SANDBOX_CARGO_HOME: &str = "/tmp/cargo-home";
+
+/// The toolchain's root (`rustc --print sysroot`): `bin/cargo` and `bin/rustc` are the real
+/// programs (not rustup's proxies, which need rustup's own folders).
+fn sysroot() -> std::io::Result<std::path::PathBuf> {
+    let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
+    let out = Command::new(rustc).args(["--print", "sysroot"]).output()?;
+    let text = String::from_utf8_lossy(&out.stdout).trim().to_owned();
+    if !out.status.success() || text.is_empty() {
+        return Err(std::io::Error::other("rustc --print sysroot gave nothing"));
+    }
+    Ok(text.into())
+}
+
+/// cargo's home outside the sandbox: `CARGO_HOME`, else `~/.cargo`.
+fn cargo_home() -> Option<std::path::PathBuf> {
+    std::env::var_os("CARGO_HOME")
+        .map(Into::into)
+        .or_else(|| std::env::var_os("HOME").map(|h| Path::new(&h).join(".cargo")))
+}
+
+/// [`cargo_build`] in the sandbox under `isolation` ([`build_limits`]): cargo and rustc from the
+/// toolchain's root, read-only; the crates' sources read-only; the kit copy read-only (as the
+/// work folder: its files bound into a throwaway folder); `target` the only writable place on
+/// disk; no network, a cleared environment. Under [`cg_sandbox::Isolation::Limits`] (grading with
+/// `--unsafe-no-sandbox`) it is [`cargo_build`] itself.
+///
+/// # Errors
+/// The toolchain could not be found, or the sandbox could not start.
+pub fn cargo_build_sandboxed(
+    kit: &Path,
+    target: &Path,
+    package: &str,
+    limit: Duration,
+    isolation: cg_sandbox::Isolation,
+) -> std::io::Result<BuildOutput> {
+    if isolation != cg_sandbox::Isolation::Bubblewrap {
+        return cargo_build(kit, target, package, limit);
+    }
+    let sysroot = sysroot()?;
+    let bin = sysroot.join("bin");
+    let registry = cargo_home()
+        .map(|h| h.join("registry"))
+        .filter(|r| r.is_dir())
+        .ok_or_else(|| std::io::Error::other("no cargo registry (CARGO_HOME/registry)"))?;
+    std::fs::create_dir_all(target)?;
+    let target = target.canonicalize()?;
+    let path = format!("{}:/usr/bin:/bin", bin.display());
+    let job = cg_sandbox::Job {
+        program: bin.join("cargo"),
+        args: [
+            "build",
+            "--release",
+            "--offline",
+            "--locked",
+            "--message-format=json",
+            "-p",
+            package,
+        ]
+        .map(String::from)
+        .to_vec(),
+        workdir: kit.to_path_buf(),
+        read_only: vec![sysroot.clone()],
+        env: vec![
+            ("PATH".into(), path),
+            ("CARGO_HOME".into(), SANDBOX_CARGO_HOME.into()),
+            ("CARGO_TARGET_DIR".into(), target.display().to_string()),
+            ("CARGO_PROFILE_RELEASE_DEBUG".into(), "0".into()),
+            ("CARGO_TERM_COLOR".into(), "never".into()),
+            ("RUSTC".into(), bin.join("rustc").display().to_string()),
+        ],
+        binds: vec![
+            cg_sandbox::Bind { from: target.clone(), to: target, writable: true },
+            cg_sandbox::Bind {
+                from: registry,
+                to: Path::new(SANDBOX_CARGO_HOME).join("registry"),
+                writable: false,
+            },
+        ],
+        compiler: true,
+    };
+    let run = cg_sandbox::run(&job, &build_limits(limit), isolation)
+        .map_err(|e| std::io::Error::other(e.to_string()))?;
+    let (module_errors, other_errors) = parse_messages(&run.stdout);
+    Ok(BuildOutput {
+        success: run.ended == cg_sandbox::Ended::Exited(0),
+        timed_out: run.ended == cg_sandbox::Ended::TimedOut,
+        module_errors,
+        other_errors,
+        stderr_tail: tail(&run.stderr, 4000),
     })
 }
 

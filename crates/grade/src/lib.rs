@@ -438,6 +438,7 @@ fn run_checks(
         // The worker reads nothing of the kit: its calls bring every input.
         read_only: Vec::new(),
         env: vec![("CG_LANG".into(), "en".into())],
+        ..Job::default()
     };
     let launch = match launcher(&job, &options.limits, options.isolation) {
         Ok(l) => l,
@@ -516,7 +517,13 @@ fn grade_one(
     let started = Instant::now();
     // Build; replace the modules that do not compile by their stubs; build again.
     loop {
-        let b = match build::cargo_build(&slot.kit, &slot.target, package, options.build_limit) {
+        let b = match build::cargo_build_sandboxed(
+            &slot.kit,
+            &slot.target,
+            package,
+            options.build_limit,
+            options.isolation,
+        ) {
             Ok(b) => b,
             Err(e) => {
                 facts.fatal = Some(Text::new(

@@ -151,6 +151,7 @@ fn bubblewrap_works() -> bool {
         workdir: workdir.clone(),
         read_only: Vec::new(),
         env: Vec::new(),
+        ..Job::default()
     };
     let limits = Limits { wall: Duration::from_secs(20), ..Limits::default() };
     let ok = matches!(
@@ -225,8 +226,19 @@ impl Default for Limits {
     }
 }
 
-/// What to run.
+/// A folder seen inside the sandbox at another place than its own (bubblewrap only).
 #[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Bind {
+    /// The folder.
+    pub from: PathBuf,
+    /// Where the program sees it.
+    pub to: PathBuf,
+    /// Whether the program may write it (its writes reach the real folder).
+    pub writable: bool,
+}
+
+/// What to run.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Job {
     /// The program (an absolute path; under bubblewrap it is bound read-only).
     pub program: PathBuf,
@@ -242,6 +254,13 @@ pub struct Job {
     pub read_only: Vec<PathBuf>,
     /// Environment variables it gets (nothing else is inherited but PATH-free basics).
     pub env: Vec<(String, String)>,
+    /// Folders bound in at other places, or writable (bubblewrap only; ignored under
+    /// [`Isolation::Limits`], where the program sees the real file system).
+    pub binds: Vec<Bind>,
+    /// A compiler's run (cargo, rustc and the linker): it may start processes (no seccomp
+    /// filter), and sees `/usr` and `/etc/alternatives` (read-only: the C compiler and linker)
+    /// and its own `/proc`.
+    pub compiler: bool,
 }
 
 /// How a run ended.
@@ -343,8 +362,9 @@ fn prepare(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Prepared,
                 start_error(&job.program, format!("work folder {}: {e}", workdir.display()))
             })?;
             argv.push(bwrap.into());
-            argv.extend(bwrap_args(&program, &workdir, &inputs, &read_only, &env, limits));
-            if no_new_processes_filter().is_some() {
+            let extra = extra_bwrap_args(job);
+            argv.extend(bwrap_args(&program, &workdir, &inputs, &read_only, &env, limits, &extra));
+            if !job.compiler && no_new_processes_filter().is_some() {
                 argv.extend(["--seccomp".into(), "0".into()]);
             }
             argv.push("--".into());
@@ -355,8 +375,8 @@ fn prepare(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Prepared,
     argv.extend(job.args.iter().map(OsString::from));
 
     let filter = match isolation {
-        Isolation::Bubblewrap => no_new_processes_filter(),
-        Isolation::Limits => None,
+        Isolation::Bubblewrap if !job.compiler => no_new_processes_filter(),
+        Isolation::Bubblewrap | Isolation::Limits => None,
     };
     Ok(Prepared { argv, workdir, env, filter })
 }
@@ -520,6 +540,7 @@ fn bwrap_args(
     read_only: &[PathBuf],
     env: &[(String, String)],
     limits: &Limits,
+    extra: &[OsString],
 ) -> Vec<OsString> {
     let mut a: Vec<OsString> = Vec::new();
     let mut push = |items: &[&std::ffi::OsStr]| a.extend(items.iter().map(|s| s.to_os_string()));
@@ -589,7 +610,42 @@ fn bwrap_args(
     for (k, v) in env {
         push(&["--setenv".as_ref(), k.as_ref(), v.as_ref()]);
     }
-    push(&["--remount-ro".as_ref(), "/".as_ref()]);
+    a.extend(extra.iter().cloned());
+    a.push("--remount-ro".into());
+    a.push("/".into());
+    a
+}
+
+/// What a job adds to bubblewrap's mounts (before the root is made read-only): for a compiler,
+/// `/usr`, `/bin`, `/sbin` and `/etc/alternatives` read-only and its own `/proc`; then its [`Job::binds`], outer ones
+/// first, each read-only unless writable.
+fn extra_bwrap_args(job: &Job) -> Vec<OsString> {
+    let mut a: Vec<OsString> = Vec::new();
+    if job.compiler {
+        for dir in ["/usr", "/bin", "/sbin"] {
+            let path = Path::new(dir);
+            match std::fs::symlink_metadata(path) {
+                Ok(m) if m.file_type().is_symlink() => {
+                    if let Ok(target) = std::fs::read_link(path) {
+                        a.extend(["--symlink".into(), target.into_os_string(), dir.into()]);
+                    }
+                }
+                Ok(m) if m.is_dir() => a.extend(["--ro-bind".into(), dir.into(), dir.into()]),
+                _ => {}
+            }
+        }
+        // Debian's `cc` and `ld` are links through /etc/alternatives (only that of /etc).
+        if Path::new("/etc/alternatives").is_dir() {
+            a.extend(["--ro-bind".into(), "/etc/alternatives".into(), "/etc/alternatives".into()]);
+        }
+        a.extend(["--proc".into(), "/proc".into()]);
+    }
+    let mut binds: Vec<&Bind> = job.binds.iter().collect();
+    binds.sort_by_key(|b| b.to.components().count());
+    for b in binds {
+        let how = if b.writable { "--bind" } else { "--ro-bind" };
+        a.extend([how.into(), b.from.clone().into_os_string(), b.to.clone().into_os_string()]);
+    }
     a
 }
 
@@ -773,6 +829,7 @@ mod tests {
             &[PathBuf::from("/k")],
             &[("HOME".into(), "/k/build/work".into())],
             &Limits { tmp_bytes: 1000, workdir_bytes: 0, ..Limits::default() },
+            &[],
         );
         let args: Vec<String> = args.iter().map(|a| a.to_string_lossy().into_owned()).collect();
         let at = |x: &str| args.iter().position(|a| a == x).unwrap();

@@ -41,6 +41,7 @@ fn job(mode: &str, arg: Option<&Path>, workdir: &Dir) -> Job {
         workdir: workdir.0.clone(),
         read_only: Vec::new(),
         env: Vec::new(),
+        ..Job::default()
     }
 }
 
