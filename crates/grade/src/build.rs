@@ -158,6 +158,7 @@ pub fn build_limits(limit: Duration) -> cg_sandbox::Limits {
 /// Where cargo's home appears inside the sandbox: a folder of the private `/tmp`, so that cargo
 /// can write its lock files, with the real home's `registry` (the crates' sources) bound into
 /// it read-only.
+// platform: a path inside the bubblewrap sandbox, used only under Isolation::Bubblewrap (Linux).
 const SANDBOX_CARGO_HOME: &str = "/tmp/cargo-home";
 
 /// The toolchain's root (`rustc --print sysroot`): `bin/cargo` and `bin/rustc` are the real
