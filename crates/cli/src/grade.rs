@@ -21,12 +21,15 @@ pub struct Args {
     /// Submissions graded at once (default: the number of cores) / 同時に採点する数
     #[arg(long, value_name = "N")]
     jobs: Option<usize>,
-    /// Seconds one assignment's checks may run / 1 課題のチェックの制限時間（秒）
-    #[arg(long, value_name = "S", default_value_t = 60)]
+    /// Seconds one check may spend in a submission's functions / 1 つのチェックが提出物の関数に使える時間（秒）
+    #[arg(long, value_name = "S", default_value_t = 20)]
     time_limit: u64,
-    /// Memory one run may use, in MB / 1 回の実行のメモリ上限（MB）
+    /// Memory the worker running a submission's functions may use, in MB / 提出物の関数を動かすプロセスのメモリ上限（MB）
     #[arg(long, value_name = "MB", default_value_t = 2048)]
     memory_limit: u64,
+    /// The class roster (CSV: student, name, entry = the entry's folder or zip name, or its Moodle participant ID): binds each entry to its student / 名簿（CSV: 学生番号・氏名・提出物のフォルダ名か Moodle の参加者 ID）
+    #[arg(long, value_name = "CSV")]
+    roster: Option<PathBuf>,
     /// Grade even without bubblewrap: the students' code then runs as you, unisolated (every result says so) / bubblewrap なしでも採点する（学生のコードが隔離されずに動きます）
     #[arg(long)]
     unsafe_no_sandbox: bool,
@@ -50,6 +53,12 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         None => String::new(),
     };
     let config = Config::parse(&config_text).map_err(|e| e.message(lang).to_owned())?;
+    let roster = match &args.roster {
+        Some(path) => {
+            Some(cg_grade::roster::Roster::read(path).map_err(|e| e.get(lang).to_owned())?)
+        }
+        None => None,
+    };
     let isolation = cg_sandbox::detect();
     cg_grade::require_isolation(isolation, args.unsafe_no_sandbox)
         .map_err(|why| why.get(lang).to_owned())?;
@@ -70,6 +79,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         build_limit: Duration::from_secs(1800),
         isolation,
         lang,
+        roster,
     };
     eprintln!("{}: {}", lang.pick("隔離", "isolation"), isolation.describe(lang));
     let progress = |g: &Graded| {

@@ -26,6 +26,7 @@ pub mod build;
 pub mod config;
 pub mod handout;
 pub mod result;
+pub mod roster;
 pub mod screen;
 pub mod submission;
 
@@ -60,6 +61,9 @@ pub struct Options {
     pub isolation: Isolation,
     /// The language of the results' text.
     pub lang: Lang,
+    /// The class roster (`--roster`): who each entry is. Without one, the number in each
+    /// submission's `student.toml`.
+    pub roster: Option<roster::Roster>,
 }
 
 /// How grading one submission went, for the progress lines.
@@ -202,6 +206,8 @@ struct Pending {
     name: String,
     /// The other entries that claim the same student number.
     same_number: Vec<String>,
+    /// What the roster says of the entry (with `--roster`).
+    roster: Option<result::RosterMark>,
     hash: String,
     files: Result<(submission::Files, cg_assign::StudentFile), Text>,
 }
@@ -240,11 +246,30 @@ fn collect(options: &Options, kit_hash: &str) -> Result<Vec<Pending>, GradeError
             })?;
             Ok((files, student))
         });
+        // The roster binds the entry to its student: the number graded (and its variant) is
+        // the roster's; a different number in student.toml is kept to be flagged.
+        let mut files = files;
+        let mark = options.roster.as_ref().map(|r| match r.find(&entry) {
+            None => result::RosterMark { listed: false, name: None, claimed: None },
+            Some(row) => {
+                let mut claimed = None;
+                if let Ok((_, student)) = &mut files
+                    && student.student != row.student
+                {
+                    claimed = Some(student.student.to_string());
+                    student.student = row.student.clone();
+                }
+                result::RosterMark { listed: true, name: Some(row.name.clone()), claimed }
+            }
+        });
         let mut h = Hasher::default();
         h.add(kit_hash.as_bytes());
         h.add(options.config_text.as_bytes());
         h.add(&options.limits.wall.as_millis().to_le_bytes());
         h.add(&options.limits.memory_bytes.to_le_bytes());
+        if let Some(m) = &mark {
+            h.add(format!("{m:?}").as_bytes());
+        }
         let base = match &files {
             Ok((f, student)) => {
                 for (m, bytes) in &f.modules {
@@ -261,7 +286,14 @@ fn collect(options: &Options, kit_hash: &str) -> Result<Vec<Pending>, GradeError
             }
         };
         used.entry(base.clone()).or_default().push(entry.clone());
-        pending.push(Pending { entry, name: base, same_number: Vec::new(), hash: h.hex(), files });
+        pending.push(Pending {
+            entry,
+            name: base,
+            same_number: Vec::new(),
+            roster: mark,
+            hash: h.hex(),
+            files,
+        });
     }
     // Entries that claim one student number: none takes the student's file; each is named
     // after its entry too and flagged, whichever sorts first (an impostor could sort first).
@@ -636,6 +668,14 @@ pub fn grade(
         return Err(GradeError::Io("the kit's stubs are incomplete".into()));
     }
     let pending = collect(options, &kit_hash)?;
+    // The roster's students no entry is bound to: listed in the summary.
+    let absent: Vec<(String, String)> = options.roster.as_ref().map_or_else(Vec::new, |r| {
+        r.rows
+            .iter()
+            .filter(|row| !pending.iter().any(|p| r.find(&p.entry) == Some(*row)))
+            .map(|row| (row.student.to_string(), row.name.clone()))
+            .collect()
+    });
     let mut done = Vec::new();
     let mut queue = VecDeque::new();
     for p in pending {
@@ -699,6 +739,7 @@ pub fn grade(
                             hash: if facts.retry { "" } else { &p.hash },
                             isolation: options.isolation,
                             same_number: &p.same_number,
+                            roster: p.roster.as_ref(),
                             total: started.elapsed(),
                         },
                         &facts,
@@ -740,7 +781,7 @@ pub fn grade(
         .collect();
     let csv = result::class_csv(&all);
     write_atomic(&out.join("class.csv"), csv.as_bytes()).map_err(|e| io(&out, e))?;
-    let md = result::summary_md(&all, options.lang);
+    let md = result::summary_md(&all, &absent, options.lang);
     write_atomic(&out.join("summary.md"), md.as_bytes()).map_err(|e| io(&out, e))?;
     Ok(done)
 }
@@ -791,6 +832,92 @@ mod tests {
     }
 
     #[test]
+    fn the_roster_binds_entries_and_flags_the_rest() {
+        let root = std::env::temp_dir().join(format!("cg-grade-roster-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&root);
+        let subs = root.join("subs");
+        // "a" claims another student's number; the Moodle folder is bound by its participant
+        // ID; "c" is not on the roster.
+        for (entry, number) in [
+            ("a", "20260001"),
+            ("Taro Yamada_777_assignsubmission_file_", "20260002"),
+            ("c", "20260004"),
+        ] {
+            let ex = subs.join(entry).join("exercises");
+            std::fs::create_dir_all(ex.join("src")).unwrap();
+            std::fs::write(ex.join("student.toml"), format!("student = \"{number}\"\n")).unwrap();
+        }
+        let roster = roster::Roster::parse(
+            "student,name,entry\n20260009,A,a\n20260002,山田 太郎,777\n20260003,Absent,z.zip\n",
+        )
+        .unwrap();
+        let options = Options {
+            kit: root.clone(),
+            submissions: subs,
+            out: root.join("out"),
+            config: Config::default(),
+            config_text: String::new(),
+            jobs: 1,
+            limits: Limits::default(),
+            build_limit: std::time::Duration::from_secs(1),
+            isolation: Isolation::Bubblewrap,
+            lang: Lang::En,
+            roster: Some(roster),
+        };
+        let pending = collect(&options, "kit").unwrap();
+        let got: Vec<(&str, &str, Option<result::RosterMark>)> =
+            pending.iter().map(|p| (p.entry.as_str(), p.name.as_str(), p.roster.clone())).collect();
+        let mark = |listed, name: Option<&str>, claimed: Option<&str>| {
+            Some(result::RosterMark {
+                listed,
+                name: name.map(str::to_owned),
+                claimed: claimed.map(str::to_owned),
+            })
+        };
+        assert_eq!(
+            got,
+            [
+                (
+                    "Taro Yamada_777_assignsubmission_file_",
+                    "20260002",
+                    mark(true, Some("山田 太郎"), None)
+                ),
+                ("a", "20260009", mark(true, Some("A"), Some("20260001"))),
+                ("c", "20260004", mark(false, None, None)),
+            ]
+        );
+        // The variant graded is the roster's student's.
+        let a = pending.iter().find(|p| p.entry == "a").unwrap();
+        assert_eq!(a.files.as_ref().unwrap().1.student.to_string(), "20260009");
+        // The summary lists the claim, the unlisted entry and the absent student.
+        let results: Vec<serde_json::Value> = pending
+            .iter()
+            .map(|p| {
+                let meta = result::Meta {
+                    entry: &p.entry,
+                    student: Some(p.name.as_str()),
+                    hash: "",
+                    isolation: Isolation::Bubblewrap,
+                    same_number: &[],
+                    roster: p.roster.as_ref(),
+                    total: std::time::Duration::ZERO,
+                };
+                result::build(&meta, &result::Facts::default(), &Config::default(), Lang::En)
+            })
+            .collect();
+        let md = result::summary_md(&results, &[("20260003".into(), "Absent".into())], Lang::En);
+        for needle in [
+            "## Against the roster",
+            "- c (20260004)",
+            "- a: student.toml claims 20260001, the roster says 20260009 (A)",
+            "- 20260003 Absent",
+        ] {
+            assert!(md.contains(needle), "{needle:?} missing from:\n{md}");
+        }
+        let _ = std::fs::remove_dir_all(&root);
+    }
+
+    #[test]
     fn entries_that_claim_one_number_are_all_flagged_and_none_takes_the_file() {
         let root = std::env::temp_dir().join(format!("cg-grade-claims-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&root);
@@ -815,6 +942,7 @@ mod tests {
             build_limit: std::time::Duration::from_secs(1),
             isolation: Isolation::Bubblewrap,
             lang: Lang::En,
+            roster: None,
         };
         let pending = collect(&options, "kit").unwrap();
         let names: Vec<(&str, &str, Vec<String>)> = pending

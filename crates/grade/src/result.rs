@@ -35,6 +35,17 @@ pub struct Facts {
     pub run: Option<Duration>,
 }
 
+/// What the roster (`cg grade --roster`) says of one entry.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RosterMark {
+    /// Whether the roster has a row for the entry (by its name or Moodle participant ID).
+    pub listed: bool,
+    /// The student's name on the roster.
+    pub name: Option<String>,
+    /// The number the submission's `student.toml` claimed, when it is not the roster's.
+    pub claimed: Option<String>,
+}
+
 /// Who and how.
 #[derive(Clone, Copy, Debug)]
 pub struct Meta<'a> {
@@ -49,6 +60,8 @@ pub struct Meta<'a> {
     /// The other entries of the submissions folder that claim the same student number (empty
     /// when none does): none of them is taken for the student without the instructor.
     pub same_number: &'a [String],
+    /// What the roster says of the entry (with `--roster`).
+    pub roster: Option<&'a RosterMark>,
     /// The whole time spent on it.
     pub total: Duration,
 }
@@ -261,6 +274,11 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
             "isolation": meta.isolation.describe(Lang::En),
             "sandboxed": meta.isolation == Isolation::Bubblewrap,
             "same_number": meta.same_number,
+            "roster": meta.roster.map(|m| json!({
+                "listed": m.listed,
+                "name": m.name,
+                "claimed": m.claimed,
+            })),
             "refused": facts.refused.as_ref().map(|m| m.en.clone()),
             "error": facts.fatal.as_ref().map(|m| m.en.clone()),
             "compile_errors": facts.compile_errors,
@@ -318,7 +336,7 @@ pub fn class_csv(results: &[Value]) -> String {
 /// `summary.md`: how many students failed each check, most failed first — the class's most
 /// common mistakes — and the submissions that could not be graded.
 #[must_use]
-pub fn summary_md(results: &[Value], lang: Lang) -> String {
+pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) -> String {
     let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
     let mut counts: BTreeMap<String, (String, usize, usize)> = BTreeMap::new();
     let mut problems = Vec::new();
@@ -393,6 +411,10 @@ pub fn summary_md(results: &[Value], lang: Lang) -> String {
             list.join("\n")
         );
     }
+    let roster = roster_section(results, absent, lang);
+    if !roster.is_empty() {
+        let _ = write!(out, "\n## {}\n\n{roster}", l("名簿との照合", "Against the roster"));
+    }
     if !problems.is_empty() {
         let _ = write!(
             out,
@@ -400,6 +422,56 @@ pub fn summary_md(results: &[Value], lang: Lang) -> String {
             l("採点できなかった提出物", "Not graded"),
             problems.join("\n")
         );
+    }
+    out
+}
+
+/// The roster's findings: entries not on it, entries whose `student.toml` claims another
+/// number than the roster's, and students on it with no entry (empty without a roster).
+fn roster_section(results: &[Value], absent: &[(String, String)], lang: Lang) -> String {
+    let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
+    let mut unlisted = Vec::new();
+    let mut claims = Vec::new();
+    for r in results {
+        let cg = &r["cg"];
+        let entry = cg["submission"].as_str().unwrap_or("");
+        if cg["roster"]["listed"] == false {
+            unlisted.push(format!("- {entry} ({})", cg["student"].as_str().unwrap_or("?")));
+        }
+        if let Some(claimed) = cg["roster"]["claimed"].as_str() {
+            claims.push(format!(
+                "- {entry}: {} {claimed}, {} {} ({})",
+                l("student.toml は", "student.toml claims"),
+                l("名簿では", "the roster says"),
+                cg["student"].as_str().unwrap_or("?"),
+                cg["roster"]["name"].as_str().unwrap_or("")
+            ));
+        }
+    }
+    let mut out = String::new();
+    for (title, lines) in [
+        (
+            l(
+                "名簿にない提出物（student.toml の番号で採点）",
+                "Entries not on the roster (graded as their student.toml's number)",
+            ),
+            unlisted,
+        ),
+        (
+            l(
+                "名簿と違う番号を名乗る提出物（名簿の番号で採点）",
+                "Entries whose student.toml claims another number (graded as the roster's)",
+            ),
+            claims,
+        ),
+        (
+            l("提出物のない学生", "Students on the roster with no entry"),
+            absent.iter().map(|(n, name)| format!("- {n} {name}")).collect(),
+        ),
+    ] {
+        if !lines.is_empty() {
+            let _ = write!(out, "{title}:\n\n{}\n\n", lines.join("\n"));
+        }
     }
     out
 }

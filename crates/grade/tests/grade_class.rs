@@ -182,6 +182,7 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         build_limit: Duration::from_secs(1500),
         isolation: cg_sandbox::detect(),
         lang: Lang::En,
+        roster: None,
     };
     let isolated = options.isolation == Isolation::Bubblewrap;
     assert!(

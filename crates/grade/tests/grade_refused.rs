@@ -100,6 +100,7 @@ fn refused_submissions_say_why_and_are_kept() {
         build_limit: Duration::from_secs(60),
         isolation: Isolation::Limits,
         lang: Lang::En,
+        roster: None,
     };
     let graded = cg_grade::grade(&options, no_runs, &|_| {}).unwrap();
     assert_eq!(graded.len(), 10);

@@ -1,0 +1,219 @@
+//! The class roster (`cg grade --roster roster.csv`): who is who. Each row binds one
+//! submission entry to one student, so the result file, the variant graded and the class table
+//! follow the roster, not the number a submission writes in its `student.toml`.
+//!
+//! The file is CSV with a header naming three columns, in any order and with any others beside
+//! them: `student` (学生番号, the 8-digit number), `name` (氏名) and `entry` (提出物): the
+//! entry's folder or zip name in the submissions folder, or its Moodle participant ID (the
+//! digits of Moodle's `<name>_<ID>_assignsubmission_file_` folders). UTF-8 (with or without a
+//! BOM), UTF-16 with a BOM or Shift_JIS, as `cg_core::text` reads it: what Excel and Moodle
+//! write.
+//!
+//! ```csv
+//! student,name,entry
+//! 20260001,山田 太郎,123456
+//! 20260002,Jane Roe,20260002-roe.zip
+//! ```
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use cg_core::lang::Text;
+use cg_harness::StudentNumber;
+
+/// One row: a student and the entry that is theirs.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Row {
+    /// The student number.
+    pub student: StudentNumber,
+    /// The name, as the roster writes it.
+    pub name: String,
+    /// The entry's name or Moodle participant ID.
+    pub entry: String,
+    /// The roster's line (for messages).
+    pub line: u64,
+}
+
+/// The roster's rows.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Roster {
+    /// Every row, in the file's order.
+    pub rows: Vec<Row>,
+}
+
+/// The column names each column is known by (English, Japanese).
+const COLUMNS: [(&str, &[&str]); 3] = [
+    ("student", &["student", "student number", "学生番号", "学籍番号"]),
+    ("name", &["name", "氏名", "名前"]),
+    ("entry", &["entry", "submission", "participant", "提出物", "参加者"]),
+];
+
+/// Moodle's folder of one participant's files, `<name>_<ID>_assignsubmission_<plugin>_`:
+/// the participant ID.
+#[must_use]
+pub fn moodle_participant(entry: &str) -> Option<&str> {
+    let at = entry.find("_assignsubmission_")?;
+    let before = &entry[..at];
+    let id = &before[before.rfind('_')? + 1..];
+    (!id.is_empty() && id.bytes().all(|b| b.is_ascii_digit())).then_some(id)
+}
+
+impl Roster {
+    /// Reads a roster file (see the module's documentation).
+    ///
+    /// # Errors
+    /// The file cannot be read, or a row is wrong: the file, the line and what.
+    pub fn read(path: &Path) -> Result<Roster, Text> {
+        let (text, _) = cg_core::text::read(path, None).map_err(|e| {
+            let t = e.text();
+            Text::new(
+                format!("{}: {}", path.display(), t.ja),
+                format!("{}: {}", path.display(), t.en),
+            )
+        })?;
+        Roster::parse(&text).map_err(|t| {
+            Text::new(
+                format!("{}:{}", path.display(), t.ja),
+                format!("{}:{}", path.display(), t.en),
+            )
+        })
+    }
+
+    /// Parses a roster's text. An error starts with the line: `3: …`.
+    ///
+    /// # Errors
+    /// No header, a column missing, a row with a bad student number or no entry, or a student
+    /// number or an entry given twice.
+    pub fn parse(text: &str) -> Result<Roster, Text> {
+        let mut reader = csv::ReaderBuilder::new()
+            .flexible(true)
+            .trim(csv::Trim::All)
+            .from_reader(text.as_bytes());
+        let header = reader.headers().map_err(|e| csv_error(1, &e))?.clone();
+        let mut at = [0usize; 3];
+        for (k, (key, names)) in COLUMNS.iter().enumerate() {
+            at[k] = header
+                .iter()
+                .position(|h| names.iter().any(|n| h.eq_ignore_ascii_case(n)))
+                .ok_or_else(|| {
+                    Text::new(
+                        format!("1: 見出しの行に列 `{key}`（{}）がありません", names.join("、")),
+                        format!(
+                            "1: the header has no column `{key}` (one of: {})",
+                            names.join(", ")
+                        ),
+                    )
+                })?;
+        }
+        let mut rows: Vec<Row> = Vec::new();
+        let mut by_student: BTreeMap<String, u64> = BTreeMap::new();
+        let mut by_entry: BTreeMap<String, u64> = BTreeMap::new();
+        let mut record = csv::StringRecord::new();
+        loop {
+            // The record's line: the first line with text at or after where the reader stood
+            // (csv skips blank lines; its record positions do not count them).
+            let start = usize::try_from(reader.position().byte()).unwrap_or(0).min(text.len());
+            let line0 = text.as_bytes()[..start].iter().filter(|&&b| b == b'\n').count() as u64 + 1;
+            if !reader.read_record(&mut record).map_err(|e| csv_error(line0, &e))? {
+                break;
+            }
+            let blank = text.as_bytes()[start..]
+                .iter()
+                .take_while(|&&b| b == b'\n' || b == b'\r')
+                .filter(|&&b| b == b'\n')
+                .count() as u64;
+            let line = line0 + blank;
+            if record.iter().all(str::is_empty) {
+                continue;
+            }
+            let field = |k: usize| record.get(at[k]).unwrap_or("").to_owned();
+            let student: StudentNumber =
+                field(0).parse().map_err(|e: cg_harness::variant::StudentNumberError| {
+                    Text::new(
+                        format!("{line}: student: {}", e.message(cg_core::lang::Lang::Ja)),
+                        format!("{line}: student: {}", e.message(cg_core::lang::Lang::En)),
+                    )
+                })?;
+            let entry = field(2);
+            if entry.is_empty() {
+                return Err(Text::new(
+                    format!(
+                        "{line}: 学生 {student} の entry（提出物のフォルダ名か Moodle の参加者 ID）が空です"
+                    ),
+                    format!(
+                        "{line}: entry is empty for student {student} (the entry's folder name or Moodle participant ID)"
+                    ),
+                ));
+            }
+            if let Some(first) = by_student.insert(student.to_string(), line) {
+                return Err(Text::new(
+                    format!("{line}: 学生番号 {student} は {first} 行目にもあります"),
+                    format!("{line}: student {student} is on line {first} too"),
+                ));
+            }
+            if let Some(first) = by_entry.insert(entry.clone(), line) {
+                return Err(Text::new(
+                    format!("{line}: entry \"{entry}\" は {first} 行目にもあります"),
+                    format!("{line}: entry \"{entry}\" is on line {first} too"),
+                ));
+            }
+            rows.push(Row { student, name: field(1), entry, line });
+        }
+        Ok(Roster { rows })
+    }
+
+    /// The row of a submissions folder's entry: the one naming it exactly, else (for a Moodle
+    /// folder) the one with its participant ID.
+    #[must_use]
+    pub fn find(&self, entry: &str) -> Option<&Row> {
+        self.rows.iter().find(|r| r.entry == entry).or_else(|| {
+            let id = moodle_participant(entry)?;
+            self.rows.iter().find(|r| r.entry == id)
+        })
+    }
+}
+
+fn csv_error(line: u64, e: &csv::Error) -> Text {
+    let line = e.position().map_or(line, csv::Position::line);
+    Text::new(format!("{line}: CSV として読めません: {e}"), format!("{line}: not CSV: {e}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rows_bind_entries_by_name_or_moodle_participant() {
+        let text = "\u{feff}学生番号,氏名,提出物,メモ\r\n20260001,山田 太郎,123456,\r\n\r\n20260002,Jane Roe,20260002-roe.zip,late\r\n";
+        let r = Roster::parse(text).unwrap();
+        assert_eq!(r.rows.len(), 2, "{:?}", r.rows);
+        assert_eq!(r.rows[0].name, "山田 太郎");
+        let moodle = "山田 太郎_123456_assignsubmission_file_";
+        assert_eq!(moodle_participant(moodle), Some("123456"));
+        assert_eq!(r.find(moodle).map(|r| r.student.to_string()), Some("20260001".into()));
+        assert_eq!(r.find("20260002-roe.zip").map(|r| r.line), Some(4));
+        assert!(r.find("20260002-roe").is_none());
+        assert!(r.find("someone_999_assignsubmission_file_").is_none());
+        assert_eq!(moodle_participant("a_b_assignsubmission_file_"), None);
+        assert_eq!(moodle_participant("plain-folder"), None);
+    }
+
+    #[test]
+    fn a_wrong_roster_is_refused_with_its_line() {
+        let cases = [
+            ("number,name\n1,a\n", "1: the header has no column `student`"),
+            ("student,name,entry\n2026000x,a,e\n", "2: student: a student number is 8 digits"),
+            ("student,name,entry\n20260001,a,\n", "2: entry is empty for student 20260001"),
+            (
+                "student,name,entry\n20260001,a,e\n20260001,b,f\n",
+                "3: student 20260001 is on line 2 too",
+            ),
+            ("student,name,entry\n20260001,a,e\n20260002,b,e\n", "3: entry \"e\" is on line 2 too"),
+        ];
+        for (text, expected) in cases {
+            let e = Roster::parse(text).unwrap_err();
+            assert!(e.en.starts_with(expected), "{text:?}: {}", e.en);
+            assert!(e.ja.chars().any(cg_testkit::text::kana_or_kanji), "{}", e.ja);
+        }
+    }
+}
