@@ -2,7 +2,7 @@
 //!
 //! The kit's checks never run in the same process as a student's code (principle 2). This crate
 //! is the other process: a **worker** ([`cg_worker`]) that offers every function of the
-//! student's `exercises/` as a named handler ([`cg_worker::tables`]) and runs each call it is
+//! student's `exercises/` as a named handler ([`cg_worker::tables`](mod@cg_worker::tables)) and runs each call it is
 //! sent. It links the student's crate (`cg-exercises`), the students' API and the worker's
 //! protocol, and nothing of the kit's checks, oracles or renderers: it decides nothing and
 //! prints no result. The trusted side (`cg check`, `cg grade`) holds the checks and calls these

@@ -831,6 +831,23 @@ mod tests {
         assert_eq!(require_isolation(Isolation::Limits, true), Ok(()));
     }
 
+    /// Options for [`collect`] alone, of the submissions in `root/subs`.
+    fn collect_options(root: &Path, roster: Option<roster::Roster>) -> Options {
+        Options {
+            kit: root.to_path_buf(),
+            submissions: root.join("subs"),
+            out: root.join("out"),
+            config: Config::default(),
+            config_text: String::new(),
+            jobs: 1,
+            limits: Limits::default(),
+            build_limit: std::time::Duration::from_secs(1),
+            isolation: Isolation::Bubblewrap,
+            lang: Lang::En,
+            roster,
+        }
+    }
+
     #[test]
     fn the_roster_binds_entries_and_flags_the_rest() {
         let root = std::env::temp_dir().join(format!("cg-grade-roster-{}", std::process::id()));
@@ -851,19 +868,7 @@ mod tests {
             "student,name,entry\n20260009,A,a\n20260002,山田 太郎,777\n20260003,Absent,z.zip\n",
         )
         .unwrap();
-        let options = Options {
-            kit: root.clone(),
-            submissions: subs,
-            out: root.join("out"),
-            config: Config::default(),
-            config_text: String::new(),
-            jobs: 1,
-            limits: Limits::default(),
-            build_limit: std::time::Duration::from_secs(1),
-            isolation: Isolation::Bubblewrap,
-            lang: Lang::En,
-            roster: Some(roster),
-        };
+        let options = collect_options(&root, Some(roster));
         let pending = collect(&options, "kit").unwrap();
         let got: Vec<(&str, &str, Option<result::RosterMark>)> =
             pending.iter().map(|p| (p.entry.as_str(), p.name.as_str(), p.roster.clone())).collect();
@@ -931,19 +936,7 @@ mod tests {
             std::fs::write(ex.join("student.toml"), format!("student = \"{number}\"\n")).unwrap();
             std::fs::write(ex.join("src/a1.rs"), format!("// {entry}")).unwrap();
         }
-        let options = Options {
-            kit: root.clone(),
-            submissions: subs,
-            out: root.join("out"),
-            config: Config::default(),
-            config_text: String::new(),
-            jobs: 1,
-            limits: Limits::default(),
-            build_limit: std::time::Duration::from_secs(1),
-            isolation: Isolation::Bubblewrap,
-            lang: Lang::En,
-            roster: None,
-        };
+        let options = collect_options(&root, None);
         let pending = collect(&options, "kit").unwrap();
         let names: Vec<(&str, &str, Vec<String>)> = pending
             .iter()

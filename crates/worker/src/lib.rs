@@ -17,7 +17,7 @@
 //!
 //! This crate has no kit code: the worker links it, so nothing here may compute an answer. Its
 //! only link to the course is the students' API (`cg-student`, types and recorders), for
-//! [`tables`]: each assignment's functions as named handlers.
+//! [`tables`](mod@tables): each assignment's functions as named handlers.
 
 pub mod client;
 pub mod frame;

@@ -216,7 +216,7 @@ pub fn a3_run_idle(spec: &a3::Spec, state: &a3::State, n: u64) -> a3::State {
 
 /// s: `shade_pixel` of each pixel in `mode` with the kit's `light`, in two round trips for any
 /// number of pixels: the worker lists what each pixel asks `light`, the kit lights those points
-/// here, and the worker runs the function again with those answers (see [`crate::tables`]).
+/// here, and the worker runs the function again with those answers (see [`crate::tables`](mod@crate::tables)).
 ///
 /// # Panics
 /// With a [`CallError`] payload, as [`call`]; a pixel that asked other questions the second
