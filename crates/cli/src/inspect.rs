@@ -31,12 +31,15 @@ pub struct Args {
     /// Decimals of printed numbers, 1 to 9 / 小数点以下の桁数（1〜9）
     #[arg(long, default_value_t = 4, value_name = "N", value_parser = clap::value_parser!(u8).range(1..=9))]
     decimals: u8,
+    /// The scene file's encoding: utf-8, utf-16le, utf-16be or shift_jis (default: detected) / シーンファイルの文字コード（省略時は自動判別）
+    #[arg(long, value_name = "ENCODING")]
+    encoding: Option<cg_core::text::Encoding>,
 }
 
 /// Loads the scene and prints the inspection.
 pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let path = crate::kit_path(args.scene.as_deref(), crate::COURSE_SAMPLE);
-    let scene = cg_scene::load(&path).map_err(|e| e.describe(lang))?;
+    let scene = cg_scene::load_encoded(&path, args.encoding).map_err(|e| e.describe(lang))?;
     if let Some(name) = &args.object
         && !scene.objects.iter().any(|o| &o.name == name)
     {

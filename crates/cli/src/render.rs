@@ -85,6 +85,9 @@ pub struct Args {
     /// Ray tracer: no shadow rays / 影を計算しない
     #[arg(long)]
     no_shadows: bool,
+    /// The scene file's encoding: utf-8, utf-16le, utf-16be or shift_jis (default: detected) / シーンファイルの文字コード（省略時は自動判別）
+    #[arg(long, value_name = "ENCODING")]
+    encoding: Option<cg_core::text::Encoding>,
 }
 
 /// The ray tracer's settings from the command line.
@@ -112,7 +115,7 @@ struct Rendered {
 /// `cg render`: loads, draws, writes, reports.
 pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let path = crate::kit_path(args.scene.as_deref(), crate::COURSE_SAMPLE);
-    let scene = cg_scene::load(&path).map_err(|e| e.describe(lang))?;
+    let scene = cg_scene::load_encoded(&path, args.encoding).map_err(|e| e.describe(lang))?;
     let size = size(&scene, args.width, args.height);
     if args.renderer == Renderer::Raster
         && (args.max_depth != 5 || args.fresnel != FresnelArg::Exact || args.no_shadows)

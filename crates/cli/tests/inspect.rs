@@ -155,3 +155,35 @@ fn inspect_says_whether_the_mesh_was_welded() {
     assert!(plain.contains("welded by position: no"), "{plain}");
     assert!(plain.contains("6 vertices, 2 faces"), "{plain}");
 }
+
+/// The course's sample scene saved as a Japanese Windows editor saves it (Shift_JIS, with a
+/// Japanese comment) reads as detected and as named with `--encoding shift_jis`; named as UTF-8
+/// it is refused with its line and the advice to name its encoding.
+#[test]
+fn a_scene_in_shift_jis_reads_detected_and_named() {
+    let dir = std::env::temp_dir().join(format!("cg-inspect-sjis-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("授業 サンプル.toml");
+    let text =
+        std::fs::read_to_string(common::root().join("assets/scenes/course-sample.toml")).unwrap();
+    // `# 三角形のシーン` in Shift_JIS, then the scene (ASCII).
+    // The sample's own comments in Japanese are UTF-8: cut off.
+    let mut bytes = b"# \x8eO\x8ap\x8c`\x82\xcc\x83V\x81[\x83\x93\r\n".to_vec();
+    for line in text.lines() {
+        let code = if line.is_ascii() { line } else { line.split('#').next().unwrap_or("") };
+        bytes.extend_from_slice(code.as_bytes());
+        bytes.extend_from_slice(b"\r\n");
+    }
+    std::fs::write(&path, bytes).unwrap();
+    let file = path.to_str().unwrap();
+    let detected = stdout(&cg(&["inspect", file, "--lang", "en"]));
+    let named = stdout(&cg(&["inspect", file, "--encoding", "shift_jis", "--lang", "en"]));
+    assert_eq!(detected, named);
+    assert!(named.contains("F0"), "{named}");
+    let wrong = cg(&["inspect", file, "--encoding", "utf-8", "--lang", "en"]);
+    std::fs::remove_dir_all(&dir).ok();
+    assert!(!wrong.status.success());
+    let err = String::from_utf8_lossy(&wrong.stderr);
+    assert!(err.contains(":1") && err.contains("--encoding"), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+}

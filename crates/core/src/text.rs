@@ -5,8 +5,10 @@
 //! UTF-8 without a BOM.
 //!
 //! Detection, when no encoding is named: a BOM decides (and is removed from the text); else
-//! valid UTF-8 is UTF-8; else the text is Shift_JIS when it decodes as Shift_JIS without an
-//! error; else it is refused with a [`DecodeError`] that says where (line, column, byte offset)
+//! UTF-16 without a BOM is recognised by its zero bytes ([`utf16_without_bom`]: some editors
+//! save "Unicode" without a BOM; text in UTF-8 or Shift_JIS has no zero bytes); else valid
+//! UTF-8 is UTF-8; else the text is Shift_JIS when it decodes as Shift_JIS without an error;
+//! else it is refused with a [`DecodeError`] that says where (line, column, byte offset)
 //! and what to do. Line endings are left as they are (`\r\n` included); the kit's parsers
 //! accept both.
 //!
@@ -449,6 +451,11 @@ fn decode_cow(
                 .map_err(|at| DecodeError::AfterBom { encoding, at });
         }
     }
+    if let Some(encoding) = utf16_without_bom(&bytes) {
+        return decode_as(bytes, 0, encoding)
+            .map(|text| (text, encoding))
+            .map_err(|at| DecodeError::Undetected { at, nearest: encoding });
+    }
     let not_utf8 = match std::str::from_utf8(&bytes) {
         Ok(_) => None,
         Err(e) => Some(e.valid_up_to()),
@@ -470,6 +477,27 @@ fn decode_cow(
                 nearest: Encoding::Utf8,
             })
         }
+    }
+}
+
+/// UTF-16 without a BOM, by its zero bytes: an even number of bytes, and among the first
+/// 4,096 pairs at least a quarter have a zero high byte (ASCII: digits, spaces, line ends)
+/// while no low byte is zero (little-endian), or the other way round (big-endian). Text that
+/// is UTF-8 or Shift_JIS has no zero bytes at all, so neither is taken for UTF-16; UTF-16 text
+/// with no ASCII character in it is not recognised (then `--encoding utf-16le` names it).
+#[must_use]
+pub fn utf16_without_bom(bytes: &[u8]) -> Option<Encoding> {
+    if bytes.len() < 2 || !bytes.len().is_multiple_of(2) {
+        return None;
+    }
+    let pairs: Vec<[u8; 2]> = bytes.chunks_exact(2).take(4096).map(|c| [c[0], c[1]]).collect();
+    let zeros = |k: usize| pairs.iter().filter(|p| p[k] == 0).count();
+    let (even, odd) = (zeros(0), zeros(1));
+    let enough = |n: usize| n * 4 >= pairs.len();
+    match (even, odd) {
+        (0, n) if enough(n) => Some(Encoding::Utf16Le),
+        (n, 0) if enough(n) => Some(Encoding::Utf16Be),
+        _ => None,
     }
 }
 
@@ -545,6 +573,20 @@ mod tests {
         let (bytes, _, unmappable) = encoding_rs::SHIFT_JIS.encode(s);
         assert!(!unmappable, "{s:?} is all in Shift_JIS");
         bytes.into_owned()
+    }
+
+    #[test]
+    fn utf16_without_a_bom_is_recognised_by_its_zero_bytes() {
+        let bare = |little| utf16(REPORT, little)[2..].to_vec();
+        assert_eq!(decode(&bare(true), None), Ok((REPORT.to_owned(), Encoding::Utf16Le)));
+        assert_eq!(decode(&bare(false), None), Ok((REPORT.to_owned(), Encoding::Utf16Be)));
+        // UTF-8 and Shift_JIS have no zero bytes: never taken for UTF-16.
+        assert_eq!(utf16_without_bom(REPORT.as_bytes()), None);
+        assert_eq!(utf16_without_bom(&shift_jis(REPORT)), None);
+        // Kanji alone have no zero byte either: not recognised (named with --encoding).
+        let kanji = utf16("頂点法線", true)[2..].to_vec();
+        assert_eq!(utf16_without_bom(&kanji), None);
+        assert_eq!(utf16_without_bom(b"a"), None);
     }
 
     /// The same report in every encoding the kit reads: one text, its encoding named.

@@ -59,7 +59,19 @@ pub const FORMAT_VERSION: i64 = format::FORMAT_VERSION;
 ///
 /// See also [`parse`] for text already in memory.
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
-    let text = read_text(path)?;
+    load_encoded(path, None)
+}
+
+/// [`load`] with the scene file read in `encoding` when given (`--encoding` of `cg render` and
+/// `cg inspect`), else in the encoding detected. The OBJ files it names are detected as always.
+///
+/// # Errors
+/// As [`load`]; a file that is not text in `encoding` names the line and column.
+pub fn load_encoded(
+    path: &Path,
+    encoding: Option<cg_core::text::Encoding>,
+) -> Result<Scene, SceneError> {
+    let text = read_text(path, encoding, true)?;
     parse(&text, path)
 }
 
@@ -89,7 +101,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
 /// — each of these naming the line and column; the file has no faces; some corners have `vn` or
 /// `vt` and others do not; or a normal or texture coordinate is not usable (zero or non-finite).
 pub fn load_obj(path: &Path) -> Result<Mesh, SceneError> {
-    parse_obj(&read_text(path)?, path)
+    parse_obj(&read_text(path, None, false)?, path)
 }
 
 /// [`load_obj`] for OBJ text already in memory; `path` names it in errors.
@@ -133,22 +145,31 @@ fn read_error(path: &Path, e: &std::io::Error) -> SceneError {
     SceneError::in_file(path, ErrorKind::Read { reason: e.to_string() })
 }
 
-/// A text file's contents, in the encoding a student's editor wrote it in: UTF-8 (a BOM
-/// removed), UTF-16 with a BOM or Shift_JIS ([`cg_core::text::read`]; at most 64 MiB). Line
-/// endings are kept: the TOML parser and the OBJ scan both take `\r\n`.
+/// A text file's contents, in `forced` or in the encoding a student's editor wrote it in: UTF-8
+/// (a BOM removed), UTF-16 or Shift_JIS ([`cg_core::text::read`]; at most 64 MiB). Line endings
+/// are kept: the TOML parser and the OBJ scan both take `\r\n`.
 ///
-/// A file that is not text in any of these is a [`ErrorKind::Read`] at the line and column where
-/// it stops being readable; its reason is in English and Japanese, as `ErrorKind::Read` holds one
-/// text for both (`cg render` and `cg inspect` have no `--encoding`, so the advice is to save the
-/// file as UTF-8).
-fn read_text(path: &Path) -> Result<String, SceneError> {
+/// A file that is not text in any of these is an [`ErrorKind::Encoding`] at the line and column
+/// where it stops being readable, in English and Japanese, with the advice to save it as UTF-8,
+/// or (`option`: a scene file, for `cg render` and `cg inspect` take `--encoding`) to name its
+/// encoding.
+fn read_text(
+    path: &Path,
+    forced: Option<cg_core::text::Encoding>,
+    option: bool,
+) -> Result<String, SceneError> {
     use cg_core::text::ReadError;
-    match cg_core::text::read(path, None) {
+    match cg_core::text::read(path, forced) {
         Ok((text, _)) => Ok(text),
         Err(ReadError::Io { reason }) => Err(SceneError::in_file(path, ErrorKind::Read { reason })),
         Err(e) => Err(SceneError {
             position: e.place().map(|p| Position { line: p.line, column: p.column }),
-            ..SceneError::in_file(path, ErrorKind::Encoding { why: e.text_without_option() })
+            ..SceneError::in_file(
+                path,
+                ErrorKind::Encoding {
+                    why: if option { e.text() } else { e.text_without_option() },
+                },
+            )
         }),
     }
 }
@@ -162,7 +183,7 @@ mod encoding_tests {
 
     use cg_core::lang::Lang;
 
-    use super::{ErrorKind, Position, load, load_obj};
+    use super::{ErrorKind, Position, load, load_encoded, load_obj};
 
     /// `# 三角形のシーン` in Shift_JIS (CP932).
     const SJIS_COMMENT: &[u8] = b"# \x8eO\x8ap\x8c`\x82\xcc\x83V\x81[\x83\x93";
@@ -226,8 +247,9 @@ mod encoding_tests {
         remove(&dir);
     }
 
-    /// Latin-1 is neither UTF-8 nor Shift_JIS: the place, and advice without `--encoding`
-    /// (the scene commands have none).
+    /// Latin-1 is neither UTF-8 nor Shift_JIS: the place, and advice: for an OBJ file without
+    /// `--encoding` (it is read as detected), for a scene file with it (`cg render` and
+    /// `cg inspect` take it), and a scene named in its encoding reads.
     #[test]
     fn a_file_that_is_not_text_names_the_place_and_what_to_do() {
         let dir = student_folder("latin1");
@@ -245,6 +267,16 @@ mod encoding_tests {
         assert!(ja.contains("エンコード: UTF-8"), "{ja}");
         // Each language its own sentence: no English in the Japanese text.
         assert!(!ja.contains("Save the file"), "{ja}");
+        let scene = dir.join("scène.toml");
+        std::fs::write(&scene, b"# caf\xE9\n").unwrap();
+        let e = load(&scene).unwrap_err();
+        assert!(e.describe(Lang::En).contains("--encoding"), "{e}");
+        // Shift_JIS named: read as such (and then judged as a scene: no `version`).
+        std::fs::write(&scene, [SJIS_COMMENT, b"\n"].concat()).unwrap();
+        let named = load_encoded(&scene, Some(cg_core::text::Encoding::ShiftJis)).unwrap_err();
+        assert!(!matches!(*named.kind, ErrorKind::Encoding { .. }), "{named}");
+        let wrong = load_encoded(&scene, Some(cg_core::text::Encoding::Utf8)).unwrap_err();
+        assert!(matches!(*wrong.kind, ErrorKind::Encoding { .. }), "{wrong}");
         remove(&dir);
     }
 }
