@@ -26,6 +26,7 @@ PACKAGES=(
   texlive-luatex texlive-lang-japanese texlive-latex-recommended texlive-pictures   # the report template
   mesa-vulkan-drivers libvulkan1   # the GPU renderer (crates/gpu) on Mesa's software Vulkan (lavapipe)
   xvfb xauth xdotool libxkbcommon-x11-0 libx11-xcb1   # the viewer's window test under a virtual display
+  weston libwayland-client0 libwayland-cursor0 libxkbcommon0   # the viewer's window on Wayland (weston's headless backend)
   bubblewrap   # the grading sandbox (crates/sandbox): no network, no files outside its folder, nothing to start
 )
 

@@ -142,9 +142,10 @@ pub struct ViewerOptions {
     pub lang: Lang,
 }
 
-/// Whether a window can probably be opened here: on Linux and the BSDs, `DISPLAY` is set (this
-/// build speaks X11 only; a Wayland session without XWayland has no `DISPLAY`); elsewhere, true.
-/// [`run`] falls back to PNGs when the window still cannot be opened.
+/// Whether a window can probably be opened here: on Linux and the BSDs, a Wayland compositor
+/// (`WAYLAND_DISPLAY`) or an X server (`DISPLAY`) is named (winit asks Wayland first, then X11);
+/// elsewhere (Windows, macOS), true. [`run`] falls back to PNGs, saying why, when the window
+/// still cannot be opened.
 #[must_use]
 pub fn display_available() -> bool {
     if cfg!(any(
@@ -154,7 +155,9 @@ pub fn display_available() -> bool {
         target_os = "netbsd",
         target_os = "dragonfly"
     )) {
-        std::env::var_os("DISPLAY").is_some_and(|v| !v.is_empty())
+        ["WAYLAND_DISPLAY", "DISPLAY"]
+            .iter()
+            .any(|k| std::env::var_os(k).is_some_and(|v| !v.is_empty()))
     } else {
         true
     }
@@ -212,7 +215,15 @@ pub fn run_app<A: App>(
     let reason = if options.headless {
         None
     } else if !display_available() {
-        Some(options.lang.pick("DISPLAY が設定されていません", "DISPLAY is not set").to_owned())
+        Some(
+            options
+                .lang
+                .pick(
+                    "WAYLAND_DISPLAY も DISPLAY も設定されていません",
+                    "neither WAYLAND_DISPLAY nor DISPLAY is set",
+                )
+                .to_owned(),
+        )
     } else {
         match window::run(app, &mut shared) {
             Outcome::Done => return Ok(()),

@@ -26,6 +26,10 @@ use crate::{Outcome, Shared, ViewerError};
 /// A window and its softbuffer surface.
 struct Open {
     window: Arc<Window>,
+    /// The title last set: set again only when it changes (on Wayland every `set_title` is a
+    /// request on the socket, and a title per event can fill it faster than the compositor
+    /// reads, which winit takes for a broken connection).
+    title: String,
     context: Context<Arc<Window>>,
     /// softbuffer's surface; `None` while a backend presents by itself.
     surface: Option<Surface<Arc<Window>, Arc<Window>>>,
@@ -139,14 +143,18 @@ impl<A: App> Shell<'_, A> {
         }
     }
 
-    fn set_title(&self) {
-        if let Some(open) = &self.open {
-            open.window.set_title(&format!(
-                "{} — {} — {:.1} ms",
-                self.app.title(),
-                self.shared.backend().name(),
-                self.frame_ms
-            ));
+    fn set_title(&mut self) {
+        let title = format!(
+            "{} — {} — {:.1} ms",
+            self.app.title(),
+            self.shared.backend().name(),
+            self.frame_ms
+        );
+        if let Some(open) = &mut self.open
+            && open.title != title
+        {
+            open.window.set_title(&title);
+            open.title = title;
         }
     }
 
@@ -316,7 +324,7 @@ impl<A: App> ApplicationHandler for Shell<'_, A> {
         };
         self.app.init();
         self.app.reshape(w.max(1), h.max(1));
-        self.open = Some(Open { window, context, surface: Some(surface) });
+        self.open = Some(Open { window, title: String::new(), context, surface: Some(surface) });
         self.set_title();
         if let Some(open) = &self.open {
             open.window.request_redraw();

@@ -265,6 +265,76 @@ fn window_frames_limit_exits_by_itself_and_the_animation_runs() {
     assert_png_is_headless_render("xvfb-frames", &shot, &state);
 }
 
+/// Runs `script` with `$BIN` set to the viewer under a fresh weston compositor with its headless
+/// backend (a Wayland session with no X server: `DISPLAY` removed), in a runtime folder of its
+/// own. `None` when weston is missing, except under CI, where that is a failure.
+fn under_weston(test: &str, script: &str) -> Option<Output> {
+    let found = Command::new("sh")
+        .args(["-c", "command -v weston"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !found {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "{test}: weston is needed under CI (apt-get install weston)"
+        );
+        eprintln!("note: {test} skipped: weston is missing (apt-get install weston)");
+        return None;
+    }
+    let runtime = scratch(&format!("{test}-runtime"));
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(&runtime, std::fs::Permissions::from_mode(0o700)).unwrap();
+    }
+    let socket = "cg-viewer-test";
+    let mut weston = Command::new("weston")
+        .args(["--backend=headless-backend.so", &format!("--socket={socket}"), "--idle-time=0"])
+        .env("XDG_RUNTIME_DIR", &runtime)
+        .env_remove("DISPLAY")
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let started = std::time::Instant::now();
+    while !runtime.join(socket).exists() && started.elapsed() < std::time::Duration::from_secs(20) {
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    let out = Command::new("bash")
+        .args(["-c", script])
+        .env("BIN", BIN)
+        .env("CG_LANG", "en")
+        .env("XDG_RUNTIME_DIR", &runtime)
+        .env("WAYLAND_DISPLAY", socket)
+        .env_remove("DISPLAY")
+        .output()
+        .unwrap();
+    let _ = weston.kill();
+    let _ = weston.wait();
+    Some(out)
+}
+
+#[test]
+fn a_wayland_window_draws_its_frames_and_the_screenshot_matches_the_headless_render() {
+    let test = "wayland-frames";
+    let dir = scratch(test);
+    let shot = dir.join("frames.png");
+    let script = format!(
+        "timeout 90 \"$BIN\" --frames 6 --shading flat --width 200 --height 150 --screenshot '{}'",
+        shot.display()
+    );
+    let Some(out) = under_weston(test, &script) else { return };
+    let all = text(&out);
+    assert!(out.status.success(), "{all}");
+    assert!(!all.contains("no window can be opened"), "a window on Wayland: {all}");
+    let state = saved_state(&String::from_utf8_lossy(&out.stdout));
+    assert_eq!(get(&state, "pitch"), "-30", "{all}");
+    // Drawn in the window (softbuffer cannot read a Wayland window back: the frame drawn).
+    assert_eq!(get(&state, "source"), "frame", "{all}");
+    assert!(get(&state, "angle").parse::<f32>().unwrap() > 0.0, "{all}");
+    assert_png_is_headless_render(test, &shot, &state);
+}
+
 /// Whether the GPU window tests can run: Xvfb and xdotool ([`xvfb_available`]) and a GPU
 /// adapter (lavapipe in CI). Without an adapter the test is skipped with a note, except under CI.
 fn gpu_window_available(test: &str) -> bool {
