@@ -16,8 +16,9 @@
 //! cg-check-runner [--memory-mb N]
 //! ```
 //!
-//! It reads calls on stdin until stdin ends. `--memory-mb` limits its address space (Unix; the
-//! grader limits it from outside as well).
+//! It reads calls on stdin until stdin ends. `--memory-mb` limits its memory (Unix: its address
+//! space; Windows: a job object's process memory limit; the grader limits it from outside as
+//! well).
 
 use cg_worker::serve::Handler;
 
@@ -35,26 +36,7 @@ pub fn serve() -> std::io::Result<()> {
     cg_worker::serve(&handlers())
 }
 
-/// Limits this process's address space to `mb` MiB (Unix), so that a student's function that
-/// allocates without end fails its call instead of taking the machine's memory. On other
-/// systems nothing is limited (`Ok(false)`).
-///
-/// # Errors
-/// The system refused the limit.
-pub fn limit_memory(mb: u64) -> std::io::Result<bool> {
-    #[cfg(unix)]
-    {
-        // platform: rlimits are Unix's.
-        let bytes = mb.saturating_mul(1 << 20);
-        rlimit::Resource::AS.set(bytes, bytes)?;
-        Ok(true)
-    }
-    #[cfg(not(unix))]
-    {
-        let _ = mb;
-        Ok(false)
-    }
-}
+pub use cg_worker::limit_memory;
 
 /// The worker's command line: `[--memory-mb N]`; the limit, when given.
 ///

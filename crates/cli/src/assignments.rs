@@ -81,7 +81,7 @@ pub struct CheckArgs {
     /// Seconds one check may spend in your functions before it is taken for an endless loop / 1 つのチェックの制限時間（秒）
     #[arg(long, default_value_t = 20)]
     time_limit: u64,
-    /// MiB of memory your functions may use (Linux and macOS) / あなたの関数が使えるメモリ（MiB、Linux と macOS）
+    /// MiB of memory your functions may use (Linux and Windows; set on macOS) / あなたの関数が使えるメモリ（MiB、Linux と Windows。macOS では設定のみ）
     #[arg(long, value_name = "MIB", default_value_t = 2048)]
     memory_limit: u64,
 }

@@ -26,6 +26,45 @@ pub mod serve;
 pub mod tables;
 
 pub use client::{CallError, Worker};
+
+/// Limits this process's memory to `mb` MiB, so that a student's function that allocates
+/// without end fails its call instead of taking the machine's memory: its address space on Unix
+/// (`RLIMIT_AS`), the memory it may commit on Windows (a job object with a process memory limit,
+/// which the process puts itself in). Elsewhere nothing is limited (`Ok(false)`).
+///
+/// # Errors
+/// The system refused the limit.
+pub fn limit_memory(mb: u64) -> std::io::Result<bool> {
+    let bytes = mb.saturating_mul(1 << 20);
+    #[cfg(unix)]
+    {
+        // platform: rlimits are Unix's.
+        rlimit::Resource::AS.set(bytes, bytes)?;
+        Ok(true)
+    }
+    #[cfg(windows)]
+    {
+        // platform: job objects are Windows'.
+        /// `JOB_OBJECT_LIMIT_PROCESS_MEMORY` (winnt.h): `ProcessMemoryLimit` holds.
+        const LIMIT_PROCESS_MEMORY: u32 = 0x0000_0100;
+        let other = |e: win32job::JobError| std::io::Error::other(e.to_string());
+        let job = win32job::Job::create().map_err(other)?;
+        let mut info = job.query_extended_limit_info().map_err(other)?;
+        info.0.ProcessMemoryLimit = usize::try_from(bytes).unwrap_or(usize::MAX);
+        info.0.BasicLimitInformation.LimitFlags |= LIMIT_PROCESS_MEMORY;
+        job.set_extended_limit_info(&mut info).map_err(other)?;
+        job.assign_current_process().map_err(other)?;
+        // The job lives as long as the process: its handle is never closed.
+        std::mem::forget(job);
+        Ok(true)
+    }
+    #[cfg(not(any(unix, windows)))]
+    {
+        let _ = bytes;
+        Ok(false)
+    }
+}
+
 pub use serve::{Handler, serve};
 
 use serde::{Deserialize, Serialize};

@@ -65,3 +65,22 @@ fn prints_are_kept_apart_from_replies() {
     let printed = String::from_utf8_lossy(&w.printed).into_owned();
     assert_eq!(printed, "debugging: x = 21\ndebugging: x = 1\n");
 }
+
+/// The worker's own memory limit (`limit_memory`, as cg-check-runner's `--memory-mb` sets it)
+/// stops a function that allocates without end: the call is a crash with the allocator's
+/// message, and the next call runs in a fresh worker. Linux (RLIMIT_AS) and Windows (a job
+/// object's process memory limit); macOS's RLIMIT_AS is not known to hold, so not asserted there.
+#[cfg(any(target_os = "linux", windows))]
+#[test]
+fn the_memory_limit_stops_a_hoarding_function() {
+    let mut w = Worker::new(env!("CARGO_BIN_EXE_cg-worker-fixture"), ["--memory-mb", "256"]);
+    // Within the limit it returns.
+    assert_eq!(w.call::<_, usize>("hoard", &64u64, BUDGET), Ok(1));
+    match w.call::<_, usize>("hoard", &4096u64, Duration::from_secs(60)) {
+        Err(CallError::Crashed { stderr, .. }) => {
+            assert!(stderr.contains("memory allocation"), "{stderr}");
+        }
+        other => panic!("4 GiB under a limit of 256 MiB: {other:?}"),
+    }
+    assert_eq!(w.call::<_, i64>("add", &(1, 2), BUDGET), Ok(3));
+}

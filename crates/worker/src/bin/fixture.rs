@@ -7,6 +7,14 @@
 use cg_worker::serve::{Handler, handler, serve};
 
 fn main() -> std::io::Result<()> {
+    // `--memory-mb N`: the worker's own limit, as cg-check-runner sets it.
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if let [flag, mb] = args.as_slice()
+        && flag == "--memory-mb"
+    {
+        let mb: u64 = mb.parse().map_err(std::io::Error::other)?;
+        cg_worker::limit_memory(mb)?;
+    }
     let handlers: Vec<(&str, Handler)> = vec![
         ("add", handler(|(a, b): (i64, i64)| a + b)),
         ("todo", handler(|(): ()| -> i64 { todo!("t.t1: write it") })),
@@ -25,6 +33,18 @@ fn main() -> std::io::Result<()> {
                 println!("debugging: x = {x}");
                 eprintln!("to stderr");
                 x * 2
+            }),
+        ),
+        (
+            "hoard",
+            // Up to `mb` MiB in 64 MiB pieces, each written (so that it is really used); the
+            // count of pieces held when it returns.
+            handler(|mb: u64| {
+                let mut held: Vec<Vec<u8>> = Vec::new();
+                while (held.len() as u64) * 64 < mb {
+                    held.push(vec![1; 64 << 20]);
+                }
+                held.len()
             }),
         ),
         (
