@@ -346,7 +346,8 @@ pub impl Shape {
                 format!("塔（{}角柱の上に{}角すいを載せた形）", kanji(*sides), kanji(*sides))
             }
             (Lang::En, Shape::Tower { sides, .. }) => {
-                format!("tower (a {} prism with a {} pyramid on top)", gon(*sides), gon(*sides))
+                let (g, a) = (gon(*sides), if gon(*sides).starts_with('o') { "an" } else { "a" });
+                format!("tower ({a} {g} prism with {a} {g} pyramid on top)")
             }
             (Lang::Ja, Shape::Bipyramid { sides, .. }) => format!("双{}角すい", kanji(*sides)),
             (Lang::En, Shape::Bipyramid { sides, .. }) => format!("{} bipyramid", gon(*sides)),
@@ -431,6 +432,19 @@ mod tests {
             numbering: Numbering { order, ring },
             placement: Placement { x: 1.0, y: 0.0, z: -1.0, angle_deg: 30.0 },
         }
+    }
+
+    #[test]
+    fn english_names_take_their_article() {
+        let tower = |sides| Shape::Tower { sides, radius: 1.0, height: 1.0, tip_height: 1.0 };
+        assert_eq!(
+            tower(8).name(Lang::En),
+            "tower (an octagonal prism with an octagonal pyramid on top)"
+        );
+        assert_eq!(
+            tower(6).name(Lang::En),
+            "tower (a hexagonal prism with a hexagonal pyramid on top)"
+        );
     }
 
     #[test]

@@ -59,7 +59,7 @@ pub(crate) fn describe(spec: &Spec, lang: Lang) -> String {
                  \x20   (x, y, z, 1) → (x', y', z', 1)）。どの行列が何をするかも説明する。\n\
                  \x20 - 各変数の説明: どのような操作により、どのように変化する変数か（上の各行、範囲を含む）。\n\
                  \x20 - 光源の位置を視点の変換の後に設定する理由。\n\
-                 確かめ方: cargo run --release -- check a2 / 結果の絵: cargo run --release -- view a2\n",
+                 確認: cargo run --release -- check a2    表示: cargo run --release -- view a2\n",
             );
         }
         Lang::En => {
@@ -88,7 +88,7 @@ pub(crate) fn describe(spec: &Spec, lang: Lang) -> String {
                  \x20   side, (x, y, z, 1) → (x', y', z', 1)), and what each factor does;\n\
                  \x20 - each variable: which operation changes it and how (each line above, with its range);\n\
                  \x20 - why the light position is set after the view transform.\n\
-                 Check with: cargo run --release -- check a2 / see it: cargo run --release -- view a2\n",
+                 Check: cargo run --release -- check a2    View: cargo run --release -- view a2\n",
             );
         }
     }

@@ -44,11 +44,18 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         args.dir.display(),
         lang.pick("ファイル", "files")
     );
+    // The folder as the command names it, quoted for a shell when it has spaces.
+    let dir = args.dir.display().to_string();
+    let dir = if dir.contains([' ', '\'', '"']) {
+        format!("'{}'", dir.replace('\'', "'\\''"))
+    } else {
+        dir
+    };
     println!(
-        "{}",
+        "{} cd {dir} && cargo run --release -- check --student 12345678",
         lang.pick(
-            "solutions/ は含まれていません。確かめるには: cd <DIR> && cargo run --release -- check --student 12345678",
-            "It has no solutions/. To try it: cd <DIR> && cargo run --release -- check --student 12345678"
+            "solutions/ は含まれていません。確かめるには:",
+            "It has no solutions/. To try it:"
         )
     );
     Ok(())

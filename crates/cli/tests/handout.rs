@@ -13,6 +13,10 @@ fn the_handout_builds_and_checks_on_its_own_without_solutions() {
     let _ = std::fs::remove_dir_all(&dir);
     let o = common::cg(&root(), &["handout", dir.to_str().unwrap(), "--lang", "en"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // The next command it prints names this folder, runnable as printed.
+    let out = String::from_utf8_lossy(&o.stdout);
+    let cd = format!("cd {} && cargo run --release -- check", dir.display());
+    assert!(out.contains(&cd) && !out.contains("<DIR>"), "{out}");
 
     // No solutions anywhere: not the folder, not the manifests, not the lock file.
     assert!(!dir.join("solutions").exists());

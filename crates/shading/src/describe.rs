@@ -124,7 +124,7 @@ pub(crate) fn describe(s: &Spec, lang: Lang) -> String {
             );
             let _ = writeln!(
                 out,
-                "  確認: cargo run --release -- check s、画像: cargo run --release -- view s"
+                "  確認: cargo run --release -- check s    表示: cargo run --release -- view s"
             );
         }
         Lang::En => {
@@ -228,7 +228,7 @@ pub(crate) fn describe(s: &Spec, lang: Lang) -> String {
             );
             let _ = writeln!(
                 out,
-                "  Check: cargo run --release -- check s; images: cargo run --release -- view s"
+                "  Check: cargo run --release -- check s    View: cargo run --release -- view s"
             );
         }
     }
