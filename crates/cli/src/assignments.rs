@@ -228,13 +228,17 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
         sides.push((true, lang.pick("参考解答", "reference"), "reference"));
     }
     if !args.png && cg_viewer::display_available() && std::env::var_os("CG_NO_WINDOW").is_none() {
-        return view_window(args, &a, &sides, lang);
+        // A window that cannot open (a display named but dead): the same PNG files as --png.
+        match view_window(args, &a, &sides, lang)? {
+            None => return Ok(()),
+            Some(reason) => eprintln!("{}", cg_viewer::no_window(&reason, lang)),
+        }
     }
     println!(
         "{}",
         lang.pick(
-            "PNG に描画します（ウィンドウは画面（DISPLAY）があるときに --png なしで開きます）:",
-            "Drawing to PNG files (a window opens when there is a display (DISPLAY) and no --png):"
+            "PNG に描画します（ウィンドウは画面（WAYLAND_DISPLAY か DISPLAY）があるときに --png なしで開きます）:",
+            "Drawing to PNG files (a window opens when there is a display (WAYLAND_DISPLAY or DISPLAY) and no --png):"
         )
     );
     for (reference, label, file) in sides {
@@ -263,13 +267,14 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
 }
 
 /// `cg view` in a window: the student's result and the reference side by side, at the same time
-/// and from the same camera (assignment 2's camera is the student's own), animated.
+/// and from the same camera (assignment 2's camera is the student's own), animated. `Some(why)`
+/// when no window could be opened.
 fn view_window(
     args: &ViewArgs,
     a: &Variants,
     sides: &[(bool, &str, &str)],
     lang: Lang,
-) -> Result<(), String> {
+) -> Result<Option<String>, String> {
     let (which, warmup) = (args.which, args.warmup);
     let sources: Vec<cg_viewer::Source> = sides
         .iter()
@@ -304,7 +309,7 @@ fn view_window(
     };
     cg_viewer::print_keys(lang);
     let backends = cg_viewer::default_backends(None, lang);
-    cg_viewer::run_app(&mut app, backends, &options).map_err(|e| e.message(lang))
+    cg_viewer::run_window(&mut app, backends, &options).map_err(|e| e.message(lang))
 }
 
 /// `cg sync-stubs`: regenerates exercises/ from solutions/ (the kit's maintainers only).

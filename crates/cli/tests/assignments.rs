@@ -101,3 +101,26 @@ fn views_are_drawn_for_the_student_and_the_reference() {
     let wrong = cg(&root(), &["view", "a1", "--warmup", "--student", "12345678"]);
     assert!(!wrong.status.success(), "--warmup is for a3 only");
 }
+
+/// A display that is named but does not answer (`DISPLAY=:99`, no X server there; no Wayland):
+/// `view` says in a sentence why no window opens, without winit's source path, and draws the
+/// same PNG files as `--png` (not the viewer's generic `view.png`).
+#[test]
+fn a_dead_display_falls_back_to_the_views_own_png_files() {
+    let out = scratch("view-dead-display").join("png");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_cg"))
+        .args(["view", "a1", "--student", "12345678", "-o", out.to_str().unwrap(), "--lang", "en"])
+        .current_dir(root())
+        .env("DISPLAY", ":99")
+        .env_remove("WAYLAND_DISPLAY")
+        .env_remove("CG_NO_WINDOW")
+        .output()
+        .unwrap();
+    let (stdout, stderr) = (String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "{stderr}");
+    assert!(stderr.contains("no window can be opened"), "{stderr}");
+    assert!(!stderr.contains(".rs:"), "no source path in the message: {stderr}");
+    assert!(out.join("view-a1-reference.png").exists(), "{stdout}");
+    assert!(!out.join("view.png").exists(), "{stdout}");
+    assert!(stdout.contains("yours: not done yet"), "{stdout}");
+}

@@ -212,10 +212,38 @@ pub fn run_app<A: App>(
     options: &ViewerOptions,
 ) -> Result<(), ViewerError> {
     let mut shared = Shared::new(backends, options)?;
-    let reason = if options.headless {
-        None
-    } else if !display_available() {
-        Some(
+    if !options.headless {
+        match window_or_reason(app, &mut shared, options)? {
+            None => return Ok(()),
+            Some(reason) => eprintln!("{}", no_window(&reason, options.lang)),
+        }
+    }
+    headless(app, &mut shared)
+}
+
+/// Runs `app` in a window only: `Ok(None)` when it ran, `Ok(Some(reason))` when no window
+/// could be opened (nothing is drawn then: the caller decides what to do instead, as `cg view`
+/// draws its own PNG files).
+///
+/// # Errors
+/// As [`run_app`].
+pub fn run_window<A: App>(
+    app: &mut A,
+    backends: Vec<Box<dyn Backend>>,
+    options: &ViewerOptions,
+) -> Result<Option<String>, ViewerError> {
+    let mut shared = Shared::new(backends, options)?;
+    window_or_reason(app, &mut shared, options)
+}
+
+/// The window, or why there is none.
+fn window_or_reason<A: App>(
+    app: &mut A,
+    shared: &mut Shared,
+    options: &ViewerOptions,
+) -> Result<Option<String>, ViewerError> {
+    if !display_available() {
+        return Ok(Some(
             options
                 .lang
                 .pick(
@@ -223,24 +251,23 @@ pub fn run_app<A: App>(
                     "neither WAYLAND_DISPLAY nor DISPLAY is set",
                 )
                 .to_owned(),
-        )
-    } else {
-        match window::run(app, &mut shared) {
-            Outcome::Done => return Ok(()),
-            Outcome::Failed(e) => return Err(e),
-            Outcome::NoDisplay(reason) => Some(reason),
-        }
-    };
-    if let Some(reason) = reason {
-        eprintln!(
-            "{} ({reason}){}",
-            options.lang.pick("ウィンドウを開けません", "no window can be opened"),
-            options
-                .lang
-                .pick("。代わりに PNG ファイルに描画します", "; rendering to PNG files instead")
-        );
+        ));
     }
-    headless(app, &mut shared)
+    match window::run(app, shared) {
+        Outcome::Done => Ok(None),
+        Outcome::Failed(e) => Err(e),
+        Outcome::NoDisplay(reason) => Ok(Some(reason)),
+    }
+}
+
+/// "No window can be opened (why); rendering to PNG files instead", in `lang`.
+#[must_use]
+pub fn no_window(reason: &str, lang: Lang) -> String {
+    format!(
+        "{} ({reason}){}",
+        lang.pick("ウィンドウを開けません", "no window can be opened"),
+        lang.pick("。代わりに PNG ファイルに描画します", "; rendering to PNG files instead")
+    )
 }
 
 /// Renders `app` without a window: `init`, `reshape` to the window size, then `frames` frames

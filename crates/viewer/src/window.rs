@@ -410,14 +410,49 @@ impl<A: App> ApplicationHandler for Shell<'_, A> {
     }
 }
 
+/// The event loop on the display the environment names: on Linux and the BSDs, Wayland when
+/// `WAYLAND_DISPLAY` is set, else X11 (so winit does not first try, and have libwayland
+/// complain about, a Wayland it was not asked for); elsewhere the system's own.
+fn new_event_loop() -> Result<EventLoop<()>, winit::error::EventLoopError> {
+    let mut builder = EventLoop::builder();
+    #[cfg(any(
+        target_os = "linux",
+        target_os = "freebsd",
+        target_os = "openbsd",
+        target_os = "netbsd",
+        target_os = "dragonfly"
+    ))]
+    {
+        // platform: winit's Wayland and X11 backends exist on these systems only.
+        use winit::platform::wayland::EventLoopBuilderExtWayland;
+        use winit::platform::x11::EventLoopBuilderExtX11;
+        if std::env::var_os("WAYLAND_DISPLAY").is_some_and(|v| !v.is_empty()) {
+            builder.with_wayland();
+        } else {
+            builder.with_x11();
+        }
+    }
+    builder.build()
+}
+
+/// A window system's error as a sentence: winit's "os error at <its source file>:<line>: …"
+/// without the source location (which says nothing to a student).
+pub(crate) fn tidy_reason(reason: &str) -> String {
+    reason
+        .strip_prefix("os error at ")
+        .and_then(|rest| rest.find(".rs:").map(|at| &rest[at..]))
+        .and_then(|rest| rest.split_once(": "))
+        .map_or_else(|| reason.to_owned(), |(_, why)| why.to_owned())
+}
+
 /// Opens the window and runs the event loop until the app quits, the window closes or the frame
 /// limit is reached. [`Outcome::NoDisplay`] when no window could be opened.
 pub(crate) fn run<A: App>(app: &mut A, shared: &mut Shared) -> Outcome {
     // winit panics (instead of returning an error) when the event loop is created off the main
     // thread on Linux: that, too, means "no window here".
-    let event_loop = match std::panic::catch_unwind(EventLoop::new) {
+    let event_loop = match std::panic::catch_unwind(new_event_loop) {
         Ok(Ok(l)) => l,
-        Ok(Err(e)) => return Outcome::NoDisplay(e.to_string()),
+        Ok(Err(e)) => return Outcome::NoDisplay(tidy_reason(&e.to_string())),
         Err(_) => {
             return Outcome::NoDisplay(
                 "the window's event loop can only run on the main thread".to_owned(),
@@ -440,7 +475,7 @@ pub(crate) fn run<A: App>(app: &mut A, shared: &mut Shared) -> Outcome {
     };
     if let Err(e) = event_loop.run_app(&mut shell) {
         if shell.frames == 0 && matches!(shell.outcome, Outcome::Done) {
-            return Outcome::NoDisplay(e.to_string());
+            return Outcome::NoDisplay(tidy_reason(&e.to_string()));
         }
         return Outcome::Failed(ViewerError::Window(e.to_string()));
     }
