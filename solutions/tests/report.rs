@@ -31,12 +31,18 @@ fn assignment(student: &str) -> Variants {
     Variants::for_student(&n, TableVersion::LATEST)
 }
 
-/// The filled Markdown report of a correct student, with its derived data.
+/// The filled Markdown report of a correct student, with its derived data: as `cg report fill`
+/// writes it, each assignment's own text quoted in it.
 fn filled(student: &str, lang: Lang) -> (String, cg_report::model::Derived) {
     let a = assignment(student);
     let (derived, missing) = derive::derive(&a, &impls());
     assert!(missing.is_empty(), "{student}: the solutions derive everything: {missing:?}");
-    let ctx = Context { student: Some(student.to_owned()), ..Context::default() };
+    let assignments = cg_assign::Which::ALL
+        .iter()
+        .filter(|w| w.in_report())
+        .map(|&w| (w.id().to_owned(), a.describe_one(w, lang)))
+        .collect();
+    let ctx = Context { student: Some(student.to_owned()), assignments, ..Context::default() };
     let text = template::fill(
         template::template(lang, Format::Markdown),
         &fill::values(&derived, &ctx, lang, Format::Markdown),

@@ -389,7 +389,7 @@ pub impl Spec {
         let report: [&str; 5] = if ja {
             [
                 "頂点の表 V0 (x, y, z) … と、寸法からその座標を求めた過程（角度と cos・sin の計算など）",
-                "面の表 F0 { V0, V3, V1 } … と各面の法線 { nx, ny, nz }（外積の計算の過程も）",
+                "面の表（講義の書き方 Fi { Va, Vb, Vc }）と各面の法線 { nx, ny, nz }（外積の計算の過程も）",
                 "頂点と面のつながりが分かる三面図（xy・xz・yz 平面）や透視図。頂点番号と面番号を書き込み、裏側の頂点・面は括弧付きで",
                 "配置の変換行列を、平行移動と回転の行列の積として（各変数の説明つき）",
                 "配列のデータを示すだけでは不十分: 何故そのようなデータになったのか、結果だけでなく導出の過程を説明する図",
@@ -397,7 +397,7 @@ pub impl Spec {
         } else {
             [
                 "the vertex table V0 (x, y, z) … and how each position follows from the dimensions (the angles, the cos and sin)",
-                "the face table F0 { V0, V3, V1 } … with each face's normal { nx, ny, nz } (and how the cross product gives it)",
+                "the face table (the lecture's notation Fi { Va, Vb, Vc }) with each face's normal { nx, ny, nz } (and how the cross product gives it)",
                 "three views (the xy, xz and yz planes) or a perspective view that show how vertices and faces connect, with the vertex and face numbers; hidden vertices and faces in parentheses",
                 "the placement as a product of translation and rotation matrices, each variable explained",
                 "tables alone are not enough: figures that explain how the data was derived, not only the result",
