@@ -190,16 +190,11 @@ mod encoding_tests {
 
     /// A fresh folder `山田 太郎` under a scratch folder of this test.
     fn student_folder(name: &str) -> PathBuf {
-        let dir = std::env::temp_dir()
-            .join(format!("cg-scene-encoding-{}-{name}", std::process::id()))
-            .join("山田 太郎");
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        dir
+        cg_testkit::student_folder("cg-scene-encoding", name)
     }
 
     fn remove(dir: &Path) {
-        let _ = std::fs::remove_dir_all(dir.parent().unwrap());
+        cg_testkit::remove_student_folder(dir);
     }
 
     fn utf16le(s: &str) -> Vec<u8> {

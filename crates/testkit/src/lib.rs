@@ -17,6 +17,26 @@ pub mod images;
 pub mod prop;
 pub mod text;
 
+/// A fresh, empty folder named as a Japanese student's (`山田 太郎`: kanji and a space) under
+/// `<temp>/<group>-<pid>-<name>`, for tests of paths students really have. Remove it with
+/// [`remove_student_folder`].
+#[must_use]
+pub fn student_folder(group: &str, name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir()
+        .join(format!("{group}-{}-{name}", std::process::id()))
+        .join("山田 太郎");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display()));
+    dir
+}
+
+/// Removes a [`student_folder`] with its scratch parent.
+pub fn remove_student_folder(dir: &std::path::Path) {
+    if let Some(parent) = dir.parent() {
+        let _ = std::fs::remove_dir_all(parent);
+    }
+}
+
 use glam::{DVec3, Vec3};
 use rand::rngs::StdRng;
 use rand::{RngExt, SeedableRng};

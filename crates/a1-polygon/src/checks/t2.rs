@@ -14,26 +14,21 @@ use crate::spec::ShapeExt;
 use crate::spec::Spec;
 
 use super::{
-    SURFACE_TOLERANCE, coincident_vertices, indices_failure, join, listed, message, no_faces,
+    SURFACE_TOLERANCE, coincident_vertices, indexed_mesh, join, listed, message, no_faces,
     student_mesh,
 };
 
 /// The student's mesh and its validation, or the failure that keeps a topology check from
 /// running (no faces, an index out of range, a non-finite position).
 fn validated(spec: &Spec, imp: &Impl) -> Result<(Mesh, Validation), Failure> {
-    let mesh = student_mesh(spec, imp);
-    if mesh.faces.is_empty() {
-        return Err(no_faces());
-    }
-    if let Err(e) = mesh.check_indices() {
-        return Err(indices_failure(
-            &e,
-            t(
-                "先に a1.t2.indices（と a1.t1）を直してください。このチェックはそれからです。",
-                "fix a1.t2.indices (and a1.t1) first; this check runs after them.",
-            ),
-        ));
-    }
+    let mesh = indexed_mesh(
+        spec,
+        imp,
+        t(
+            "先に a1.t2.indices（と a1.t1）を直してください。このチェックはそれからです。",
+            "fix a1.t2.indices (and a1.t1) first; this check runs after them.",
+        ),
+    )?;
     let validation = mesh.validate();
     Ok((mesh, validation))
 }

@@ -12,9 +12,7 @@ use cg_harness::text::{Text, t};
 use crate::Impl;
 use crate::spec::Spec;
 
-use super::{
-    NORMAL_TOLERANCE, UNIT_TOLERANCE, close, indices_failure, join, listed, no_faces, student_mesh,
-};
+use super::{NORMAL_TOLERANCE, UNIT_TOLERANCE, close, indexed_mesh, join, listed, no_faces};
 
 fn braces(v: Vec3) -> String {
     notation::braces(v, 4)
@@ -103,16 +101,11 @@ pub(super) fn normal_unit(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 
 pub(super) fn normal_values(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let normals = (imp.face_normals)(spec);
-    let mesh = student_mesh(spec, imp);
-    if mesh.faces.is_empty() {
-        return Err(no_faces());
-    }
-    if let Err(e) = mesh.check_indices() {
-        return Err(indices_failure(
-            &e,
-            t("先に a1.t2.indices を直してください。", "fix a1.t2.indices first."),
-        ));
-    }
+    let mesh = indexed_mesh(
+        spec,
+        imp,
+        t("先に a1.t2.indices を直してください。", "fix a1.t2.indices first."),
+    )?;
     if normals.is_empty() {
         return Err(Failure::new(
             t("1 面に 1 つの法線", "one normal per face"),
