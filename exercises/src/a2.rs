@@ -10,9 +10,15 @@
 //! | a2.t2 | [`camera`] | the view transform at the top of `display()` |
 //! | a2.t3 | [`display`] | `display()`: identity, camera, light, objects |
 //!
+//! Each function starts as a stub that runs (so `view a2` still opens), with the line
+//! `cg_student::not_started("a2.t1");`: while it is there, `check a2` says that task is "not done
+//! yet". **Delete that line when you start the function**; from then on the checks judge it.
+//!
 //! 自分のマウス操作は課題文（`cargo run --release -- assignment --only a2`）と `spec` にあります。
 //! サンプルプログラムのうち変更する 3 か所を書きます。確かめ方: `cargo run --release -- check a2`、
-//! 絵で見る: `cargo run --release -- view a2`。
+//! 絵で見る: `cargo run --release -- view a2`。各関数の最初の行
+//! `cg_student::not_started("a2.t1");` は「まだ手を付けていない」印です。この行があるあいだ、
+//! チェックは「まだです」になります。書き始めたらこの行を消してください。
 
 use cg_student::a2::{CameraState, Drag, Spec};
 use cg_student::gl::Gl;
@@ -45,6 +51,7 @@ use cg_student::a2::{DragAxis, LIGHT0_POSITION, MouseButton, draw_course_objects
 /// `camera_yaw` は `[0, 360)` に折り返し、ほかは範囲に収めます（`clamp`）。斜めのドラッグでは dx と
 /// dy の両方が効きます（`else if` にしない）。
 pub fn motion(spec: &Spec, state: &mut CameraState, drag: &Drag) {
+    cg_student::not_started("a2.t1"); // 書き始めたらこの行を消す / delete it when you start
     // TODO a2.t1: change the variables for this drag (see the comment above).
     // While this is empty the camera does not move when you drag.
 }
@@ -70,6 +77,7 @@ pub fn motion(spec: &Spec, state: &mut CameraState, drag: &Drag) {
 /// これに camera_yaw（Y 軸まわり）と注視点の平行移動を加えます。後に呼んだ変換ほど先に頂点に
 /// 作用します。camera_pitch = ±90° でも正しく動くこと。
 pub fn camera(gl: &mut Gl, state: &CameraState) {
+    cg_student::not_started("a2.t2"); // 書き始めたらこの行を消す / delete it when you start
     // TODO a2.t2: the view transform. While this is empty the camera sits at the origin.
 }
 
@@ -87,6 +95,7 @@ pub fn camera(gl: &mut Gl, state: &CameraState) {
 /// （`draw_course_objects(gl)`）。光源の位置はその時点のモデルビュー行列を掛けて保存されるので、
 /// 視点の変換の後に設定するとワールド座標系に固定されます。
 pub fn display(gl: &mut Gl, state: &CameraState) {
+    cg_student::not_started("a2.t3"); // 書き始めたらこの行を消す / delete it when you start
     // TODO a2.t3: identity, camera, light, objects. While this is empty nothing is drawn.
     gl.load_identity();
 }

@@ -16,6 +16,12 @@
 //! Check your work with `cargo run --release -- check a3`, look at it with
 //! `cargo run --release -- view a3 --time 1.5` (any time in seconds).
 //!
+//! Each function starts as a stub that runs (so the view still draws the ground), with the line
+//! `cg_student::not_started("a3.t1");`: while it is there, `check a3` says that task is "not done
+//! yet". **Delete that line when you start the function**; from then on the checks judge it.
+//! 各関数の最初の行 `cg_student::not_started(…);` は「まだ手を付けていない」印です。この行がある
+//! あいだ、チェックは「まだです」になります。書き始めたらこの行を消してください。
+//!
 //! For the report, a transform can carry the variable's name: `gl.mult(Factor::rotate(Axis::Y,
 //! Param::sym("theta_1", theta1)))` does what `gl.rotate(theta1, 0.0, 1.0, 0.0)` does and prints
 //! as `Ry(theta_1)`.
@@ -51,6 +57,7 @@ use cg_student::product::{Axis, Factor, Param};
 ///
 /// Hint: `(t / 4.0).rem_euclid(1.0)` is how far (0 ≤ u < 1) into its 4-second period box 1 is.
 pub fn warmup_display(gl: &mut Gl, t: f64) {
+    cg_student::not_started("a3.t0"); // 書き始めたらこの行を消す / delete it when you start
     // TODO a3.t0: draw "box 1", "box 2" and "box 3" (nothing is drawn yet).
 }
 
@@ -74,6 +81,7 @@ pub fn warmup_display(gl: &mut Gl, t: f64) {
 ///
 /// Hint: `let p = object.motion.period_frames(); let u = (state.frame % p) as f64 / p as f64;`
 pub fn idle(spec: &Spec, state: &mut State) {
+    cg_student::not_started("a3.t1"); // 書き始めたらこの行を消す / delete it when you start
     // TODO a3.t1: advance state.frame and compute state.params (nothing moves yet).
 }
 
@@ -99,6 +107,7 @@ pub fn idle(spec: &Spec, state: &mut State) {
 /// Hint: `let [x, y, z] = position; gl.translate(x, y, z);` — glam-free. For the report, prefer
 /// `gl.mult(Factor::rotate(Axis::Y, Param::sym("theta_1", theta)))` to `gl.rotate`.
 pub fn display(spec: &Spec, state: &State, gl: &mut Gl) {
+    cg_student::not_started("a3.t2"); // 書き始めたらこの行を消す / delete it when you start
     // TODO a3.t2: camera, light, then every object (nothing is drawn yet).
 }
 

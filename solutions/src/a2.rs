@@ -10,9 +10,15 @@
 //! | a2.t2 | [`camera`] | the view transform at the top of `display()` |
 //! | a2.t3 | [`display`] | `display()`: identity, camera, light, objects |
 //!
+//! Each function starts as a stub that runs (so `view a2` still opens), with the line
+//! `cg_student::not_started("a2.t1");`: while it is there, `check a2` says that task is "not done
+//! yet". **Delete that line when you start the function**; from then on the checks judge it.
+//!
 //! 自分のマウス操作は課題文（`cargo run --release -- assignment --only a2`）と `spec` にあります。
 //! サンプルプログラムのうち変更する 3 か所を書きます。確かめ方: `cargo run --release -- check a2`、
-//! 絵で見る: `cargo run --release -- view a2`。
+//! 絵で見る: `cargo run --release -- view a2`。各関数の最初の行
+//! `cg_student::not_started("a2.t1");` は「まだ手を付けていない」印です。この行があるあいだ、
+//! チェックは「まだです」になります。書き始めたらこの行を消してください。
 
 use cg_student::a2::{CameraState, Drag, Spec};
 use cg_student::gl::Gl;
@@ -73,6 +79,7 @@ pub fn motion(spec: &Spec, state: &mut CameraState, drag: &Drag) {
     }
     // END SOLUTION
     // BEGIN STUB
+    // cg_student::not_started("a2.t1"); // 書き始めたらこの行を消す / delete it when you start
     // // TODO a2.t1: change the variables for this drag (see the comment above).
     // // While this is empty the camera does not move when you drag.
     // END STUB
@@ -121,6 +128,7 @@ pub fn camera(gl: &mut Gl, state: &CameraState) {
     gl.translate(-state.target_x, 0.0, -state.target_z);
     // END SOLUTION
     // BEGIN STUB
+    // cg_student::not_started("a2.t2"); // 書き始めたらこの行を消す / delete it when you start
     // // TODO a2.t2: the view transform. While this is empty the camera sits at the origin.
     // END STUB
 }
@@ -146,6 +154,7 @@ pub fn display(gl: &mut Gl, state: &CameraState) {
     draw_course_objects(gl);
     // END SOLUTION
     // BEGIN STUB
+    // cg_student::not_started("a2.t3"); // 書き始めたらこの行を消す / delete it when you start
     // // TODO a2.t3: identity, camera, light, objects. While this is empty nothing is drawn.
     // gl.load_identity();
     // END STUB

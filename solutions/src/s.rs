@@ -171,6 +171,10 @@ pub fn spot_factor(l: Vec3, spot_direction: Vec3, cutoff_deg: f32, exponent: f32
 /// 面の法線は外積 (b−a)×(c−a) を正規化したもの（単位ベクトル）。それをその面の 3 つの頂点に足して
 /// いき、最後に正規化します。面積 0 の面は外積がゼロベクトルなので足しません（`try_normalize()` が
 /// `None`）。どの面にも使われない頂点はゼロベクトル。NaN にしないこと。
+///
+/// The stub runs (the view needs normals) and starts with `cg_student::not_started("s.t5");`:
+/// the checks say s.t5 is "not done yet" until you delete that line, which you do when you start.
+/// スタブの最初の行 `cg_student::not_started("s.t5");` は書き始めたら消します。
 pub fn vertex_normals(mesh: &Mesh) -> Vec<Vec3> {
     // BEGIN SOLUTION
     let mut sums = vec![Vec3::ZERO; mesh.positions.len()];
@@ -185,6 +189,7 @@ pub fn vertex_normals(mesh: &Mesh) -> Vec<Vec3> {
     sums.iter().map(|s| s.normalize_or_zero()).collect()
     // END SOLUTION
     // BEGIN STUB
+    // cg_student::not_started("s.t5"); // 書き始めたらこの行を消す / delete it when you start
     // // TODO s.t5: every vertex points straight up for now, so the view still draws.
     // vec![Vec3::Y; mesh.positions.len()]
     // END STUB
@@ -256,6 +261,7 @@ pub fn shade_pixel(mode: Shading, pixel: &Pixel, light: &dyn Fn(Vec3, Vec3) -> R
     }
     // END SOLUTION
     // BEGIN STUB
+    // cg_student::not_started("s.t6"); // 書き始めたらこの行を消す / delete it when you start
     // // TODO s.t6: magenta marks the pixels your shading does not colour yet (the view still
     // // draws).
     // Rgb::new(1.0, 0.0, 1.0)

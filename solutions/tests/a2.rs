@@ -1,5 +1,6 @@
 //! Assignment a2 (camera interface): the reference answers pass every check for students whose
-//! variants cover every option of the table; the pristine stubs fail every check; the variant
+//! variants cover every option of the table; the pristine stubs are "not done yet" in every
+//! check (their markers), and fail every check without the markers; the variant
 //! table is deterministic, valid and diverse; the texts name the tasks in both languages; the
 //! report's product and the view come out of the student's code.
 
@@ -9,9 +10,9 @@ use cg_assign::cg_a2;
 use std::collections::BTreeSet;
 
 use cg_a2::SpecExt as _;
-use cg_a2::{CameraState, DragAxis, Gesture, MouseButton, Spec};
+use cg_a2::{CameraState, DragAxis, Gesture, Impl, MouseButton, Spec};
 use cg_core::lang::Lang;
-use cg_harness::check::Outcome;
+use cg_harness::check::{Outcome, Report};
 use cg_harness::{StudentNumber, TableVersion, VariantRng};
 
 /// Students whose variants together cover all 8 layouts, all 6 pitch ranges, both kinds of
@@ -74,13 +75,49 @@ fn every_check_passes_on_the_reference_answers() {
 }
 
 #[test]
-fn every_check_fails_on_the_pristine_stubs() {
+fn every_check_is_not_done_yet_on_the_pristine_stubs() {
     let stub = cg_exercises::a2::implementation();
     for student in STUDENTS {
         let spec = spec_of(student);
-        for r in cg_a2::checks(&spec, &stub) {
-            assert!(!r.passed(), "{student}: {} passes on the stubs", r.id);
-            // The stubs are placeholders (the window must still open): they fail, never panic.
+        let report = Report {
+            assignment: cg_a2::ID.into(),
+            student: Some(student.into()),
+            checks: cg_a2::checks(&spec, &stub),
+        };
+        // The stubs run (the window must still open) and carry their task's marker,
+        // `cg_student::not_started("a2.t1");`: every check is "not done yet" for its own task.
+        for r in &report.checks {
+            let Outcome::NotDone { message } = &r.outcome else {
+                panic!("{student}: {} is {:?}, not \"not done yet\"", r.id, r.outcome)
+            };
+            assert!(message.starts_with(&format!("{}: ", r.task)), "{}: {message}", r.id);
+            let line = format!("cg_student::not_started(\"{}\");", r.task);
+            assert!(message.contains(&line), "{}: {message}", r.id);
+        }
+        assert_eq!(report.tasks_not_done(), ["a2.t1", "a2.t2", "a2.t3"], "{student}");
+        assert!(report.tasks_failing().is_empty(), "{student}");
+        let en = report.render(Lang::En);
+        assert!(
+            en.contains("; not done yet: a2.t1, a2.t2, a2.t3\n") && !en.contains("to fix"),
+            "{en}"
+        );
+        let ja = report.render(Lang::Ja);
+        assert!(ja.contains("まだです: a2.t1（書き始めたら") && !ja.contains("直すところ"), "{ja}");
+    }
+}
+
+/// The stubs' bodies without their markers: a student who deleted the lines and wrote nothing
+/// (or nothing right) yet.
+fn unmarked_stubs() -> Impl {
+    Impl { motion: |_, _, _| {}, camera: |_, _| {}, display: |gl, _| gl.load_identity() }
+}
+
+#[test]
+fn without_their_markers_the_stubs_are_judged_and_fail_with_explanations() {
+    for student in STUDENTS {
+        let spec = spec_of(student);
+        for r in cg_a2::checks(&spec, &unmarked_stubs()) {
+            // Placeholders, not `todo!()`s: they fail, never panic.
             let Outcome::Fail(f) = &r.outcome else {
                 panic!("{student}: {} is {:?}, not a failure", r.id, r.outcome)
             };
@@ -89,6 +126,68 @@ fn every_check_fails_on_the_pristine_stubs() {
             }
             assert!(f.location.as_ref().is_some_and(|l| !l.is_empty()), "{}: {f:?}", r.id);
         }
+    }
+}
+
+/// The reference's functions with the stubs' markers left in: a student who wrote the code but
+/// kept the line.
+fn marked_solution() -> Impl {
+    Impl {
+        motion: |spec, state, drag| {
+            cg_student::not_started("a2.t1");
+            cg_solutions::a2::motion(spec, state, drag);
+        },
+        camera: |gl, state| {
+            cg_student::not_started("a2.t2");
+            cg_solutions::a2::camera(gl, state);
+        },
+        display: |gl, state| {
+            cg_student::not_started("a2.t3");
+            cg_solutions::a2::display(gl, state);
+        },
+    }
+}
+
+#[test]
+fn the_marker_wins_while_it_is_there_and_only_for_the_checks_that_reach_it() {
+    let spec = spec_of(STUDENTS[0]);
+    // Right code or wrong code: while the line is there, its task is not done yet.
+    for imp in [
+        marked_solution(),
+        Impl {
+            motion: |_, state, _| {
+                cg_student::not_started("a2.t1");
+                state.camera_yaw = 1e9;
+            },
+            ..marked_solution()
+        },
+    ] {
+        for r in cg_a2::checks(&spec, &imp) {
+            assert!(matches!(r.outcome, Outcome::NotDone { .. }), "{}: {:?}", r.id, r.outcome);
+        }
+    }
+    // One line deleted: that task is judged (and passes), the others are still not done.
+    let started = Impl { camera: cg_solutions::a2::camera, ..marked_solution() };
+    for r in cg_a2::checks(&spec, &started) {
+        match r.task.as_str() {
+            "a2.t2" => assert!(r.passed(), "{}: {:?}", r.id, r.outcome),
+            _ => assert!(matches!(r.outcome, Outcome::NotDone { .. }), "{}: {:?}", r.id, r.outcome),
+        }
+    }
+    // display() calls the student's camera(): a check of a2.t3 that reaches a2.t2's marker is
+    // not done yet, and says which line is left.
+    let display_only = Impl {
+        display: |gl, state| {
+            gl.load_identity();
+            (marked_solution().camera)(gl, state);
+            gl.light_position(0, cg_student::a2::LIGHT0_POSITION);
+            cg_student::a2::draw_course_objects(gl);
+        },
+        ..unmarked_stubs()
+    };
+    for r in cg_a2::checks(&spec, &display_only).iter().filter(|r| r.task == "a2.t3") {
+        let Outcome::NotDone { message } = &r.outcome else { panic!("{}: {:?}", r.id, r.outcome) };
+        assert!(message.starts_with("a2.t2: "), "{}: {message}", r.id);
     }
 }
 

@@ -1,5 +1,6 @@
 //! The instructor's proof for assignment a3 (animation): every check passes on the reference
-//! solution for students covering every variant family, every check fails on the pristine stubs,
+//! solution for students covering every variant family, every check is "not done yet" on the
+//! pristine stubs (their markers) and fails without the markers,
 //! and each broken answer of a kind students really hand in fails the checks it should (and the
 //! ones that name its mistake) — while every check ID fails for at least one of them.
 
@@ -113,17 +114,83 @@ fn every_check_passes_on_the_solution() {
 }
 
 #[test]
-fn every_check_fails_on_the_pristine_stubs() {
+fn every_check_is_not_done_yet_on_the_pristine_stubs() {
     let imp = cg_exercises::a3::implementation();
+    for_students(&STUDENTS[..2], |s| {
+        let report = Report {
+            assignment: "a3".into(),
+            student: Some(s.into()),
+            checks: run(&spec_for(s), &imp),
+        };
+        // The stubs run (the view draws the ground) and carry their task's marker,
+        // `cg_student::not_started("a3.t1");`: every check is "not done yet", naming its own task.
+        for c in &report.checks {
+            let Outcome::NotDone { message } = &c.outcome else {
+                panic!("{s}: {} is {:?}, not \"not done yet\"", c.id, c.outcome)
+            };
+            let line = format!("{}: 書き始めたら cg_student::not_started(\"{}\");", c.task, c.task);
+            assert!(message.starts_with(&line), "{s}: {}: {message}", c.id);
+        }
+        assert_eq!(report.tasks_not_done(), ["a3.t0", "a3.t1", "a3.t2"], "{s}");
+        assert!(report.tasks_failing().is_empty(), "{s}");
+        let en = report.render(Lang::En);
+        assert!(
+            en.contains("; not done yet: a3.t0, a3.t1, a3.t2\n") && !en.contains("to fix"),
+            "{en}"
+        );
+    });
+}
+
+/// The stubs' bodies without their markers: a student who deleted the lines and wrote nothing
+/// yet.
+fn unmarked_stubs() -> Impl {
+    Impl { warmup_display: |_, _| {}, idle: |_, _| {}, display: |_, _, _| {} }
+}
+
+#[test]
+fn without_their_markers_the_stubs_are_judged_and_fail() {
+    let imp = unmarked_stubs();
     for_students(&STUDENTS[..2], |s| {
         let results = run(&spec_for(s), &imp);
         for c in &results {
-            assert!(!c.passed(), "{} passes on the stubs for {s}", c.id);
+            assert!(matches!(c.outcome, Outcome::Fail(_)), "{s}: {} is {:?}", c.id, c.outcome);
         }
         // Drift says the task is not done yet (nothing is drawn), not that anything drifts.
         let Outcome::Fail(f) = check_of(&results, "a3.t1.drift").outcome else { unreachable!() };
         assert!(f.cause.en.contains("not done yet"), "{f:?}");
     });
+}
+
+#[test]
+fn the_marker_wins_while_it_is_there_and_only_for_the_checks_that_reach_it() {
+    let spec = spec_for(STUDENTS[0]);
+    // The reference's functions with their markers left in: every check is not done yet.
+    let marked = Impl {
+        warmup_display: |gl, t| {
+            cg_student::not_started("a3.t0");
+            cg_solutions::a3::warmup_display(gl, t);
+        },
+        idle: |spec, state| {
+            cg_student::not_started("a3.t1");
+            cg_solutions::a3::idle(spec, state);
+        },
+        display: |spec, state, gl| {
+            cg_student::not_started("a3.t2");
+            cg_solutions::a3::display(spec, state, gl);
+        },
+    };
+    for c in run(&spec, &marked) {
+        assert!(matches!(c.outcome, Outcome::NotDone { .. }), "{}: {:?}", c.id, c.outcome);
+    }
+    // The warm-up's line deleted: a3.t0 is judged (and passes); the rest is still not done.
+    let warmed_up = Impl { warmup_display: cg_solutions::a3::warmup_display, ..marked };
+    for c in run(&spec, &warmed_up) {
+        if c.task == "a3.t0" {
+            assert!(c.passed(), "{}: {:?}", c.id, c.outcome);
+        } else {
+            assert!(matches!(c.outcome, Outcome::NotDone { .. }), "{}: {:?}", c.id, c.outcome);
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -135,21 +135,73 @@ fn every_check_fails_on_the_stubs() {
     for c in &results {
         assert!(!c.passed(), "{} passes on the stub", c.id);
     }
-    // Checks calling a todo!() say "not done yet"; the placeholders (s.t5 plain average, s.t6)
-    // fail with an explanation that names the placeholder.
+    // Checks calling a todo!() say "not done yet", and so do those of s.t5 and s.t6, whose
+    // stubs run (the view needs normals and colours) with their markers,
+    // `cg_student::not_started("s.t5");` and `("s.t6")`. (Without its marker, s.t6's magenta
+    // placeholder fails with an explanation that names it: `cg-shading`'s own tests.)
     for c in &results {
-        match (&c.outcome, c.task.as_str()) {
-            (Outcome::Fail(f), "s.t6") => {
-                assert!(
-                    f.cause.en.contains("placeholder magenta") || c.id == "s.t6.highlight",
-                    "{c:?}"
-                );
-            }
-            (Outcome::Fail(f), "s.t5") => assert!(f.cause.en.contains("placeholder"), "{c:?}"),
-            (Outcome::NotDone { message }, _) => assert!(message.starts_with(&c.task), "{c:?}"),
-            (other, _) => panic!("{}: {other:?}", c.id),
+        match &c.outcome {
+            Outcome::NotDone { message } => assert!(message.starts_with(&c.task), "{c:?}"),
+            other => panic!("{}: {other:?}", c.id),
         }
     }
+    let average = results.iter().find(|c| c.id == "s.t5.average").expect("s.t5.average");
+    let Outcome::NotDone { message } = &average.outcome else { panic!("{average:?}") };
+    assert!(message.contains("cg_student::not_started(\"s.t5\");"), "{average:?}");
+}
+
+/// s.t5's stub without its marker (a student who deleted the line and kept the placeholder) is
+/// judged: its checks fail, naming the placeholder; with the marker and a right answer, its
+/// checks are still "not done yet" (the marker wins while it is there).
+#[test]
+fn the_s_t5_marker_wins_while_it_is_there() {
+    let spec = spec_of(STUDENTS[1]);
+    let unmarked = Impl {
+        vertex_normals: |mesh| vec![Vec3::Y; mesh.positions.len()],
+        vertex_normals_area: solution::vertex_normals_area,
+        ..solution::implementation()
+    };
+    let vertex_normals_checks = |imp: &Impl| -> Vec<_> {
+        cg_shading::checks(&spec, imp).into_iter().filter(|c| c.task == "s.t5").collect()
+    };
+    let judged = vertex_normals_checks(&unmarked);
+    assert!(judged.iter().any(|c| !c.passed()), "{judged:?}");
+    for c in judged.iter().filter(|c| !c.passed()) {
+        let Outcome::Fail(f) = &c.outcome else { panic!("{c:?}") };
+        assert!(f.cause.en.contains("placeholder"), "{c:?}");
+    }
+    let marked = Impl {
+        vertex_normals: |mesh| {
+            cg_student::not_started("s.t5");
+            solution::vertex_normals(mesh)
+        },
+        ..solution::implementation()
+    };
+    for c in cg_shading::checks(&spec, &marked) {
+        match c.id.as_str() {
+            "s.t5.average" | "s.t5.degenerate" => {
+                assert!(matches!(c.outcome, Outcome::NotDone { .. }), "{c:?}");
+            }
+            // Checks that never call vertex_normals are judged (and pass).
+            _ => assert!(c.passed(), "{c:?}"),
+        }
+    }
+}
+
+/// s.t6's stub without its marker (the line deleted, the magenta placeholder kept) is judged:
+/// its pixel checks fail, naming the placeholder.
+#[test]
+fn the_s_t6_placeholder_without_its_marker_is_named() {
+    let spec = spec_of(STUDENTS[1]);
+    let unmarked =
+        Impl { shade_pixel: |_, _, _| Rgb::new(1.0, 0.0, 1.0), ..solution::implementation() };
+    let judged: Vec<_> =
+        cg_shading::checks(&spec, &unmarked).into_iter().filter(|c| c.task == "s.t6").collect();
+    assert!(!judged.is_empty() && judged.iter().all(|c| !c.passed()), "{judged:?}");
+    let named = judged.iter().filter(
+        |c| matches!(&c.outcome, Outcome::Fail(f) if f.cause.en.contains("placeholder magenta")),
+    );
+    assert!(named.count() >= 3, "{judged:?}");
 }
 
 // ---------------------------------------------------------------------------------------------

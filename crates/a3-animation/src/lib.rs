@@ -21,7 +21,7 @@
 //! | `a3.t2` | `display(spec, state, gl)` | camera, light, every object with its transform |
 //!
 //! Time: one call of `idle` is one frame, [`FPS`] frames a second; after `n` calls the time is
-//! `t = n / 60` s. NUMERICS.md row 11: the parameters are rebuilt from the integer frame count
+//! `t = n / 60` s. docs/numerics.md row 11: the parameters are rebuilt from the integer frame count
 //! each frame and reduced by the period, never accumulated in f32 ([`checks`] runs `idle`
 //! [`DRIFT_FRAMES`] times and compares).
 

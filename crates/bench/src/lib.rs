@@ -1,6 +1,6 @@
 //! Speed against error (速度と誤差): the kit's benchmark report.
 //!
-//! Every experiment of NUMERICS.md's second table runs on this machine in one run, measures what
+//! Every experiment of docs/numerics.md's second table runs on this machine in one run, measures what
 //! each choice costs (median wall-clock time over repeated runs, [`std::time::Instant`]) and how
 //! far it lands from a reference, and becomes a table and an SVG plot (error against time, the
 //! Pareto front marked) in `docs/speed-vs-error.md`:
@@ -16,7 +16,7 @@
 //! | `ray-depth` | the tracer's `max_depth` | depth 16 |
 //! | `features` | each renderer (rasterizer, ray tracer, GPU) with and without each feature | the scene without it |
 //!
-//! Nothing here asserts a time: the figures are for the report (NUMERICS.md lists figures seen
+//! Nothing here asserts a time: the figures are for the report (docs/numerics.md lists figures seen
 //! elsewhere, for comparison). The errors are deterministic (seeded inputs); the times are not.
 //!
 //! Entry points: [`run`] measures and returns a [`Report`]; [`Report::write`] writes the
@@ -71,7 +71,7 @@ pub struct Config {
 }
 
 impl Config {
-    /// The committed report: every knob at the sizes NUMERICS.md discusses.
+    /// The committed report: every knob at the sizes docs/numerics.md discusses.
     #[must_use]
     pub fn full() -> Config {
         Config {
@@ -403,7 +403,7 @@ impl Report {
              (seeded inputs). Each plot shows error against time (log–log); the circled points \
              joined by a line are the Pareto front (no other choice is both faster and more \
              accurate). Zero errors are drawn at the bottom of the plot. The table's `Pareto` \
-             column marks the same points. NUMERICS.md lists figures seen elsewhere, for comparison.\n"
+             column marks the same points. docs/numerics.md lists figures seen elsewhere, for comparison.\n"
         );
         for e in &self.experiments {
             let _ = writeln!(s, "## {}\n", e.title);

@@ -1,13 +1,15 @@
 //! `cg-check-runner` end to end: the worker serves the kit's pristine stubs (each call a panic
-//! with the stub's `todo!()` message, the worker going on), refuses a bad command line, serves
-//! the same under the grading sandbox's launch line (bubblewrap, with its seccomp filter on a
-//! descriptor of its own, so stdin stays the worker's), and links nothing of the kit's checks.
+//! with the stub's `todo!()` message, the worker going on; or, for a stub that runs, its value
+//! with its marker), refuses a bad command line, serves the same under the grading sandbox's
+//! launch line (bubblewrap, with its seccomp filter on a descriptor of its own, so stdin stays
+//! the worker's), and links nothing of the kit's checks.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Duration;
 
 use cg_student::a1;
+use cg_student::gl::Gl;
 use cg_student::glam::Vec3;
 use cg_worker::{CallError, Worker};
 
@@ -44,6 +46,19 @@ fn the_stubs_are_served_and_each_call_is_its_todo() {
     assert!(matches!(w.call::<_, u8>("a9.nothing", &(), BUDGET), Err(CallError::Broken(_))));
     assert!(matches!(w.call::<_, u8>("a1.vertices", &"x", BUDGET), Err(CallError::Broken(_))));
     expect_todo(w.call("a1.vertices", &spec(), BUDGET), "a1.t1");
+    // A stub that runs (a2's, so the view still draws) gives its value, and its marker
+    // (`cg_student::not_started`) comes back with it, for the checks.
+    let _ = cg_student::take_not_started();
+    let state = cg_student::a2::CameraState {
+        camera_yaw: 0.0,
+        camera_pitch: -30.0,
+        camera_distance: 15.0,
+        target_x: 0.0,
+        target_z: 0.0,
+    };
+    let gl: Gl = w.call("a2.camera", &(Gl::new(), state), BUDGET).unwrap();
+    assert!(gl.calls().is_empty(), "{gl:?}");
+    assert_eq!(cg_student::take_not_started(), ["a2.t2"]);
 }
 
 #[test]

@@ -9,6 +9,7 @@ use cg_assign::{Impls, StudentFile, Variants, Which, write_student_file};
 use cg_core::lang::Lang;
 use cg_core::scene::Scene;
 use cg_harness::check::{Outcome, Report, guarded};
+use cg_harness::exit::Ending;
 use cg_harness::{TableVersion, Text};
 
 /// Where the student's files are: `exercises/` of the kit being run.
@@ -29,7 +30,7 @@ fn student(
 #[derive(clap::Args)]
 pub struct AssignmentArgs {
     /// Your 8-digit student number (default: the one in exercises/student.toml) / 学生番号（8 桁）
-    #[arg(long, value_name = "NUMBER")]
+    #[arg(long, value_name = "NUMBER", allow_hyphen_values = true)]
     student: Option<String>,
     /// The variant table (default: the newest, or the one in exercises/student.toml) / 課題表の版
     #[arg(long, value_name = "N")]
@@ -66,14 +67,33 @@ pub fn assignment(args: &AssignmentArgs, lang: Lang) -> Result<(), String> {
     Ok(())
 }
 
+/// What `cg check` runs: an assignment, and within it a task or one check.
+#[derive(Clone, Debug)]
+pub struct Selection {
+    which: Which,
+    /// `a3.t1` or `a1.t2.winding`; `None` for the whole assignment.
+    only: Option<String>,
+}
+
+/// `a1`, `a3.t1` or `a1.t2.winding`: the assignment from the first part of the ID.
+fn selection(s: &str) -> Result<Selection, String> {
+    let assignment = s.split('.').next().unwrap_or_default();
+    let ids: Vec<&str> = Which::ALL.iter().map(|w| w.id()).collect();
+    let which = Which::from_id(assignment)
+        .ok_or_else(|| format!("{} (a3, a3.t1, a1.t2.winding, …)", ids.join(", ")))?;
+    let only = (s != assignment).then(|| s.to_owned());
+    Ok(Selection { which, only })
+}
+
 /// Options of `cg check`.
 #[derive(clap::Args)]
 pub struct CheckArgs {
-    /// Which assignment (default: all) / 課題（省略するとすべて）
-    #[arg(value_enum)]
-    which: Option<Which>,
+    /// An assignment (a1, a2, a3, a4, s), a task (a3.t1) or one check (a1.t2.winding); default:
+    /// all / 課題・タスク・チェック（例: a1、a3.t1、a1.t2.winding。省略するとすべて）
+    #[arg(value_name = "ID", value_parser = selection)]
+    which: Option<Selection>,
     /// The student number (default: exercises/student.toml) / 学生番号
-    #[arg(long, value_name = "NUMBER")]
+    #[arg(long, value_name = "NUMBER", allow_hyphen_values = true)]
     student: Option<String>,
     /// Print JSON for tools / JSON で出力
     #[arg(long)]
@@ -103,23 +123,43 @@ pub fn worker(args: &WorkerArgs) -> Result<(), String> {
     cg_check_runner::serve().map_err(|e| e.to_string())
 }
 
-/// `cg check`: runs the student's checks; fails (exit status 1) unless every check passes.
+/// `cg check`: runs the student's checks. Exit status 0 when every check passes, 1 when one
+/// fails or is not done yet, 3 when one ran out of time.
 ///
 /// The checks run here; the student's functions run in a worker, this program started again
 /// as `cg worker`, each check's calls within `--time-limit` and the worker's memory within
 /// `--memory-limit`: a function that loops, crashes or allocates without end fails only the
 /// checks that called it.
-pub fn check(args: &CheckArgs, lang: Lang) -> Result<bool, String> {
+pub fn check(args: &CheckArgs, lang: Lang) -> Result<Ending, String> {
     let record = student(args.student.as_deref(), None, lang)?;
     let a = Variants::for_student(&record.student, record.table);
-    let which: Vec<Which> = args.which.map_or_else(|| Which::ALL.to_vec(), |w| vec![w]);
+    let which: Vec<Which> =
+        args.which.as_ref().map_or_else(|| Which::ALL.to_vec(), |s| vec![s.which]);
+    let only = args.which.as_ref().and_then(|s| s.only.as_deref());
     let me = std::env::current_exe().map_err(|e| format!("current_exe: {e}"))?;
     let worker = cg_worker::Worker::new(
         me,
         vec!["worker".into(), "--memory-mb".into(), args.memory_limit.max(64).to_string()],
     );
     let per_check = Duration::from_secs(args.time_limit.max(1));
-    let (reports, worker) = a.reports_in_worker(&which, worker, per_check);
+    let (mut reports, worker) =
+        cg_harness::check::run_only(only, || a.reports_in_worker(&which, worker, per_check));
+    if let Some(only) = only {
+        for r in &mut reports {
+            let tasks = r.keep_only(only);
+            if r.checks.is_empty() {
+                return Err(format!(
+                    "{}: {} {}",
+                    only,
+                    lang.pick(
+                        "という名前のタスクもチェックもありません。この課題のタスク:",
+                        "names no task or check; the tasks of this assignment are"
+                    ),
+                    tasks.join(", ")
+                ));
+            }
+        }
+    }
     let printed = String::from_utf8_lossy(&worker.printed).into_owned();
     if args.json {
         let value = serde_json::Value::Array(reports.iter().map(Report::to_json).collect());
@@ -145,7 +185,11 @@ pub fn check(args: &CheckArgs, lang: Lang) -> Result<bool, String> {
             eprintln!();
         }
     }
-    Ok(reports.iter().all(Report::all_passed))
+    Ok(if reports.iter().any(Report::timed_out) {
+        Ending::TimedOut
+    } else {
+        Ending::passed(reports.iter().all(Report::all_passed))
+    })
 }
 
 /// Options of `cg view`.
@@ -155,7 +199,7 @@ pub struct ViewArgs {
     #[arg(value_enum)]
     which: Which,
     /// The student number (default: exercises/student.toml) / 学生番号
-    #[arg(long, value_name = "NUMBER")]
+    #[arg(long, value_name = "NUMBER", allow_hyphen_values = true)]
     student: Option<String>,
     /// The time in seconds, for animations / 時刻（秒、アニメーション用）
     #[arg(long, default_value_t = 0.0)]
@@ -178,6 +222,68 @@ pub struct ViewArgs {
     /// Window: start with the animation paused / ウィンドウ: アニメーションを止めて始める
     #[arg(long)]
     paused: bool,
+    /// PNG from another side: the orbit camera's yaw in degrees (a turn about +Y) / 別の向きから PNG に描画: カメラの方位角（度、+Y 軸まわり）
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true, value_parser = degrees(-360.0, 360.0))]
+    yaw: Option<f32>,
+    /// PNG from another side: the pitch in degrees, −90 (from above) to 90 (from below) / 別の向きから PNG に描画: 仰角（度、−90 で真上から、90 で真下から）
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true, value_parser = degrees(-90.0, 90.0))]
+    pitch: Option<f32>,
+    /// PNG from another side: the distance from the target, 0.1–1000 / 別の向きから PNG に描画: 注視点からの距離（0.1〜1000）
+    #[arg(long, value_name = "D", value_parser = degrees(0.1, 1000.0))]
+    distance: Option<f32>,
+}
+
+/// A value parser for a number in `[min, max]` (an angle or a distance on the command line).
+fn degrees(min: f32, max: f32) -> impl Fn(&str) -> Result<f32, String> + Clone {
+    move |s: &str| match s.parse::<f32>() {
+        Ok(x) if x.is_finite() && (min..=max).contains(&x) => Ok(x),
+        _ => Err(format!("{min} … {max}")),
+    }
+}
+
+impl ViewArgs {
+    /// Whether the camera was moved on the command line (then the view is drawn to PNG files).
+    fn camera_moved(&self) -> bool {
+        self.yaw.is_some() || self.pitch.is_some() || self.distance.is_some()
+    }
+
+    /// The scene's orbit camera moved as `--yaw`, `--pitch` and `--distance` say (an option not
+    /// given stays as it was). A view whose camera the student's display() sets cannot move.
+    fn move_camera(&self, scene: &mut Scene, lang: Lang) -> Result<(), String> {
+        use cg_core::scene::Camera;
+        if !self.camera_moved() {
+            return Ok(());
+        }
+        match &mut scene.camera {
+            Camera::Orbit(orbit) => {
+                if let Some(yaw) = self.yaw {
+                    orbit.yaw_deg = yaw.rem_euclid(360.0);
+                }
+                if let Some(pitch) = self.pitch {
+                    // From below too (the course's mouse keeps the camera above the ground).
+                    orbit.limits.pitch_min_deg = orbit.limits.pitch_min_deg.min(pitch);
+                    orbit.limits.pitch_max_deg = orbit.limits.pitch_max_deg.max(pitch);
+                    orbit.pitch_deg = pitch;
+                }
+                if let Some(distance) = self.distance {
+                    orbit.limits.distance_min = orbit.limits.distance_min.min(distance);
+                    orbit.limits.distance_max = orbit.limits.distance_max.max(distance);
+                    orbit.distance = distance;
+                }
+            }
+            // The view comes from the student's own display() (gluLookAt, or a view recorded
+            // into the modelview): there is no orbit to move.
+            Camera::LookAt { .. } => {
+                return Err(lang
+                    .pick(
+                        "--yaw・--pitch・--distance は周回カメラ（a1、a4 など）を動かします。この図の視点はあなたの display() が決めているので動かせません",
+                        "--yaw, --pitch and --distance move the orbit camera (a1, a4, …); this view's camera is set by your own display(), so they cannot move it",
+                    )
+                    .to_owned());
+            }
+        }
+        Ok(())
+    }
 }
 
 /// The functions a side of `cg view` draws: the student's, or the reference solutions' when
@@ -227,7 +333,11 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
     if cfg!(feature = "reference") {
         sides.push((true, lang.pick("参考解答", "reference"), "reference"));
     }
-    if !args.png && cg_viewer::display_available() && std::env::var_os("CG_NO_WINDOW").is_none() {
+    if !args.png
+        && !args.camera_moved()
+        && cg_viewer::display_available()
+        && std::env::var_os("CG_NO_WINDOW").is_none()
+    {
         // A window that cannot open (a display named but dead): the same PNG files as --png.
         match view_window(args, &a, &sides, lang)? {
             None => return Ok(()),
@@ -246,7 +356,8 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
             if args.warmup { format!("{}-warmup", args.which) } else { args.which.to_string() };
         let path = args.output.join(format!("view-{name}-{file}.png"));
         match view_scene(args.which, &a, reference, args.time, args.warmup) {
-            Ok(Ok(scene)) => {
+            Ok(Ok(mut scene)) => {
+                args.move_camera(&mut scene, lang)?;
                 let image = cg_raster::render(&scene, &cg_raster::Options::default())
                     .map_err(|e| e.message(lang))?
                     .image;
@@ -260,7 +371,10 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
             Err(Outcome::NotDone { message }) => {
                 println!("  {label}: {}: {message}", lang.pick("まだです", "not done yet"));
             }
-            Err(other) => println!("  {label}: {other:?}"),
+            Err(other) => println!(
+                "  {label}: {}",
+                other.describe().map_or_else(|| format!("{other:?}"), |t| t.get(lang).to_owned())
+            ),
         }
     }
     Ok(())

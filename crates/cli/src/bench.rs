@@ -1,5 +1,5 @@
 //! `cg bench [--quick] [--out docs/speed-vs-error.md]`: the speed-against-error report
-//! (NUMERICS.md, second table), measured on this machine (see the `cg-bench` crate).
+//! (the design's speed-against-error experiments), measured on this machine (see the `cg-bench` crate).
 
 use std::path::PathBuf;
 use std::time::Instant;

@@ -195,7 +195,7 @@ fn object_report(
         normals
     );
 
-    // Welding (NUMERICS row 3: say which was used)
+    // Welding (docs/numerics.md row 3: say which was used)
     let weld = match object.weld {
         None => t("位置による頂点の統合: なし", "welded by position: no").to_owned(),
         Some(r) => format!(

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use cg_core::lang::Lang;
+use cg_harness::exit::Ending;
 use clap::{Parser, Subcommand};
 
 mod assignments;
@@ -14,6 +15,9 @@ mod bench;
 mod grade;
 mod handout;
 mod inspect;
+mod label;
+#[cfg(test)]
+mod printed;
 mod render;
 
 /// The course's sample scene, relative to the kit's root.
@@ -88,32 +92,27 @@ fn main() -> ExitCode {
     quiet_on_closed_pipe();
     let cli: Cli = cg_harness::args::parse();
     let lang = cli.lang.unwrap_or_else(Lang::from_env);
+    let ok = |r: Result<(), String>| r.map(|()| Ending::Ok);
     let result = match cli.command {
-        Some(Command::Inspect(args)) => inspect::run(&args, lang).map(|()| true),
-        Some(Command::Render(args)) => render::run(&args, lang).map(|()| true),
-        Some(Command::Assignment(args)) => assignments::assignment(&args, lang).map(|()| true),
+        Some(Command::Inspect(args)) => ok(inspect::run(&args, lang)),
+        Some(Command::Render(args)) => ok(render::run(&args, lang)),
+        Some(Command::Assignment(args)) => ok(assignments::assignment(&args, lang)),
         Some(Command::Check(args)) => assignments::check(&args, lang),
-        Some(Command::View(args)) => assignments::view(&args, lang).map(|()| true),
+        Some(Command::View(args)) => ok(assignments::view(&args, lang)),
         Some(Command::Report(command)) => {
             cg_report::app::start_watchdog(cg_report::app::TIME_LIMIT, lang);
             cg_report::app::run(&command, &cg_report::app::Kit::exercises(), lang)
+                .map(Ending::passed)
         }
-        Some(Command::SyncStubs) => assignments::sync_stubs(lang).map(|()| true),
-        Some(Command::Handout(args)) => handout::run(&args, lang).map(|()| true),
-        Some(Command::Bench(args)) => bench::run(&args, lang).map(|()| true),
-        Some(Command::Grade(args)) => grade::run(&args, lang).map(|()| true),
-        Some(Command::Worker(args)) => assignments::worker(&args).map(|()| true),
-        None => render::main_job(lang).map(|()| true),
+        Some(Command::SyncStubs) => ok(assignments::sync_stubs(lang)),
+        Some(Command::Handout(args)) => ok(handout::run(&args, lang)),
+        Some(Command::Bench(args)) => ok(bench::run(&args, lang)),
+        Some(Command::Grade(args)) => ok(grade::run(&args, lang)),
+        Some(Command::Worker(args)) => ok(assignments::worker(&args)),
+        None => ok(render::main_job(lang)),
     };
-    match result {
-        Ok(true) => ExitCode::SUCCESS,
-        // `cg check` ran, and not every check passed.
-        Ok(false) => ExitCode::FAILURE,
-        Err(message) => {
-            eprintln!("{}: {message}", lang.pick("エラー", "error"));
-            ExitCode::FAILURE
-        }
-    }
+    // 0 ok, 1 mistakes found, 2 bad input or usage, 3 the student's code ran out of time.
+    cg_harness::exit::finish(result, lang)
 }
 
 /// Resolves a path the user gave; for the kit's own default files, falls back to the kit's root

@@ -151,7 +151,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
             shading_name(r.shading, Lang::En).to_lowercase()
         )),
     };
-    write(&output, &r.image, lang)?;
+    write(&output, &r.image, args.output.is_none(), lang)?;
     println!(
         "{} {} — {}, {}, {} × {}, {:.1} ms",
         lang.pick("描画しました", "rendered"),
@@ -167,7 +167,15 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     Ok(())
 }
 
-/// The kit's main job: the course's sample scene drawn in every shading mode to PNG files.
+/// The shiny sphere of the main job's strip (the lecture's light model with a specular term).
+const SHINY_SPHERE: &str = "assets/scenes/sphere-phong.toml";
+/// The main job's strip of the three shading modes on the shiny sphere, under `out/`.
+pub const SHADING_STRIP: &str = "lecture11-shading.png";
+/// Each picture of the strip is this many pixels square.
+const STRIP_SIDE: u32 = 320;
+
+/// The kit's main job: the course's sample scene drawn in every shading mode to PNG files, and
+/// the shiny sphere in the three modes side by side, labelled.
 pub fn main_job(lang: Lang) -> Result<(), String> {
     let path = crate::kit_path(None, crate::COURSE_SAMPLE);
     let scene = cg_scene::load(&path).map_err(|e| e.describe(lang))?;
@@ -191,9 +199,38 @@ pub fn main_job(lang: Lang) -> Result<(), String> {
         )?;
         let file = dir
             .join(format!("course-sample-{}.png", shading_name(shading, Lang::En).to_lowercase()));
-        write(&file, &r.image, lang)?;
+        write(&file, &r.image, true, lang)?;
         println!("  {:<24} {:>7.1} ms  {}", shading_name(shading, lang), r.millis, file.display());
     }
+    // The course scene has no specular term, so its three pictures look alike. Lecture 11's
+    // point is the highlight: a shiny sphere in the three modes, side by side and labelled.
+    let sphere_path = crate::kit_path(None, SHINY_SPHERE);
+    let sphere = cg_scene::load(&sphere_path).map_err(|e| e.describe(lang))?;
+    let mut pictures = Vec::new();
+    for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+        let r = draw(
+            &sphere,
+            Renderer::Raster,
+            Some(shading),
+            Some((STRIP_SIDE, STRIP_SIDE)),
+            None,
+            TraceSettings::default(),
+            lang,
+        )?;
+        pictures.push((r.image, shading_name(shading, Lang::En).to_uppercase()));
+    }
+    let row: Vec<(&Image, &str)> = pictures.iter().map(|(i, l)| (i, l.as_str())).collect();
+    let strip = crate::label::labelled_row(&row, 2);
+    let file = dir.join(SHADING_STRIP);
+    write(&file, &strip, true, lang)?;
+    println!(
+        "{}:\n  {}",
+        lang.pick(
+            "第11回の要点、鏡面反射のある球をフラット・グロー・フォンシェーディングで並べた図",
+            "Lecture 11 in one picture: a shiny sphere in flat, Gouraud and Phong shading"
+        ),
+        file.display()
+    );
     println!(
         "{}",
         lang.pick(
@@ -318,17 +355,47 @@ fn report<N: std::fmt::Display>(features: &Features, counts: Vec<(N, u64)>, lang
     out
 }
 
-fn write(path: &Path, image: &Image, lang: Lang) -> Result<(), String> {
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).map_err(|e| {
-            format!(
-                "{} {}: {e}",
-                lang.pick("フォルダを作れません", "cannot create the folder"),
-                dir.display()
+/// Writes the PNG. The default folder `out/` is made when missing; a folder the user named must
+/// exist (a typo in `-o` is not silently turned into new folders), and the file must be named
+/// `.png`, the only format the kit writes.
+fn write(path: &Path, image: &Image, made_here: bool, lang: Lang) -> Result<(), String> {
+    let png = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    if !png && !is_device(path) {
+        return Err(format!(
+            "{}: {}",
+            path.display(),
+            lang.pick(
+                "書き出せるのは PNG だけです。ファイル名を .png で終えてください",
+                "the kit writes PNG files only: name the output file .png"
             )
-        })?;
+        ));
+    }
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        if made_here {
+            std::fs::create_dir_all(dir).map_err(|e| {
+                format!(
+                    "{} {}: {e}",
+                    lang.pick("フォルダを作れません", "cannot create the folder"),
+                    dir.display()
+                )
+            })?;
+        } else if !dir.is_dir() {
+            return Err(format!(
+                "{}: {}",
+                dir.display(),
+                lang.pick(
+                    "このフォルダはありません（-o のフォルダは先に作ってください）",
+                    "no such folder (make the folder of -o first)"
+                )
+            ));
+        }
     }
     cg_scene::save_png(path, image).map_err(|e| e.describe(lang))
+}
+
+/// A device such as `/dev/null` or `/dev/stdout` (no extension to ask for).
+fn is_device(path: &Path) -> bool {
+    path.starts_with("/dev")
 }
 
 fn renderer_name(r: Renderer) -> &'static str {

@@ -47,18 +47,18 @@ fn the_assignment_follows_from_the_number_and_is_recorded_once() {
 fn a_bad_or_missing_number_says_what_to_do() {
     let dir = scratch("missing");
     let o = cg(&dir, &["check", "a1", "--lang", "ja"]);
-    assert!(!o.status.success());
+    assert_eq!(o.status.code(), Some(2), "no student number is bad input (exit status 2)");
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("--save") && err.contains("student.toml"), "{err}");
     let o = cg(&dir, &["assignment", "--student", "1234567x", "--lang", "en"]);
     let err = String::from_utf8_lossy(&o.stderr);
-    assert!(!o.status.success() && err.contains("8 digits") && err.contains("'x'"), "{err}");
+    assert!(o.status.code() == Some(2) && err.contains("8 digits") && err.contains("'x'"), "{err}");
 }
 
 #[test]
 fn checks_on_the_pristine_stubs_all_fail_and_say_not_done_yet() {
     let o = cg(&root(), &["check", "a1", "--student", "12345678", "--json"]);
-    assert!(!o.status.success(), "stubs do not pass");
+    assert_eq!(o.status.code(), Some(1), "stubs do not pass: mistakes found (exit status 1)");
     let reports: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let r = &reports[0];
     assert_eq!(r["assignment"], "a1");
@@ -68,6 +68,26 @@ fn checks_on_the_pristine_stubs_all_fail_and_say_not_done_yet() {
     let o = cg(&root(), &["check", "a1", "--student", "12345678", "--lang", "ja"]);
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(text.contains("まだです: a1.t1") && text.contains("進み具合: 0/"), "{text}");
+    // The stubs that run so the view still draws (a2, a3, s.t5, s.t6) carry a marker,
+    // `cg_student::not_started("a2.t1");`: not done yet either, never "to fix".
+    for (which, tasks) in [("a2", "a2.t1, a2.t2, a2.t3"), ("a3", "a3.t0, a3.t1, a3.t2")] {
+        let o = cg(&root(), &["check", which, "--student", "12345678", "--json"]);
+        assert_eq!(o.status.code(), Some(1), "{which}: not done is no pass (exit status 1)");
+        let reports: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        let r = &reports[0];
+        assert_eq!(r["passed"], 0, "{r}");
+        assert!(r["checks"].as_array().unwrap().iter().all(|c| c["status"] == "not_done"), "{r}");
+        let o = cg(&root(), &["check", which, "--student", "12345678", "--lang", "en"]);
+        let text = String::from_utf8_lossy(&o.stdout);
+        assert!(text.contains(&format!("; not done yet: {tasks}\n")), "{text}");
+        assert!(!text.contains("to fix") && !text.contains('✗'), "{text}");
+    }
+    let o = cg(&root(), &["check", "s", "--student", "12345678", "--json"]);
+    let reports: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    // Every check of the shading set is "not done yet" on the stubs (s.t5 and s.t6 by markers).
+    let checks = reports[0]["checks"].as_array().unwrap();
+    assert!(checks.iter().any(|c| c["task"] == "s.t6"), "{checks:?}");
+    assert!(checks.iter().all(|c| c["status"] == "not_done"), "{checks:?}");
 }
 
 #[test]
@@ -123,4 +143,32 @@ fn a_dead_display_falls_back_to_the_views_own_png_files() {
     assert!(out.join("view-a1-reference.png").exists(), "{stdout}");
     assert!(!out.join("view.png").exists(), "{stdout}");
     assert!(stdout.contains("yours: not done yet"), "{stdout}");
+}
+
+#[test]
+fn one_task_or_one_check_is_checked_alone() {
+    let ids = |args: &[&str]| -> Vec<String> {
+        let o = cg(&root(), args);
+        let reports: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        reports[0]["checks"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| c["id"].as_str().unwrap().to_owned())
+            .collect()
+    };
+    let all = ids(&["check", "a1", "--student", "12345678", "--json"]);
+    let task = ids(&["check", "a1.t2", "--student", "12345678", "--json"]);
+    let expected: Vec<String> = all.iter().filter(|id| id.starts_with("a1.t2.")).cloned().collect();
+    assert!(expected.len() >= 2 && expected.len() < all.len(), "{all:?}");
+    assert_eq!(task, expected, "exactly the task's checks, in order");
+    let one = ids(&["check", "a1.t2.count", "--student", "12345678", "--json"]);
+    assert_eq!(one, ["a1.t2.count"]);
+    // A name that selects nothing is bad input, and the message lists the tasks.
+    let o = cg(&root(), &["check", "a1.t9", "--student", "12345678", "--lang", "en"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("a1.t9") && err.contains("a1.t1, a1.t2, a1.t3"), "{err}");
+    let o = cg(&root(), &["check", "a9.t1", "--student", "12345678"]);
+    assert_eq!(o.status.code(), Some(2));
 }

@@ -98,7 +98,7 @@ fn japanese_output_uses_the_lectures_terms() {
 #[test]
 fn a_missing_scene_is_a_clear_error_not_a_panic() {
     let o = cg(&["inspect", "no/such/scene.toml", "--lang", "en"]);
-    assert!(!o.status.success());
+    assert_eq!(o.status.code(), Some(2), "bad input: exit status 2");
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("no/such/scene.toml"), "the error names the file: {err}");
     assert!(!err.contains("panicked"), "{err}");
@@ -112,7 +112,7 @@ fn a_malformed_scene_names_the_line() {
     std::fs::write(&path, "format = 1\nname = \"bad\"\n[window]\nwidth = \"wide\"\n").unwrap();
     let o = cg(&["inspect", path.to_str().unwrap(), "--lang", "en"]);
     std::fs::remove_dir_all(&dir).ok();
-    assert!(!o.status.success());
+    assert_eq!(o.status.code(), Some(2), "bad input: exit status 2");
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("bad.toml:4"), "the error names file and line 4: {err}");
     assert!(!err.contains("panicked"), "{err}");
@@ -121,7 +121,7 @@ fn a_malformed_scene_names_the_line() {
 #[test]
 fn an_unknown_object_lists_the_objects() {
     let o = cg(&["inspect", "--object", "teapot", "--lang", "en"]);
-    assert!(!o.status.success());
+    assert_eq!(o.status.code(), Some(2), "bad input: exit status 2");
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("teapot") && err.contains("pyramid"), "{err}");
 }

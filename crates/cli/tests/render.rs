@@ -28,7 +28,7 @@ fn library(scene: &str, shading: Shading, size: Option<(u32, u32)>) -> Vec<[u8; 
 #[test]
 fn render_writes_exactly_what_the_rasterizer_draws() {
     let dir = scratch("render");
-    let out = dir.join("sub/sphere.png");
+    let out = dir.join("sphere.png");
     let o = cg_in(
         &root(),
         &[
@@ -133,6 +133,35 @@ fn the_main_job_draws_the_course_sample_in_every_shading_mode() {
         images.push(pixels);
     }
     assert_ne!(images[0], images[1], "flat and Gouraud differ");
+    // Lecture 11 in one picture: the shiny sphere in the three modes, side by side, each
+    // exactly the rasterizer's picture at 320 × 320, with a label strip under them.
+    let (strip, w, h) = png(&dir.join("out/lecture11-shading.png"));
+    assert!(text.contains("out/lecture11-shading.png"), "says where: {text}");
+    assert_eq!((w, h), (960, 320 + 24));
+    let mut panels = Vec::new();
+    for (k, shading) in [Shading::Flat, Shading::Gouraud, Shading::Phong].into_iter().enumerate() {
+        let panel: Vec<[u8; 4]> = (0..320)
+            .flat_map(|y| (0..320).map(move |x| y * 960 + k * 320 + x))
+            .map(|i| strip[i])
+            .collect();
+        let expected = library("assets/scenes/sphere-phong.toml", shading, Some((320, 320)));
+        assert!(panel == expected, "panel {k} is the rasterizer's {shading:?} picture");
+        panels.push(panel);
+    }
+    // The three visibly differ: flat's facets everywhere, and Gouraud's smeared highlight
+    // against Phong's round one (pixels apart by more than 8/255; measured: 1695 and 504).
+    let apart = |a: &[[u8; 4]], b: &[[u8; 4]]| {
+        a.iter().zip(b).filter(|(p, q)| (0..3).any(|c| p[c].abs_diff(q[c]) > 8)).count()
+    };
+    assert!(apart(&panels[0], &panels[1]) > 1000, "flat and Gouraud look alike");
+    assert!(apart(&panels[1], &panels[2]) > 100, "Gouraud and Phong look alike");
+    // Each label strip has ink (white text) under its picture.
+    for k in 0..3 {
+        let ink = (320..h)
+            .flat_map(|y| (k * 320..(k + 1) * 320).map(move |x| (y * w + x) as usize))
+            .any(|i| strip[i] == [255, 255, 255, 255]);
+        assert!(ink, "label {k}");
+    }
 }
 
 #[test]
@@ -144,9 +173,39 @@ fn mistakes_are_clear_errors() {
         &root(),
         &["render", "-o", dir.join("taken.png").to_str().unwrap(), "--width", "8", "--lang", "en"],
     );
-    assert!(!o.status.success());
+    assert_eq!(o.status.code(), Some(2));
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("taken.png") && !err.contains("panicked"), "{err}");
+    // Only PNG is written: a .jpg name is refused, not filled with PNG bytes.
+    let jpg = dir.join("picture.jpg");
+    let o =
+        cg_in(&root(), &["render", "-o", jpg.to_str().unwrap(), "--width", "8", "--lang", "en"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("picture.jpg") && err.contains("PNG files only"), "{err}");
+    assert!(!jpg.exists(), "nothing is written under a .jpg name");
+    // A folder named in -o must exist: a typo does not make new folders.
+    let nested = dir.join("no").join("such").join("x.png");
+    let o =
+        cg_in(&root(), &["render", "-o", nested.to_str().unwrap(), "--width", "8", "--lang", "ja"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("このフォルダはありません") && err.contains("such"), "{err}");
+    assert!(!dir.join("no").exists(), "no folder was made");
+    // A failed write is an error, never "wrote:" with exit status 0.
+    if Path::new("/dev/full").exists() {
+        let o = cg_in(&root(), &["render", "-o", "/dev/full", "--width", "8", "--lang", "en"]);
+        let (out, err) = (String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+        assert_eq!(o.status.code(), Some(2), "{out}{err}");
+        assert!(!out.contains("wrote:") && err.contains("/dev/full"), "{out}{err}");
+    }
+    // A file that never ends is refused at the limit, not read until the memory is full.
+    if Path::new("/dev/zero").exists() {
+        let o = cg_in(&root(), &["render", "/dev/zero", "--lang", "en"]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains("/dev/zero") && err.contains("larger than 64 MiB"), "{err}");
+    }
     // Unknown renderer and a zero width are refused by the argument parser (exit code 2).
     for args in [
         &["render", "--renderer", "opengl"][..],

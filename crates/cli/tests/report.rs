@@ -70,11 +70,23 @@ fn bad_input_gets_a_clear_error_not_a_panic() {
     std::fs::write(dir.join("broken.md"), "V0 (0.0, 1.0)\nF0 { V0, V1 }\n").unwrap();
     let out = cg(&dir, &["--lang", "en", "report", "check", "--data", "broken.md"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(!out.status.success());
+    // Bad input is exit status 2, as report-checker says for the same file.
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("line 1") && stderr.contains("line 2"), "{stderr}");
     assert!(!stderr.contains("panicked"), "{stderr}");
     let out = cg(&dir, &["--lang", "ja", "report", "check", "missing.md", "--data", "broken.md"]);
-    assert!(!out.status.success());
+    assert_eq!(out.status.code(), Some(2));
+    // --student means nothing beside --data: refused, not silently ignored (even when malformed).
+    let out =
+        cg(&dir, &["--lang", "en", "report", "check", "--data", "broken.md", "--student", "12ab"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("--student") && stderr.contains("--data"), "{stderr}");
+    // A number that starts with '-' reaches the kit's own check of student numbers.
+    let out = cg(&dir, &["--lang", "en", "report", "derive", "--student", "-12345678"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("8 digits") && !stderr.contains("unexpected argument"), "{stderr}");
     let out = cg(&dir, &["--lang", "en", "report", "check", "missing.md", "--student", "20250003"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(stderr.contains("missing.md") && !stderr.contains("panicked"), "{stderr}");

@@ -154,7 +154,7 @@ impl OrbitCamera {
     /// `T(0, 0, −distance) · Rx(−pitch) · Ry(−yaw) · T(−target)`, rotations in exact degrees.
     ///
     /// Defined and orthonormal in its rotation part at every pitch, ±90° included, and continuous
-    /// in pitch across the poles (no up vector, no roll flip; NUMERICS.md row 10). Non-finite
+    /// in pitch across the poles (no up vector, no roll flip; docs/numerics.md row 10). Non-finite
     /// fields (never produced by the mouse mapping) give non-finite entries; the checked sibling
     /// is `view_product().matrix()`.
     ///

@@ -27,7 +27,7 @@
 //!
 //! Fragile operations have fallible siblings that return `None`/`Err` instead of NaN:
 //! [`math::try_normalize`], [`normals::face_normal`], [`transform::perspective`],
-//! [`transform::look_at`], [`optics::refract`]. The hard cases of the kit's `NUMERICS.md` are named
+//! [`transform::look_at`], [`optics::refract`]. The hard cases of the kit's docs/numerics.md are named
 //! tests in `crates/core/tests/`.
 
 pub mod camera;
@@ -42,6 +42,7 @@ pub mod normals;
 pub mod notation;
 pub mod optics;
 pub mod product;
+pub mod quote;
 pub mod scene;
 pub mod shapes;
 pub mod stack;

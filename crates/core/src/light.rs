@@ -65,7 +65,7 @@
 //! ([`LightModel::view_vector`]). GL_COLOR_MATERIAL is the caller's business too: it passes
 //! `ka = kd =` the vertex colour ([`Material::from_color`]).
 //!
-//! ## Degenerate input (NUMERICS.md rows 14–17)
+//! ## Degenerate input (docs/numerics.md rows 14–17)
 //!
 //! - A light exactly on the shaded point has no direction: `L` is taken as `N` (the light falls
 //!   straight on) and `d = 0` ([`Light::direction_from`] returns `None`).
@@ -350,7 +350,7 @@ pub fn diffuse(intensity: Rgb, kd: Rgb, n: Vec3, l: Vec3) -> Rgb {
 /// `n`, `l`, `v` are unit vectors; `l` points to the light, `v` to the viewer; `shininess` is n ≥ 0.
 ///
 /// Zero when `N·L ≤ 0` (light from behind) and when `R·V ≤ 0` — also for `n = 0`, where a plain
-/// `powf` would give `0⁰ = 1` (NUMERICS.md row 14). `R·V` is clamped to `[0, 1]` *before* `powf`,
+/// `powf` would give `0⁰ = 1` (docs/numerics.md row 14). `R·V` is clamped to `[0, 1]` *before* `powf`,
 /// so a fractional n never meets a negative base (`(-0.5f32).powf(2.5)` is NaN). A negative or
 /// NaN `shininess` is taken as 0. Never NaN for finite input.
 ///
@@ -370,7 +370,7 @@ pub fn specular_phong(intensity: Rgb, ks: Rgb, n: Vec3, l: Vec3, v: Vec3, shinin
 /// `n`, `l`, `v` are unit vectors; `l` points to the light, `v` to the viewer; `shininess` is n ≥ 0.
 ///
 /// Zero when `N·L ≤ 0`, when `N·H ≤ 0` (also for `n = 0`), and when `L = −V`, where `H` does not
-/// exist (NUMERICS.md row 15: glam's `normalize` would return NaN; the kit uses
+/// exist (docs/numerics.md row 15: glam's `normalize` would return NaN; the kit uses
 /// [`try_normalize`]). A negative or NaN `shininess` is taken as 0. Never NaN for finite input.
 ///
 /// See also [`specular_phong`].
@@ -404,7 +404,7 @@ fn specular_power(cos: f32, shininess: f32) -> f32 {
 ///
 /// The denominator is clamped to at least [`MIN_ATTENUATION_DENOMINATOR`] (`1e-6`), so the result
 /// is finite and at most `1e6` — also when the light sits on the point (`d = 0`) with `kc = 0`,
-/// where the plain formula divides by zero (NUMERICS.md row 16). A term whose coefficient is 0
+/// where the plain formula divides by zero (docs/numerics.md row 16). A term whose coefficient is 0
 /// contributes 0 even for `d = ∞` (the plain `0·∞` is NaN), so `d = ∞` gives `1/kc`, or 0 when
 /// `kl` or `kq` is positive. NaN input gives 0 (no light). Directional lights are not attenuated
 /// ([`Light::needs_attenuation`]).
@@ -432,7 +432,7 @@ pub fn attenuation(att: Attenuation, d: f32) -> f32 {
 /// value by a smooth step in `cos α`: 1 for `α ≤ inner`, 0 at `α = cutoff`, Hermite
 /// `t²(3 − 2t)` with `t = (cos α − cos cutoff) / (cos inner − cos cutoff)` in between. When
 /// `inner ≥ cutoff` (in particular `inner == cutoff`) there is no band: a hard step at the cone,
-/// without the division by zero of the plain smooth step (NUMERICS.md row 17).
+/// without the division by zero of the plain smooth step (docs/numerics.md row 17).
 ///
 /// Angles in degrees; `cutoff_deg` is clamped to `[0, 90]` except that any value above 90 (OpenGL
 /// accepts only 180 there) or NaN means no cone; `inner_deg` is clamped to `[0, cutoff]`. The
@@ -483,7 +483,7 @@ impl Light {
     ///
     /// Returns `None` when there is no direction: the light sits exactly on `p`, a directional
     /// light has a zero `to_light`, or a coordinate is not finite. [`shade`] then takes `L = N`
-    /// and `d = 0` (NUMERICS.md row 16).
+    /// and `d = 0` (docs/numerics.md row 16).
     #[must_use]
     pub fn direction_from(&self, p: Vec3) -> Option<(Vec3, f32)> {
         let position = match &self.kind {

@@ -1029,7 +1029,7 @@ pub struct Welded {
 
 impl Mesh {
     /// Merges vertices at the same position (頂点の統合), so that faces which meant to share a
-    /// vertex, but used duplicates of it, share one index (NUMERICS.md row 3: a seam welded this
+    /// vertex, but used duplicates of it, share one index (docs/numerics.md row 3: a seam welded this
     /// way shows no crease).
     ///
     /// Vertices are visited in order; each one joins the lowest-numbered earlier *kept* vertex

@@ -92,7 +92,7 @@ impl Interface {
     /// `geometric_normal`, between a medium of index `eta_outside` and the object's `eta_inside`
     /// ([`crate::light::Material::eta`]).
     ///
-    /// A hit from inside (`i·n_g > 0`) flips the normal and inverts η (NUMERICS.md row 12); a ray
+    /// A hit from inside (`i·n_g > 0`) flips the normal and inverts η (docs/numerics.md row 12); a ray
     /// exactly tangent to the surface (`i·n_g = 0`) counts as entering. `i` and the normal need
     /// not be unit length.
     ///
@@ -176,7 +176,7 @@ pub fn fresnel_dielectric(cos_i: f32, eta_i: f32, eta_t: f32) -> f32 {
 ///
 /// `cos θ` is the cosine on the *less dense* side: `cos_i` when going into a denser medium
 /// (`eta_i ≤ eta_t`), but the transmitted-side `cos θ_t` when leaving a denser one
-/// (`eta_i > eta_t`; NUMERICS.md row 13). Using `cos_i` there ignores total internal reflection
+/// (`eta_i > eta_t`; docs/numerics.md row 13). Using `cos_i` there ignores total internal reflection
 /// and is off by up to 0.96 for glass just past the critical angle.
 ///
 /// `cos_i` as in [`fresnel_dielectric`] (sign ignored, clamped to 1). Returns 1 under total

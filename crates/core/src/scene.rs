@@ -98,7 +98,7 @@ pub struct Object {
     /// An optional texture.
     pub texture: Option<TextureUse>,
     /// Whether the mesh was welded by position when it was loaded, and what that did
-    /// (NUMERICS.md row 3: an unwelded seam shows a crease; the report says which was used).
+    /// (docs/numerics.md row 3: an unwelded seam shows a crease; the report says which was used).
     pub weld: Option<WeldRecord>,
     /// The exact surface the mesh approximates, when there is one: the ray tracer intersects it
     /// instead of the triangles; rasterizers draw the mesh.

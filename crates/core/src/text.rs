@@ -392,8 +392,13 @@ pub fn read(path: &Path, forced: Option<Encoding>) -> Result<(String, Encoding),
     Ok(decode_cow(Cow::Owned(bytes), forced)?)
 }
 
-/// The file's bytes, refusing more than `limit`; the buffer never grows past `limit`.
-fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, ReadError> {
+/// The file's bytes, refusing more than `limit` ([`ReadError::TooLarge`], checked against the
+/// file's size before reading when the file system gives one); the buffer never grows past
+/// `limit`, so `/dev/zero` or a pipe cannot fill the memory.
+///
+/// # Errors
+/// The file cannot be opened or read ([`ReadError::Io`]), or is larger than `limit`.
+pub fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, ReadError> {
     let io = |e: std::io::Error| ReadError::Io { reason: e.to_string() };
     let mut file = std::fs::File::open(path).map_err(io)?;
     let size = file.metadata().ok().filter(std::fs::Metadata::is_file).map(|m| m.len());

@@ -88,7 +88,7 @@ pub struct Sampler {
 
 impl Sampler {
     /// The integer shift to take off a triangle's texture coordinates before they are
-    /// interpolated (NUMERICS row 23): `⌊uv⌋` of one of its corners along each [`Wrap::Repeat`]
+    /// interpolated (docs/numerics.md row 23): `⌊uv⌋` of one of its corners along each [`Wrap::Repeat`]
     /// axis, 0 along a [`Wrap::Clamp`] axis (where a shift would change what is sampled).
     ///
     /// Under repeat an integer shift is invisible, and it keeps the interpolated values small:

@@ -206,10 +206,15 @@ impl TransformError {
                     "look_at: up {up} is within {angle_deg}° of the view direction {direction} (minimum {LOOK_AT_MIN_UP_ANGLE_DEG}°)"
                 ),
             ),
-            TransformError::Overflow { what } => Text::new(
-                format!("{what} が f32 の範囲を超えます"),
-                format!("{what} overflows f32"),
-            ),
+            TransformError::Overflow { what } => {
+                // `what` is one of the kit's own names; each has its Japanese.
+                let ja = match *what {
+                    "the product" => "変換の積",
+                    "look_at translation" => "look_at の平行移動",
+                    other => other,
+                };
+                Text::new(format!("{ja}が f32 の範囲を超えます"), format!("{what} overflows f32"))
+            }
             TransformError::InFactor { index, source } => {
                 let source = source.text();
                 Text::new(
@@ -409,7 +414,7 @@ pub fn rotate_deg(angle_deg: f32, axis: Vec3) -> Result<Mat4, TransformError> {
 /// `aspect` as well. The entries are computed in f64 and rounded once.
 ///
 /// # Errors
-/// Each bad parameter gives its own variant naming the value (NUMERICS.md row 20):
+/// Each bad parameter gives its own variant naming the value (docs/numerics.md row 20):
 /// [`TransformError::NearPlane`] for `near ≤ 0`, non-finite or subnormal;
 /// [`TransformError::FarPlane`] for `far ≤ near` or non-finite;
 /// [`TransformError::FieldOfView`] for `fovy` outside `(0°, 180°)` (so `fovy → 0` and `→ 180`
@@ -500,7 +505,7 @@ fn perspective_with_depth(
 /// [`TransformError::EyeAtTarget`] for `eye == target`;
 /// [`TransformError::UpParallelToView`] for a zero `up` or one within
 /// [`LOOK_AT_MIN_UP_ANGLE_DEG`] of the view direction or its opposite (gluLookAt returns NaN
-/// there; NUMERICS.md row 10); [`TransformError::Overflow`] when the translation overflows f32.
+/// there; docs/numerics.md row 10); [`TransformError::Overflow`] when the translation overflows f32.
 ///
 /// See also [`crate::camera::OrbitCamera::view_matrix`], which has no up vector and is defined
 /// at every pitch.

@@ -170,7 +170,7 @@ fn removed_face_leaves_its_three_edges_open() {
 #[test]
 fn row03_duplicated_vertex_leaves_boundary_edges_and_welding_fixes_it() {
     // The bottom faces F4, F5 use V8, a copy of V0, instead of V0 itself (a typical mistake when
-    // each side is typed in separately; NUMERICS.md row 3's seam vertices).
+    // each side is typed in separately; docs/numerics.md row 3's seam vertices).
     let mut m = cube();
     m.positions.push(m.positions[0]);
     m.faces[4] = [8, 1, 5];

@@ -1,6 +1,6 @@
 //! Face and vertex normals on whole meshes: accuracy against analytic normals (sphere,
 //! ellipsoid, torus), the meshes a renderer draws ([`prepare_normals`], [`face_split`],
-//! [`smooth_normals`]), the degeneracy threshold, and Phong interpolation (NUMERICS row 18).
+//! [`smooth_normals`]), the degeneracy threshold, and Phong interpolation (docs/numerics.md row 18).
 
 use std::f64::consts::PI;
 

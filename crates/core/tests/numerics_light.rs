@@ -1,4 +1,4 @@
-//! NUMERICS.md rows 14–17: the specular power, Blinn's half vector, lights on the shaded point
+//! docs/numerics.md rows 14–17: the specular power, Blinn's half vector, lights on the shaded point
 //! and spot lights with equal cones. Each case against an f64 oracle written here from the
 //! documented rule, on the same f32 inputs, and each states what the naive code would do.
 

@@ -1,4 +1,4 @@
-//! NUMERICS.md rows 1–9 and 19: the hard cases of face normals, vertex normals, cross products,
+//! docs/numerics.md rows 1–9 and 19: the hard cases of face normals, vertex normals, cross products,
 //! normalisation and normal transforms.
 //!
 //! Every test compares the kit with an oracle computed independently on the *same f32 inputs* —

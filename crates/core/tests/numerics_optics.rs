@@ -1,4 +1,4 @@
-//! NUMERICS.md rows 12 (refraction) and 13 (Schlick from inside), and property tests of the
+//! docs/numerics.md rows 12 (refraction) and 13 (Schlick from inside), and property tests of the
 //! optics: each case against an f64 oracle computed here, on the same f32 inputs, independently of
 //! `cg_core::optics` (Snell's law through angles, Fresnel's sine and tangent laws).
 

@@ -1,4 +1,4 @@
-//! Texture sampling at the hard coordinates of NUMERICS.md row 23: exactly 0 and 1, negative,
+//! Texture sampling at the hard coordinates of docs/numerics.md row 23: exactly 0 and 1, negative,
 //! huge (1e6), non-finite — nearest and bilinear, repeat and clamp.
 //!
 //! Every texel of the test textures encodes its own position (`R = 40·x + 7`, `G = 60·y + 11`),

@@ -1,5 +1,5 @@
 //! The course's orbit camera and the GLUT-style mouse state, tested without a window.
-//! NUMERICS.md row 10 (the orbit camera at and across pitch ±90°).
+//! docs/numerics.md row 10 (the orbit camera at and across pitch ±90°).
 //!
 //! Sign conventions are checked against the GL calls of the sample program:
 //! `glTranslatef(0, 0, -camera_distance); glRotatef(-camera_pitch, 1, 0, 0);
@@ -255,7 +255,7 @@ fn mouse_state_mirrors_the_glut_callbacks() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// NUMERICS.md row 10: orbit camera at pitch ±90°, and across the pole.
+// docs/numerics.md row 10: orbit camera at pitch ±90°, and across the pole.
 
 fn wide(pitch: f32) -> OrbitCamera {
     OrbitCamera {

@@ -1,5 +1,5 @@
 //! Transform builders: rotations, perspective, look-at, point/vector application.
-//! NUMERICS.md row 20 (perspective parameters) and the look-at half of row 10.
+//! docs/numerics.md row 20 (perspective parameters) and the look-at half of row 10.
 //!
 //! Oracles are analytic (f64 trigonometry, Rodrigues' formula, the defining properties of each
 //! matrix), never the builders' own output.
@@ -318,7 +318,7 @@ fn project_point_refuses_points_at_or_behind_the_eye() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// NUMERICS.md row 20: perspective with near → 0, fov → 0 or 180°, aspect 0 → a clear error.
+// docs/numerics.md row 20: perspective with near → 0, fov → 0 or 180°, aspect 0 → a clear error.
 
 #[test]
 fn row20_perspective_near_not_positive_is_an_error() {
@@ -420,7 +420,7 @@ fn row20_perspective_is_finite_or_an_error_for_any_input() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Look-at (gluLookAt) and the look-at half of NUMERICS.md row 10.
+// Look-at (gluLookAt) and the look-at half of docs/numerics.md row 10.
 
 proptest! {
     #![proptest_config(config(256))]

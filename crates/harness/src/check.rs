@@ -84,9 +84,11 @@ pub enum Outcome {
     Pass,
     /// It ran and found a mistake.
     Fail(Failure),
-    /// The code it calls is still a stub (`todo!()` / `unimplemented!()`): not done yet.
+    /// The code it calls is still a stub (`todo!()` / `unimplemented!()`, or a stub that runs
+    /// with its marker `cg_student::not_started("a2.t1")`, see [`run`]): not done yet.
     NotDone {
-        /// The stub's message, e.g. `a1.t3: write the face normals`.
+        /// The stub's message, e.g. `a1.t3: write the face normals` ([`marker_message`] for a
+        /// marker).
         message: String,
     },
     /// The student's code panicked (an index out of range, an `unwrap` on `None`, …).
@@ -240,6 +242,34 @@ fn install_hook() {
     });
 }
 
+thread_local! {
+    /// The checks selected on this thread (`cg check a3.t1`, `cg check a1.t2.winding`): `None`
+    /// runs every check. Per thread, so tests running side by side do not see each other's; a
+    /// check run on another thread is run, and [`Report::keep_only`] drops it all the same.
+    static ONLY: RefCell<Option<String>> = const { RefCell::new(None) };
+}
+
+/// Whether `only` (an assignment `a3`, a task `a3.t1` or a check `a1.t2.winding`) selects the
+/// check `id`: the same ID, or one under it.
+#[must_use]
+pub fn selects(only: &str, id: &str) -> bool {
+    id == only || id.strip_prefix(only).is_some_and(|rest| rest.starts_with('.'))
+}
+
+/// Runs `f` with only the checks `only` [`selects`] being run; the others give a placeholder
+/// [`Outcome::Pass`] without running, which [`Report::keep_only`] drops. `None` runs every check.
+pub fn run_only<R>(only: Option<&str>, f: impl FnOnce() -> R) -> R {
+    struct Reset;
+    impl Drop for Reset {
+        fn drop(&mut self) {
+            ONLY.with(|o| *o.borrow_mut() = None);
+        }
+    }
+    ONLY.with(|o| *o.borrow_mut() = only.map(str::to_owned));
+    let _reset = Reset;
+    f()
+}
+
 /// Runs one check, `id` (`a1.t2.closed`; its task, `a1.t2`, is derived from it). `body` returns
 /// `Ok(())` or the [`Failure`] it found; a `todo!()` or `unimplemented!()` inside it (a stub not
 /// written yet) becomes [`Outcome::NotDone`], any other panic [`Outcome::Panicked`] with its
@@ -247,7 +277,55 @@ fn install_hook() {
 /// usual. When the student's functions run in a worker (`cg_worker::proxy`), the check's calls
 /// share one time budget, and a call that gave no value ends the check with
 /// [`Outcome::of_call`].
+///
+/// **Stubs that run.** A stub that must still run (so the view draws around an unfinished
+/// assignment) is not a `todo!()` but carries a marker, `cg_student::not_started("a2.t1")`.
+/// When the student's functions reached a marker during the check (on this thread, or in the
+/// worker: it comes back with the call's reply), the check is [`Outcome::NotDone`] whatever it
+/// found — passed, failed or panicked: the marker wins while it is there, and the student
+/// deletes it when they start ([`marker_message`] says so). A call that ran out of time or
+/// crashed the worker is reported as such. [`guarded`] calls (the view, the report) ignore the
+/// markers.
 pub fn run(id: &str, title: Text, body: impl FnOnce() -> Result<(), Failure>) -> CheckResult {
+    if let Some(only) = ONLY.with(|o| o.borrow().clone())
+        && !selects(&only, id)
+    {
+        // Not selected by `cg check a3.t1`: not run. [`Report::keep_only`] drops it.
+        let task = crate::unit::task_of(id).to_owned();
+        return CheckResult { id: id.to_owned(), task, title, outcome: Outcome::Pass };
+    }
+    let outer = cg_student::take_not_started();
+    let mut result = run_unmarked(id, title, body);
+    let reached = cg_student::take_not_started();
+    // Put back what was reached before this check (a check inside a check's body).
+    for task in &outer {
+        cg_student::not_started(task);
+    }
+    if let Some(message) = marker_message(&result.task, &reached)
+        && matches!(result.outcome, Outcome::Pass | Outcome::Fail(_) | Outcome::Panicked { .. })
+    {
+        result.outcome = Outcome::NotDone { message };
+    }
+    result
+}
+
+/// The [`Outcome::NotDone`] message for the stub markers `reached` (tasks, in the order first
+/// reached) during a check of `task`: the check's own task's marker when it was reached, else
+/// the first; `None` when none was.
+///
+/// The message reads `"<task>: <日本語> / <English>"` as a `todo!()`'s does ([`stub_message`]
+/// shows one language), telling the student which line to delete.
+#[must_use]
+pub fn marker_message(task: &str, reached: &[String]) -> Option<String> {
+    let marker = reached.iter().find(|m| *m == task).or_else(|| reached.first())?;
+    Some(format!(
+        "{marker}: 書き始めたら cg_student::not_started(\"{marker}\"); の行を消します / \
+         delete the line cg_student::not_started(\"{marker}\"); when you start writing it"
+    ))
+}
+
+/// [`run`] without the stub markers (the runner of [`guarded`]).
+fn run_unmarked(id: &str, title: Text, body: impl FnOnce() -> Result<(), Failure>) -> CheckResult {
     install_hook();
     if let Ok(mut current) = CURRENT.lock() {
         *current = Some((id.to_owned(), Instant::now()));
@@ -284,13 +362,16 @@ pub fn run(id: &str, title: Text, body: impl FnOnce() -> Result<(), Failure>) ->
 const GUARDED: &str = "guarded";
 
 /// Calls `f` (a student's function, outside any check) and turns a panic into the [`Outcome`] a
-/// check would report: [`Outcome::NotDone`] for a stub, [`Outcome::Panicked`] otherwise.
+/// check would report: [`Outcome::NotDone`] for a stub's `todo!()`, [`Outcome::Panicked`]
+/// otherwise. A stub's marker (`cg_student::not_started`) changes nothing here: what the stub
+/// returned is the value (the view draws it), and the marker is left for the check around the
+/// call, if any.
 ///
 /// # Errors
 /// The outcome when `f` panicked.
 pub fn guarded<T>(f: impl FnOnce() -> T) -> Result<T, Outcome> {
     let mut value = None;
-    let result = run(GUARDED, crate::text::Text::default(), || {
+    let result = run_unmarked(GUARDED, crate::text::Text::default(), || {
         value = Some(f());
         Ok(())
     });
@@ -330,7 +411,7 @@ pub fn watchdog(limit: Duration, lang: Lang) {
                         ),
                     }
                 );
-                std::process::exit(3);
+                std::process::exit(i32::from(crate::exit::Ending::TimedOut.code()));
             }
         }
     });
@@ -396,6 +477,26 @@ impl Report {
     #[must_use]
     pub fn all_passed(&self) -> bool {
         self.passed() == self.total()
+    }
+
+    /// Keeps the checks `only` [`selects`] (after [`run_only`]), and returns the tasks of every
+    /// check the report had, in order (for a message when none was selected).
+    pub fn keep_only(&mut self, only: &str) -> Vec<String> {
+        let mut tasks: Vec<String> = Vec::new();
+        for c in &self.checks {
+            if !tasks.contains(&c.task) {
+                tasks.push(c.task.clone());
+            }
+        }
+        self.checks.retain(|c| selects(only, &c.id));
+        tasks
+    }
+
+    /// Whether a check ran out of time (the command's exit status is then 3,
+    /// [`crate::exit::Ending::TimedOut`]).
+    #[must_use]
+    pub fn timed_out(&self) -> bool {
+        self.checks.iter().any(|c| matches!(c.outcome, Outcome::TimedOut { .. }))
     }
 
     /// The tasks with at least one check not done yet, in order.
@@ -579,6 +680,70 @@ mod tests {
         assert_eq!(stub_message("", Lang::En), "");
     }
 
+    /// A stub that runs: the marker's line, then what the stub does.
+    fn marked_stub(task: &str) -> u32 {
+        cg_student::not_started(task);
+        0
+    }
+
+    #[test]
+    fn a_stubs_marker_makes_its_checks_not_done_whatever_they_found() {
+        // Passed, failed or panicked: the marker wins while it is there.
+        let pass = run("x.t1.a", t("a", "a"), || {
+            let _ = marked_stub("x.t1");
+            Ok(())
+        });
+        let fail =
+            run("x.t1.b", t("b", "b"), || Err(Failure::new("1", marked_stub("x.t1").to_string())));
+        let oops = run("x.t1.c", t("c", "c"), || {
+            let _ = marked_stub("x.t1");
+            panic!("index out of bounds")
+        });
+        for r in [&pass, &fail, &oops] {
+            let Outcome::NotDone { message } = &r.outcome else { panic!("{r:?}") };
+            assert!(message.starts_with("x.t1: "), "{message}");
+            assert!(message.contains("cg_student::not_started(\"x.t1\");"), "{message}");
+            assert_eq!(
+                stub_message(message, Lang::En),
+                "x.t1: delete the line cg_student::not_started(\"x.t1\"); when you start writing it"
+            );
+            assert!(stub_message(message, Lang::Ja).starts_with("x.t1（書き始めたら"), "{message}");
+        }
+        // The marker of the check's own task is named, else the first reached.
+        let own = run("x.t2.d", t("d", "d"), || {
+            let _ = marked_stub("x.t1") + marked_stub("x.t2");
+            Ok(())
+        });
+        assert!(
+            matches!(&own.outcome, Outcome::NotDone { message } if message.starts_with("x.t2:"))
+        );
+        let other =
+            run("x.t3.e", t("e", "e"), || Err(Failure::new("1", marked_stub("x.t1").to_string())));
+        assert!(
+            matches!(&other.outcome, Outcome::NotDone { message } if message.starts_with("x.t1:"))
+        );
+        // The marker counts for the check that reached it only: the next check is judged.
+        let _ = marked_stub("x.t1");
+        let later = run("x.t1.f", t("f", "f"), || Err(Failure::new("1", "2")));
+        assert!(matches!(later.outcome, Outcome::Fail(_)), "{later:?}");
+        assert!(cg_student::take_not_started() == ["x.t1"], "what came before is put back");
+        // Without the marker (the student deleted it), the code is judged.
+        let written = run("x.t1.g", t("g", "g"), || Err(Failure::new("1", "2")));
+        assert!(matches!(written.outcome, Outcome::Fail(_)), "{written:?}");
+    }
+
+    #[test]
+    fn guarded_calls_ignore_the_markers_and_leave_them_to_the_check() {
+        assert_eq!(guarded(|| marked_stub("x.t1")), Ok(0), "the view draws what the stub gives");
+        assert_eq!(cg_student::take_not_started(), ["x.t1"]);
+        let check = run("x.t1.a", t("a", "a"), || {
+            let _ = guarded(|| marked_stub("x.t1"));
+            Ok(())
+        });
+        assert!(matches!(check.outcome, Outcome::NotDone { .. }), "{check:?}");
+        assert_eq!(marker_message("x.t1", &[]), None);
+    }
+
     #[test]
     fn guarded_calls_return_values_or_outcomes() {
         assert_eq!(guarded(|| 41 + 1), Ok(42));
@@ -587,6 +752,31 @@ mod tests {
             Err(Outcome::NotDone { .. })
         ));
         assert!(matches!(guarded(|| -> u32 { panic!("boom") }), Err(Outcome::Panicked { .. })));
+    }
+
+    #[test]
+    fn a_selection_names_an_id_or_what_is_under_it() {
+        assert!(selects("a1.t1", "a1.t1.count") && selects("a1.t1.count", "a1.t1.count"));
+        assert!(selects("a1", "a1.t2.winding"));
+        assert!(!selects("a1.t1", "a1.t10.count"), "t1 is not t10");
+        assert!(!selects("a1.t2.count", "a1.t2.counted") && !selects("a2", "a1.t2.x"));
+        // Under run_only, a check not selected is not run; keep_only drops it.
+        let ran = std::cell::Cell::new(0);
+        let checks = run_only(Some("x.t1"), || {
+            ["x.t1.a", "x.t2.b", "x.t1.c"].map(|id| {
+                run(id, t("", ""), || {
+                    ran.set(ran.get() + 1);
+                    Err(Failure::new("1", "2"))
+                })
+            })
+        });
+        assert_eq!(ran.get(), 2, "x.t2.b did not run");
+        let mut report = Report { assignment: "x".into(), student: None, checks: checks.to_vec() };
+        assert_eq!(report.keep_only("x.t1"), ["x.t1", "x.t2"]);
+        let kept: Vec<&str> = report.checks.iter().map(|c| c.id.as_str()).collect();
+        assert_eq!(kept, ["x.t1.a", "x.t1.c"]);
+        // Afterwards every check runs again.
+        assert!(!run("x.t2.b", t("", ""), || Err(Failure::new("1", "2"))).passed());
     }
 
     #[test]
@@ -606,6 +796,10 @@ mod tests {
             ],
         };
         assert_eq!((report.passed(), report.total()), (1, 3));
+        assert!(!report.timed_out(), "a failure and a stub are not a timeout");
+        let mut late = report.clone();
+        late.checks[1].outcome = Outcome::TimedOut { limit_ms: 5000 };
+        assert!(late.timed_out(), "exit status 3 for `cg check`");
         let en = report.render(Lang::En);
         for needle in [
             "✓ a1.t1.count",

@@ -18,6 +18,7 @@
 pub mod args;
 pub mod check;
 pub mod course;
+pub mod exit;
 pub mod report;
 pub mod stubs;
 pub mod symbolic;

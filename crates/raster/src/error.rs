@@ -79,7 +79,8 @@ pub enum RenderError {
     NonFinite {
         /// The object's name.
         object: String,
-        /// The vertex (V-number of the prepared mesh).
+        /// The vertex: its V-number in the object's mesh, as the scene's shape or OBJ file
+        /// numbers it (the first one whose clip position is not finite).
         vertex: usize,
         /// Its clip-space position `(x, y, z, w)`.
         position: [f32; 4],

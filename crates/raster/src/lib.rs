@@ -8,7 +8,7 @@
 //! **Fill rule.** A pixel whose centre is exactly on an edge belongs to the triangle when the
 //! edge is a left edge or a bottom edge as the image is displayed — what Mesa's llvmpipe does
 //! (OpenGL's top-left rule in its y-up window coordinates). So a pixel on an edge shared by two
-//! triangles is drawn exactly once, and none is missed (NUMERICS row 22).
+//! triangles is drawn exactly once, and none is missed (docs/numerics.md row 22).
 //!
 //! ```
 //! use cg_core::lang::Lang;
@@ -35,7 +35,7 @@
 //! | `bin` | each triangle into the tiles (32 × 32 pixels) its bounding box touches, as `(tile, triangle)` pairs gathered into one list per tile (memory proportional to the pairs); each tile is one task for a thread |
 //! | `rasterize` | exact integer edge functions and the fill rule above |
 //! | `depth_test` | GL_LESS against a depth buffer cleared to 1, then the write (early: before shading; the same image) |
-//! | `fragment` | perspective-correct barycentrics for colour, normal, position and uv (uv less the integer [`cg_core::texture::Sampler::repeat_origin`] of the face's first corner, so coordinates near 1e6 keep their precision: NUMERICS row 23); Phong lights each pixel here; texture after lighting ([`cg_core::texture::TexEnv::apply`]); clamp to `[0, 1]` |
+//! | `fragment` | perspective-correct barycentrics for colour, normal, position and uv (uv less the integer [`cg_core::texture::Sampler::repeat_origin`] of the face's first corner, so coordinates near 1e6 keep their precision: docs/numerics.md row 23); Phong lights each pixel here; texture after lighting ([`cg_core::texture::TexEnv::apply`]); clamp to `[0, 1]` |
 //!
 //! Triangles are set up once and binned; each tile is drawn by one task from start to end, its
 //! triangles in submission order, so the output is bit-identical for every thread count and tile

@@ -149,7 +149,7 @@ struct Triangle {
     /// The integer shift taken off the face's texture coordinates before they are interpolated
     /// ([`Sampler::repeat_origin`] of its first corner; zero without a texture): vertices made
     /// by clipping hold shifted coordinates already, the others are shifted when the triangle is
-    /// drawn (NUMERICS row 23).
+    /// drawn (docs/numerics.md row 23).
     uv_origin: Vec2,
 }
 
@@ -481,13 +481,32 @@ fn vertex_stage<L: Lighting + ?Sized>(
             .collect()
     };
     if let Some(i) = vertices.iter().position(|v| !v.p_clip.is_finite()) {
+        // Named as the object's own mesh numbers it (the file's V-number), not as the prepared
+        // mesh does (split per face for face normals, so the file's V2 may be its V4).
+        let (vertex, p_clip) = first_non_finite(frame, draw).unwrap_or((i, vertices[i].p_clip));
         return Err(RenderError::NonFinite {
             object: draw.prepared.object.name.clone(),
-            vertex: i,
-            position: vertices[i].p_clip.to_array(),
+            vertex,
+            position: p_clip.to_array(),
         });
     }
     Ok((vertices, stats))
+}
+
+/// The first vertex of the object's own mesh (numbered as its file or shape numbers it) whose
+/// clip position, computed as [`vertex`] computes it, is not finite; with that position. The
+/// prepared mesh's positions are copies of these, so one exists whenever a prepared vertex is
+/// not finite.
+fn first_non_finite<L: Lighting + ?Sized>(
+    frame: &Frame<'_, L>,
+    draw: &Draw<'_>,
+) -> Option<(usize, Vec4)> {
+    let model = draw.prepared.model;
+    draw.prepared.object.mesh.positions.iter().enumerate().find_map(|(i, &p_model)| {
+        let p_view = transform_point(frame.view, transform_point(model, p_model));
+        let p_clip = frame.projection * p_view.extend(1.0);
+        (!p_clip.is_finite()).then_some((i, p_clip))
+    })
 }
 
 /// The vertex stage for vertex `i`: model → world (positions by the model matrix, normals by the
@@ -691,7 +710,7 @@ impl Polygon {
 }
 
 /// The clipper (クリッピング): Sutherland–Hodgman against each plane in turn, in homogeneous clip
-/// space, so nothing is ever divided by `w ≤ 0` (NUMERICS row 21). New corners interpolate every
+/// space, so nothing is ever divided by `w ≤ 0` (docs/numerics.md row 21). New corners interpolate every
 /// attribute linearly in clip space, from the inside corner towards the outside one — so an edge
 /// shared by two triangles is cut at bit-identical points in both, and no crack opens between
 /// them. Corners made here get the slot [`NEW_VERTEX`].
@@ -938,7 +957,7 @@ fn draw_tile<L: Lighting + ?Sized>(
 /// edge belongs to the triangle when the edge is a left edge (the triangle to its right) or a
 /// bottom edge (horizontal, the triangle above it) as the image is displayed — what Mesa's
 /// llvmpipe does (OpenGL's top-left rule in its y-up window coordinates). So a pixel on an edge
-/// shared by two triangles is drawn exactly once, none is missed (NUMERICS row 22), and the ties
+/// shared by two triangles is drawn exactly once, none is missed (docs/numerics.md row 22), and the ties
 /// fall as in the course's OpenGL (`tests/opengl.rs` checks it pixel by pixel).
 fn rasterize(edges: &Edges, rect: Rect, mut emit: impl FnMut(u32, u32, [i64; 3])) {
     let [bx0, by0, bx1, by1] = edges.bbox;
@@ -998,7 +1017,7 @@ fn depth_test(z: f32, stored: &mut f32) -> bool {
 /// The fragment stage: perspective-correct barycentrics from the screen-space ones, then the
 /// colour by the shading mode — flat: the face's colour; Gouraud: the vertex colours
 /// interpolated; Phong: the normal (and position) interpolated, renormalised with
-/// [`interpolate_normal`] (falling back to the face normal, NUMERICS row 18) and lit here — and
+/// [`interpolate_normal`] (falling back to the face normal, docs/numerics.md row 18) and lit here — and
 /// the texture applied after lighting as OpenGL does (GL_MODULATE: colour × texel; GL_REPLACE:
 /// the texel). The result is clamped to `[0, 1]`.
 fn fragment<L: Lighting + ?Sized>(

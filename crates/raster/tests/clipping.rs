@@ -1,4 +1,4 @@
-//! NUMERICS row 21: triangles crossing the near plane, or behind the camera, are clipped
+//! docs/numerics.md row 21: triangles crossing the near plane, or behind the camera, are clipped
 //! correctly; nothing behind the eye is drawn; nothing is divided by w ≤ 0; no NaN anywhere.
 //!
 //! The oracle is the analytic projection, in f64, of the part of each triangle in front of the

@@ -1,4 +1,4 @@
-//! NUMERICS row 22, the fill rule: pixels on an edge shared by two triangles are drawn
+//! docs/numerics.md row 22, the fill rule: pixels on an edge shared by two triangles are drawn
 //! exactly once, none are missed. Pixel-exact on small rasters, through the renderer's own
 //! snapping, setup, tiling and rasterizer ([`cg_raster::coverage`]); and once through the whole
 //! pipeline of a scene.

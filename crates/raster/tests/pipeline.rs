@@ -517,6 +517,27 @@ fn bad_scenes_give_errors_that_name_the_problem() {
     assert!(e.message(Lang::Ja).contains("V"), "{}", e.message(Lang::Ja));
 }
 
+/// The vertex a clip-space error names is the object's own (the file's V-number), not the
+/// prepared mesh's: under face normals every face gets its own copies of its corners, and the
+/// lecture pyramid's V2 (the second corner of F1 = {0, 2, 4}) is the prepared mesh's V4.
+#[test]
+fn a_vertex_beyond_clip_space_is_named_as_its_file_numbers_it() {
+    let mut scene = load("course-sample.toml");
+    let pyramid = &mut scene.objects[1];
+    assert_eq!(pyramid.mesh.faces[1], [0, 2, 4], "premise: the lecture's F1");
+    pyramid.mesh.positions[2].x = 3e38;
+    let prepared = pyramid.prepare().unwrap();
+    assert_eq!(prepared.mesh.positions[4].x, 3e38, "premise: the prepared mesh's V4 is V2");
+    assert!(prepared.mesh.positions[..4].iter().all(|p| p.x < 2.0), "premise: V4 comes first");
+    for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+        let e = render(&scene, &Options { shading: Some(shading), ..small(16) }).unwrap_err();
+        let RenderError::NonFinite { ref object, vertex, position } = e else { panic!("{e}") };
+        assert_eq!((object.as_str(), vertex), ("pyramid", 2), "{shading:?}: {e}");
+        assert!(position[0].is_infinite(), "{position:?}");
+        assert!(e.to_string().contains("vertex V2 is at [inf"), "{e}");
+    }
+}
+
 #[test]
 fn colours_beyond_f32s_range_give_a_finite_image() {
     // Light colours of 3e38 (a program can set them; the scene loader bounds colours to 1e6):

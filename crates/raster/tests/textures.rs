@@ -273,7 +273,7 @@ fn modulate_multiplies_the_lit_colour_and_replace_ignores_it() {
 
 #[test]
 fn row23_huge_texture_coordinates_sample_like_small_ones_under_repeat() {
-    // NUMERICS row 23: the quad's coordinates run from (k, k) to (k + 1, k + 1). Under repeat
+    // docs/numerics.md row 23: the quad's coordinates run from (k, k) to (k + 1, k + 1). Under repeat
     // that is the same texture as from (0, 0) to (1, 1) — and every one of these coordinates is
     // exact in f32 (a multiple of 2⁻⁴ near 1e6) — so the image must be the specification's,
     // pixel for pixel. Interpolated as they are, coordinates near 1e6 lose everything below

@@ -234,12 +234,13 @@ fn normalize(line: &str) -> String {
 }
 
 /// The text clipped to 80 characters (79 and `…`), trimmed.
+/// A row as a message quotes it: at most 80 characters, invisible characters named (`<U+200B>`).
 fn clip(s: &str) -> String {
     let s = s.trim();
     if s.chars().count() <= 80 {
-        s.to_owned()
+        cg_core::quote::visible(s)
     } else {
-        let mut out: String = s.chars().take(79).collect();
+        let mut out = cg_core::quote::visible(&s.chars().take(79).collect::<String>());
         out.push('…');
         out
     }
@@ -1433,6 +1434,10 @@ V6 (1.0, 2.0, 3.0
         assert_eq!(problems.len(), 1);
         assert_eq!(problems[0].found.chars().count(), 80);
         assert!(problems[0].found.ends_with('…'));
+        // An invisible character pasted into a row is named where the message quotes it.
+        let (_, problems) = parse_report("F0 { V0,\u{200B} V1 }");
+        assert_eq!(problems.len(), 1, "{problems:?}");
+        assert!(problems[0].found.contains("<U+200B>"), "{}", problems[0].found);
     }
 
     #[test]

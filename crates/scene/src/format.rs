@@ -84,14 +84,39 @@ pub(crate) struct TextureSpec {
     pub env: TexEnv,
 }
 
-/// Reads and checks a whole document. `base` is the folder relative file names start from.
+/// [`read_root`] of the text of `src`, parsed here.
+#[cfg(test)]
 pub(crate) fn read(src: &Source<'_>, base: &Path) -> Result<SceneSpec, SceneError> {
-    let doc = toml::de::DeTable::parse(src.text).map_err(|e| {
-        let span = e.span().unwrap_or(0..0);
-        src.error(&span, "", ErrorKind::Syntax { message: e.message().to_owned() })
-    })?;
-    let root = Table::root(src, &doc);
+    read_root(src, &Table::root(src, &parse_document(src)?), base)
+}
 
+/// The TOML document of `src`, with the span of every key and value; a syntax error names the
+/// line and column.
+pub(crate) fn parse_document<'a>(
+    src: &Source<'a>,
+) -> Result<toml::Spanned<toml::de::DeTable<'a>>, SceneError> {
+    toml::de::DeTable::parse(src.text).map_err(|e| {
+        let span = e.span().unwrap_or(0..0);
+        let mut message = e.message().to_owned();
+        // A character that cannot be seen (a zero-width space pasted from a web page) is named,
+        // or the student looks at a line that seems right.
+        if let Some(c) = src.text.get(span.start..).and_then(|s| s.chars().next()) {
+            let shown = cg_core::quote::visible(&c.to_string());
+            if shown != c.to_string() {
+                message.push_str(&format!(" ({shown})"));
+            }
+        }
+        src.error(&span, "", ErrorKind::Syntax { message })
+    })
+}
+
+/// Reads and checks a whole document: `root`, [`parse_document`] of `src`. `base` is the folder
+/// relative file names start from.
+pub(crate) fn read_root(
+    src: &Source<'_>,
+    root: &Table<'_>,
+    base: &Path,
+) -> Result<SceneSpec, SceneError> {
     // The version first: a newer file may have keys this reader does not know.
     let format = root.require("format")?;
     if format.integer(i64::MIN, i64::MAX)? != FORMAT_VERSION {
@@ -173,7 +198,12 @@ pub(crate) fn read(src: &Source<'_>, base: &Path) -> Result<SceneSpec, SceneErro
 impl SceneSpec {
     /// Builds every mesh and loads every file the objects name; each texture file is loaded once
     /// however many objects use it.
+    ///
+    /// The faces of the built-in shapes are counted first, from their parameters, and each OBJ
+    /// model's are added as it loads: more than [`crate::MAX_SCENE_FACES`] in all is an error at
+    /// the shape or model that goes over, before anything more is built.
     pub(crate) fn build(self, src: &Source<'_>) -> Result<Scene, SceneError> {
+        let mut faces = crate::limits::shape_faces(&self.objects, src)?;
         let mut scene = self.scene;
         let mut texture_index: HashMap<PathBuf, usize> = HashMap::new();
         for spec in self.objects {
@@ -186,7 +216,10 @@ impl SceneSpec {
                     shape.mesh().map_err(|e| at.of(e.parameter).error(src, ErrorKind::Shape(e)))?
                 }
                 Geometry::Obj(path, at) => {
-                    load_obj(path).map_err(|e| at.error(src, ErrorKind::File(Box::new(e))))?
+                    let mesh =
+                        load_obj(path).map_err(|e| at.error(src, ErrorKind::File(Box::new(e))))?;
+                    crate::limits::add_model_faces(&mut faces, &mesh, at, src)?;
+                    mesh
                 }
             };
             let (mesh, weld) = match spec.weld {
@@ -668,7 +701,7 @@ fn read_weld(v: &Value<'_>) -> Result<Option<f32>, SceneError> {
 }
 
 /// The crease angle of `normals = "smooth"` and of the table form without `crease_deg`: edges
-/// whose faces meet at more than 30° stay hard (NUMERICS.md row 5). `crease_deg = 180` smooths
+/// whose faces meet at more than 30° stay hard (docs/numerics.md row 5). `crease_deg = 180` smooths
 /// every edge.
 const DEFAULT_CREASE_DEG: f32 = 30.0;
 

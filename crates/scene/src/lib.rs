@@ -31,6 +31,7 @@
 
 mod error;
 mod format;
+mod limits;
 mod obj;
 mod png;
 mod reader;
@@ -44,6 +45,10 @@ use cg_core::scene::Scene;
 use cg_core::texture::Texture;
 
 pub use error::{ErrorKind, Expected, Found, Position, Rule, SceneError};
+pub use limits::{
+    LimitError, MAX_AREA_LIGHT_SAMPLES, MAX_COORDINATE, MAX_DEPTH_RATIO, MAX_FOVY_DEG,
+    MAX_SCENE_FACES, MIN_FOVY_DEG, MIN_NEAR, Matrix, WorldPoint,
+};
 pub use shape::{MAX_SHAPE_FACES, ShapeSpec};
 
 /// The version of the scene format this crate reads (`format = 1`).
@@ -55,7 +60,12 @@ pub const FORMAT_VERSION: i64 = format::FORMAT_VERSION;
 /// A [`SceneError`] for the first problem found: the file cannot be read, is not TOML, has an
 /// unknown key, a wrong type, a value out of range (including a camera or projection that
 /// `cg_core::transform::look_at` or `perspective` refuses, and a shape with more than
-/// [`MAX_SHAPE_FACES`] faces), an unknown material, or names a file that cannot be loaded.
+/// [`MAX_SHAPE_FACES`] faces), an unknown material, or names a file that cannot be loaded; or a
+/// scene beyond the limits that keep it drawable, and drawn alike, by every renderer
+/// ([`ErrorKind::Limit`]): a point beyond [`MAX_COORDINATE`] in world space, a transform whose
+/// product overflows f32 (at the step), `fovy_deg` outside [[`MIN_FOVY_DEG`], [`MAX_FOVY_DEG`]],
+/// `near` below [`MIN_NEAR`], `far / near` above [`MAX_DEPTH_RATIO`], more than
+/// [`MAX_SCENE_FACES`] faces or [`MAX_AREA_LIGHT_SAMPLES`] area-light samples in all.
 ///
 /// See also [`parse`] for text already in memory.
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
@@ -83,7 +93,13 @@ pub fn load_encoded(
 pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
     let src = reader::Source { text, file: path };
     let base = path.parent().unwrap_or(Path::new(""));
-    format::read(&src, base)?.build(&src)
+    let doc = format::parse_document(&src)?;
+    let root = reader::Table::root(&src, &doc);
+    let spec = format::read_root(&src, &root, base)?;
+    limits::check_spec(&spec, &root)?;
+    let scene = spec.build(&src)?;
+    limits::check_scene(&scene, &root)?;
+    Ok(scene)
 }
 
 /// Reads a Wavefront OBJ model into one mesh: every group (`o`, `g`) merged, polygons split into
@@ -116,13 +132,32 @@ pub fn parse_obj(text: &str, path: &Path) -> Result<Mesh, SceneError> {
 /// bottom row (texture coordinate `(0, 0)` is the bottom-left corner, as in OpenGL).
 ///
 /// # Errors
-/// The file cannot be read, is not a PNG ([`ErrorKind::NotPng`]), is larger than the decoder
-/// will allocate ([`ErrorKind::PngTooLarge`], naming its size), or is corrupt or truncated
-/// ([`ErrorKind::Png`]).
+/// The file cannot be read or is larger than [`MAX_PNG_FILE_BYTES`] ([`ErrorKind::FileTooLarge`]),
+/// is not a PNG ([`ErrorKind::NotPng`]), is larger than [`MAX_TEXTURE_SIDE`] either way or
+/// decodes to more than [`MAX_TEXTURE_BYTES`] ([`ErrorKind::PngTooLarge`], naming its size), or
+/// is corrupt or truncated ([`ErrorKind::Png`]).
 pub fn load_texture(path: &Path) -> Result<Texture, SceneError> {
-    let bytes = std::fs::read(path).map_err(|e| read_error(path, &e))?;
+    let bytes = cg_core::text::read_bounded(path, MAX_PNG_FILE_BYTES).map_err(|e| match e {
+        cg_core::text::ReadError::TooLarge { size } => SceneError::in_file(
+            path,
+            ErrorKind::FileTooLarge { size, limit_mib: MAX_PNG_FILE_BYTES >> 20 },
+        ),
+        cg_core::text::ReadError::Io { reason } => {
+            SceneError::in_file(path, ErrorKind::Read { reason })
+        }
+        e => SceneError::in_file(path, ErrorKind::Read { reason: e.to_string() }),
+    })?;
     decode_png(&bytes, path)
 }
+
+/// The largest PNG file read as a texture: 64 MiB (checked before reading; a texture the
+/// course uses is a few hundred KiB).
+pub const MAX_PNG_FILE_BYTES: u64 = 64 << 20;
+/// The widest and highest texture: 8192 pixels, as OpenGL's `GL_MAX_TEXTURE_SIZE` on most
+/// hardware (checked from the PNG header before decoding).
+pub const MAX_TEXTURE_SIDE: u32 = 8192;
+/// The most bytes a PNG may decode to: one 8192 × 8192 RGBA8 image.
+pub const MAX_TEXTURE_BYTES: u64 = 8192 * 8192 * 4;
 
 /// [`load_texture`] for PNG bytes already in memory; `path` names them in errors.
 ///
@@ -139,10 +174,6 @@ pub fn decode_png(bytes: &[u8], path: &Path) -> Result<Texture, SceneError> {
 /// The file cannot be created or written; the error names the file and says why.
 pub fn save_png(path: &Path, image: &Image) -> Result<(), SceneError> {
     png::save_png(path, image)
-}
-
-fn read_error(path: &Path, e: &std::io::Error) -> SceneError {
-    SceneError::in_file(path, ErrorKind::Read { reason: e.to_string() })
 }
 
 /// A text file's contents, in `forced` or in the encoding a student's editor wrote it in: UTF-8

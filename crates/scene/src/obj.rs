@@ -194,9 +194,12 @@ fn check_values<'a>(
     keyword: &'a str,
     values: &[&'a str],
 ) -> Result<(), (&'a str, ErrorKind)> {
+    // A NaN or an infinity (`nan`, `inf`, `1e39`) is refused here, where the line is known.
     let number = |word: &'a str| {
         word.parse::<f32>()
-            .map_err(|_| (word, ErrorKind::ObjNumber { element, word: word.to_owned() }))
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| (word, ErrorKind::ObjNumber { element, word: word.to_owned() }))
     };
     let needed = if element == "vt" { 2 } else { 3 };
     let read: Vec<f32> = values.iter().take(needed).map(|w| number(w)).collect::<Result<_, _>>()?;

@@ -1,6 +1,7 @@
 //! PNG files via the image crate: textures are read as RGBA8 and flipped so row 0 is the bottom
 //! row; rendered images are written as RGBA8, row 0 at the top.
 
+use std::io::Cursor;
 use std::path::Path;
 
 use cg_core::image::{Image, to_unorm8};
@@ -17,20 +18,51 @@ pub(crate) fn decode_png(bytes: &[u8], path: &Path) -> Result<Texture, SceneErro
     if !bytes.starts_with(PNG_SIGNATURE) {
         return Err(error(ErrorKind::NotPng));
     }
-    let image = image::load_from_memory_with_format(bytes, image::ImageFormat::Png)
+    // The size from the header, before anything is decoded or allocated.
+    if let Some((width, height)) = header_size(bytes)
+        && (width > crate::MAX_TEXTURE_SIDE || height > crate::MAX_TEXTURE_SIDE)
+    {
+        return Err(error(ErrorKind::PngTooLarge { width, height }));
+    }
+    let mut reader = image::ImageReader::with_format(Cursor::new(bytes), image::ImageFormat::Png);
+    let mut limits = image::Limits::default();
+    limits.max_image_width = Some(crate::MAX_TEXTURE_SIDE);
+    limits.max_image_height = Some(crate::MAX_TEXTURE_SIDE);
+    limits.max_alloc = Some(crate::MAX_TEXTURE_BYTES * 2);
+    reader.limits(limits);
+    let image = reader
+        .decode()
         .map_err(|e| match (&e, header_size(bytes)) {
-            // The decoder refuses to allocate it (image's default limit is 512 MiB): the file
-            // may be fine, it is just too large to be a texture.
+            // The decoder refuses to allocate it: the file may be fine, it is just too large
+            // to be a texture.
             (image::ImageError::Limits(_), Some((width, height))) => {
                 error(ErrorKind::PngTooLarge { width, height })
             }
-            _ => error(ErrorKind::Png { reason: e.to_string() }),
+            _ => error(ErrorKind::Png { reason: reason(&e) }),
         })?
         .to_rgba8();
     let (width, height) = image.dimensions();
     // PNG rows run top to bottom; a texture's row 0 is the bottom one (OpenGL's (0, 0)).
     let texels = image.rows().rev().flat_map(|row| row.map(|p| p.0)).collect();
     Texture::new(width, height, texels).map_err(|e| error(ErrorKind::Texture(e)))
+}
+
+/// The decoder's message as a sentence: the image crate writes a chunk's type as Rust's debug
+/// form (`ChunkType { type: IHDR, critical: true, private: false, reserved: false, safe: false }`),
+/// which becomes its four letters.
+fn reason(e: &image::ImageError) -> String {
+    let mut text = e.to_string();
+    while let Some(start) = text.find("ChunkType {") {
+        let end = text[start..].find('}').map_or(text.len(), |i| start + i + 1);
+        let name = text[start..end]
+            .split("type: ")
+            .nth(1)
+            .and_then(|rest| rest.split([',', ' ', '}']).next())
+            .unwrap_or("?")
+            .to_owned();
+        text.replace_range(start..end, &name);
+    }
+    cg_core::quote::visible(&text)
 }
 
 /// Width and height from the PNG header (the IHDR chunk, which must come first), if present.
@@ -51,13 +83,18 @@ pub(crate) fn save_png(path: &Path, image: &Image) -> Result<(), SceneError> {
         .iter()
         .flat_map(|c| [to_unorm8(c.x), to_unorm8(c.y), to_unorm8(c.z), 255])
         .collect();
-    image::save_buffer_with_format(
-        path,
+    // Encoded in memory, then written with one call whose every error is seen: the image
+    // crate's own `save_buffer` writes through a buffer whose last flush happens on drop, where
+    // an error (a full disk, /dev/full) is lost and a small image "succeeds".
+    let mut encoded = Vec::new();
+    image::ImageEncoder::write_image(
+        image::codecs::png::PngEncoder::new(&mut encoded),
         &bytes,
         image.width,
         image.height,
         image::ExtendedColorType::Rgba8,
-        image::ImageFormat::Png,
     )
-    .map_err(|e| SceneError::in_file(path, ErrorKind::Write { reason: e.to_string() }))
+    .map_err(|e| SceneError::in_file(path, ErrorKind::Write { reason: e.to_string() }))?;
+    std::fs::write(path, &encoded)
+        .map_err(|e| SceneError::in_file(path, ErrorKind::Write { reason: e.to_string() }))
 }

@@ -50,13 +50,13 @@ impl Source<'_> {
         }
     }
 
-    /// The text of `span`, shortened for a message.
+    /// The text of `span`, shortened for a message, invisible characters named.
     fn excerpt(&self, span: &Range<usize>) -> String {
         let s = self.text.get(span.clone()).unwrap_or("").trim();
         if s.chars().count() > 40 {
-            format!("{}…", s.chars().take(40).collect::<String>())
+            format!("{}…", cg_core::quote::visible(&s.chars().take(40).collect::<String>()))
         } else {
-            s.to_owned()
+            cg_core::quote::visible(s)
         }
     }
 }

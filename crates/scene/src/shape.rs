@@ -291,7 +291,7 @@ impl ShapeSpec {
 
     /// The parameter that sets the face count (the larger of two), named in
     /// [`ErrorKind::TooManyFaces`]; `None` for shapes with a fixed count.
-    fn count_parameter(&self) -> Option<&'static str> {
+    pub(crate) fn count_parameter(&self) -> Option<&'static str> {
         match *self {
             ShapeSpec::Grid { .. } => Some("divisions"),
             ShapeSpec::UvSphere { slices, stacks, .. } => {

@@ -110,7 +110,10 @@ fn face_indices_out_of_range_are_errors_naming_the_line() {
         let e = obj_error(text);
         assert_eq!(*e.kind, ErrorKind::ObjIndex { element, index, count }, "{text}");
         assert_eq!(e.position.map(|p| (p.line, p.column)), Some((line, column)), "{text}");
-        assert!(e.to_string().starts_with(&format!("model.obj:{line}:{column}: ")), "{e}");
+        let message = e.to_string();
+        assert!(message.starts_with(&format!("model.obj:{line}:{column}: ")), "{e}");
+        assert!(message.len() < 400, "a message stays short: {} bytes", message.len());
+        assert!(!message.contains('\u{200B}'), "invisible characters are named: {message}");
     }
 }
 
@@ -125,8 +128,6 @@ fn malformed_obj_files_say_what_is_wrong() {
     // Values that parse but cannot be used.
     let e = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n");
     assert_eq!(*e.kind, ErrorKind::ObjBadNormal { vertex: 0 });
-    let e = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 nan\nf 1/1 2/1 3/1\n");
-    assert_eq!(*e.kind, ErrorKind::ObjBadUv { vertex: 0 });
 }
 
 /// What tobj alone makes of `text`: its error has no line (and sometimes names the wrong cause).
@@ -203,7 +204,33 @@ fn lines_tobj_rejects_are_named_with_their_line_and_column() {
             "v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n".into(),
             2,
             3,
-            ErrorKind::ObjPosition { position: [f32::INFINITY, 0.0, 0.0], w: 1.0 },
+            ErrorKind::ObjNumber { element: "v", word: "inf".into() },
+        ),
+        // A NaN texture coordinate or normal is named at its word, with its line.
+        (
+            format!("{TRI}vt 0 nan\nf 1/1 2/1 3/1\n"),
+            4,
+            6,
+            ErrorKind::ObjNumber { element: "vt", word: "nan".into() },
+        ),
+        (
+            format!("{TRI}vn 0 1e39 0\nf 1//1 2//1 3//1\n"),
+            4,
+            6,
+            ErrorKind::ObjNumber { element: "vn", word: "1e39".into() },
+        ),
+        // A huge word is cut short in the message, and an invisible character is named.
+        (
+            format!("{TRI}v 0 {} 0\n", "9".repeat(100_000) + "x"),
+            4,
+            5,
+            ErrorKind::ObjNumber { element: "v", word: "9".repeat(100_000) + "x" },
+        ),
+        (
+            format!("{TRI}f 1 2 3\u{200B}\n"),
+            4,
+            7,
+            ErrorKind::ObjNumber { element: "f", word: "3\u{200B}".into() },
         ),
         // 1e30 / 1e-30 overflows f32, as tobj computes it.
         (
@@ -248,7 +275,10 @@ fn lines_tobj_rejects_are_named_with_their_line_and_column() {
         let e = obj_error(&text);
         assert_eq!(*e.kind, kind, "{text}");
         assert_eq!(e.position.map(|p| (p.line, p.column)), Some((line, column)), "{text}");
-        assert!(e.to_string().starts_with(&format!("model.obj:{line}:{column}: ")), "{e}");
+        let message = e.to_string();
+        assert!(message.starts_with(&format!("model.obj:{line}:{column}: ")), "{e}");
+        assert!(message.len() < 400, "a message stays short: {} bytes", message.len());
+        assert!(!message.contains('\u{200B}'), "invisible characters are named: {message}");
         let ja = e.describe(Lang::Ja);
         assert!(ja.starts_with(&format!("model.obj:{line}:{column}: ")), "{ja}");
         assert!(ja.chars().any(|c| ('\u{3040}'..='\u{30ff}').contains(&c)), "{ja}");
@@ -316,7 +346,7 @@ fn scene_names_the_obj_error_inside_the_model_file() {
 }
 
 /// A cube stored as six separate quads, each with its own four `v` lines, as exporters that split
-/// vertices at every hard edge write it: 24 vertices where 8 positions are meant (NUMERICS row 3).
+/// vertices at every hard edge write it: 24 vertices where 8 positions are meant (docs/numerics.md row 3).
 fn split_cube_obj() -> String {
     let corner = |i: u32| [(i & 1) as f32, ((i >> 1) & 1) as f32, ((i >> 2) & 1) as f32];
     // Corners of each face, counter-clockwise seen from outside (bit 0 = x, 1 = y, 2 = z).
@@ -437,7 +467,9 @@ fn broken_images_say_so_and_name_the_file() {
         *b ^= 0x5a;
     }
     std::fs::write(&corrupt, &flipped).unwrap();
-    assert!(matches!(*load_texture(&corrupt).unwrap_err().kind, ErrorKind::Png { .. }));
+    // (The flipped header claims a size far above the limit.)
+    let e = load_texture(&corrupt).unwrap_err();
+    assert!(matches!(*e.kind, ErrorKind::Png { .. } | ErrorKind::PngTooLarge { .. }), "{e}");
 
     let not_png = dir.join("photo.png");
     std::fs::write(&not_png, b"\xff\xd8\xff\xe0\x00\x10JFIF\x00").unwrap();
@@ -448,6 +480,35 @@ fn broken_images_say_so_and_name_the_file() {
 
     let e = load_texture(&dir.join("absent.png")).unwrap_err();
     assert!(matches!(*e.kind, ErrorKind::Read { .. }));
+
+    // A bad checksum: the chunk is named by its four letters, not by a Rust debug struct.
+    let mut bad_crc = bytes.clone();
+    bad_crc[29] ^= 0xff; // the IHDR chunk's CRC
+    let e = cg_scene::decode_png(&bad_crc, Path::new("crc.png")).unwrap_err();
+    let message = e.to_string();
+    assert!(matches!(*e.kind, ErrorKind::Png { .. }), "{message}");
+    assert!(message.contains("IHDR") && !message.contains("ChunkType {"), "{message}");
+}
+
+#[test]
+fn a_texture_file_is_bounded_before_it_is_read() {
+    // /dev/zero never ends: the read stops at the limit instead of filling the memory.
+    if Path::new("/dev/zero").exists() {
+        let e = load_texture(Path::new("/dev/zero")).unwrap_err();
+        assert_eq!(*e.kind, ErrorKind::FileTooLarge { size: None, limit_mib: 64 }, "{e}");
+        assert!(e.to_string().contains("larger than 64 MiB"), "{e}");
+        assert!(e.describe(Lang::Ja).contains("64 MiB を超えています"), "{e}");
+    }
+    // A sparse file larger than the limit is refused from its size, before reading.
+    let dir = folder("png_size");
+    let big = dir.join("big.png");
+    let file = std::fs::File::create(&big).unwrap();
+    file.set_len(cg_scene::MAX_PNG_FILE_BYTES + 1).unwrap();
+    let e = load_texture(&big).unwrap_err();
+    assert_eq!(
+        *e.kind,
+        ErrorKind::FileTooLarge { size: Some(cg_scene::MAX_PNG_FILE_BYTES + 1), limit_mib: 64 }
+    );
 }
 
 /// CRC-32 of a PNG chunk's type and data (ISO 3309, the polynomial PNG uses), bit by bit.
@@ -485,8 +546,18 @@ fn a_png_too_large_to_decode_says_so_with_its_size() {
     let e =
         cg_scene::decode_png(&png_claiming(100_000, 100_000), Path::new("huge.png")).unwrap_err();
     assert_eq!(*e.kind, ErrorKind::PngTooLarge { width: 100_000, height: 100_000 });
-    assert_eq!(e.to_string(), "huge.png: PNG image too large (100000×100000)");
-    assert_eq!(e.describe(Lang::Ja), "huge.png: PNG 画像が大きすぎます（100000×100000）");
+    assert_eq!(
+        e.to_string(),
+        "huge.png: PNG image too large (100000×100000; a texture is at most 8192 pixels each way)"
+    );
+    assert_eq!(
+        e.describe(Lang::Ja),
+        "huge.png: PNG 画像が大きすぎます（100000×100000。テクスチャは縦横とも 8192 画素まで）"
+    );
+    // Over the side limit one way only, and a size whose pixels fit the side limit but whose
+    // header lies about the data: refused from the header, nothing decoded.
+    let e = cg_scene::decode_png(&png_claiming(8193, 1), Path::new("wide.png")).unwrap_err();
+    assert_eq!(*e.kind, ErrorKind::PngTooLarge { width: 8193, height: 1 });
     // Premise: the image crate reports this as a limit, not as corrupt data (its message,
     // "Memory limit exceeded", used to be shown as "corrupt or truncated PNG image").
     let raw = image::load_from_memory_with_format(

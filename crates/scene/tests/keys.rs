@@ -218,7 +218,7 @@ fn every_key_reads_into_its_field() {
 
     assert_eq!(pyramid.mesh, shapes::lecture_pyramid(), "from the OBJ file");
     assert_eq!(
-        // "smooth" and the table without crease_deg keep edges over 30° hard (NUMERICS row 5).
+        // "smooth" and the table without crease_deg keep edges over 30° hard (docs/numerics.md row 5).
         pyramid.normals,
         NormalSource::Vertex { weighting: Weighting::Angle, crease_deg: Some(30.0) }
     );

@@ -14,6 +14,8 @@
 //!
 //! 学生用 API: `exercises/` が使えるのはこのクレートだけです。答えを計算する関数はここにはありません。
 
+use std::cell::RefCell;
+
 pub use glam;
 
 pub mod a1;
@@ -24,6 +26,52 @@ pub mod gl;
 pub mod mesh;
 pub mod product;
 pub mod s;
+
+/// The marker of a stub you have not started: `cg_student::not_started("a2.t1");` as the first
+/// line of a function the kit hands out unfinished. It changes nothing your function does (the
+/// stub still runs, so `cargo run --release -- view a2` still draws), but while this line is
+/// there, every check that reaches it says **not done yet** for the task instead of judging
+/// your code. **Delete the line when you start writing the function**: from then on the checks
+/// judge what you wrote. A function that still has its marker is "not done yet" even when the
+/// rest of it is right.
+///
+/// まだ手を付けていないスタブの印です。この行があるあいだ、この行を通るチェックは「まだです」に
+/// なります（関数の中身は判定されません）。関数を書き始めたら、この行を消してください。
+///
+/// The marker is kept on the thread that calls it; the kit reads it with [`take_not_started`].
+pub fn not_started(task: &str) {
+    NOT_STARTED.with(|marks| {
+        let mut marks = marks.borrow_mut();
+        if marks.len() < MAX_MARKS && !marks.iter().any(|m| m == task) {
+            marks.push(task.chars().take(MAX_MARK_CHARS).collect());
+        }
+    });
+}
+
+/// For the kit, not for your code: the tasks whose [`not_started`] markers were reached on this
+/// thread since the last call, in the order first reached, and forgets them.
+///
+/// ```
+/// cg_student::not_started("a2.t1");
+/// cg_student::not_started("a2.t2");
+/// cg_student::not_started("a2.t1");
+/// assert_eq!(cg_student::take_not_started(), ["a2.t1", "a2.t2"]);
+/// assert!(cg_student::take_not_started().is_empty());
+/// ```
+#[must_use]
+pub fn take_not_started() -> Vec<String> {
+    NOT_STARTED.with(|marks| std::mem::take(&mut *marks.borrow_mut()))
+}
+
+/// How many different markers [`not_started`] keeps (the first ones reached).
+const MAX_MARKS: usize = 8;
+/// How much of a marker's task [`not_started`] keeps, in characters.
+const MAX_MARK_CHARS: usize = 40;
+
+thread_local! {
+    /// The markers reached on this thread (see [`not_started`]).
+    static NOT_STARTED: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+}
 
 /// A colour: linear RGB in `[0, 1]` (`x` = red, `y` = green, `z` = blue), as
 /// [`glam::Vec3`] so colours add and scale like vectors.

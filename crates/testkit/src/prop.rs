@@ -1,4 +1,4 @@
-//! Property tests, seeded: one configuration and the input strategies NUMERICS.md asks for
+//! Property tests, seeded: one configuration and the input strategies docs/numerics.md asks for
 //! (magnitudes drawn log-uniformly with both signs).
 
 use glam::Vec3;

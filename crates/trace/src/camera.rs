@@ -13,7 +13,7 @@
 //! plane and ends at the far plane (`t_min`, `t_max`), so it sees exactly what the rasterizer's
 //! near- and far-plane clipping leaves.
 
-use cg_core::glam::{DMat4, DVec4, Mat4, Vec3};
+use cg_core::glam::{DMat4, DVec3, DVec4, Mat4, Vec3};
 use cg_core::math::try_normalize_f64;
 
 use crate::ray::Ray;
@@ -25,8 +25,12 @@ pub struct RayCamera {
     height: u32,
     /// `(P·V)⁻¹` in f64: clip space → world space.
     clip_to_world: DMat4,
-    /// The eye in world space (`V⁻¹·(0, 0, 0, 1)`).
+    /// The eye in world space (`V⁻¹·(0, 0, 0, 1)`), rounded to f32: every primary ray's origin.
     eye: Vec3,
+    /// The same in f64, unrounded: the primary rays' directions are taken from it. (From the
+    /// rounded eye, the course's camera with a near plane 1e-4 away turned them by up to 2e-3
+    /// rad, 1.5 pixels of its window; 1e4 from the origin with a near plane at 1, by 6e-4 rad.)
+    eye_exact: DVec3,
     /// The camera's backward axis in world space (`V⁻¹·(0, 0, 1, 0)`, unit): OpenGL's infinite
     /// viewer direction.
     backward: Vec3,
@@ -59,6 +63,7 @@ impl RayCamera {
             height,
             clip_to_world,
             eye: eye.as_vec3(),
+            eye_exact: eye,
             backward: backward.as_vec3(),
             cull_back_faces,
         })
@@ -90,7 +95,7 @@ impl RayCamera {
         };
         let p_near_world = unproject(0.0);
         let p_far_world = unproject(1.0);
-        let eye = self.eye.as_dvec3();
+        let eye = self.eye_exact;
         let to_near = p_near_world - eye;
         let t_near = to_near.length();
         let t_far = (p_far_world - eye).length();

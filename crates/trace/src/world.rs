@@ -27,7 +27,7 @@
 //! triangles of all objects share one [`Bvh`].
 //!
 //! Texture coordinates are interpolated after the integer [`Sampler::repeat_origin`] of the
-//! face's first corner is taken off them (NUMERICS row 23: coordinates near 1e6 keep their
+//! face's first corner is taken off them (docs/numerics.md row 23: coordinates near 1e6 keep their
 //! precision under repeat).
 //!
 //! Under flat shading a triangle is lit once, at its centroid, with its face normal

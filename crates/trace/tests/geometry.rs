@@ -81,6 +81,33 @@ fn primary_rays_pass_through_the_pixel_centres_of_the_rasterizers_projection() {
     }
 }
 
+/// The nearest near plane and the farthest eye the scene format allows (`cg_scene::MIN_NEAR`,
+/// `cg_scene::MAX_COORDINATE`) give the primary rays of the course's near plane of 1: their
+/// directions are taken from the eye in f64, not from its f32 rounding (which turned them by up
+/// to 2e-3 rad, 1.5 pixels of the course's window, at near = 1e-4).
+#[test]
+fn primary_rays_keep_their_direction_with_a_tiny_near_plane_far_from_the_origin() {
+    let mut s = common::shipped("course-sample");
+    (s.width, s.height) = (64, 64);
+    s.projection.far = 100.0;
+    let far_away = Vec3::new(1.0, 0.0, 1.0) * (cg_scene::MAX_COORDINATE - 20.0);
+    for target in [Vec3::ZERO, far_away] {
+        let Camera::Orbit(orbit) = &mut s.camera else { panic!("the course's orbit camera") };
+        orbit.target = target;
+        s.projection.near = 1.0;
+        let mut tiny_near = s.clone();
+        tiny_near.projection.near = cg_scene::MIN_NEAR;
+        let course = Tracer::new(&s, &Options::default()).unwrap();
+        let tiny = Tracer::new(&tiny_near, &Options::default()).unwrap();
+        for (x, y) in [(0, 0), (31, 17), (63, 63), (5, 60)] {
+            let (a, b) = (course.generate_ray(x, y), tiny.generate_ray(x, y));
+            let angle = a.direction.angle_between(b.direction);
+            assert!(angle < 1e-5, "target {target}, pixel ({x}, {y}): {angle} rad apart");
+            assert_approx_eq!(a.origin, b.origin, abs = 0.0);
+        }
+    }
+}
+
 /// Random triangle soups and meshes, far from the origin too.
 fn triangle_sets(inputs: &mut Inputs) -> Vec<(String, Vec<[Vec3; 3]>)> {
     let mut sets = Vec::new();

@@ -78,11 +78,7 @@ fn main() -> ExitCode {
         renderer: args.renderer,
         lang,
     };
-    match cg_viewer::run(&options) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("{}: {}", lang.pick("エラー", "error"), e.message(lang));
-            ExitCode::FAILURE
-        }
-    }
+    // The kit's exit statuses: 0 ok, 2 bad input (cg_harness::exit).
+    let result = cg_viewer::run(&options).map(|()| cg_harness::exit::Ending::Ok);
+    cg_harness::exit::finish(result.map_err(|e| e.message(lang)), lang)
 }

@@ -152,7 +152,7 @@ fn a_missing_scene_file_is_an_error_message_not_a_panic() {
         .output()
         .unwrap();
     let all = text(&out);
-    assert_eq!(out.status.code(), Some(1), "{all}");
+    assert_eq!(out.status.code(), Some(2), "{all}");
     assert!(all.contains("error:") && all.contains("scene.toml"), "{all}");
     assert!(!all.contains("panicked"), "{all}");
     // The same in Japanese (`--lang ja`, or CG_LANG=ja).
@@ -161,7 +161,7 @@ fn a_missing_scene_file_is_an_error_message_not_a_panic() {
         .output()
         .unwrap();
     let all = text(&out);
-    assert_eq!(out.status.code(), Some(1), "{all}");
+    assert_eq!(out.status.code(), Some(2), "{all}");
     assert!(all.contains("エラー:") && all.contains("読めません"), "{all}");
 }
 

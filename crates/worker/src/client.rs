@@ -166,7 +166,10 @@ impl Worker {
         }
     }
 
-    /// Calls `function` with `args` and waits at most `budget` for its reply.
+    /// Calls `function` with `args` and waits at most `budget` for its reply. The markers of
+    /// stubs not started (`cg_student::not_started`) that the function reached in the worker
+    /// are recorded on this thread too, as if the function had run here
+    /// (`cg_student::take_not_started` reads them).
     ///
     /// # Errors
     /// The function panicked, ran over, crashed the worker, or the reply did not read.
@@ -206,14 +209,7 @@ impl Worker {
             Err(RecvTimeoutError::Disconnected) => return Err(self.crashed()),
         };
         match decode::<Reply>(&payload) {
-            Ok(Reply::Value(v)) => from_value(&v).map_err(|e| {
-                CallError::Broken(format!("{function} returned a value of another type: {e}"))
-            }),
-            Ok(Reply::Panicked { message, location }) => {
-                Err(CallError::Panicked { message, location })
-            }
-            Ok(Reply::BadArguments(why)) => Err(CallError::Broken(format!("{function}: {why}"))),
-            Ok(Reply::Unknown(name)) => Err(CallError::Broken(format!("no function {name}"))),
+            Ok(reply) => read_reply(function, reply),
             Err(e) => {
                 self.stop();
                 Err(CallError::Broken(format!("the worker's reply does not read: {e}")))
@@ -240,6 +236,34 @@ impl Worker {
         }
         let bytes = r.stderr.lock().map(|t| t.clone()).unwrap_or_default();
         CallError::Crashed { status, stderr: String::from_utf8_lossy(&bytes).into_owned() }
+    }
+}
+
+/// What a call's reply gives. The markers of a [`Reply::Stub`] are recorded on this thread
+/// (`cg_student::not_started`), as the function called here would have recorded them; its inner
+/// reply is read as any other.
+fn read_reply<R: serde::de::DeserializeOwned>(
+    function: &str,
+    reply: Reply,
+) -> Result<R, CallError> {
+    match reply {
+        Reply::Value(v) => from_value(&v).map_err(|e| {
+            CallError::Broken(format!("{function} returned a value of another type: {e}"))
+        }),
+        Reply::Panicked { message, location } => Err(CallError::Panicked { message, location }),
+        Reply::BadArguments(why) => Err(CallError::Broken(format!("{function}: {why}"))),
+        Reply::Unknown(name) => Err(CallError::Broken(format!("no function {name}"))),
+        Reply::Stub { tasks, reply } => {
+            if matches!(*reply, Reply::Stub { .. }) {
+                return Err(CallError::Broken(format!(
+                    "{function}: a stub's reply inside another"
+                )));
+            }
+            for task in &tasks {
+                cg_student::not_started(task);
+            }
+            read_reply(function, *reply)
+        }
     }
 }
 

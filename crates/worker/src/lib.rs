@@ -132,4 +132,16 @@ pub enum Reply {
     BadArguments(String),
     /// No such function in this worker.
     Unknown(String),
+    /// The function reached the marker of a stub not started yet
+    /// (`cg_student::not_started("a2.t1")`) before it returned or panicked: the markers'
+    /// tasks, in the order first reached, and what the call gave otherwise (never a `Stub`).
+    /// The caller ([`Worker::call`]) records the markers on its own thread, as the call made
+    /// there would have, and reads `reply` as usual: the checks say "not done yet", the view
+    /// draws what the stub returned.
+    Stub {
+        /// The tasks of the markers reached.
+        tasks: Vec<String>,
+        /// The reply without the markers.
+        reply: Box<Reply>,
+    },
 }

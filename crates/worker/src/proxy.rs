@@ -7,8 +7,11 @@
 //! panic payload (`std::panic::panic_any`), which `cg_harness::check::run` turns into the
 //! check's outcome: a `todo!()` is "not done yet" as before, a panic is a panic with the
 //! student's own message and location, a call past its budget "timed out", a worker that died
-//! "crashed". Nothing the worker prints is read as a result: a reply is a value of the
-//! function's return type, for the check to judge.
+//! "crashed". A stub that runs and carries its marker (`cg_student::not_started`) gives its
+//! value, and the marker comes back with it and is recorded on this thread ([`Worker::call`]), so
+//! the check says "not done yet" as it does with the function in process. Nothing the worker
+//! prints is read as a result: a reply is a value of the function's return type, for the check
+//! to judge.
 //!
 //! **Budgets.** A check's calls share one budget, [`Session::per_check`], from the moment the
 //! check starts ([`begin_check`], called by `check::run`); a call outside any check has the

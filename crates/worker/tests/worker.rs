@@ -1,6 +1,7 @@
 //! The caller and the worker over a real pipe, with the fixture worker: values come back, a
-//! `todo!()` is a panic with its message, an endless loop fails only its own call (and the next
-//! call gets a fresh worker), an abort is a crash, and the student's prints never break a reply.
+//! `todo!()` is a panic with its message, a stub's marker comes back with its value (or panic),
+//! an endless loop fails only its own call (and the next call gets a fresh worker), an abort is a
+//! crash, and the student's prints never break a reply.
 
 use std::time::{Duration, Instant};
 
@@ -34,6 +35,23 @@ fn a_todo_is_a_panic_with_its_message_and_the_worker_goes_on() {
         other => panic!("{other:?}"),
     }
     assert_eq!(w.call::<_, i64>("add", &(1, 1), BUDGET), Ok(2));
+}
+
+#[test]
+fn a_stubs_marker_comes_back_with_the_reply_and_is_recorded_on_the_callers_thread() {
+    let mut w = worker();
+    let _ = cg_student::take_not_started();
+    // The stub's value, for the view; its marker, for the checks.
+    assert_eq!(w.call::<_, i64>("stub", &7, BUDGET), Ok(7));
+    assert_eq!(cg_student::take_not_started(), ["t.t2"]);
+    match w.call::<_, i64>("stub_panic", &(), BUDGET) {
+        Err(CallError::Panicked { message, .. }) => assert_eq!(message, "index out of bounds"),
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(cg_student::take_not_started(), ["t.t3"]);
+    // A call that reaches no marker records none, and no marker is left over in the worker.
+    assert_eq!(w.call::<_, i64>("add", &(1, 1), BUDGET), Ok(2));
+    assert!(cg_student::take_not_started().is_empty());
 }
 
 #[test]

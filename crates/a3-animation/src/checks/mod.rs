@@ -13,7 +13,7 @@
 //! | check | tolerance | why |
 //! |---|---|---|
 //! | poses, warm-up, periods | 1e-3 | far above f32 rounding (≈ 1e-6 here), far below one frame of the slowest motion (≥ 5e-3) |
-//! | drift after 10⁶ frames | 1e-5 | NUMERICS.md row 11; the student's own poses at frame 10⁶ and at the same phase early on, which agree exactly for an angle rebuilt from the frame count |
+//! | drift after 10⁶ frames | 1e-5 | docs/numerics.md row 11; the student's own poses at frame 10⁶ and at the same phase early on, which agree exactly for an angle rebuilt from the frame count |
 
 use cg_core::gl::{Draw, Gl};
 use cg_core::glam::{DMat4, DVec3};

@@ -13,7 +13,7 @@ use super::{
 use crate::pose::{model_of, pose_error, seconds};
 use crate::{DRIFT_FRAMES, FPS, Impl, Spec, SpecExt};
 
-/// Drift tolerance after 10⁶ frames (NUMERICS.md row 11): how far the pose at frame 10⁶ may be
+/// Drift tolerance after 10⁶ frames (docs/numerics.md row 11): how far the pose at frame 10⁶ may be
 /// from the student's own pose one whole number of common periods earlier. A motion rebuilt
 /// from the frame count gives the same f32 matrices at both (a difference of 0); an f32 angle
 /// accumulated every frame is off by degrees (the tests' one: 6e-2 rad).
@@ -221,7 +221,7 @@ pub(super) fn ratios(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 /// in, and the two frames it compares are at least 9 of these periods apart.
 const MAX_COMMON: u64 = DRIFT_FRAMES / 10;
 
-/// The drift check (NUMERICS.md row 11): `idle` run [`DRIFT_FRAMES`] times, and every object's
+/// The drift check (docs/numerics.md row 11): `idle` run [`DRIFT_FRAMES`] times, and every object's
 /// pose at that frame compared with the student's *own* pose at the frame with the same phase
 /// early on, `f₀ = 10⁶ mod L` (`L` when that is 0), `L` the least common multiple of the periods
 /// [`measure_periods`] measures (those of `a3.t1.periods`; for a right answer, the specified

@@ -11,7 +11,7 @@ use crate::measure::median_time;
 use crate::{BenchError, Column, Config, Experiment, Row};
 
 /// Schlick's formula with `cos θ_i` whichever side the light comes from: wrong inside a denser
-/// medium (no total internal reflection; NUMERICS.md row 13). For comparison only.
+/// medium (no total internal reflection; docs/numerics.md row 13). For comparison only.
 #[must_use]
 pub fn schlick_incident_cosine(cos_i: f32, eta_i: f32, eta_t: f32) -> f32 {
     let r0 = ((eta_i - eta_t) / (eta_i + eta_t)).powi(2);

@@ -2,7 +2,7 @@
 //! transformation of normals.
 //!
 //! Face normals are computed in f64 from edge vectors, with an error bound small enough that a
-//! zero-area face is recognised exactly (`None`, NUMERICS.md row 1) and every other face gets a
+//! zero-area face is recognised exactly (`None`, docs/numerics.md row 1) and every other face gets a
 //! normal correct to f32 precision — needle triangles and triangles far from the origin included
 //! (rows 6–7). Vertex normals average the face normals of the faces around a vertex (頂点に隣接する
 //! 全ての面の法線を平均) with one of four [`Weighting`]s, accumulating in f64; a vertex that cannot
@@ -104,7 +104,7 @@ const F32_UNIT_ROUNDOFF: f64 = 1.0 / (1u32 << 24) as f64;
 /// A face whose area vector is no longer than this bound is collinear *within the precision of
 /// its own coordinates* (rounding could turn its normal any way at all) — a sliver whose third corner is the f32-rounded midpoint of an edge,
 /// say: its "normal" is rounding noise and may point anywhere, and weighted like a real face it
-/// tilts its neighbours' vertex normals by tens of degrees (NUMERICS.md row 1). The bound is
+/// tilts its neighbours' vertex normals by tens of degrees (docs/numerics.md row 1). The bound is
 /// per component, so an axis-aligned triangle whose small coordinate is exact — `(0,0,0)`,
 /// `(1,0,0)`, `(1,1e-20,0)` — is not affected; a needle of height 1e-6 and base 1 stays
 /// above it even rotated and moved by its own size (row 6), and a unit triangle keeps its normal up

@@ -177,6 +177,11 @@ pub enum ErrorKind {
         /// The most a shape may have ([`crate::MAX_SHAPE_FACES`]).
         max: u64,
     },
+    /// A scene beyond one of the limits that keep every scene that loads drawable, and drawn
+    /// alike by every renderer ([`crate::MAX_COORDINATE`], [`crate::MAX_SCENE_FACES`], …): a
+    /// point too far from the origin, a transform whose product overflows, a field of view, near
+    /// plane or depth range f32 cannot draw, too many faces or area-light samples in all.
+    Limit(crate::LimitError),
     /// The camera or the projection is one that `cg_core::transform` cannot build (`look_at`'s
     /// up nearly parallel to the view, a subnormal `near`, …).
     Transform(TransformError),
@@ -244,12 +249,21 @@ pub enum ErrorKind {
     Mesh(MeshError),
     /// The file is not a PNG image.
     NotPng,
-    /// The PNG image is larger than the decoder's memory limit allows.
+    /// The PNG image is wider or higher than [`crate::MAX_TEXTURE_SIDE`], or decodes to more than
+    /// [`crate::MAX_TEXTURE_BYTES`].
     PngTooLarge {
         /// Width in pixels, from the PNG header.
         width: u32,
         /// Height in pixels, from the PNG header.
         height: u32,
+    },
+    /// The file is larger than the kit reads for its kind (a PNG: [`crate::MAX_PNG_FILE_BYTES`]);
+    /// nothing past the limit was read.
+    FileTooLarge {
+        /// Its size in bytes, when the file system says (not for a pipe or a device).
+        size: Option<u64>,
+        /// The limit, in MiB.
+        limit_mib: u64,
     },
     /// The PNG image is corrupt or truncated.
     Png {

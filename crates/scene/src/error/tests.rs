@@ -12,7 +12,7 @@ use cg_core::transform::TransformError;
 use super::*;
 
 /// How many variants [`ErrorKind`] has; [`kind_index`] numbers them `0..KINDS`.
-const KINDS: usize = 40;
+const KINDS: usize = 42;
 
 /// A number for each variant of [`ErrorKind`] (the match is exhaustive, so a new variant does not
 /// compile until it is numbered here, and [`every_kind_has_a_sample`] fails until it has a
@@ -59,6 +59,8 @@ fn kind_index(kind: &ErrorKind) -> usize {
         ErrorKind::Png { .. } => 36,
         ErrorKind::Texture(_) => 37,
         ErrorKind::Write { .. } => 38,
+        ErrorKind::FileTooLarge { .. } => 40,
+        ErrorKind::Limit(_) => 41,
     }
 }
 
@@ -282,11 +284,13 @@ fn samples() -> Vec<ErrorKind> {
         }),
         ErrorKind::NotPng,
         ErrorKind::PngTooLarge { width: 100_000, height: 100_000 },
+        ErrorKind::FileTooLarge { size: Some(70_000_000), limit_mib: 64 },
         ErrorKind::Png { reason: "unexpected end of file".into() },
         ErrorKind::Texture(TextureError::ZeroSize { width: 0, height: 4 }),
         ErrorKind::Texture(TextureError::TexelCount { width: 2, height: 2, expected: 4, got: 3 }),
         ErrorKind::Write { reason: "Permission denied (os error 13)".into() },
     ];
+    kinds.extend(crate::limits::tests::samples().into_iter().map(ErrorKind::Limit));
     kinds
         .extend(all_rules().into_iter().map(|rule| ErrorKind::BadValue { rule, got: "-1".into() }));
     for expected in all_expected() {

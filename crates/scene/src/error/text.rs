@@ -1,6 +1,7 @@
 //! The messages: one [`Text`] per error, its Japanese and English sentence built side by side.
 
 use cg_core::lang::{Lang, Text, t};
+use cg_core::quote::shown;
 
 use super::{ErrorKind, Expected, Found, Rule, SceneError};
 
@@ -24,12 +25,11 @@ impl SceneError {
             place = format!("{place}:{p}");
         }
         place.push_str(": ");
-        if let Some(key) = &self.key {
-            place.push_str(key);
-            place.push_str(": ");
-        }
+        // The key path as written, cut short and with invisible characters named.
+        let key =
+            |lang| self.key.as_ref().map_or_else(String::new, |k| format!("{}: ", shown(k, lang)));
         let Text { ja, en } = self.kind.text();
-        Text::new(format!("{place}{ja}"), format!("{place}{en}"))
+        Text::new(format!("{place}{}{ja}", key(Lang::Ja)), format!("{place}{}{en}", key(Lang::En)))
     }
 }
 
@@ -59,12 +59,23 @@ impl ErrorKind {
                 format!("format = {found} is not a version this kit reads; use format = 1"),
             ),
             ErrorKind::UnknownKey { key, suggestion: Some(s), .. } => Text::new(
-                format!("`{key}` というキーはありません（`{s}` の間違いでは？）"),
-                format!("unknown key `{key}` (did you mean `{s}`?)"),
+                format!(
+                    "`{key}` というキーはありません（`{s}` の間違いでは？）",
+                    key = shown(key, Lang::Ja)
+                ),
+                format!("unknown key `{key}` (did you mean `{s}`?)", key = shown(key, Lang::En)),
             ),
             ErrorKind::UnknownKey { key, suggestion: None, allowed } => Text::new(
-                format!("`{key}` というキーはありません。ここで使えるキー: {}", list(allowed)),
-                format!("unknown key `{key}`; the keys here are {}", list(allowed)),
+                format!(
+                    "`{key}` というキーはありません。ここで使えるキー: {}",
+                    list(allowed),
+                    key = shown(key, Lang::Ja)
+                ),
+                format!(
+                    "unknown key `{key}`; the keys here are {}",
+                    list(allowed),
+                    key = shown(key, Lang::En)
+                ),
             ),
             ErrorKind::MissingKey { key } => Text::new(
                 format!("必要なキー `{key}` がありません"),
@@ -157,21 +168,33 @@ impl ErrorKind {
             }
             ErrorKind::UnknownMaterial { name, suggestion: Some(s) } => Text::new(
                 format!(
-                    "[materials] に \"{name}\" という材質はありません（\"{s}\" の間違いでは？）"
+                    "[materials] に \"{name}\" という材質はありません（\"{s}\" の間違いでは？）",
+                    name = shown(name, Lang::Ja)
                 ),
-                format!("no material named \"{name}\" in [materials] (did you mean \"{s}\"?)"),
+                format!(
+                    "no material named \"{name}\" in [materials] (did you mean \"{s}\"?)",
+                    name = shown(name, Lang::En)
+                ),
             ),
             ErrorKind::UnknownMaterial { name, suggestion: None } => Text::new(
                 format!(
-                    "\"{name}\" という材質はありません。[materials.{name}] を作るか、材質をその場に書いてください"
+                    "\"{name}\" という材質はありません。[materials.{name}] を作るか、材質をその場に書いてください",
+                    name = shown(name, Lang::Ja)
                 ),
                 format!(
-                    "no material named \"{name}\"; define it as [materials.{name}] or write the material inline"
+                    "no material named \"{name}\"; define it as [materials.{name}] or write the material inline",
+                    name = shown(name, Lang::En)
                 ),
             ),
             ErrorKind::DuplicateName { name, first_line } => Text::new(
-                format!("物体の名前 \"{name}\" は {first_line} 行目ですでに使われています"),
-                format!("another object (line {first_line}) is already named \"{name}\""),
+                format!(
+                    "物体の名前 \"{name}\" は {first_line} 行目ですでに使われています",
+                    name = shown(name, Lang::Ja)
+                ),
+                format!(
+                    "another object (line {first_line}) is already named \"{name}\"",
+                    name = shown(name, Lang::En)
+                ),
             ),
             ErrorKind::NeedsNormals => t(
                 "normals = \"given\" ですが、このメッシュには法線がありません（OBJ なら vn 行が必要）。\"face\" か \"smooth\" を使ってください",
@@ -190,6 +213,7 @@ impl ErrorKind {
                     "this {shape} would have {faces} faces (triangles), more than the {max} one shape may have: use fewer segments"
                 ),
             ),
+            ErrorKind::Limit(e) => e.text(),
             ErrorKind::Transform(e) => e.text(),
             ErrorKind::File(inner) => inner.text(),
             ErrorKind::Obj(e) => Text::new(
@@ -206,15 +230,23 @@ impl ErrorKind {
             ),
             ErrorKind::ObjNumber { element: element @ ("f" | "l"), word } => Text::new(
                 format!(
-                    "`{word}` は {element} 行の頂点番号として使えません（1 から数える整数か、後ろから数える負の整数を書きます）"
+                    "`{word}` は {element} 行の頂点番号として使えません（1 から数える整数か、後ろから数える負の整数を書きます）",
+                    word = shown(word, Lang::Ja)
                 ),
                 format!(
-                    "`{word}` is not a usable index on an `{element}` line (a whole number counted from 1, or a negative one counting back)"
+                    "`{word}` is not a usable index on an `{element}` line (a whole number counted from 1, or a negative one counting back)",
+                    word = shown(word, Lang::En)
                 ),
             ),
             ErrorKind::ObjNumber { element, word } => Text::new(
-                format!("{element} 行の `{word}` は数ではありません"),
-                format!("`{word}` on a `{element}` line is not a number"),
+                format!(
+                    "{element} 行の `{word}` は有限の数ではありません",
+                    word = shown(word, Lang::Ja)
+                ),
+                format!(
+                    "`{word}` on a `{element}` line is not a finite number",
+                    word = shown(word, Lang::En)
+                ),
             ),
             ErrorKind::ObjValues { element: element @ ("f" | "l"), .. } => Text::new(
                 format!("{element} 行に頂点番号がありません"),
@@ -239,9 +271,13 @@ impl ErrorKind {
             }
             ErrorKind::ObjCorner { corner } => Text::new(
                 format!(
-                    "面の頂点 `{corner}` の書き方が違います（v、v/vt、v//vn、v/vt/vn のどれかで書きます）"
+                    "面の頂点 `{corner}` の書き方が違います（v、v/vt、v//vn、v/vt/vn のどれかで書きます）",
+                    corner = shown(corner, Lang::Ja)
                 ),
-                format!("face corner `{corner}` is not one of v, v/vt, v//vn, v/vt/vn"),
+                format!(
+                    "face corner `{corner}` is not one of v, v/vt, v//vn, v/vt/vn",
+                    corner = shown(corner, Lang::En)
+                ),
             ),
             ErrorKind::ObjPosition { w, .. } if *w == 0.0 => t(
                 "同次座標 w が 0 です（頂点が無限遠になります）",
@@ -281,10 +317,31 @@ impl ErrorKind {
                 "PNG 画像ではありません（PNG の先頭 8 バイトがありません）",
                 "not a PNG image (the file does not start with the PNG signature)",
             ),
-            ErrorKind::PngTooLarge { width, height } => Text::new(
-                format!("PNG 画像が大きすぎます（{width}×{height}）"),
-                format!("PNG image too large ({width}×{height})"),
-            ),
+            ErrorKind::PngTooLarge { width, height } => {
+                let side = crate::MAX_TEXTURE_SIDE;
+                Text::new(
+                    format!(
+                        "PNG 画像が大きすぎます（{width}×{height}。テクスチャは縦横とも {side} 画素まで）"
+                    ),
+                    format!(
+                        "PNG image too large ({width}×{height}; a texture is at most {side} pixels each way)"
+                    ),
+                )
+            }
+            ErrorKind::FileTooLarge { size, limit_mib } => {
+                let (ja, en) = size.map_or_else(
+                    || (String::new(), String::new()),
+                    |n| (format!("（{n} バイト）"), format!(" ({n} bytes)")),
+                );
+                Text::new(
+                    format!(
+                        "ファイルが {limit_mib} MiB を超えています{ja}。指定したファイルが正しいか確かめてください"
+                    ),
+                    format!(
+                        "the file is larger than {limit_mib} MiB{en}: check that you named the right file"
+                    ),
+                )
+            }
             ErrorKind::Png { reason } => Text::new(
                 format!("PNG 画像が壊れているか途中で切れています: {reason}"),
                 format!("corrupt or truncated PNG image: {reason}"),

@@ -1,6 +1,6 @@
 //! The checks, one [`check::run`] per property. Each calls the student's functions inside its
 //! closure (so a `todo!()` is "not done yet" and a panic a report), compares with the core's own
-//! functions on seeded inputs and on the hard cases of NUMERICS.md rows 12–18, with the
+//! functions on seeded inputs and on the hard cases of docs/numerics.md rows 12–18, with the
 //! tolerances stated in each module, and explains a failure in Japanese and English.
 
 use cg_core::Rgb;

@@ -318,7 +318,7 @@ fn weights_text(w: [f32; 3]) -> String {
 }
 
 /// The unit checks: every face of the student's sphere at a few weights, and the Phong hard case
-/// of NUMERICS row 18 (vertex normals that cancel at the pixel: the face normal is used).
+/// of docs/numerics.md row 18 (vertex normals that cancel at the pixel: the face normal is used).
 pub(super) fn unit(spec: &Spec, imp: &Impl, mode: Shading) -> Result<(), Failure> {
     let fx = Fixture::of(spec)?;
     let kit = KitLight::new(&fx.scene, &material(spec)).map_err(|e| kit_failure(&e))?;

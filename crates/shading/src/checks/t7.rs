@@ -1,4 +1,4 @@
-//! s.t7: the mirror direction (reflection) against [`cg_core::optics::reflect`] (NUMERICS.md
+//! s.t7: the mirror direction (reflection) against [`cg_core::optics::reflect`] (docs/numerics.md
 //! row 12).
 //!
 //! Tolerance: 1e-5·(1 + |i|) per component.

@@ -1,5 +1,5 @@
 //! s.t8: refraction by Snell's law and total internal reflection against
-//! [`cg_core::optics::refract`] with [`Interface`] (NUMERICS.md row 12).
+//! [`cg_core::optics::refract`] with [`Interface`] (docs/numerics.md row 12).
 //!
 //! Tolerance: 1e-5 per component (unit vectors). The refraction checks leave out incidence
 //! angles within 1e-3 rad of the critical angle, where f32 and the core's f64 may decide total

@@ -19,6 +19,22 @@ fn main() -> std::io::Result<()> {
         ("add", handler(|(a, b): (i64, i64)| a + b)),
         ("todo", handler(|(): ()| -> i64 { todo!("t.t1: write it") })),
         (
+            // A stub that runs, with its marker: its value comes back with the marker.
+            "stub",
+            handler(|x: i64| {
+                cg_student::not_started("t.t2");
+                x
+            }),
+        ),
+        (
+            // A marker, then a panic: the panic comes back with the marker.
+            "stub_panic",
+            handler(|(): ()| -> i64 {
+                cg_student::not_started("t.t3");
+                panic!("index out of bounds")
+            }),
+        ),
+        (
             "loop",
             handler(|(): ()| -> i64 {
                 loop {
