@@ -91,6 +91,11 @@ impl cg_harness::Assignment for A3 {
         view(spec, imp, time_s)
     }
 
+    /// The whole animation repeats after the least common multiple of the periods.
+    fn view_period_s(spec: &Spec) -> Option<f64> {
+        Some(spec.common_period_s())
+    }
+
     fn warmup(imp: &Impl, time_s: f64) -> Option<cg_core::scene::Scene> {
         Some(warmup_view(imp, time_s))
     }

@@ -155,6 +155,22 @@ macro_rules! derive_from_list {
                 }
             }
 
+            /// After how many seconds `which`'s view repeats (`None`: a still picture).
+            #[must_use]
+            pub fn view_period_s(&self, which: Which) -> Option<f64> {
+                match which {
+                    $(Which::$id => <$unit as Unit>::view_period_s(&self.$id),)*
+                }
+            }
+
+            /// The labels of `which`'s view: world points and the words written there.
+            #[must_use]
+            pub fn view_labels(&self, which: Which) -> Vec<([f32; 2], &'static str)> {
+                match which {
+                    $(Which::$id => <$unit as Unit>::view_labels(&self.$id),)*
+                }
+            }
+
             /// Everything the report needs from the student's functions: each assignment in the
             /// report on its own, so a missing part leaves its field `None` while the others
             /// derive. The list names every part (and every smaller piece, such as the

@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 use cg_assign::{Impls, StudentFile, Variants, Which, write_student_file};
+use cg_core::image::Image;
 use cg_core::lang::Lang;
 use cg_core::scene::Scene;
 use cg_harness::check::{Outcome, Report, guarded};
@@ -222,6 +223,9 @@ pub struct ViewArgs {
     /// Window: start with the animation paused / ウィンドウ: アニメーションを止めて始める
     #[arg(long)]
     paused: bool,
+    /// PNG: N frames over one period of the animation in one picture (a3), 2–16 / PNG: アニメーションの 1 周期を N 枚並べた図（a3、2〜16）
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(2..=16))]
+    strip: Option<u32>,
     /// PNG from another side: the orbit camera's yaw in degrees (a turn about +Y) / 別の向きから PNG に描画: カメラの方位角（度、+Y 軸まわり）
     #[arg(long, value_name = "DEG", allow_hyphen_values = true, value_parser = degrees(-360.0, 360.0))]
     yaw: Option<f32>,
@@ -245,6 +249,12 @@ impl ViewArgs {
     /// Whether the camera was moved on the command line (then the view is drawn to PNG files).
     fn camera_moved(&self) -> bool {
         self.yaw.is_some() || self.pitch.is_some() || self.distance.is_some()
+    }
+
+    /// Whether the view is drawn to PNG files whatever the display (`--png`, a moved camera, a
+    /// strip).
+    fn png_only(&self) -> bool {
+        self.png || self.camera_moved() || self.strip.is_some()
     }
 
     /// The scene's orbit camera moved as `--yaw`, `--pitch` and `--distance` say (an option not
@@ -333,8 +343,7 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
     if cfg!(feature = "reference") {
         sides.push((true, lang.pick("参考解答", "reference"), "reference"));
     }
-    if !args.png
-        && !args.camera_moved()
+    if !args.png_only()
         && cg_viewer::display_available()
         && std::env::var_os("CG_NO_WINDOW").is_none()
     {
@@ -351,21 +360,21 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
             "Drawing to PNG files (a window opens when there is a display (WAYLAND_DISPLAY or DISPLAY) and no --png):"
         )
     );
+    let name = if args.warmup { format!("{}-warmup", args.which) } else { args.which.to_string() };
+    let times = strip_times(args, &a, lang)?;
+    let mut drawn = Vec::new();
     for (reference, label, file) in sides {
-        let name =
-            if args.warmup { format!("{}-warmup", args.which) } else { args.which.to_string() };
         let path = args.output.join(format!("view-{name}-{file}.png"));
-        match view_scene(args.which, &a, reference, args.time, args.warmup) {
-            Ok(Ok(mut scene)) => {
-                args.move_camera(&mut scene, lang)?;
-                let image = cg_raster::render(&scene, &cg_raster::Options::default())
-                    .map_err(|e| e.message(lang))?
-                    .image;
+        // No picture left from an earlier run beside this run's words.
+        let _ = std::fs::remove_file(&path);
+        match view_picture(args, &a, reference, &times, lang)? {
+            Ok(Ok(image)) => {
                 if let Some(dir) = path.parent() {
                     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
                 }
                 cg_scene::save_png(&path, &image).map_err(|e| e.describe(lang))?;
                 println!("  {label}: {}", path.display());
+                drawn.push(image);
             }
             Ok(Err(why)) => println!("  {label}: {}", why.get(lang)),
             Err(Outcome::NotDone { message }) => {
@@ -377,7 +386,103 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
             ),
         }
     }
+    let diff_path = args.output.join(format!("view-{name}-diff.png"));
+    let _ = std::fs::remove_file(&diff_path);
+    if let [yours, reference] = drawn.as_slice()
+        && let Some((diff, differ)) = difference(yours, reference)
+    {
+        cg_scene::save_png(&diff_path, &diff).map_err(|e| e.describe(lang))?;
+        let total = diff.pixels.len();
+        println!(
+            "  {}: {}",
+            lang.pick("違い", "difference"),
+            if differ == 0 {
+                lang.pick("参考解答と同じ絵です", "the same picture as the reference").to_owned()
+            } else {
+                lang.pick(
+                    &format!(
+                        "{total} 画素中 {differ} 画素が 2/255 より違います（4 倍に強調して {}）",
+                        diff_path.display()
+                    ),
+                    &format!(
+                        "{differ} of {total} pixels differ by more than 2/255 (×4 in {})",
+                        diff_path.display()
+                    ),
+                )
+                .to_owned()
+            }
+        );
+    }
     Ok(())
+}
+
+/// The times the view is drawn at: `--time`, or with `--strip N` the N frames of one period
+/// from `--time` on.
+fn strip_times(args: &ViewArgs, a: &Variants, lang: Lang) -> Result<Vec<f64>, String> {
+    let Some(n) = args.strip else { return Ok(vec![args.time]) };
+    let period = a.view_period_s(args.which).filter(|_| !args.warmup).ok_or_else(|| {
+        lang.pick(
+            "--strip は動く課題（a3）の 1 周期を並べます。この図は動きません",
+            "--strip lays out one period of an animation (a3); this view does not move",
+        )
+        .to_owned()
+    })?;
+    Ok((0..n).map(|k| args.time + period * f64::from(k) / f64::from(n)).collect())
+}
+
+/// One side's picture: the view at each of `times` (one time: the picture itself; more: a
+/// grid of half-size frames, each labelled with its time), the camera moved as asked, labels
+/// written. The inner results are why there is no picture.
+fn view_picture(
+    args: &ViewArgs,
+    a: &Variants,
+    reference: bool,
+    times: &[f64],
+    lang: Lang,
+) -> Result<Result<Result<Image, Text>, Outcome>, String> {
+    let mut frames = Vec::new();
+    for &t in times {
+        let mut scene = match view_scene(args.which, a, reference, t, args.warmup) {
+            Ok(Ok(scene)) => scene,
+            Ok(Err(why)) => return Ok(Ok(Err(why))),
+            Err(outcome) => return Ok(Err(outcome)),
+        };
+        args.move_camera(&mut scene, lang)?;
+        let size = (times.len() > 1).then(|| (scene.width / 2, scene.height / 2));
+        let options = cg_raster::Options { size, ..cg_raster::Options::default() };
+        let mut image = cg_raster::render(&scene, &options).map_err(|e| e.message(lang))?.image;
+        // The shading set names its three spheres.
+        crate::label::at_places(&mut image, &a.view_labels(args.which));
+        frames.push((image, format!("t = {t:.2} s")));
+    }
+    if frames.len() == 1 {
+        return Ok(Ok(Ok(frames.remove(0).0)));
+    }
+    let labelled: Vec<(&Image, &str)> = frames.iter().map(|(i, l)| (i, l.as_str())).collect();
+    Ok(Ok(Ok(crate::label::labelled_grid(&labelled, 4, 2))))
+}
+
+/// The difference of two pictures of one size, each channel's `|a − b|` times 4 (so a small
+/// difference shows), and how many pixels differ by more than 2/255 in some channel. `None` for
+/// pictures of different sizes.
+fn difference(a: &Image, b: &Image) -> Option<(Image, usize)> {
+    if (a.width, a.height) != (b.width, b.height) {
+        return None;
+    }
+    let (pa, pb) = (a.to_rgba8(), b.to_rgba8());
+    let mut differ = 0;
+    let pixels = pa
+        .iter()
+        .zip(&pb)
+        .map(|(p, q)| {
+            let d = [0, 1, 2].map(|c| p[c].abs_diff(q[c]));
+            if d.iter().any(|&x| x > 2) {
+                differ += 1;
+            }
+            cg_core::Rgb::from_array(d.map(|x| (f32::from(x) * 4.0 / 255.0).min(1.0)))
+        })
+        .collect();
+    Some((Image { width: a.width, height: a.height, pixels }, differ))
 }
 
 /// `cg view` in a window: the student's result and the reference side by side, at the same time

@@ -60,6 +60,45 @@ pub fn labelled_row(pictures: &[(&Image, &str)], scale: u32) -> Image {
     out
 }
 
+/// Writes each label's word centred at its place (fractions of the width and height from the
+/// top-left corner): white with a dark shadow, so it reads on any ground. A label whose text
+/// would start off the picture is skipped.
+pub fn at_places(image: &mut Image, labels: &[([f32; 2], &str)]) {
+    let (w, h) = (image.width, image.height);
+    let scale = (w / 320).clamp(1, 4);
+    for &([u, v], word) in labels {
+        let left = u * w as f32 - text_width(word, scale) as f32 / 2.0;
+        let top = v * h as f32;
+        if !(0.0..w as f32).contains(&left) || !(0.0..h as f32).contains(&top) {
+            continue;
+        }
+        let (left, top) = (left as u32, top as u32);
+        draw_text(image, left + scale, top + scale, word, scale, Rgb::splat(0.05));
+        draw_text(image, left, top, word, scale, Rgb::ONE);
+    }
+}
+
+/// [`labelled_row`]s of at most `columns` pictures, one under the other (a last, shorter row is
+/// filled out with the background).
+#[must_use]
+pub fn labelled_grid(pictures: &[(&Image, &str)], columns: usize, scale: u32) -> Image {
+    let rows: Vec<Image> =
+        pictures.chunks(columns.max(1)).map(|row| labelled_row(row, scale)).collect();
+    let width = rows.iter().map(|r| r.width).max().unwrap_or(0);
+    let height = rows.iter().map(|r| r.height).sum();
+    let mut out = Image::new(width, height, Rgb::splat(0.15));
+    let mut top = 0;
+    for row in &rows {
+        for y in 0..row.height {
+            for x in 0..row.width {
+                out.set(x, top + y, row.pixels[(y * row.width + x) as usize]);
+            }
+        }
+        top += row.height;
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -93,5 +132,18 @@ mod tests {
             (32..row.height).any(|y| (x0..x1).any(|x| row.get(x, y) == Some(Rgb::ONE)))
         };
         assert!(ink(0, 64) && ink(64, 128), "each picture has its label");
+    }
+
+    #[test]
+    fn labels_are_centred_at_their_places_and_skipped_off_the_picture() {
+        let mut image = Image::new(320, 200, Rgb::ZERO);
+        at_places(&mut image, &[([0.5, 0.5], "AB"), ([1.2, 0.5], "OFF"), ([0.5, -0.1], "UP")]);
+        let white: Vec<(u32, u32)> = (0..200)
+            .flat_map(|y| (0..320).map(move |x| (x, y)))
+            .filter(|&(x, y)| image.get(x, y) == Some(Rgb::ONE))
+            .collect();
+        // "AB" is 16 pixels wide at scale 1, centred on x = 160, from y = 100 down.
+        assert!(!white.is_empty());
+        assert!(white.iter().all(|&(x, y)| (152..168).contains(&x) && (100..108).contains(&y)));
     }
 }

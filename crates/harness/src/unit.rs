@@ -66,6 +66,19 @@ pub trait Assignment: 'static {
     /// [`Missing`](crate::report::Missing),
     /// never a crash.
     fn report(spec: &Self::Spec, imp: &Self::Impl) -> Part<Self::Report>;
+    /// Labels for [`Unit::view`]'s picture: where (as fractions of the picture's width and
+    /// height from its top-left corner) and the word written there, centred (`cg view s` names
+    /// its three spheres). None by default.
+    fn view_labels(spec: &Self::Spec) -> Vec<([f32; 2], &'static str)> {
+        let _ = spec;
+        Vec::new()
+    }
+    /// After how many seconds the view repeats, for an assignment that moves (`cg view a3
+    /// --strip N` draws N frames over it); `None` for a still picture.
+    fn view_period_s(spec: &Self::Spec) -> Option<f64> {
+        let _ = spec;
+        None
+    }
     /// The in-class warm-up drawn by the student's functions at `time_s`, for an assignment
     /// with [`Assignment::WARMUP`].
     fn warmup(imp: &Self::Impl, time_s: f64) -> Option<Scene> {

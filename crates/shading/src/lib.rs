@@ -149,6 +149,29 @@ impl cg_harness::Assignment for S {
     ) -> Result<cg_core::scene::Scene, cg_harness::Text> {
         view(spec, imp, time_s)
     }
+
+    /// Each sphere's name on the ground in front of it, as the stage's camera sees it (the
+    /// spheres are flat, Gouraud and Phong from left to right).
+    fn view_labels(spec: &Spec) -> Vec<([f32; 2], &'static str)> {
+        let stage = scenes::stage_scene(spec);
+        let (Ok(view), Ok(projection)) =
+            (stage.view_product().and_then(|v| v.matrix()), stage.projection_matrix())
+        else {
+            return Vec::new();
+        };
+        let names = ["FLAT", "GOURAUD", "PHONG"];
+        scenes::STAGE_SPHERES
+            .iter()
+            .zip(names)
+            .filter_map(|(&(x, _), name)| {
+                let at = cg_core::glam::Vec3::new(x, 0.0, scenes::STAGE_RADIUS);
+                let clip = projection * view * at.extend(1.0);
+                (clip.w > 0.0).then(|| {
+                    ([(clip.x / clip.w + 1.0) * 0.5, (1.0 - clip.y / clip.w) * 0.5], name)
+                })
+            })
+            .collect()
+    }
 }
 
 #[cfg(test)]
