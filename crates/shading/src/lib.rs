@@ -166,9 +166,8 @@ impl cg_harness::Assignment for S {
             .filter_map(|(&(x, _), name)| {
                 let at = cg_core::glam::Vec3::new(x, 0.0, scenes::STAGE_RADIUS);
                 let clip = projection * view * at.extend(1.0);
-                (clip.w > 0.0).then(|| {
-                    ([(clip.x / clip.w + 1.0) * 0.5, (1.0 - clip.y / clip.w) * 0.5], name)
-                })
+                (clip.w > 0.0)
+                    .then(|| ([(clip.x / clip.w + 1.0) * 0.5, (1.0 - clip.y / clip.w) * 0.5], name))
             })
             .collect()
     }
