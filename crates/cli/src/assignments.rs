@@ -448,7 +448,7 @@ fn view_picture(
             Err(outcome) => return Ok(Err(outcome)),
         };
         args.move_camera(&mut scene, lang)?;
-        let size = (times.len() > 1).then(|| (scene.width / 2, scene.height / 2));
+        let size = (times.len() > 1).then_some((scene.width / 2, scene.height / 2));
         let options = cg_raster::Options { size, ..cg_raster::Options::default() };
         let mut image = cg_raster::render(&scene, &options).map_err(|e| e.message(lang))?.image;
         // The shading set names its three spheres.

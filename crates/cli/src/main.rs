@@ -12,6 +12,7 @@ use clap::{Parser, Subcommand};
 
 mod assignments;
 mod bench;
+mod doctor;
 mod grade;
 mod handout;
 mod inspect;
@@ -19,6 +20,7 @@ mod label;
 #[cfg(test)]
 mod printed;
 mod render;
+mod watch;
 
 /// The course's sample scene, relative to the kit's root.
 const COURSE_SAMPLE: &str = "assets/scenes/course-sample.toml";
@@ -52,6 +54,8 @@ enum Command {
     Assignment(assignments::AssignmentArgs),
     /// Check your exercises against your assignment / 自分の課題をチェック
     Check(assignments::CheckArgs),
+    /// Check again on every save of your exercises (keys: h hint, n next, r rerun, q quit) / 保存するたびにチェック
+    Watch(watch::Args),
     /// Draw your result (and the reference) to PNG files / 自分の結果（と参考解答）を描画
     View(assignments::ViewArgs),
     /// Your report: derive its tables and figures, fill the template, check your numbers / レポート: 表・図の導出、ひな形の作成、数値の確認
@@ -65,6 +69,8 @@ enum Command {
     Bench(bench::Args),
     /// Grade every submission in a folder with the kit's own checks, in a sandbox (instructors) / 提出物をまとめて採点（教員用）
     Grade(grade::Args),
+    /// Which renderers and windows work on this machine, and why, each problem with its fix / このマシンで使えるレンダラとウィンドウ、使えない理由と対処
+    Doctor(doctor::Args),
     /// The student's functions for `cg check`, which starts it (not for use by hand)
     #[command(hide = true)]
     Worker(assignments::WorkerArgs),
@@ -99,6 +105,7 @@ fn main() -> ExitCode {
         Some(Command::Assignment(args)) => ok(assignments::assignment(&args, lang)),
         Some(Command::Check(args)) => assignments::check(&args, lang),
         Some(Command::View(args)) => ok(assignments::view(&args, lang)),
+        Some(Command::Watch(args)) => ok(watch::run(&args, lang)),
         Some(Command::Report(command)) => {
             cg_report::app::start_watchdog(cg_report::app::TIME_LIMIT, lang);
             cg_report::app::run(&command, &cg_report::app::Kit::exercises(), lang)
@@ -108,6 +115,7 @@ fn main() -> ExitCode {
         Some(Command::Handout(args)) => ok(handout::run(&args, lang)),
         Some(Command::Bench(args)) => ok(bench::run(&args, lang)),
         Some(Command::Grade(args)) => ok(grade::run(&args, lang)),
+        Some(Command::Doctor(args)) => ok(doctor::run(&args, lang)),
         Some(Command::Worker(args)) => ok(assignments::worker(&args)),
         None => ok(render::main_job(lang)),
     };

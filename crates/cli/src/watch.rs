@@ -1,0 +1,414 @@
+//! `cg watch [ID]`: the checks again on every save, as rustlings does it.
+//!
+//! On each change under `exercises/` (the `notify` crate's native events, or polling where
+//! those fail or `--poll` asks, e.g. WSL2 under /mnt/c), the kit is rebuilt and checked by a
+//! new process (`cargo run --release -- check --json`: the running `cg` was built from the old
+//! code), and a board is printed: every task of every assignment as a mark, the progress, and the
+//! checks of the task in focus. Keys: `h` the hint of the first failing check, `n` the next
+//! task, `r` run again, `q` quit. On a terminal they act at once; from a pipe, one per line.
+//! 保存するたびにチェックをやり直します。キー: h ヒント、n 次のタスク、r やり直し、q 終了。
+
+use std::io::{BufRead, IsTerminal, Write};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::mpsc::{Receiver, Sender, channel};
+use std::time::Duration;
+
+use cg_core::lang::Lang;
+use notify::Watcher;
+use serde_json::Value;
+
+/// Options of `cg watch`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// An assignment (a1 … s) or a task (a3.t1) to check; default: all / 課題かタスク（省略するとすべて）
+    #[arg(value_name = "ID")]
+    which: Option<String>,
+    /// The student number (default: exercises/student.toml) / 学生番号
+    #[arg(long, value_name = "NUMBER", allow_hyphen_values = true)]
+    student: Option<String>,
+    /// Look for changes by polling every second instead of the system's file events (for
+    /// folders where those do not arrive, e.g. WSL2 under /mnt/c) / ファイルの変更をポーリングで調べる
+    #[arg(long)]
+    poll: bool,
+    /// The folder to watch (default: the kit's exercises/) / 監視するフォルダ
+    #[arg(long, value_name = "DIR", hide = true)]
+    dir: Option<PathBuf>,
+}
+
+/// What the loop waits for.
+enum Event {
+    /// A file under the watched folder changed.
+    Changed,
+    /// A key (or a line's first character from a pipe); `None` when the input ended.
+    Key(Option<char>),
+}
+
+/// One check as the board shows it, from `cg check --json`.
+struct Check {
+    id: String,
+    task: String,
+    status: String,
+    json: Value,
+}
+
+/// `cg watch`.
+pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
+    let dir = args.dir.clone().unwrap_or_else(|| cg_harness::kit_path(None, "exercises"));
+    if !dir.is_dir() {
+        return Err(format!(
+            "{}: {}",
+            dir.display(),
+            lang.pick("フォルダがありません", "no such folder")
+        ));
+    }
+    let (tx, rx) = channel();
+    let _watcher = watch(&dir, args.poll || wsl_windows_drive(&dir), tx.clone(), lang)?;
+    let terminal = Terminal::start();
+    keys(tx, terminal.raw);
+    let mut focus: Option<String> = None;
+    let mut checks = check(args, lang, &terminal);
+    loop {
+        board(&checks, focus.as_deref(), lang, &terminal);
+        match wait(&rx) {
+            Event::Changed => checks = check(args, lang, &terminal),
+            Event::Key(Some('r')) => checks = check(args, lang, &terminal),
+            Event::Key(Some('n')) => focus = next_task(&checks, focus.as_deref()),
+            Event::Key(Some('h')) => hint(&checks, focus.as_deref(), lang, &terminal),
+            Event::Key(Some('q') | None) => break,
+            Event::Key(Some(_)) => {}
+        }
+    }
+    terminal.say(lang.pick("終了します。", "Bye."));
+    Ok(())
+}
+
+/// The next event, after letting a burst of file events settle (an editor's save is several).
+fn wait(rx: &Receiver<Event>) -> Event {
+    let event = rx.recv().unwrap_or(Event::Key(None));
+    if let Event::Changed = event {
+        while let Ok(e) = rx.recv_timeout(Duration::from_millis(300)) {
+            if let Event::Key(k) = e {
+                return Event::Key(k);
+            }
+        }
+    }
+    event
+}
+
+/// Watches `dir` for changes of Rust and TOML files: native events, or polling.
+fn watch(
+    dir: &Path,
+    poll: bool,
+    tx: Sender<Event>,
+    lang: Lang,
+) -> Result<Box<dyn Watcher>, String> {
+    let handler = move |res: notify::Result<notify::Event>| {
+        if let Ok(event) = res
+            && !event.kind.is_access()
+            && event.paths.iter().any(|p| p.extension().is_some_and(|e| e == "rs" || e == "toml"))
+        {
+            let _ = tx.send(Event::Changed);
+        }
+    };
+    let mode = notify::RecursiveMode::Recursive;
+    if !poll {
+        let native = notify::recommended_watcher(handler.clone())
+            .and_then(|mut w| w.watch(dir, mode).map(|()| w));
+        if let Ok(w) = native {
+            return Ok(Box::new(w));
+        }
+    }
+    let config = notify::Config::default().with_poll_interval(Duration::from_secs(1));
+    let mut w = notify::PollWatcher::new(handler, config).map_err(|e| e.to_string())?;
+    w.watch(dir, mode).map_err(|e| {
+        format!("{}: {} ({e})", dir.display(), lang.pick("監視できません", "cannot watch it"))
+    })?;
+    Ok(Box::new(w))
+}
+
+/// A Windows drive seen from WSL (`/mnt/c/…`), where inotify never hears the editor's saves.
+fn wsl_windows_drive(dir: &Path) -> bool {
+    let wsl = std::env::var_os("WSL_DISTRO_NAME").is_some();
+    let on_drive = dir.canonicalize().is_ok_and(|d| d.starts_with("/mnt/"));
+    wsl && on_drive
+}
+
+/// Sends the keys: single keys from a terminal in raw mode, else the first character of each
+/// line of the input.
+fn keys(tx: Sender<Event>, raw: bool) {
+    std::thread::spawn(move || {
+        if raw {
+            use crossterm::event::{Event as Term, KeyCode, KeyEventKind, KeyModifiers};
+            while let Ok(event) = crossterm::event::read() {
+                if let Term::Key(k) = event
+                    && k.kind == KeyEventKind::Press
+                {
+                    let key = match k.code {
+                        KeyCode::Char('c') if k.modifiers.contains(KeyModifiers::CONTROL) => 'q',
+                        KeyCode::Char(c) => c,
+                        KeyCode::Esc => 'q',
+                        _ => continue,
+                    };
+                    if tx.send(Event::Key(Some(key))).is_err() {
+                        return;
+                    }
+                }
+            }
+        } else {
+            for line in std::io::stdin().lock().lines() {
+                let Ok(line) = line else { break };
+                if let Some(c) = line.trim().chars().next()
+                    && tx.send(Event::Key(Some(c))).is_err()
+                {
+                    return;
+                }
+            }
+        }
+        let _ = tx.send(Event::Key(None));
+    });
+}
+
+/// The checks, from a new process built from the code as it is now. A build that fails prints
+/// the compiler's first error and gives no checks.
+fn check(args: &Args, lang: Lang, terminal: &Terminal) -> Vec<Check> {
+    terminal.say(lang.pick("ビルドしてチェックしています…", "Building and checking…"));
+    let mut command = checker();
+    command.arg("check").arg("--json");
+    command.args(args.which.iter());
+    if let Some(s) = &args.student {
+        command.args(["--student", s]);
+    }
+    let output = match command.output() {
+        Ok(o) => o,
+        Err(e) => {
+            terminal.say(&format!(
+                "{}: {e}",
+                lang.pick("チェックを起動できません", "cannot start the checks")
+            ));
+            return Vec::new();
+        }
+    };
+    let reports: Value = match serde_json::from_slice(&output.stdout) {
+        Ok(v) => v,
+        Err(_) => {
+            let stderr = String::from_utf8_lossy(&output.stderr);
+            let first: Vec<&str> =
+                stderr.lines().skip_while(|l| !l.starts_with("error")).take(12).collect();
+            let text = if first.is_empty() { stderr.lines().take(12).collect() } else { first };
+            terminal.say(&format!(
+                "{}\n{}",
+                lang.pick(
+                    "ビルドかチェックが失敗しました（直して保存すると、もう一度チェックします）:",
+                    "The build or the checks failed (fix it and save, and the checks run again):"
+                ),
+                text.join("\n")
+            ));
+            return Vec::new();
+        }
+    };
+    let mut checks = Vec::new();
+    for report in reports.as_array().into_iter().flatten() {
+        for c in report["checks"].as_array().into_iter().flatten() {
+            checks.push(Check {
+                id: c["id"].as_str().unwrap_or_default().to_owned(),
+                task: c["task"].as_str().unwrap_or_default().to_owned(),
+                status: c["status"].as_str().unwrap_or_default().to_owned(),
+                json: c.clone(),
+            });
+        }
+    }
+    checks
+}
+
+/// The command that checks: `cargo run --release -q -- ` in the kit's root, or the program
+/// `CG_WATCH_CHECKER` names (the tests: the `cg` they built).
+fn checker() -> Command {
+    if let Some(program) = std::env::var_os("CG_WATCH_CHECKER") {
+        return Command::new(program);
+    }
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let mut command = Command::new(cargo);
+    command.args(["run", "--release", "-q", "--"]);
+    command.current_dir(cg_harness::kit_path(None, "."));
+    command
+}
+
+/// The tasks in order, each once.
+fn tasks(checks: &[Check]) -> Vec<&str> {
+    let mut tasks: Vec<&str> = Vec::new();
+    for c in checks {
+        if !tasks.contains(&c.task.as_str()) {
+            tasks.push(&c.task);
+        }
+    }
+    tasks
+}
+
+/// The task in focus: the one chosen with `n` if it is still there, else the first not done.
+fn focused<'a>(checks: &'a [Check], focus: Option<&str>) -> Option<&'a str> {
+    let all = tasks(checks);
+    focus.and_then(|f| all.iter().find(|t| **t == f).copied()).or_else(|| {
+        all.into_iter().find(|t| checks.iter().any(|c| c.task == *t && c.status != "pass"))
+    })
+}
+
+/// The task after the one in focus that is not done, round the end.
+fn next_task(checks: &[Check], focus: Option<&str>) -> Option<String> {
+    let all = tasks(checks);
+    let open: Vec<&str> = all
+        .iter()
+        .copied()
+        .filter(|t| checks.iter().any(|c| c.task == *t && c.status != "pass"))
+        .collect();
+    let current = focused(checks, focus);
+    let at = current.and_then(|f| open.iter().position(|t| *t == f));
+    let next = match at {
+        Some(i) => open.get(i + 1).or(open.first()),
+        None => open.first(),
+    };
+    next.map(|t| (*t).to_owned())
+}
+
+fn mark(status: &str) -> char {
+    match status {
+        "pass" => '✓',
+        "not_done" => '…',
+        _ => '✗',
+    }
+}
+
+/// The board: a line per assignment with a mark per task, the progress, and the checks of the
+/// task in focus.
+fn board(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal) {
+    if checks.is_empty() {
+        terminal.say(lang.pick("[r] もう一度  [q] 終了", "[r] run again  [q] quit"));
+        return;
+    }
+    let mut text = String::new();
+    let mut line = String::new();
+    let mut assignment = "";
+    for task in tasks(checks) {
+        let a = task.split('.').next().unwrap_or_default();
+        if a != assignment {
+            if !line.is_empty() {
+                text.push_str(&line);
+                text.push('\n');
+            }
+            line = format!("{a:<3}");
+            assignment = a;
+        }
+        let of_task: Vec<&Check> = checks.iter().filter(|c| c.task == task).collect();
+        let status = if of_task.iter().all(|c| c.status == "pass") {
+            "pass"
+        } else if of_task.iter().any(|c| !matches!(c.status.as_str(), "pass" | "not_done")) {
+            "fail"
+        } else {
+            "not_done"
+        };
+        line.push_str(&format!(" {}{}", mark(status), task.split('.').nth(1).unwrap_or_default()));
+    }
+    text.push_str(&line);
+    text.push('\n');
+    let passed = checks.iter().filter(|c| c.status == "pass").count();
+    text.push_str(&format!(
+        "{} {passed}/{}\n",
+        lang.pick("進み具合: 通ったチェック", "progress: checks passing"),
+        checks.len()
+    ));
+    match focused(checks, focus) {
+        None => {
+            text.push_str(lang.pick("すべてのチェックが通りました！\n", "Every check passes!\n"))
+        }
+        Some(task) => {
+            text.push_str(&format!("── {task} ──\n"));
+            let mut said = None;
+            for c in checks.iter().filter(|c| c.task == task) {
+                let title = c.json["title"][lang.pick("ja", "en")].as_str().unwrap_or_default();
+                text.push_str(&format!("  {} {:<24} {title}\n", mark(&c.status), c.id));
+                for (key, ja, en) in
+                    [("expected", "期待する値", "expected"), ("actual", "実際の値", "actual")]
+                {
+                    if let Some(v) = c.json[key][lang.pick("ja", "en")].as_str() {
+                        text.push_str(&format!("      {}: {v}\n", lang.pick(ja, en)));
+                    }
+                }
+                // A stub's message once, not under each of its checks.
+                if let Some(m) = c.json["message"].as_str()
+                    && said != Some(m)
+                {
+                    text.push_str(&format!("      {m}\n"));
+                    said = Some(m);
+                }
+            }
+        }
+    }
+    text.push_str(lang.pick(
+        "[h] ヒント  [n] 次のタスク  [r] もう一度  [q] 終了（保存するとチェックし直します）",
+        "[h] hint  [n] next task  [r] run again  [q] quit (saving runs the checks again)",
+    ));
+    terminal.say(&text);
+}
+
+/// The usual cause and the hint of the first check of the task in focus that does not pass.
+fn hint(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal) {
+    let task = focused(checks, focus);
+    let first = checks.iter().find(|c| Some(c.task.as_str()) == task && c.status != "pass");
+    let Some(c) = first else {
+        terminal.say(lang.pick(
+            "ヒントはありません（通っていないチェックがありません）",
+            "No hint: no check is failing.",
+        ));
+        return;
+    };
+    let mut text = format!("{} {}:", lang.pick("ヒント", "hint for"), c.id);
+    let mut any = false;
+    for (key, ja, en) in [("cause", "よくある原因", "usual cause"), ("hint", "ヒント", "hint")]
+    {
+        if let Some(v) = c.json[key][lang.pick("ja", "en")].as_str() {
+            text.push_str(&format!("\n  {}: {v}", lang.pick(ja, en)));
+            any = true;
+        }
+    }
+    if !any {
+        let m = c.json["message"].as_str().unwrap_or_default();
+        text.push_str(&format!(
+            "\n  {} {m}",
+            lang.pick(
+                "まだ書いていない関数です。関数のコメントの説明とヒントを読んでください:",
+                "not written yet; read the function's comment for its contract and hint:"
+            )
+        ));
+    }
+    terminal.say(&text);
+}
+
+/// The terminal: raw mode (single keys) when input and output are a terminal, restored on exit.
+struct Terminal {
+    raw: bool,
+}
+
+impl Terminal {
+    fn start() -> Terminal {
+        let tty = std::io::stdin().is_terminal() && std::io::stdout().is_terminal();
+        let raw = tty && crossterm::terminal::enable_raw_mode().is_ok();
+        Terminal { raw }
+    }
+
+    /// Prints `text` and a blank line (`\r\n` in raw mode, where `\n` does not return).
+    fn say(&self, text: &str) {
+        let mut out = std::io::stdout().lock();
+        let text = if self.raw { text.replace('\n', "\r\n") } else { text.to_owned() };
+        let end = if self.raw { "\r\n\r\n" } else { "\n\n" };
+        let _ = write!(out, "{text}{end}");
+        let _ = out.flush();
+    }
+}
+
+impl Drop for Terminal {
+    fn drop(&mut self) {
+        if self.raw {
+            let _ = crossterm::terminal::disable_raw_mode();
+        }
+    }
+}
