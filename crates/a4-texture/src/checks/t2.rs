@@ -37,19 +37,50 @@ fn near(a: DVec2, b: DVec2, tol: f64) -> bool {
 }
 
 /// The cell a texture coordinate falls in, or why there is none: `cell E3` / `outside the
-/// image`.
+/// image`. A coordinate on the line between cells (within [`TOL`]) names the cells on both sides
+/// (`the line between G2 and H2`, `the corner where G1, H1, G2 and H2 meet`): naming only the
+/// cell the rounding falls into would call one corner of a square `G2` here and `H2` there.
 fn cell_at(v: DVec2) -> Text {
     if !v.is_finite() {
         return t("数ではない（NaN か無限大）", "not a number (NaN or infinite)");
     }
-    if !(0.0..1.0).contains(&v.x) || !(0.0..1.0).contains(&v.y) {
+    let n = f64::from(CELLS);
+    let on_line = |c: f64| ((c * n).round() - c * n).abs() <= TOL * n;
+    let inside =
+        |c: f64| (0.0..1.0).contains(&c) || (on_line(c) && (-TOL..=1.0 + TOL).contains(&c));
+    if !inside(v.x) || !inside(v.y) {
         return t("画像の外（s, t は 0〜1 の外）", "outside the image (s or t outside 0…1)");
     }
-    let n = f64::from(CELLS);
-    let column = (v.x * n).floor() as u32;
-    let row = CELLS - 1 - (v.y * n).floor() as u32;
-    let name = cell_name(column, row);
-    Text::new(format!("マス {name}"), format!("cell {name}"))
+    // The columns (left to right) and rows (image top to bottom) the point touches.
+    let columns = |x: f64| -> Vec<u32> {
+        if on_line(x) {
+            let k = (x * n).round() as i64;
+            [k - 1, k]
+                .into_iter()
+                .filter(|c| (0..i64::from(CELLS)).contains(c))
+                .map(|c| c as u32)
+                .collect()
+        } else {
+            vec![(x * n).floor() as u32]
+        }
+    };
+    let rows: Vec<u32> = columns(v.y).into_iter().rev().map(|r| CELLS - 1 - r).collect();
+    let names: Vec<String> =
+        rows.iter().flat_map(|&r| columns(v.x).into_iter().map(move |c| cell_name(c, r))).collect();
+    match names.as_slice() {
+        [one] => Text::new(format!("マス {one}"), format!("cell {one}")),
+        [a, b] => {
+            Text::new(format!("マス {a} と {b} の境目"), format!("the line between {a} and {b}"))
+        }
+        more => {
+            let (last, rest) = more.split_last().unwrap_or((&more[0], &[]));
+            let list = rest.join(", ");
+            Text::new(
+                format!("マス {}・{last} が接する角", rest.join("・")),
+                format!("the corner where {list} and {last} meet"),
+            )
+        }
+    }
 }
 
 /// What a coordinate is: one of the region's corners (`the region's top-left corner (cell C4)`),
@@ -638,4 +669,26 @@ pub(super) fn cells(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         "cargo run --release -- view a4 で自分の結果と参考解答を並べ、マスの名前と矢印で何がどこに来たかを見る",
         "compare yours with the reference (cargo run --release -- view a4): the cell names and arrows show what went where",
     )))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_point_on_a_line_between_cells_names_both_sides() {
+        let en = |x: f64, y: f64| cell_at(DVec2::new(x, y)).en;
+        assert_eq!(en(0.51, 0.51), "cell E4");
+        // s = 7/8 is the line between columns G and H; t = 0.8 is inside row 2.
+        assert_eq!(en(0.875, 0.8), "the line between G2 and H2");
+        assert_eq!(en(0.875 + 1e-7, 0.8), "the line between G2 and H2", "within the tolerance");
+        assert_eq!(en(0.875, 0.875), "the corner where G1, H1, G2 and H2 meet");
+        // The image's own edges: one side only.
+        assert_eq!(en(1.0, 0.5), "the line between H4 and H5");
+        assert_eq!(en(0.0, 0.01), "cell A8");
+        assert!(en(1.2, 0.5).starts_with("outside the image"));
+        assert!(en(f64::NAN, 0.5).starts_with("not a number"));
+        let ja = cell_at(DVec2::new(0.875, 0.8)).ja;
+        assert_eq!(ja, "マス G2 と H2 の境目");
+    }
 }
