@@ -34,7 +34,8 @@
 //!   [`to_unorm8`](cg_core::image::to_unorm8) rounds halves up: they differ only on exact ties);
 //! - no dithering (the program disables GL_DITHER); depth test GL_LESS, so of two equal depths
 //!   the first drawn stays;
-//! - GL_FLAT colours a triangle with its last vertex's lit colour.
+//! - GL_FLAT colours a triangle with its last vertex's lit colour (lit with that vertex's own
+//!   normal, position and glColor: its provoking vertex under GL_TRIANGLES).
 //!
 //! ```
 //! use cg_core::lang::Lang;

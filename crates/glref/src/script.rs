@@ -93,11 +93,14 @@ impl Script {
 ///   `ka = kd`, so this equals GL_COLOR_MATERIAL with glColor). A mesh with per-vertex colours
 ///   uses GL_COLOR_MATERIAL (GL_AMBIENT_AND_DIFFUSE) and glColor3f per vertex instead. `kr`, `kt`
 ///   and `eta` are the ray tracer's; OpenGL ignores them.
-/// - Shading: [`Shading::Gouraud`] is GL_SMOOTH with the prepared mesh's normals;
-///   [`Shading::Flat`] is GL_FLAT with the face normal ([`face_normal`]) at all three corners —
-///   GL lights each corner and colours the whole triangle with its **last** (provoking) vertex's
-///   colour, so with point lights or a local viewer a flat face is lit at its third corner;
-///   [`Shading::Phong`] has no GL equivalent ([`GlRefError::PhongShading`]).
+/// - Shading: [`Shading::Gouraud`] is GL_SMOOTH and [`Shading::Flat`] GL_FLAT, both with the
+///   prepared mesh's normals (the face normal, [`face_normal`], where a vertex has none): the
+///   course's program changes only glShadeModel. Under GL_FLAT GL lights each corner and colours
+///   the whole triangle with its **last** (provoking) vertex's colour — lit at that vertex's
+///   position with its normal and glColor — which the kit's renderers reproduce in OpenGL's
+///   model (each face is one glBegin(GL_TRIANGLES) triangle here, so its provoking vertex is
+///   the face's third corner); [`Shading::Phong`] has no GL equivalent
+///   ([`GlRefError::PhongShading`]).
 /// - Normals are given in model space and transformed by GL itself (the inverse transpose of the
 ///   modelview matrix, then GL_NORMALIZE). A mirroring model matrix ([`Prepared::mirrored`])
 ///   gets glFrontFace(GL_CW), so its outside stays the front as in the kit's renderers.
@@ -168,7 +171,7 @@ pub fn script(scene: &Scene) -> Result<String, GlRefError> {
     // The script's texture ID of each scene texture, given in the order of first use.
     let mut texture_ids = vec![None; scene.textures.len()];
     for object in &objects {
-        write_object(&mut s, scene, object, flat, &mut texture_ids)?;
+        write_object(&mut s, scene, object, &mut texture_ids)?;
     }
     s.line("finish");
     Ok(s.text)
@@ -262,7 +265,6 @@ fn write_object(
     s: &mut Script,
     scene: &Scene,
     prepared: &Prepared<'_>,
-    flat: bool,
     texture_ids: &mut [Option<usize>],
 ) -> Result<(), GlRefError> {
     let object = prepared.object;
@@ -339,7 +341,7 @@ fn write_object(
         for (corner, &i) in face.iter().enumerate() {
             let i = i as usize;
             let vertex = || what(&format!("face F{f}, corner {corner} (vertex V{i})"));
-            let n = if flat { n_face } else { normals.get(i).copied().unwrap_or(n_face) };
+            let n = normals.get(i).copied().unwrap_or(n_face);
             s.vec3("n", n, || format!("{} normal", vertex()))?;
             if let Some(uvs) = uvs {
                 let uv = uvs.get(i).copied().unwrap_or(Vec2::ZERO);

@@ -4,7 +4,8 @@
 //! Design: each scene is chosen so that the lit colour is the same at every vertex the
 //! rasterizer interpolates between — a constant normal with a directional light and an infinite
 //! viewer; a spot light on the axis of an equilateral triangle; flat-shaded triangles (one
-//! provoking vertex), lit by a point light or by an area light's six samples. Then every covered pixel must show that one colour, rounded to 8 bits,
+//! provoking vertex, lit with its own normal), lit by a point light or by an area light's six
+//! samples. Then every covered pixel must show that one colour, rounded to 8 bits,
 //! within 1/255 (llvmpipe evaluates pow, rsqrt and the interpolation in f32), and nothing in the
 //! test depends on how OpenGL interpolates.
 
@@ -262,6 +263,61 @@ fn gl_flat_colours_a_triangle_with_its_last_vertex_lit_by_a_point_light_and_a_sp
     );
     let pixels = render_rgb(&s);
     assert_uniform("flat", &s, &pixels, &corners, last);
+}
+
+#[test]
+fn gl_flat_lights_the_last_vertex_with_its_own_normal() {
+    if !cg_glref::require() {
+        return;
+    }
+    // The same triangle with three different vertex normals (NormalSource::Given): the script
+    // sends each vertex's own glNormal under GL_FLAT too (the course's program changes only
+    // glShadeModel), and GL lights the last vertex with *its* normal — not the face normal, not
+    // another corner's — which is what the kit's renderers reproduce in OpenGL's model.
+    let eye = Vec3::new(1.0, 2.0, 9.0);
+    let corners =
+        [Vec3::new(-2.5, -1.5, 0.0), Vec3::new(2.0, -2.0, 0.5), Vec3::new(0.5, 2.5, -0.5)];
+    let normals = [Vec3::new(-0.3, -0.2, 1.0), Vec3::new(0.4, -0.3, 1.0), Vec3::new(0.2, 0.6, 1.0)]
+        .map(Vec3::normalize);
+    let light = GlLight {
+        position: [3.0, 2.0, 4.0, 1.0],
+        ambient: [0.1, 0.1, 0.1],
+        diffuse: [0.9, 0.9, 0.9],
+        specular: [1.0, 1.0, 1.0],
+        spot: None,
+        attenuation: [1.0, 0.0, 0.0],
+    };
+    let material = GlMaterial {
+        ambient: [0.3, 0.2, 0.4],
+        diffuse: [0.8, 0.5, 0.3],
+        specular: [0.5, 0.5, 0.5],
+        emission: [0.0; 3],
+        shininess: 8.0,
+    };
+    let mut s = scene(48, 48, look_at_origin(eye));
+    s.shading = Shading::Flat;
+    s.global_ambient = Rgb::splat(0.2);
+    s.lights = vec![kit_light(&light)];
+    let mut mesh = triangle(corners[0], corners[1], corners[2]);
+    mesh.normals = Some(normals.to_vec());
+    let mut o = object("triangle", mesh, kit_material(&material), MatrixProduct::identity());
+    o.normals = cg_core::scene::NormalSource::Given;
+    s.objects = vec![o];
+    let v = eye.as_dvec3().normalize();
+    let at = |p: Vec3, n: Vec3| {
+        let (p, n) = (p.as_dvec3(), n.as_dvec3());
+        to_bytes(gl_lit_color(p, n, Viewer::Infinite(v), [0.2; 3], &material, &[light]))
+    };
+    let expected = at(corners[2], normals[2]);
+    let [a, b, c] = corners.map(|p| p.as_dvec3());
+    let face = (b - a).cross(c - a).normalize().as_vec3();
+    let others = [at(corners[2], face), at(corners[0], normals[0]), at(corners[1], normals[1])];
+    assert!(
+        others.iter().all(|&o| channel_diff(o, expected) > 3),
+        "the rules must differ for this test to tell them apart: {others:?} vs {expected:?}"
+    );
+    let pixels = render_rgb(&s);
+    assert_uniform("flat-vertex-normal", &s, &pixels, &corners, expected);
 }
 
 #[test]

@@ -30,7 +30,9 @@
 //! world positions by the model matrix, world normals by the cofactor matrix (flipped back for
 //! mirrored objects, whose faces are also re-wound), face normals from the world corners, texture
 //! coordinates shifted by the face's repeat origin. Faces are expanded to three vertices each, so
-//! a face can carry its own face normal, centroid and average colour. The GPU transforms by
+//! a face can carry its own face normal and, for flat shading, the point, normal and colour it is
+//! lit with (the lecture's model: its centroid, face normal and average colour; OpenGL's: its
+//! provoking vertex's, as GL_FLAT). The GPU transforms by
 //! `projection · view`, lights in world space ([`shader`] says where for each shading mode),
 //! clamps where the rasterizer clamps, and writes an `Rgba8Unorm` target read back into an
 //! [`Image`] (row 0 at the top, as the rasterizer's). An area light is its

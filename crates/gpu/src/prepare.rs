@@ -1,7 +1,16 @@
 //! Preparing a scene for the GPU, on the CPU and without a device: the generated shader, the
 //! frame's uniforms and lights, and every object's vertices (each face expanded to three
-//! vertices that carry its face normal, centroid and average colour) and uniforms, exactly as
-//! the device code ([`crate::Gpu::frame`]) uploads them. Tested without a GPU.
+//! vertices that carry its face normal and, for flat shading, where and with what the face is
+//! lit) and uniforms, exactly as the device code ([`crate::Gpu::frame`]) uploads them. Tested
+//! without a GPU.
+//!
+//! Flat shading lights a face once, as the rasterizer does: in the lecture's light model at its
+//! centroid with its face normal and the mean of its vertex colours; in OpenGL's model as
+//! glShadeModel(GL_FLAT), at its provoking vertex — the face's last corner in the prepared mesh
+//! (each face is one GL_TRIANGLES triangle in `cg-glref`) — with that vertex's normal and
+//! colour. All three vertices of a face carry the same point, normal and colour, so the vertex
+//! shader gives each the same colour and `@interpolate(flat)` shows it whichever vertex WebGPU
+//! takes as provoking (its first, where OpenGL takes the last).
 
 use bytemuck::{Pod, Zeroable};
 use cg_core::Rgb;
@@ -16,6 +25,10 @@ use cg_core::transform::transform_point;
 
 use crate::{GpuError, Options, shader_source};
 
+/// The corner of a face, in the prepared mesh's order, whose lit colour OpenGL's GL_FLAT gives
+/// the whole face: the provoking vertex, the last of a GL_TRIANGLES triangle.
+const PROVOKING: usize = 2;
+
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
 pub(crate) struct GpuVertex {
@@ -24,7 +37,9 @@ pub(crate) struct GpuVertex {
     pub(crate) face_normal: [f32; 3],
     pub(crate) color: [f32; 3],
     pub(crate) uv: [f32; 2],
-    pub(crate) centroid: [f32; 3],
+    /// Flat shading: where the face is lit (the centroid, or OpenGL's provoking vertex); the
+    /// face's centroid in the other modes, which do not read it.
+    pub(crate) flat_at: [f32; 3],
 }
 
 #[repr(C)]
@@ -147,20 +162,33 @@ pub(crate) fn prepare(scene: &Scene, options: &Options) -> Result<Prepared, GpuE
             let corners = idx.map(|i| world[i]);
             let face_normal = prepared.world_face_normal(corners).unwrap_or(Vec3::ZERO);
             let centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
-            let average = (color(idx[0]) + color(idx[1]) + color(idx[2])) / 3.0;
+            // Flat shading: the point, normal and colour the face is lit with, the same at all
+            // three vertices (see the module docs).
+            let flat = match (shading, scene.light_model) {
+                (Shading::Flat, LightModel::OpenGl { .. }) => {
+                    let p = idx[PROVOKING];
+                    let n = normal(p);
+                    Some((world[p], if n == Vec3::ZERO { face_normal } else { n }, color(p)))
+                }
+                (Shading::Flat, LightModel::Lecture { .. }) => {
+                    let average = (color(idx[0]) + color(idx[1]) + color(idx[2])) / 3.0;
+                    Some((centroid, face_normal, average))
+                }
+                _ => None,
+            };
             let origin = texture_use.map_or(Vec2::ZERO, |t| t.sampler.repeat_origin(uv(idx[0])));
             // Mirrored objects: re-wound so the front face stays counter-clockwise.
             let order = if prepared.mirrored { [0, 2, 1] } else { [0, 1, 2] };
             for k in order {
                 let i = idx[k];
-                let flat = shading == Shading::Flat;
+                let (flat_at, n, c) = flat.unwrap_or((centroid, normal(i), color(i)));
                 vertices.push(GpuVertex {
                     position: corners[k].to_array(),
-                    normal: if flat { face_normal } else { normal(i) }.to_array(),
+                    normal: n.to_array(),
                     face_normal: face_normal.to_array(),
-                    color: if flat { average } else { color(i) }.to_array(),
+                    color: c.to_array(),
                     uv: (uv(i) - origin).to_array(),
-                    centroid: centroid.to_array(),
+                    flat_at: flat_at.to_array(),
                 });
             }
         }
@@ -294,10 +322,9 @@ mod tests {
                     let cross = (corners[1] - corners[0]).cross(corners[2] - corners[0]);
                     assert!(cross.normalize().abs_diff_eq(n, 1e-5), "{n} vs {cross}");
                     for v in tri {
-                        assert!(v3(v.centroid).abs_diff_eq(centroid, 1e-6));
                         assert_eq!(v.face_normal, tri[0].face_normal);
-                        if shading == Shading::Flat {
-                            assert_eq!(v.normal, v.face_normal, "flat: the face's own normal");
+                        if shading != Shading::Flat {
+                            assert!(v3(v.flat_at).abs_diff_eq(centroid, 1e-6));
                         }
                     }
                 }
@@ -306,6 +333,69 @@ mod tests {
                 assert_eq!(o.texture, None);
             }
             assert!(!p.shader.contains("specular"));
+        }
+    }
+
+    #[test]
+    fn flat_faces_carry_the_point_normal_and_colour_their_light_model_lights() {
+        // The course's pyramid with smooth normals and a colour per vertex, also mirrored (its
+        // corners then drawn in the order 0, 2, 1). Every vertex of a face carries the same
+        // point, normal and colour, so the face has one colour whichever vertex provokes: in
+        // OpenGL's model the face's last corner in the mesh's order (GL_FLAT's provoking vertex)
+        // with its own normal and colour; in the lecture's the centroid, the face normal and
+        // the mean colour.
+        let lecture =
+            LightModel::Lecture { specular: cg_core::light::Specular::Phong, local_viewer: false };
+        let opengl = LightModel::OpenGl { local_viewer: false };
+        for (model, mirrored) in [(opengl, false), (opengl, true), (lecture, false)] {
+            let mut s = scene(COURSE);
+            s.light_model = model;
+            s.objects.retain(|o| o.name == "pyramid");
+            let pyramid = &mut s.objects[0];
+            pyramid.normals = cg_core::scene::NormalSource::Vertex {
+                weighting: cg_core::normals::Weighting::Uniform,
+                crease_deg: None,
+            };
+            let count = pyramid.mesh.positions.len();
+            pyramid.mesh.colors =
+                Some((0..count).map(|i| Rgb::new(i as f32 / count as f32, 0.5, 0.25)).collect());
+            if mirrored {
+                pyramid.transform = std::mem::take(&mut pyramid.transform)
+                    .then(cg_core::product::Factor::scale(Vec3::new(-1.0, 1.0, 1.0)));
+            }
+            let options = Options { shading: Some(Shading::Flat), size: None };
+            let p = prepare(&s, &options).unwrap();
+            let prepared = s.objects[0].prepare().unwrap();
+            let mesh = &prepared.mesh;
+            let (normals, colors) = (mesh.normals.as_ref().unwrap(), mesh.colors.as_ref().unwrap());
+            assert_eq!(p.objects[0].vertices.len(), 3 * mesh.faces.len());
+            for (face, tri) in mesh.faces.iter().zip(p.objects[0].vertices.chunks(3)) {
+                let world =
+                    face.map(|i| transform_point(prepared.model, mesh.positions[i as usize]));
+                let (at, n, c) = if model == opengl {
+                    let last = face[2] as usize;
+                    (world[2], prepared.world_normal(normals[last]).unwrap(), colors[last])
+                } else {
+                    let c = face.iter().map(|&i| colors[i as usize]).sum::<Rgb>() / 3.0;
+                    ((world[0] + world[1] + world[2]) / 3.0, v3(tri[0].face_normal), c)
+                };
+                for v in tri {
+                    let what = format!("{model:?}, mirrored {mirrored}, face {face:?}");
+                    assert!(v3(v.flat_at).abs_diff_eq(at, 1e-6), "{what}: lit at {:?}", v.flat_at);
+                    assert!(v3(v.normal).abs_diff_eq(n, 1e-6), "{what}: normal {:?}", v.normal);
+                    assert!(v3(v.color).abs_diff_eq(c, 1e-6), "{what}: colour {:?}", v.color);
+                    assert_eq!(
+                        (v.flat_at, v.normal, v.color),
+                        (tri[0].flat_at, tri[0].normal, tri[0].color)
+                    );
+                }
+                if model == opengl {
+                    assert!(
+                        v3(tri[0].normal).dot(v3(tri[0].face_normal)) < 0.9999,
+                        "premise: the vertex normal is not the face normal"
+                    );
+                }
+            }
         }
     }
 

@@ -7,7 +7,7 @@
 //!
 //! | shading | where [`shade`](#the-shade-function) runs | what is interpolated |
 //! |---|---|---|
-//! | [`Shading::Flat`] | vertex shader, at the face's centroid with the face normal (all three corners of a face carry the same values) | nothing (`@interpolate(flat)`) |
+//! | [`Shading::Flat`] | vertex shader, once per face: the lecture's model at its centroid with the face normal; OpenGL's at its provoking (last) vertex with that vertex's normal and colour, as GL_FLAT (all three corners of a face carry the same values, so WebGPU's first provoking vertex shows OpenGL's last one's colour) | nothing (`@interpolate(flat)`) |
 //! | [`Shading::Gouraud`] | vertex shader, per vertex with the vertex normal; clamped to `[0, 1]` | the colour, perspective-correct |
 //! | [`Shading::Phong`] | fragment shader, per pixel with the interpolated, renormalised normal | world position, normal, colour |
 //!
@@ -160,7 +160,8 @@ pub fn preprocess(template: &str, flags: &Flags) -> String {
 /// uniforms (binding 0) and lights (binding 1, a read-only storage array); bind group 1 the
 /// object's uniforms (binding 0) and, only when `features.textures`, its texture (1) and
 /// sampler (2). Vertex buffer 0: world position (location 0), shading normal (1), face normal
-/// (2), colour (3), texture coordinate (4), face centroid (5).
+/// (2), colour (3), texture coordinate (4), where flat shading lights the face (5: its centroid,
+/// or OpenGL's provoking vertex: `prepare.rs`).
 ///
 /// A scene without specular, spot lights or textures gets no code for them: the source then
 /// contains no `spot`, no `specular` and no texture sampling.

@@ -47,7 +47,7 @@ struct VertexIn {
     @location(2) face_normal: vec3<f32>,
     @location(3) color: vec3<f32>,
     @location(4) uv: vec2<f32>,
-    @location(5) centroid: vec3<f32>,
+    @location(5) flat_at: vec3<f32>,
 };
 
 fn saturate3(c: vec3<f32>) -> vec3<f32> {
@@ -236,10 +236,13 @@ fn vs_main(in: VertexIn) -> VertexOut {
     var out: VertexOut;
     out.clip = frame.view_proj * vec4<f32>(in.position, 1.0);
 //#if flat
-    // Flat: once per face, at its centroid with its normal (every corner carries the same).
+    // Flat: once per face. Every corner of a face carries the same point, normal and colour —
+    // the lecture's model: the centroid, the face normal, the mean colour; OpenGL's (GL_FLAT):
+    // the face's last corner with its own normal and colour — so the colour is the same
+    // whichever corner @interpolate(flat) takes it from.
     out.color = vec3<f32>(1.0);
     if lit() {
-        out.color = saturate3(shade(in.centroid, in.normal, material_ka(in.color), material_kd(in.color)));
+        out.color = saturate3(shade(in.flat_at, in.normal, material_ka(in.color), material_kd(in.color)));
     }
 //#endif
 //#if gouraud

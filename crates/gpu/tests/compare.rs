@@ -144,6 +144,25 @@ fn the_other_shipped_scenes_in_every_mode() {
     }
 }
 
+/// Flat shading in OpenGL's light model lights each face at its provoking (last) vertex, as
+/// GL_FLAT: the course's scene under spot-specular's spot light with a shiny pyramid, where the
+/// three corners of a face are lit very differently (the cone's edge, the highlight), with an
+/// infinite and a local viewer. The GPU's own provoking vertex is the first: every corner
+/// carries the last one's point, normal and colour.
+#[test]
+fn flat_spot_light_on_a_shiny_pyramid_as_opengl_lights_it() {
+    let mut s = scene("course-sample.toml");
+    s.lights = scene("spot-specular.toml").lights;
+    let pyramid = s.objects.iter_mut().find(|o| o.name == "pyramid").expect("the pyramid");
+    pyramid.material.ks = cg_core::Rgb::ONE;
+    pyramid.material.shininess = 32.0;
+    for local_viewer in [false, true] {
+        s.light_model = cg_core::light::LightModel::OpenGl { local_viewer };
+        let label = format!("spot-pyramid-local-{local_viewer}");
+        agree_scene(&label, &s, Shading::Flat, (s.width, s.height), (99.9, 1), (2, 0));
+    }
+}
+
 /// Every light type, attenuation, emission, a local viewer, a mirrored object, vertex colours
 /// and no culling, in both light models, at a size other than the scene's.
 #[test]

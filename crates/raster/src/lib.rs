@@ -31,7 +31,7 @@
 //! | `clip` | Sutherland–Hodgman in homogeneous clip space against the near plane `z ≥ 0`, the far plane and a guard band ±2²⁰ pixels wide; attributes linear in clip space; never a division by `w ≤ 0` |
 //! | `viewport` | perspective divide; window x right, y down from the top-left corner, pixel centres at `(x + ½, y + ½)`, depth `[0, 1]`; coordinates snapped to **1/256 pixel** (8 sub-pixel bits) |
 //! | `triangle_setup` | back-face culling by the sign of the window-space area (counter-clockwise in OpenGL's y-up window = front; the other way for mirrored objects), bounding box |
-//! | `flat_color` | flat shading: one lighting evaluation per face, at its **centroid**, with the face normal (OpenGL's GL_FLAT takes the last vertex's colour instead) |
+//! | `flat_color` | flat shading: one lighting evaluation per face — in the lecture's light model at its **centroid** with the face normal; in OpenGL's model as GL_FLAT, at its **provoking vertex** (the last corner) with that vertex's normal, position and colour |
 //! | `bin` | each triangle into the tiles (32 × 32 pixels) its bounding box touches, as `(tile, triangle)` pairs gathered into one list per tile (memory proportional to the pairs); each tile is one task for a thread |
 //! | `rasterize` | exact integer edge functions and the fill rule above |
 //! | `depth_test` | GL_LESS against a depth buffer cleared to 1, then the write (early: before shading; the same image) |
@@ -57,17 +57,24 @@
 //! ## As OpenGL draws it
 //!
 //! The conventions follow what Mesa's OpenGL (llvmpipe, through `cg-glref`) does, so the
-//! course's scenes come out as OpenGL draws them (`tests/opengl.rs`: at least 99.99 % of the
-//! pixels within 1/255, and all but 0.005 % — pixel centres within rounding of an edge or a
-//! texel border — within 2/255; measured on course-sample and spot-specular: every pixel within
-//! 1/255): pixel centres at half-integers; 8 sub-pixel bits; the fill rule above (pixel-exact
+//! course's scenes come out as OpenGL draws them, in Gouraud (GL_SMOOTH) and flat (GL_FLAT)
+//! shading (`tests/opengl.rs`: at least 99.99 % of the pixels within 1/255, and all but 0.005 %
+//! — pixel centres within rounding of an edge or a texel border — within 2/255; measured on
+//! course-sample and spot-specular, smooth and flat: every pixel within 1/255): pixel centres at
+//! half-integers; 8 sub-pixel bits; the fill rule above (pixel-exact
 //! against OpenGL on edges through pixel centres); lit vertex colours clamped to `[0, 1]` before
 //! they are interpolated; colours and texture coordinates interpolated perspective-correctly;
 //! GL_LESS (of two equal depths the first drawn stays); GL_MODULATE on
 //! the whole lit colour; 8-bit output by [`cg_core::image::to_unorm8`] (OpenGL rounds exact
-//! halves to even, the kit up: they differ on exact ties only). Two documented differences: flat
-//! shading lights the centroid (GL_FLAT takes the last vertex's colour), and lighting happens in
-//! world space (OpenGL's eye space gives the same colours up to rounding, for a rigid view).
+//! halves to even, the kit up: they differ on exact ties only); GL_FLAT's rule in OpenGL's light
+//! model: a flat face has the colour lit at its provoking vertex, the last of its three corners
+//! (each face is one GL_TRIANGLES triangle in `cg-glref`), with that vertex's normal and colour —
+//! the same evaluation Gouraud makes there — so flat shading matches OpenGL as closely as Gouraud
+//! does. One documented difference: lighting happens in world space (OpenGL's eye space gives
+//! the same colours up to rounding, for a rigid view).
+//!
+//! The lecture's light model keeps the lecture's flat shading: one evaluation at the face's
+//! centroid with the face normal ("面の法線をもとに面の色を決定"), every corner treated alike.
 //!
 //! ## Only what the scene needs
 //!

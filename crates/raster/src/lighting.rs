@@ -3,7 +3,7 @@
 //!
 //! | shading | where [`Lighting::light`] is called | what is interpolated |
 //! |---|---|---|
-//! | [`Shading::Flat`] (フラットシェーディング) | once per face, at its centroid, with the face normal | nothing: one colour per face |
+//! | [`Shading::Flat`] (フラットシェーディング) | once per face: the lecture's model at its centroid with the face normal; OpenGL's model at its provoking (last) vertex with that vertex's normal and colour, as GL_FLAT | nothing: one colour per face |
 //! | [`Shading::Gouraud`] (グローシェーディング) | once per vertex, with the vertex normal | the colours, clamped to `[0, 1]` per vertex |
 //! | [`Shading::Phong`] (フォンシェーディング) | once per pixel, with the interpolated, renormalised normal | normals and positions |
 //!
@@ -21,8 +21,9 @@ use cg_core::scene::{Scene, Shading};
 /// A point of a surface to be lit, everything in world space (ワールド座標系), where the lights are.
 #[derive(Clone, Copy, Debug)]
 pub struct SurfacePoint<'a> {
-    /// Where the point is: a face's centroid (flat), a vertex (Gouraud) or the point seen through
-    /// a pixel centre (Phong).
+    /// Where the point is: a face's centroid (flat, the lecture's model) or its last vertex
+    /// (flat, OpenGL's model: GL_FLAT's provoking vertex), a vertex (Gouraud) or the point seen
+    /// through a pixel centre (Phong).
     pub p_world: Vec3,
     /// The unit normal N, pointing out of the front face (mirrored objects are already flipped
     /// back). The zero vector when the surface has no usable normal there (a degenerate face):

@@ -7,7 +7,7 @@
 //!       │    clip             Sutherland–Hodgman in clip space: near (z ≥ 0), far, guard band
 //!       │    viewport         perspective divide, then window coordinates snapped to 1/256 pixel
 //!       │    triangle_setup   back-face culling by the signed area, edge orientation, bounding box
-//!       │    flat_color       Flat lights here, once per face
+//!       │    flat_color       Flat lights here, once per face (centroid, or GL's provoking vertex)
 //!       │    bin              the triangle goes to every tile its bounding box touches
 //!       ├─ Bins::gather       every chunk's (tile, triangle) pairs into one list per tile
 //!       └─ draw_tile, each tile a task on all cores, triangles in submission order:
@@ -28,7 +28,7 @@ use cg_core::Rgb;
 use cg_core::features::Features;
 use cg_core::glam::{Mat4, Vec2, Vec3, Vec4, Vec4Swizzles};
 use cg_core::image::{Image, check_size};
-use cg_core::light::{LightCounts, Material};
+use cg_core::light::{LightCounts, LightModel, Material};
 use cg_core::math::try_normalize;
 use cg_core::normals::interpolate_normal;
 use cg_core::scene::{Prepared, Scene, Shading};
@@ -845,11 +845,22 @@ fn world_face_normal(draw: &Draw<'_>, corners: [&Vertex; 3]) -> Vec3 {
     draw.prepared.world_face_normal(corners.map(|v| v.p_world)).unwrap_or(Vec3::ZERO)
 }
 
-/// Flat shading (フラットシェーディング): the face is lit once, at its centroid in world space,
-/// with the face normal, and the colour clamped to `[0, 1]`. (OpenGL's GL_FLAT instead takes the
-/// colour lit at the face's *last* vertex, the provoking vertex; the centroid treats every corner
-/// alike and is what the lecture's "面の法線をもとに面の色を決定" asks.) With per-vertex colours,
-/// the colour material is the mean of the three.
+/// The corner of a face whose lit colour OpenGL's GL_FLAT gives the whole face: its *provoking
+/// vertex*, the last of each triangle under glBegin(GL_TRIANGLES), which is how `cg-glref` submits
+/// every face of the prepared mesh (quads and polygons, whose provoking vertex GL picks otherwise,
+/// are triangles by then).
+const PROVOKING: usize = 2;
+
+/// Flat shading (フラットシェーディング): the face is lit once and the colour clamped to `[0, 1]`;
+/// where, and with which normal, is the light model's rule:
+///
+/// - the lecture's model: at the face's centroid in world space with the face normal
+///   ("面の法線をもとに面の色を決定"; every corner treated alike); with per-vertex colours the
+///   colour material is the mean of the three;
+/// - OpenGL's model: as glShadeModel(GL_FLAT) — at the face's provoking vertex ([`PROVOKING`],
+///   the last corner), with that vertex's own normal, position and colour, exactly as Gouraud
+///   lights that vertex (the face normal only where the vertex's normal vanishes). Clipping
+///   changes nothing: the original corner is lit, so every piece keeps its colour, as in OpenGL.
 fn flat_color<L: Lighting + ?Sized>(
     frame: &Frame<'_, L>,
     draw: &Draw<'_>,
@@ -860,12 +871,21 @@ fn flat_color<L: Lighting + ?Sized>(
     if !draw.lit {
         return Rgb::ONE;
     }
-    let centroid = (corners[0].p_world + corners[1].p_world + corners[2].p_world) / 3.0;
-    let color =
-        draw.has_colors().then(|| (corners[0].color + corners[1].color + corners[2].color) / 3.0);
+    let (p_world, n_world, color) = match frame.scene.light_model {
+        LightModel::OpenGl { .. } => {
+            let v = corners[PROVOKING];
+            let n = if v.n_world == Vec3::ZERO { face_normal } else { v.n_world };
+            (v.p_world, n, draw.has_colors().then_some(v.color))
+        }
+        LightModel::Lecture { .. } => {
+            let centroid = (corners[0].p_world + corners[1].p_world + corners[2].p_world) / 3.0;
+            let mean = (corners[0].color + corners[1].color + corners[2].color) / 3.0;
+            (centroid, face_normal, draw.has_colors().then_some(mean))
+        }
+    };
     let material = draw.material.with_color(color);
     let mut counts = LightCounts::default();
-    let lit = saturate(frame.light(centroid, face_normal, &material, &mut counts));
+    let lit = saturate(frame.light(p_world, n_world, &material, &mut counts));
     stats.add_lighting(&counts);
     lit
 }

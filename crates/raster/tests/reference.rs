@@ -12,11 +12,13 @@
 //!   green ground square seen from above at 30°, brighter towards the light at (10, 10, 10)
 //!   (front right) in a smooth gradient, and the orange pyramid on it with its lit front-right
 //!   face brighter than its left face.
-//! - `course-sample-flat.png`: looked at — the same picture, but each ground cell (two triangles)
-//!   is one flat shade, the cells stepping brighter towards the light, and each pyramid face one
-//!   colour. Its per-face colours are checked against `cg_core::light::shade` at the face normal
-//!   in `tests/shading.rs` (flat shading test), not against OpenGL (GL_FLAT takes the last
-//!   vertex's colour; the kit lights the centroid).
+//! - `course-sample-flat.png`: against OpenGL — `tests/opengl.rs`
+//!   (`the_committed_flat_reference_is_what_opengl_draws`) compares it with Mesa's GL_FLAT image
+//!   at 160 × 160, with the Gouraud reference's tolerance. The scene is in OpenGL's light model,
+//!   so each triangle has the colour lit at its last (provoking) vertex, as GL_FLAT gives it.
+//!   Looked at: the same picture as the Gouraud one, but in flat shades — the ground's cells
+//!   stepping brighter towards the light (the two triangles of a cell are lit at different
+//!   corners, so they may differ by a shade), each pyramid face one colour.
 //! - `course-sample-phong.png`: looked at — indistinguishable by eye from the Gouraud image (the
 //!   course's materials have no specular term and the ground's normal is constant, so Phong and
 //!   Gouraud differ only by the diffuse term's curvature across each triangle). Per-pixel

@@ -235,8 +235,10 @@ fn vertex_colours_set_ka_and_kd_and_are_interpolated_perspective_correctly() {
     // above with diffuse 0.5: every point's colour is 0.5·c + 0.5·c·(N·L) = its vertex-colour
     // blend c. The oracle: the ray through each pixel centre meets the floor at P, and c(P) is
     // the blend of the corner colours by P's barycentric coordinates on the floor (in f64). Gouraud
-    // and Phong must show c(P) (perspective-correct, not the screen-space blend); flat shading the
-    // mean of the three corners.
+    // and Phong must show c(P) (perspective-correct, not the screen-space blend); flat shading
+    // the last corner's colour in OpenGL's model (GL_FLAT's provoking vertex, lit with its own
+    // glColor) and the mean of the three corners in the lecture's (lit at the centroid). The
+    // lecture's model gives every point the same c here: no light has an ambient term.
     let size = 64u32;
     let mut scene = looking_down_z(size, size, 60.0);
     scene.light_model = LightModel::OpenGl { local_viewer: false };
@@ -266,8 +268,15 @@ fn vertex_colours_set_ka_and_kd_and_are_interpolated_perspective_correctly() {
         ];
         colors.iter().zip(w).map(|(k, w)| k.as_dvec3() * w).sum::<DVec3>()
     };
-    for shading in [Shading::Gouraud, Shading::Phong, Shading::Flat] {
-        let out = draw(&scene, shading);
+    let lecture = LightModel::Lecture { specular: Specular::Phong, local_viewer: false };
+    let runs = [
+        (scene.light_model, Shading::Gouraud),
+        (scene.light_model, Shading::Phong),
+        (scene.light_model, Shading::Flat),
+        (lecture, Shading::Flat),
+    ];
+    for (model, shading) in runs {
+        let out = draw(&Scene { light_model: model, ..scene.clone() }, shading);
         let (mut checked, mut screen_blend_differs) = (0, 0);
         for y in 0..size {
             for x in 0..size {
@@ -276,15 +285,18 @@ fn vertex_colours_set_ka_and_kd_and_are_interpolated_perspective_correctly() {
                     continue;
                 }
                 let d = camera.ray(w);
-                let expected = match shading {
-                    Shading::Flat => colors.iter().map(|k| k.as_dvec3()).sum::<DVec3>() / 3.0,
+                let expected = match (shading, model) {
+                    (Shading::Flat, LightModel::OpenGl { .. }) => colors[2].as_dvec3(),
+                    (Shading::Flat, LightModel::Lecture { .. }) => {
+                        colors.iter().map(|k| k.as_dvec3()).sum::<DVec3>() / 3.0
+                    }
                     _ => blend(d * (-1.0 / d.y)),
                 };
                 let got = out.image.pixels[(y * size + x) as usize].as_dvec3();
                 // Snapping corners to 1/256 pixel and f32 interpolation: well under 1e-3.
                 assert!(
                     (got - expected).abs().max_element() < 1e-3,
-                    "{shading:?}: pixel ({x}, {y}) is {got}, expected {expected}"
+                    "{shading:?} ({model:?}): pixel ({x}, {y}) is {got}, expected {expected}"
                 );
                 checked += 1;
                 // Premise: the screen-space blend differs (a perspective effect to be found).

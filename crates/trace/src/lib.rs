@@ -73,11 +73,12 @@
 //! culling off, the inside of a glass sphere), so light from the far side adds nothing there.
 //!
 //! Shading modes ([`Output::shading`] says which was done): **Phong** lights every hit point
-//! with the interpolated normal; **Flat** lights each triangle once, at its centroid, with its
-//! face normal — as the rasterizer does — so a face has one colour (shadows still fall per
-//! point); **Gouraud** is traced as Phong (a ray tracer lights the points it hits and has no
-//! vertex colours to interpolate). Exact spheres and planes have no faces and are lit at every
-//! hit point in every mode.
+//! with the interpolated normal; **Flat** lights each triangle once — as the rasterizer does: in
+//! the lecture's light model at its centroid with its face normal, in OpenGL's at its provoking
+//! (last) vertex with that vertex's normal and colour, as GL_FLAT — so a face has one colour
+//! (shadows still fall per point); **Gouraud** is traced as Phong (a ray tracer lights the
+//! points it hits and has no vertex colours to interpolate). Exact spheres and planes have no
+//! faces and are lit at every hit point in every mode.
 //!
 //! A shaded colour is never NaN or ±∞: NaN (0·∞ from colours beyond f32's range, which only a
 //! program can set — the loader bounds colours to 1e6) becomes 0, ±∞ the largest finite f32,

@@ -58,11 +58,13 @@ pub struct Options {
     /// Worker threads; `None` (or `Some(0)`): rayon's global pool, one per core. The image is
     /// the same whatever the count.
     pub threads: Option<usize>,
-    /// Override the scene's shading mode. `Flat` lights each triangle once, at its centroid,
-    /// with its face normal (as the rasterizer); `Gouraud` and `Phong` light every hit point with
-    /// the interpolated vertex normals (a ray tracer has no vertex colours to interpolate, so
-    /// Gouraud is traced as Phong, and [`crate::Output::shading`] says so). Exact spheres and
-    /// planes have no faces: they are lit at every hit point in every mode.
+    /// Override the scene's shading mode. `Flat` lights each triangle once, as the rasterizer:
+    /// at its centroid with its face normal in the lecture's light model, at its provoking
+    /// (last) vertex with that vertex's normal and colour in OpenGL's (GL_FLAT); `Gouraud` and
+    /// `Phong` light every hit point with the interpolated vertex normals (a ray tracer has no
+    /// vertex colours to interpolate, so Gouraud is traced as Phong, and
+    /// [`crate::Output::shading`] says so). Exact spheres and planes have no faces: they are lit
+    /// at every hit point in every mode.
     pub shading: Option<Shading>,
     /// Adaptive depth control (Hall and Greenberg, 1983): a reflected or transmitted ray whose
     /// weight along its path (the product of the k_r / k_t·F factors that lead to it, largest

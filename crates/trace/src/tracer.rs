@@ -5,7 +5,7 @@ use cg_core::Rgb;
 use cg_core::features::Features;
 use cg_core::glam::Vec3;
 use cg_core::image::{Image, check_size};
-use cg_core::light::{Light, LightCounts, Material, shade_with_visibility_counted};
+use cg_core::light::{Light, LightCounts, LightModel, Material, shade_with_visibility_counted};
 use cg_core::optics::{Interface, reflect, refract};
 use cg_core::scene::{Scene, Shading};
 use cg_core::transform::TransformError;
@@ -16,7 +16,7 @@ use crate::error::TraceError;
 use crate::options::{MAX_DEPTH_LIMIT, Options};
 use crate::ray::Ray;
 use crate::stats::Stats;
-use crate::world::{Hit, World};
+use crate::world::{Flat, Hit, World};
 
 /// What a render produced.
 #[derive(Clone, Debug, PartialEq)]
@@ -28,8 +28,9 @@ pub struct Output {
     /// The parts of the light model this render used: the scene's [`Scene::features`], with
     /// reflection and transmission off when `max_depth` is 0.
     pub features: Features,
-    /// The shading the tracer did: [`Shading::Flat`] (each triangle lit once, at its centroid,
-    /// with its face normal) or [`Shading::Phong`] (every hit point lit with the interpolated
+    /// The shading the tracer did: [`Shading::Flat`] (each triangle lit once, as the rasterizer
+    /// lights it: at its centroid with its face normal in the lecture's light model, at its
+    /// provoking vertex with that vertex's normal and colour in OpenGL's) or [`Shading::Phong`] (every hit point lit with the interpolated
     /// normal). [`Shading::Gouraud`] is traced as Phong — a ray tracer lights the points its rays
     /// hit and has no vertex colours to interpolate — so a render asked for Gouraud says Phong
     /// here.
@@ -134,7 +135,14 @@ impl<'s> Tracer<'s> {
             Shading::Flat => Shading::Flat,
             Shading::Gouraud | Shading::Phong => Shading::Phong,
         };
-        let world = World::build(prepared, &scene.textures, options.analytic, shading)?;
+        // Flat shading lights where the rasterizer does: the lecture's model at the centroid,
+        // OpenGL's at GL_FLAT's provoking vertex.
+        let flat = match (shading, scene.light_model) {
+            (Shading::Flat, LightModel::OpenGl { .. }) => Flat::Provoking,
+            (Shading::Flat, LightModel::Lecture { .. }) => Flat::Centroid,
+            _ => Flat::Off,
+        };
+        let world = World::build(prepared, &scene.textures, options.analytic, flat)?;
         let mut features = scene.features();
         features.reflection &= options.max_depth > 0;
         features.transmission &= options.max_depth > 0;

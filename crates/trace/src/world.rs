@@ -30,14 +30,16 @@
 //! face's first corner is taken off them (docs/numerics.md row 23: coordinates near 1e6 keep their
 //! precision under repeat).
 //!
-//! Under flat shading a triangle is lit once, at its centroid, with its face normal
-//! ([`Hit::lit_at`]), as the rasterizer lights it.
+//! Under flat shading a triangle is lit once ([`Hit::lit_at`]), where and with the normal the
+//! rasterizer lights it: in the lecture's light model at its centroid with its face
+//! normal; in OpenGL's at its provoking vertex (its last corner, GL_FLAT's rule) with that
+//! vertex's normal and colour.
 
 use cg_core::Rgb;
 use cg_core::glam::{DMat4, DVec3, Vec2, Vec3};
 use cg_core::light::Material;
 use cg_core::normals::{face_normal, interpolate_normal};
-use cg_core::scene::{Analytic, Prepared, Shading};
+use cg_core::scene::{Analytic, Prepared};
 use cg_core::texture::{Sampler, TexEnv, Texture};
 
 use crate::bvh::Bvh;
@@ -79,18 +81,21 @@ pub struct Hit {
     /// The unit geometric normal on the *outside* (counter-clockwise front) of the surface,
     /// whichever side the ray came from.
     pub geometric_normal: Vec3,
-    /// The unit shading normal on the outside: the exact normal of a sphere or plane, the face
-    /// normal under flat shading, the interpolated vertex normals ([`interpolate_normal`])
+    /// The unit shading normal on the outside: the exact normal of a sphere or plane; under flat
+    /// shading the face normal (the lecture's light model) or the provoking vertex's normal
+    /// (OpenGL's: GL_FLAT's rule, the face's last corner); the interpolated vertex normals ([`interpolate_normal`])
     /// otherwise.
     pub shading_normal: Vec3,
     /// Where the local light model is evaluated: the hit point `p`, except for a triangle under
-    /// flat shading, which is lit once at its centroid (as the rasterizer's flat shading lights
-    /// it), so the whole face has one colour. Shadow rays still start at `p`.
+    /// flat shading, which is lit once — at its centroid (the lecture's light model) or at its
+    /// provoking vertex (OpenGL's), as the rasterizer's flat shading lights it — so the whole
+    /// face has one colour. Shadow rays still start at `p`.
     pub lit_at: Vec3,
     /// The texture coordinate, when the surface has them (a plane; a mesh with uvs).
     pub uv: Option<Vec2>,
     /// The interpolated vertex colour, when the mesh has colours (they set k_a and k_d, as
-    /// glColor under GL_COLOR_MATERIAL does).
+    /// glColor under GL_COLOR_MATERIAL does); under flat shading in OpenGL's light model, the
+    /// provoking vertex's colour.
     pub color: Option<Rgb>,
     /// The object hit (index into the scene's objects).
     pub object: usize,
@@ -159,14 +164,35 @@ impl Surface<'_> {
 }
 
 /// A triangle's owner, its face in the owner's prepared mesh, its outward unit normal, and
-/// (flat shading) its centroid.
+/// (flat shading) where it is lit.
 #[derive(Clone, Copy, Debug)]
 struct TriangleInfo {
     object: u32,
     face: u32,
     n_g: Vec3,
-    centroid: Vec3,
+    /// Flat shading: the centroid ([`Flat::Centroid`]) or the provoking vertex
+    /// ([`Flat::Provoking`]); zero otherwise.
+    lit_at: Vec3,
 }
+
+/// Where and how flat shading lights a triangle (exact spheres and planes are lit at every hit
+/// point whatever the mode).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Flat {
+    /// Not flat: every hit point, with the interpolated vertex normals.
+    Off,
+    /// The lecture's light model: once, at the centroid, with the face normal
+    /// ("面の法線をもとに面の色を決定").
+    Centroid,
+    /// OpenGL's light model, as glShadeModel(GL_FLAT): once, at the provoking vertex — the last
+    /// corner of the face in the prepared mesh's order (each face is one GL_TRIANGLES triangle in
+    /// `cg-glref`), whatever a mirror does to the tracer's corner order — with that vertex's own
+    /// normal (the face normal where it vanishes) and colour.
+    Provoking,
+}
+
+/// The corner of a face (in the prepared mesh's order) that provokes under GL_FLAT.
+const PROVOKING: usize = 2;
 
 /// Everything a ray can hit.
 #[derive(Debug)]
@@ -176,19 +202,18 @@ pub(crate) struct World<'s> {
     exact: Vec<usize>,
     bvh: Bvh,
     triangles: Vec<TriangleInfo>,
-    flat: bool,
+    flat: Flat,
 }
 
 impl<'s> World<'s> {
     /// The world of `prepared` objects: exact surfaces where `analytic` allows, triangles in one
-    /// BVH otherwise. `textures` are the scene's.
+    /// BVH otherwise, lit under `flat`'s rule. `textures` are the scene's.
     pub(crate) fn build(
         prepared: Vec<Prepared<'s>>,
         textures: &'s [Texture],
         analytic: bool,
-        shading: Shading,
+        flat: Flat,
     ) -> Result<World<'s>, TraceError> {
-        let flat = shading == Shading::Flat;
         let mut surfaces = Vec::with_capacity(prepared.len());
         let mut exact = Vec::new();
         let mut corners = Vec::new();
@@ -251,14 +276,19 @@ impl<'s> World<'s> {
                 for (face, f) in faces.iter().enumerate() {
                     let p = f.map(|i| positions[i as usize]);
                     let Some(n_g) = face_normal(p[0], p[1], p[2]) else { continue };
-                    // The rasterizer's centroid: the mean of the corners in world space.
-                    let centroid = if flat { (p[0] + p[1] + p[2]) / 3.0 } else { Vec3::ZERO };
+                    let lit_at = match flat {
+                        Flat::Off => Vec3::ZERO,
+                        // The rasterizer's centroid: the mean of the corners in world space.
+                        Flat::Centroid => (p[0] + p[1] + p[2]) / 3.0,
+                        // The mesh's own order: a mirror reorders `f`, not the provoking corner.
+                        Flat::Provoking => positions[mesh.faces[face][PROVOKING] as usize],
+                    };
                     corners.push(p);
                     triangles.push(TriangleInfo {
                         object: index as u32,
                         face: face as u32,
                         n_g,
-                        centroid,
+                        lit_at,
                     });
                 }
                 surface.normals = world_normals;
@@ -306,10 +336,22 @@ impl<'s> World<'s> {
                 let corners = surface.faces[info.face as usize];
                 let b = th.barycentric;
                 let weigh3 = |v: [Vec3; 3]| b.x * v[0] + b.y * v[1] + b.z * v[2];
-                let shading_normal = if self.flat || surface.normals.is_empty() {
-                    info.n_g
-                } else {
-                    interpolate_normal(corners.map(|k| surface.normals[k as usize]), b, info.n_g)
+                // GL_FLAT's provoking vertex, in the prepared mesh's order.
+                let provoking = mesh.faces[info.face as usize][PROVOKING] as usize;
+                let shading_normal = match self.flat {
+                    Flat::Centroid => info.n_g,
+                    Flat::Provoking => surface
+                        .normals
+                        .get(provoking)
+                        .copied()
+                        .filter(|&n| n != Vec3::ZERO)
+                        .unwrap_or(info.n_g),
+                    Flat::Off if surface.normals.is_empty() => info.n_g,
+                    Flat::Off => interpolate_normal(
+                        corners.map(|k| surface.normals[k as usize]),
+                        b,
+                        info.n_g,
+                    ),
                 };
                 // The integer shift of the first corner (in the mesh's order) under repeat.
                 let origin = |uvs: &[Vec2]| {
@@ -325,16 +367,16 @@ impl<'s> World<'s> {
                     p_error: th.p_error,
                     geometric_normal: info.n_g,
                     shading_normal,
-                    lit_at: if self.flat { info.centroid } else { th.p },
+                    lit_at: if self.flat == Flat::Off { th.p } else { info.lit_at },
                     uv: mesh.uvs.as_ref().map(|uvs| {
                         let o = origin(uvs);
                         let [u0, u1, u2] = corners.map(|k| uvs[k as usize] - o);
                         b.x * u0 + b.y * u1 + b.z * u2
                     }),
-                    color: mesh
-                        .colors
-                        .as_ref()
-                        .map(|colors| weigh3(corners.map(|k| colors[k as usize]))),
+                    color: mesh.colors.as_ref().map(|colors| match self.flat {
+                        Flat::Provoking => colors[provoking],
+                        Flat::Off | Flat::Centroid => weigh3(corners.map(|k| colors[k as usize])),
+                    }),
                     object: info.object as usize,
                     primitive: Primitive::Triangle { face: info.face as usize, barycentric },
                 }

@@ -1,5 +1,6 @@
 //! How the tracer lights a hit: one-sided like the rasterizer and OpenGL, V towards where a
-//! secondary ray came from, flat shading at the face's centroid, what it reports (the shading it
+//! secondary ray came from, flat shading at the face's centroid (the lecture's model) or its
+//! provoking vertex (OpenGL's), what it reports (the shading it
 //! did, the light model's own counts), and the safety nets: a per-pixel ray budget for trees
 //! that do not shrink, colours beyond f32's range, huge texture coordinates, and the barycentric
 //! weights of mirrored objects in the mesh's order.
@@ -123,39 +124,65 @@ fn gouraud_is_traced_as_phong_and_the_output_says_so() {
 }
 
 #[test]
-fn flat_shading_lights_each_face_once_at_its_centroid() {
+fn flat_shading_lights_each_face_once_where_the_light_model_says() {
     // The pyramid's faces under a *near* point light (where the light falls at a different
-    // angle on each point of a face): flat shading gives each face one colour, the colour of its
-    // centroid lit with its face normal (the rasterizer's choice), with shadows off.
-    let mut scene = shipped("course-sample");
-    scene.objects.retain(|o| o.name == "pyramid");
-    scene.lights[0].kind = LightKind::Point { position: Vec3::new(1.5, 3.0, 2.0) };
-    let options = Options { shading: Some(Shading::Flat), shadows: false, ..small(48) };
-    let tracer = Tracer::new(&scene, &options).unwrap();
-    let out = tracer.render();
-    let prepared = scene.objects[0].prepare().unwrap();
-    let mut seen = std::collections::HashMap::new();
-    for y in 0..48 {
-        for x in 0..48 {
-            let Some(hit) = tracer.intersect(&tracer.generate_ray(x, y), &mut Stats::default())
-            else {
-                continue;
-            };
-            let Primitive::Triangle { face, .. } = hit.primitive else { panic!("triangles") };
-            let corners = prepared.mesh.faces[face].map(|i| {
-                cg_core::transform::transform_point(
-                    prepared.model,
-                    prepared.mesh.positions[i as usize],
-                )
-            });
-            let centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
-            assert!(hit.lit_at.distance(centroid) < 1e-5, "lit at the centroid");
-            let color = out.image.get(x, y).unwrap();
-            let first = *seen.entry(face).or_insert(color);
-            assert_eq!(color, first, "face F{face}: one colour");
+    // angle on each point of a face), with smooth vertex normals, shadows off: flat shading gives
+    // each face one colour. The lecture's model lights it at its centroid with its face normal;
+    // OpenGL's, as GL_FLAT, at its last (provoking) corner with that vertex's own normal — in
+    // the mesh's order also when a mirror makes the tracer reorder the corners (the rasterizer's
+    // rules, both).
+    let lecture = LightModel::Lecture { specular: Specular::Phong, local_viewer: false };
+    let opengl = LightModel::OpenGl { local_viewer: false };
+    for (model, mirrored) in [(lecture, false), (opengl, false), (opengl, true)] {
+        let mut scene = shipped("course-sample");
+        scene.light_model = model;
+        scene.objects.retain(|o| o.name == "pyramid");
+        let pyramid = &mut scene.objects[0];
+        pyramid.normals = NormalSource::Vertex {
+            weighting: cg_core::normals::Weighting::Uniform,
+            crease_deg: None,
+        };
+        if mirrored {
+            pyramid.transform = std::mem::take(&mut pyramid.transform)
+                .then(Factor::scale(Vec3::new(-1.0, 1.0, 1.0)));
         }
+        scene.lights[0].kind = LightKind::Point { position: Vec3::new(1.5, 3.0, 2.0) };
+        let options = Options { shading: Some(Shading::Flat), shadows: false, ..small(48) };
+        let tracer = Tracer::new(&scene, &options).unwrap();
+        let out = tracer.render();
+        let prepared = scene.objects[0].prepare().unwrap();
+        let mut seen = std::collections::HashMap::new();
+        for y in 0..48 {
+            for x in 0..48 {
+                let Some(hit) = tracer.intersect(&tracer.generate_ray(x, y), &mut Stats::default())
+                else {
+                    continue;
+                };
+                let Primitive::Triangle { face, .. } = hit.primitive else { panic!("triangles") };
+                let face = prepared.mesh.faces[face];
+                let corners = face.map(|i| {
+                    cg_core::transform::transform_point(
+                        prepared.model,
+                        prepared.mesh.positions[i as usize],
+                    )
+                });
+                let (at, normal) = if model == lecture {
+                    let centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
+                    (centroid, prepared.world_face_normal(corners).unwrap())
+                } else {
+                    let n = prepared.mesh.normals.as_ref().unwrap()[face[2] as usize];
+                    (corners[2], prepared.world_normal(n).unwrap())
+                };
+                let what = format!("{model:?}, mirrored {mirrored}, face {face:?}");
+                assert!(hit.lit_at.distance(at) < 1e-5, "{what}: lit at {}, not {at}", hit.lit_at);
+                assert!(hit.shading_normal.distance(normal) < 1e-5, "{what}: the normal");
+                let color = out.image.get(x, y).unwrap();
+                let first = *seen.entry(face).or_insert(color);
+                assert_eq!(color, first, "{what}: one colour");
+            }
+        }
+        assert!(seen.len() >= 2, "premise: several faces seen");
     }
-    assert!(seen.len() >= 2, "premise: several faces seen");
 }
 
 #[test]
