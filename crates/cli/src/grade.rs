@@ -10,7 +10,7 @@ use cg_grade::{Config, Graded, Options};
 /// Options of `cg grade`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// The folder of submissions: each entry a folder or a .zip holding exercises/ / 提出物のフォルダ（各項目がフォルダか .zip）
+    /// The folder of submissions (each entry a folder or a .zip holding exercises/), or Moodle's "Download all submissions" as it comes (the .zip or its folder) / 提出物のフォルダ（各項目がフォルダか .zip）、または Moodle の「すべての提出をダウンロードする」の .zip かそのフォルダ
     submissions: PathBuf,
     /// Where the results go / 結果の出力先
     #[arg(long, default_value = "grades")]
@@ -30,6 +30,12 @@ pub struct Args {
     /// The class roster (CSV: student, name, entry = the entry's folder or zip name, or its Moodle participant ID): binds each entry to its student / 名簿（CSV: 学生番号・氏名・提出物のフォルダ名か Moodle の参加者 ID）
     #[arg(long, value_name = "CSV")]
     roster: Option<PathBuf>,
+    /// The language of the course's Moodle, for moodle/grades.csv's column names: ja or en (default: the output's) / Moodle の言語（moodle/grades.csv の列名。既定: 出力の言語）
+    #[arg(long, value_name = "ja|en")]
+    moodle_lang: Option<Lang>,
+    /// The Moodle assignment's maximum grade: scores are scaled to it in moodle/grades.csv / Moodle の課題の最大評点（moodle/grades.csv の評点はこれに換算）
+    #[arg(long, value_name = "POINTS", default_value_t = 100.0)]
+    moodle_max_grade: f64,
     /// Grade even without bubblewrap: the students' code then runs as you, unisolated (every result says so) / bubblewrap なしでも採点する（学生のコードが隔離されずに動きます）
     #[arg(long)]
     unsafe_no_sandbox: bool,
@@ -53,6 +59,14 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         None => String::new(),
     };
     let config = Config::parse(&config_text).map_err(|e| e.message(lang).to_owned())?;
+    if !(args.moodle_max_grade.is_finite() && args.moodle_max_grade > 0.0) {
+        return Err(lang
+            .pick(
+                "--moodle-max-grade は正の数にしてください",
+                "--moodle-max-grade must be a positive number",
+            )
+            .to_owned());
+    }
     let roster = match &args.roster {
         Some(path) => {
             Some(cg_grade::roster::Roster::read(path).map_err(|e| e.get(lang).to_owned())?)
@@ -85,7 +99,8 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let progress = |g: &Graded| {
         let max = g.max_score.map(|m| format!(" / {m}")).unwrap_or_default();
         let note = if g.skipped { lang.pick("（前回の結果）", " (kept)") } else { "" };
-        println!("{} ({}): {}{max}{note}", g.name, g.entry, g.score);
+        let flag = g.flag.as_ref().map(|f| format!(" [{f}]")).unwrap_or_default();
+        println!("{} ({}): {}{max}{note}{flag}", g.name, g.entry, g.score);
     };
     let graded =
         cg_grade::grade(&options, cg_sandbox::launch, &progress).map_err(|e| e.to_string())?;
@@ -95,9 +110,39 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         lang.pick("件の結果", "results in"),
         args.out.display(),
         lang.pick(
-            "class.csv, summary.md, <学生番号>.json",
-            "class.csv, summary.md, <student>.json"
+            "class.csv, summary.md, <学生番号>.json, feedback/",
+            "class.csv, summary.md, <student>.json, feedback/"
         )
     );
+    let flagged = graded.iter().filter(|g| g.flag.is_some()).count();
+    if flagged > 0 {
+        println!(
+            "{flagged} {}",
+            lang.pick(
+                "件に確認の印があります（class.csv の flag 列、summary.md）",
+                "flagged for a look (class.csv's flag column, summary.md)"
+            )
+        );
+    }
+    let now = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let settings = cg_grade::moodle::output::Settings {
+        lang: args.moodle_lang.unwrap_or(lang),
+        max_grade: args.moodle_max_grade,
+        now,
+    };
+    if let Some(w) =
+        cg_grade::moodle::output::write(&args.out, &graded, &settings).map_err(|e| e.to_string())?
+    {
+        println!(
+            "Moodle: {}/moodle/grades.csv, feedback.zip ({} {}, {} {})",
+            args.out.display(),
+            w.participants,
+            lang.pick("人", "participants"),
+            w.graded,
+            lang.pick("人に評点", "with a grade")
+        );
+    }
     Ok(())
 }

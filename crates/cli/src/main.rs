@@ -67,7 +67,7 @@ enum Command {
     Handout(handout::Args),
     /// Measure speed against error and write docs/speed-vs-error.md with its plots / 速度と誤差を測り docs/speed-vs-error.md に書く
     Bench(bench::Args),
-    /// Grade every submission in a folder with the kit's own checks, in a sandbox (instructors) / 提出物をまとめて採点（教員用）
+    /// Grade every submission (a folder, a zip, or Moodle's "download all submissions") with the kit's own checks, in a sandbox; Moodle's grading worksheet and feedback zip back (instructors) / 提出物（フォルダ・zip・Moodle の一括ダウンロード）をまとめて採点し、Moodle 用の評定ワークシートとフィードバックを書く（教員用）
     Grade(grade::Args),
     /// Which renderers and windows work on this machine, and why, each problem with its fix / このマシンで使えるレンダラとウィンドウ、使えない理由と対処
     Doctor(doctor::Args),

@@ -1,8 +1,9 @@
 //! # cg-grade — grading a class with the kit's own checks, safely
 //!
 //! [`grade`] takes a folder of submissions (each a folder or a `.zip` holding an `exercises/`
-//! tree), builds each into a copy of the kit's handout ([`handout`]) — one copy per parallel
-//! slot, each with its own cargo target folder reused from submission to submission — and runs
+//! tree) or Moodle's "Download all submissions" as it comes ([`moodle`]), builds each into a
+//! copy of the kit's handout ([`handout`]) — one copy per parallel slot, each with its own cargo
+//! target folder reused from submission to submission — and runs
 //! the kit's checks on it in the sandbox ([`cg_sandbox`]), one run per assignment so a loop in
 //! one assignment costs only that assignment. Only `exercises/src/{a1,a2,a3,a4,s}.rs` and
 //! `exercises/student.toml` are taken from a submission; the check code is always the kit's.
@@ -25,6 +26,7 @@ use cg_sandbox::{Isolation, Job, Launch, Limits, SandboxError};
 pub mod build;
 pub mod config;
 pub mod handout;
+pub mod moodle;
 pub mod result;
 pub mod roster;
 pub mod screen;
@@ -79,6 +81,9 @@ pub struct Graded {
     pub max_score: Option<f64>,
     /// Whether an existing result was kept (same hash).
     pub skipped: bool,
+    /// What the instructor should look at ([`result::flag`]): a `student.toml` that claims
+    /// another number than the roster's, an entry not on the roster, a number claimed twice.
+    pub flag: Option<String>,
 }
 
 /// Why grading could not start (a single submission's problems go into its result instead).
@@ -212,20 +217,15 @@ struct Pending {
     files: Result<(submission::Files, cg_assign::StudentFile), Text>,
 }
 
-/// The entries of the submissions folder, read and hashed, with their result names.
+/// The entries of the submissions folder (or of a Moodle download: [`moodle::input`]), read
+/// and hashed, with their result names.
 fn collect(options: &Options, kit_hash: &str) -> Result<Vec<Pending>, GradeError> {
-    let mut entries: Vec<PathBuf> = std::fs::read_dir(&options.submissions)
-        .map_err(|e| GradeError::Io(format!("{}: {e}", options.submissions.display())))?
-        .flatten()
-        .map(|e| e.path())
-        .filter(|p| !p.file_name().is_some_and(|n| n.to_string_lossy().starts_with('.')))
-        .collect();
-    entries.sort();
+    let entries = moodle::input::entries(&options.submissions).map_err(|e| GradeError::Io(e.en))?;
     let mut used: BTreeMap<String, Vec<String>> = BTreeMap::new();
     let mut pending = Vec::new();
-    for path in entries {
-        let entry = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        let files = submission::read(&path).and_then(|files| {
+    for source in entries {
+        let entry = source.name.clone();
+        let files = source.read().and_then(|files| {
             let toml = files.student_toml.clone().ok_or_else(|| {
                 Text::new(
                     "exercises/student.toml がありません",
@@ -634,9 +634,12 @@ fn next(queue: &Mutex<VecDeque<Pending>>) -> Option<Pending> {
     queue.lock().ok().and_then(|mut q| q.pop_front())
 }
 
-/// Grades every submission in `options.submissions`, each one's functions in a worker started
-/// by `launcher` (the sandbox); writes
-/// `out/<student>.json`, `out/class.csv` and `out/summary.md`; calls `progress` after each.
+/// Grades every submission in `options.submissions` (a folder of submissions, or Moodle's
+/// "Download all submissions", zipped or not: [`moodle::input`]), each one's functions in a
+/// worker started by `launcher` (the sandbox); writes `out/<student>.json`, the student's
+/// feedback in both languages (`out/feedback/<student>/feedback-{ja,en}.md`), `out/class.csv`
+/// and `out/summary.md`; calls `progress` after each. The files for Moodle are
+/// [`moodle::output::write`]'s.
 ///
 /// # Errors
 /// The submissions folder or the kit could not be read, or the results not written.
@@ -686,6 +689,7 @@ pub fn grade(
                 score: v["score"].as_f64().unwrap_or(0.0),
                 max_score: v["max_score"].as_f64(),
                 skipped: true,
+                flag: result::flag(&v),
             };
             progress(&g);
             done.push(g);
@@ -731,21 +735,31 @@ pub fn grade(
                         ),
                     };
                     let student = p.files.as_ref().ok().map(|(_, s)| s.student.to_string());
-                    let value = result::build(
-                        &result::Meta {
-                            entry: &p.entry,
-                            student: student.as_deref(),
-                            // A machine's problem is not the submission's: not kept.
-                            hash: if facts.retry { "" } else { &p.hash },
-                            isolation: options.isolation,
-                            same_number: &p.same_number,
-                            roster: p.roster.as_ref(),
-                            total: started.elapsed(),
-                        },
-                        &facts,
-                        &options.config,
-                        options.lang,
-                    );
+                    let meta = result::Meta {
+                        entry: &p.entry,
+                        student: student.as_deref(),
+                        // A machine's problem is not the submission's: not kept.
+                        hash: if facts.retry { "" } else { &p.hash },
+                        isolation: options.isolation,
+                        same_number: &p.same_number,
+                        roster: p.roster.as_ref(),
+                        total: started.elapsed(),
+                    };
+                    let build = |lang| result::build(&meta, &facts, &options.config, lang);
+                    let value = build(options.lang);
+                    // The student's feedback in both languages, before the result that a
+                    // resumed run keeps.
+                    let feedback = out.join("feedback").join(&p.name);
+                    let (ja, en) = match options.lang {
+                        Lang::Ja => (value.clone(), build(Lang::En)),
+                        Lang::En => (build(Lang::Ja), value.clone()),
+                    };
+                    if let Err(e) = moodle::output::write_feedback(&feedback, &ja, &en) {
+                        if let Ok(mut f) = failure.lock() {
+                            *f = Some(io(&feedback, e));
+                        }
+                        break;
+                    }
                     let path = out.join(format!("{}.json", p.name));
                     let text = serde_json::to_string_pretty(&value).unwrap_or_default();
                     if let Err(e) = write_atomic(&path, text.as_bytes()) {
@@ -760,6 +774,7 @@ pub fn grade(
                         score: value["score"].as_f64().unwrap_or(0.0),
                         max_score: value["max_score"].as_f64(),
                         skipped: false,
+                        flag: result::flag(&value),
                     };
                     progress(&g);
                     if let Ok(mut r) = results.lock() {

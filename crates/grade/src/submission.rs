@@ -67,6 +67,14 @@ pub fn read(path: &Path) -> Result<Files, Text> {
             "neither a folder nor a .zip file",
         ));
     };
+    screened(files)
+}
+
+/// The files, unless one reaches outside itself at compile time ([`crate::screen`]).
+///
+/// # Errors
+/// The files and lines that do, with what.
+pub(crate) fn screened(files: Files) -> Result<Files, Text> {
     let refused: Vec<crate::screen::Refused> = files
         .modules
         .iter()

@@ -318,7 +318,7 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
     // The class table and the summary.
     let csv = std::fs::read_to_string(out.join("class.csv")).unwrap();
     let lines: Vec<&str> = csv.lines().collect();
-    assert_eq!(lines[0], "student,submission,a1,a2,a3,a4,s,score,max_score");
+    assert_eq!(lines[0], "student,submission,a1,a2,a3,a4,s,score,max_score,flag");
     assert_eq!(lines.len(), 8, "{csv}");
     for r in &results {
         let a = &r["cg"]["assignments"];
@@ -335,9 +335,11 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
             r["max_score"]
         )
         .replace(".0,", ",");
-        assert!(lines.contains(&row.trim_end_matches(".0")), "{row} not in\n{csv}");
+        // Nobody here is flagged: the flag column is empty.
+        let row = format!("{},", row.trim_end_matches(".0"));
+        assert!(lines.contains(&row.as_str()), "{row} not in\n{csv}");
     }
-    assert!(lines.contains(&"20260003,03-a2-syntax,31,0,13,9,22,75,89"), "{csv}");
+    assert!(lines.contains(&"20260003,03-a2-syntax,31,0,13,9,22,75,89,"), "{csv}");
     assert!(lines.iter().any(|l| l.starts_with(",06-slip.zip,,,,,,0,")), "{csv}");
     let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
     // Most failed first: a1.t2.outward and a1.t2.winding (the loop and the reversed face),
@@ -349,6 +351,12 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
     assert!(rows[2].ends_with("| 1 | 6 |"), "{md}");
     assert!(rows.last().unwrap().ends_with("| 0 | 6 |"), "{md}");
     assert!(md.contains("06-slip.zip"), "{md}");
+    // Each student's feedback, in both languages: the reversed face's failed checks.
+    for (lang, head) in [("ja", "# 採点結果"), ("en", "# Grading results")] {
+        let path = out.join(format!("feedback/20260002/feedback-{lang}.md"));
+        let text = std::fs::read_to_string(&path).unwrap();
+        assert!(text.starts_with(head) && text.contains("### a1.t2.winding"), "{text}");
+    }
 
     // Resuming: a second run keeps every result, byte for byte.
     let before: Vec<(String, Vec<u8>)> = std::fs::read_dir(&out)

@@ -131,7 +131,7 @@ fn refused_submissions_say_why_and_are_kept() {
 
     let csv = std::fs::read_to_string(out.join("class.csv")).unwrap();
     assert_eq!(csv.lines().count(), 11, "{csv}");
-    assert!(csv.contains("\n,slip.zip,,,,,,0,\n"), "{csv}");
+    assert!(csv.contains("\n,slip.zip,,,,,,0,,\n"), "{csv}");
     let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
     assert!(md.contains("submissions: 10") && md.contains("## Not graded"), "{md}");
     assert_eq!(md.matches("\n- ").count(), 10, "{md}");

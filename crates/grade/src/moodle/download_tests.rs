@@ -1,0 +1,260 @@
+//! Moodle in: the fake class's download ([`super::fake`]) read as a folder and as a zip, names
+//! in every encoding a zip may carry, and the roster binding participants to students.
+
+use std::path::Path;
+
+use cg_core::lang::Lang;
+use cg_sandbox::{Isolation, Limits};
+
+use super::fake;
+use super::input::{Entry, entries};
+use crate::{Config, Options, result, roster};
+
+/// What an entry reads as: its student number and a1's text, or why it is refused.
+type Outcome = Result<(String, String), String>;
+
+/// Each entry's name and [`Outcome`].
+fn read_all(list: &[Entry]) -> Vec<(String, Outcome)> {
+    list.iter()
+        .map(|e| {
+            let got = e.read().map_err(|t| t.en).map(|f| {
+                let toml = String::from_utf8(f.student_toml.unwrap_or_default()).unwrap();
+                let number = toml.split('"').nth(1).unwrap_or("").to_owned();
+                let a1 = String::from_utf8(f.modules.get("a1").cloned().unwrap_or_default());
+                (number, a1.unwrap().trim().to_owned())
+            });
+            (e.name.clone(), got)
+        })
+        .collect()
+}
+
+fn expect_class(list: &[Entry]) {
+    let got = read_all(list);
+    let names: Vec<&str> = got.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "Jane Roe_1002_assignsubmission_file_",
+            "John Smith_1003_assignsubmission_file_",
+            "Mallory_1007_assignsubmission_file",
+            "Participant 1005_1005_assignsubmission_file_",
+            "Participant_1004_assignsubmission_file",
+            "Twice Over_1008_assignsubmission_file",
+            "山田 太郎_1001_assignsubmission_file",
+            "鈴木 花子_1006_assignsubmission_file",
+        ]
+    );
+    for (name, result) in &got {
+        let id = super::Name::parse(name).unwrap().participant;
+        match id.as_str() {
+            "1007" => {
+                let why = result.as_ref().unwrap_err();
+                assert!(why.contains("../../x.rs") && why.contains("unsafe path"), "{why}");
+            }
+            "1008" => {
+                let why = result.as_ref().unwrap_err();
+                assert!(why.contains("a1.rs is there more than once"), "{why}");
+                assert!(why.contains("old/a1.rs"), "{why}");
+            }
+            _ => {
+                let n: u32 = id.parse().unwrap();
+                let number = if id == "1006" {
+                    "20260099".to_owned()
+                } else {
+                    format!("2026{:04}", n - 1000)
+                };
+                let (n, a1) = result.as_ref().unwrap_or_else(|e| panic!("{name}: {e}"));
+                assert_eq!(n, &number, "{name}");
+                assert_eq!(a1, &format!("// a1 of {number}"), "{name}");
+            }
+        }
+    }
+    // The participant of each entry: blind marking told apart.
+    let blind: Vec<bool> = list.iter().map(|e| e.participant().unwrap().is_blind()).collect();
+    assert_eq!(blind, [false, false, false, true, true, false, false, false]);
+}
+
+#[test]
+fn a_moodle_download_is_read_as_a_folder_and_as_a_zip() {
+    let dir = fake::scratch("download");
+    let items = fake::class();
+    fake::unpack(&items, &dir.join("unpacked"));
+    expect_class(&entries(&dir.join("unpacked")).unwrap());
+    // Unpacked into a folder of its own.
+    fake::unpack(&items, &dir.join("outer/Course-Assignment-42"));
+    expect_class(&entries(&dir.join("outer")).unwrap());
+    // The zip as Moodle gives it (UTF-8 names, flagged).
+    std::fs::write(dir.join("download.zip"), fake::zip_of(&items)).unwrap();
+    expect_class(&entries(&dir.join("download.zip")).unwrap());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn zip_names_are_read_as_utf8_with_or_without_the_flag_and_as_shift_jis() {
+    let dir = fake::scratch("names");
+    let sjis_suzuki = vec![0x97, 0xe9, 0x96, 0xd8, 0x20, 0x89, 0xd4, 0x8e, 0x71];
+    // ソ is 83 5C in Shift_JIS: the 5C is no path separator.
+    let sjis_sora = vec![0x83, 0x5c, 0x83, 0x89, 0x20, 0x91, 0xbe, 0x98, 0x59];
+    let entry = |name: Vec<u8>, tail: &str, student: &str| {
+        let mut n = name;
+        n.extend(tail.as_bytes());
+        (n, fake::toml(student))
+    };
+    for flag in [false, true] {
+        let zip = fake::raw_zip(
+            &[entry(
+                "山田 太郎".as_bytes().to_vec(),
+                "_1001_assignsubmission_file/exercises/student.toml",
+                "20260001",
+            )],
+            flag,
+        );
+        std::fs::write(dir.join("utf8.zip"), zip).unwrap();
+        let list = entries(&dir.join("utf8.zip")).unwrap();
+        assert_eq!(list[0].name, "山田 太郎_1001_assignsubmission_file", "flag {flag}");
+        assert!(list[0].read().unwrap().student_toml.is_some());
+    }
+    let zip = fake::raw_zip(
+        &[
+            entry(sjis_suzuki, "_1006_assignsubmission_file/exercises/student.toml", "20260006"),
+            entry(sjis_sora, "_1010_assignsubmission_file/student.toml", "20260010"),
+        ],
+        false,
+    );
+    std::fs::write(dir.join("sjis.zip"), zip).unwrap();
+    let list = entries(&dir.join("sjis.zip")).unwrap();
+    let names: Vec<&str> = list.iter().map(|e| e.name.as_str()).collect();
+    assert_eq!(
+        names,
+        ["ソラ 太郎_1010_assignsubmission_file", "鈴木 花子_1006_assignsubmission_file"]
+    );
+    for e in &list {
+        assert!(e.read().unwrap().student_toml.is_some(), "{}", e.name);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn what_is_not_a_participant_is_listed_and_a_hostile_download_refused() {
+    let dir = fake::scratch("strays");
+    let mut items = fake::six("Ann_1_assignsubmission_file/exercises/", "src/", "20260001");
+    items.push(("notes.txt".into(), b"hi".to_vec()));
+    items.push(("__MACOSX/._x".into(), b"".to_vec()));
+    std::fs::write(dir.join("d.zip"), fake::zip_of(&items)).unwrap();
+    let list = entries(&dir.join("d.zip")).unwrap();
+    let got = read_all(&list);
+    assert_eq!(got[0].0, "Ann_1_assignsubmission_file");
+    assert!(got[0].1.is_ok());
+    assert_eq!(got[1].0, "notes.txt");
+    assert!(got[1].1.as_ref().unwrap_err().contains("not a participant's folder"));
+    assert_eq!(got.len(), 2);
+    // A zip slip in the download itself: nothing is graded.
+    items.push(("../evil.rs".into(), b"x".to_vec()));
+    std::fs::write(dir.join("slip.zip"), fake::zip_of(&items)).unwrap();
+    let why = entries(&dir.join("slip.zip")).unwrap_err();
+    assert!(why.en.contains("../evil.rs") && why.en.contains("unsafe path"), "{}", why.en);
+    assert!(why.ja.contains("Moodle"), "{}", why.ja);
+    // A zip that is no Moodle download.
+    std::fs::write(dir.join("plain.zip"), fake::zip_of(&fake::six("exercises/", "src/", "1")))
+        .unwrap();
+    let why = entries(&dir.join("plain.zip")).unwrap_err();
+    assert!(why.en.contains("no participant's folder"), "{}", why.en);
+    // A link in a participant's folder is refused.
+    #[cfg(unix)]
+    {
+        let sub = dir.join("folder/Bob_2_assignsubmission_file");
+        std::fs::create_dir_all(&sub).unwrap();
+        std::os::unix::fs::symlink("/etc", sub.join("exercises")).unwrap();
+        let list = entries(&dir.join("folder")).unwrap();
+        let why = list[0].read().unwrap_err();
+        assert!(why.en.contains("exercises is a symbolic link"), "{}", why.en);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+fn options(root: &Path, submissions: &Path, roster: Option<roster::Roster>) -> Options {
+    Options {
+        kit: root.to_path_buf(),
+        submissions: submissions.to_path_buf(),
+        out: root.join("out"),
+        config: Config::default(),
+        config_text: String::new(),
+        jobs: 1,
+        limits: Limits::default(),
+        build_limit: std::time::Duration::from_secs(1),
+        isolation: Isolation::Bubblewrap,
+        lang: Lang::En,
+        roster,
+    }
+}
+
+#[test]
+fn the_roster_binds_participants_and_a_mismatch_is_flagged() {
+    let root = fake::scratch("roster");
+    std::fs::write(root.join("download.zip"), fake::zip_of(&fake::class())).unwrap();
+    let roster = roster::Roster::parse(fake::ROSTER).unwrap();
+    let opts = options(&root, &root.join("download.zip"), Some(roster));
+    let pending = crate::collect(&opts, "kit").unwrap();
+    let got: Vec<(&str, &str)> =
+        pending.iter().map(|p| (p.entry.as_str(), p.name.as_str())).collect();
+    assert_eq!(
+        got,
+        [
+            ("Jane Roe_1002_assignsubmission_file_", "20260002"),
+            ("John Smith_1003_assignsubmission_file_", "20260003"),
+            ("Mallory_1007_assignsubmission_file", "_Mallory_1007_assignsubmission_file"),
+            ("Participant 1005_1005_assignsubmission_file_", "20260005"),
+            ("Participant_1004_assignsubmission_file", "20260004"),
+            ("Twice Over_1008_assignsubmission_file", "_Twice_Over_1008_assignsubmission_file"),
+            ("山田 太郎_1001_assignsubmission_file", "20260001"),
+            // Graded as the roster's student; the claim is kept.
+            ("鈴木 花子_1006_assignsubmission_file", "20260006"),
+        ]
+    );
+    let results: Vec<serde_json::Value> = pending
+        .iter()
+        .map(|p| {
+            let student = p.files.as_ref().ok().map(|(_, s)| s.student.to_string());
+            let meta = result::Meta {
+                entry: &p.entry,
+                student: student.as_deref(),
+                hash: "",
+                isolation: Isolation::Bubblewrap,
+                same_number: &p.same_number,
+                roster: p.roster.as_ref(),
+                total: std::time::Duration::ZERO,
+            };
+            result::build(&meta, &result::Facts::default(), &Config::default(), Lang::En)
+        })
+        .collect();
+    let flags: Vec<Option<String>> = results.iter().map(result::flag).collect();
+    let expected = "student.toml claims 20260099, the roster says 20260006";
+    assert_eq!(flags[7].as_deref(), Some(expected));
+    assert!(flags[..7].iter().all(Option::is_none), "{flags:?}");
+    let csv = result::class_csv(&results);
+    assert!(csv.starts_with("student,submission,a1,a2,a3,a4,s,score,max_score,flag\n"), "{csv}");
+    let row = csv.lines().find(|l| l.contains("鈴木")).unwrap();
+    assert!(row.starts_with("20260006,鈴木 花子_1006_assignsubmission_file,"), "{row}");
+    assert!(row.ends_with(&format!(",\"{expected}\"")), "{row}");
+    let md = result::summary_md(&results, &[("20260010".into(), "Absent".into())], Lang::En);
+    assert!(
+        md.contains(
+            "- 鈴木 花子_1006_assignsubmission_file: student.toml claims 20260099, the roster says 20260006 (鈴木 花子)"
+        ),
+        "{md}"
+    );
+    // Reading is deterministic, and the zip and its unpacked folder are the same class: the
+    // same entries with the same hashes (so a resumed run keeps their results).
+    let hashes = |list: &[crate::Pending]| -> Vec<(String, String)> {
+        list.iter().map(|p| (p.entry.clone(), p.hash.clone())).collect()
+    };
+    assert_eq!(hashes(&crate::collect(&opts, "kit").unwrap()), hashes(&pending));
+    fake::unpack(&fake::class(), &root.join("unpacked"));
+    let unpacked = Options { submissions: root.join("unpacked"), ..opts.clone() };
+    assert_eq!(hashes(&crate::collect(&unpacked, "kit").unwrap()), hashes(&pending));
+    // Without a roster the participant is who its student.toml says.
+    let opts = options(&root, &root.join("download.zip"), None);
+    let pending = crate::collect(&opts, "kit").unwrap();
+    assert!(pending.iter().any(|p| p.name == "20260099"));
+    let _ = std::fs::remove_dir_all(&root);
+}

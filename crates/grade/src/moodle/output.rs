@@ -1,0 +1,434 @@
+//! What goes back into Moodle, under `<out>/moodle/`:
+//!
+//! - `grades.csv`: the assignment's offline grading worksheet, as "Download grading worksheet"
+//!   (評定ワークシートをダウンロードする) writes it — the columns Identifier, Full name, Email
+//!   address, Status, Grade, Maximum grade, Grade can be changed, Last modified (submission),
+//!   Last modified (grade), Feedback comments, named in the course's Moodle language; UTF-8
+//!   with a BOM (Moodle's download has one and its upload removes it). Moodle's upload finds
+//!   the columns Identifier, Grade, Last modified (grade) and Feedback comments by these names
+//!   in the language of the account that uploads, and the participant by the number after
+//!   "Participant " (参加者). The grade is the score scaled to the assignment's maximum grade;
+//!   a submission that could not be graded has no grade (Moodle then keeps its own).
+//! - `feedback.zip`: for "Upload multiple feedback files in a zip" (複数のフィードバックファイルを
+//!   ZIP でアップロードする): one folder per participant, named as in the download, with the
+//!   student's feedback in Japanese and English (`feedback-ja.md`, `feedback-en.md`: every
+//!   check's result, as the grader wrote it) and any other file the grader left for that
+//!   student under `<out>/feedback/<result>/` (pictures, when there are).
+
+use std::fmt::Write as _;
+use std::io::Write as _;
+use std::path::Path;
+
+use cg_core::lang::Lang;
+use serde_json::Value;
+
+use super::Name;
+use crate::{GradeError, Graded, write_atomic};
+
+/// How the Moodle files are written.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    /// The course's Moodle language: the worksheet's column names and texts.
+    pub lang: Lang,
+    /// The assignment's maximum grade in Moodle (its "Maximum grade"): scores are scaled to it.
+    pub max_grade: f64,
+    /// The time written as the grades' last modification (Unix seconds).
+    pub now: u64,
+}
+
+/// The worksheet's columns in Moodle's English language pack (`mod_assign`'s `recordid`,
+/// core `fullname`, `email`, `mod_assign`'s `status`, core `grade`, `mod_assign`'s
+/// `maxgrade`, `gradecanbechanged`, `lastmodifiedsubmission`, `lastmodifiedgrade`, and
+/// `assignfeedback_comments`' name).
+pub const COLUMNS_EN: [&str; 10] = [
+    "Identifier",
+    "Full name",
+    "Email address",
+    "Status",
+    "Grade",
+    "Maximum grade",
+    "Grade can be changed",
+    "Last modified (submission)",
+    "Last modified (grade)",
+    "Feedback comments",
+];
+
+/// The same columns in Moodle's Japanese language pack (`ja`).
+pub const COLUMNS_JA: [&str; 10] = [
+    "ID",
+    "フルネーム",
+    "メールアドレス",
+    "ステータス",
+    "評点",
+    "最大評点",
+    "評点変更可",
+    "最終更新日時 (提出)",
+    "最終更新日時 (評定)",
+    "フィードバックコメント",
+];
+
+/// The worksheet's column names in `lang`.
+#[must_use]
+pub fn columns(lang: Lang) -> [&'static str; 10] {
+    match lang {
+        Lang::Ja => COLUMNS_JA,
+        Lang::En => COLUMNS_EN,
+    }
+}
+
+/// A participant's identifier in the worksheet: `mod_assign`'s `hiddenuser` and the ID
+/// (`Participant 1234567`, `参加者1234567`).
+#[must_use]
+pub fn identifier(participant: &str, lang: Lang) -> String {
+    format!("{}{participant}", lang.pick("参加者", "Participant "))
+}
+
+/// The feedback file of each language.
+#[must_use]
+pub fn feedback_file(lang: Lang) -> String {
+    format!("feedback-{lang}.md")
+}
+
+/// A Unix time's UTC year, month, day, hour, minute and second (Howard Hinnant's
+/// `civil_from_days`).
+fn civil(unix: u64) -> (i64, i64, i64, u64, u64, u64) {
+    let days = i64::try_from(unix / 86_400).unwrap_or(0);
+    let secs = unix % 86_400;
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z.rem_euclid(146_097);
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    (year, month, day, secs / 3600, secs / 60 % 60, secs % 60)
+}
+
+/// A time as the worksheet writes it: `2026-05-20 05:30:00 UTC` (read by PHP's `strtotime`,
+/// as Moodle's upload reads it).
+#[must_use]
+pub fn utc(unix: u64) -> String {
+    let (year, month, day, hour, minute, second) = civil(unix);
+    format!("{year:04}-{month:02}-{day:02} {hour:02}:{minute:02}:{second:02} UTC")
+}
+
+/// A time as a zip entry's (the zip format's range, 1980 to 2107; the earliest outside it).
+fn zip_time(unix: u64) -> zip::DateTime {
+    let (year, month, day, hour, minute, second) = civil(unix);
+    let n = |v: i64| u8::try_from(v).unwrap_or(0);
+    let m = |v: u64| u8::try_from(v).unwrap_or(0);
+    zip::DateTime::from_date_and_time(
+        u16::try_from(year).unwrap_or(0),
+        n(month),
+        n(day),
+        m(hour),
+        m(minute),
+        m(second),
+    )
+    .unwrap_or_default()
+}
+
+/// A Markdown code block of `text`, fenced with more backticks than it holds in a row.
+fn block(text: &str) -> String {
+    let mut longest = 0;
+    let mut run = 0;
+    for c in text.chars() {
+        run = if c == '`' { run + 1 } else { 0 };
+        longest = longest.max(run);
+    }
+    let fence = "`".repeat(longest.max(2) + 1);
+    format!("{fence}text\n{}\n{fence}\n", text.trim_end())
+}
+
+fn number(v: &Value) -> String {
+    v.as_f64().map(|x| format!("{}", (x * 1000.0).round() / 1000.0)).unwrap_or_else(|| "-".into())
+}
+
+/// A student's feedback in Markdown, from their result (`<out>/<student>.json`) in `lang`:
+/// the scores, the grader's summary, each failed check with what it found, and the passed
+/// checks.
+#[must_use]
+pub fn feedback_md(result: &Value, lang: Lang) -> String {
+    let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
+    let cg = &result["cg"];
+    let mut md = format!("# {}\n\n", l("採点結果", "Grading results"));
+    let _ =
+        writeln!(md, "- {}: {}", l("学生番号", "student"), cg["student"].as_str().unwrap_or("?"));
+    let _ = writeln!(
+        md,
+        "- {}: {}",
+        l("提出物", "submission"),
+        cg["submission"].as_str().unwrap_or("")
+    );
+    let _ = writeln!(
+        md,
+        "- {}: {} / {}\n",
+        l("点数", "score"),
+        number(&result["score"]),
+        number(&result["max_score"])
+    );
+    if let Some(per) = cg["assignments"].as_object().filter(|p| !p.is_empty()) {
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} |\n|---|---:|---:|",
+            l("課題", "assignment"),
+            l("点数", "score"),
+            l("満点", "out of")
+        );
+        for (m, s) in per {
+            let _ = writeln!(md, "| {m} | {} | {} |", number(&s["score"]), number(&s["max_score"]));
+        }
+        md.push('\n');
+    }
+    let _ = write!(
+        md,
+        "## {}\n\n{}\n",
+        l("概要", "Summary"),
+        block(result["output"].as_str().unwrap_or(""))
+    );
+    let tests = result["tests"].as_array().map(Vec::as_slice).unwrap_or_default();
+    let (passed, failed): (Vec<&Value>, Vec<&Value>) =
+        tests.iter().partition(|t| t["status"] == "passed");
+    if !failed.is_empty() {
+        let _ = write!(md, "## {} ({})\n\n", l("不合格のチェック", "Failed checks"), failed.len());
+        for t in failed {
+            let _ = write!(
+                md,
+                "### {}\n\n{} {} / {}\n\n{}\n",
+                t["name"].as_str().unwrap_or("?"),
+                l("点数", "score"),
+                number(&t["score"]),
+                number(&t["max_score"]),
+                block(t["output"].as_str().unwrap_or(""))
+            );
+        }
+    }
+    if !passed.is_empty() {
+        let _ = write!(md, "## {} ({})\n\n", l("合格したチェック", "Passed checks"), passed.len());
+        for t in passed {
+            let _ = writeln!(md, "- {}", t["name"].as_str().unwrap_or("?"));
+        }
+    }
+    md
+}
+
+/// Writes a student's feedback files into `dir` (made afresh): [`feedback_md`] of the result
+/// in each language.
+///
+/// # Errors
+/// The folder or a file could not be written.
+pub fn write_feedback(dir: &Path, ja: &Value, en: &Value) -> std::io::Result<()> {
+    std::fs::create_dir_all(dir)?;
+    for (lang, result) in [(Lang::Ja, ja), (Lang::En, en)] {
+        write_atomic(&dir.join(feedback_file(lang)), feedback_md(result, lang).as_bytes())?;
+    }
+    Ok(())
+}
+
+/// One row of the worksheet.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    /// The participant ID.
+    pub participant: String,
+    /// The full name: the roster's, else the download's; empty under blind marking.
+    pub full_name: String,
+    /// The grade, already scaled to the maximum grade; `None` when there is none to give.
+    pub grade: Option<f64>,
+    /// The feedback comment (HTML, as Moodle's comment editor keeps it).
+    pub comment: String,
+}
+
+fn html(s: &str) -> String {
+    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+/// The worksheet's text: a BOM, the header and a row per participant.
+///
+/// # Errors
+/// The CSV could not be written (not expected: it is written to memory).
+pub fn worksheet(rows: &[Row], settings: &Settings) -> Result<String, String> {
+    let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::CRLF).from_writer(Vec::new());
+    w.write_record(columns(settings.lang)).map_err(|e| e.to_string())?;
+    let grade = |x: f64| format!("{x:.2}");
+    let status = settings.lang.pick("評定のために提出済み", "Submitted for grading");
+    let modified = utc(settings.now);
+    for r in rows {
+        w.write_record([
+            identifier(&r.participant, settings.lang).as_str(),
+            &r.full_name,
+            "",
+            status,
+            &r.grade.map(grade).unwrap_or_default(),
+            &grade(settings.max_grade),
+            "Yes",
+            "-",
+            &modified,
+            &r.comment,
+        ])
+        .map_err(|e| e.to_string())?;
+    }
+    let bytes = w.into_inner().map_err(|e| e.to_string())?;
+    Ok(format!("\u{feff}{}", String::from_utf8_lossy(&bytes)))
+}
+
+/// A participant's folder in the feedback zip: its name and its files (name, bytes).
+pub type Folder = (String, Vec<(String, Vec<u8>)>);
+
+/// The feedback zip of the participants' folders, its entries dated `now` (Unix seconds).
+///
+/// # Errors
+/// The zip could not be written (not expected: it is written to memory).
+pub fn feedback_zip(folders: &[Folder], now: u64) -> Result<Vec<u8>, String> {
+    let mut z = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
+    let options = zip::write::SimpleFileOptions::default()
+        .compression_method(zip::CompressionMethod::Deflated)
+        .last_modified_time(zip_time(now));
+    for (folder, files) in folders {
+        z.add_directory(format!("{folder}/"), options).map_err(|e| e.to_string())?;
+        for (name, bytes) in files {
+            z.start_file(format!("{folder}/{name}"), options).map_err(|e| e.to_string())?;
+            z.write_all(bytes).map_err(|e| e.to_string())?;
+        }
+    }
+    Ok(z.finish().map_err(|e| e.to_string())?.into_inner())
+}
+
+/// The feedback comment of a result: the score, each assignment's, and where the details are.
+fn comment(result: &Value, lang: Lang) -> String {
+    let cg = &result["cg"];
+    if result.get("max_score").is_none() {
+        let why = cg["refused"].as_str().or(cg["error"].as_str()).unwrap_or("");
+        let why = why.lines().next().unwrap_or("");
+        return html(&match lang {
+            Lang::Ja => format!(
+                "採点できませんでした（理由: {why}）。詳しくはフィードバックファイル {} を見てください。",
+                feedback_file(lang)
+            ),
+            Lang::En => format!(
+                "Could not be graded ({why}). The details are in the feedback file {}.",
+                feedback_file(lang)
+            ),
+        });
+    }
+    let per: Vec<String> = cg["assignments"]
+        .as_object()
+        .map(|p| {
+            p.iter()
+                .map(|(m, s)| format!("{m} {}/{}", number(&s["score"]), number(&s["max_score"])))
+                .collect()
+        })
+        .unwrap_or_default();
+    let (score, max) = (number(&result["score"]), number(&result["max_score"]));
+    html(&match lang {
+        Lang::Ja => format!(
+            "チェックの結果: {score} / {max}（{}）。チェックごとの結果はフィードバックファイル {} にあります。",
+            per.join("、"),
+            feedback_file(lang)
+        ),
+        Lang::En => format!(
+            "Checks: {score} / {max} ({}). Each check's result is in the feedback file {}.",
+            per.join(", "),
+            feedback_file(lang)
+        ),
+    })
+}
+
+/// What [`write`] wrote.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Written {
+    /// Participants in the worksheet and the zip.
+    pub participants: usize,
+    /// Of them, those with a grade.
+    pub graded: usize,
+}
+
+/// The files a student's feedback folder holds: `<out>/feedback/<result>/`'s plain files, or,
+/// when there is none, the feedback rendered from the result alone (in its own language).
+fn feedback_files(out: &Path, name: &str, result: &Value) -> Vec<(String, Vec<u8>)> {
+    let dir = out.join("feedback").join(name);
+    let mut files: Vec<(String, Vec<u8>)> = std::fs::read_dir(&dir)
+        .map(|r| {
+            r.flatten()
+                .filter(|e| e.file_type().is_ok_and(|t| t.is_file()))
+                .filter_map(|e| {
+                    let n = e.file_name().to_string_lossy().into_owned();
+                    (!n.starts_with('.')).then_some(n)
+                })
+                .filter_map(|n| std::fs::read(dir.join(&n)).ok().map(|b| (n, b)))
+                .collect()
+        })
+        .unwrap_or_default();
+    files.sort();
+    if files.is_empty() {
+        let lang = if result["output"].as_str().is_some_and(|o| o.starts_with("学生番号")) {
+            Lang::Ja
+        } else {
+            Lang::En
+        };
+        files.push((feedback_file(lang), feedback_md(result, lang).into_bytes()));
+    }
+    files
+}
+
+/// Writes `<out>/moodle/grades.csv` and `<out>/moodle/feedback.zip` for the Moodle
+/// participants among `graded` (their results are read from `<out>`); `None` when there is
+/// none.
+///
+/// # Errors
+/// A result could not be read, or a file not written.
+pub fn write(
+    out: &Path,
+    graded: &[Graded],
+    settings: &Settings,
+) -> Result<Option<Written>, GradeError> {
+    let io = |p: &Path, e: &dyn std::fmt::Display| GradeError::Io(format!("{}: {e}", p.display()));
+    let mut found: Vec<(Name, &Graded, Value)> = Vec::new();
+    for g in graded {
+        let Some(name) = Name::parse(&g.entry) else { continue };
+        let path = out.join(format!("{}.json", g.name));
+        let text = std::fs::read_to_string(&path).map_err(|e| io(&path, &e))?;
+        let value: Value = serde_json::from_str(&text).map_err(|e| io(&path, &e))?;
+        found.push((name, g, value));
+    }
+    if found.is_empty() {
+        return Ok(None);
+    }
+    found.sort_by(|a, b| {
+        let id = |n: &Name| n.participant.parse::<u64>().unwrap_or(u64::MAX);
+        id(&a.0).cmp(&id(&b.0)).then_with(|| a.1.entry.cmp(&b.1.entry))
+    });
+    let mut rows = Vec::new();
+    let mut folders = Vec::new();
+    for (name, g, value) in &found {
+        let max = value["max_score"].as_f64().filter(|m| *m > 0.0);
+        let grade = max.map(|m| value["score"].as_f64().unwrap_or(0.0) / m * settings.max_grade);
+        // Under blind marking the worksheet names nobody, as Moodle's own.
+        let roster = value["cg"]["roster"]["name"].as_str().filter(|n| !n.is_empty());
+        let full_name = match roster {
+            _ if name.is_blind() => String::new(),
+            Some(n) => n.to_owned(),
+            None => name.full_name.clone(),
+        };
+        rows.push(Row {
+            participant: name.participant.clone(),
+            full_name,
+            grade,
+            comment: comment(value, settings.lang),
+        });
+        folders.push((name.folder(), feedback_files(out, &g.name, value)));
+    }
+    let dir = out.join("moodle");
+    std::fs::create_dir_all(&dir).map_err(|e| io(&dir, &e))?;
+    let csv = worksheet(&rows, settings).map_err(|e| io(&dir, &e))?;
+    let path = dir.join("grades.csv");
+    write_atomic(&path, csv.as_bytes()).map_err(|e| io(&path, &e))?;
+    let zip = feedback_zip(&folders, settings.now).map_err(|e| io(&dir, &e))?;
+    let path = dir.join("feedback.zip");
+    write_atomic(&path, &zip).map_err(|e| io(&path, &e))?;
+    Ok(Some(Written {
+        participants: rows.len(),
+        graded: rows.iter().filter(|r| r.grade.is_some()).count(),
+    }))
+}
