@@ -1,6 +1,7 @@
 //! The report checker end to end, with a correct student (the reference solutions): the filled
-//! template reads back and verifies clean; planted mistakes are named, exactly those; the
-//! filled LaTeX compiles where LuaLaTeX is installed (always in CI).
+//! template reads back and verifies clean (the shading section's tables with the student's
+//! functions' output included); planted mistakes are named, exactly those; the filled LaTeX
+//! compiles where LuaLaTeX is installed (always in CI).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -83,10 +84,20 @@ fn a_filled_report_reads_back_and_every_number_follows_from_the_data() {
                 1 + camera + animation,
                 "{student}: a1.transform, each view matrix and each model matrix read"
             );
+            // The shading section: its six tables, each function's output filled in beside the
+            // kit's (the point P given); the ✍ cells are the student's to write.
+            let ids: Vec<&str> = parsed.tables.iter().map(|t| t.id.as_str()).collect();
+            assert_eq!(ids, cg_assign::cg_shading::report::TABLE_IDS, "{student} {lang}");
+            let shading = shading_numbers(derived.s.as_ref().unwrap());
+            assert!(shading > 40, "{student}: {shading} numbers of the student's functions");
             let v = verify::verify(&parsed, &derived);
             assert!(v.findings.is_empty(), "{student} {lang}: {:#?}", v.findings);
-            let least =
-                p.vertices.len() * 3 + p.faces.len() * 3 + 16 * parsed.matrices.len() + 121 * 5;
+            let least = p.vertices.len() * 3
+                + p.faces.len() * 3
+                + 16 * parsed.matrices.len()
+                + 121 * 5
+                + 6
+                + shading;
             assert!(
                 v.checked >= least,
                 "{student}: {} numbers checked, at least {least}",
@@ -94,6 +105,21 @@ fn a_filled_report_reads_back_and_every_number_follows_from_the_data() {
             );
         }
     }
+}
+
+/// How many numbers the filled shading tables hold from the student's functions.
+fn shading_numbers(data: &cg_assign::cg_shading::report::ShadingData) -> usize {
+    use cg_assign::cg_shading::report::{Cell, Value};
+    data.tables()
+        .iter()
+        .flat_map(|t| &t.rows)
+        .flat_map(|r| &r.cells)
+        .map(|c| match c {
+            Cell::Yours { yours: Ok(Value::Number(_)), .. } => 1,
+            Cell::Yours { yours: Ok(Value::Vector(_) | Value::Color(_)), .. } => 3,
+            _ => 0,
+        })
+        .sum()
 }
 
 /// Replaces the first occurrence of `from` after `anchor` on the line that starts with
@@ -168,6 +194,17 @@ fn planted_mistakes_are_named_exactly_and_nothing_else() {
         let moved = format!("{:.3}, {:.3}", (st[0] + 0.25) % 1.0 + 0.001, st[1]);
         let (text, tex_line) = plant(&text, "| 3 | 5 |", &first, &moved);
 
+        // 5. A wrong number in a shading table: the attenuation at d = 5 (the student's
+        // function's output, filled in) moved by 0.05, and one by hand at d = 10 written right.
+        let line = text.lines().find(|l| l.starts_with("| d = 5 |")).unwrap().to_owned();
+        let yours = line.split('|').nth(3).unwrap().trim().to_owned();
+        let moved = format!("{:.3}", yours.parse::<f64>().unwrap() + 0.05);
+        let (text, shading_line) = plant(&text, "| d = 5 |", &yours, &moved);
+        let line = text.lines().find(|l| l.starts_with("| d = 10 |")).unwrap().to_owned();
+        let at_10 = line.split('|').nth(3).unwrap().trim().to_owned();
+        let (text, _) =
+            plant(&text, "| d = 10 |", "✍", &format!("1/(kc + 10·kl + 100·kq) = {at_10}"));
+
         let (parsed, problems) = parse::parse_report(&text);
         assert!(problems.is_empty(), "{student}: {problems:?}");
         let v = verify::verify(&parsed, &derived);
@@ -175,7 +212,11 @@ fn planted_mistakes_are_named_exactly_and_nothing_else() {
             v.findings.iter().map(|f| (f.line, f.item.clone())).collect();
         found.sort();
         let matrix_item = v.findings.iter().find(|f| f.item.starts_with(&id));
-        assert_eq!(v.findings.len(), 4, "{student}: exactly the four planted mistakes: {found:#?}");
+        assert_eq!(v.findings.len(), 5, "{student}: exactly the five planted mistakes: {found:#?}");
+        assert!(
+            found.contains(&(shading_line, "s.attenuation d = 5 (column 3)".to_owned())),
+            "{student}: {found:?}"
+        );
         assert!(found.contains(&(normal_line, "F1 normal".to_owned())), "{student}: {found:?}");
         assert!(found.contains(&(order_line, "F2 order".to_owned())), "{student}: {found:?}");
         assert!(
@@ -224,7 +265,14 @@ fn the_filled_latex_report_compiles() {
         };
         let written = app::fill_to(&args, &kit(), lang).unwrap();
         assert!(written.missing.is_empty(), "{:?}", written.missing);
-        for name in ["report.tex", "report.md", "render-a1.png", "a1-front.svg", "a4-texture.png"] {
+        for name in [
+            "report.tex",
+            "report.md",
+            "render-a1.png",
+            "a1-front.svg",
+            "a4-texture.png",
+            "render-s.png",
+        ] {
             assert!(dir.join(name).is_file(), "{name} written");
         }
         let out = Command::new(&lualatex)

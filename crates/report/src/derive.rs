@@ -4,7 +4,8 @@
 //! sharing their helpers), from the student's `Impl` and `Spec`; [`derive()`] gathers every
 //! part of the assignments in the report ([`cg_assign::Variants::derive`]), each on its own, so
 //! a part whose function is still a stub (or panics, or returns unusable data) is [`Missing`]
-//! while the others still derive. A data file gives the polygon model alone
+//! while the others still derive. The shading part (`s`) always derives — its numbers follow
+//! from the assignment alone — and names each of the student's functions it could not call. A data file gives the polygon model alone
 //! ([`polygon_from_data`]).
 
 use cg_assign::{Derived, Impls, Variants};
@@ -22,6 +23,7 @@ pub fn derive(assignment: &Variants, impls: &Impls) -> (Derived, Vec<Missing>) {
 mod tests {
     use super::*;
 
+    use cg_assign::cg_shading::report::Cell;
     use cg_core::lang::Lang;
     use cg_harness::{StudentNumber, TableVersion};
 
@@ -35,11 +37,27 @@ mod tests {
             let (derived, missing) = derive(&assignment, &cg_assign::impls!(cg_exercises));
             assert_eq!(derived.student.as_deref(), Some(number));
             assert!(derived.a1.is_none() && derived.a2.is_none());
-            assert!(derived.a3.is_none() && derived.a4.is_none() && derived.s.is_none());
+            assert!(derived.a3.is_none() && derived.a4.is_none());
+            // The shading section's own values follow from the assignment alone; every cell of
+            // the student's functions is missing.
+            let s = derived.s.as_ref().expect("the kit's shading values derive");
+            for cell in s.tables().iter().flat_map(|t| &t.rows).flat_map(|r| &r.cells) {
+                if let Cell::Yours { yours, .. } = cell {
+                    assert!(yours.is_err(), "{cell:?}");
+                }
+            }
             let tasks: Vec<&str> = missing.iter().map(|m| m.task.as_str()).collect();
             // Vertices are todo!(), camera() does nothing, display() draws nothing,
-            // tex_range() is todo!().
-            assert_eq!(tasks, ["a1.t1", "a2.t2", "a3.t2", "a4.t1"], "{missing:?}");
+            // tex_range() is todo!(); each shading function is todo!() but vertex_normals(),
+            // which runs with its marker.
+            assert_eq!(
+                tasks,
+                [
+                    "a1.t1", "a2.t2", "a3.t2", "a4.t1", "s.t1", "s.t2", "s.t3", "s.t4", "s.t4",
+                    "s.t5", "s.t5", "s.t7", "s.t8"
+                ],
+                "{missing:?}"
+            );
             for m in &missing {
                 assert!(m.message(Lang::En).starts_with(&format!("{}: ", m.task)));
                 assert!(!m.why.ja.is_empty() && !m.why.en.is_empty(), "{m:?}");

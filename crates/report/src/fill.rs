@@ -10,6 +10,7 @@ use cg_core::lang::Lang;
 use crate::derive::Missing;
 use crate::figures::{self, View};
 use crate::model::Derived;
+use crate::shading;
 use crate::tables;
 use crate::template::{Format, latex_escape, not_yet};
 
@@ -34,7 +35,7 @@ pub mod files {
     /// The prepared image with the mapped rectangle outlined.
     pub const TEXTURE_SVG: &str = "a4-region.svg";
 
-    /// The rendered result of assignment `id` (`a1` … `a4`).
+    /// The rendered result of assignment `id` (`a1` … `a4`, `s`).
     #[must_use]
     pub fn render_png(id: &str) -> String {
         format!("render-{id}.png")
@@ -51,9 +52,9 @@ pub struct Context {
     pub student: Option<String>,
     /// The variant table, if known.
     pub table: Option<String>,
-    /// Each assignment's text (`a1` … `a4`), as `cg assignment` prints it.
+    /// Each assignment's text (`a1` … `a4`, `s`), as `cg assignment` prints it.
     pub assignments: BTreeMap<String, String>,
-    /// The assignments whose rendered image was written (`a1` … `a4`).
+    /// The assignments whose rendered image was written (`a1` … `a4`, `s`).
     pub renders: Vec<String>,
     /// What could not be derived, and why.
     pub missing: Vec<Missing>,
@@ -131,7 +132,14 @@ pub fn values(
             .map_or_else(|| missing_text(ctx, id, lang, format), |t| text_block(t, format));
         put(&format!("{id}.assignment"), text);
         let render = if ctx.renders.iter().any(|r| r == id) {
-            image(&files::render_png(id), lang.pick("実行結果", "the result"), format)
+            let caption = match id {
+                "s" => lang.pick(
+                    "実行結果: 左からフラット・グロー・フォンシェーディング",
+                    "the result: flat, Gouraud and Phong shading, from the left",
+                ),
+                _ => lang.pick("実行結果", "the result"),
+            };
+            image(&files::render_png(id), caption, format)
         } else {
             missing_text(ctx, id, lang, format)
         };
@@ -218,6 +226,19 @@ pub fn values(
         None => {
             for k in ["a4.formula", "a4.table", "a4.figure", "a4.sampler"] {
                 put(k, missing_text(ctx, "a4", lang, format));
+            }
+        }
+    }
+
+    match &derived.s {
+        Some(d) => {
+            for (k, value) in shading::values(d, lang, format) {
+                put(k, value);
+            }
+        }
+        None => {
+            for k in shading::KEYS {
+                put(k, missing_text(ctx, "s", lang, format));
             }
         }
     }

@@ -11,7 +11,10 @@
 //! - **reads** a student's report (Markdown) and names every number that does not follow from
 //!   the data, with the derived value and the tolerance used — [`parse`], [`verify`];
 //! - **fills** the report template (`report-template/`, Markdown and LaTeX, Japanese and
-//!   English) with the derived tables, figures and matrices — [`template`].
+//!   English) with the derived tables, figures and matrices — [`template`];
+//! - does the same for the shading section's tables (assignment `s`: the light model, the light
+//!   types, vertex normals, refraction), each number next to the student's functions' output —
+//!   [`shading`].
 
 pub mod app;
 pub mod derive;
@@ -19,6 +22,7 @@ pub mod figures;
 pub mod fill;
 pub mod model;
 pub mod parse;
+pub mod shading;
 pub mod tables;
 pub mod template;
 pub mod verify;

@@ -20,4 +20,5 @@ pub use cg_assign::cg_a1::report::PolygonData;
 pub use cg_assign::cg_a2::report::CameraData;
 pub use cg_assign::cg_a3::report::AnimationData;
 pub use cg_assign::cg_a4::report::{TexRow, TextureData};
+pub use cg_assign::cg_shading::report::ShadingData;
 pub use cg_harness::report::NamedMatrix;

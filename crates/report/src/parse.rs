@@ -9,6 +9,8 @@
 //! <!-- cg: a2.view.start -->                       a matrix tag: the first pmatrix after it
 //! $$ \begin{pmatrix} 1 & 0 & 0 & 0 \\ … \end{pmatrix} $$
 //! | 3 | 5 | (-2.000, 0.000, 0.000) | (0.300, 0.500) / (1.000, 0.500) |   a texture row
+//! <!-- cg: s.spot -->                              a shading table: the table after it
+//! | α = 15° | 0.966 | 0.933 | 0.933 |                 (rows by their label, see crate::shading)
 //! ```
 //!
 //! The reader is lenient: prose is ignored, and a line is a problem only where it clearly tries to
@@ -41,6 +43,8 @@ pub enum RowKind {
     Matrix,
     /// A texture row `| i | j | (x, y, z) | (s, t) |`.
     Texture,
+    /// A tagged table of the shading section (`<!-- cg: s.spot -->` and the table after it).
+    Table,
     /// The data as a whole (no vertices, numbering with gaps, a face naming a missing vertex):
     /// only from [`polygon_from_text`].
     Data,
@@ -148,6 +152,8 @@ pub struct ParsedReport {
     pub matrices: Vec<ParsedMatrix>,
     /// Texture rows (each (i, j) once).
     pub tex: Vec<ParsedTex>,
+    /// The shading section's tagged tables ([`crate::shading`]), in the order of the text.
+    pub tables: Vec<crate::shading::ParsedTable>,
 }
 
 impl ParsedReport {
@@ -158,6 +164,7 @@ impl ParsedReport {
             && self.faces.is_empty()
             && self.matrices.is_empty()
             && self.tex.is_empty()
+            && self.tables.is_empty()
     }
 }
 
@@ -202,7 +209,7 @@ pub fn parse_number(s: &str) -> Option<Written> {
 // Scanning a line
 
 /// Full-width punctuation read as ASCII (one char for one char, so the rest of the line stays).
-fn normalize(line: &str) -> String {
+pub(crate) fn normalize(line: &str) -> String {
     // LaTeX's escaped braces `\{ … \}` read as braces (a `\\` row end stays as it is).
     let mut unescaped = String::with_capacity(line.len());
     let mut chars = line.chars().peekable();
@@ -235,7 +242,7 @@ fn normalize(line: &str) -> String {
 
 /// The text clipped to 80 characters (79 and `…`), trimmed.
 /// A row as a message quotes it: at most 80 characters, invisible characters named (`<U+200B>`).
-fn clip(s: &str) -> String {
+pub(crate) fn clip(s: &str) -> String {
     let s = s.trim();
     if s.chars().count() <= 80 {
         cg_core::quote::visible(s)
@@ -826,6 +833,10 @@ impl Reader {
         let tags = self.tags(text, &line_starts);
         let mut seen: HashMap<String, usize> = HashMap::new();
         for (k, tag) in tags.iter().enumerate() {
+            // A shading table's tag: its table is read by `crate::shading`, not as a matrix.
+            if crate::shading::is_table_tag(&tag.id) {
+                continue;
+            }
             let region_end = tags.get(k + 1).map_or(text.len(), |t| t.start);
             let region = &text[tag.end..region_end];
             const BEGIN: &str = "\\begin{pmatrix}";
@@ -946,11 +957,12 @@ impl Reader {
     }
 }
 
-/// Reads every vertex row, face row, tagged matrix and texture row of a report (Markdown; LaTeX
-/// tags `% cg: ID` are read too). Lenient: prose is ignored; a line that clearly tries to be a
-/// row but does not parse, a vertex, face, tag or grid vertex given twice with different
-/// numbers, a tag with no `pmatrix` after it, a matrix that is not 4×4 and an entry that is not
-/// a plain number are [`ParseProblem`]s (in the order of the text), and the row is left out.
+/// Reads every vertex row, face row, tagged matrix, texture row and tagged shading table
+/// ([`crate::shading`]) of a report (Markdown; LaTeX tags `% cg: ID` are read too). Lenient:
+/// prose is ignored; a line that clearly tries to be a row but does not parse, a vertex, face,
+/// tag or grid vertex given twice with different numbers, a tag with no `pmatrix` (or, for a
+/// shading table, no table) after it, a matrix that is not 4×4 and an entry that is not a plain
+/// number are [`ParseProblem`]s (in the order of the text), and the row is left out.
 /// The same row repeated with the same numbers (a derivation quoting the table) is kept once.
 /// Never panics.
 #[must_use]
@@ -968,6 +980,9 @@ pub fn parse_report(text: &str) -> (ParsedReport, Vec<ParseProblem>) {
         reader.tex_row(k + 1, line);
     }
     reader.matrices(&lines.join("\n"));
+    let (tables, problems) = crate::shading::parse_tables(&lines);
+    reader.report.tables = tables;
+    reader.problems.extend(problems);
     reader.problems.sort_by_key(|p| p.line);
     (reader.report, reader.problems)
 }

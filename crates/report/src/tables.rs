@@ -65,12 +65,12 @@ fn face_vertices(f: [u32; 3]) -> String {
 }
 
 /// A Markdown table cell: `|` escaped, line breaks as spaces.
-fn md_cell(text: &str) -> String {
+pub(crate) fn md_cell(text: &str) -> String {
     text.replace('|', "\\|").replace(['\r', '\n'], " ")
 }
 
 /// Text for LaTeX: [`latex_escape`], and the two symbols of the products (`·`, `°`) as math.
-fn tex_text(text: &str) -> String {
+pub(crate) fn tex_text(text: &str) -> String {
     latex_escape(text).replace('·', "\\(\\cdot\\)").replace('°', "\\(^\\circ\\)")
 }
 
@@ -96,7 +96,7 @@ fn tex_table_env(spec: &str, header: &[&str], rows: &[Vec<String>]) -> String {
 }
 
 /// A table in the given format; LaTeX cells are given already escaped.
-fn table(format: Format, spec: &str, header: &[&str], rows: &[Vec<String>]) -> String {
+pub(crate) fn table(format: Format, spec: &str, header: &[&str], rows: &[Vec<String>]) -> String {
     match format {
         Format::Markdown => md_table(header, rows),
         Format::Latex => tex_table_env(spec, header, rows),

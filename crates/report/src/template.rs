@@ -117,8 +117,8 @@ pub fn not_yet(why: &str, lang: Lang, format: Format) -> String {
 }
 
 /// Text made safe for LaTeX: `\ { } $ & # ^ _ % ~` escaped, `--` kept as two hyphens (a command
-/// line's `--release`, not an en dash), and the symbols the text fonts lack (`≤ ≥ θ φ ω π ⁶ …`)
-/// set in math.
+/// line's `--release`, not an en dash), and the symbols the text fonts lack (`≤ ≥ θ φ ω π η ⁶ ⁿ
+/// ₁ …`) set in math or as super- and subscripts.
 #[must_use]
 pub fn latex_escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
@@ -146,6 +146,12 @@ pub fn latex_escape(text: &str) -> String {
             'φ' => out.push_str("$\\varphi$"),
             'ω' => out.push_str("$\\omega$"),
             'π' => out.push_str("$\\pi$"),
+            'η' => out.push_str("$\\eta$"),
+            'ⁿ' => out.push_str("\\textsuperscript{n}"),
+            '₀'..='₉' => {
+                let digit = char::from_digit(c as u32 - '₀' as u32, 10).unwrap_or('0');
+                out.push_str(&format!("\\textsubscript{{{digit}}}"));
+            }
             '⁰' | '¹' | '²' | '³' | '⁴' | '⁵' | '⁶' | '⁷' | '⁸' | '⁹' | '⁻' => {
                 let plain = match c {
                     '⁰' => '0',
@@ -223,6 +229,11 @@ mod tests {
         assert_eq!(latex_escape("a_1 & 50% {x}"), "a\\_1 \\& 50\\% \\{x\\}");
         assert_eq!(latex_escape("--release, 0 ≤ θ"), "-{}-release, 0 $\\le$ $\\theta$");
         assert_eq!(latex_escape("10⁻⁶"), "10\\textsuperscript{-}\\textsuperscript{6}");
+        assert_eq!(
+            latex_escape("θ₁, (R·V)ⁿ"),
+            "$\\theta$\\textsubscript{1}, (R·V)\\textsuperscript{n}"
+        );
+        assert_eq!(latex_escape("η × Σ"), "$\\eta$ × Σ");
         assert!(not_yet("a1.t1", Lang::Ja, Format::Markdown).contains("まだ導出できません: a1.t1"));
         assert_eq!(not_yet("a1.t1", Lang::En, Format::Latex), "\\textbf{(not derived yet: a1.t1)}");
     }

@@ -28,7 +28,8 @@ pub struct Finding {
     /// The 1-based line of the report.
     pub line: usize,
     /// What it is: `V3`, `F2 normal`, `F4 order`, `F4 vertices`,
-    /// `a2.view.start (row 1, column 4)`, `tex (3, 5)`, `tex (3, 5) position`.
+    /// `a2.view.start (row 1, column 4)`, `tex (3, 5)`, `tex (3, 5) position`,
+    /// `s.spot α = 15° (column 3)` (a shading table's row by its label, and the column).
     pub item: String,
     /// What the report says, as written (`{ 0.0, 0.53, 0.85 }`).
     pub written: String,
@@ -100,6 +101,10 @@ fn item_ja(item: &str) -> String {
         if let Some(head) = out.strip_suffix(en) {
             out = format!("{head}{ja}");
         }
+    }
+    if let Some(k) = out.find(" (column ") {
+        let column = out[k + 9..].trim_end_matches(')').to_owned();
+        out = format!("{}（{column} 列目）", &out[..k]);
     }
     if let Some(k) = out.find(" (row ") {
         let cell = out[k + 6..].trim_end_matches(')').replace(", column ", " 行 ");
@@ -185,18 +190,18 @@ fn face_text(v: [u32; 3]) -> String {
 
 /// Collects findings, notes and the count of compared numbers.
 #[derive(Default)]
-struct Checker {
-    out: Verification,
+pub(crate) struct Checker {
+    pub(crate) out: Verification,
 }
 
 impl Checker {
-    fn note(&mut self, ja: impl Into<String>, en: impl Into<String>) {
+    pub(crate) fn note(&mut self, ja: impl Into<String>, en: impl Into<String>) {
         self.out.notes.push(Text::new(ja, en));
     }
 
     /// Compares written numbers with derived ones component by component; one finding naming
     /// every component that is off.
-    fn tuple(
+    pub(crate) fn tuple(
         &mut self,
         line: usize,
         item: String,
@@ -636,6 +641,7 @@ pub fn verify(report: &ParsedReport, derived: &Derived) -> Verification {
         }
     }
     c.matrices(&report.matrices, derived);
+    crate::shading::verify(&mut c, &report.tables, derived.s.as_ref());
     match &derived.a4 {
         Some(t) => {
             c.texture(&report.tex, t);

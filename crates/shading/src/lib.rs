@@ -117,10 +117,9 @@ pub struct S;
 impl cg_harness::Assignment for S {
     const ID: &'static str = ID;
     const TITLE: (&'static str, &'static str) = ("第11回 シェーディング", "shading");
-    const IN_REPORT: bool = false;
     type Spec = Spec;
     type Impl = Impl;
-    type Report = ();
+    type Report = report::ShadingData;
 
     fn variant(rng: &mut cg_harness::VariantRng) -> Spec {
         variant(rng)
@@ -138,7 +137,7 @@ impl cg_harness::Assignment for S {
         checks(spec, imp)
     }
 
-    fn report(spec: &Spec, imp: &Impl) -> cg_harness::report::Part<()> {
+    fn report(spec: &Spec, imp: &Impl) -> cg_harness::report::Part<report::ShadingData> {
         report::report(spec, imp)
     }
 

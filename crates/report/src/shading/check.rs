@@ -1,0 +1,245 @@
+//! Checking the shading section's tables: every number written in a cell where the kit's row has
+//! a value, against that value, with the tolerance of every other number of the report
+//! ([`crate::verify::tolerance`]).
+
+use cg_assign::cg_shading::report::{
+    Cell, LIGHT_Q, ShadingData, TABLE_IDS, Table, Value, highlight_factor, light_table_at,
+};
+use cg_core::glam::Vec3;
+use cg_harness::Text;
+
+use super::fill::value_text;
+use super::{ParsedRow, ParsedTable, label_matches};
+use crate::model::Written;
+use crate::parse::{clip, parse_number};
+use crate::verify::{Checker, Finding};
+
+/// What a cell holds, as far as the checker is concerned.
+#[derive(Clone, Debug, PartialEq)]
+enum Written3 {
+    /// No digits: not a value (`✍`, `—`, `None`, words).
+    Skip,
+    /// Digits that are not a plain number or a tuple of them.
+    Bad,
+    /// The numbers written: one, or the entries of a tuple.
+    Numbers(Vec<Written>),
+}
+
+/// A cell's value: the text after the last `=` or `≈` (a working that ends in its value), without
+/// `$`, `\(`, `\)`, backticks and a trailing `°`; one plain number, or numbers in `( )`, `{ }` or
+/// `[ ]`.
+fn read_cell(text: &str) -> Written3 {
+    if !text.chars().any(|c| c.is_ascii_digit()) {
+        return Written3::Skip;
+    }
+    let mut s = text.replace("\\approx", "≈").replace("^\\circ", "°").replace("\\circ", "°");
+    for x in ["\\(", "\\)", "\\,", "\\;", "\\!", "\\left", "\\right"] {
+        s = s.replace(x, "");
+    }
+    let s: String = s.chars().filter(|c| !matches!(c, '$' | '`' | '*')).collect();
+    let last = s.rsplit(['=', '≈']).next().unwrap_or("").trim();
+    let last = last.trim_end_matches(['°', '度']).trim();
+    let inner = [('(', ')'), ('{', '}'), ('[', ']')]
+        .iter()
+        .find_map(|&(open, close)| last.strip_prefix(open)?.strip_suffix(close));
+    let parts: Vec<&str> = match inner {
+        Some(inner) => inner.split(',').map(str::trim).collect(),
+        None => vec![last],
+    };
+    match parts.iter().map(|p| parse_number(p)).collect::<Option<Vec<Written>>>() {
+        Some(numbers) if !numbers.is_empty() => Written3::Numbers(numbers),
+        _ => Written3::Bad,
+    }
+}
+
+/// The item of a finding: `s.spot α = 15° (column 3)` (column 1 is the label).
+fn item(table: &str, row: &ParsedRow, cell: usize) -> String {
+    format!("{table} {} (column {})", clip(&row.label), cell + 2)
+}
+
+/// A finding about a cell that holds the wrong kind of value (or a value where there is none).
+fn wrong_kind(c: &mut Checker, row: &ParsedRow, k: usize, item: String, kit: &Value, why: Text) {
+    c.out.checked += 1;
+    c.out.findings.push(Finding {
+        line: row.line,
+        item,
+        written: clip(&row.cells[k]),
+        derived: value_text(kit),
+        tolerance: None,
+        why,
+    });
+}
+
+/// Checks one written cell against the kit's value.
+fn cell(c: &mut Checker, table: &str, row: &ParsedRow, k: usize, kit: &Value) {
+    let text = &row.cells[k];
+    let it = item(table, row, k);
+    let numbers = match read_cell(text) {
+        Written3::Skip => return,
+        Written3::Bad => {
+            let why = Text::new(
+                "数として読めません: 数そのもの（`0.577`）か括弧で囲んだ 3 つの数（`(0.577, 0.577, 0.577)`）、途中の式を書くときは最後に `= 0.577` と値を書きます",
+                "this does not read as a number: write a plain number (`0.577`) or three numbers in parentheses (`(0.577, 0.577, 0.577)`); after a working, end with `= 0.577`",
+            );
+            wrong_kind(c, row, k, it, kit, why);
+            return;
+        }
+        Written3::Numbers(n) => n,
+    };
+    match (kit, numbers.len()) {
+        (Value::Number(d), 1) => c.tuple(row.line, it, &numbers, &[*d], &["value"], false),
+        (Value::Vector(d), 3) => c.tuple(row.line, it, &numbers, d, &["x", "y", "z"], false),
+        (Value::Color(d), 3) => c.tuple(row.line, it, &numbers, d, &["r", "g", "b"], false),
+        (Value::Nothing, _) => {
+            let why = Text::new(
+                "ここには値がありません: 全反射で屈折光はありません（None）",
+                "there is no value here: under total internal reflection there is no refracted ray (None)",
+            );
+            wrong_kind(c, row, k, it, kit, why);
+        }
+        (Value::Number(_), count) => {
+            let why = Text::new(
+                format!("数が 1 つのはずですが {count} 個あります"),
+                format!("one number is expected here, {count} are written"),
+            );
+            wrong_kind(c, row, k, it, kit, why);
+        }
+        (Value::Vector(_) | Value::Color(_), count) => {
+            let why = Text::new(
+                format!("括弧で囲んだ 3 つの数のはずですが {count} 個あります"),
+                format!("three numbers in parentheses are expected here, {count} are written"),
+            );
+            wrong_kind(c, row, k, it, kit, why);
+        }
+    }
+}
+
+/// The kit's table to check `written` against: `kit` itself, or for [`LIGHT_Q`] the table at the
+/// point written in its row Q (checked to lie on the sphere, and noted when it is not in the
+/// highlight).
+fn kit_for(c: &mut Checker, written: &ParsedTable, kit: &Table, data: &ShadingData) -> Table {
+    if written.id != LIGHT_Q {
+        return kit.clone();
+    }
+    let Some((row, k, point)) = chosen_point(written, kit) else { return kit.clone() };
+    let length = f64::from(point.length());
+    let it = item(&written.id, row, k);
+    c.out.checked += 3;
+    if (length - 1.0).abs() > 0.01 {
+        c.out.findings.push(Finding {
+            line: row.line,
+            item: it,
+            written: clip(&row.cells[k]),
+            derived: "|Q| = 1".to_owned(),
+            tolerance: Some(0.01),
+            why: Text::new(
+                format!(
+                    "Q は半径 1 の球の上の点です（|Q| = {length:.4}）。表はこの方向の球の上の点 Q/|Q| で確かめます"
+                ),
+                format!(
+                    "Q is a point on the sphere of radius 1 (|Q| = {length:.4}); the table is checked at Q/|Q|, the point of the sphere in its direction"
+                ),
+            ),
+        });
+    }
+    let factor = highlight_factor(&data.setup, point);
+    if factor < 0.5 {
+        c.note(
+            format!(
+                "{} 行目: Q はハイライトの中にありません（max(R·V, 0)^n = {factor:.3}、ハイライトの中心で 1）",
+                row.line
+            ),
+            format!(
+                "line {}: Q is not in the highlight (max(R·V, 0)^n = {factor:.3}, 1 at its centre)",
+                row.line
+            ),
+        );
+    }
+    light_table_at(&data.setup, LIGHT_Q, point)
+}
+
+/// The written row of the chosen point, its cell and the point, when it reads as three numbers.
+fn chosen_point<'a>(written: &'a ParsedTable, kit: &Table) -> Option<(&'a ParsedRow, usize, Vec3)> {
+    for kit_row in &kit.rows {
+        let Some(k) = kit_row.cells.iter().position(|c| matches!(c, Cell::Chosen(_))) else {
+            continue;
+        };
+        let row = written.rows.iter().find(|r| label_matches(&r.label, &kit_row.label))?;
+        let Written3::Numbers(n) = read_cell(row.cells.get(k)?) else { return None };
+        let [x, y, z] = n.as_slice() else { return None };
+        let p = Vec3::new(x.value as f32, y.value as f32, z.value as f32);
+        return p.is_finite().then_some((row, k, p));
+    }
+    None
+}
+
+/// Checks the shading section's tables `written` against `data` (see the module); a table the
+/// report lacks, a row whose label the kit does not know, and tables without data are notes.
+pub(crate) fn verify(c: &mut Checker, written: &[ParsedTable], data: Option<&ShadingData>) {
+    let Some(data) = data else {
+        if !written.is_empty() {
+            c.note(
+                "シェーディングのデータがないので、シェーディングの表は確かめていません",
+                "there is no shading data, so the shading tables were not checked",
+            );
+        }
+        return;
+    };
+    for table in written {
+        let Some(kit) = data.table(&table.id) else { continue };
+        let kit = kit_for(c, table, kit, data);
+        for row in &table.rows {
+            let Some(kit_row) = kit.rows.iter().find(|r| label_matches(&row.label, &r.label))
+            else {
+                if row.cells.iter().any(|t| matches!(read_cell(t), Written3::Numbers(_))) {
+                    let known: Vec<&str> =
+                        kit.rows.iter().map(|r| r.label.en.as_str()).collect::<Vec<_>>();
+                    let known = known.join(", ");
+                    c.note(
+                        format!(
+                            "{} 行目: 表 {} に `{}` という行はないので確かめていません（あるのは {known}）",
+                            row.line,
+                            table.id,
+                            clip(&row.label)
+                        ),
+                        format!(
+                            "line {}: table {} has no row `{}`, so it was not checked (rows: {known})",
+                            row.line,
+                            table.id,
+                            clip(&row.label)
+                        ),
+                    );
+                }
+                continue;
+            };
+            for (k, kit_cell) in kit_row.cells.iter().enumerate().take(row.cells.len()) {
+                // The chosen point is read by `kit_for`; here only when it is not three numbers.
+                if matches!(kit_cell, Cell::Chosen(_))
+                    && matches!(read_cell(&row.cells[k]), Written3::Numbers(ref n) if n.len() == 3)
+                {
+                    continue;
+                }
+                if let Some(value) = kit_cell.kit() {
+                    cell(c, &table.id, row, k, &value);
+                }
+            }
+        }
+    }
+    let missing: Vec<&str> =
+        TABLE_IDS.iter().copied().filter(|id| !written.iter().any(|t| t.id == *id)).collect();
+    if !missing.is_empty() {
+        let list = missing.join(", ");
+        c.note(
+            format!("レポートにタグ付きのシェーディングの表がありません: {list}"),
+            format!("no tagged shading table found in the report for: {list}"),
+        );
+    }
+}
+
+#[cfg(test)]
+pub(super) fn read_for_test(text: &str) -> Option<Vec<f64>> {
+    match read_cell(text) {
+        Written3::Numbers(n) => Some(n.iter().map(|w| w.value).collect()),
+        _ => None,
+    }
+}

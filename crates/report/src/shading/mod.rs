@@ -1,0 +1,201 @@
+//! The shading section (assignment `s`): its tables written into the template ([`values`]), read
+//! back from a report ([`parse_tables`]) and checked against the kit's values (by
+//! [`crate::verify::verify`]).
+//!
+//! The data is `s`'s own (`cg_shading::report`, [`crate::model::ShadingData`]): six tables, each with a tag, rows found by
+//! their label (the first column) and cells that hold either text, a number to work out by hand
+//! (`✍`), a given number, or the student's function's output. The notation:
+//!
+//! ```text
+//! <!-- cg: s.spot -->                                   the tag (LaTeX: % cg: s.spot)
+//! | angle from the axis | cos α by hand ✍ | factor by hand ✍ | your spot_factor() |
+//! |---|---|---|---|
+//! | α = 15° | 0.966 | 0.933 | 0.933 |                   a row: its label, then its cells
+//! ```
+//!
+//! A table is the run of rows (Markdown `| … |`, or LaTeX `… & … \\`) after its tag, up to the
+//! next tag, heading, blank line after the rows or `\end{…}`. A cell is checked when the kit's
+//! row has a number there and the cell holds digits: a plain number (`0.933`), three numbers in
+//! parentheses (`(0.577, 0.577, 0.577)`), or a working that ends in one (`1/√3 = 0.577`, the
+//! value after the last `=` or `≈`; a trailing `°` is allowed). A cell without digits (`✍`, `—`,
+//! `None`) is not checked. The point Q of `s.light.q` may be the student's own: the kit derives
+//! that table from the Q written in it.
+
+use cg_assign::cg_shading::report::TABLE_IDS;
+use cg_core::lang::Lang;
+
+use crate::parse::{ParseProblem, RowKind, clip, normalize};
+use crate::tables::tex_text;
+
+mod check;
+mod fill;
+
+pub(crate) use check::verify;
+pub use fill::{KEYS, values};
+
+/// Whether `id` is the tag of a shading table (the matrix reader leaves those alone).
+#[must_use]
+pub fn is_table_tag(id: &str) -> bool {
+    TABLE_IDS.contains(&id)
+}
+
+/// One row of a tagged table as written.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParsedRow {
+    /// The 1-based line.
+    pub line: usize,
+    /// The first cell, trimmed.
+    pub label: String,
+    /// The other cells, trimmed, in order.
+    pub cells: Vec<String>,
+}
+
+/// A tagged table of the shading section as written.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParsedTable {
+    /// The 1-based line of the tag.
+    pub line: usize,
+    /// The tag's ID (one of [`TABLE_IDS`]).
+    pub id: String,
+    /// Its rows (the header too; a separator row `|---|` is left out).
+    pub rows: Vec<ParsedRow>,
+}
+
+/// The ID of a tag on `line` (`<!-- cg: ID -->` or `% cg: ID`), whatever the ID.
+fn tag_on(line: &str) -> Option<String> {
+    if let Some(rest) = line.trim_start().strip_prefix('%')
+        && let Some(id) = rest.trim_start().strip_prefix("cg:")
+    {
+        return Some(id.trim().to_owned());
+    }
+    let start = line.find("<!--")?;
+    let rest = line[start + 4..].trim_start().strip_prefix("cg:")?;
+    let end = rest.find("-->")?;
+    Some(rest[..end].trim().to_owned())
+}
+
+/// The cells of a table row: Markdown `| a | b |`, or LaTeX `a & b \\`.
+fn row_cells(line: &str) -> Option<Vec<String>> {
+    let trimmed = line.trim();
+    if let Some(inner) = trimmed.strip_prefix('|') {
+        let inner = inner.strip_suffix('|').filter(|i| !i.ends_with('\\')).unwrap_or(inner);
+        // `\|` is a `|` inside a cell (`|E − P|`), not a column break.
+        let mut cells = vec![String::new()];
+        let mut chars = inner.chars().peekable();
+        while let Some(c) = chars.next() {
+            match c {
+                '\\' if chars.peek() == Some(&'|') => {
+                    chars.next();
+                    if let Some(s) = cells.last_mut() {
+                        s.push('|');
+                    }
+                }
+                '|' => cells.push(String::new()),
+                _ => {
+                    if let Some(s) = cells.last_mut() {
+                        s.push(c);
+                    }
+                }
+            }
+        }
+        return Some(cells.into_iter().map(|c| c.trim().to_owned()).collect());
+    }
+    let body = trimmed.strip_suffix("\\hline").unwrap_or(trimmed).trim_end();
+    let body = body.strip_suffix("\\\\")?;
+    // `\&` is an escaped ampersand inside a cell, not a column break.
+    let cells: Vec<String> =
+        body.replace("\\&", "\u{0}").split('&').map(|c| c.trim().replace('\u{0}', "\\&")).collect();
+    (cells.len() > 1).then_some(cells)
+}
+
+/// Whether the row is a Markdown separator (`|---|:--:|`).
+fn is_separator(cells: &[String]) -> bool {
+    cells.iter().all(|c| !c.is_empty() && c.chars().all(|x| matches!(x, '-' | ':' | ' ')))
+}
+
+/// Whether the line ends a table region: a heading.
+fn is_heading(line: &str) -> bool {
+    let t = line.trim_start();
+    t.starts_with('#')
+        || t.starts_with("\\section")
+        || t.starts_with("\\subsection")
+        || t.starts_with("\\subsubsection")
+}
+
+/// Every shading table of `lines` (the report's lines, as the reader normalises them), and the
+/// tags with no table after them as problems.
+#[must_use]
+pub fn parse_tables(lines: &[String]) -> (Vec<ParsedTable>, Vec<ParseProblem>) {
+    let mut tables = Vec::new();
+    let mut problems = Vec::new();
+    for (k, line) in lines.iter().enumerate() {
+        let Some(id) = tag_on(line).filter(|id| is_table_tag(id)) else { continue };
+        let mut rows = Vec::new();
+        for (j, next) in lines.iter().enumerate().skip(k + 1) {
+            let started = !rows.is_empty();
+            if tag_on(next).is_some() || is_heading(next) {
+                break;
+            }
+            if let Some(cells) = row_cells(next) {
+                if is_separator(&cells) {
+                    continue;
+                }
+                let mut cells = cells.into_iter();
+                let label = cells.next().unwrap_or_default();
+                rows.push(ParsedRow { line: j + 1, label, cells: cells.collect() });
+                continue;
+            }
+            let t = next.trim();
+            if started && (t.is_empty() || t.starts_with("\\end{") || !t.starts_with('\\')) {
+                break;
+            }
+        }
+        if rows.is_empty() {
+            problems.push(ParseProblem {
+                line: k + 1,
+                found: clip(line),
+                expected: cg_harness::Text::new(
+                    format!("タグ `{id}` のあとに、その表（`| 量 | … |` の行）"),
+                    format!("the table after the tag `{id}` (rows `| quantity | … |`)"),
+                ),
+                kind: RowKind::Table,
+            });
+        }
+        tables.push(ParsedTable { line: k + 1, id, rows });
+    }
+    (tables, problems)
+}
+
+/// A label or text of the tables for LaTeX: escaped as the other tables' text is (the symbols
+/// the fonts lack set in math), `✍` left out (LaTeX marks the cells to write with `\yours{}`)
+/// and `…` as `\dots`.
+#[must_use]
+pub fn tex_label(text: &str) -> String {
+    tex_text(&text.replace(" ✍", "").replace('✍', "")).replace('…', "\\dots{}")
+}
+
+/// A label as the checker compares it: read as the report reader reads a line, without spaces,
+/// `$`, `\(`, `\)`, backticks, asterisks and braces, `−` as `-`, in lower case.
+fn canonical(label: &str) -> String {
+    normalize(label)
+        .replace("\\(", "")
+        .replace("\\)", "")
+        .chars()
+        .filter(|c| !c.is_whitespace() && !matches!(c, '$' | '`' | '*' | '{' | '}'))
+        .map(|c| if c == '−' { '-' } else { c })
+        .flat_map(char::to_lowercase)
+        .collect()
+}
+
+/// Whether a written label names the row labelled `label` (in either language, as Markdown or
+/// as LaTeX writes it).
+fn label_matches(written: &str, label: &cg_harness::Text) -> bool {
+    let w = canonical(written);
+    [Lang::Ja, Lang::En].iter().any(|&lang| {
+        let l = label.get(lang);
+        w == canonical(l) || w == canonical(&tex_label(l))
+    })
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,298 @@
+//! The shading section on the kit's own stubs (whose kit values derive without the student's
+//! code): filled, read back, worked by hand (the ✍ cells written with the kit's values) and
+//! checked clean in Markdown and LaTeX; a wrong number is named at its line, a Q of the
+//! student's own is followed, and cells read as the notation says.
+
+use cg_assign::Variants;
+use cg_assign::cg_shading::report::{Cell, LIGHT_Q, ShadingData, TABLE_IDS, light_table_at};
+use cg_core::glam::Vec3;
+use cg_core::lang::Lang;
+use cg_harness::{StudentNumber, TableVersion};
+
+use super::check::read_for_test as read;
+use super::fill::value_text;
+use super::{label_matches, row_cells, tag_on};
+use crate::fill::{self, Context};
+use crate::model::Derived;
+use crate::parse::parse_report;
+use crate::tables::md_cell;
+use crate::template::{self, Format};
+use crate::verify::verify;
+
+fn derived(student: &str) -> Derived {
+    let n: StudentNumber = student.parse().unwrap();
+    let a = Variants::for_student(&n, TableVersion::V1);
+    crate::derive::derive(&a, &cg_assign::impls!(cg_exercises)).0
+}
+
+fn filled(d: &Derived, lang: Lang, format: Format) -> String {
+    template::fill(
+        template::template(lang, format),
+        &fill::values(d, &Context::default(), lang, format),
+    )
+    .unwrap()
+}
+
+/// `text` with every ✍ (`\yours{}`) cell of the shading tables written with the kit's value, as
+/// a student who worked every one out would.
+fn by_hand(text: &str, data: &ShadingData, format: Format) -> String {
+    let mut table = None;
+    let mut out = Vec::new();
+    for line in text.lines() {
+        if let Some(id) = tag_on(line) {
+            table = data.table(&id);
+        }
+        let (Some(t), Some(cells)) = (table, row_cells(line)) else {
+            out.push(line.to_owned());
+            continue;
+        };
+        let Some(row) = t.rows.iter().find(|r| label_matches(&cells[0], &r.label)) else {
+            out.push(line.to_owned());
+            continue;
+        };
+        let mut cells = cells;
+        for (k, cell) in row.cells.iter().enumerate() {
+            if let Cell::Hand(v) = cell {
+                cells[k + 1] = match format {
+                    Format::Markdown => value_text(v),
+                    Format::Latex => format!("${}$", value_text(v)),
+                };
+            }
+        }
+        out.push(match format {
+            Format::Markdown => {
+                let cells: Vec<String> = cells.iter().map(|c| md_cell(c)).collect();
+                format!("| {} |", cells.join(" | "))
+            }
+            Format::Latex => format!("{} \\\\", cells.join(" & ")),
+        });
+    }
+    out.join("\n")
+}
+
+#[test]
+fn cells_read_a_number_a_tuple_or_the_end_of_a_working() {
+    assert_eq!(read("0.577"), Some(vec![0.577]));
+    assert_eq!(read("1/√3 = 0.577"), Some(vec![0.577]));
+    assert_eq!(read("1/√3 ≈ 0.577"), Some(vec![0.577]));
+    assert_eq!(read("$\\cos 15^\\circ \\approx 0.966$"), Some(vec![0.966]));
+    assert_eq!(read("34.40°"), Some(vec![34.4]));
+    assert_eq!(read("(0.1, -0.2, 0.3)"), Some(vec![0.1, -0.2, 0.3]));
+    assert_eq!(read("$(0.100, −0.200, 0.300)$"), Some(vec![0.1, -0.2, 0.3]));
+    assert_eq!(read("(a, b) = { 1, 2, 3 }"), Some(vec![1.0, 2.0, 3.0]));
+    for skipped_or_bad in ["✍", "—", "None", "\\yours{}", "0.5 (cos 60°)", "1e-3"] {
+        assert_eq!(read(skipped_or_bad), None, "{skipped_or_bad}");
+    }
+}
+
+#[test]
+fn the_stubs_fill_every_table_and_a_report_worked_by_hand_checks_clean() {
+    for student in ["12345678", "20250003"] {
+        let d = derived(student);
+        let data = d.s.as_ref().expect("the kit's values derive without the student's code");
+        for lang in [Lang::Ja, Lang::En] {
+            for format in [Format::Markdown, Format::Latex] {
+                let text = filled(&d, lang, format);
+                let (parsed, problems) = parse_report(&text);
+                assert!(problems.is_empty(), "{student} {lang} {format:?}: {problems:?}");
+                let ids: Vec<&str> = parsed.tables.iter().map(|t| t.id.as_str()).collect();
+                assert_eq!(ids, TABLE_IDS, "{student} {lang} {format:?}");
+                for (t, kit) in parsed.tables.iter().zip(data.tables()) {
+                    // The header and every row of the kit's, in order.
+                    assert_eq!(t.rows.len(), kit.rows.len() + 1, "{} {format:?}", t.id);
+                    for (w, k) in t.rows[1..].iter().zip(&kit.rows) {
+                        assert!(label_matches(&w.label, &k.label), "{w:?} {k:?}");
+                    }
+                }
+                // Untouched: only the points P and Q are numbers (the student's cells say
+                // "not yet"); nothing is wrong.
+                let v = verify(&parsed, &d);
+                assert!(v.findings.is_empty(), "{student} {lang} {format:?}: {:#?}", v.findings);
+                assert_eq!(v.checked, 6, "{student} {lang} {format:?}");
+                // Worked by hand: every ✍ checked, nothing wrong.
+                let worked = by_hand(&text, data, format);
+                let (parsed, problems) = parse_report(&worked);
+                assert!(problems.is_empty(), "{problems:?}");
+                let v = verify(&parsed, &d);
+                assert!(v.findings.is_empty(), "{student} {lang} {format:?}: {:#?}", v.findings);
+                let hand: usize = data
+                    .tables()
+                    .iter()
+                    .flat_map(|t| &t.rows)
+                    .flat_map(|r| &r.cells)
+                    .map(|c| match c {
+                        Cell::Hand(v) => read(&value_text(v)).map_or(0, |n| n.len()),
+                        _ => 0,
+                    })
+                    .sum();
+                assert!(hand > 80, "{hand}");
+                assert_eq!(v.checked, 6 + hand, "{student} {lang} {format:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_wrong_number_is_named_with_its_line_item_and_derived_value() {
+    let d = derived("12345678");
+    let data = d.s.as_ref().unwrap();
+    for lang in [Lang::Ja, Lang::En] {
+        let worked = by_hand(&filled(&d, lang, Format::Markdown), data, Format::Markdown);
+        // The spot factor at α = 15° (cos² 15° = 0.933 for this student) written as 0.966, the
+        // cosine itself: a mistake a student makes.
+        let lines: Vec<&str> = worked.lines().collect();
+        let at = lines.iter().position(|l| l.starts_with("| α = 15° |")).unwrap();
+        let cells = row_cells(lines[at]).unwrap();
+        assert_eq!(cells[1..3], ["0.966", "0.933"], "{}", lines[at]);
+        let wrong =
+            worked.replacen("| α = 15° | 0.966 | 0.933 |", "| α = 15° | 0.966 | 0.966 |", 1);
+        let (parsed, _) = parse_report(&wrong);
+        let v = verify(&parsed, &d);
+        assert_eq!(v.findings.len(), 1, "{:#?}", v.findings);
+        let f = &v.findings[0];
+        assert_eq!((f.line, f.item.as_str()), (at + 1, "s.spot α = 15° (column 3)"));
+        assert_eq!((f.written.as_str(), f.derived.as_str()), ("0.966", "0.933"));
+        assert_eq!(f.tolerance.map(|t| (t * 1e3).round()), Some(1.0));
+        let m = f.message(Lang::Ja);
+        assert!(m.contains(&format!("{} 行目", at + 1)) && m.contains("（3 列目）"), "{m}");
+        // A cell that does not read as a number is named too; one with no digits is not checked.
+        let odd = worked
+            .replacen("| α = 15° | 0.966 | 0.933 |", "| α = 15° | cos 15° | … |", 1)
+            .replacen("| d = 5 | 0.571 |", "| d = 5 | 1/1.75 (≈ 0.571) |", 1);
+        let (parsed, _) = parse_report(&odd);
+        let v = verify(&parsed, &d);
+        let items: Vec<&str> = v.findings.iter().map(|f| f.item.as_str()).collect();
+        assert_eq!(items, ["s.attenuation d = 5 (column 2)", "s.spot α = 15° (column 2)"]);
+    }
+}
+
+#[test]
+fn a_point_q_of_the_students_own_is_followed_and_must_lie_on_the_sphere() {
+    let d = derived("12345678");
+    let data = d.s.as_ref().unwrap();
+    let text = by_hand(&filled(&d, Lang::En, Format::Markdown), data, Format::Markdown);
+    let q_line = text.lines().find(|l| l.starts_with("| Q |")).unwrap().to_owned();
+    let kit_q = row_cells(&q_line).unwrap()[2].clone();
+    // The student's own Q, on the sphere and in the highlight; the table worked at it.
+    let own = Vec3::new(0.3, 0.43, 0.851);
+    let own_text = "(0.300, 0.430, 0.851)";
+    let mut theirs = data.clone();
+    theirs.light_q = light_table_at(&data.setup, LIGHT_Q, own);
+    let start = text.find("<!-- cg: s.light.q -->").unwrap();
+    let end = start + text[start..].find("<!-- cg: s.attenuation -->").unwrap();
+    let section = text[start..end].replace(&kit_q, own_text);
+    let own_report = format!("{}{}{}", &text[..start], refill(&section, &theirs), &text[end..]);
+    let (parsed, problems) = parse_report(&own_report);
+    assert!(problems.is_empty(), "{problems:?}");
+    let v = verify(&parsed, &d);
+    assert!(v.findings.is_empty(), "{:#?}", v.findings);
+    assert!(v.notes.iter().all(|n| !n.en.contains("highlight")), "{:?}", v.notes);
+    // The kit's numbers at its own Q are wrong at the student's Q: the check follows the Q
+    // written, not the kit's.
+    let mixed = text.replacen(&kit_q, own_text, 1);
+    let (parsed, _) = parse_report(&mixed);
+    let v = verify(&parsed, &d);
+    assert!(v.findings.iter().any(|f| f.item.starts_with("s.light.q L")), "{:#?}", v.findings);
+    // A Q off the sphere is named; one out of the highlight is a note.
+    let off = own_report.replacen(own_text, "(0.600, 0.860, 1.702)", 1);
+    let (parsed, _) = parse_report(&off);
+    let v = verify(&parsed, &d);
+    assert!(v.findings.iter().any(|f| f.item == "s.light.q Q (column 3)"), "{:#?}", v.findings);
+    let short = own_report.replacen(own_text, "(0.300, 0.430)", 1);
+    let (parsed, _) = parse_report(&short);
+    let v = verify(&parsed, &d);
+    assert!(v.findings.iter().any(|f| f.item == "s.light.q Q (column 3)"), "{:#?}", v.findings);
+    let dark = own_report.replacen(own_text, "(0.000, -1.000, 0.000)", 1);
+    let (parsed, _) = parse_report(&dark);
+    let v = verify(&parsed, &d);
+    assert!(v.notes.iter().any(|n| n.en.contains("not in the highlight")), "{:?}", v.notes);
+}
+
+/// The light table of `section` (Markdown, its tag first) with the by-hand cells written from
+/// `data`'s table at the student's Q.
+fn refill(section: &str, data: &ShadingData) -> String {
+    let mut out = String::new();
+    for line in section.lines() {
+        let rewritten = match row_cells(line) {
+            Some(cells) if cells.len() == 4 => {
+                match data.light_q.rows.iter().find(|r| label_matches(&cells[0], &r.label)) {
+                    Some(row) => {
+                        let mut cells = cells;
+                        if let Cell::Hand(v) = &row.cells[1] {
+                            cells[2] = value_text(v);
+                        }
+                        let cells: Vec<String> = cells.iter().map(|c| md_cell(c)).collect();
+                        format!("| {} |", cells.join(" | "))
+                    }
+                    None => line.to_owned(),
+                }
+            }
+            _ => line.to_owned(),
+        };
+        out.push_str(&rewritten);
+        out.push('\n');
+    }
+    out
+}
+
+#[test]
+fn without_shading_data_the_tables_are_a_note_and_a_lone_tag_a_problem() {
+    let d = derived("12345678");
+    let text = filled(&d, Lang::En, Format::Markdown);
+    let (parsed, _) = parse_report(&text);
+    let v = verify(&parsed, &Derived::default());
+    assert!(v.findings.is_empty());
+    assert!(v.notes.iter().any(|n| n.en.contains("no shading data")), "{:?}", v.notes);
+    let (parsed, problems) = parse_report("<!-- cg: s.spot -->\n\nno table here\n\n# next\n");
+    assert!(parsed.tables[0].rows.is_empty());
+    assert_eq!(problems.len(), 1, "{problems:?}");
+    assert_eq!(problems[0].line, 1);
+    assert!(problems[0].message(Lang::En).contains("the table after the tag `s.spot`"));
+    // The tag of a table is not a matrix tag: no "pmatrix expected" problem.
+    let (_, problems) = parse_report("<!-- cg: s.attenuation -->\n| d = 1 | 0.909 | — |\n");
+    assert!(problems.is_empty(), "{problems:?}");
+}
+
+#[test]
+fn edited_tables_never_panic_and_every_finding_names_its_line() {
+    let d = derived("20250003");
+    let data = d.s.as_ref().unwrap();
+    let mut seed: u64 = 0x5eed_5ade;
+    let mut next = |n: usize| {
+        seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+        ((seed >> 33) as usize) % n.max(1)
+    };
+    const SIGNIFICANT: [char; 22] = [
+        '|', '&', '\\', '$', '(', ')', ',', '.', '=', '≈', '-', '0', '5', '9', ' ', '\n', '✍', '°',
+        '{', '}', '<', '%',
+    ];
+    for format in [Format::Markdown, Format::Latex] {
+        let text = by_hand(&filled(&d, Lang::Ja, format), data, format);
+        let tag = text.find("cg: s.light.p").unwrap();
+        let start = text[..tag].rfind('\n').map_or(0, |k| k + 1);
+        let section: Vec<char> = text[start..].chars().collect();
+        for _ in 0..300 {
+            let mut chars = section.clone();
+            for _ in 0..1 + next(12) {
+                let at = next(chars.len());
+                match next(4) {
+                    0 => chars[at] = SIGNIFICANT[next(SIGNIFICANT.len())],
+                    1 => {
+                        chars.remove(at);
+                    }
+                    2 => chars.insert(at, chars[at]),
+                    _ => chars.insert(at, SIGNIFICANT[next(SIGNIFICANT.len())]),
+                }
+            }
+            let edited: String = chars.into_iter().collect();
+            let (parsed, problems) = parse_report(&edited);
+            let lines = edited.lines().count();
+            assert!(problems.iter().all(|p| (1..=lines).contains(&p.line)), "{problems:?}");
+            let v = verify(&parsed, &d);
+            for f in &v.findings {
+                assert!((1..=lines).contains(&f.line), "{f:?}");
+                assert!(!f.message(Lang::Ja).is_empty() && !f.message(Lang::En).is_empty());
+            }
+        }
+    }
+}
