@@ -1,5 +1,8 @@
 //! `cg handout`: the student's copy has no solutions, its stubs are the pristine ones, and it
 //! builds, runs and checks on its own (every check "not done yet" or failing, none passing).
+//! Then the student's whole day in that copy, on the reference answers: `assignment --save`,
+//! `check` (all pass), `view` of each assignment, `report fill`, `report check` (exit status 0,
+//! no false positive) and LuaLaTeX on the filled template.
 
 use std::path::Path;
 use std::process::Command;
@@ -8,7 +11,7 @@ mod common;
 use common::root;
 
 #[test]
-fn the_handout_builds_and_checks_on_its_own_without_solutions() {
+fn the_handout_builds_and_checks_on_its_own_and_a_students_day_runs_in_it() {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("handout-copy");
     let _ = std::fs::remove_dir_all(&dir);
     let o = common::cg(&root(), &["handout", dir.to_str().unwrap(), "--lang", "en"]);
@@ -73,6 +76,68 @@ fn the_handout_builds_and_checks_on_its_own_without_solutions() {
     for r in reports {
         assert!(r["total"].as_u64().unwrap() > 0, "{}: no checks", r["assignment"]);
         assert_eq!(r["passed"], 0, "{}: a pristine stub passed a check", r["assignment"]);
+    }
+
+    // The student's day, on the reference answers: the solutions' files in place of the stubs
+    // (their stub blocks are comments), then every command the day needs, as a student runs
+    // them in the copy.
+    for id in ["a1", "a2", "a3", "a4", "s"] {
+        let file = format!("{id}.rs");
+        std::fs::copy(
+            root().join("solutions/src").join(&file),
+            dir.join("exercises/src").join(&file),
+        )
+        .unwrap();
+    }
+    let run = |args: &[&str]| {
+        let mut all = vec!["run", "--offline", "--locked", "--quiet", "--"];
+        all.extend_from_slice(args);
+        all.extend_from_slice(&["--lang", "en"]);
+        let o = cargo(&all);
+        let text = format!(
+            "{}\n{}",
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&o.stderr)
+        );
+        (o.status.code(), text)
+    };
+    // 2. The student number, recorded once.
+    let (code, text) = run(&["assignment", "--student", "12345678", "--save"]);
+    assert_eq!(code, Some(0), "{text}");
+    assert!(dir.join("exercises/student.toml").exists(), "{text}");
+    // 3. Every check passes (exit status 0), with no student number on the command line.
+    let (code, text) = run(&["check"]);
+    assert_eq!(code, Some(0), "the reference answers must pass every check:\n{text}");
+    assert!(!text.contains('✗') && !text.contains("not done yet"), "{text}");
+    // 4. Every view draws the student's picture (no reference in the students' copy).
+    for id in ["a1", "a2", "a3", "a4", "s"] {
+        let (code, text) = run(&["view", id, "--png", "-o", "out"]);
+        assert_eq!(code, Some(0), "{text}");
+        assert!(dir.join(format!("out/view-{id}-yours.png")).exists(), "{id}: {text}");
+    }
+    // 5–6. The report filled from the student's own results, then checked: no false positive.
+    let (code, text) = run(&["report", "fill"]);
+    assert_eq!(code, Some(0), "{text}");
+    for file in ["report/report.md", "report/report.tex"] {
+        assert!(dir.join(file).exists(), "{file}: {text}");
+    }
+    let (code, text) = run(&["report", "check"]);
+    assert_eq!(code, Some(0), "the untouched filled report must check clean:\n{text}");
+    // 7. The LaTeX template compiles (where LuaLaTeX is installed; CI installs it).
+    let lualatex =
+        Command::new("lualatex").arg("--version").output().is_ok_and(|o| o.status.success());
+    if lualatex {
+        let o = Command::new("lualatex")
+            .args(["-interaction=nonstopmode", "-halt-on-error", "report.tex"])
+            .current_dir(dir.join("report"))
+            .output()
+            .unwrap();
+        let log = String::from_utf8_lossy(&o.stdout);
+        assert!(o.status.success(), "lualatex:\n{}", &log[log.len().saturating_sub(3000)..]);
+        assert!(dir.join("report/report.pdf").exists());
+    } else {
+        assert!(std::env::var_os("CI").is_none(), "CI installs LuaLaTeX (scripts/setup.sh)");
+        eprintln!("note: lualatex is not on PATH; the report's LaTeX is not compiled here");
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
