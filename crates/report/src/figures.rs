@@ -368,7 +368,8 @@ fn xml_escape(text: &str) -> String {
 
 /// Where a label's text goes relative to its point: a unit direction (y down) away from the
 /// drawing's centre for vertices, none for faces (centred), and a stacking index for labels
-/// that share a point.
+/// whose texts would overlap (points that share a place, or lie closer than a label's width
+/// across and a line's height down: `V12` beside `V11`, the faces seen edge on).
 struct Placement {
     dir: Vec2,
     stack: usize,
@@ -379,7 +380,7 @@ fn placements(labels: &[Label], centre: Vec2, outward: bool) -> Vec<Placement> {
         .iter()
         .enumerate()
         .map(|(k, l)| {
-            let stack = labels[..k].iter().filter(|o| o.at.distance(l.at) < 1.0).count();
+            let stack = labels[..k].iter().filter(|o| overlap(o, l)).count();
             let dir = if outward {
                 let d = l.at - centre;
                 if d.length() > 1e-3 { d / d.length() } else { Vec2::new(0.0, -1.0) }
@@ -389,6 +390,13 @@ fn placements(labels: &[Label], centre: Vec2, outward: bool) -> Vec<Placement> {
             Placement { dir, stack }
         })
         .collect()
+}
+
+/// Whether the texts of two labels would overlap where they are drawn: closer than the wider
+/// one's width across (about 0.62 em a character, 11-unit type) and a line's height down.
+fn overlap(a: &Label, b: &Label) -> bool {
+    let chars = a.text.chars().count().max(b.text.chars().count()) as f32;
+    (a.at.x - b.at.x).abs() < 0.62 * 11.0 * chars && (a.at.y - b.at.y).abs() < LINE
 }
 
 /// The line height used to stack labels that share a point.
@@ -867,6 +875,29 @@ pub fn texture_tikz(t: &TextureData, image_path: &str, lang: Lang) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn labels_that_would_overlap_are_stacked_and_the_others_are_not() {
+        let label = |text: &str, x: f32, y: f32| Label {
+            text: text.into(),
+            at: Vec2::new(x, y),
+            hidden: false,
+        };
+        // V12 four units right of V11 (one vertex behind the other, nearly): "V12V11" before.
+        let near =
+            [label("V11", 100.0, 100.0), label("V12", 104.0, 100.0), label("V3", 200.0, 100.0)];
+        let stacks: Vec<usize> =
+            placements(&near, Vec2::splat(120.0), true).iter().map(|p| p.stack).collect();
+        assert_eq!(stacks, [0, 1, 0]);
+        // Four faces seen edge on, their centroids in a row: each on its own line.
+        let edge_on: Vec<Label> =
+            (22..26).map(|k| label(&format!("F{k}"), 50.0 + k as f32, 80.0)).collect();
+        let stacks: Vec<usize> =
+            placements(&edge_on, Vec2::splat(120.0), false).iter().map(|p| p.stack).collect();
+        assert_eq!(stacks, [0, 1, 2, 3]);
+        // A line's height apart: no overlap.
+        assert!(!overlap(&label("V1", 0.0, 0.0), &label("V2", 0.0, LINE)));
+    }
     use crate::tables::tests::{assert_balanced, pyramid, texture_data};
 
     /// Every `<text>` of a class: its text and its `x`, `y`, after checking the SVG is XML.
