@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 use cg_core::lang::Lang;
-use cg_grade::{Config, Graded, Options};
+use cg_grade::{Config, Options};
 
 /// Options of `cg grade`.
 #[derive(clap::Args)]
@@ -41,24 +41,57 @@ pub struct Args {
     unsafe_no_sandbox: bool,
 }
 
+/// What `cg grade` and `cg grade-one` start from: the kit (with its solutions), the grading
+/// configuration and its text, and the sandbox.
+pub(crate) struct Setup {
+    pub kit: PathBuf,
+    pub config: Config,
+    pub config_text: String,
+    pub isolation: cg_sandbox::Isolation,
+}
+
+impl Setup {
+    /// Finds the kit, reads `config`, and requires the sandbox (or `unsafe_no_sandbox`).
+    pub(crate) fn new(
+        config: Option<&std::path::Path>,
+        unsafe_no_sandbox: bool,
+        lang: Lang,
+    ) -> Result<Setup, String> {
+        let kit = crate::kit_path(None, ".");
+        if !kit.join("solutions/Cargo.toml").exists() {
+            return Err(lang
+                .pick(
+                    "solutions/ がありません（採点は、キット本体のリポジトリで行います）",
+                    "there is no solutions/ here: grading runs in the kit's own repository",
+                )
+                .to_owned());
+        }
+        let config_text = match config {
+            Some(path) => {
+                std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?
+            }
+            None => String::new(),
+        };
+        let config = Config::parse(&config_text).map_err(|e| e.message(lang).to_owned())?;
+        let isolation = cg_sandbox::detect();
+        cg_grade::require_isolation(isolation, unsafe_no_sandbox)
+            .map_err(|why| why.get(lang).to_owned())?;
+        eprintln!("{}: {}", lang.pick("隔離", "isolation"), isolation.describe(lang));
+        Ok(Setup { kit, config, config_text, isolation })
+    }
+}
+
+/// The limits of one run of the student's code: `time_limit` seconds, `memory_limit` MiB.
+pub(crate) fn limits(time_limit: u64, memory_limit: u64) -> cg_sandbox::Limits {
+    cg_sandbox::Limits {
+        wall: Duration::from_secs(time_limit.max(1)),
+        memory_bytes: memory_limit.max(64) << 20,
+        ..cg_sandbox::Limits::default()
+    }
+}
+
 /// `cg grade`.
 pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
-    let kit = crate::kit_path(None, ".");
-    if !kit.join("solutions/Cargo.toml").exists() {
-        return Err(lang
-            .pick(
-                "solutions/ がありません（採点は、キット本体のリポジトリで行います）",
-                "there is no solutions/ here: grading runs in the kit's own repository",
-            )
-            .to_owned());
-    }
-    let config_text = match &args.config {
-        Some(path) => {
-            std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?
-        }
-        None => String::new(),
-    };
-    let config = Config::parse(&config_text).map_err(|e| e.message(lang).to_owned())?;
     if !(args.moodle_max_grade.is_finite() && args.moodle_max_grade > 0.0) {
         return Err(lang
             .pick(
@@ -73,37 +106,27 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         }
         None => None,
     };
-    let isolation = cg_sandbox::detect();
-    cg_grade::require_isolation(isolation, args.unsafe_no_sandbox)
-        .map_err(|why| why.get(lang).to_owned())?;
+    let setup = Setup::new(args.config.as_deref(), args.unsafe_no_sandbox, lang)?;
     let options = Options {
-        kit,
+        kit: setup.kit,
         submissions: args.submissions.clone(),
         out: args.out.clone(),
-        config,
-        config_text,
+        config: setup.config,
+        config_text: setup.config_text,
         jobs: args
             .jobs
             .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from)),
-        limits: cg_sandbox::Limits {
-            wall: Duration::from_secs(args.time_limit.max(1)),
-            memory_bytes: args.memory_limit.max(64) << 20,
-            ..cg_sandbox::Limits::default()
-        },
+        limits: limits(args.time_limit, args.memory_limit),
         build_limit: Duration::from_secs(1800),
-        isolation,
+        isolation: setup.isolation,
         lang,
         roster,
     };
-    eprintln!("{}: {}", lang.pick("隔離", "isolation"), isolation.describe(lang));
-    let progress = |g: &Graded| {
-        let max = g.max_score.map(|m| format!(" / {m}")).unwrap_or_default();
-        let note = if g.skipped { lang.pick("（前回の結果）", " (kept)") } else { "" };
-        let flag = g.flag.as_ref().map(|f| format!(" [{f}]")).unwrap_or_default();
-        println!("{} ({}): {}{max}{note}{flag}", g.name, g.entry, g.score);
-    };
-    let graded =
-        cg_grade::grade(&options, cg_sandbox::launch, &progress).map_err(|e| e.to_string())?;
+    // A line per submission (logs), and a bar on a terminal: building, N of M, time left.
+    let progress = crate::progress::Progress::new(lang);
+    let graded = cg_grade::grade_with(&options, cg_sandbox::launch, &|e| progress.event(e), None);
+    progress.finish();
+    let graded = graded.map_err(|e| e.to_string())?;
     println!(
         "{} {} {}: {}",
         graded.len(),

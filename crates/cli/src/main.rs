@@ -14,11 +14,13 @@ mod assignments;
 mod bench;
 mod doctor;
 mod grade;
+mod gradescope;
 mod handout;
 mod inspect;
 mod label;
 #[cfg(test)]
 mod printed;
+mod progress;
 mod render;
 mod watch;
 
@@ -69,6 +71,10 @@ enum Command {
     Bench(bench::Args),
     /// Grade every submission (a folder, a zip, or Moodle's "download all submissions") with the kit's own checks, in a sandbox; Moodle's grading worksheet and feedback zip back (instructors) / 提出物（フォルダ・zip・Moodle の一括ダウンロード）をまとめて採点し、Moodle 用の評定ワークシートとフィードバックを書く（教員用）
     Grade(grade::Args),
+    /// Grade one submission as `cg grade` grades each, with Gradescope's results.json (Gradescope, or a batch system's job per submission) / 提出物 1 件を採点し、Gradescope の results.json を書く（Gradescope や、提出物ごとにジョブを動かすバッチシステム用。教員用）
+    GradeOne(gradescope::GradeOneArgs),
+    /// Write the autograder zip Gradescope runs (setup.sh, run_autograder, the kit with solutions/; never hand it out) / Gradescope が動かすオートグレーダーの zip を書く（solutions/ を含むので配らないこと。教員用）
+    Autograder(gradescope::AutograderArgs),
     /// Which renderers and windows work on this machine, and why, each problem with its fix / このマシンで使えるレンダラとウィンドウ、使えない理由と対処
     Doctor(doctor::Args),
     /// The student's functions for `cg check`, which starts it (not for use by hand)
@@ -115,6 +121,8 @@ fn main() -> ExitCode {
         Some(Command::Handout(args)) => ok(handout::run(&args, lang)),
         Some(Command::Bench(args)) => ok(bench::run(&args, lang)),
         Some(Command::Grade(args)) => ok(grade::run(&args, lang)),
+        Some(Command::GradeOne(args)) => ok(gradescope::grade_one(&args, lang)),
+        Some(Command::Autograder(args)) => ok(gradescope::autograder(&args, lang)),
         Some(Command::Doctor(args)) => ok(doctor::run(&args, lang)),
         Some(Command::Worker(args)) => ok(assignments::worker(&args)),
         None => ok(render::main_job(lang)),

@@ -30,6 +30,13 @@ fn files(dir: &Path, out: &mut Vec<PathBuf>) {
     }
 }
 
+/// Whether the word at the start of `text` is a file name (`課題1.zip`, `out/図.png`): it has a
+/// `.` or `/` and ends in an ASCII letter or digit. A Japanese sentence after a command does not.
+fn names_a_file(text: &str) -> bool {
+    let word = text.split_whitespace().next().unwrap_or_default();
+    word.contains(['.', '/']) && word.chars().last().is_some_and(|c| c.is_ascii_alphanumeric())
+}
+
 /// The commands after [`PREFIX`] in `text`: each up to the end of its line, quote, backquote,
 /// table cell, parenthesis, a run of two spaces (an aligned comment) or the first non-ASCII
 /// character (the Japanese sentence around it); an ellipsis `…` is kept (a placeholder).
@@ -41,6 +48,12 @@ fn commands(text: &str) -> Vec<String> {
         for (i, c) in rest.char_indices() {
             if c == '…' {
                 // `--student …`: a placeholder, kept so the command counts as a synopsis.
+                end = i + c.len_utf8();
+                break;
+            }
+            if !c.is_ascii() && names_a_file(&rest[i..]) {
+                // A Japanese file name (`課題1のダウンロード.zip`): an argument the reader
+                // replaces, kept as a placeholder.
                 end = i + c.len_utf8();
                 break;
             }
@@ -77,7 +90,7 @@ fn every_command_the_kit_prints_parses() {
             continue;
         }
         for command in commands(&text) {
-            if command.contains(['<', '[', '{', '…']) {
+            if command.contains(['<', '[', '{', '…']) || !command.is_ascii() {
                 synopses += 1;
                 continue;
             }
@@ -105,7 +118,8 @@ fn the_scan_finds_commands_where_they_are_written() {
                 \"… (cargo run --release -- view s) …\"\n\
                 cargo run --release -- check s    View: cargo run --release -- view s\n\
                 cargo run --release -- report check <report.md>\n\
-                then `cargo run --release -- check a1 --student …` (yours)";
+                then `cargo run --release -- check a1 --student …` (yours)\n\
+                cargo run --release -- grade 課題1のダウンロード.zip --out grades";
     assert_eq!(
         commands(text),
         [
@@ -115,7 +129,8 @@ fn the_scan_finds_commands_where_they_are_written() {
             "check s",
             "view s",
             "report check <report.md>",
-            "check a1 --student …"
+            "check a1 --student …",
+            "grade 課"
         ]
     );
     // A command that cannot parse is caught: the test above would fail on it.

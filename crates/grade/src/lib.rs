@@ -14,6 +14,10 @@
 //! `results.json` ([`result`]), with a class table (`class.csv`) and the class's most common
 //! mistakes (`summary.md`). A submission whose result already exists with the same hash (its
 //! files, the config and the kit) is skipped, so an interrupted run picks up where it stopped.
+//!
+//! [`gradescope`] grades one submission the same way ([`grade_with`] with one entry) for
+//! Gradescope and batch systems that run a job per submission, with Gradescope's `results.json`
+//! and the autograder zip; [`progress`] tells a front end how a long run goes.
 
 use std::collections::{BTreeMap, VecDeque};
 use std::path::{Path, PathBuf};
@@ -25,8 +29,10 @@ use cg_sandbox::{Isolation, Job, Launch, Limits, SandboxError};
 
 pub mod build;
 pub mod config;
+pub mod gradescope;
 pub mod handout;
 pub mod moodle;
+pub mod progress;
 pub mod result;
 pub mod roster;
 pub mod screen;
@@ -221,6 +227,15 @@ struct Pending {
 /// and hashed, with their result names.
 fn collect(options: &Options, kit_hash: &str) -> Result<Vec<Pending>, GradeError> {
     let entries = moodle::input::entries(&options.submissions).map_err(|e| GradeError::Io(e.en))?;
+    collect_from(options, kit_hash, entries)
+}
+
+/// [`collect`] of the given entries.
+fn collect_from(
+    options: &Options,
+    kit_hash: &str,
+    entries: Vec<moodle::input::Entry>,
+) -> Result<Vec<Pending>, GradeError> {
     let mut used: BTreeMap<String, Vec<String>> = BTreeMap::new();
     let mut pending = Vec::new();
     for source in entries {
@@ -648,10 +663,31 @@ pub fn grade(
     launcher: Launcher,
     progress: &(dyn Fn(&Graded) + Sync),
 ) -> Result<Vec<Graded>, GradeError> {
+    let on = |e: progress::Event<'_>| {
+        if let progress::Event::Graded(g) = e {
+            progress(g);
+        }
+    };
+    grade_with(options, launcher, &on, None)
+}
+
+/// [`grade`], telling `on` how it goes ([`progress::Event`]); with `single`, the one entry to
+/// grade instead of the entries of `options.submissions` ([`gradescope::grade_one`]).
+///
+/// # Errors
+/// As [`grade`].
+pub fn grade_with(
+    options: &Options,
+    launcher: Launcher,
+    on: &(dyn Fn(progress::Event<'_>) + Sync),
+    single: Option<moodle::input::Entry>,
+) -> Result<Vec<Graded>, GradeError> {
+    let progress = |g: &Graded| on(progress::Event::Graded(g));
     let io = |p: &Path, e: std::io::Error| GradeError::Io(format!("{}: {e}", p.display()));
     std::fs::create_dir_all(&options.out).map_err(|e| io(&options.out, e))?;
     let out = options.out.canonicalize().map_err(|e| io(&options.out, e))?;
     let subs = options.submissions.canonicalize().map_err(|e| io(&options.submissions, e))?;
+    on(progress::Event::Reading);
     // Neither the results nor the submissions go into a handout or the kit's hash.
     let skip = |p: &Path| {
         let p = p.canonicalize().unwrap_or_else(|_| p.to_path_buf());
@@ -670,7 +706,10 @@ pub fn grade(
     if stubs.len() != submission::MODULES.len() {
         return Err(GradeError::Io("the kit's stubs are incomplete".into()));
     }
-    let pending = collect(options, &kit_hash)?;
+    let pending = match single {
+        Some(entry) => collect_from(options, &kit_hash, vec![entry])?,
+        None => collect(options, &kit_hash)?,
+    };
     // The roster's students no entry is bound to: listed in the summary.
     let absent: Vec<(String, String)> = options.roster.as_ref().map_or_else(Vec::new, |r| {
         r.rows
@@ -702,9 +741,14 @@ pub fn grade(
     let failure: Mutex<Option<GradeError>> = Mutex::new(None);
     let waiting = queue.lock().map(|q| q.iter().filter(|p| p.files.is_ok()).count()).unwrap_or(0);
     let slots = options.jobs.max(1).min(waiting.max(1));
+    on(progress::Event::Start {
+        entries: done.len() + queue.lock().map(|q| q.len()).unwrap_or(0),
+        kept: done.len(),
+    });
     let first = Slot::at(&out, 0);
     let mut pristine = String::new();
     if waiting > 0 {
+        on(progress::Event::Building);
         prepare_first(&first, options, &kit_hash, &stubs, &skip)?;
         pristine = slot_content(&first.kit).map_err(|e| io(&first.kit, e))?;
         // The copies are made before any slot starts building.
@@ -712,6 +756,7 @@ pub fn grade(
             prepare_copy(&Slot::at(&out, k), &first, &kit_hash)
                 .map_err(|m| GradeError::Io(m.en))?;
         }
+        on(progress::Event::Built);
     }
     std::thread::scope(|scope| {
         for k in 0..slots {
@@ -801,6 +846,28 @@ pub fn grade(
     Ok(done)
 }
 
+/// Options for the unit tests: the kit and the output under `root`, one job, bubblewrap.
+#[cfg(test)]
+pub(crate) fn test_options(
+    root: &Path,
+    submissions: &Path,
+    roster: Option<roster::Roster>,
+) -> Options {
+    Options {
+        kit: root.to_path_buf(),
+        submissions: submissions.to_path_buf(),
+        out: root.join("out"),
+        config: Config::default(),
+        config_text: String::new(),
+        jobs: 1,
+        limits: Limits::default(),
+        build_limit: std::time::Duration::from_secs(1),
+        isolation: Isolation::Bubblewrap,
+        lang: Lang::En,
+        roster,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -848,19 +915,7 @@ mod tests {
 
     /// Options for [`collect`] alone, of the submissions in `root/subs`.
     fn collect_options(root: &Path, roster: Option<roster::Roster>) -> Options {
-        Options {
-            kit: root.to_path_buf(),
-            submissions: root.join("subs"),
-            out: root.join("out"),
-            config: Config::default(),
-            config_text: String::new(),
-            jobs: 1,
-            limits: Limits::default(),
-            build_limit: std::time::Duration::from_secs(1),
-            isolation: Isolation::Bubblewrap,
-            lang: Lang::En,
-            roster,
-        }
+        test_options(root, &root.join("subs"), roster)
     }
 
     #[test]

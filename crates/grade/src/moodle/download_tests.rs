@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use cg_core::lang::Lang;
-use cg_sandbox::{Isolation, Limits};
+use cg_sandbox::Isolation;
 
 use super::fake;
 use super::input::{Entry, entries};
@@ -173,19 +173,7 @@ fn what_is_not_a_participant_is_listed_and_a_hostile_download_refused() {
 }
 
 fn options(root: &Path, submissions: &Path, roster: Option<roster::Roster>) -> Options {
-    Options {
-        kit: root.to_path_buf(),
-        submissions: submissions.to_path_buf(),
-        out: root.join("out"),
-        config: Config::default(),
-        config_text: String::new(),
-        jobs: 1,
-        limits: Limits::default(),
-        build_limit: std::time::Duration::from_secs(1),
-        isolation: Isolation::Bubblewrap,
-        lang: Lang::En,
-        roster,
-    }
+    crate::test_options(root, submissions, roster)
 }
 
 #[test]

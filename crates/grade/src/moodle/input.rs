@@ -59,6 +59,25 @@ enum Source {
 }
 
 impl Entry {
+    /// One submission on its own, named after its file or folder: what `cg grade-one` grades
+    /// (Gradescope's `/autograder/submission`). A `.zip` is read as an entry of a submissions
+    /// folder; a folder as a Moodle participant's upload (an `exercises/` tree, in it or in a
+    /// zip of it, else the loose files `a1.rs` … `s.rs` and `student.toml`), since students
+    /// upload the files one by one as often as the folder.
+    #[must_use]
+    pub fn single(path: &Path) -> Entry {
+        let name = path
+            .file_name()
+            .map_or_else(|| "submission".to_owned(), |n| n.to_string_lossy().into_owned());
+        let folder = std::fs::symlink_metadata(path).is_ok_and(|m| m.is_dir());
+        let source = if folder {
+            Source::Folder(vec![(String::new(), path.to_path_buf())])
+        } else {
+            Source::Path(path.to_path_buf())
+        };
+        Entry { name, source }
+    }
+
     /// The Moodle participant, when the entry is one.
     #[must_use]
     pub fn participant(&self) -> Option<Name> {

@@ -335,7 +335,7 @@ fn comment(result: &Value, lang: Lang) -> String {
     })
 }
 
-/// What [`write`] wrote.
+/// What [`write()`] wrote.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Written {
     /// Participants in the worksheet and the zip.

@@ -1,0 +1,101 @@
+//! The progress of `cg grade` and `cg grade-one`: a plain line per submission (stdout, for
+//! logs) and, when stderr is a terminal, an `indicatif` bar under them — building, N of M
+//! graded, time left. Not a terminal (a log, a test): the bar hides itself.
+
+use std::io::IsTerminal as _;
+use std::time::Duration;
+
+use cg_core::lang::Lang;
+use cg_grade::Graded;
+use cg_grade::progress::Event;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+
+/// The plain line of one submission.
+#[must_use]
+pub fn line(g: &Graded, lang: Lang) -> String {
+    let max = g.max_score.map(|m| format!(" / {m}")).unwrap_or_default();
+    let note = if g.skipped { lang.pick("（前回の結果）", " (kept)") } else { "" };
+    let flag = g.flag.as_ref().map(|f| format!(" [{f}]")).unwrap_or_default();
+    format!("{} ({}): {}{max}{note}{flag}", g.name, g.entry, g.score)
+}
+
+/// The lines and the bar.
+pub struct Progress {
+    bar: ProgressBar,
+    lang: Lang,
+}
+
+impl Progress {
+    /// A bar on stderr when it is a terminal, hidden otherwise.
+    #[must_use]
+    pub fn new(lang: Lang) -> Progress {
+        let target = if std::io::stderr().is_terminal() {
+            ProgressDrawTarget::stderr()
+        } else {
+            ProgressDrawTarget::hidden()
+        };
+        let bar = ProgressBar::with_draw_target(None, target);
+        bar.set_style(spinner());
+        Progress { bar, lang }
+    }
+
+    /// Shows `event`.
+    pub fn event(&self, event: Event<'_>) {
+        let l = |ja: &'static str, en: &'static str| self.lang.pick(ja, en);
+        match event {
+            Event::Reading => {
+                self.bar.set_message(l(
+                    "提出物とキットを読んでいます",
+                    "reading the submissions and the kit",
+                ));
+                self.bar.enable_steady_tick(Duration::from_millis(200));
+            }
+            Event::Graded(g) => {
+                let text = line(g, self.lang);
+                self.bar.suspend(|| println!("{text}"));
+                if !g.skipped {
+                    self.bar.inc(1);
+                }
+            }
+            Event::Start { entries, kept } => {
+                self.style(l(
+                    "{spinner} {msg} [{bar:30}] {pos}/{len} 件採点 · {elapsed}",
+                    "{spinner} {msg} [{bar:30}] {pos}/{len} graded · {elapsed}",
+                ));
+                self.bar.set_length((entries - kept.min(entries)) as u64);
+                self.bar.set_position(0);
+                self.bar.set_message("");
+            }
+            Event::Building => {
+                self.bar.set_message(l(
+                    "キットをビルドしています（最初の 1 回）",
+                    "building the kit (once, the first time)",
+                ));
+            }
+            Event::Built => {
+                self.style(l(
+                    "{spinner} [{bar:30}] {pos}/{len} 件採点 · 残り {eta} · {elapsed}",
+                    "{spinner} [{bar:30}] {pos}/{len} graded · {eta} left · {elapsed}",
+                ));
+                self.bar.set_message("");
+                self.bar.reset_eta();
+            }
+        }
+    }
+
+    fn style(&self, template: &str) {
+        if let Ok(style) = ProgressStyle::with_template(template) {
+            self.bar.set_style(style.progress_chars("=> "));
+        }
+    }
+
+    /// Takes the bar off the terminal.
+    pub fn finish(&self) {
+        self.bar.finish_and_clear();
+    }
+}
+
+fn spinner() -> ProgressStyle {
+    ProgressStyle::with_template("{spinner} {msg} · {elapsed}")
+        .unwrap_or_else(|_| ProgressStyle::default_spinner())
+}
