@@ -14,7 +14,7 @@ use cg_grade::{Options, gradescope};
 pub struct GradeOneArgs {
     /// The submission: a folder or a .zip holding exercises/ (Gradescope: /autograder/submission) / 提出物（exercises/ を含むフォルダか .zip）
     submission: PathBuf,
-    /// Where results.json (Gradescope's format), <student>.json and feedback/ go / results.json（Gradescope の形式）・<学生番号>.json・feedback/ の出力先
+    /// Where results.json (Gradescope's format), STUDENT.json and feedback/ go / results.json（Gradescope の形式）・学生番号.json・feedback/ の出力先
     #[arg(long, default_value = "results")]
     out: PathBuf,
     /// The work folder: the kit's built copy, reused from run to run (default: --out) / 作業フォルダ（ビルドしたキットのコピー。既定: --out）

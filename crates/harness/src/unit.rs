@@ -66,7 +66,7 @@ pub trait Assignment: 'static {
     /// [`Missing`](crate::report::Missing),
     /// never a crash.
     fn report(spec: &Self::Spec, imp: &Self::Impl) -> Part<Self::Report>;
-    /// Labels for [`Unit::view`]'s picture: where (as fractions of the picture's width and
+    /// Labels for [`Self::view`]'s picture: where (as fractions of the picture's width and
     /// height from its top-left corner) and the word written there, centred (`cg view s` names
     /// its three spheres). None by default.
     fn view_labels(spec: &Self::Spec) -> Vec<([f32; 2], &'static str)> {
