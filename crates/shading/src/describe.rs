@@ -111,7 +111,7 @@ pub(crate) fn describe(s: &Spec, lang: Lang) -> String {
             );
             let _ = writeln!(
                 out,
-                "  3. 立方体の角の頂点の法線を単純平均と面積加重平均で導出（隣接する面、各面の法線と面積を示す）。2 つが異なる理由と、面積 0 の面の扱い"
+                "  3. 立方体の角の頂点の法線を単純平均と面積加重平均で導出（隣接する面、各面の法線と面積を示す）。2 つを比べ、この立方体で一致する理由（三角形の面積がすべて等しい）と、異なるのはどんなときか。面積 0 の面の扱い"
             );
             let _ = writeln!(
                 out,
@@ -215,7 +215,7 @@ pub(crate) fn describe(s: &Spec, lang: Lang) -> String {
             );
             let _ = writeln!(
                 out,
-                "  3. The vertex normal at a cube corner derived as the plain and as the area-weighted average (the adjacent faces, their normals and areas); why the two differ; what zero-area faces do"
+                "  3. The vertex normal at a cube corner derived as the plain and as the area-weighted average (the adjacent faces, their normals and areas); compare the two: why they agree on this cube (every triangle has the same area) and when they would differ; what zero-area faces do"
             );
             let _ = writeln!(
                 out,
