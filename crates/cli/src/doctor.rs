@@ -192,6 +192,7 @@ fn wsl() -> Option<Wsl> {
     if !cfg!(target_os = "linux") {
         return None;
     }
+    // platform: Linux only (WSL is Linux); every other system returned above.
     let version = std::fs::read_to_string("/proc/version").unwrap_or_default().to_ascii_lowercase();
     if version.contains("microsoft-standard") || version.contains("wsl2") {
         Some(Wsl::V2)
@@ -295,6 +296,7 @@ fn usual_runtime_dir() -> Option<PathBuf> {
     #[cfg(unix)]
     {
         use std::os::unix::fs::MetadataExt;
+        // platform: inside #[cfg(unix)]; without /proc (macOS) there is no guess.
         if let Ok(meta) = std::fs::metadata("/proc/self") {
             let dir = PathBuf::from(format!("/run/user/{}", meta.uid()));
             if dir.is_dir() {
@@ -427,6 +429,8 @@ fn display(r: &mut Report, wsl: Option<Wsl>) {
         Some(there)
     });
     let x11_there = x11.as_deref().and_then(local_x_display).map(|number| {
+        // platform: X11's local sockets (Unix); elsewhere the path is not there and the display
+        // counts as absent, which is true.
         let socket = PathBuf::from(format!("/tmp/.X11-unix/X{number}"));
         let there = socket.exists();
         if !there {
