@@ -500,3 +500,19 @@ fn roster_section(results: &[Value], absent: &[(String, String)], lang: Lang) ->
     }
     out
 }
+
+/// A Markdown code block of `text` (its trailing blank lines dropped), fenced with more
+/// backticks than it holds in a row, so nothing in it (a student's panic message) is read as
+/// Markdown or HTML.
+#[must_use]
+pub fn code_block(text: &str) -> String {
+    let text = text.trim_end();
+    let mut longest = 0;
+    let mut run = 0;
+    for c in text.chars() {
+        run = if c == '`' { run + 1 } else { 0 };
+        longest = longest.max(run);
+    }
+    let fence = "`".repeat(longest.max(2) + 1);
+    format!("{fence}text\n{text}\n{fence}")
+}

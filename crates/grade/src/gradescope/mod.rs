@@ -37,18 +37,10 @@ pub fn visibility(_check_id: &str) -> &'static str {
 /// HTML). Empty text stays empty.
 #[must_use]
 pub fn fenced(text: &str) -> String {
-    let text = text.trim_end();
-    if text.is_empty() {
+    if text.trim_end().is_empty() {
         return String::new();
     }
-    let mut longest = 0;
-    let mut run = 0;
-    for c in text.chars() {
-        run = if c == '`' { run + 1 } else { 0 };
-        longest = longest.max(run);
-    }
-    let fence = "`".repeat(longest.max(2) + 1);
-    format!("{fence}text\n{text}\n{fence}")
+    crate::result::code_block(text)
 }
 
 /// The check's assignment (`a1` of `a1.t3.unit`), for the test's tags.

@@ -130,16 +130,9 @@ fn zip_time(unix: u64) -> zip::DateTime {
     .unwrap_or_default()
 }
 
-/// A Markdown code block of `text`, fenced with more backticks than it holds in a row.
+/// A Markdown code block of `text` ([`crate::result::code_block`]) and a line end.
 fn block(text: &str) -> String {
-    let mut longest = 0;
-    let mut run = 0;
-    for c in text.chars() {
-        run = if c == '`' { run + 1 } else { 0 };
-        longest = longest.max(run);
-    }
-    let fence = "`".repeat(longest.max(2) + 1);
-    format!("{fence}text\n{}\n{fence}\n", text.trim_end())
+    crate::result::code_block(text) + "\n"
 }
 
 fn number(v: &Value) -> String {
