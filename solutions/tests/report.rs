@@ -8,7 +8,7 @@ use std::process::Command;
 
 use cg_assign::Impls;
 use cg_assign::Variants;
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_harness::{StudentNumber, TableVersion};
 use cg_report::app::{self, DeriveArgs, FillArgs, Kit, Source};
 use cg_report::derive;
@@ -67,10 +67,11 @@ fn a_filled_report_reads_back_and_every_number_follows_from_the_data() {
             let (parsed, problems) = parse::parse_report(&text);
             assert!(problems.is_empty(), "{student} {lang}: {problems:?}");
             // a4.t3: the solution's sampler, clamped both ways (the figure's line, not parsed).
-            let wrap = lang.pick(
+            let wrap = t(
                 "折り返し: s 方向 GL_CLAMP_TO_EDGE (Wrap::Clamp)、t 方向 GL_CLAMP_TO_EDGE",
                 "Wrap: GL_CLAMP_TO_EDGE (Wrap::Clamp) along s, GL_CLAMP_TO_EDGE",
             );
+            let wrap = wrap.get(lang);
             assert!(text.contains(wrap), "{student} {lang}: no sampler line");
             let p = derived.a1.as_ref().unwrap();
             assert_eq!(parsed.vertices.len(), p.vertices.len(), "{student}: every vertex row read");

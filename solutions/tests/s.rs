@@ -19,7 +19,7 @@ use std::sync::OnceLock;
 
 use cg_core::Rgb;
 use cg_core::glam::Vec3;
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_harness::check::Outcome;
 use cg_harness::{CheckResult, StudentNumber, TableVersion, VariantRng};
 use cg_shading::render::kit_image;
@@ -720,8 +720,10 @@ fn the_assignment_text_names_every_task_and_the_numbers() {
             for task in 1..=8 {
                 assert!(text.contains(&format!("s.t{task}")), "{lang}: s.t{task} in\n{text}");
             }
-            let name = lang.pick(spec.material.color.ja, spec.material.color.en);
-            let medium = lang.pick(spec.medium.ja, spec.medium.en);
+            let name = t(spec.material.color.ja, spec.material.color.en);
+            let name = name.get(lang);
+            let medium = t(spec.medium.ja, spec.medium.en);
+            let medium = medium.get(lang);
             for needle in [
                 name.to_owned(),
                 medium.to_owned(),

@@ -2,7 +2,6 @@
 //! normal, the placement) from the student's functions, or from a data file alone.
 
 use cg_core::glam::Vec3;
-use cg_core::lang::Lang;
 use cg_core::normals::face_normal;
 use cg_core::product::MatrixProduct;
 use cg_harness::Text;
@@ -107,14 +106,8 @@ pub fn polygon_part(spec: &Spec, imp: &Impl) -> Part<PolygonData> {
                 notes.push(Missing::new(
                     "a1.t4",
                     Text::new(
-                        format!(
-                            "model_transform() の積が行列になりません: {}",
-                            e.message(Lang::Ja)
-                        ),
-                        format!(
-                            "model_transform()'s product is not a matrix: {}",
-                            e.message(Lang::En)
-                        ),
+                        format!("model_transform() の積が行列になりません: {}", e.text().ja),
+                        format!("model_transform()'s product is not a matrix: {}", e.text().en),
                     ),
                 ));
                 None
@@ -125,7 +118,7 @@ pub fn polygon_part(spec: &Spec, imp: &Impl) -> Part<PolygonData> {
             None
         }
     };
-    let name = Text::new(spec.shape.name(Lang::Ja), spec.shape.name(Lang::En));
+    let name = spec.shape.name();
     let mut data = polygon_from_data(name, vertices, faces, student_normals);
     data.transform = transform;
     (Ok(data), notes)

@@ -5,7 +5,7 @@
 //! change; a published assignment never changes under a student.
 
 use cg_core::glam::{DVec3, Vec3};
-use cg_core::lang::Lang;
+use cg_core::lang::{Text, t};
 use cg_harness::VariantRng;
 use easy_ext::ext;
 
@@ -323,7 +323,7 @@ pub impl Shape {
     }
 
     /// The shape's name, `六角すい` / `hexagonal pyramid`.
-    fn name(&self, lang: Lang) -> String {
+    fn name(&self) -> Text {
         let gon = |n: u32| match n {
             3 => "triangular",
             4 => "square",
@@ -333,30 +333,33 @@ pub impl Shape {
             8 => "octagonal",
             _ => "polygonal",
         };
-        match (lang, self) {
-            (Lang::Ja, Shape::Pyramid { sides, .. }) => format!("{}角すい", kanji(*sides)),
-            (Lang::En, Shape::Pyramid { sides, .. }) => format!("{} pyramid", gon(*sides)),
-            (Lang::Ja, Shape::Prism { sides, .. }) => format!("{}角柱", kanji(*sides)),
-            (Lang::En, Shape::Prism { sides, .. }) => format!("{} prism", gon(*sides)),
-            (Lang::Ja, Shape::Frustum { sides, .. }) => format!("{}角すい台", kanji(*sides)),
-            (Lang::En, Shape::Frustum { sides, .. }) => {
-                format!("{} frustum (truncated pyramid)", gon(*sides))
+        match self {
+            Shape::Pyramid { sides, .. } => {
+                Text::new(format!("{}角すい", kanji(*sides)), format!("{} pyramid", gon(*sides)))
             }
-            (Lang::Ja, Shape::Tower { sides, .. }) => {
-                format!("塔（{}角柱の上に{}角すいを載せた形）", kanji(*sides), kanji(*sides))
+            Shape::Prism { sides, .. } => {
+                Text::new(format!("{}角柱", kanji(*sides)), format!("{} prism", gon(*sides)))
             }
-            (Lang::En, Shape::Tower { sides, .. }) => {
+            Shape::Frustum { sides, .. } => Text::new(
+                format!("{}角すい台", kanji(*sides)),
+                format!("{} frustum (truncated pyramid)", gon(*sides)),
+            ),
+            Shape::Tower { sides, .. } => {
                 let (g, a) = (gon(*sides), if gon(*sides).starts_with('o') { "an" } else { "a" });
-                format!("tower ({a} {g} prism with {a} {g} pyramid on top)")
+                Text::new(
+                    format!("塔（{}角柱の上に{}角すいを載せた形）", kanji(*sides), kanji(*sides)),
+                    format!("tower ({a} {g} prism with {a} {g} pyramid on top)"),
+                )
             }
-            (Lang::Ja, Shape::Bipyramid { sides, .. }) => format!("双{}角すい", kanji(*sides)),
-            (Lang::En, Shape::Bipyramid { sides, .. }) => format!("{} bipyramid", gon(*sides)),
-            (Lang::Ja, Shape::Octahedron { .. }) => "正八面体".to_owned(),
-            (Lang::En, Shape::Octahedron { .. }) => "regular octahedron".to_owned(),
-            (Lang::Ja, Shape::House { .. }) => "家（直方体に切妻屋根を載せた形）".to_owned(),
-            (Lang::En, Shape::House { .. }) => "house (a box with a gable roof)".to_owned(),
-            (Lang::Ja, Shape::Wedge { .. }) => "くさび形（スロープ）".to_owned(),
-            (Lang::En, Shape::Wedge { .. }) => "wedge (a ramp)".to_owned(),
+            Shape::Bipyramid { sides, .. } => Text::new(
+                format!("双{}角すい", kanji(*sides)),
+                format!("{} bipyramid", gon(*sides)),
+            ),
+            Shape::Octahedron { .. } => t("正八面体", "regular octahedron"),
+            Shape::House { .. } => {
+                t("家（直方体に切妻屋根を載せた形）", "house (a box with a gable roof)")
+            }
+            Shape::Wedge { .. } => t("くさび形（スロープ）", "wedge (a ramp)"),
         }
     }
 }
@@ -396,19 +399,19 @@ pub impl Numbering {
     }
 
     /// The rule in a few words: `bottom up, rings counter-clockwise seen from above`.
-    fn short(&self, lang: Lang) -> String {
+    fn short(&self) -> Text {
         let order = match self.order {
-            Order::BottomUp => lang.pick("下から上へ", "bottom up"),
-            Order::TopDown => lang.pick("上から下へ", "top down"),
+            Order::BottomUp => t("下から上へ", "bottom up"),
+            Order::TopDown => t("上から下へ", "top down"),
         };
         let ring = match self.ring {
-            Turn::Ccw => lang.pick("上から見て反時計回り", "counter-clockwise seen from above"),
-            Turn::Cw => lang.pick("上から見て時計回り", "clockwise seen from above"),
+            Turn::Ccw => t("上から見て反時計回り", "counter-clockwise seen from above"),
+            Turn::Cw => t("上から見て時計回り", "clockwise seen from above"),
         };
-        match lang {
-            Lang::Ja => format!("{order}、各周は{ring}"),
-            Lang::En => format!("{order}, rings {ring}"),
-        }
+        Text::new(
+            format!("{}、各周は{}", order.ja, ring.ja),
+            format!("{}, rings {}", order.en, ring.en),
+        )
     }
 }
 
@@ -438,13 +441,10 @@ mod tests {
     fn english_names_take_their_article() {
         let tower = |sides| Shape::Tower { sides, radius: 1.0, height: 1.0, tip_height: 1.0 };
         assert_eq!(
-            tower(8).name(Lang::En),
+            tower(8).name().en,
             "tower (an octagonal prism with an octagonal pyramid on top)"
         );
-        assert_eq!(
-            tower(6).name(Lang::En),
-            "tower (a hexagonal prism with a hexagonal pyramid on top)"
-        );
+        assert_eq!(tower(6).name().en, "tower (a hexagonal prism with a hexagonal pyramid on top)");
     }
 
     #[test]

@@ -2,7 +2,6 @@
 
 use cg_core::Rgb;
 use cg_core::glam::Vec3;
-use cg_core::lang::Lang;
 use cg_core::light::Material;
 use cg_core::mesh::Mesh;
 use cg_core::product::MatrixProduct;
@@ -49,7 +48,7 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
     let _ = time_s;
     let mesh = Mesh::new((imp.vertices)(spec), (imp.faces)(spec));
     if let Err(e) = mesh.check_indices() {
-        return Err(Text::new(e.message(Lang::Ja), e.message(Lang::En)));
+        return Err(e.text());
     }
     let normals = match guarded(|| (imp.face_normals)(spec)) {
         Ok(n) => Some(n),
@@ -63,8 +62,8 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
     };
     if let Err(e) = transform.matrix() {
         return Err(Text::new(
-            format!("model_transform: {}", e.message(Lang::Ja)),
-            format!("model_transform: {}", e.message(Lang::En)),
+            format!("model_transform: {}", e.text().ja),
+            format!("model_transform: {}", e.text().en),
         ));
     }
     let (mesh, source) = match normals {

@@ -3,7 +3,7 @@
 
 use std::fmt::Write as _;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text, t};
 
 use crate::show;
 use crate::{Spec, SpecExt};
@@ -13,40 +13,41 @@ pub(crate) fn describe(spec: &Spec, lang: Lang) -> String {
     let mut out = String::new();
     let s = &spec.start;
     let start = show::state(s, spec.pan.is_some());
-    match lang {
-        Lang::Ja => {
-            out.push_str("2. 視点操作インターフェースの拡張 (a2)\n\n");
-            out.push_str(
-                "サンプルプログラムの視点操作を拡張し、次のマウス操作でカメラを動かせるようにすること。\n\
-                 dx, dy は motion() が呼ばれるたびの、前回の位置からのマウスの移動量（ピクセル）: \
-                 dx は右が正、dy は下が正（GLUT のウィンドウ座標）。\n\n",
-            );
-        }
-        Lang::En => {
-            out.push_str("2. Camera interface (a2)\n\n");
-            out.push_str(
-                "Extend the sample program's camera so that these mouse operations move it.\n\
-                 dx and dy are how far the mouse moved since the last call of motion(), in \
-                 pixels: dx positive to the right, dy positive down (GLUT's window coordinates).\n\n",
-            );
-        }
-    }
-    for (_, text) in spec.variables(lang) {
-        let _ = writeln!(out, "  - {text}");
+    let intro = t(
+        "2. 視点操作インターフェースの拡張 (a2)\n\n\
+         サンプルプログラムの視点操作を拡張し、次のマウス操作でカメラを動かせるようにすること。\n\
+         dx, dy は motion() が呼ばれるたびの、前回の位置からのマウスの移動量（ピクセル）: \
+         dx は右が正、dy は下が正（GLUT のウィンドウ座標）。\n\n",
+        "2. Camera interface (a2)\n\n\
+         Extend the sample program's camera so that these mouse operations move it.\n\
+         dx and dy are how far the mouse moved since the last call of motion(), in \
+         pixels: dx positive to the right, dy positive down (GLUT's window coordinates).\n\n",
+    );
+    out.push_str(intro.get(lang));
+    for (_, text) in spec.variables() {
+        let _ = writeln!(out, "  - {}", text.get(lang));
     }
     let unused = show::unused_gestures(spec, lang);
-    match lang {
-        Lang::Ja => {
-            let _ = writeln!(
-                out,
-                "  - 上にない組み合わせ（{unused}、Shift の有無の違い、上にない方向）のドラッグでは、どの変数も変わらない。"
-            );
-            if spec.pan.is_none() {
-                out.push_str("  - 注視点は原点 (0, 0, 0) のまま（target_x = target_z = 0）。\n");
-            }
-            let _ = writeln!(out, "  - 初期値: {start}\n");
-            out.push_str(
-                "課題:\n\
+    let not_listed = Text::new(
+        format!(
+            "  - 上にない組み合わせ（{unused}、Shift の有無の違い、上にない方向）のドラッグでは、どの変数も変わらない。"
+        ),
+        format!(
+            "  - A drag not listed above ({unused}, with Shift where it is not listed or without it where it is, \
+             or in a direction not listed) changes no variable."
+        ),
+    );
+    let _ = writeln!(out, "{}", not_listed.get(lang));
+    if spec.pan.is_none() {
+        let origin = t(
+            "  - 注視点は原点 (0, 0, 0) のまま（target_x = target_z = 0）。\n",
+            "  - The target stays at the origin (0, 0, 0) (target_x = target_z = 0).\n",
+        );
+        out.push_str(origin.get(lang));
+    }
+    let _ = writeln!(out, "  - {}: {start}\n", t("初期値", "At start").get(lang));
+    let tasks = t(
+        "課題:\n\
                  \x20 a2.t1  motion(spec, state, drag): 上のとおりに変数を変える（範囲の制限と折り返しを含む）。\n\
                  \x20 a2.t2  camera(gl, state): 視点の変換（ワールド座標系 → カメラ座標系）を gl.translate / gl.rotate\n\
                  \x20        （glTranslatef / glRotatef）で設定する。カメラは注視点から camera_distance だけ離れ、\n\
@@ -60,22 +61,7 @@ pub(crate) fn describe(spec: &Spec, lang: Lang) -> String {
                  \x20 - 各変数の説明: どのような操作により、どのように変化する変数か（上の各行、範囲を含む）。\n\
                  \x20 - 光源の位置を視点の変換の後に設定する理由。\n\
                  確認: cargo run --release -- check a2    表示: cargo run --release -- view a2\n",
-            );
-        }
-        Lang::En => {
-            let _ = writeln!(
-                out,
-                "  - A drag not listed above ({unused}, with Shift where it is not listed or without it where it is, \
-                 or in a direction not listed) changes no variable."
-            );
-            if spec.pan.is_none() {
-                out.push_str(
-                    "  - The target stays at the origin (0, 0, 0) (target_x = target_z = 0).\n",
-                );
-            }
-            let _ = writeln!(out, "  - At start: {start}\n");
-            out.push_str(
-                "Tasks:\n\
+        "Tasks:\n\
                  \x20 a2.t1  motion(spec, state, drag): change the variables as listed (clamps and wrap included).\n\
                  \x20 a2.t2  camera(gl, state): the view transform (world → camera coordinates) with gl.translate /\n\
                  \x20        gl.rotate (glTranslatef / glRotatef). The camera looks at the target from camera_distance\n\
@@ -89,8 +75,7 @@ pub(crate) fn describe(spec: &Spec, lang: Lang) -> String {
                  \x20 - each variable: which operation changes it and how (each line above, with its range);\n\
                  \x20 - why the light position is set after the view transform.\n\
                  Check: cargo run --release -- check a2    View: cargo run --release -- view a2\n",
-            );
-        }
-    }
+    );
+    out.push_str(tasks.get(lang));
     out
 }

@@ -9,9 +9,7 @@ use cg_harness::check::{Outcome, guarded};
 use cg_harness::report::{Missing, NamedMatrix, Part};
 use cg_harness::symbolic::{Var, drop_constant_identities, numeric, symbolize};
 
-use crate::{
-    CameraState, Drag, DragAxis, Gesture, Impl, MouseButton, Operation, Spec, SpecExt as _,
-};
+use crate::{CameraState, Drag, DragAxis, Gesture, Impl, Operation, Spec, SpecExt as _};
 
 /// Assignment 2: the view transform.
 #[derive(Clone, Debug, PartialEq)]
@@ -52,20 +50,6 @@ fn camera_vars(spec: &Spec, s: &CameraState) -> Vec<Var> {
     vars
 }
 
-/// `右ボタン` / `the right button`, with Shift.
-fn gesture_words(g: Gesture) -> Text {
-    let (ja, en) = match g.button {
-        MouseButton::Left => ("左ボタン", "left button"),
-        MouseButton::Middle => ("中ボタン", "middle button"),
-        MouseButton::Right => ("右ボタン", "right button"),
-    };
-    if g.shift {
-        Text::new(format!("Shift + {ja}"), format!("Shift + {en}"))
-    } else {
-        Text::new(ja, en)
-    }
-}
-
 /// One stated drag: `px` pixels along `op`'s drag direction (right for dx, down for dy), in
 /// calls of `motion()` of at most [`DRAG_STEP_PX`] pixels.
 fn drag_along(op: &Operation, px: f32) -> (Vec<Drag>, Text) {
@@ -103,7 +87,7 @@ fn camera_steps(spec: &Spec) -> Vec<CameraStep> {
                 ja.push(words.ja);
                 en.push(words.en);
             } else {
-                let g = gesture_words(op.gesture);
+                let g = crate::show::gesture(op.gesture);
                 ja.push(format!("{}で{}", g.ja, words.ja));
                 en.push(format!("{} with the {}", words.en, g.en));
             }
@@ -280,12 +264,7 @@ pub fn camera_part(spec: &Spec, imp: &Impl) -> Part<CameraData> {
     products.extend(recorded.iter().map(|r| r.3.clone()));
     drop_constant_identities(&mut products);
     let vars = camera_vars(spec, &probe_state);
-    let variables: Vec<(String, Text)> = spec
-        .variables(Lang::Ja)
-        .into_iter()
-        .zip(spec.variables(Lang::En))
-        .map(|((name, ja), (_, en))| (name, Text::new(ja, en)))
-        .collect();
+    let variables = spec.variables();
     let matrices = recorded
         .iter()
         .zip(&products[1..])

@@ -2,7 +2,7 @@
 //! student's view transform with the report's names.
 
 use cg_core::glam::{Mat4, Vec4};
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_core::product::{Factor, MatrixProduct, Param, format_number};
 use cg_harness::Text;
 use cg_harness::check::Outcome;
@@ -36,17 +36,15 @@ impl Var {
     }
 
     /// What it means, in a few words.
-    pub(crate) fn meaning(self, lang: Lang) -> &'static str {
+    pub(crate) fn meaning(self) -> Text {
         match self {
             Var::Yaw => {
-                lang.pick("Y 軸まわりのカメラの向き・方位角 [度]", "turn about the Y axis, degrees")
+                t("Y 軸まわりのカメラの向き・方位角 [度]", "turn about the Y axis, degrees")
             }
-            Var::Pitch => lang.pick("カメラの仰角 [度]", "elevation, degrees"),
-            Var::Distance => {
-                lang.pick("注視点からカメラまでの距離", "from the target to the camera")
-            }
-            Var::TargetX => lang.pick("注視点の x 座標", "the target's x"),
-            Var::TargetZ => lang.pick("注視点の z 座標", "the target's z"),
+            Var::Pitch => t("カメラの仰角 [度]", "elevation, degrees"),
+            Var::Distance => t("注視点からカメラまでの距離", "from the target to the camera"),
+            Var::TargetX => t("注視点の x 座標", "the target's x"),
+            Var::TargetZ => t("注視点の z 座標", "the target's z"),
         }
     }
 
@@ -105,23 +103,20 @@ pub(crate) fn gesture_short(g: Gesture) -> String {
 }
 
 /// "右ボタン", "Shift + 左ボタン" / "right button", "Shift + left button".
-pub(crate) fn gesture(g: Gesture, lang: Lang) -> String {
-    let b = match (g.button, lang) {
-        (MouseButton::Left, Lang::Ja) => "左ボタン",
-        (MouseButton::Middle, Lang::Ja) => "中ボタン",
-        (MouseButton::Right, Lang::Ja) => "右ボタン",
-        (MouseButton::Left, Lang::En) => "left button",
-        (MouseButton::Middle, Lang::En) => "middle button",
-        (MouseButton::Right, Lang::En) => "right button",
+pub(crate) fn gesture(g: Gesture) -> Text {
+    let (ja, en) = match g.button {
+        MouseButton::Left => ("左ボタン", "left button"),
+        MouseButton::Middle => ("中ボタン", "middle button"),
+        MouseButton::Right => ("右ボタン", "right button"),
     };
-    if g.shift { format!("Shift + {b}") } else { b.to_owned() }
+    if g.shift { Text::new(format!("Shift + {ja}"), format!("Shift + {en}")) } else { t(ja, en) }
 }
 
 /// "左右に (dx)" / "left and right (dx)".
-pub(crate) fn axis_words(axis: DragAxis, lang: Lang) -> &'static str {
+pub(crate) fn axis_words(axis: DragAxis) -> Text {
     match axis {
-        DragAxis::Horizontal => lang.pick("左右に（dx）", "left and right (dx)"),
-        DragAxis::Vertical => lang.pick("上下に（dy）", "up and down (dy)"),
+        DragAxis::Horizontal => t("左右に（dx）", "left and right (dx)"),
+        DragAxis::Vertical => t("上下に（dy）", "up and down (dy)"),
     }
 }
 
@@ -140,28 +135,20 @@ pub(crate) fn formula(var: Var, op: &Operation) -> String {
 }
 
 /// "右へドラッグすると増える" / "dragging right increases it".
-pub(crate) fn direction_words(var: Var, op: &Operation, lang: Lang) -> String {
+pub(crate) fn direction_words(var: Var, op: &Operation) -> Text {
     let up = op.per_px > 0.0;
-    let unit = match (var.unit(), lang) {
-        ("°", Lang::Ja) => format!("1 ピクセルで {}°", num(op.per_px.abs())),
-        ("°", Lang::En) => format!("{}° per pixel", num(op.per_px.abs())),
-        (_, Lang::Ja) => format!("1 ピクセルで {}", num(op.per_px.abs())),
-        (_, Lang::En) => format!("{} per pixel", num(op.per_px.abs())),
+    let step = num(op.per_px.abs());
+    let unit = var.unit();
+    let (ja_way, en_way) = match op.axis {
+        DragAxis::Horizontal => ("右", "right"),
+        DragAxis::Vertical => ("下", "down"),
     };
-    match (op.axis, lang) {
-        (DragAxis::Horizontal, Lang::Ja) => {
-            format!("右へドラッグすると{}、{unit}", if up { "増える" } else { "減る" })
-        }
-        (DragAxis::Vertical, Lang::Ja) => {
-            format!("下へドラッグすると{}、{unit}", if up { "増える" } else { "減る" })
-        }
-        (DragAxis::Horizontal, Lang::En) => {
-            format!("dragging right {} it, {unit}", if up { "increases" } else { "decreases" })
-        }
-        (DragAxis::Vertical, Lang::En) => {
-            format!("dragging down {} it, {unit}", if up { "increases" } else { "decreases" })
-        }
-    }
+    let (ja_change, en_change) =
+        if up { ("増える", "increases") } else { ("減る", "decreases") };
+    Text::new(
+        format!("{ja_way}へドラッグすると{ja_change}、1 ピクセルで {step}{unit}"),
+        format!("dragging {en_way} {en_change} it, {step}{unit} per pixel"),
+    )
 }
 
 /// Every gesture the checks try: the three buttons, each with and without Shift.
@@ -177,9 +164,12 @@ pub(crate) const ALL_GESTURES: [Gesture; 6] = [
 /// The gestures the spec does not use, listed in words.
 pub(crate) fn unused_gestures(spec: &Spec, lang: Lang) -> String {
     let used: Vec<Gesture> = spec.operations().iter().map(|(_, op)| op.gesture).collect();
-    let unused: Vec<String> =
-        ALL_GESTURES.iter().filter(|g| !used.contains(g)).map(|&g| gesture(g, lang)).collect();
-    unused.join(lang.pick("、", ", "))
+    let unused: Vec<String> = ALL_GESTURES
+        .iter()
+        .filter(|g| !used.contains(g))
+        .map(|&g| gesture(g).get(lang).to_owned())
+        .collect();
+    unused.join(t("、", ", ").get(lang))
 }
 
 /// `camera_yaw = 30°, camera_pitch = -30°, camera_distance = 15[, target = (1, -0.5)]`.
@@ -201,7 +191,7 @@ pub(crate) fn drag(d: &Drag) -> Text {
     let g = Gesture { button: d.button, shift: d.shift };
     let (dx, dy) = (signed_num(d.dx), signed_num(d.dy));
     Text::new(
-        format!("{} dx = {dx} dy = {dy}", gesture(g, Lang::Ja)),
+        format!("{} dx = {dx} dy = {dy}", gesture(g).ja),
         format!("{} dx = {dx} dy = {dy}", gesture_short(g)),
     )
 }
@@ -328,10 +318,13 @@ mod tests {
             per_px: -1.0,
         };
         assert_eq!(formula(Var::Pitch, &op), "camera_pitch -= 1 * dy");
-        assert_eq!(
-            direction_words(Var::Pitch, &op, Lang::En),
-            "dragging down decreases it, 1° per pixel"
-        );
+        let words = direction_words(Var::Pitch, &op);
+        assert_eq!(words.en, "dragging down decreases it, 1° per pixel");
+        assert_eq!(words.ja, "下へドラッグすると減る、1 ピクセルで 1°");
+        let pan = Operation { axis: DragAxis::Horizontal, per_px: 0.25, ..op };
+        let words = direction_words(Var::TargetX, &pan);
+        assert_eq!(words.en, "dragging right increases it, 0.25 per pixel");
+        assert_eq!(words.ja, "右へドラッグすると増える、1 ピクセルで 0.25");
         let d = Drag { button: MouseButton::Left, shift: true, dx: 10.0, dy: -4.0 };
         assert_eq!(drag(&d).en, "Shift+Left dx = +10 dy = -4");
         assert_eq!(drag(&d).ja, "Shift + 左ボタン dx = +10 dy = -4");

@@ -2,7 +2,7 @@
 
 use easy_ext::ext;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text, t};
 use cg_harness::VariantRng;
 
 use crate::show::{self, Var};
@@ -130,20 +130,20 @@ pub(crate) impl Spec {
 
     /// The range a variable is kept in, in words: `wrapped into [0, 360)`, `-90 ≤ camera_pitch
     /// ≤ 0 (clamped)`.
-    fn range_text(&self, var: Var, lang: Lang) -> String {
+    fn range_text(&self, var: Var) -> Text {
         let n = show::num;
         let name = var.name();
-        let clamp = |lo: f32, hi: f32| match lang {
-            Lang::Ja => format!("{} ≤ {name} ≤ {} に制限", n(lo), n(hi)),
-            Lang::En => format!("clamped to {} ≤ {name} ≤ {}", n(lo), n(hi)),
+        let clamp = |lo: f32, hi: f32| {
+            Text::new(
+                format!("{} ≤ {name} ≤ {} に制限", n(lo), n(hi)),
+                format!("clamped to {} ≤ {name} ≤ {}", n(lo), n(hi)),
+            )
         };
         match var {
-            Var::Yaw => lang
-                .pick(
-                    "0 ≤ camera_yaw < 360 に折り返す（360 → 0、-1 → 359）",
-                    "wrapped into 0 ≤ camera_yaw < 360 (360 → 0, -1 → 359)",
-                )
-                .to_owned(),
+            Var::Yaw => t(
+                "0 ≤ camera_yaw < 360 に折り返す（360 → 0、-1 → 359）",
+                "wrapped into 0 ≤ camera_yaw < 360 (360 → 0, -1 → 359)",
+            ),
             Var::Pitch => clamp(self.pitch_min, self.pitch_max),
             Var::Distance => clamp(self.distance_min, self.distance_max),
             Var::TargetX | Var::TargetZ => {
@@ -157,36 +157,38 @@ pub(crate) impl Spec {
 /// What the kit says about a spec: its variables and its assignment text.
 #[ext(SpecExt)]
 pub impl Spec {
-    /// Each camera variable with what changes it and how, in `lang` — the explanation the
+    /// Each camera variable with what changes it and how — the explanation the
     /// report gives for every variable of the view transform (各変数の説明: どのような操作により、
     /// どのように変化する変数か): `("camera_yaw", "右ボタンで左右にドラッグ: camera_yaw -= 0.5 * dx
     /// [度] …")`.
-    fn variables(&self, lang: Lang) -> Vec<(String, String)> {
+    fn variables(&self) -> Vec<(String, Text)> {
         self.operations()
             .into_iter()
             .map(|(var, op)| {
-                let text = match lang {
-                    Lang::Ja => format!(
-                        "{}（{}）: {}で{}ドラッグ — {}（{}）。{}",
+                let (meaning, gesture) = (var.meaning(), show::gesture(op.gesture));
+                let (axis, direction) =
+                    (show::axis_words(op.axis), show::direction_words(var, &op));
+                let (formula, range) = (show::formula(var, &op), self.range_text(var));
+                let text = Text::new(
+                    format!(
+                        "{}（{}）: {}で{}ドラッグ — {formula}（{}）。{}",
                         var.name(),
-                        var.meaning(lang),
-                        show::gesture(op.gesture, lang),
-                        show::axis_words(op.axis, lang),
-                        show::formula(var, &op),
-                        show::direction_words(var, &op, lang),
-                        self.range_text(var, lang),
+                        meaning.ja,
+                        gesture.ja,
+                        axis.ja,
+                        direction.ja,
+                        range.ja,
                     ),
-                    Lang::En => format!(
-                        "{} ({}): drag the {} {} — {} ({}); {}",
+                    format!(
+                        "{} ({}): drag the {} {} — {formula} ({}); {}",
                         var.name(),
-                        var.meaning(lang),
-                        show::gesture(op.gesture, lang),
-                        show::axis_words(op.axis, lang),
-                        show::formula(var, &op),
-                        show::direction_words(var, &op, lang),
-                        self.range_text(var, lang),
+                        meaning.en,
+                        gesture.en,
+                        axis.en,
+                        direction.en,
+                        range.en,
                     ),
-                };
+                );
                 (var.name().to_owned(), text)
             })
             .collect()

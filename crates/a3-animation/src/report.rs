@@ -3,6 +3,7 @@
 //! poses are read as the checks read them (`pose.rs`).
 
 use cg_core::gl::{Draw, Gl};
+use cg_core::lang::{Lang, t};
 use cg_core::product::{Factor, MatrixProduct, format_number};
 use cg_harness::Text;
 use cg_harness::check::guarded;
@@ -264,27 +265,21 @@ fn ascii_id(name: &str, n: usize) -> String {
 
 /// The periods and their ratios, as the report states them.
 fn periods_text(spec: &Spec) -> Text {
-    let each = |ja: bool| -> String {
-        let parts: Vec<String> = spec
-            .objects
-            .iter()
-            .enumerate()
-            .map(|(i, o)| {
-                let p = format_number(o.motion.period_s());
-                if ja {
-                    format!("物体{} {p} 秒", i + 1)
-                } else {
-                    format!("object {} {p} s", i + 1)
-                }
-            })
-            .collect();
-        parts.join(if ja { "、" } else { ", " })
+    let periods: Vec<Text> = spec
+        .objects
+        .iter()
+        .enumerate()
+        .map(|(i, o)| {
+            let p = format_number(o.motion.period_s());
+            Text::new(format!("物体{} {p} 秒", i + 1), format!("object {} {p} s", i + 1))
+        })
+        .collect();
+    let each = |lang: Lang| {
+        let sep = t("、", ", ");
+        periods.iter().map(|p| p.get(lang)).collect::<Vec<_>>().join(sep.get(lang))
     };
-    let names = |ja: bool| -> String {
-        let names: Vec<String> = (1..=spec.objects.len())
-            .map(|n| if ja { format!("物体{n}") } else { format!("object {n}") })
-            .collect();
-        names.join(" : ")
+    let names = |word: &str| {
+        (1..=spec.objects.len()).map(|n| format!("{word}{n}")).collect::<Vec<_>>().join(" : ")
     };
     let ratios: Vec<String> = spec.period_ratios().iter().map(u64::to_string).collect();
     let ratios = ratios.join(" : ");
@@ -293,13 +288,13 @@ fn periods_text(spec: &Spec) -> Text {
     Text::new(
         format!(
             "周期: {}。周期の比 {} = {ratios}（単位 {unit} 秒）。全体は {common} 秒ごとに同じ動きを繰り返す。",
-            each(true),
-            names(true)
+            each(Lang::Ja),
+            names("物体")
         ),
         format!(
             "Periods: {}. Ratio of the periods {} = {ratios} (unit {unit} s); the whole animation repeats every {common} s.",
-            each(false),
-            names(false)
+            each(Lang::En),
+            names("object ")
         ),
     )
 }

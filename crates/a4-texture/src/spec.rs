@@ -200,21 +200,19 @@ impl GroundCorner {
         }
     }
 
-    /// `vertex (i, j) = (0, 10) at (−5, 0, 5), near left seen from the camera` in `lang`.
+    /// `vertex (i, j) = (0, 10) at (−5, 0, 5), near left seen from the camera`.
     #[must_use]
-    pub fn describe(self, lang: Lang) -> String {
+    pub fn text(self) -> Text {
         let (i, j) = self.vertex();
         let (x, z) = self.position();
-        match lang {
-            Lang::Ja => format!(
-                "頂点 (i, j) = ({i}, {j})、位置 ({x}, 0, {z})、カメラから見て{}",
-                self.name().ja
-            ),
-            Lang::En => format!(
+        let name = self.name();
+        Text::new(
+            format!("頂点 (i, j) = ({i}, {j})、位置 ({x}, 0, {z})、カメラから見て{}", name.ja),
+            format!(
                 "vertex (i, j) = ({i}, {j}) at ({x}, 0, {z}), {} seen from the camera",
-                self.name().en
+                name.en
             ),
-        }
+        )
     }
 }
 

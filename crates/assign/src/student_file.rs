@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text};
 use cg_harness::{StudentNumber, TableVersion};
 
 /// What `exercises/student.toml` records.
@@ -50,28 +50,33 @@ impl StudentFileError {
     /// The message in `lang`, with what to do.
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        match (self, lang) {
-            (StudentFileError::Missing { path }, Lang::Ja) => format!(
-                "{path} がありません。最初に一度だけ学生番号を記録してください: cargo run --release -- assignment --student 12345678 --save（12345678 を自分の学生番号に）"
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message in both languages.
+    #[must_use]
+    pub fn text(&self) -> Text {
+        match self {
+            StudentFileError::Missing { path } => Text::new(
+                format!(
+                    "{path} がありません。最初に一度だけ学生番号を記録してください: cargo run --release -- assignment --student 12345678 --save（12345678 を自分の学生番号に）"
+                ),
+                format!(
+                    "{path} does not exist. Record your student number once: cargo run --release -- assignment --student 12345678 --save (with your own number)"
+                ),
             ),
-            (StudentFileError::Missing { path }, Lang::En) => format!(
-                "{path} does not exist. Record your student number once: cargo run --release -- assignment --student 12345678 --save (with your own number)"
+            StudentFileError::Invalid { path, reason } => Text::new(
+                format!("{path} を読めません: {reason}（例: student = \"12345678\"）"),
+                format!("{path} cannot be read: {reason} (example: student = \"12345678\")"),
             ),
-            (StudentFileError::Invalid { path, reason }, Lang::Ja) => {
-                format!("{path} を読めません: {reason}（例: student = \"12345678\"）")
+            StudentFileError::Number { path, error } => {
+                let error = error.text();
+                Text::new(format!("{path}: {}", error.ja), format!("{path}: {}", error.en))
             }
-            (StudentFileError::Invalid { path, reason }, Lang::En) => {
-                format!("{path} cannot be read: {reason} (example: student = \"12345678\")")
-            }
-            (StudentFileError::Number { path, error }, _) => {
-                format!("{path}: {}", error.message(lang))
-            }
-            (StudentFileError::Table { path, given }, Lang::Ja) => {
-                format!("{path}: table = {given} という課題表はありません（1 を使ってください）")
-            }
-            (StudentFileError::Table { path, given }, Lang::En) => {
-                format!("{path}: there is no table {given} (use 1)")
-            }
+            StudentFileError::Table { path, given } => Text::new(
+                format!("{path}: table = {given} という課題表はありません（1 を使ってください）"),
+                format!("{path}: there is no table {given} (use 1)"),
+            ),
         }
     }
 }

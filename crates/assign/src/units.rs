@@ -3,7 +3,7 @@
 
 use std::fmt::Write as _;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_core::scene::Scene;
 use cg_harness::check::Report;
 use cg_harness::report::{Missing, take};
@@ -242,18 +242,16 @@ impl Variants {
         let _ = writeln!(
             out,
             "{}: {}  ({} {})",
-            lang.pick("学生番号", "Student ID"),
+            t("学生番号", "Student ID").get(lang),
             self.student,
-            lang.pick("課題表", "table"),
+            t("課題表", "table").get(lang),
             self.table
         );
         let _ = writeln!(
             out,
             "{}\n",
-            lang.pick(
-                "コンピューターグラフィックス レポート課題",
-                "Computer graphics: report assignments"
-            )
+            t("コンピューターグラフィックス レポート課題", "Computer graphics: report assignments")
+                .get(lang)
         );
         for &which in Which::ALL {
             if only.is_none_or(|o| o == which) {

@@ -22,6 +22,7 @@
 //! Entry points: [`run`] measures and returns a [`Report`]; [`Report::write`] writes the
 //! Markdown and the SVGs.
 
+use cg_core::lang::{Text, t};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -309,12 +310,14 @@ impl BenchError {
     pub fn message(&self, lang: cg_core::lang::Lang) -> String {
         match self {
             BenchError::Render(e) => {
-                format!("{}: {e}", lang.pick("描画に失敗しました", "rendering failed"))
+                format!("{}: {e}", t("描画に失敗しました", "rendering failed").get(lang))
             }
-            BenchError::Io { path, error } => match lang {
-                cg_core::lang::Lang::Ja => format!("{} に書き込めません: {error}", path.display()),
-                cg_core::lang::Lang::En => format!("cannot write {}: {error}", path.display()),
-            },
+            BenchError::Io { path, error } => Text::new(
+                format!("{} に書き込めません: {error}", path.display()),
+                format!("cannot write {}: {error}", path.display()),
+            )
+            .get(lang)
+            .to_owned(),
         }
     }
 }

@@ -7,7 +7,7 @@ use std::time::Duration;
 
 use cg_assign::{Impls, StudentFile, Variants, Which, write_student_file};
 use cg_core::image::Image;
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_core::scene::Scene;
 use cg_harness::check::{Outcome, Report, guarded};
 use cg_harness::exit::Ending;
@@ -53,7 +53,7 @@ pub fn assignment(args: &AssignmentArgs, lang: Lang) -> Result<(), String> {
     if args.save {
         let path = exercises_dir().join("student.toml");
         write_student_file(&path, &record)?;
-        eprintln!("{} {}", lang.pick("記録しました:", "recorded in"), path.display());
+        eprintln!("{} {}", t("記録しました:", "recorded in").get(lang), path.display());
     }
     let a = Variants::for_student(&record.student, record.table);
     if args.json {
@@ -152,10 +152,11 @@ pub fn check(args: &CheckArgs, lang: Lang) -> Result<Ending, String> {
                 return Err(format!(
                     "{}: {} {}",
                     only,
-                    lang.pick(
+                    t(
                         "という名前のタスクもチェックもありません。この課題のタスク:",
                         "names no task or check; the tasks of this assignment are"
-                    ),
+                    )
+                    .get(lang),
                     tasks.join(", ")
                 ));
             }
@@ -169,9 +170,9 @@ pub fn check(args: &CheckArgs, lang: Lang) -> Result<Ending, String> {
         for r in &reports {
             println!(
                 "{} {} — {} {}",
-                lang.pick("課題", "assignment"),
+                t("課題", "assignment").get(lang),
                 r.assignment,
-                lang.pick("学生番号", "student"),
+                t("学生番号", "student").get(lang),
                 record.student
             );
             print!("{}", r.render(lang));
@@ -180,7 +181,7 @@ pub fn check(args: &CheckArgs, lang: Lang) -> Result<Ending, String> {
     }
     if !printed.is_empty() {
         // On stderr, so that `--json` stays JSON.
-        eprintln!("{}", lang.pick("あなたの関数が出力した内容:", "what your functions printed:"));
+        eprintln!("{}", t("あなたの関数が出力した内容:", "what your functions printed:").get(lang));
         eprint!("{printed}");
         if !printed.ends_with('\n') {
             eprintln!();
@@ -284,11 +285,10 @@ impl ViewArgs {
             // The view comes from the student's own display() (gluLookAt, or a view recorded
             // into the modelview): there is no orbit to move.
             Camera::LookAt { .. } => {
-                return Err(lang
-                    .pick(
-                        "--yaw・--pitch・--distance は周回カメラ（a1、a4 など）を動かします。この図の視点はあなたの display() が決めているので動かせません",
-                        "--yaw, --pitch and --distance move the orbit camera (a1, a4, …); this view's camera is set by your own display(), so they cannot move it",
-                    )
+                return Err(t(
+                    "--yaw・--pitch・--distance は周回カメラ（a1、a4 など）を動かします。この図の視点はあなたの display() が決めているので動かせません",
+                    "--yaw, --pitch and --distance move the orbit camera (a1, a4, …); this view's camera is set by your own display(), so they cannot move it",
+                ).get(lang)
                     .to_owned());
             }
         }
@@ -339,9 +339,9 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
     if args.warmup && !args.which.has_warmup() {
         return Err(no_warmup(args.which).get(lang).to_owned());
     }
-    let mut sides = vec![(false, lang.pick("あなたの結果", "yours"), "yours")];
+    let mut sides = vec![(false, t("あなたの結果", "yours"), "yours")];
     if cfg!(feature = "reference") {
-        sides.push((true, lang.pick("参考解答", "reference"), "reference"));
+        sides.push((true, t("参考解答", "reference"), "reference"));
     }
     if !args.png_only()
         && cg_viewer::display_available()
@@ -355,15 +355,16 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
     }
     println!(
         "{}",
-        lang.pick(
+        t(
             "PNG に描画します（ウィンドウは画面（WAYLAND_DISPLAY か DISPLAY）があるときに --png なしで開きます）:",
-            "Drawing to PNG files (a window opens when there is a display (WAYLAND_DISPLAY or DISPLAY) and no --png):"
-        )
+            "Drawing to PNG files (a window opens when there is a display (WAYLAND_DISPLAY or DISPLAY) and no --png):",
+        ).get(lang)
     );
     let name = if args.warmup { format!("{}-warmup", args.which) } else { args.which.to_string() };
     let times = strip_times(args, &a, lang)?;
     let mut drawn = Vec::new();
     for (reference, label, file) in sides {
+        let label = label.get(lang);
         let path = args.output.join(format!("view-{name}-{file}.png"));
         // No picture left from an earlier run beside this run's words.
         let _ = std::fs::remove_file(&path);
@@ -378,7 +379,7 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
             }
             Ok(Err(why)) => println!("  {label}: {}", why.get(lang)),
             Err(Outcome::NotDone { message }) => {
-                println!("  {label}: {}: {message}", lang.pick("まだです", "not done yet"));
+                println!("  {label}: {}: {message}", t("まだです", "not done yet").get(lang));
             }
             Err(other) => println!(
                 "  {label}: {}",
@@ -395,11 +396,11 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
         let total = diff.pixels.len();
         println!(
             "  {}: {}",
-            lang.pick("違い", "difference"),
+            t("違い", "difference").get(lang),
             if differ == 0 {
-                lang.pick("参考解答と同じ絵です", "the same picture as the reference").to_owned()
+                t("参考解答と同じ絵です", "the same picture as the reference").get(lang).to_owned()
             } else {
-                lang.pick(
+                t(
                     &format!(
                         "{total} 画素中 {differ} 画素が 2/255 より違います（4 倍に強調して {}）",
                         diff_path.display()
@@ -409,6 +410,7 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
                         diff_path.display()
                     ),
                 )
+                .get(lang)
                 .to_owned()
             }
         );
@@ -421,10 +423,11 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
 fn strip_times(args: &ViewArgs, a: &Variants, lang: Lang) -> Result<Vec<f64>, String> {
     let Some(n) = args.strip else { return Ok(vec![args.time]) };
     let period = a.view_period_s(args.which).filter(|_| !args.warmup).ok_or_else(|| {
-        lang.pick(
+        t(
             "--strip は動く課題（a3）の 1 周期を並べます。この図は動きません",
             "--strip lays out one period of an animation (a3); this view does not move",
         )
+        .get(lang)
         .to_owned()
     })?;
     Ok((0..n).map(|k| args.time + period * f64::from(k) / f64::from(n)).collect())
@@ -491,25 +494,27 @@ fn difference(a: &Image, b: &Image) -> Option<(Image, usize)> {
 fn view_window(
     args: &ViewArgs,
     a: &Variants,
-    sides: &[(bool, &str, &str)],
+    sides: &[(bool, Text, &str)],
     lang: Lang,
 ) -> Result<Option<String>, String> {
     let (which, warmup) = (args.which, args.warmup);
     let sources: Vec<cg_viewer::Source> = sides
         .iter()
-        .map(|&(reference, label, _)| {
-            let a = a.clone();
+        .map(|(reference, label, _)| {
+            let (a, reference) = (a.clone(), *reference);
             cg_viewer::Source {
-                label: label.to_owned(),
-                scene_at: Box::new(move |t| match view_scene(which, &a, reference, t, warmup) {
-                    Ok(Ok(scene)) => Ok(scene),
-                    Ok(Err(why)) => Err(why.get(lang).to_owned()),
-                    Err(Outcome::NotDone { message }) => Err(format!(
-                        "{}: {}",
-                        lang.pick("まだです", "not done yet"),
-                        cg_harness::check::stub_message(&message, lang)
-                    )),
-                    Err(other) => Err(format!("{other:?}")),
+                label: label.get(lang).to_owned(),
+                scene_at: Box::new(move |time| {
+                    match view_scene(which, &a, reference, time, warmup) {
+                        Ok(Ok(scene)) => Ok(scene),
+                        Ok(Err(why)) => Err(why.get(lang).to_owned()),
+                        Err(Outcome::NotDone { message }) => Err(format!(
+                            "{}: {}",
+                            t("まだです", "not done yet").get(lang),
+                            cg_harness::check::stub_message(&message, lang)
+                        )),
+                        Err(other) => Err(format!("{other:?}")),
+                    }
                 }),
                 own_camera: which.own_camera() && !warmup,
             }
@@ -535,20 +540,20 @@ fn view_window(
 pub fn sync_stubs(lang: Lang) -> Result<(), String> {
     let solutions = crate::kit_path(None, "solutions");
     if !solutions.join("Cargo.toml").exists() {
-        return Err(lang
-            .pick(
-                "solutions/ がありません（学生用のコピーでは使えないコマンドです）",
-                "there is no solutions/ here (this command is for the kit's own repository)",
-            )
-            .to_owned());
+        return Err(t(
+            "solutions/ がありません（学生用のコピーでは使えないコマンドです）",
+            "there is no solutions/ here (this command is for the kit's own repository)",
+        )
+        .get(lang)
+        .to_owned());
     }
     let changed =
         cg_harness::stubs::write(&solutions, &exercises_dir()).map_err(|e| e.to_string())?;
     for path in &changed {
-        println!("{} exercises/{}", lang.pick("更新:", "updated"), path.display());
+        println!("{} exercises/{}", t("更新:", "updated").get(lang), path.display());
     }
     if changed.is_empty() {
-        println!("{}", lang.pick("exercises/ は最新です", "exercises/ is up to date"));
+        println!("{}", t("exercises/ は最新です", "exercises/ is up to date").get(lang));
     }
     Ok(())
 }

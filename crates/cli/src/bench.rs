@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 
 /// Where the report goes by default, relative to the kit's root.
 const DEFAULT_OUT: &str = "docs/speed-vs-error.md";
@@ -33,10 +33,10 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     if cfg!(debug_assertions) {
         eprintln!(
             "{}",
-            lang.pick(
+            t(
                 "注意: デバッグビルドです。時間は `cargo run --release -- bench` で測ってください。",
-                "note: a debug build; measure times with `cargo run --release -- bench`."
-            )
+                "note: a debug build; measure times with `cargo run --release -- bench`.",
+            ).get(lang)
         );
     }
     let start = Instant::now();
@@ -47,7 +47,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let written = report.write(&out).map_err(|e| e.message(lang))?;
     println!(
         "{} ({:.1} s):",
-        lang.pick("速度と誤差のレポートを書きました", "wrote the speed-against-error report"),
+        t("速度と誤差のレポートを書きました", "wrote the speed-against-error report").get(lang),
         start.elapsed().as_secs_f64()
     );
     for path in written {

@@ -16,7 +16,7 @@ use std::process::{Command, Stdio};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text, t};
 use serde_json::{Map, Value, json};
 
 /// Options of `cg doctor`.
@@ -64,8 +64,8 @@ struct Report {
 }
 
 impl Report {
-    fn section(&mut self, ja: &str, en: &str) {
-        let title = self.lang.pick(ja, en).to_owned();
+    fn section(&mut self, title: Text) {
+        let title = self.words(title);
         self.sections.push(Section { title, findings: Vec::new() });
     }
 
@@ -92,9 +92,9 @@ impl Report {
         self.json.insert(key.to_owned(), value.into());
     }
 
-    /// `ja` or `en` as an owned string.
-    fn t(&self, ja: &str, en: &str) -> String {
-        self.lang.pick(ja, en).to_owned()
+    /// `text` in the report's language.
+    fn words(&self, text: Text) -> String {
+        text.get(self.lang).to_owned()
     }
 
     fn problems(&self) -> Vec<&Finding> {
@@ -108,10 +108,11 @@ impl Report {
             out,
             "cg doctor {} — {}",
             env!("CARGO_PKG_VERSION"),
-            lang.pick(
+            t(
                 "このマシンで使えるものと、使えないものの理由",
                 "what works on this machine, and why"
             )
+            .get(lang)
         );
         for s in &self.sections {
             let _ = writeln!(out, "\n{}", s.title);
@@ -123,7 +124,7 @@ impl Report {
                 };
                 let _ = writeln!(out, "  {mark} {}", f.text);
                 for fix in &f.fixes {
-                    let _ = writeln!(out, "      → {}: {fix}", lang.pick("対処", "fix"));
+                    let _ = writeln!(out, "      → {}: {fix}", t("対処", "fix").get(lang));
                 }
             }
         }
@@ -131,17 +132,19 @@ impl Report {
         let _ = writeln!(
             out,
             "\n{}",
-            match (n, lang) {
-                (0, Lang::Ja) => "問題は見つかりませんでした。".to_owned(),
-                (0, Lang::En) => "No problems found.".to_owned(),
-                (n, Lang::Ja) => format!(
-                    "問題 {n} 件（上の ✗ の行と、その対処）。CPU のレンダラは使えるので、演習はすべてこのマシンでできます。"
-                ),
-                (n, Lang::En) => format!(
-                    "{n} problem{} (the ✗ lines above, each with its fix). The CPU renderers work, so every part of the course runs on this machine.",
-                    if n == 1 { "" } else { "s" }
+            match n {
+                0 => t("問題は見つかりませんでした。", "No problems found."),
+                n => Text::new(
+                    format!(
+                        "問題 {n} 件（上の ✗ の行と、その対処）。CPU のレンダラは使えるので、演習はすべてこのマシンでできます。"
+                    ),
+                    format!(
+                        "{n} problem{} (the ✗ lines above, each with its fix). The CPU renderers work, so every part of the course runs on this machine.",
+                        if n == 1 { "" } else { "s" }
+                    ),
                 ),
             }
+            .get(lang)
         );
         out
     }
@@ -226,7 +229,7 @@ fn kit_root() -> PathBuf {
 }
 
 fn system(r: &mut Report, wsl: Option<Wsl>) {
-    r.section("システム", "system");
+    r.section(t("システム", "system"));
     let os = match std::env::consts::OS {
         "linux" => "Linux",
         "macos" => "macOS",
@@ -254,25 +257,25 @@ fn system(r: &mut Report, wsl: Option<Wsl>) {
     );
     let here = std::env::current_dir().ok();
     let root = kit_root();
-    r.note(format!("{}: {}", r.t("キットのフォルダ", "the kit's folder"), root.display()));
+    r.note(format!("{}: {}", r.words(t("キットのフォルダ", "the kit's folder")), root.display()));
     r.set("kit_root", root.display().to_string());
     let windows_drive = wsl.is_some_and(|w| w != Wsl::V1)
         && (on_windows_drive(&root) || here.as_deref().is_some_and(on_windows_drive));
     r.set("windows_drive", windows_drive);
     if windows_drive {
-        let text = r.t(
+        let text = r.words(t(
             "キットが Windows のドライブ（/mnt/c など）にあります。WSL 2 からは Windows のファイルの読み書きが遅く（ビルドが数倍遅くなります）、ファイルの変更を監視するもの（VS Code、cargo watch など）が変更に気づかないことがあります",
             "the kit is on a Windows drive (/mnt/c…): from WSL 2, Windows files are slow to read and write (builds take several times longer), and file watchers (VS Code, cargo watch) may miss changes to them",
-        );
+        ));
         let fixes = vec![
-            r.t(
+            r.words(t(
                 "Linux 側のホームに clone し直します: cd ~ && git clone … （VS Code は WSL 拡張機能で開きます）",
                 "clone the kit again into your Linux home folder: cd ~ && git clone … (open it in VS Code with the WSL extension)",
-            ),
-            r.t(
+            )),
+            r.words(t(
                 "自分の作業（exercises/src/ と exercises/student.toml）を新しい clone にコピーします",
                 "copy your work (exercises/src/ and exercises/student.toml) into the new clone",
-            ),
+            )),
         ];
         r.problem(text, fixes);
     }
@@ -312,10 +315,10 @@ fn usual_runtime_dir() -> Option<PathBuf> {
 fn runtime_fix(r: &Report) -> String {
     match usual_runtime_dir() {
         Some(d) => format!("export XDG_RUNTIME_DIR={}", d.display()),
-        None => r.t(
+        None => r.words(t(
             "デスクトップにログインした端末から実行します（ログインで設定されます）。または unset XDG_RUNTIME_DIR",
             "run from a terminal of a desktop login (the login sets it), or unset XDG_RUNTIME_DIR",
-        ),
+        )),
     }
 }
 
@@ -325,7 +328,7 @@ fn unset(key: &str) -> String {
 }
 
 fn display(r: &mut Report, wsl: Option<Wsl>) {
-    r.section("ウィンドウ（画面）", "windows (the display)");
+    r.section(t("ウィンドウ（画面）", "windows (the display)"));
     let wayland = env("WAYLAND_DISPLAY");
     let x11 = env("DISPLAY");
     let runtime = env("XDG_RUNTIME_DIR");
@@ -336,17 +339,17 @@ fn display(r: &mut Report, wsl: Option<Wsl>) {
     if !UNIX_DESKTOP {
         r.set("window", available);
         r.set("xdg_runtime_dir_ok", Value::Null);
-        r.works(r.t(
+        r.works(r.words(t(
             "ウィンドウはこの OS のウィンドウシステムで開きます（WAYLAND_DISPLAY・DISPLAY は不要）",
             "windows open through this system's own window system (no WAYLAND_DISPLAY or DISPLAY needed)",
-        ));
+        )));
         return;
     }
-    let unset = r.t("未設定", "not set");
-    let unset_runtime = r.t(
+    let unset = r.words(t("未設定", "not set"));
+    let unset_runtime = r.words(t(
         "未設定（Wayland のウィンドウにだけ必要です）",
         "not set (only Wayland windows need it)",
-    );
+    ));
     for (key, value, absent) in [
         ("WAYLAND_DISPLAY", &wayland, &unset),
         ("DISPLAY", &x11, &unset),
@@ -363,28 +366,28 @@ fn display(r: &mut Report, wsl: Option<Wsl>) {
             let text = if Path::new(dir).exists() {
                 format!(
                     "XDG_RUNTIME_DIR={dir}{}",
-                    r.t(
+                    r.words(t(
                         " はフォルダではありません（Wayland のウィンドウはここにソケットを探します）",
-                        " is not a folder (Wayland windows look for their socket there)"
-                    )
+                        " is not a folder (Wayland windows look for their socket there)",
+                    ))
                 )
             } else {
                 format!(
                     "XDG_RUNTIME_DIR={dir}{}",
-                    r.t(
+                    r.words(t(
                         " のフォルダがありません（Wayland のウィンドウはここにソケットを探します）",
                         ": the folder does not exist (Wayland windows look for their socket there)"
-                    )
+                    ))
                 )
             };
             let fixes = vec![runtime_fix(r)];
             r.problem(text, fixes);
         }
         (None, _) if wayland.as_deref().is_some_and(|w| !w.starts_with('/')) => {
-            let text = r.t(
+            let text = r.words(t(
                 "WAYLAND_DISPLAY は設定されていますが XDG_RUNTIME_DIR がないので、Wayland のソケットが見つかりません",
                 "WAYLAND_DISPLAY is set but XDG_RUNTIME_DIR is not, so the Wayland socket cannot be found",
-            );
+            ));
             let fixes = vec![runtime_fix(r)];
             r.problem(text, fixes);
         }
@@ -394,10 +397,10 @@ fn display(r: &mut Report, wsl: Option<Wsl>) {
     // The Wayland socket and the X server's, where they can be seen: `Some(false)` when the
     // variable names a socket that is not there, `None` when unset or not checkable.
     let wsl_fix = |r: &Report| {
-        r.t(
+        r.words(t(
             "WSL: PowerShell で wsl --shutdown を実行してから端末を開き直します（WSLg が起動し直します）",
             "WSL: run wsl --shutdown in PowerShell, then open the terminal again (WSLg starts afresh)",
-        )
+        ))
     };
     let wayland_there = wayland.as_deref().and_then(|w| {
         let socket = if w.starts_with('/') {
@@ -407,20 +410,17 @@ fn display(r: &mut Report, wsl: Option<Wsl>) {
         };
         let there = socket.exists();
         if !there {
-            let text = match r.lang {
-                Lang::Ja => format!(
+            let text = r.words(Text::new(format!(
                     "Wayland のソケット {} がありません（コンポジタが動いていないか、別のセッションの値です）",
                     socket.display()
-                ),
-                Lang::En => format!(
+                ), format!(
                     "the Wayland socket {} does not exist (no compositor is running, or the value is another session's)",
                     socket.display()
-                ),
-            };
-            let mut fixes = vec![r.t(
+                )));
+            let mut fixes = vec![r.words(t(
                 "デスクトップの端末から実行するか、unset WAYLAND_DISPLAY で X11（DISPLAY）を使います",
                 "run from a terminal inside the desktop, or unset WAYLAND_DISPLAY to use X11 (DISPLAY)",
-            )];
+            ))];
             if wsl.is_some() {
                 fixes.push(wsl_fix(r));
             }
@@ -434,20 +434,17 @@ fn display(r: &mut Report, wsl: Option<Wsl>) {
         let socket = PathBuf::from(format!("/tmp/.X11-unix/X{number}"));
         let there = socket.exists();
         if !there {
-            let text = match r.lang {
-                Lang::Ja => format!(
+            let text = r.words(Text::new(format!(
                     "X サーバのソケット {} がありません（DISPLAY の X サーバが動いていないかもしれません）",
                     socket.display()
-                ),
-                Lang::En => format!(
+                ), format!(
                     "the X server's socket {} does not exist (the X server of DISPLAY may not be running)",
                     socket.display()
-                ),
-            };
-            let mut fixes = vec![r.t(
+                )));
+            let mut fixes = vec![r.words(t(
                 "デスクトップにログインした端末から実行します（DISPLAY はログインで設定されます）",
                 "run from a terminal inside the desktop session (its login sets DISPLAY)",
-            )];
+            ))];
             if wsl.is_some() {
                 fixes.push(wsl_fix(r));
             }
@@ -462,44 +459,44 @@ fn display(r: &mut Report, wsl: Option<Wsl>) {
             .all(|(name, there)| name.is_none() || *there == Some(false));
     r.set("window", available && !named_but_gone);
 
-    let png_fix = r.t(
+    let png_fix = r.words(t(
         "ウィンドウがなくても演習はできます: `cargo run --release` と `view` は out/ に PNG を書くので、画像ビューアで開きます",
         "the course works without a window: `cargo run --release` and `view` write PNG files to out/; open them in an image viewer",
-    );
+    ));
     if named_but_gone {
-        let reason = r.t(
+        let reason = r.words(t(
             "WAYLAND_DISPLAY・DISPLAY の画面がありません",
             "the display named by WAYLAND_DISPLAY / DISPLAY is not there",
-        );
+        ));
         let text = cg_viewer::no_window(&reason, r.lang);
-        r.problem(text, vec![r.t("上の行を直します", "fix the lines above"), png_fix]);
+        r.problem(text, vec![r.words(t("上の行を直します", "fix the lines above")), png_fix]);
     } else if available {
-        r.works(r.t(
+        r.works(r.words(t(
             "ウィンドウを開けます（Wayland、だめなら X11）。`view` と `cargo run --release` はウィンドウに描画します。それでも開けないときは理由を表示して PNG に描画します",
             "a window can be opened (Wayland first, then X11): `view` and `cargo run --release` draw in it; if it still fails to open, they say why and draw PNG files instead",
-        ));
+        )));
     } else {
-        let reason = r.t(
+        let reason = r.words(t(
             "WAYLAND_DISPLAY も DISPLAY も設定されていません",
             "neither WAYLAND_DISPLAY nor DISPLAY is set",
-        );
+        ));
         let text = cg_viewer::no_window(&reason, r.lang);
         let mut fixes = Vec::new();
         if wsl.is_some() {
-            fixes.push(r.t(
+            fixes.push(r.words(t(
                 "WSL: Windows 11（または Windows 10 21H2 以降）の WSLg がウィンドウを表示します。PowerShell で wsl --update、続けて wsl --shutdown してから端末を開き直します",
                 "WSL: WSLg shows Linux windows on Windows 11 (or Windows 10 21H2 and later): in PowerShell run wsl --update, then wsl --shutdown, and open the terminal again",
-            ));
+            )));
         } else if env("SSH_CONNECTION").is_some() {
-            fixes.push(r.t(
+            fixes.push(r.words(t(
                 "ssh 経由です: ssh -X（または ssh -Y）で接続し直すと X11 のウィンドウが手元に出ます",
                 "this is an ssh session: connect with ssh -X (or ssh -Y) to get X11 windows on your screen",
-            ));
+            )));
         } else {
-            fixes.push(r.t(
+            fixes.push(r.words(t(
                 "デスクトップ（Wayland か X11）の端末から実行します",
                 "run the command from a terminal inside the desktop (Wayland or X11)",
-            ));
+            )));
         }
         fixes.push(png_fix);
         r.problem(text, fixes);
@@ -529,7 +526,7 @@ fn guarded<T>(f: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
 }
 
 fn cpu(r: &mut Report) {
-    r.section("レンダラ", "renderers");
+    r.section(t("レンダラ", "renderers"));
     let threads = std::thread::available_parallelism().map_or(1, std::num::NonZero::get);
     r.set("cpu_threads", threads);
     let lang = r.lang;
@@ -554,15 +551,18 @@ fn cpu(r: &mut Report) {
     for (key, name, result) in [
         (
             "cpu_raster",
-            r.t(
+            r.words(t(
                 "CPU ラスタライザ（render --renderer raster、ビューアの CPU 描画）",
                 "CPU rasterizer (render --renderer raster, the viewer's CPU mode)",
-            ),
+            )),
             raster,
         ),
         (
             "cpu_trace",
-            r.t("レイトレーサ（render --renderer trace）", "ray tracer (render --renderer trace)"),
+            r.words(t(
+                "レイトレーサ（render --renderer trace）",
+                "ray tracer (render --renderer trace)",
+            )),
             trace,
         ),
     ] {
@@ -570,26 +570,18 @@ fn cpu(r: &mut Report) {
         match result {
             Ok(took) => {
                 let ms = took.as_secs_f64() * 1e3;
-                let text = match r.lang {
-                    Lang::Ja => {
-                        format!(
-                            "{name}: 使えます（64×48 の試し描き {ms:.1} ms、{threads} スレッド）"
-                        )
-                    }
-                    Lang::En => {
-                        format!(
-                            "{name}: works (a 64×48 test frame in {ms:.1} ms, {threads} threads)"
-                        )
-                    }
-                };
+                let text = r.words(Text::new(
+                    format!("{name}: 使えます（64×48 の試し描き {ms:.1} ms、{threads} スレッド）"),
+                    format!("{name}: works (a 64×48 test frame in {ms:.1} ms, {threads} threads)"),
+                ));
                 r.works(text);
             }
             Err(e) => {
                 let text = format!("{name}: {e}");
-                let fixes = vec![r.t(
+                let fixes = vec![r.words(t(
                     "キットの不具合です。この出力を添えて TA に知らせてください",
                     "this is a bug of the kit: tell your TA, with this output",
-                )];
+                ))];
                 r.problem(text, fixes);
             }
         }
@@ -718,37 +710,37 @@ fn lavapipe() -> Option<PathBuf> {
 fn no_adapter_fixes(r: &Report, wsl: Option<Wsl>, broken_variable: bool) -> Vec<String> {
     let mut fixes = Vec::new();
     if broken_variable {
-        fixes.push(r.t(
+        fixes.push(r.words(t(
             "まず上の VK_… の行を直します（存在しないドライバの指定が原因です）",
             "first fix the VK_… line above (it names a driver that is not there)",
-        ));
+        )));
     }
     match std::env::consts::OS {
-        "macos" => fixes.push(r.t(
+        "macos" => fixes.push(r.words(t(
             "キットの GPU レンダラは Vulkan 用で、macOS にはありません。CPU のレンダラ（raster・trace・ビューア）を使います",
             "the kit's GPU renderer is built for Vulkan, which macOS does not have: use the CPU renderers (raster, trace, the viewer)",
-        )),
-        "windows" => fixes.push(r.t(
+        ))),
+        "windows" => fixes.push(r.words(t(
             "GPU のメーカー（Intel・AMD・NVIDIA）のサイトから最新のドライバを入れます（Vulkan が含まれます）。仮想マシンやリモートデスクトップでは Vulkan がないことがあります",
             "install the newest driver from your GPU's maker (Intel, AMD, NVIDIA): it includes Vulkan. Virtual machines and remote desktops may have no Vulkan",
-        )),
+        ))),
         _ => {
-            fixes.push(r.t(
+            fixes.push(r.words(t(
                 "Debian・Ubuntu: sudo apt install mesa-vulkan-drivers libvulkan1（GPU がなくても Mesa の lavapipe が CPU で動きます）。Fedora: sudo dnf install mesa-vulkan-drivers、Arch: sudo pacman -S vulkan-swrast",
                 "Debian, Ubuntu: sudo apt install mesa-vulkan-drivers libvulkan1 (without a GPU, Mesa's lavapipe runs on the CPU); Fedora: sudo dnf install mesa-vulkan-drivers; Arch: sudo pacman -S vulkan-swrast",
-            ));
+            )));
             if wsl.is_some() {
-                fixes.push(r.t(
+                fixes.push(r.words(t(
                     "WSL からは Windows の GPU を Vulkan で使えないことが多いので、上の lavapipe を使います",
                     "under WSL the Windows GPU is often not reachable through Vulkan: use lavapipe as above",
-                ));
+                )));
             }
         }
     }
-    fixes.push(r.t(
+    fixes.push(r.words(t(
         "GPU がなくても演習はすべてできます。GPU が要るのは render --renderer gpu とビューアの r キーだけです",
         "every part of the course works without a GPU: only render --renderer gpu and the viewer's r key need one",
-    ));
+    )));
     fixes
 }
 
@@ -765,28 +757,28 @@ fn driver_variables(r: &mut Report) -> bool {
             .collect();
         for file in missing {
             broken = true;
-            let text = match r.lang {
-                Lang::Ja => format!(
+            let text = r.words(Text::new(format!(
                     "{key}={value}: {} がありません（Vulkan はここに書かれたドライバだけを探します）",
                     file.display()
-                ),
-                Lang::En => format!(
+                ), format!(
                     "{key}={value}: {} does not exist (Vulkan looks only for the drivers named here)",
                     file.display()
-                ),
-            };
+                )));
             let mut fixes = vec![format!(
                 "{}{}",
                 unset(key),
-                r.t(
+                r.words(t(
                     "（Vulkan が自分でドライバを探します）",
                     " (Vulkan then finds its drivers itself)"
-                )
+                ))
             )];
             if let Some(lvp) = lavapipe() {
                 fixes.push(format!(
                     "{}export {key}={}",
-                    r.t("または Mesa の lavapipe を指定します: ", "or name Mesa's lavapipe: "),
+                    r.words(t(
+                        "または Mesa の lavapipe を指定します: ",
+                        "or name Mesa's lavapipe: "
+                    )),
                     lvp.display()
                 ));
             }
@@ -797,18 +789,18 @@ fn driver_variables(r: &mut Report) -> bool {
 }
 
 fn gpu(r: &mut Report, limit: Duration, wsl: Option<Wsl>) {
-    let name = r.t(
+    let name = r.words(t(
         "GPU レンダラ（render --renderer gpu、ビューアの r キー）",
         "GPU renderer (render --renderer gpu, the viewer's r key)",
-    );
+    ));
     let broken_variable = driver_variables(r);
     if let Some(b) = env("WGPU_BACKEND") {
         r.note(format!(
             "WGPU_BACKEND={b} {}",
-            r.t(
+            r.words(t(
                 "（キットの GPU レンダラは Vulkan だけです。vulkan 以外を指定するとアダプタは見つかりません）",
-                "(the kit's GPU renderer has Vulkan only: anything but vulkan finds no adapter)"
-            )
+                "(the kit's GPU renderer has Vulkan only: anything but vulkan finds no adapter)",
+            ))
         ));
     }
     let probe = probe_gpu(limit);
@@ -824,58 +816,58 @@ fn gpu(r: &mut Report, limit: Duration, wsl: Option<Wsl>) {
     r.set("gpu_software", software);
     if let Some(adapter) = adapter {
         r.set("gpu_error", Value::Null);
-        r.works(format!("{name}: {} — {adapter}", r.t("使えます", "works")));
+        r.works(format!("{name}: {} — {adapter}", r.words(t("使えます", "works"))));
         if software == Some(true) {
-            r.note(r.t(
+            r.note(r.words(t(
                 "このアダプタは CPU で動くソフトウェアの Vulkan（Mesa の lavapipe など）です。結果は正しいですが速くはありません。本物の GPU のドライバがあればそちらが選ばれます",
                 "this adapter is software Vulkan running on the CPU (such as Mesa's lavapipe): correct, but not fast; a real GPU's driver is chosen instead when one is installed",
-            ));
+            )));
         }
         return;
     }
     let secs = limit.as_secs();
-    let message = match (&probe, r.lang) {
-        (Probe::Answer(v), lang) => {
-            v[lang.pick("error_ja", "error_en")].as_str().unwrap_or_default().to_owned()
+    let message = match &probe {
+        Probe::Answer(v) => {
+            let field = |k: &str| v[k].as_str().unwrap_or_default().to_owned();
+            Text::new(field("error_ja"), field("error_en"))
         }
-        (Probe::TimedOut, Lang::Ja) => {
-            format!("GPU ドライバが {secs} 秒以内に応答しませんでした（ドライバが止まっています）")
-        }
-        (Probe::TimedOut, Lang::En) => {
-            format!("the GPU driver did not answer within {secs} s (it hangs)")
-        }
-        (Probe::Crashed(status, tail), Lang::Ja) => {
-            format!("GPU を開く途中で異常終了しました（{status}）{}", suffix(tail))
-        }
-        (Probe::Crashed(status, tail), Lang::En) => {
-            format!("opening the GPU crashed ({status}){}", suffix(tail))
-        }
-        (Probe::NotStarted(e), Lang::Ja) => format!("GPU を確かめるプロセスを起動できません: {e}"),
-        (Probe::NotStarted(e), Lang::En) => format!("cannot start the GPU probe: {e}"),
+        Probe::TimedOut => Text::new(
+            format!("GPU ドライバが {secs} 秒以内に応答しませんでした（ドライバが止まっています）"),
+            format!("the GPU driver did not answer within {secs} s (it hangs)"),
+        ),
+        Probe::Crashed(status, tail) => Text::new(
+            format!("GPU を開く途中で異常終了しました（{status}）{}", suffix(tail)),
+            format!("opening the GPU crashed ({status}){}", suffix(tail)),
+        ),
+        Probe::NotStarted(e) => Text::new(
+            format!("GPU を確かめるプロセスを起動できません: {e}"),
+            format!("cannot start the GPU probe: {e}"),
+        ),
     };
+    let message = r.words(message);
     r.set("gpu_error", message.clone());
     let no_adapter = answer.and_then(|v| v["no_adapter"].as_bool()) == Some(true);
     let fixes = if no_adapter {
         no_adapter_fixes(r, wsl, broken_variable)
     } else {
-        let mut fixes = vec![r.t(
+        let mut fixes = vec![r.words(t(
             "GPU のドライバを更新するか入れ直します（Linux では Mesa: sudo apt install mesa-vulkan-drivers）",
             "update or reinstall the GPU driver (on Linux, Mesa's: sudo apt install mesa-vulkan-drivers)",
-        )];
+        ))];
         if let Some(lvp) = lavapipe() {
             fixes.push(format!(
                 "{}VK_DRIVER_FILES={} cargo run --release -- doctor",
-                r.t(
+                r.words(t(
                     "ソフトウェアの Vulkan（lavapipe）で試すには: ",
                     "to try software Vulkan (lavapipe) instead: "
-                ),
+                )),
                 lvp.display()
             ));
         }
-        fixes.push(r.t(
+        fixes.push(r.words(t(
             "それまでは CPU のレンダラを使います（演習はすべて CPU でできます）",
             "meanwhile use the CPU renderers (every part of the course runs on them)",
-        ));
+        )));
         fixes
     };
     r.problem(format!("{name}: {message}"), fixes);
@@ -890,7 +882,7 @@ fn suffix(tail: &str) -> String {
 // The kit
 
 fn kit(r: &mut Report) {
-    r.section("キット", "the kit");
+    r.section(t("キット", "the kit"));
     let path = crate::kit_path(None, "exercises").join("student.toml");
     let shown = path.display().to_string();
     r.set("student_file", shown.clone());
@@ -900,9 +892,9 @@ fn kit(r: &mut Report) {
             r.set("student_error", Value::Null);
             let text = format!(
                 "{} {} ({} {}, {shown})",
-                r.t("学生番号", "student number"),
+                r.words(t("学生番号", "student number")),
                 record.student,
-                r.t("課題表", "table"),
+                r.words(t("課題表", "table")),
                 record.table
             );
             r.works(text);
@@ -910,18 +902,18 @@ fn kit(r: &mut Report) {
         Ok(Err(e)) => {
             r.set("student", Value::Null);
             r.set("student_error", e.message(r.lang));
-            let save = r.t(
+            let save = r.words(t(
                 "cargo run --release -- assignment --student 12345678 --save（12345678 を自分の学生番号に）",
                 "cargo run --release -- assignment --student 12345678 --save (with your own number)",
-            );
+            ));
             match e {
                 cg_assign::StudentFileError::Missing { .. } => {
                     let text = format!(
                         "{shown} {}",
-                        r.t(
+                        r.words(t(
                             "がありません（学生番号がまだ記録されていません）",
                             "does not exist (your student number is not recorded yet)"
-                        )
+                        ))
                     );
                     r.problem(text, vec![save]);
                 }
@@ -929,12 +921,12 @@ fn kit(r: &mut Report) {
                     let text = e.message(r.lang);
                     let edit = format!(
                         "{}: student = \"12345678\"",
-                        r.t(
+                        r.words(t(
                             &format!("{shown} を直します（8 桁を引用符で囲みます）"),
                             &format!("edit {shown} (8 digits, in quotes)")
-                        )
+                        ))
                     );
-                    r.problem(text, vec![edit, format!("{} {save}", r.t("または", "or"))]);
+                    r.problem(text, vec![edit, format!("{} {save}", r.words(t("または", "or")))]);
                 }
             }
         }
@@ -947,16 +939,16 @@ fn kit(r: &mut Report) {
     let release = !cfg!(debug_assertions);
     r.set("release_build", release);
     if release {
-        r.works(r.t("リリースビルド（--release）です", "release build (--release)"));
+        r.works(r.words(t("リリースビルド（--release）です", "release build (--release)")));
     } else {
-        let text = r.t(
+        let text = r.words(t(
             "デバッグビルドです: 描画もチェックも何倍も遅くなります",
             "this is a debug build: rendering and checks run many times slower",
-        );
-        let fixes = vec![r.t(
+        ));
+        let fixes = vec![r.words(t(
             "いつも --release を付けます: cargo run --release -- doctor",
             "always add --release: cargo run --release -- doctor",
-        )];
+        ))];
         r.problem(text, fixes);
     }
 }

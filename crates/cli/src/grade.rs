@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 use std::time::Duration;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_grade::{Config, Options};
 
 /// Options of `cg grade`.
@@ -59,12 +59,12 @@ impl Setup {
     ) -> Result<Setup, String> {
         let kit = crate::kit_path(None, ".");
         if !kit.join("solutions/Cargo.toml").exists() {
-            return Err(lang
-                .pick(
-                    "solutions/ がありません（採点は、キット本体のリポジトリで行います）",
-                    "there is no solutions/ here: grading runs in the kit's own repository",
-                )
-                .to_owned());
+            return Err(t(
+                "solutions/ がありません（採点は、キット本体のリポジトリで行います）",
+                "there is no solutions/ here: grading runs in the kit's own repository",
+            )
+            .get(lang)
+            .to_owned());
         }
         let config_text = match config {
             Some(path) => {
@@ -76,7 +76,7 @@ impl Setup {
         let isolation = cg_sandbox::detect();
         cg_grade::require_isolation(isolation, unsafe_no_sandbox)
             .map_err(|why| why.get(lang).to_owned())?;
-        eprintln!("{}: {}", lang.pick("隔離", "isolation"), isolation.describe(lang));
+        eprintln!("{}: {}", t("隔離", "isolation").get(lang), isolation.describe(lang));
         Ok(Setup { kit, config, config_text, isolation })
     }
 }
@@ -93,12 +93,12 @@ pub(crate) fn limits(time_limit: u64, memory_limit: u64) -> cg_sandbox::Limits {
 /// `cg grade`.
 pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     if !(args.moodle_max_grade.is_finite() && args.moodle_max_grade > 0.0) {
-        return Err(lang
-            .pick(
-                "--moodle-max-grade は正の数にしてください",
-                "--moodle-max-grade must be a positive number",
-            )
-            .to_owned());
+        return Err(t(
+            "--moodle-max-grade は正の数にしてください",
+            "--moodle-max-grade must be a positive number",
+        )
+        .get(lang)
+        .to_owned());
     }
     let roster = match &args.roster {
         Some(path) => {
@@ -130,21 +130,23 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     println!(
         "{} {} {}: {}",
         graded.len(),
-        lang.pick("件の結果", "results in"),
+        t("件の結果", "results in").get(lang),
         args.out.display(),
-        lang.pick(
+        t(
             "class.csv, summary.md, <学生番号>.json, feedback/",
             "class.csv, summary.md, <student>.json, feedback/"
         )
+        .get(lang)
     );
     let flagged = graded.iter().filter(|g| g.flag.is_some()).count();
     if flagged > 0 {
         println!(
             "{flagged} {}",
-            lang.pick(
+            t(
                 "件に確認の印があります（class.csv の flag 列、summary.md）",
                 "flagged for a look (class.csv's flag column, summary.md)"
             )
+            .get(lang)
         );
     }
     let now = std::time::SystemTime::now()
@@ -162,9 +164,9 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
             "Moodle: {}/moodle/grades.csv, feedback.zip ({} {}, {} {})",
             args.out.display(),
             w.participants,
-            lang.pick("人", "participants"),
+            t("人", "participants").get(lang),
             w.graded,
-            lang.pick("人に評点", "with a grade")
+            t("人に評点", "with a grade").get(lang)
         );
     }
     Ok(())

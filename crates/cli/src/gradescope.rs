@@ -6,7 +6,7 @@
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_grade::{Options, gradescope};
 
 /// Options of `cg grade-one`.
@@ -90,7 +90,7 @@ fn grade_one_inner(args: &GradeOneArgs, lang: Lang) -> Result<(), String> {
         "{}: {} ({})",
         one.path.display(),
         one.results["score"],
-        lang.pick("Gradescope の形式", "Gradescope's format")
+        t("Gradescope の形式", "Gradescope's format").get(lang)
     );
     Ok(())
 }
@@ -99,22 +99,23 @@ fn grade_one_inner(args: &GradeOneArgs, lang: Lang) -> Result<(), String> {
 pub fn autograder(args: &AutograderArgs, lang: Lang) -> Result<(), String> {
     let kit = crate::kit_path(None, ".");
     if !kit.join("solutions/Cargo.toml").exists() {
-        return Err(lang
-            .pick(
-                "solutions/ がありません（オートグレーダーは、キット本体のリポジトリから作ります）",
-                "there is no solutions/ here: the autograder is made from the kit's own repository",
-            )
-            .to_owned());
+        return Err(t(
+            "solutions/ がありません（オートグレーダーは、キット本体のリポジトリから作ります）",
+            "there is no solutions/ here: the autograder is made from the kit's own repository",
+        )
+        .get(lang)
+        .to_owned());
     }
     let count = gradescope::package::write_zip(&kit, &args.out, lang)?;
     println!(
         "{} {} (setup.sh, run_autograder, {count} {})",
-        lang.pick("オートグレーダーを書きました:", "wrote the autograder to"),
+        t("オートグレーダーを書きました:", "wrote the autograder to").get(lang),
         args.out.display(),
-        lang.pick(
+        t(
             "ファイル（solutions/ を含む。学生に配らないでください）",
             "files, solutions/ included: never hand it out"
         )
+        .get(lang)
     );
     Ok(())
 }

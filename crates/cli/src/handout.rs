@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_grade::handout::write_handout;
 
 /// Options of `cg handout`.
@@ -18,12 +18,12 @@ pub struct Args {
 pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let root = crate::kit_path(None, ".");
     if !root.join("solutions/Cargo.toml").exists() {
-        return Err(lang
-            .pick(
-                "solutions/ がありません（配布用のコピーは、キット本体のリポジトリから作ります）",
-                "there is no solutions/ here: a handout is made from the kit's own repository",
-            )
-            .to_owned());
+        return Err(t(
+            "solutions/ がありません（配布用のコピーは、キット本体のリポジトリから作ります）",
+            "there is no solutions/ here: a handout is made from the kit's own repository",
+        )
+        .get(lang)
+        .to_owned());
     }
     if args.dir.exists()
         && std::fs::read_dir(&args.dir).map(|mut d| d.next().is_some()).unwrap_or(true)
@@ -31,18 +31,19 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         return Err(format!(
             "{} {}",
             args.dir.display(),
-            lang.pick(
+            t(
                 "は空ではありません（新しいフォルダを指定してください）",
                 "is not empty (give a new folder)"
             )
+            .get(lang)
         ));
     }
     let count = write_handout(&root, &args.dir)?;
     println!(
         "{} {} ({count} {})",
-        lang.pick("学生用のコピーを書きました:", "wrote the student's copy to"),
+        t("学生用のコピーを書きました:", "wrote the student's copy to").get(lang),
         args.dir.display(),
-        lang.pick("ファイル", "files")
+        t("ファイル", "files").get(lang)
     );
     // The folder as the command names it, quoted for a shell when it has spaces.
     let dir = args.dir.display().to_string();
@@ -53,10 +54,8 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     };
     println!(
         "{} cd {dir} && cargo run --release -- check --student 12345678",
-        lang.pick(
-            "solutions/ は含まれていません。確かめるには:",
-            "It has no solutions/. To try it:"
-        )
+        t("solutions/ は含まれていません。確かめるには:", "It has no solutions/. To try it:")
+            .get(lang)
     );
     Ok(())
 }

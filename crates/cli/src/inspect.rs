@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use cg_core::camera::OrbitCamera;
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_core::light::{LightKind, LightModel, Specular};
 use cg_core::mesh::{Orientation, Problem};
 use cg_core::normals::{Weighting, face_normal};
@@ -46,8 +46,8 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         let names: Vec<&str> = scene.objects.iter().map(|o| o.name.as_str()).collect();
         return Err(format!(
             "{} \"{name}\" ({}: {})",
-            lang.pick("オブジェクトがありません", "no object named"),
-            lang.pick("あるもの", "there are"),
+            t("オブジェクトがありません", "no object named").get(lang),
+            t("あるもの", "there are").get(lang),
             names.join(", ")
         ));
     }
@@ -73,26 +73,30 @@ fn report(
     decimals: usize,
     lang: Lang,
 ) -> Result<String, String> {
-    let t = |ja, en| lang.pick(ja, en);
     let d = decimals;
     let mut out = String::new();
     let w = &mut out;
-    let _ = writeln!(w, "{} \"{}\" — {path}", t("シーン", "Scene"), scene.name);
+    let _ = writeln!(w, "{} \"{}\" — {path}", t("シーン", "Scene").get(lang), scene.name);
     let _ = writeln!(
         w,
         "  {}: {} × {}, {} {}",
-        t("ウィンドウ", "window"),
+        t("ウィンドウ", "window").get(lang),
         scene.width,
         scene.height,
-        t("背景色", "clear colour"),
+        t("背景色", "clear colour").get(lang),
         tuple(scene.clear_color, d)
     );
-    let _ = writeln!(w, "  {}: {}", t("カメラ", "camera"), describe_camera(&scene.camera, d, lang));
+    let _ = writeln!(
+        w,
+        "  {}: {}",
+        t("カメラ", "camera").get(lang),
+        describe_camera(&scene.camera, d, lang)
+    );
     let p = &scene.projection;
     let _ = writeln!(
         w,
         "  {}: gluPerspective({}°, {}/{}, {}, {})",
-        t("投影", "projection"),
+        t("投影", "projection").get(lang),
         decimal(p.fovy_deg, d),
         scene.width,
         scene.height,
@@ -102,32 +106,39 @@ fn report(
     let _ = writeln!(
         w,
         "  {}: {}",
-        t("光のモデル", "light model"),
+        t("光のモデル", "light model").get(lang),
         describe_model(scene.light_model, lang)
     );
-    let _ = writeln!(w, "  {}: {}", t("環境光", "global ambient"), tuple(scene.global_ambient, d));
+    let _ = writeln!(
+        w,
+        "  {}: {}",
+        t("環境光", "global ambient").get(lang),
+        tuple(scene.global_ambient, d)
+    );
     let shading = match scene.shading {
         Shading::Flat => t("フラットシェーディング", "flat"),
         Shading::Gouraud => t("グローシェーディング", "Gouraud"),
         Shading::Phong => t("フォンシェーディング", "Phong"),
     };
+    let shading = shading.get(lang);
     let cull = if scene.cull_back_faces {
         t("裏面は描画しない", "back faces culled")
     } else {
         t("裏面も描画する", "back faces drawn")
     };
-    let _ = writeln!(w, "  {}: {shading}, {cull}", t("シェーディング", "shading"));
-    let _ = writeln!(w, "  {}:", t("光源", "lights"));
+    let cull = cull.get(lang);
+    let _ = writeln!(w, "  {}: {shading}, {cull}", t("シェーディング", "shading").get(lang));
+    let _ = writeln!(w, "  {}:", t("光源", "lights").get(lang));
     for (i, light) in scene.lights.iter().enumerate() {
         let _ = writeln!(
             w,
             "    L{i} {}  {} {}  {} {}  {} {}",
             describe_light(&light.kind, d, lang),
-            t("環境光", "ambient"),
+            t("環境光", "ambient").get(lang),
             tuple(light.ambient, d),
-            t("拡散", "diffuse"),
+            t("拡散", "diffuse").get(lang),
             tuple(light.diffuse, d),
-            t("鏡面", "specular"),
+            t("鏡面", "specular").get(lang),
             tuple(light.specular, d)
         );
     }
@@ -135,7 +146,7 @@ fn report(
     let _ = writeln!(
         w,
         "  {}:",
-        t("視野変換行列（ワールド座標系→カメラ座標系）", "view matrix (world → camera)")
+        t("視野変換行列（ワールド座標系→カメラ座標系）", "view matrix (world → camera)").get(lang)
     );
     let _ = writeln!(w, "    V = {}", view.simplified());
     let _ = writeln!(w, "      = {}", view.symbolic());
@@ -161,59 +172,62 @@ fn object_report(
     d: usize,
     lang: Lang,
 ) -> Result<(), String> {
-    let t = |ja, en| lang.pick(ja, en);
     let mesh = &object.mesh;
     let normals = match object.normals {
-        NormalSource::Face => t("面の法線（面ごと）", "face normals (per face)").to_owned(),
+        NormalSource::Face => {
+            t("面の法線（面ごと）", "face normals (per face)").get(lang).to_owned()
+        }
         NormalSource::Vertex { weighting, crease_deg } => format!(
             "{} ({}{})",
-            t("頂点の法線", "vertex normals"),
+            t("頂点の法線", "vertex normals").get(lang),
             match weighting {
                 Weighting::Uniform => t("面の法線の単純平均", "uniform average of face normals"),
                 Weighting::Area => t("面積で重み付け", "area-weighted"),
                 Weighting::Angle => t("角度で重み付け", "angle-weighted"),
                 Weighting::Max => t("Max の重み付け", "Max-weighted"),
-            },
+            }
+            .get(lang),
             crease_deg.map_or(String::new(), |c| format!(
                 ", {} {}°",
-                t("稜線とみなす角度", "crease angle"),
+                t("稜線とみなす角度", "crease angle").get(lang),
                 decimal(c, 1)
             ))
         ),
-        NormalSource::Given => t("ファイルの法線", "normals from the file").to_owned(),
+        NormalSource::Given => t("ファイルの法線", "normals from the file").get(lang).to_owned(),
     };
     let _ = writeln!(
         w,
         "{} {}/{count} \"{}\": {} {}, {} {}; {}",
-        t("オブジェクト", "Object"),
+        t("オブジェクト", "Object").get(lang),
         k + 1,
         object.name,
         mesh.vertex_count(),
-        t("頂点", "vertices"),
+        t("頂点", "vertices").get(lang),
         mesh.face_count(),
-        t("面", "faces"),
+        t("面", "faces").get(lang),
         normals
     );
 
     // Welding (docs/numerics.md row 3: say which was used)
     let weld = match object.weld {
-        None => t("位置による頂点の統合: なし", "welded by position: no").to_owned(),
+        None => t("位置による頂点の統合: なし", "welded by position: no").get(lang).to_owned(),
         Some(r) => format!(
             "{} {}: {} {}, {} {}",
-            t("位置による頂点の統合: あり 許容値", "welded by position: yes, tolerance"),
+            t("位置による頂点の統合: あり 許容値", "welded by position: yes, tolerance").get(lang),
             decimal(r.tolerance, d),
             r.merged_vertices,
-            t("頂点を統合", "vertices merged"),
+            t("頂点を統合", "vertices merged").get(lang),
             r.removed_faces,
-            t("面を削除", "faces removed")
+            t("面を削除", "faces removed").get(lang)
         ),
     };
     let _ = writeln!(w, "  {weld}");
 
     // Mesh check
     let v = mesh.validate();
-    let yes_no =
-        |b: bool, ja_yes, en_yes, ja_no, en_no| if b { t(ja_yes, en_yes) } else { t(ja_no, en_no) };
+    let yes_no = |b: bool, ja_yes, en_yes, ja_no, en_no| {
+        if b { t(ja_yes, en_yes) } else { t(ja_no, en_no) }.get(lang).to_owned()
+    };
     let orientation = match v.orientation() {
         Some(Orientation::Outward) => t("外向き", "outward"),
         Some(Orientation::Inward) => {
@@ -221,10 +235,11 @@ fn object_report(
         }
         None => t("判定なし（閉じていない）", "n/a (not closed)"),
     };
+    let orientation = orientation.get(lang);
     let _ = writeln!(
         w,
         "  {}: {}, {}, {}, {} {}",
-        t("メッシュの検査", "mesh check"),
+        t("メッシュの検査", "mesh check").get(lang),
         yes_no(v.is_closed(), "閉じている", "closed", "開いている", "open"),
         yes_no(v.is_manifold(), "多様体", "manifold", "非多様体", "NOT manifold"),
         yes_no(
@@ -234,7 +249,7 @@ fn object_report(
             "向きが不揃い",
             "INCONSISTENT winding"
         ),
-        t("面の向き", "orientation"),
+        t("面の向き", "orientation").get(lang),
         orientation
     );
     let problems = v.problems();
@@ -244,15 +259,16 @@ fn object_report(
         let _ = writeln!(
             w,
             "  {}: {} {}",
-            t("開いた面", "open surface"),
+            t("開いた面", "open surface").get(lang),
             problems.len(),
             t(
                 "本の境界辺（地面のような面なら正常。閉じた立体には境界辺はありません）",
                 "border edges (fine for a surface such as the ground; a closed solid has none)"
             )
+            .get(lang)
         );
     } else if !problems.is_empty() {
-        let _ = writeln!(w, "  {} ({}):", t("指摘", "findings"), problems.len());
+        let _ = writeln!(w, "  {} ({}):", t("指摘", "findings").get(lang), problems.len());
         // Grouped by kind, in order of first appearance: an open grid's 40 border edges are one
         // line with a few examples, not 40 lines.
         let mut kinds: Vec<(std::mem::Discriminant<_>, Vec<&_>)> = Vec::new();
@@ -277,15 +293,20 @@ fn object_report(
                         "件の同じ種類の指摘（--all で全部表示）",
                         "more of this kind (--all lists them)"
                     )
+                    .get(lang)
                 );
             }
-            let _ =
-                writeln!(w, "      {}: {}", t("よくある原因", "usual cause"), list[0].hint(lang));
+            let _ = writeln!(
+                w,
+                "      {}: {}",
+                t("よくある原因", "usual cause").get(lang),
+                list[0].hint().get(lang)
+            );
         }
     }
 
     // Vertex table
-    let _ = writeln!(w, "  {}:", t("頂点座標", "vertices"));
+    let _ = writeln!(w, "  {}:", t("頂点座標", "vertices").get(lang));
     for (i, p) in mesh.positions.iter().enumerate().take(rows) {
         let _ = writeln!(w, "    {}", vertex_line(i, *p, d));
     }
@@ -299,6 +320,7 @@ fn object_report(
             "三角面と面の法線 normalise((Vb−Va)×(Vc−Va))",
             "faces and face normals normalise((Vb−Va)×(Vc−Va))"
         )
+        .get(lang)
     );
     let width = (0..mesh.face_count().min(rows))
         .map(|f| face(f, mesh.faces[f]).chars().count())
@@ -309,11 +331,11 @@ fn object_report(
         let normal = if idx.iter().all(|&i| (i as usize) < mesh.vertex_count()) {
             let [a, b, c] = mesh.triangle(f);
             face_normal(a, b, c).map_or_else(
-                || t("縮退（法線なし）", "degenerate (no normal)").to_owned(),
+                || t("縮退（法線なし）", "degenerate (no normal)").get(lang).to_owned(),
                 |n| braces(n, d),
             )
         } else {
-            t("頂点番号が範囲外", "index out of range").to_owned()
+            t("頂点番号が範囲外", "index out of range").get(lang).to_owned()
         };
         let _ = writeln!(w, "    {label:<width$}  {normal}");
     }
@@ -324,13 +346,14 @@ fn object_report(
     let _ = writeln!(
         w,
         "  {}:",
-        t("モデル変換（モデル座標系→ワールド座標系）", "model transform (model → world)")
+        t("モデル変換（モデル座標系→ワールド座標系）", "model transform (model → world)").get(lang)
     );
     let _ = writeln!(w, "    M = {}", object.transform.simplified());
     let _ = writeln!(
         w,
         "  {}:",
         t("モデルビュー行列（モデル座標系→カメラ座標系）", "model-view matrix (model → camera)")
+            .get(lang)
     );
     let _ = writeln!(w, "    V·M = {}", model_view.simplified());
     let _ = writeln!(w, "        = {}", model_view.symbolic());
@@ -348,7 +371,7 @@ fn more(w: &mut String, total: usize, shown: usize, lang: Lang) {
             w,
             "    … {} {}",
             total - shown,
-            lang.pick("行省略（--all で全部表示）", "more (--all prints every row)")
+            t("行省略（--all で全部表示）", "more (--all prints every row)").get(lang)
         );
     }
 }
@@ -357,23 +380,23 @@ fn describe_camera(camera: &Camera, d: usize, lang: Lang) -> String {
     match camera {
         Camera::Orbit(OrbitCamera { yaw_deg, pitch_deg, distance, target, .. }) => format!(
             "{} — {} {}, {} {}°, {} {}°, {} {}",
-            lang.pick("注視点のまわりを回るカメラ", "orbit"),
-            lang.pick("距離", "distance"),
+            t("注視点のまわりを回るカメラ", "orbit").get(lang),
+            t("距離", "distance").get(lang),
             decimal(*distance, d),
-            lang.pick("仰角 pitch", "pitch"),
+            t("仰角 pitch", "pitch").get(lang),
             decimal(*pitch_deg, d),
-            lang.pick("方位角 yaw", "yaw"),
+            t("方位角 yaw", "yaw").get(lang),
             decimal(*yaw_deg, d),
-            lang.pick("注視点", "target"),
+            t("注視点", "target").get(lang),
             tuple(*target, d)
         ),
         Camera::LookAt { eye, target, up } => format!(
             "gluLookAt — {} {}, {} {}, {} {}",
-            lang.pick("視点", "eye"),
+            t("視点", "eye").get(lang),
             tuple(*eye, d),
-            lang.pick("注視点", "target"),
+            t("注視点", "target").get(lang),
             tuple(*target, d),
-            lang.pick("上方向", "up"),
+            t("上方向", "up").get(lang),
             tuple(*up, d)
         ),
     }
@@ -383,25 +406,27 @@ fn describe_model(model: LightModel, lang: Lang) -> String {
     match model {
         LightModel::OpenGl { local_viewer } => format!(
             "{}, {}",
-            lang.pick("OpenGL 1.x 固定機能と同じ式", "OpenGL 1.x fixed-function equation"),
+            t("OpenGL 1.x 固定機能と同じ式", "OpenGL 1.x fixed-function equation").get(lang),
             if local_viewer {
-                lang.pick("視点は有限の距離", "local viewer")
+                t("視点は有限の距離", "local viewer")
             } else {
-                lang.pick("視点は無限遠", "infinite viewer")
+                t("視点は無限遠", "infinite viewer")
             }
+            .get(lang)
         ),
         LightModel::Lecture { specular, local_viewer } => format!(
             "{} I = Ia·ka + Σ Ii·[kd (N·L) + ks ({})^n], {}",
-            lang.pick("講義の式", "the lecture's"),
+            t("講義の式", "the lecture's").get(lang),
             match specular {
                 Specular::Phong => "R·V",
                 Specular::Blinn => "N·H",
             },
             if local_viewer {
-                lang.pick("視点は有限の距離", "local viewer")
+                t("視点は有限の距離", "local viewer")
             } else {
-                lang.pick("視点は無限遠", "infinite viewer")
+                t("視点は無限遠", "infinite viewer")
             }
+            .get(lang)
         ),
     }
 }
@@ -411,32 +436,32 @@ fn describe_light(kind: &LightKind, d: usize, lang: Lang) -> String {
         LightKind::Directional { to_light } => {
             format!(
                 "{} {}",
-                lang.pick("平行光源 光源の方向", "directional, towards"),
+                t("平行光源 光源の方向", "directional, towards").get(lang),
                 tuple(*to_light, d)
             )
         }
         LightKind::Point { position } => {
-            format!("{} {}", lang.pick("点光源", "point at"), tuple(*position, d))
+            format!("{} {}", t("点光源", "point at").get(lang), tuple(*position, d))
         }
         LightKind::Spot { position, direction, cutoff_deg, exponent, .. } => format!(
             "{} {} → {}, {} {}°, {} {}",
-            lang.pick("スポットライト光源", "spot at"),
+            t("スポットライト光源", "spot at").get(lang),
             tuple(*position, d),
             tuple(*direction, d),
-            lang.pick("照射角（半角）", "cutoff"),
+            t("照射角（半角）", "cutoff").get(lang),
             decimal(*cutoff_deg, d),
-            lang.pick("集光指数", "exponent"),
+            t("集光指数", "exponent").get(lang),
             decimal(*exponent, d)
         ),
         LightKind::Area { corner, edge_u, edge_v, samples } => format!(
             "{} {} + s·{} + t·{}, {}×{} {}",
-            lang.pick("面光源", "area"),
+            t("面光源", "area").get(lang),
             tuple(*corner, d),
             tuple(*edge_u, d),
             tuple(*edge_v, d),
             samples[0],
             samples[1],
-            lang.pick("個の点光源", "point lights")
+            t("個の点光源", "point lights").get(lang)
         ),
     }
 }

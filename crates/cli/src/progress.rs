@@ -5,7 +5,7 @@
 use std::io::IsTerminal as _;
 use std::time::Duration;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text, t};
 use cg_grade::Graded;
 use cg_grade::progress::Event;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -14,7 +14,8 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 #[must_use]
 pub fn line(g: &Graded, lang: Lang) -> String {
     let max = g.max_score.map(|m| format!(" / {m}")).unwrap_or_default();
-    let note = if g.skipped { lang.pick("（前回の結果）", " (kept)") } else { "" };
+    let note = if g.skipped { t("（前回の結果）", " (kept)") } else { Text::default() };
+    let note = note.get(lang);
     let flag = g.flag.as_ref().map(|f| format!(" [{f}]")).unwrap_or_default();
     format!("{} ({}): {}{max}{note}{flag}", g.name, g.entry, g.score)
 }
@@ -41,13 +42,13 @@ impl Progress {
 
     /// Shows `event`.
     pub fn event(&self, event: Event<'_>) {
-        let l = |ja: &'static str, en: &'static str| self.lang.pick(ja, en);
         match event {
             Event::Reading => {
-                self.bar.set_message(l(
-                    "提出物とキットを読んでいます",
-                    "reading the submissions and the kit",
-                ));
+                self.bar.set_message(
+                    t("提出物とキットを読んでいます", "reading the submissions and the kit")
+                        .get(self.lang)
+                        .to_owned(),
+                );
                 self.bar.enable_steady_tick(Duration::from_millis(200));
             }
             Event::Graded(g) => {
@@ -58,25 +59,35 @@ impl Progress {
                 }
             }
             Event::Start { entries, kept } => {
-                self.style(l(
-                    "{spinner} {msg} [{bar:30}] {pos}/{len} 件採点 · {elapsed}",
-                    "{spinner} {msg} [{bar:30}] {pos}/{len} graded · {elapsed}",
-                ));
+                self.style(
+                    t(
+                        "{spinner} {msg} [{bar:30}] {pos}/{len} 件採点 · {elapsed}",
+                        "{spinner} {msg} [{bar:30}] {pos}/{len} graded · {elapsed}",
+                    )
+                    .get(self.lang),
+                );
                 self.bar.set_length((entries - kept.min(entries)) as u64);
                 self.bar.set_position(0);
                 self.bar.set_message("");
             }
             Event::Building => {
-                self.bar.set_message(l(
-                    "キットをビルドしています（最初の 1 回）",
-                    "building the kit (once, the first time)",
-                ));
+                self.bar.set_message(
+                    t(
+                        "キットをビルドしています（最初の 1 回）",
+                        "building the kit (once, the first time)",
+                    )
+                    .get(self.lang)
+                    .to_owned(),
+                );
             }
             Event::Built => {
-                self.style(l(
-                    "{spinner} [{bar:30}] {pos}/{len} 件採点 · 残り {eta} · {elapsed}",
-                    "{spinner} [{bar:30}] {pos}/{len} graded · {eta} left · {elapsed}",
-                ));
+                self.style(
+                    t(
+                        "{spinner} [{bar:30}] {pos}/{len} 件採点 · 残り {eta} · {elapsed}",
+                        "{spinner} [{bar:30}] {pos}/{len} graded · {eta} left · {elapsed}",
+                    )
+                    .get(self.lang),
+                );
                 self.bar.set_message("");
                 self.bar.reset_eta();
             }

@@ -8,7 +8,7 @@ use std::time::Instant;
 
 use cg_core::features::Features;
 use cg_core::image::Image;
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text, t};
 use cg_core::scene::{Scene, Shading};
 
 /// Which renderer draws.
@@ -122,10 +122,10 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     {
         eprintln!(
             "{}",
-            lang.pick(
+            t(
                 "注意: --max-depth, --fresnel, --no-shadows はレイトレーサ（--renderer trace）の設定です。ラスタライザでは使いません",
-                "note: --max-depth, --fresnel and --no-shadows are ray-tracer settings (--renderer trace); the rasterizer ignores them"
-            )
+                "note: --max-depth, --fresnel and --no-shadows are ray-tracer settings (--renderer trace); the rasterizer ignores them",
+            ).get(lang)
         );
     }
     let settings = TraceSettings {
@@ -148,22 +148,22 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
             "{}-{}-{}.png",
             file_stem(&path),
             renderer_name(args.renderer),
-            shading_name(r.shading, Lang::En).to_lowercase()
+            shading_name(r.shading).en.to_lowercase()
         )),
     };
     write(&output, &r.image, args.output.is_none(), lang)?;
     println!(
         "{} {} — {}, {}, {} × {}, {:.1} ms",
-        lang.pick("描画しました", "rendered"),
+        t("描画しました", "rendered").get(lang),
         path.display(),
-        renderer_label(args.renderer, lang),
-        shading_name(r.shading, lang),
+        renderer_label(args.renderer).get(lang),
+        shading_name(r.shading).get(lang),
         r.image.width,
         r.image.height,
         r.millis
     );
     print!("{}", r.report);
-    println!("{}: {}", lang.pick("出力", "wrote"), output.display());
+    println!("{}: {}", t("出力", "wrote").get(lang), output.display());
     Ok(())
 }
 
@@ -182,7 +182,7 @@ pub fn main_job(lang: Lang) -> Result<(), String> {
     let dir = PathBuf::from("out");
     println!(
         "{} {} ({} × {}):",
-        lang.pick("授業のサンプルシーンを描画します", "Drawing the course's sample scene"),
+        t("授業のサンプルシーンを描画します", "Drawing the course's sample scene").get(lang),
         path.display(),
         scene.width,
         scene.height
@@ -197,10 +197,15 @@ pub fn main_job(lang: Lang) -> Result<(), String> {
             TraceSettings::default(),
             lang,
         )?;
-        let file = dir
-            .join(format!("course-sample-{}.png", shading_name(shading, Lang::En).to_lowercase()));
+        let file =
+            dir.join(format!("course-sample-{}.png", shading_name(shading).en.to_lowercase()));
         write(&file, &r.image, true, lang)?;
-        println!("  {:<24} {:>7.1} ms  {}", shading_name(shading, lang), r.millis, file.display());
+        println!(
+            "  {:<24} {:>7.1} ms  {}",
+            shading_name(shading).get(lang),
+            r.millis,
+            file.display()
+        );
     }
     // The course scene has no specular term, so its three pictures look alike. Lecture 11's
     // point is the highlight: a shiny sphere in the three modes, side by side and labelled.
@@ -217,7 +222,7 @@ pub fn main_job(lang: Lang) -> Result<(), String> {
             TraceSettings::default(),
             lang,
         )?;
-        pictures.push((r.image, shading_name(shading, Lang::En).to_uppercase()));
+        pictures.push((r.image, shading_name(shading).en.to_uppercase()));
     }
     let row: Vec<(&Image, &str)> = pictures.iter().map(|(i, l)| (i, l.as_str())).collect();
     let strip = crate::label::labelled_row(&row, 2);
@@ -225,28 +230,27 @@ pub fn main_job(lang: Lang) -> Result<(), String> {
     write(&file, &strip, true, lang)?;
     println!(
         "{}:\n  {}",
-        lang.pick(
+        t(
             "第11回の要点、鏡面反射のある球をフラット・グロー・フォンシェーディングで並べた図",
             "Lecture 11 in one picture: a shiny sphere in flat, Gouraud and Phong shading"
-        ),
+        )
+        .get(lang),
         file.display()
     );
     println!(
         "{}",
-        lang.pick(
+        t(
             "次に: cargo run --release -- inspect（頂点・面・法線・変換行列）、… render --help（ほかのシーンや設定）",
-            "Next: cargo run --release -- inspect (vertices, faces, normals, matrices), … render --help (other scenes and settings)"
-        )
+            "Next: cargo run --release -- inspect (vertices, faces, normals, matrices), … render --help (other scenes and settings)",
+        ).get(lang)
     );
     // With a display, the course's program itself: the scene in a window, the sample's mouse
     // mapping and keys (CG_NO_WINDOW=1 keeps to the PNGs).
     if cg_viewer::display_available() && std::env::var_os("CG_NO_WINDOW").is_none() {
         println!(
             "{}",
-            lang.pick(
-                "ウィンドウで表示します（閉じると終了）:",
-                "Opening the viewer (close it to end):"
-            )
+            t("ウィンドウで表示します（閉じると終了）:", "Opening the viewer (close it to end):")
+                .get(lang)
         );
         let options = cg_viewer::ViewerOptions { scene: Some(path), lang, ..Default::default() };
         cg_viewer::run(&options).map_err(|e| e.message(lang))?;
@@ -297,7 +301,7 @@ fn draw(
                 cg_raster::Options { shading, size, threads, ..cg_raster::Options::default() };
             let out = cg_raster::render(scene, &options).map_err(|e| e.message(lang))?;
             let millis = start.elapsed().as_secs_f64() * 1e3;
-            let report = report(&out.features, out.stats.list(lang), lang);
+            let report = report(&out.features, out.stats.list(), lang);
             Ok(Rendered { image: out.image, shading: out.shading, millis, report })
         }
         Renderer::Trace => {
@@ -315,7 +319,7 @@ fn draw(
             };
             let out = cg_trace::render(scene, &options).map_err(|e| e.message(lang))?;
             let millis = start.elapsed().as_secs_f64() * 1e3;
-            let report = report(&out.features, out.stats.list(lang), lang);
+            let report = report(&out.features, out.stats.list(), lang);
             // What the tracer did: it traces Gouraud as Phong, and says so.
             Ok(Rendered { image: out.image, shading: out.shading, millis, report })
         }
@@ -326,15 +330,15 @@ fn draw(
             let out = cg_gpu::Gpu::render(&gpu, scene, &cg_gpu::Options { shading, size })
                 .map_err(|e| e.message(lang))?;
             let millis = start.elapsed().as_secs_f64() * 1e3;
-            let mut report = report(&out.features, Vec::<(String, u64)>::new(), lang);
+            let mut report = report(&out.features, Vec::new(), lang);
             let _ = writeln!(
                 report,
                 "  {}: {}\n  {}: {}\n  {}: {setup:.1} ms",
-                lang.pick("アダプタ", "adapter"),
+                t("アダプタ", "adapter").get(lang),
                 gpu.adapter_info(),
-                lang.pick("シェーダに含めたもの", "in the generated shader"),
+                t("シェーダに含めたもの", "in the generated shader").get(lang),
                 out.enabled.join(", "),
-                lang.pick("デバイスの準備", "device set-up"),
+                t("デバイスの準備", "device set-up").get(lang),
             );
             Ok(Rendered { image: out.image, shading: out.shading, millis, report })
         }
@@ -342,15 +346,18 @@ fn draw(
 }
 
 /// What the renderer enabled and skipped (from the scene's features) and the non-zero counters.
-fn report<N: std::fmt::Display>(features: &Features, counts: Vec<(N, u64)>, lang: Lang) -> String {
+fn report(features: &Features, counts: Vec<(Text, u64)>, lang: Lang) -> String {
     let mut out = String::new();
     for line in features.describe(lang).lines() {
         let _ = writeln!(out, "  {line}");
     }
-    let counts: Vec<String> =
-        counts.into_iter().filter(|(_, n)| *n > 0).map(|(name, n)| format!("{name} {n}")).collect();
+    let counts: Vec<String> = counts
+        .into_iter()
+        .filter(|(_, n)| *n > 0)
+        .map(|(name, n)| format!("{} {n}", name.get(lang)))
+        .collect();
     if !counts.is_empty() {
-        let _ = writeln!(out, "  {}: {}", lang.pick("処理", "work"), counts.join(", "));
+        let _ = writeln!(out, "  {}: {}", t("処理", "work").get(lang), counts.join(", "));
     }
     out
 }
@@ -364,10 +371,11 @@ fn write(path: &Path, image: &Image, made_here: bool, lang: Lang) -> Result<(), 
         return Err(format!(
             "{}: {}",
             path.display(),
-            lang.pick(
+            t(
                 "書き出せるのは PNG だけです。ファイル名を .png で終えてください",
                 "the kit writes PNG files only: name the output file .png"
             )
+            .get(lang)
         ));
     }
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
@@ -375,7 +383,7 @@ fn write(path: &Path, image: &Image, made_here: bool, lang: Lang) -> Result<(), 
             std::fs::create_dir_all(dir).map_err(|e| {
                 format!(
                     "{} {}: {e}",
-                    lang.pick("フォルダを作れません", "cannot create the folder"),
+                    t("フォルダを作れません", "cannot create the folder").get(lang),
                     dir.display()
                 )
             })?;
@@ -383,10 +391,11 @@ fn write(path: &Path, image: &Image, made_here: bool, lang: Lang) -> Result<(), 
             return Err(format!(
                 "{}: {}",
                 dir.display(),
-                lang.pick(
+                t(
                     "このフォルダはありません（-o のフォルダは先に作ってください）",
                     "no such folder (make the folder of -o first)"
                 )
+                .get(lang)
             ));
         }
     }
@@ -406,20 +415,20 @@ fn renderer_name(r: Renderer) -> &'static str {
     }
 }
 
-fn renderer_label(r: Renderer, lang: Lang) -> &'static str {
+fn renderer_label(r: Renderer) -> Text {
     match r {
-        Renderer::Raster => lang.pick("CPU ラスタライザ", "CPU rasterizer"),
-        Renderer::Trace => lang.pick("レイトレーサ（Whitted）", "Whitted ray tracer"),
-        Renderer::Gpu => lang.pick("GPU レンダラ（wgpu）", "GPU renderer (wgpu)"),
+        Renderer::Raster => t("CPU ラスタライザ", "CPU rasterizer"),
+        Renderer::Trace => t("レイトレーサ（Whitted）", "Whitted ray tracer"),
+        Renderer::Gpu => t("GPU レンダラ（wgpu）", "GPU renderer (wgpu)"),
     }
 }
 
 /// The shading mode's name as the lecture says it.
-pub fn shading_name(s: Shading, lang: Lang) -> &'static str {
+pub fn shading_name(s: Shading) -> Text {
     match s {
-        Shading::Flat => lang.pick("フラットシェーディング", "Flat"),
-        Shading::Gouraud => lang.pick("グローシェーディング", "Gouraud"),
-        Shading::Phong => lang.pick("フォンシェーディング", "Phong"),
+        Shading::Flat => t("フラットシェーディング", "Flat"),
+        Shading::Gouraud => t("グローシェーディング", "Gouraud"),
+        Shading::Phong => t("フォンシェーディング", "Phong"),
     }
 }
 

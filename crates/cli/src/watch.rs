@@ -14,7 +14,7 @@ use std::process::Command;
 use std::sync::mpsc::{Receiver, Sender, channel};
 use std::time::Duration;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use notify::Watcher;
 use serde_json::Value;
 
@@ -59,7 +59,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         return Err(format!(
             "{}: {}",
             dir.display(),
-            lang.pick("フォルダがありません", "no such folder")
+            t("フォルダがありません", "no such folder").get(lang)
         ));
     }
     let (tx, rx) = channel();
@@ -79,7 +79,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
             Event::Key(Some(_)) => {}
         }
     }
-    terminal.say(lang.pick("終了します。", "Bye."));
+    terminal.say(t("終了します。", "Bye.").get(lang));
     Ok(())
 }
 
@@ -122,7 +122,7 @@ fn watch(
     let config = notify::Config::default().with_poll_interval(Duration::from_secs(1));
     let mut w = notify::PollWatcher::new(handler, config).map_err(|e| e.to_string())?;
     w.watch(dir, mode).map_err(|e| {
-        format!("{}: {} ({e})", dir.display(), lang.pick("監視できません", "cannot watch it"))
+        format!("{}: {} ({e})", dir.display(), t("監視できません", "cannot watch it").get(lang))
     })?;
     Ok(Box::new(w))
 }
@@ -172,7 +172,7 @@ fn keys(tx: Sender<Event>, raw: bool) {
 /// The checks, from a new process built from the code as it is now. A build that fails prints
 /// the compiler's first error and gives no checks.
 fn check(args: &Args, lang: Lang, terminal: &Terminal) -> Vec<Check> {
-    terminal.say(lang.pick("ビルドしてチェックしています…", "Building and checking…"));
+    terminal.say(t("ビルドしてチェックしています…", "Building and checking…").get(lang));
     let mut command = checker();
     command.arg("check").arg("--json");
     command.args(args.which.iter());
@@ -184,7 +184,7 @@ fn check(args: &Args, lang: Lang, terminal: &Terminal) -> Vec<Check> {
         Err(e) => {
             terminal.say(&format!(
                 "{}: {e}",
-                lang.pick("チェックを起動できません", "cannot start the checks")
+                t("チェックを起動できません", "cannot start the checks").get(lang)
             ));
             return Vec::new();
         }
@@ -198,10 +198,11 @@ fn check(args: &Args, lang: Lang, terminal: &Terminal) -> Vec<Check> {
             let text = if first.is_empty() { stderr.lines().take(12).collect() } else { first };
             terminal.say(&format!(
                 "{}\n{}",
-                lang.pick(
+                t(
                     "ビルドかチェックが失敗しました（直して保存すると、もう一度チェックします）:",
                     "The build or the checks failed (fix it and save, and the checks run again):"
-                ),
+                )
+                .get(lang),
                 text.join("\n")
             ));
             return Vec::new();
@@ -282,7 +283,7 @@ fn mark(status: &str) -> char {
 /// task in focus.
 fn board(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal) {
     if checks.is_empty() {
-        terminal.say(lang.pick("[r] もう一度  [q] 終了", "[r] run again  [q] quit"));
+        terminal.say(t("[r] もう一度  [q] 終了", "[r] run again  [q] quit").get(lang));
         return;
     }
     let mut text = String::new();
@@ -313,24 +314,24 @@ fn board(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal)
     let passed = checks.iter().filter(|c| c.status == "pass").count();
     text.push_str(&format!(
         "{} {passed}/{}\n",
-        lang.pick("進み具合: 通ったチェック", "progress: checks passing"),
+        t("進み具合: 通ったチェック", "progress: checks passing").get(lang),
         checks.len()
     ));
     match focused(checks, focus) {
         None => {
-            text.push_str(lang.pick("すべてのチェックが通りました！\n", "Every check passes!\n"))
+            text.push_str(t("すべてのチェックが通りました！\n", "Every check passes!\n").get(lang))
         }
         Some(task) => {
             text.push_str(&format!("── {task} ──\n"));
             let mut said = None;
             for c in checks.iter().filter(|c| c.task == task) {
-                let title = c.json["title"][lang.pick("ja", "en")].as_str().unwrap_or_default();
+                let title = c.json["title"][t("ja", "en").get(lang)].as_str().unwrap_or_default();
                 text.push_str(&format!("  {} {:<24} {title}\n", mark(&c.status), c.id));
                 for (key, ja, en) in
                     [("expected", "期待する値", "expected"), ("actual", "実際の値", "actual")]
                 {
-                    if let Some(v) = c.json[key][lang.pick("ja", "en")].as_str() {
-                        text.push_str(&format!("      {}: {v}\n", lang.pick(ja, en)));
+                    if let Some(v) = c.json[key][t("ja", "en").get(lang)].as_str() {
+                        text.push_str(&format!("      {}: {v}\n", t(ja, en).get(lang)));
                     }
                 }
                 // A stub's message once, not under each of its checks.
@@ -343,10 +344,13 @@ fn board(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal)
             }
         }
     }
-    text.push_str(lang.pick(
-        "[h] ヒント  [n] 次のタスク  [r] もう一度  [q] 終了（保存するとチェックし直します）",
-        "[h] hint  [n] next task  [r] run again  [q] quit (saving runs the checks again)",
-    ));
+    text.push_str(
+        t(
+            "[h] ヒント  [n] 次のタスク  [r] もう一度  [q] 終了（保存するとチェックし直します）",
+            "[h] hint  [n] next task  [r] run again  [q] quit (saving runs the checks again)",
+        )
+        .get(lang),
+    );
     terminal.say(&text);
 }
 
@@ -355,18 +359,21 @@ fn hint(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal) 
     let task = focused(checks, focus);
     let first = checks.iter().find(|c| Some(c.task.as_str()) == task && c.status != "pass");
     let Some(c) = first else {
-        terminal.say(lang.pick(
-            "ヒントはありません（通っていないチェックがありません）",
-            "No hint: no check is failing.",
-        ));
+        terminal.say(
+            t(
+                "ヒントはありません（通っていないチェックがありません）",
+                "No hint: no check is failing.",
+            )
+            .get(lang),
+        );
         return;
     };
-    let mut text = format!("{} {}:", lang.pick("ヒント", "hint for"), c.id);
+    let mut text = format!("{} {}:", t("ヒント", "hint for").get(lang), c.id);
     let mut any = false;
     for (key, ja, en) in [("cause", "よくある原因", "usual cause"), ("hint", "ヒント", "hint")]
     {
-        if let Some(v) = c.json[key][lang.pick("ja", "en")].as_str() {
-            text.push_str(&format!("\n  {}: {v}", lang.pick(ja, en)));
+        if let Some(v) = c.json[key][t("ja", "en").get(lang)].as_str() {
+            text.push_str(&format!("\n  {}: {v}", t(ja, en).get(lang)));
             any = true;
         }
     }
@@ -374,10 +381,11 @@ fn hint(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal) 
         let m = c.json["message"].as_str().unwrap_or_default();
         text.push_str(&format!(
             "\n  {} {m}",
-            lang.pick(
+            t(
                 "まだ書いていない関数です。関数のコメントの説明とヒントを読んでください:",
                 "not written yet; read the function's comment for its contract and hint:"
             )
+            .get(lang)
         ));
     }
     terminal.say(&text);

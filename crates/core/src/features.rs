@@ -6,7 +6,7 @@
 use std::fmt::Write as _;
 
 use crate::Rgb;
-use crate::lang::Lang;
+use crate::lang::{Lang, Text, t};
 use crate::light::LightKind;
 use crate::scene::Scene;
 
@@ -73,10 +73,9 @@ impl Scene {
 }
 
 impl Features {
-    /// Every feature with its name in `lang`, whether it is used, and why not when it is not.
+    /// Every feature: its name, whether it is used, and why not when it is not.
     #[must_use]
-    pub fn list(&self, lang: Lang) -> Vec<(&'static str, bool, &'static str)> {
-        let t = |ja, en| lang.pick(ja, en);
+    pub fn list(&self) -> Vec<(Text, bool, Text)> {
         vec![
             (
                 t("環境光", "ambient"),
@@ -129,13 +128,16 @@ impl Features {
     /// Two lines: what is used, and what is skipped with the reason.
     #[must_use]
     pub fn describe(&self, lang: Lang) -> String {
-        let list = self.list(lang);
+        let list = self.list();
         let mut out = String::new();
-        let used: Vec<&str> = list.iter().filter(|f| f.1).map(|f| f.0).collect();
-        let _ = writeln!(out, "{}: {}", lang.pick("使う", "enabled"), used.join(", "));
-        let skipped: Vec<String> =
-            list.iter().filter(|f| !f.1).map(|f| format!("{} ({})", f.0, f.2)).collect();
-        let _ = write!(out, "{}: {}", lang.pick("省略", "skipped"), skipped.join(", "));
+        let used: Vec<&str> = list.iter().filter(|f| f.1).map(|f| f.0.get(lang)).collect();
+        let _ = writeln!(out, "{}: {}", t("使う", "enabled").get(lang), used.join(", "));
+        let skipped: Vec<String> = list
+            .iter()
+            .filter(|f| !f.1)
+            .map(|f| format!("{} ({})", f.0.get(lang), f.2.get(lang)))
+            .collect();
+        let _ = write!(out, "{}: {}", t("省略", "skipped").get(lang), skipped.join(", "));
         out
     }
 }

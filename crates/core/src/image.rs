@@ -3,7 +3,7 @@
 //! colour for an 8-bit framebuffer: clamp to `[0, 1]`, multiply by 255, round to nearest.
 
 use crate::Rgb;
-use crate::lang::Lang;
+use crate::lang::{Lang, Text};
 
 /// The largest image side the kit renders, in pixels: the rasterizer's fixed-point window
 /// coordinates (8 sub-pixel bits with a ±2²⁰-pixel guard band) and OSMesa (`OSMESA_MAX_WIDTH`)
@@ -50,10 +50,13 @@ impl SizeError {
     /// The message for a student in `lang` (the English one is also the `Display`).
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        if lang == Lang::En {
-            return self.to_string();
-        }
-        match *self {
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message in both languages.
+    #[must_use]
+    pub fn text(&self) -> Text {
+        let ja = match *self {
             SizeError::ZeroSize { width, height } => format!(
                 "画像の大きさ {width}×{height} には画素がありません。幅と高さは 1 以上にしてください"
             ),
@@ -63,7 +66,8 @@ impl SizeError {
             SizeError::TooManyPixels { width, height } => format!(
                 "画像の大きさ {width}×{height} は画素が多すぎます。画素数は全部で {MAX_PIXELS}（8192×8192）以下にしてください"
             ),
-        }
+        };
+        Text::new(ja, self.to_string())
     }
 }
 

@@ -18,15 +18,6 @@ pub enum Lang {
 }
 
 impl Lang {
-    /// Picks `ja` or `en` by hand: `lang.pick("法線", "normal")`.
-    #[must_use]
-    pub fn pick<'a>(self, ja: &'a str, en: &'a str) -> &'a str {
-        match self {
-            Lang::Ja => ja,
-            Lang::En => en,
-        }
-    }
-
     /// The language from the environment (`CG_LANG`, then `LC_ALL`, `LC_MESSAGES`, `LANG`):
     /// Japanese when the first one set starts with `ja`, English otherwise.
     #[must_use]
@@ -142,7 +133,7 @@ mod tests {
         assert_eq!("ja".parse::<Lang>(), Ok(Lang::Ja));
         assert_eq!("EN".parse::<Lang>(), Ok(Lang::En));
         assert!("fr".parse::<Lang>().is_err());
-        assert_eq!(Lang::Ja.pick("面", "face"), "面");
-        assert_eq!(Lang::En.pick("面", "face"), "face");
+        assert_eq!(t("面", "face").get(Lang::Ja), "面");
+        assert_eq!(t("面", "face").get(Lang::En), "face");
     }
 }

@@ -311,14 +311,14 @@ pub enum Problem {
 }
 
 /// `F0, F3 and F6` / `F0・F3・F6`
-fn face_list(faces: &[usize], lang: Lang) -> String {
+fn face_list(faces: &[usize]) -> Text {
     let names: Vec<String> = faces.iter().map(|f| format!("F{f}")).collect();
-    match (lang, names.split_last()) {
-        (_, None) => String::new(),
-        (Lang::Ja, _) => names.join("・"),
-        (Lang::En, Some((last, []))) => last.clone(),
-        (Lang::En, Some((last, rest))) => format!("{} and {last}", rest.join(", ")),
-    }
+    let en = match names.split_last() {
+        None => String::new(),
+        Some((last, [])) => last.clone(),
+        Some((last, rest)) => format!("{} and {last}", rest.join(", ")),
+    };
+    Text::new(names.join("・"), en)
 }
 
 impl Problem {
@@ -369,11 +369,11 @@ impl Problem {
                 Text::new(
                     format!(
                         "辺 {e} を {n} 個の面 ({}) が共有しています（閉じたモデルでは 1 つの辺を共有する面はちょうど 2 つです）",
-                        face_list(faces, Lang::Ja)
+                        face_list(faces).ja
                     ),
                     format!(
                         "edge {e} is used by {n} faces ({}): an edge of a closed model belongs to exactly two",
-                        face_list(faces, Lang::En)
+                        face_list(faces).en
                     ),
                 )
             }
@@ -433,57 +433,57 @@ impl Problem {
 
     /// The usual cause of this finding and how to fix it.
     #[must_use]
-    pub fn hint(&self, lang: Lang) -> &'static str {
+    pub fn hint(&self) -> Text {
         match self {
-            Problem::Structure(MeshError::IndexOutOfRange { .. }) => lang.pick(
+            Problem::Structure(MeshError::IndexOutOfRange { .. }) => t(
                 "頂点番号は 0 から始まります (V0)。1 から数えていないか（OBJ ファイルは 1 から）、頂点の定義が抜けていないか確認してください",
                 "vertex numbers start at 0 (V0): check for numbers counted from 1 (as in OBJ files) or a vertex missing from the vertex table",
             ),
-            Problem::Structure(MeshError::AttributeLength { .. }) => lang.pick(
+            Problem::Structure(MeshError::AttributeLength { .. }) => t(
                 "法線・テクスチャ座標・色は頂点ごとに 1 つずつ（または全く無し）にしてください",
                 "give exactly one normal, texture coordinate or colour per vertex, or none at all",
             ),
-            Problem::Structure(MeshError::NonFinitePosition { .. }) => lang.pick(
+            Problem::Structure(MeshError::NonFinitePosition { .. }) => t(
                 "0 での割り算や、値を入れ忘れた変数から座標を計算していないか確認してください",
                 "look for a division by zero or an uninitialised value in the code that computes this position",
             ),
-            Problem::RepeatedIndex { .. } => lang.pick(
+            Problem::RepeatedIndex { .. } => t(
                 "三角形には異なる 3 つの頂点が必要です。面の頂点番号の打ち間違いか、四角形を三角形に分けるときの誤りです",
                 "a triangle needs three different vertices: a typo in the face table, or a mistake when splitting a quadrilateral",
             ),
-            Problem::ZeroArea { .. } => lang.pick(
+            Problem::ZeroArea { .. } => t(
                 "頂点座標を確認し、この面を削除するか頂点を動かしてください",
                 "check the vertex positions; remove the face or move a vertex",
             ),
-            Problem::BoundaryEdge { .. } => lang.pick(
+            Problem::BoundaryEdge { .. } => t(
                 "この辺の隣の面が抜けているか、隣の面が同じ位置に別番号で複製した頂点を使っています（頂点は番号で共有します: weld_by_position で統合できます）",
                 "a face next to this edge is missing, or the neighbouring face uses a duplicated vertex (same position, another number) instead of sharing this one: share the index, or weld by position",
             ),
-            Problem::NonManifoldEdge { .. } => lang.pick(
+            Problem::NonManifoldEdge { .. } => t(
                 "同じ面を 2 回定義しているか、余分な面（ひれ）が辺から出ています",
                 "a face is defined twice, or an extra face (a fin) hangs off this edge",
             ),
-            Problem::InconsistentWinding { .. } => lang.pick(
+            Problem::InconsistentWinding { .. } => t(
                 "外側から見て反時計回りになるように、向きが逆の面の頂点の順番を入れ替えてください（隣り合う面は共有する辺を逆向きにたどります）",
                 "list the wrong face's vertices the other way round, counter-clockwise seen from outside (neighbouring faces traverse their shared edge in opposite directions)",
             ),
-            Problem::NonManifoldVertex { .. } => lang.pick(
+            Problem::NonManifoldVertex { .. } => t(
                 "2 つの部分が 1 点だけで接しています。部分ごとに別の頂点を使うか、面でつないでください",
                 "two parts touch at a single point: give each part its own vertex, or connect them with faces",
             ),
-            Problem::TJunction { .. } => lang.pick(
+            Problem::TJunction { .. } => t(
                 "辺の途中の頂点で、その辺を使う面も 2 つの三角形に分割してください（隣接するポリゴンは辺全体を共有します）",
                 "split the face that uses the long edge into two triangles at that vertex (adjacent polygons must share whole edges)",
             ),
-            Problem::InwardFacing { .. } => lang.pick(
+            Problem::InwardFacing { .. } => t(
                 "すべての面の頂点の順番を逆にしてください（各面の 2 つの頂点番号を入れ替える）。外側から見て反時計回りが表です",
                 "reverse the vertex order of every face (swap two indices in each): counter-clockwise seen from outside is the front",
             ),
-            Problem::ZeroVolume { .. } => lang.pick(
+            Problem::ZeroVolume { .. } => t(
                 "面が裏表に重なっているか、モデルが平らです。厚みのある立体にしてください",
                 "faces lie back to back or the model is flat: give it some thickness",
             ),
-            Problem::UnreferencedVertex { .. } => lang.pick(
+            Problem::UnreferencedVertex { .. } => t(
                 "使わない頂点を削除するか、抜けている面を追加してください（描画には影響しません）",
                 "remove the unused vertex or add the missing face (it does not change what is drawn)",
             ),

@@ -6,7 +6,7 @@
 //! character) is written as its code point, so the student can find it.
 //! エラーメッセージに入力の語を示すときは、長すぎる語を切り詰め、見えない文字を U+XXXX で示します。
 
-use crate::lang::Lang;
+use crate::lang::{Lang, Text};
 
 /// At most this many characters of a word are shown.
 pub const MAX_SHOWN_CHARS: usize = 64;
@@ -26,10 +26,8 @@ pub fn shown(word: &str, lang: Lang) -> String {
     let total = word.chars().count();
     let mut out = visible(&word.chars().take(MAX_SHOWN_CHARS).collect::<String>());
     if total > MAX_SHOWN_CHARS {
-        out.push_str(&match lang {
-            Lang::Ja => format!("…（全 {total} 文字）"),
-            Lang::En => format!("… ({total} characters)"),
-        });
+        let count = Text::new(format!("…（全 {total} 文字）"), format!("… ({total} characters)"));
+        out.push_str(count.get(lang));
     }
     out
 }

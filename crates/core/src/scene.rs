@@ -5,7 +5,7 @@ use glam::{Mat3, Mat4, Vec3};
 
 use crate::Rgb;
 use crate::camera::OrbitCamera;
-use crate::lang::Lang;
+use crate::lang::{Lang, Text};
 use crate::light::{Light, LightModel, Material};
 use crate::math::try_normalize;
 use crate::mesh::Mesh;
@@ -300,18 +300,20 @@ impl PrepareError {
     /// The message for a student in `lang`.
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        match self {
-            PrepareError::Transform { object, source } => {
-                format!("{} \"{object}\": {source}", lang.pick("オブジェクト", "object"))
-            }
-            PrepareError::Normals { object, source } => {
-                format!(
-                    "{} \"{object}\": {}",
-                    lang.pick("オブジェクト", "object"),
-                    source.message(lang)
-                )
-            }
-        }
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message in both languages.
+    #[must_use]
+    pub fn text(&self) -> Text {
+        let (object, source) = match self {
+            PrepareError::Transform { object, source } => (object, source.text()),
+            PrepareError::Normals { object, source } => (object, source.text()),
+        };
+        Text::new(
+            format!("オブジェクト \"{object}\": {}", source.ja),
+            format!("object \"{object}\": {}", source.en),
+        )
     }
 }
 

@@ -6,7 +6,7 @@ use std::collections::HashMap;
 
 use glam::{Vec2, Vec3};
 
-use crate::lang::Lang;
+use crate::lang::{Lang, Text, t};
 use crate::mesh::Mesh;
 
 /// A shape parameter out of range, naming the shape and the parameter.
@@ -45,19 +45,26 @@ pub enum Allowed {
 }
 
 impl Allowed {
-    /// What is allowed, in `lang`: `an integer in 3..=4096` / `3 以上 4096 以下の整数`.
+    /// What is allowed: `an integer in 3..=4096` / `3 以上 4096 以下の整数`.
+    #[must_use]
+    pub fn text(self) -> Text {
+        match self {
+            Allowed::Positive => t("0 より大きい有限の数", "finite and > 0"),
+            Allowed::Count { min, max } => Text::new(
+                format!("{min} 以上 {max} 以下の整数"),
+                format!("an integer in {min}..={max}"),
+            ),
+            Allowed::PositiveBelow { other } => Text::new(
+                format!("0 より大きく {other} より小さい有限の数"),
+                format!("finite, > 0 and < {other}"),
+            ),
+        }
+    }
+
+    /// [`Allowed::text`] in `lang`.
     #[must_use]
     pub fn describe(self, lang: Lang) -> String {
-        match (self, lang) {
-            (Allowed::Positive, Lang::En) => "finite and > 0".into(),
-            (Allowed::Positive, Lang::Ja) => "0 より大きい有限の数".into(),
-            (Allowed::Count { min, max }, Lang::En) => format!("an integer in {min}..={max}"),
-            (Allowed::Count { min, max }, Lang::Ja) => format!("{min} 以上 {max} 以下の整数"),
-            (Allowed::PositiveBelow { other }, Lang::En) => format!("finite, > 0 and < {other}"),
-            (Allowed::PositiveBelow { other }, Lang::Ja) => {
-                format!("0 より大きく {other} より小さい有限の数")
-            }
-        }
+        self.text().get(lang).to_owned()
     }
 }
 
@@ -73,14 +80,21 @@ impl ShapeError {
     /// The English one is the `Display` text.
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message in both languages.
+    #[must_use]
+    pub fn text(&self) -> Text {
         let ShapeError { shape, parameter, value, expected } = self;
-        match lang {
-            Lang::En => self.to_string(),
-            Lang::Ja => format!(
+        let expected = expected.text();
+        Text::new(
+            format!(
                 "{shape} の {parameter} = {value} は範囲外です（{}でなければなりません）",
-                expected.describe(Lang::Ja)
+                expected.ja
             ),
-        }
+            format!("{shape}: {parameter} = {value} is out of range ({})", expected.en),
+        )
     }
 }
 

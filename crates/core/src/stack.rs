@@ -17,7 +17,7 @@
 
 use glam::{Mat4, Vec3};
 
-use crate::lang::Lang;
+use crate::lang::{Lang, Text};
 use crate::product::{Factor, MatrixProduct};
 use crate::transform::TransformError;
 
@@ -56,14 +56,30 @@ impl StackError {
     /// name and the usual cause.
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        match (self, lang) {
-            (StackError::Underflow, Lang::Ja) => "GL_STACK_UNDERFLOW: 対応する push のない pop です（深さはすでに 1）。push と pop の数と位置を確認してください".into(),
-            (StackError::Underflow, Lang::En) => self.to_string(),
-            (StackError::Overflow { max_depth }, Lang::Ja) => format!(
-                "GL_STACK_OVERFLOW: 最大の深さ {max_depth} を超えて push しました（ループの中で pop を忘れていませんか）"
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message in both languages.
+    #[must_use]
+    pub fn text(&self) -> Text {
+        match self {
+            StackError::Underflow => Text::new(
+                "GL_STACK_UNDERFLOW: 対応する push のない pop です（深さはすでに 1）。push と pop の数と位置を確認してください",
+                self.to_string(),
             ),
-            (StackError::Overflow { .. }, Lang::En) => self.to_string(),
-            (StackError::Transform(e), _) => format!("GL_INVALID_VALUE: {}", e.message(lang)),
+            StackError::Overflow { max_depth } => Text::new(
+                format!(
+                    "GL_STACK_OVERFLOW: 最大の深さ {max_depth} を超えて push しました（ループの中で pop を忘れていませんか）"
+                ),
+                self.to_string(),
+            ),
+            StackError::Transform(e) => {
+                let e = e.text();
+                Text::new(
+                    format!("GL_INVALID_VALUE: {}", e.ja),
+                    format!("GL_INVALID_VALUE: {}", e.en),
+                )
+            }
         }
     }
 }

@@ -17,7 +17,7 @@
 use glam::{Vec2, Vec4};
 
 use crate::Rgb;
-use crate::lang::Lang;
+use crate::lang::{Lang, Text};
 
 /// An RGBA8 image used as a texture. Row 0 is the image's *bottom* row, so texture coordinate
 /// `(0, 0)` is the bottom-left corner as in OpenGL (loaders flip images stored top row first).
@@ -135,17 +135,21 @@ impl TextureError {
     /// The message in `lang` (the English one is also the `Display`).
     #[must_use]
     pub fn describe(&self, lang: Lang) -> String {
-        match (self, lang) {
-            (_, Lang::En) => self.to_string(),
-            (TextureError::ZeroSize { width, height }, Lang::Ja) => {
-                format!(
-                    "テクスチャは 1×1 テクセル以上が必要です（{width}×{height} が指定されました）"
-                )
-            }
-            (TextureError::TexelCount { width, height, expected, got }, Lang::Ja) => format!(
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message in both languages.
+    #[must_use]
+    pub fn text(&self) -> Text {
+        let ja = match self {
+            TextureError::ZeroSize { width, height } => format!(
+                "テクスチャは 1×1 テクセル以上が必要です（{width}×{height} が指定されました）"
+            ),
+            TextureError::TexelCount { width, height, expected, got } => format!(
                 "{width}×{height} のテクスチャには {expected} 個のテクセルが必要ですが、{got} 個でした"
             ),
-        }
+        };
+        Text::new(ja, self.to_string())
     }
 }
 

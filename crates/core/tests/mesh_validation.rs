@@ -528,8 +528,9 @@ fn describe_names_the_right_numbers_in_both_languages() {
                 }
             }
         }
-        assert!(!problem.hint(Lang::Ja).is_empty() && !problem.hint(Lang::En).is_empty());
-        assert_ne!(problem.hint(Lang::Ja), problem.hint(Lang::En));
+        let hint = problem.hint();
+        assert!(!hint.ja.is_empty() && !hint.en.is_empty());
+        assert_ne!(hint.ja, hint.en);
         assert_eq!(problem.to_string(), en, "Display is the English description");
     }
 }

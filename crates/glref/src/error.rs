@@ -5,21 +5,17 @@ use cg_core::scene::PrepareError;
 use cg_core::texture::TextureError;
 use cg_core::transform::TransformError;
 
-/// What to install, and how, for the OpenGL reference to run (one sentence in `lang`).
+/// What to install, and how, for the OpenGL reference to run (one sentence).
 #[must_use]
-pub fn install_hint(lang: Lang) -> &'static str {
-    match lang {
-        Lang::En => {
-            "It needs a C compiler and Mesa's off-screen renderer OSMesa: run `bash scripts/setup.sh` \
-             (on Debian/Ubuntu it installs gcc, libc6-dev and libosmesa6-dev), or set CC to your C \
-             compiler"
-        }
-        Lang::Ja => {
-            "C コンパイラーと Mesa のオフスクリーンレンダラー OSMesa が必要です: \
-             `bash scripts/setup.sh` を実行してください（Debian/Ubuntu では gcc, libc6-dev, \
-             libosmesa6-dev を入れます）。C コンパイラーは環境変数 CC でも指定できます"
-        }
-    }
+pub fn install_hint() -> Text {
+    t(
+        "C コンパイラーと Mesa のオフスクリーンレンダラー OSMesa が必要です: \
+         `bash scripts/setup.sh` を実行してください（Debian/Ubuntu では gcc, libc6-dev, \
+         libosmesa6-dev を入れます）。C コンパイラーは環境変数 CC でも指定できます",
+        "It needs a C compiler and Mesa's off-screen renderer OSMesa: run `bash scripts/setup.sh` \
+         (on Debian/Ubuntu it installs gcc, libc6-dev and libosmesa6-dev), or set CC to your C \
+         compiler",
+    )
 }
 
 /// Why the OpenGL reference could not draw a scene. `Display` is the English message;
@@ -125,14 +121,8 @@ impl GlRefError {
     pub fn text(&self) -> Text {
         match self {
             GlRefError::NotAvailable { detail } => Text::new(
-                format!(
-                    "OpenGL の参照レンダラーが使えません: {detail}。{}",
-                    install_hint(Lang::Ja)
-                ),
-                format!(
-                    "the OpenGL reference is not available: {detail}. {}",
-                    install_hint(Lang::En)
-                ),
+                format!("OpenGL の参照レンダラーが使えません: {detail}。{}", install_hint().ja),
+                format!("the OpenGL reference is not available: {detail}. {}", install_hint().en),
             ),
             GlRefError::LectureLightModel => t(
                 "シーンが講義の光のモデル (light_model = \"lecture\") \
@@ -173,7 +163,7 @@ impl GlRefError {
                 let e = e.text();
                 Text::new(format!("カメラ: {}", e.ja), format!("the camera: {}", e.en))
             }
-            GlRefError::Prepare(e) => Text::new(e.message(Lang::Ja), e.message(Lang::En)),
+            GlRefError::Prepare(e) => e.text(),
             GlRefError::NotFinite { what, value } => Text::new(
                 format!("{what} が有限の値ではありません ({value})。OpenGL では描けません"),
                 format!("{what} is not finite ({value}): OpenGL cannot draw it"),

@@ -58,7 +58,7 @@ use std::io::Write as _;
 use std::sync::OnceLock;
 
 use cg_core::image::Image;
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_core::scene::Scene;
 
 pub use error::{GlRefError, install_hint};
@@ -112,7 +112,7 @@ pub fn require() -> bool {
     };
     let lang = Lang::from_env();
     let reason = match &e {
-        GlRefError::NotAvailable { detail } => format!("{detail}. {}", install_hint(lang)),
+        GlRefError::NotAvailable { detail } => format!("{detail}. {}", install_hint().get(lang)),
         other => other.message(lang),
     };
     if std::env::var_os("CI").is_some() {
@@ -121,10 +121,11 @@ pub fn require() -> bool {
     // Once per process, and past the test harness's capture of eprintln!, so the student sees it.
     static NOTED: std::sync::Once = std::sync::Once::new();
     NOTED.call_once(|| {
-        let early = lang.pick(
+        let early = t(
             "（これを必要とするテストは何も確かめずに終わります）",
             " (the tests that need it return early)",
         );
+        let early = early.get(lang);
         let _ =
             writeln!(std::io::stderr(), "skipped: OpenGL reference not available: {reason}{early}");
     });

@@ -1,7 +1,7 @@
 //! Why the GPU renderer could not start or draw, in Japanese and English.
 
 use cg_core::image::SizeError;
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text, t};
 use cg_core::scene::PrepareError;
 use cg_core::transform::TransformError;
 
@@ -58,27 +58,38 @@ impl GpuError {
     /// The message for a student in `lang`.
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        match (self, lang) {
-            (GpuError::NoAdapter, Lang::En) => {
-                "no GPU adapter found: install a Vulkan driver (on Linux without a GPU: Mesa's lavapipe, package mesa-vulkan-drivers) or use the CPU rasterizer".into()
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message in both languages.
+    #[must_use]
+    pub fn text(&self) -> Text {
+        let ja = match self {
+            GpuError::NoAdapter => {
+                return t(
+                    "GPU アダプタが見つかりません: Vulkan ドライバ（GPU のない Linux では Mesa の lavapipe、パッケージ mesa-vulkan-drivers）を入れるか、CPU ラスタライザを使ってください",
+                    "no GPU adapter found: install a Vulkan driver (on Linux without a GPU: Mesa's lavapipe, package mesa-vulkan-drivers) or use the CPU rasterizer",
+                );
             }
-            (GpuError::NoAdapter, Lang::Ja) => {
-                "GPU アダプタが見つかりません: Vulkan ドライバ（GPU のない Linux では Mesa の lavapipe、パッケージ mesa-vulkan-drivers）を入れるか、CPU ラスタライザを使ってください".into()
+            GpuError::Device(e) => {
+                return Text::new(
+                    format!("GPU デバイスを開けません: {e}"),
+                    format!("the GPU adapter refused a device: {e}"),
+                );
             }
-            (GpuError::Device(e), Lang::En) => format!("the GPU adapter refused a device: {e}"),
-            (GpuError::Device(e), Lang::Ja) => format!("GPU デバイスを開けません: {e}"),
-            (GpuError::Size(e), _) => e.message(lang),
-            (GpuError::Camera(e), Lang::Ja) => format!("カメラが不正です: {e}"),
-            (GpuError::Projection(e), Lang::Ja) => format!("投影が不正です: {e}"),
-            (GpuError::Prepare(e), _) => e.message(lang),
-            (GpuError::MissingTexture { object, texture, count }, Lang::Ja) => format!(
+            GpuError::Size(e) => return e.text(),
+            GpuError::Prepare(e) => return e.text(),
+            GpuError::Camera(e) => format!("カメラが不正です: {e}"),
+            GpuError::Projection(e) => format!("投影が不正です: {e}"),
+            GpuError::MissingTexture { object, texture, count } => format!(
                 "オブジェクト \"{object}\" はテクスチャ {texture} を使いますが、シーンには {count} 枚しかありません"
             ),
-            (GpuError::NonFinite { object, vertex, position }, Lang::Ja) => format!(
+            GpuError::NonFinite { object, vertex, position } => format!(
                 "オブジェクト \"{object}\": 頂点 {vertex} の位置 {position:?} が有限の点ではありません"
             ),
             _ => self.to_string(),
-        }
+        };
+        Text::new(ja, self.to_string())
     }
 }
 

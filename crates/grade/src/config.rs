@@ -17,7 +17,7 @@
 
 use std::collections::BTreeMap;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text};
 
 /// Points per check.
 #[derive(Clone, Debug, PartialEq)]
@@ -36,23 +36,18 @@ impl Default for Config {
 
 /// Why a config could not be read, in both languages.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("{en}")]
-pub struct ConfigError {
-    /// 日本語
-    pub ja: String,
-    /// English
-    pub en: String,
-}
+#[error("{0}")]
+pub struct ConfigError(pub Text);
 
 impl ConfigError {
     fn new(ja: impl Into<String>, en: impl Into<String>) -> ConfigError {
-        ConfigError { ja: ja.into(), en: en.into() }
+        ConfigError(Text::new(ja, en))
     }
 
     /// The message in `lang`.
     #[must_use]
     pub fn message(&self, lang: Lang) -> &str {
-        lang.pick(&self.ja, &self.en)
+        self.0.get(lang)
     }
 }
 

@@ -24,7 +24,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_sandbox::{Isolation, Job, Launch, Limits, SandboxError};
 
 pub mod build;
@@ -524,10 +524,11 @@ fn grade_one(
     if slot_content(&slot.kit).ok().as_deref() != Some(pristine) {
         eprintln!(
             "{}",
-            options.lang.pick(
+            t(
                 "作業用のキットのコピーが変わっていたので作り直します",
                 "the work copy of the kit had changed: made afresh"
             )
+            .get(options.lang)
         );
         let _ = std::fs::remove_dir_all(&slot.kit);
         let remade = std::fs::create_dir_all(&slot.kit)

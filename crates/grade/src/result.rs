@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::time::Duration;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_sandbox::Isolation;
 use serde_json::{Value, json};
 
@@ -105,34 +105,34 @@ pub fn check_list(report: &Value) -> Vec<(String, Text)> {
 
 /// What a failed check's JSON says, in `lang`.
 fn explain(check: &Value, lang: Lang) -> String {
-    let t = |k: &str| text_of(&check[k]).get(lang).to_owned();
-    let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
+    let field = |k: &str| text_of(&check[k]).get(lang).to_owned();
     match check["status"].as_str().unwrap_or("") {
         "pass" => String::new(),
         "not_done" => format!(
             "{}: {}",
-            l("未実装", "not done yet"),
+            t("未実装", "not done yet").get(lang),
             cg_harness::check::stub_message(check["message"].as_str().unwrap_or(""), lang)
         ),
         "panicked" => format!(
             "{}: {}{}",
-            l("パニックしました", "panicked"),
+            t("パニックしました", "panicked").get(lang),
             check["message"].as_str().unwrap_or(""),
             check["location"].as_str().map(|w| format!(" ({w})")).unwrap_or_default()
         ),
         "timed_out" => format!(
             "{}: {} s",
-            l("制限時間を超えました（無限ループ？）", "ran over the time limit (an endless loop?)"),
+            t("制限時間を超えました（無限ループ？）", "ran over the time limit (an endless loop?)")
+                .get(lang),
             check["limit_ms"].as_u64().unwrap_or(0) as f64 / 1000.0
         ),
         "crashed" => {
             let stderr = check["stderr"].as_str().unwrap_or("").trim_end();
             let mut s = format!(
                 "{}: {}",
-                l(
+                t(
                     "関数を実行していたプロセスが終了しました（exit()、スタックの溢れ、メモリ上限？）",
-                    "the process running the function ended (exit(), a stack overflow, the memory limit?)"
-                ),
+                    "the process running the function ended (exit(), a stack overflow, the memory limit?)",
+                ).get(lang),
                 check["how"].as_str().unwrap_or("")
             );
             if !stderr.is_empty() {
@@ -143,18 +143,18 @@ fn explain(check: &Value, lang: Lang) -> String {
         _ => {
             let mut s = format!(
                 "{}: {}\n{}: {}",
-                l("期待", "expected"),
-                t("expected"),
-                l("実際", "found"),
-                t("actual")
+                t("期待", "expected").get(lang),
+                field("expected"),
+                t("実際", "found").get(lang),
+                field("actual")
             );
             if check["where"].is_object() || check["where"].is_string() {
-                let _ = write!(s, "\n{}: {}", l("場所", "where"), t("where"));
+                let _ = write!(s, "\n{}: {}", t("場所", "where").get(lang), field("where"));
             }
             for (k, ja, en) in [("cause", "原因", "cause"), ("hint", "ヒント", "hint")] {
-                let v = t(k);
+                let v = field(k);
                 if !v.is_empty() {
-                    let _ = write!(s, "\n{}: {v}", l(ja, en));
+                    let _ = write!(s, "\n{}: {v}", t(ja, en).get(lang));
                 }
             }
             s
@@ -169,12 +169,11 @@ fn round(x: f64) -> f64 {
 /// The result JSON of one submission.
 #[must_use]
 pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Value {
-    let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
     let mut output = format!(
         "{}: {}\n{}: {}\n",
-        l("学生番号", "student"),
+        t("学生番号", "student").get(lang),
         meta.student.unwrap_or("?"),
-        l("提出物", "submission"),
+        t("提出物", "submission").get(lang),
         meta.entry
     );
     let mut tests = Vec::new();
@@ -182,11 +181,11 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
     let ended_early = facts.refused.as_ref().or(facts.fatal.as_ref());
     if let Some(why) = ended_early {
         let head = if facts.refused.is_some() {
-            l("受け付けられません", "refused")
+            t("受け付けられません", "refused")
         } else {
-            l("採点できませんでした", "could not be graded")
+            t("採点できませんでした", "could not be graded")
         };
-        let _ = writeln!(output, "{head}: {}", why.get(lang));
+        let _ = writeln!(output, "{}: {}", head.get(lang), why.get(lang));
     }
     for (m, run) in &facts.runs {
         let entry = per.entry(m.clone()).or_insert((0.0, 0.0));
@@ -217,7 +216,7 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
                 let why = match (compile, run) {
                     (Some(errors), _) => format!(
                         "{} ({m}.rs):\n{}",
-                        l("コンパイルエラー", "compile errors"),
+                        t("コンパイルエラー", "compile errors").get(lang),
                         errors.join("\n")
                     ),
                     (None, AssignmentRun::Died { how, stderr }) => {
@@ -362,7 +361,6 @@ pub fn class_csv(results: &[Value]) -> String {
 /// common mistakes — and the submissions that could not be graded.
 #[must_use]
 pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) -> String {
-    let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
     let mut counts: BTreeMap<String, (String, usize, usize)> = BTreeMap::new();
     let mut problems = Vec::new();
     let mut shared: BTreeMap<String, Vec<String>> = BTreeMap::new();
@@ -401,12 +399,12 @@ pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) ->
     rows.sort_by(|a, b| b.1.1.cmp(&a.1.1).then_with(|| a.0.cmp(&b.0)));
     let mut out = format!(
         "# {}\n\n{}: {}\n\n| {} | {} | {} |\n|---|---:|---:|\n",
-        l("採点のまとめ", "Grading summary"),
-        l("提出数", "submissions"),
+        t("採点のまとめ", "Grading summary").get(lang),
+        t("提出数", "submissions").get(lang),
         results.len(),
-        l("チェック", "check"),
-        l("不合格", "failed"),
-        l("採点数", "graded"),
+        t("チェック", "check").get(lang),
+        t("不合格", "failed").get(lang),
+        t("採点数", "graded").get(lang),
     );
     for (_, (name, failed, of)) in &rows {
         let _ = writeln!(out, "| {} | {failed} | {of} |", name.replace('|', "\\|"));
@@ -415,11 +413,11 @@ pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) ->
         let _ = write!(
             out,
             "\n## {}\n\n{unsandboxed} {}\n",
-            l("サンドボックスなしの採点", "Graded without a sandbox"),
-            l(
+            t("サンドボックスなしの採点", "Graded without a sandbox").get(lang),
+            t(
                 "件の提出物を --unsafe-no-sandbox で採点しました。学生のコードは採点者の権限で、ファイルとネットワークを隔離せずに動いています。",
                 "submissions were graded with --unsafe-no-sandbox: the students' code ran as the grader, its files and network not isolated.",
-            )
+            ).get(lang)
         );
     }
     if !shared.is_empty() {
@@ -428,23 +426,24 @@ pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) ->
         let _ = write!(
             out,
             "\n## {}\n\n{}\n\n{}\n",
-            l("同じ学生番号の提出物", "Entries that claim the same student number"),
-            l(
+            t("同じ学生番号の提出物", "Entries that claim the same student number").get(lang),
+            t(
                 "どれも <学生番号>~<提出物>.json に採点しました。どれがその学生のものかを確かめてください。",
                 "Each is graded as <student>~<entry>.json; check which one is the student's.",
-            ),
+            ).get(lang),
             list.join("\n")
         );
     }
     let roster = roster_section(results, absent, lang);
     if !roster.is_empty() {
-        let _ = write!(out, "\n## {}\n\n{roster}", l("名簿との照合", "Against the roster"));
+        let _ =
+            write!(out, "\n## {}\n\n{roster}", t("名簿との照合", "Against the roster").get(lang));
     }
     if !problems.is_empty() {
         let _ = write!(
             out,
             "\n## {}\n\n{}\n",
-            l("採点できなかった提出物", "Not graded"),
+            t("採点できなかった提出物", "Not graded").get(lang),
             problems.join("\n")
         );
     }
@@ -454,7 +453,6 @@ pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) ->
 /// The roster's findings: entries not on it, entries whose `student.toml` claims another
 /// number than the roster's, and students on it with no entry (empty without a roster).
 fn roster_section(results: &[Value], absent: &[(String, String)], lang: Lang) -> String {
-    let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
     let mut unlisted = Vec::new();
     let mut claims = Vec::new();
     for r in results {
@@ -466,8 +464,8 @@ fn roster_section(results: &[Value], absent: &[(String, String)], lang: Lang) ->
         if let Some(claimed) = cg["roster"]["claimed"].as_str() {
             claims.push(format!(
                 "- {entry}: {} {claimed}, {} {} ({})",
-                l("student.toml は", "student.toml claims"),
-                l("名簿では", "the roster says"),
+                t("student.toml は", "student.toml claims").get(lang),
+                t("名簿では", "the roster says").get(lang),
                 cg["student"].as_str().unwrap_or("?"),
                 cg["roster"]["name"].as_str().unwrap_or("")
             ));
@@ -476,21 +474,23 @@ fn roster_section(results: &[Value], absent: &[(String, String)], lang: Lang) ->
     let mut out = String::new();
     for (title, lines) in [
         (
-            l(
+            t(
                 "名簿にない提出物（student.toml の番号で採点）",
                 "Entries not on the roster (graded as their student.toml's number)",
-            ),
+            )
+            .get(lang),
             unlisted,
         ),
         (
-            l(
+            t(
                 "名簿と違う番号を名乗る提出物（名簿の番号で採点）",
                 "Entries whose student.toml claims another number (graded as the roster's)",
-            ),
+            )
+            .get(lang),
             claims,
         ),
         (
-            l("提出物のない学生", "Students on the roster with no entry"),
+            t("提出物のない学生", "Students on the roster with no entry").get(lang),
             absent.iter().map(|(n, name)| format!("- {n} {name}")).collect(),
         ),
     ] {

@@ -27,7 +27,7 @@ use std::time::{Duration, Instant};
 use cg_core::lang::Lang;
 use serde::Serialize;
 
-use crate::text::Text;
+use crate::text::{Text, t};
 use cg_worker::CallError;
 
 /// Why a check failed, in the words a student needs — every part in Japanese and English
@@ -393,24 +393,27 @@ pub fn watchdog(limit: Duration, lang: Lang) {
             });
             if let Some(id) = over {
                 let seconds = limit.as_secs_f64();
-                eprintln!(
-                    "{}",
-                    match (lang, id.as_str()) {
-                        // A student's function called outside a check (`guarded`: the report).
-                        (Lang::Ja, GUARDED) => format!(
+                // A student's function called outside a check (`guarded`: the report).
+                let message = if id == GUARDED {
+                    Text::new(
+                        format!(
                             "あなたのプログラムが {seconds} 秒を超えても終わりません。無限ループになっていないか確認してください。"
                         ),
-                        (Lang::En, GUARDED) => format!(
+                        format!(
                             "your code has run for more than {seconds} s without returning: does it loop forever?"
                         ),
-                        (Lang::Ja, _) => format!(
+                    )
+                } else {
+                    Text::new(
+                        format!(
                             "チェック {id} が {seconds} 秒を超えても終わりません。無限ループになっていないか確認してください。"
                         ),
-                        (Lang::En, _) => format!(
+                        format!(
                             "check {id} has run for more than {seconds} s: does your code loop forever?"
                         ),
-                    }
-                );
+                    )
+                };
+                eprintln!("{}", message.get(lang));
                 std::process::exit(i32::from(crate::exit::Ending::TimedOut.code()));
             }
         }
@@ -437,16 +440,15 @@ pub fn stub_message(message: &str, lang: Lang) -> String {
         _ if japanese(rest) => (rest, ""),
         _ => ("", rest),
     };
-    let text = match lang {
-        Lang::Ja => ja,
-        Lang::En => en,
-    };
-    match (id.is_empty(), text.is_empty()) {
-        (true, _) => text.to_owned(),
-        (false, true) => id.to_owned(),
-        (false, false) if lang == Lang::Ja => format!("{id}（{text}）"),
-        (false, false) => format!("{id}: {text}"),
-    }
+    let with_id = Text::new(
+        if ja.is_empty() || id.is_empty() {
+            format!("{id}{ja}")
+        } else {
+            format!("{id}（{ja}）")
+        },
+        if en.is_empty() || id.is_empty() { format!("{id}{en}") } else { format!("{id}: {en}") },
+    );
+    with_id.get(lang).to_owned()
 }
 
 /// The results of one assignment's checks for one student.
@@ -525,7 +527,6 @@ impl Report {
     /// was expected and found, where, the usual cause and a hint; then a progress summary.
     #[must_use]
     pub fn render(&self, lang: Lang) -> String {
-        let t = |ja: &'static str, en: &'static str| lang.pick(ja, en);
         let mut out = String::new();
         let width = self.checks.iter().map(|c| c.id.chars().count()).max().unwrap_or(0);
         for c in &self.checks {
@@ -543,7 +544,7 @@ impl Report {
                     let _ = writeln!(
                         out,
                         "      {}: {}",
-                        t("まだです", "not done yet"),
+                        t("まだです", "not done yet").get(lang),
                         stub_message(message, lang)
                     );
                 }
@@ -551,10 +552,10 @@ impl Report {
                     let _ = writeln!(
                         out,
                         "      {}: {message}",
-                        t("プログラムが異常終了しました（panic）", "your code panicked")
+                        t("プログラムが異常終了しました（panic）", "your code panicked").get(lang)
                     );
                     if let Some(l) = location {
-                        let _ = writeln!(out, "      {}: {l}", t("場所", "at"));
+                        let _ = writeln!(out, "      {}: {l}", t("場所", "at").get(lang));
                     }
                 }
                 Outcome::TimedOut { .. } | Outcome::Crashed { .. } => {
@@ -575,43 +576,66 @@ impl Report {
                 let _ = writeln!(
                     out,
                     "      {}: {}",
-                    t("期待する値", "expected"),
+                    t("期待する値", "expected").get(lang),
                     f.expected.get(lang)
                 );
-                let _ =
-                    writeln!(out, "      {}: {}", t("実際の値  ", "actual  "), f.actual.get(lang));
+                let _ = writeln!(
+                    out,
+                    "      {}: {}",
+                    t("実際の値  ", "actual  ").get(lang),
+                    f.actual.get(lang)
+                );
                 if let Some(l) = &f.location {
-                    let _ = writeln!(out, "      {}: {}", t("場所      ", "where   "), l.get(lang));
+                    let _ = writeln!(
+                        out,
+                        "      {}: {}",
+                        t("場所      ", "where   ").get(lang),
+                        l.get(lang)
+                    );
                 }
                 if !f.cause.is_empty() {
                     let _ = writeln!(
                         out,
                         "      {}: {}",
-                        t("よくある原因", "usual cause"),
+                        t("よくある原因", "usual cause").get(lang),
                         f.cause.get(lang)
                     );
                 }
                 if !f.hint.is_empty() {
-                    let _ = writeln!(out, "      {}: {}", t("ヒント", "hint"), f.hint.get(lang));
+                    let _ = writeln!(
+                        out,
+                        "      {}: {}",
+                        t("ヒント", "hint").get(lang),
+                        f.hint.get(lang)
+                    );
                 }
             }
         }
         let _ = write!(
             out,
             "{}: {}/{} {}",
-            t("進み具合", "progress"),
+            t("進み具合", "progress").get(lang),
             self.passed(),
             self.total(),
-            t("個のチェックに合格", "checks pass")
+            t("個のチェックに合格", "checks pass").get(lang)
         );
         let not_done = self.tasks_not_done();
         if !not_done.is_empty() {
-            let _ = write!(out, "; {}: {}", t("未完成の課題", "not done yet"), not_done.join(", "));
+            let _ = write!(
+                out,
+                "; {}: {}",
+                t("未完成の課題", "not done yet").get(lang),
+                not_done.join(", ")
+            );
         }
         let failing = self.tasks_failing();
         if !failing.is_empty() {
-            let _ =
-                write!(out, "; {}: {}", t("直すところのある課題", "to fix"), failing.join(", "));
+            let _ = write!(
+                out,
+                "; {}: {}",
+                t("直すところのある課題", "to fix").get(lang),
+                failing.join(", ")
+            );
         }
         out.push('\n');
         out

@@ -12,7 +12,7 @@
 
 use std::process::ExitCode;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 
 /// How a command ended. The discriminant is the exit status.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -54,7 +54,7 @@ pub fn finish(result: Result<Ending, String>, lang: Lang) -> ExitCode {
     match result {
         Ok(ending) => ending.into(),
         Err(message) => {
-            eprintln!("{}: {message}", lang.pick("エラー", "error"));
+            eprintln!("{}: {message}", t("エラー", "error").get(lang));
             Ending::BadInput.into()
         }
     }

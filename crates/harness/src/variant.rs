@@ -13,7 +13,7 @@
 use std::fmt;
 use std::str::FromStr;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text};
 use serde::Serialize;
 
 /// A student number: exactly 8 ASCII digits (leading zeros allowed).
@@ -47,23 +47,26 @@ impl StudentNumberError {
     /// The message in `lang`: what a student number looks like and what was wrong.
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        let chars = self.given.chars().count();
-        let bad = self.given.chars().find(|c| !c.is_ascii_digit());
-        match (lang, bad) {
-            (Lang::Ja, Some(c)) => format!(
-                "学生番号は 8 桁の数字です。\"{}\" には数字でない文字 '{c}' があります",
-                self.given
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message in both languages.
+    #[must_use]
+    pub fn text(&self) -> Text {
+        let (given, chars) = (&self.given, self.given.chars().count());
+        match self.given.chars().find(|c| !c.is_ascii_digit()) {
+            Some(c) => Text::new(
+                format!(
+                    "学生番号は 8 桁の数字です。\"{given}\" には数字でない文字 '{c}' があります"
+                ),
+                format!(
+                    "a student number is 8 digits; \"{given}\" has a character that is not a digit: '{c}'"
+                ),
             ),
-            (Lang::Ja, None) => {
-                format!("学生番号は 8 桁の数字です。\"{}\" は {chars} 桁です", self.given)
-            }
-            (Lang::En, Some(c)) => format!(
-                "a student number is 8 digits; \"{}\" has a character that is not a digit: '{c}'",
-                self.given
+            None => Text::new(
+                format!("学生番号は 8 桁の数字です。\"{given}\" は {chars} 桁です"),
+                format!("a student number is 8 digits; \"{given}\" has {chars}"),
             ),
-            (Lang::En, None) => {
-                format!("a student number is 8 digits; \"{}\" has {chars}", self.given)
-            }
         }
     }
 }

@@ -1,7 +1,7 @@
 //! Why a scene could not be rendered, in words a student can read (Japanese and English).
 
 use cg_core::image::SizeError;
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text};
 use cg_core::scene::PrepareError;
 use cg_core::transform::TransformError;
 
@@ -111,27 +111,30 @@ impl RenderError {
     /// The message for a student in `lang` (the English one is also the `Display`).
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        if lang == Lang::En {
-            return self.to_string();
-        }
-        match self {
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message in both languages.
+    #[must_use]
+    pub fn text(&self) -> Text {
+        let ja = match self {
             // The size messages are core's, shared with the ray tracer.
             &RenderError::ZeroSize { width, height } => {
-                SizeError::ZeroSize { width, height }.message(lang)
+                return SizeError::ZeroSize { width, height }.text();
             }
             &RenderError::TooLarge { width, height } => {
-                SizeError::TooLarge { width, height }.message(lang)
+                return SizeError::TooLarge { width, height }.text();
             }
             &RenderError::TooManyPixels { width, height } => {
-                SizeError::TooManyPixels { width, height }.message(lang)
+                return SizeError::TooManyPixels { width, height }.text();
             }
+            RenderError::Prepare(e) => return e.text(),
             RenderError::OutsideGuardBand { triangle, corner, position } => format!(
                 "coverage: 三角形 {triangle} の頂点 {corner} が {position:?} にあります。ウィンドウ座標は有限で ±{GUARD_BAND_PIXELS} ピクセル以内でなければなりません"
             ),
             // The transform errors carry both languages in their own message.
             RenderError::Camera(e) => format!("カメラの設定が正しくありません: {e}"),
             RenderError::Projection(e) => format!("投影の設定が正しくありません: {e}"),
-            RenderError::Prepare(e) => e.message(lang),
             RenderError::MissingTexture { object, texture, count } => format!(
                 "オブジェクト \"{object}\" はテクスチャ {texture} を使いますが、シーンのテクスチャは {count} 個です (番号 0..{count})"
             ),
@@ -141,6 +144,7 @@ impl RenderError {
             RenderError::Threads { threads, message } => {
                 format!("描画用のスレッドを {threads} 個起動できません: {message}")
             }
-        }
+        };
+        Text::new(ja, self.to_string())
     }
 }

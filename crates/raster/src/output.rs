@@ -5,7 +5,7 @@ use std::ops::AddAssign;
 
 use cg_core::features::Features;
 use cg_core::image::Image;
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text, t};
 use cg_core::scene::Shading;
 
 /// How to render a scene; `Options::default()` renders it as the scene says, on all cores.
@@ -115,10 +115,9 @@ impl AddAssign for Stats {
 }
 
 impl Stats {
-    /// Every counter with its name in `lang`, in pipeline order.
+    /// Every counter with its name, in pipeline order.
     #[must_use]
-    pub fn list(&self, lang: Lang) -> Vec<(&'static str, u64)> {
-        let t = |ja, en| lang.pick(ja, en);
+    pub fn list(&self) -> Vec<(Text, u64)> {
         vec![
             (t("頂点", "vertices"), self.vertices),
             (t("入力三角形", "triangles in"), self.triangles_in),
@@ -141,9 +140,9 @@ impl Stats {
     /// One line per counter, `name: value`, in `lang`.
     #[must_use]
     pub fn describe(&self, lang: Lang) -> String {
-        self.list(lang)
+        self.list()
             .iter()
-            .map(|(name, n)| format!("{name}: {n}"))
+            .map(|(name, n)| format!("{}: {n}", name.get(lang)))
             .collect::<Vec<_>>()
             .join("\n")
     }

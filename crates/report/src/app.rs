@@ -18,7 +18,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use cg_assign::Variants;
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_core::text::Encoding;
 use cg_harness::check::{Outcome, guarded};
 use cg_harness::{TableVersion, Text};
@@ -202,7 +202,7 @@ fn problems_text(path: &Path, problems: &[ParseProblem], lang: Lang) -> String {
     let mut out = format!(
         "{}: {}\n",
         path.display(),
-        lang.pick("読み取れない行があります", "some lines could not be read")
+        t("読み取れない行があります", "some lines could not be read").get(lang)
     );
     for p in problems {
         let _ = writeln!(out, "  {}", p.message(lang));
@@ -298,10 +298,10 @@ impl Written {
         let _ = writeln!(
             out,
             "{} {} ({} {})",
-            lang.pick("書き出し先:", "written to"),
+            t("書き出し先:", "written to").get(lang),
             self.folder.display(),
             self.files.len(),
-            lang.pick("ファイル", "files")
+            t("ファイル", "files").get(lang)
         );
         for f in &self.files {
             let _ = writeln!(out, "  {f}");
@@ -310,20 +310,22 @@ impl Written {
             let _ = writeln!(
                 out,
                 "  {f}: {}",
-                lang.pick(
+                t(
                     "既にあるので上書きしません（--force で上書き）",
                     "exists, left alone (--force overwrites it)"
                 )
+                .get(lang)
             );
         }
         if !self.missing.is_empty() {
             let _ = writeln!(
                 out,
                 "{}",
-                lang.pick(
+                t(
                     "まだ導出できない部分（レポートには「まだ導出できません」と書かれます）:",
                     "not derived yet (the report says so where they belong):"
                 )
+                .get(lang)
             );
             for m in &self.missing {
                 let _ = writeln!(out, "  {}", m.message(lang));
@@ -411,16 +413,17 @@ fn write_derived(
             write(folder, files::view_svg(view), svg.as_bytes(), written)?;
         }
     }
-    if let Some(t) = &g.derived.a4 {
+    if let Some(tex) = &g.derived.a4 {
         let png = folder.join(files::TEXTURE_PNG);
         std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
-        let image = texture_image(&t.image).ok_or_else(|| {
-            lang.pick("用意された画像を書き出せません", "the prepared image cannot be written")
+        let image = texture_image(&tex.image).ok_or_else(|| {
+            t("用意された画像を書き出せません", "the prepared image cannot be written")
+                .get(lang)
                 .to_owned()
         })?;
         cg_scene::save_png(&png, &image).map_err(|e| e.describe(lang))?;
         written.files.push(files::TEXTURE_PNG.to_owned());
-        let svg = figures::texture_svg(t, files::TEXTURE_PNG, lang);
+        let svg = figures::texture_svg(tex, files::TEXTURE_PNG, lang);
         write(folder, files::TEXTURE_SVG, svg.as_bytes(), written)?;
     }
     let mut all = Values::new();
@@ -506,7 +509,7 @@ impl CheckOutcome {
     pub fn render(&self, lang: Lang) -> String {
         let mut out = format!(
             "{} {}\n",
-            lang.pick("レポートの確認:", "checking the report"),
+            t("レポートの確認:", "checking the report").get(lang),
             self.report.display()
         );
         out.push_str(&read_notes(&self.read, "  · ", lang));
@@ -523,40 +526,27 @@ impl CheckOutcome {
             let _ = writeln!(
                 out,
                 "  · {} {}",
-                lang.pick("確かめられません:", "not checked:"),
+                t("確かめられません:", "not checked:").get(lang),
                 m.message(lang)
             );
         }
         let wrong = self.problems.len() + self.verification.findings.len();
-        let _ = writeln!(
-            out,
-            "{}",
-            if wrong == 0 {
-                match lang {
-                    Lang::Ja => format!(
-                        "数値 {} 個を確かめ、データから導かれない数値はありませんでした。",
-                        self.verification.checked
-                    ),
-                    Lang::En => format!(
-                        "{} numbers checked; every one follows from the data.",
-                        self.verification.checked
-                    ),
-                }
-            } else {
-                match lang {
-                    Lang::Ja => format!(
-                        "数値 {} 個を確かめ、{} 件の誤りがありました。",
-                        self.verification.checked, wrong
-                    ),
-                    Lang::En => format!(
-                        "{} numbers checked; {} {}.",
-                        self.verification.checked,
-                        wrong,
-                        if wrong == 1 { "mistake" } else { "mistakes" }
-                    ),
-                }
-            }
-        );
+        let checked = self.verification.checked;
+        let summary = if wrong == 0 {
+            Text::new(
+                format!("数値 {checked} 個を確かめ、データから導かれない数値はありませんでした。"),
+                format!("{checked} numbers checked; every one follows from the data."),
+            )
+        } else {
+            Text::new(
+                format!("数値 {checked} 個を確かめ、{wrong} 件の誤りがありました。"),
+                format!(
+                    "{checked} numbers checked; {wrong} {}.",
+                    if wrong == 1 { "mistake" } else { "mistakes" }
+                ),
+            )
+        };
+        let _ = writeln!(out, "{}", summary.get(lang));
         out
     }
 

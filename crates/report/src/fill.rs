@@ -5,7 +5,7 @@
 
 use std::collections::BTreeMap;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 
 use crate::derive::Missing;
 use crate::figures::{self, View};
@@ -117,8 +117,8 @@ pub fn values(
     let mut put = |k: &str, s: String| {
         v.insert(k.to_owned(), s);
     };
-    let unknown =
-        lang.pick("（未設定: `cg assignment --save`）", "(not set: `cg assignment --save`)");
+    let unknown = t("（未設定: `cg assignment --save`）", "(not set: `cg assignment --save`)");
+    let unknown = unknown.get(lang);
     let plain = |s: &str| match format {
         Format::Markdown => s.to_owned(),
         Format::Latex => latex_escape(s),
@@ -133,13 +133,13 @@ pub fn values(
         put(&format!("{id}.assignment"), text);
         let render = if ctx.renders.iter().any(|r| r == id) {
             let caption = match id {
-                "s" => lang.pick(
+                "s" => t(
                     "実行結果: 左からフラット・グロー・フォンシェーディング",
                     "the result: flat, Gouraud and Phong shading, from the left",
                 ),
-                _ => lang.pick("実行結果", "the result"),
+                _ => t("実行結果", "the result"),
             };
-            image(&files::render_png(id), caption, format)
+            image(&files::render_png(id), caption.get(lang), format)
         } else {
             missing_text(ctx, id, lang, format)
         };
@@ -203,12 +203,12 @@ pub fn values(
     }
 
     match &derived.a4 {
-        Some(t) => {
-            put("a4.formula", tables::formula(t, lang, format));
-            put("a4.table", tables::tex_table(t, lang, format));
+        Some(tex) => {
+            put("a4.formula", tables::formula(tex, lang, format));
+            put("a4.table", tables::tex_table(tex, lang, format));
             put(
                 "a4.sampler",
-                tables::sampler(t, lang, format)
+                tables::sampler(tex, lang, format)
                     .unwrap_or_else(|| missing_text(ctx, "a4.t3", lang, format)),
             );
             put(
@@ -216,10 +216,10 @@ pub fn values(
                 match format {
                     Format::Markdown => format!(
                         "![{}]({})",
-                        lang.pick("貼り付けた範囲", "the mapped region"),
+                        t("貼り付けた範囲", "the mapped region").get(lang),
                         files::TEXTURE_SVG
                     ),
-                    Format::Latex => figures::texture_tikz(t, files::TEXTURE_PNG, lang),
+                    Format::Latex => figures::texture_tikz(tex, files::TEXTURE_PNG, lang),
                 },
             );
         }

@@ -26,7 +26,7 @@
 use std::collections::HashMap;
 
 use cg_core::glam::Vec3;
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_harness::Text;
 
 use crate::derive::polygon_from_data;
@@ -67,18 +67,17 @@ impl ParseProblem {
     /// `line 12: `F3 { V0, V4 }` — expected three vertex numbers in braces, …` (or in Japanese).
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        let place = match (self.line, lang) {
-            (0, Lang::En) => "the text".to_owned(),
-            (0, Lang::Ja) => "全体".to_owned(),
-            (n, Lang::En) => format!("line {n}"),
-            (n, Lang::Ja) => format!("{n} 行目"),
+        let place = match self.line {
+            0 => t("全体", "the text"),
+            n => Text::new(format!("{n} 行目"), format!("line {n}")),
         };
         let found =
             if self.found.is_empty() { String::new() } else { format!(" `{}` —", self.found) };
-        match lang {
-            Lang::En => format!("{place}:{found} expected {}", self.expected.en),
-            Lang::Ja => format!("{place}:{found} 期待する書き方: {}", self.expected.ja),
-        }
+        let text = Text::new(
+            format!("{}:{found} 期待する書き方: {}", place.ja, self.expected.ja),
+            format!("{}:{found} expected {}", place.en, self.expected.en),
+        );
+        text.get(lang).to_owned()
     }
 }
 

@@ -12,7 +12,7 @@
 //! `booktabs`, `longtable`), with a `% cg: ID` comment before each tagged result.
 
 use cg_core::glam::{Mat4, Vec2, Vec3};
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_core::product::{MatrixProduct, format_number};
 use cg_core::texture::{Filter, Wrap};
 use cg_harness::Text;
@@ -96,7 +96,15 @@ fn tex_table_env(spec: &str, header: &[&str], rows: &[Vec<String>]) -> String {
 }
 
 /// A table in the given format; LaTeX cells are given already escaped.
-pub(crate) fn table(format: Format, spec: &str, header: &[&str], rows: &[Vec<String>]) -> String {
+pub(crate) fn table(
+    format: Format,
+    spec: &str,
+    header: &[Text],
+    lang: Lang,
+    rows: &[Vec<String>],
+) -> String {
+    let header: Vec<&str> = header.iter().map(|h| h.get(lang)).collect();
+    let header = header.as_slice();
     match format {
         Format::Markdown => md_table(header, rows),
         Format::Latex => tex_table_env(spec, header, rows),
@@ -124,14 +132,10 @@ pub fn vertex_table(p: &PolygonData, lang: Lang, format: Format) -> String {
         })
         .collect();
     let header = match format {
-        Format::Markdown => {
-            [lang.pick("頂点", "vertex"), lang.pick("座標 (x, y, z)", "position (x, y, z)")]
-        }
-        Format::Latex => {
-            [lang.pick("頂点", "vertex"), lang.pick("座標 $(x, y, z)$", "position $(x, y, z)$")]
-        }
+        Format::Markdown => [t("頂点", "vertex"), t("座標 (x, y, z)", "position (x, y, z)")],
+        Format::Latex => [t("頂点", "vertex"), t("座標 $(x, y, z)$", "position $(x, y, z)$")],
     };
-    table(format, "ll", &header, &rows)
+    table(format, "ll", &header, lang, &rows)
 }
 
 /// Why a face has no derived normal: a vertex that does not exist, or no area.
@@ -219,17 +223,17 @@ pub fn face_table(p: &PolygonData, lang: Lang, format: Format) -> String {
         })
         .collect();
     let mut header = vec![
-        lang.pick("面", "face"),
-        lang.pick("頂点（外側から見て反時計回り）", "vertices (counter-clockwise from outside)"),
-        lang.pick("法線（頂点から導出）", "normal (derived from the vertices)"),
+        t("面", "face"),
+        t("頂点（外側から見て反時計回り）", "vertices (counter-clockwise from outside)"),
+        t("法線（頂点から導出）", "normal (derived from the vertices)"),
     ];
     let spec = if with_notes {
-        header.push(lang.pick("注", "note"));
+        header.push(t("注", "note"));
         "lllp{0.3\\linewidth}"
     } else {
         "lll"
     };
-    table(format, spec, &header, &rows)
+    table(format, spec, &header, lang, &rows)
 }
 
 /// `\begin{pmatrix} … \end{pmatrix}` of `m` by rows, entries as [`format_number`] prints them.
@@ -304,7 +308,7 @@ fn product_block(
     if sym_label != numeric.numeric() {
         out.push_str(&format!(
             "{}: {}\n\n",
-            lang.pick("変数を使った積", "as a product with variables"),
+            t("変数を使った積", "as a product with variables").get(lang),
             product_text(&sym_label, format)
         ));
         if let Ok(latex) = symbolic.latex(true) {
@@ -315,7 +319,7 @@ fn product_block(
     }
     out.push_str(&format!(
         "{}: {}\n\n",
-        lang.pick("数値を入れた積", "with this state's numbers"),
+        t("数値を入れた積", "with this state's numbers").get(lang),
         product_text(&numeric.numeric(), format)
     ));
     let factors: Vec<String> =
@@ -324,7 +328,7 @@ fn product_block(
         out.push_str(&math_block(&factor_lines(factors, format), format));
         out.push('\n');
     }
-    out.push_str(&format!("{}:\n\n", lang.pick("積（4×4 行列）", "the product (4×4 matrix)")));
+    out.push_str(&format!("{}:\n\n", t("積（4×4 行列）", "the product (4×4 matrix)").get(lang)));
     let eq = if numeric.factors.is_empty() { "" } else { "= " };
     match format {
         Format::Markdown => out.push_str(&format!("<!-- cg: {id} -->\n")),
@@ -398,56 +402,56 @@ pub fn variables(vars: &[(String, Text)], lang: Lang, format: Format) -> String 
         })
         .collect();
     let header = [
-        lang.pick("変数", "variable"),
-        lang.pick("意味・変化させる操作・範囲", "meaning, the operation that changes it, range"),
+        t("変数", "variable"),
+        t("意味・変化させる操作・範囲", "meaning, the operation that changes it, range"),
     ];
-    table(format, "lp{0.65\\linewidth}", &header, &rows)
+    table(format, "lp{0.65\\linewidth}", &header, lang, &rows)
 }
 
 /// The texture-coordinate table: `| i | j | (x, y, z) | (s, t) / (s, t) |`, one row per ground
 /// vertex, its coordinates in the order the squares use them.
 #[must_use]
-pub fn tex_table(t: &TextureData, lang: Lang, format: Format) -> String {
-    let rows: Vec<Vec<String>> = t
+pub fn tex_table(tex: &TextureData, lang: Lang, format: Format) -> String {
+    let rows: Vec<Vec<String>> = tex
         .rows
         .iter()
         .map(|r| {
-            let tex: Vec<String> = r.tex.iter().map(|&v| tuple2(v)).collect();
+            let coords: Vec<String> = r.tex.iter().map(|&v| tuple2(v)).collect();
             match format {
                 Format::Markdown => {
-                    vec![r.i.to_string(), r.j.to_string(), tuple3(r.position), tex.join(" / ")]
+                    vec![r.i.to_string(), r.j.to_string(), tuple3(r.position), coords.join(" / ")]
                 }
                 Format::Latex => vec![
                     r.i.to_string(),
                     r.j.to_string(),
                     format!("${}$", tuple3(r.position)),
-                    format!("${}$", tex.join(" / ")),
+                    format!("${}$", coords.join(" / ")),
                 ],
             }
         })
         .collect();
     let header = match format {
         Format::Markdown => [
-            "i",
-            "j",
-            lang.pick("頂点の位置 (x, y, z)", "vertex position (x, y, z)"),
-            lang.pick("テクスチャ座標 (s, t)", "texture coordinates (s, t)"),
+            "i".into(),
+            "j".into(),
+            t("頂点の位置 (x, y, z)", "vertex position (x, y, z)"),
+            t("テクスチャ座標 (s, tex)", "texture coordinates (s, tex)"),
         ],
         Format::Latex => [
-            "$i$",
-            "$j$",
-            lang.pick("頂点の位置 $(x, y, z)$", "vertex position $(x, y, z)$"),
-            lang.pick("テクスチャ座標 $(s, t)$", "texture coordinates $(s, t)$"),
+            "$i$".into(),
+            "$j$".into(),
+            t("頂点の位置 $(x, y, z)$", "vertex position $(x, y, z)$"),
+            t("テクスチャ座標 $(s, tex)$", "texture coordinates $(s, tex)$"),
         ],
     };
-    table(format, "rrll", &header, &rows)
+    table(format, "rrll", &header, lang, &rows)
 }
 
 /// The formula in i and j (in words, from the data) and the mapped rectangle in texture
 /// coordinates, `s ∈ [s₀, s₁], t ∈ [t₀, t₁]`.
 #[must_use]
-pub fn formula(t: &TextureData, lang: Lang, format: Format) -> String {
-    let (lo, hi) = t.region;
+pub fn formula(tex: &TextureData, lang: Lang, format: Format) -> String {
+    let (lo, hi) = tex.region;
     let range = format!(
         "s \\in [{}, {}],\\ t \\in [{}, {}]",
         fixed(lo.x),
@@ -455,14 +459,15 @@ pub fn formula(t: &TextureData, lang: Lang, format: Format) -> String {
         fixed(lo.y),
         fixed(hi.y)
     );
-    let label = lang.pick(
+    let label = t(
         "貼り付ける範囲（テクスチャ座標、t = 0 が画像の下端）",
         "the mapped region (texture coordinates, t = 0 at the image's bottom edge)",
     );
+    let label = label.get(lang);
     match format {
-        Format::Markdown => format!("{}\n\n{label}: ${range}$\n", t.formula.get(lang)),
+        Format::Markdown => format!("{}\n\n{label}: ${range}$\n", tex.formula.get(lang)),
         Format::Latex => {
-            format!("{}\n\n{}: ${range}$\n", tex_text(t.formula.get(lang)), tex_text(label))
+            format!("{}\n\n{}: ${range}$\n", tex_text(tex.formula.get(lang)), tex_text(label))
         }
     }
 }
@@ -470,8 +475,8 @@ pub fn formula(t: &TextureData, lang: Lang, format: Format) -> String {
 /// The student's sampler (a4.t3) with the OpenGL names, and how many pixels of the image one
 /// ground square shows (for the choice of filter); `None` when a4.t3 did not derive.
 #[must_use]
-pub fn sampler(t: &TextureData, lang: Lang, format: Format) -> Option<String> {
-    let s = t.sampler?;
+pub fn sampler(tex: &TextureData, lang: Lang, format: Format) -> Option<String> {
+    let s = tex.sampler?;
     let filter = match s.filter {
         Filter::Nearest => "GL_NEAREST (Filter::Nearest)",
         Filter::Bilinear => "GL_LINEAR (Filter::Bilinear)",
@@ -481,18 +486,19 @@ pub fn sampler(t: &TextureData, lang: Lang, format: Format) -> Option<String> {
         Wrap::Clamp => "GL_CLAMP_TO_EDGE (Wrap::Clamp)",
     };
     let (u, v) = (wrap(s.wrap_u), wrap(s.wrap_v));
-    let (x, y) = (format_number(t.texels_per_square.x), format_number(t.texels_per_square.y));
-    let text = match lang {
-        Lang::Ja => format!(
+    let (x, y) = (format_number(tex.texels_per_square.x), format_number(tex.texels_per_square.y));
+    let text = Text::new(
+        format!(
             "フィルタ: {filter}。折り返し: s 方向 {u}、t 方向 {v}。地面の四角形 1 つに画像の {x} × {y} 画素が貼られる。"
         ),
-        Lang::En => format!(
+        format!(
             "Filter: {filter}. Wrap: {u} along s, {v} along t. One ground square shows {x} × {y} pixels of the image."
         ),
-    };
+    );
+    let text = text.get(lang);
     Some(match format {
         Format::Markdown => format!("{text}\n"),
-        Format::Latex => format!("{}\n", tex_text(&text)),
+        Format::Latex => format!("{}\n", tex_text(text)),
     })
 }
 

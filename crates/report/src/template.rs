@@ -4,7 +4,7 @@
 
 use std::collections::BTreeMap;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text};
 
 /// Markdown or LaTeX.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -106,13 +106,12 @@ pub fn fill(text: &str, values: &BTreeMap<String, String>) -> Result<String, Tem
 /// report's language and format: it says what is missing and why, and stays visible.
 #[must_use]
 pub fn not_yet(why: &str, lang: Lang, format: Format) -> String {
-    let text = match lang {
-        Lang::Ja => format!("（まだ導出できません: {why}）"),
-        Lang::En => format!("(not derived yet: {why})"),
-    };
+    let text =
+        Text::new(format!("（まだ導出できません: {why}）"), format!("(not derived yet: {why})"));
+    let text = text.get(lang);
     match format {
         Format::Markdown => format!("> {text}"),
-        Format::Latex => format!("\\textbf{{{}}}", latex_escape(&text)),
+        Format::Latex => format!("\\textbf{{{}}}", latex_escape(text)),
     }
 }
 

@@ -58,30 +58,29 @@ impl Finding {
     /// (tolerance ±0.01) — y is 0.53 but …`, or in Japanese.
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        match lang {
-            Lang::En => {
-                let tol = self
-                    .tolerance
-                    .map_or(String::new(), |t| format!(" (tolerance ±{})", show_tolerance(t)));
-                format!(
-                    "line {}: {}: written `{}`, derived `{}`{tol} — {}",
-                    self.line, self.item, self.written, self.derived, self.why.en
-                )
-            }
-            Lang::Ja => {
-                let tol = self
-                    .tolerance
-                    .map_or(String::new(), |t| format!("（許容誤差 ±{}）", show_tolerance(t)));
-                format!(
-                    "{} 行目: {}: 記入 `{}`、導出値 `{}`{tol} — {}",
-                    self.line,
-                    item_ja(&self.item),
-                    self.written,
-                    self.derived,
-                    self.why.ja
-                )
-            }
-        }
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message in both languages.
+    #[must_use]
+    pub fn text(&self) -> Text {
+        let (line, written, derived) = (self.line, &self.written, &self.derived);
+        let tolerance = self.tolerance.map_or_else(Text::default, |t| {
+            let t = show_tolerance(t);
+            Text::new(format!("（許容誤差 ±{t}）"), format!(" (tolerance ±{t})"))
+        });
+        Text::new(
+            format!(
+                "{line} 行目: {}: 記入 `{written}`、導出値 `{derived}`{} — {}",
+                item_ja(&self.item),
+                tolerance.ja,
+                self.why.ja
+            ),
+            format!(
+                "line {line}: {}: written `{written}`, derived `{derived}`{} — {}",
+                self.item, tolerance.en, self.why.en
+            ),
+        )
     }
 }
 

@@ -77,7 +77,7 @@ use std::sync::OnceLock;
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 
 /// How strongly a run is isolated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -98,17 +98,15 @@ impl Isolation {
     #[must_use]
     pub fn describe(self, lang: Lang) -> String {
         match self {
-            Isolation::Bubblewrap => lang
-                .pick(
-                    "bubblewrap: 時間・メモリ・出力の制限、ネットワークなし、書き込みは容量制限つきの使い捨ての作業フォルダと /tmp のみ、ほかのプログラムは起動不可",
-                    "bubblewrap: time, memory and output limits, no network, writes only to a throwaway work folder and /tmp of limited size, no other programs to start",
-                )
+            Isolation::Bubblewrap => t(
+                "bubblewrap: 時間・メモリ・出力の制限、ネットワークなし、書き込みは容量制限つきの使い捨ての作業フォルダと /tmp のみ、ほかのプログラムは起動不可",
+                "bubblewrap: time, memory and output limits, no network, writes only to a throwaway work folder and /tmp of limited size, no other programs to start",
+            ).get(lang)
                 .to_owned(),
-            Isolation::Limits => lang
-                .pick(
-                    "制限のみ（bubblewrap が使えません）: 時間・メモリ・出力の制限（書き込みはファイル1つずつの大きさのみ制限し、合計は制限なし）。ファイルとネットワークは隔離されません",
-                    "limits only (bubblewrap is not available): time, memory and output limits (the size of each file written, not their total); files and network are NOT isolated",
-                )
+            Isolation::Limits => t(
+                "制限のみ（bubblewrap が使えません）: 時間・メモリ・出力の制限（書き込みはファイル1つずつの大きさのみ制限し、合計は制限なし）。ファイルとネットワークは隔離されません",
+                "limits only (bubblewrap is not available): time, memory and output limits (the size of each file written, not their total); files and network are NOT isolated",
+            ).get(lang)
                 .to_owned(),
         }
     }

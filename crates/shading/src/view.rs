@@ -4,7 +4,6 @@
 
 use cg_core::Rgb;
 use cg_core::glam::Vec3;
-use cg_core::lang::Lang;
 use cg_core::light::{self, LightKind};
 use cg_core::scene::Scene;
 use cg_harness::Text;
@@ -17,7 +16,7 @@ use crate::scenes::{STAGE_SPHERES, material, sphere_mesh, stage_scene};
 use crate::{Impl, Shading, Spec};
 
 fn text(e: &RenderError) -> Text {
-    Text::new(e.message(Lang::Ja), e.message(Lang::En))
+    e.text()
 }
 
 /// The light model term by term, each the student's where it is written (it returns without a
@@ -95,5 +94,5 @@ pub(crate) fn view(spec: &Spec, imp: &Impl) -> Result<Scene, Text> {
             (imp.shade_pixel)(mode, &pixel, &lit)
         },
     );
-    screen(&image, "s-view").map_err(|e| Text::new(e.describe(Lang::Ja), e.describe(Lang::En)))
+    screen(&image, "s-view").map_err(|e| e.text())
 }

@@ -91,7 +91,7 @@ impl TraceError {
     #[must_use]
     pub fn text(&self) -> Text {
         // The size messages are core's, shared with the rasterizer.
-        let size = |e: SizeError| Text::new(e.message(Lang::Ja), e.message(Lang::En));
+        let size = |e: SizeError| e.text();
         match self {
             &TraceError::ZeroSize { width, height } => size(SizeError::ZeroSize { width, height }),
             &TraceError::TooLarge { width, height } => size(SizeError::TooLarge { width, height }),
@@ -108,7 +108,7 @@ impl TraceError {
                 format!("min_weight = {value} は 0 以上の有限の値でなければなりません"),
                 format!("min_weight = {value} must be finite and ≥ 0"),
             ),
-            TraceError::Prepare(e) => Text::new(e.message(Lang::Ja), e.message(Lang::En)),
+            TraceError::Prepare(e) => e.text(),
             TraceError::Camera(e) => {
                 let e = e.text();
                 Text::new(

@@ -1,5 +1,6 @@
 //! What a render did, counted: the proof that it did only what the scene needs.
 
+use cg_core::lang::{Text, t};
 /// Counters of one render. Every count is exact and independent of the thread count.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Stats {
@@ -77,10 +78,9 @@ impl Stats {
         self.bvh_nodes_visited += other.bvh_nodes_visited;
     }
 
-    /// The counters with their names in `lang` (hits per depth as one entry per depth).
+    /// The counters with their names (hits per depth as one entry per depth).
     #[must_use]
-    pub fn list(&self, lang: cg_core::lang::Lang) -> Vec<(String, u64)> {
-        let t = |ja: &str, en: &str| lang.pick(ja, en).to_owned();
+    pub fn list(&self) -> Vec<(Text, u64)> {
         let mut list = vec![
             (t("一次レイ", "primary rays"), self.primary_rays),
             (t("影のレイ", "shadow rays"), self.shadow_rays),
@@ -99,7 +99,10 @@ impl Stats {
             (t("BVH ノードの判定", "BVH nodes visited"), self.bvh_nodes_visited),
         ];
         for (depth, hits) in self.hits_per_depth.iter().enumerate() {
-            list.push((format!("{} {depth}", t("交差 深さ", "hits at depth")), *hits));
+            list.push((
+                Text::new(format!("交差 深さ {depth}"), format!("hits at depth {depth}")),
+                *hits,
+            ));
         }
         list
     }

@@ -9,7 +9,7 @@
 use std::sync::Arc;
 
 use cg_core::image::Image;
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_core::scene::{Scene, Shading};
 use cg_gpu::wgpu;
 use winit::window::Window;
@@ -224,10 +224,11 @@ impl GpuBackend {
         let refuse = |this: &mut GpuBackend, why: String| {
             eprintln!(
                 "{} {why}",
-                lang.pick(
+                t(
                     "GPU はこのウィンドウに直接表示できません。読み戻した画像を表示します:",
                     "the GPU cannot present to this window; showing its read-back image instead:"
                 )
+                .get(lang)
             );
             this.cannot_present = true;
             None
@@ -240,7 +241,8 @@ impl GpuBackend {
         let Some(format) = surface_format(&caps.formats) else {
             let why = format!(
                 "{} {:?}",
-                lang.pick("sRGB でない 8 ビットの形式がありません:", "no 8-bit non-sRGB format in"),
+                t("sRGB でない 8 ビットの形式がありません:", "no 8-bit non-sRGB format in")
+                    .get(lang),
                 caps.formats
             );
             return refuse(self, why);
@@ -331,12 +333,12 @@ impl GpuBackend {
             }
             wgpu::CurrentSurfaceTexture::Validation => {
                 return Err(ViewerError::Render(
-                    self.lang
-                        .pick(
-                            "ウィンドウのサーフェスが画像を渡しません（検証エラー）",
-                            "the window surface gave no image (a validation error)",
-                        )
-                        .to_owned(),
+                    t(
+                        "ウィンドウのサーフェスが画像を渡しません（検証エラー）",
+                        "the window surface gave no image (a validation error)",
+                    )
+                    .get(self.lang)
+                    .to_owned(),
                 ));
             }
         };
@@ -442,7 +444,7 @@ pub fn default_backends(threads: Option<usize>, lang: Lang) -> Vec<Box<dyn Backe
         Ok(gpu) if gpu.is_hardware() => vec![Box::new(gpu), Box::new(cpu)],
         Ok(gpu) => vec![Box::new(cpu), Box::new(gpu)],
         Err(why) => {
-            eprintln!("{} {why}", lang.pick("GPU は使えません:", "no GPU:"));
+            eprintln!("{} {why}", t("GPU は使えません:", "no GPU:").get(lang));
             vec![Box::new(cpu)]
         }
     }
@@ -497,7 +499,7 @@ pub fn backends_for(
             Ok(gpu) => Ok(vec![Box::new(gpu), Box::new(cpu)]),
             Err(why) => Err(ViewerError::Render(format!(
                 "{} {why}",
-                lang.pick("GPU が指定されましたが使えません:", "the GPU was asked for, but")
+                t("GPU が指定されましたが使えません:", "the GPU was asked for, but").get(lang)
             ))),
         },
     }

@@ -64,7 +64,7 @@ mod window;
 use std::path::{Path, PathBuf};
 
 use cg_core::image::Image;
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text, t};
 use cg_core::scene::Shading;
 
 pub use app::{App, Control};
@@ -101,14 +101,21 @@ impl ViewerError {
     /// The message in `lang` (the `Display` text is the English one).
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        match (lang, self) {
-            (Lang::En, _) | (Lang::Ja, ViewerError::Scene(_)) => self.to_string(),
-            (Lang::Ja, ViewerError::Render(m)) => format!("フレームを描画できません: {m}"),
-            (Lang::Ja, ViewerError::Save { path, message }) => {
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message in both languages.
+    #[must_use]
+    pub fn text(&self) -> Text {
+        let ja = match self {
+            ViewerError::Scene(_) => self.to_string(),
+            ViewerError::Render(m) => format!("フレームを描画できません: {m}"),
+            ViewerError::Save { path, message } => {
                 format!("{} を保存できません: {message}", path.display())
             }
-            (Lang::Ja, ViewerError::Window(m)) => format!("ウィンドウでエラーが起きました: {m}"),
-        }
+            ViewerError::Window(m) => format!("ウィンドウでエラーが起きました: {m}"),
+        };
+        Text::new(ja, self.to_string())
     }
 }
 
@@ -195,9 +202,9 @@ pub fn run(options: &ViewerOptions) -> Result<(), ViewerError> {
 
 /// Prints the keys and drags the viewer understands.
 pub fn print_keys(lang: Lang) {
-    println!("{}", lang.pick("操作:", "controls:"));
+    println!("{}", t("操作:", "controls:").get(lang));
     for (key, ja, en) in course::KEYS {
-        println!("  {key:<12} {}", lang.pick(ja, en));
+        println!("  {key:<12} {}", t(ja, en).get(lang));
     }
 }
 
@@ -244,13 +251,12 @@ fn window_or_reason<A: App>(
 ) -> Result<Option<String>, ViewerError> {
     if !display_available() {
         return Ok(Some(
-            options
-                .lang
-                .pick(
-                    "WAYLAND_DISPLAY も DISPLAY も設定されていません",
-                    "neither WAYLAND_DISPLAY nor DISPLAY is set",
-                )
-                .to_owned(),
+            t(
+                "WAYLAND_DISPLAY も DISPLAY も設定されていません",
+                "neither WAYLAND_DISPLAY nor DISPLAY is set",
+            )
+            .get(options.lang)
+            .to_owned(),
         ));
     }
     match window::run(app, shared) {
@@ -265,8 +271,8 @@ fn window_or_reason<A: App>(
 pub fn no_window(reason: &str, lang: Lang) -> String {
     format!(
         "{} ({reason}){}",
-        lang.pick("ウィンドウを開けません", "no window can be opened"),
-        lang.pick("。代わりに PNG ファイルに描画します", "; rendering to PNG files instead")
+        t("ウィンドウを開けません", "no window can be opened").get(lang),
+        t("。代わりに PNG ファイルに描画します", "; rendering to PNG files instead").get(lang)
     )
 }
 
@@ -364,16 +370,21 @@ impl Shared {
         if self.backends.len() < 2 {
             println!(
                 "{} {}",
-                self.options.lang.pick(
+                t(
                     "使えるレンダラは 1 つだけです（GPU のアダプタがありません）:",
                     "only one renderer is available (no GPU adapter was found):"
-                ),
+                )
+                .get(self.options.lang),
                 self.backend().name()
             );
             return;
         }
         self.current = (self.current + 1) % self.backends.len();
-        println!("{} {}", self.options.lang.pick("レンダラ:", "renderer:"), self.backend().name());
+        println!(
+            "{} {}",
+            t("レンダラ:", "renderer:").get(self.options.lang),
+            self.backend().name()
+        );
     }
 
     pub(crate) fn out_dir(&self) -> PathBuf {
@@ -394,7 +405,7 @@ impl Shared {
         save_png(path, image)?;
         println!(
             "{} {} ({status})",
-            self.options.lang.pick("保存しました:", "saved"),
+            t("保存しました:", "saved").get(self.options.lang),
             path.display()
         );
         Ok(())

@@ -85,7 +85,7 @@ fn listed<T: Clone + Into<Text>>(items: &[T]) -> Text {
 
 /// The message of a core error in both languages.
 fn message(e: &MeshError) -> Text {
-    Text::new(e.message(Lang::Ja), e.message(Lang::En))
+    e.text()
 }
 
 /// The failure of a check that needs faces passing a1.t2.indices, for `e`, with `hint`.

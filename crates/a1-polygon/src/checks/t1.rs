@@ -2,7 +2,6 @@
 //! spec's numbering.
 
 use cg_core::glam::Vec3;
-use cg_core::lang::Lang;
 use cg_harness::check::Failure;
 use cg_harness::text::{Text, t};
 
@@ -113,13 +112,13 @@ fn diagnose_positions(spec: &Spec, v: &[Vec3], e: &[Vec3]) -> Text {
                     return Text::new(
                         format!(
                             "点の位置は正しいのですが、番号の付け方が違います。あなたの番号は「{}」、課題の指定は「{}」です。",
-                            rule.short(Lang::Ja),
-                            spec.numbering.short(Lang::Ja)
+                            rule.short().ja,
+                            spec.numbering.short().ja
                         ),
                         format!(
                             "the points are right but numbered by another rule: yours is \"{}\", the assignment asks for \"{}\".",
-                            rule.short(Lang::En),
-                            spec.numbering.short(Lang::En)
+                            rule.short().en,
+                            spec.numbering.short().en
                         ),
                     );
                 }

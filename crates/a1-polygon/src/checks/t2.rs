@@ -2,7 +2,6 @@
 //! orientation, face count and surface.
 
 use cg_core::glam::Vec3;
-use cg_core::lang::Lang;
 use cg_core::mesh::{Mesh, MeshError, Orientation, Problem, Validation};
 use cg_core::normals::face_normal;
 use cg_core::notation;
@@ -111,7 +110,7 @@ fn problems_failure(expected: Text, problems: &[&Problem], extra: Option<Text>) 
     locations.dedup();
     let first = problems[0];
     let more = problems.len() - 1;
-    let mut cause = vec![Text::new(first.describe(Lang::Ja), first.describe(Lang::En))];
+    let mut cause = vec![first.text()];
     if more > 0 {
         cause.push(Text::new(format!("（ほかに {more} 件）"), format!("(and {more} more)")));
     }
@@ -121,7 +120,7 @@ fn problems_failure(expected: Text, problems: &[&Problem], extra: Option<Text>) 
     Failure::new(expected, listed(&actual))
         .at(listed(&locations))
         .cause(join(&cause))
-        .hint(Text::new(first.hint(Lang::Ja), first.hint(Lang::En)))
+        .hint(first.hint())
 }
 
 pub(super) fn face_indices(spec: &Spec, imp: &Impl) -> Result<(), Failure> {

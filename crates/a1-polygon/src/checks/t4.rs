@@ -1,7 +1,6 @@
 //! The checks of task `a1.t4` (`model_transform(spec)`): the placement `T(x, y, z) · Ry(θ)`.
 
 use cg_core::glam::{Mat4, Vec3};
-use cg_core::lang::Lang;
 use cg_core::notation;
 use cg_core::product::MatrixProduct;
 use cg_core::transform::{rotate_y, rotate_y_deg, translate};
@@ -56,7 +55,7 @@ pub(super) fn placement(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let m = match product.matrix() {
         Ok(m) => m,
         Err(e) => {
-            let message = Text::new(e.message(Lang::Ja), e.message(Lang::En));
+            let message = e.text();
             return Err(Failure::new(expected_text, message.clone())
                 .at("model_transform()")
                 .cause(message)

@@ -171,7 +171,7 @@ pub(crate) fn student_view(imp: &Impl, s: &CameraState) -> Result<Mat4, (Text, T
     }
     gl.model_view().matrix().map_err(|e| {
         (
-            Text::new(e.message(Lang::Ja), e.message(Lang::En)),
+            e.text(),
             Text::new(
                 format!("camera() の変換が不正です: {}", e.message(Lang::Ja)),
                 format!("camera() builds an invalid transform: {}", e.message(Lang::En)),

@@ -143,12 +143,12 @@ pub(super) fn changes_by_amount(
             .hint(t(
                 &format!(
                     "motion() で {} のドラッグのときに {} としてください（課題文: cargo run --release -- assignment --only a2）",
-                    show::gesture(op.gesture, cg_core::lang::Lang::Ja),
+                    show::gesture(op.gesture).ja,
                     show::formula(var, op)
                 ),
                 &format!(
                     "in motion(), on a {} drag do {} (your assignment text: cargo run --release -- assignment --only a2)",
-                    show::gesture(op.gesture, cg_core::lang::Lang::En),
+                    show::gesture(op.gesture).en,
                     show::formula(var, op)
                 ),
             )));
@@ -193,13 +193,13 @@ fn amount_cause(
                 return t(
                     &format!(
                         "{name} が {} ではなく {} のドラッグで変わっています（ボタンか Shift の判定の間違い）",
-                        show::gesture(op.gesture, cg_core::lang::Lang::Ja),
-                        show::gesture(g, cg_core::lang::Lang::Ja)
+                        show::gesture(op.gesture).ja,
+                        show::gesture(g).ja
                     ),
                     &format!(
                         "{name} changes with the {} instead of the {} (the button or Shift test is wrong)",
-                        show::gesture(g, cg_core::lang::Lang::En),
-                        show::gesture(op.gesture, cg_core::lang::Lang::En)
+                        show::gesture(g).en,
+                        show::gesture(op.gesture).en
                     ),
                 );
             }
@@ -338,8 +338,6 @@ pub(super) fn only_listed_drags(spec: &Spec, imp: &Impl) -> Result<(), Failure> 
 fn buttons_cause(spec: &Spec, var: Var, g: Gesture, axis: DragAxis) -> Text {
     let own = spec.operations().into_iter().find(|(v, _)| *v == var).map(|(_, op)| op);
     let name = var.name();
-    let ja = cg_core::lang::Lang::Ja;
-    let en = cg_core::lang::Lang::En;
     match own {
         Some(op) if op.gesture == g && op.axis != axis => t(
             &format!(
@@ -356,25 +354,25 @@ fn buttons_cause(spec: &Spec, var: Var, g: Gesture, axis: DragAxis) -> Text {
         Some(op) if op.gesture.button == g.button => t(
             &format!(
                 "Shift の有無を見ていません: {name} は {} のドラッグで変わり、{} では変わりません",
-                show::gesture(op.gesture, ja),
-                show::gesture(g, ja)
+                show::gesture(op.gesture).ja,
+                show::gesture(g).ja
             ),
             &format!(
                 "Shift is not tested: {name} changes on a {} drag, not on a {} drag",
-                show::gesture(op.gesture, en),
-                show::gesture(g, en)
+                show::gesture(op.gesture).en,
+                show::gesture(g).en
             ),
         ),
         Some(op) => t(
             &format!(
                 "ボタンが違います: {name} は {} のドラッグで変わり、{} では変わりません",
-                show::gesture(op.gesture, ja),
-                show::gesture(g, ja)
+                show::gesture(op.gesture).ja,
+                show::gesture(g).ja
             ),
             &format!(
                 "the wrong button: {name} changes on a {} drag, not on a {} drag",
-                show::gesture(op.gesture, en),
-                show::gesture(g, en)
+                show::gesture(op.gesture).en,
+                show::gesture(g).en
             ),
         ),
         None => t(

@@ -3,7 +3,6 @@
 
 use cg_core::gl::Gl;
 use cg_core::glam::{DMat4, Vec3};
-use cg_core::lang::Lang;
 use cg_core::product::format_number;
 use cg_harness::check::Failure;
 use cg_harness::text::{Text, t};
@@ -43,8 +42,8 @@ pub(super) fn objects(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                 let (want, got) = (show(want), show(got));
                 return Err(Failure::new(
                     Text::new(
-                        format!("{}: 範囲 {}", shape_text(&object.shape, Lang::Ja), want.ja),
-                        format!("{}: bounds {}", shape_text(&object.shape, Lang::En), want.en),
+                        format!("{}: 範囲 {}", shape_text(&object.shape).ja, want.ja),
+                        format!("{}: bounds {}", shape_text(&object.shape).en, want.en),
                     ),
                     Text::new(format!("範囲 {}", got.ja), format!("bounds {}", got.en)),
                 )

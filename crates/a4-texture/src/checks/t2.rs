@@ -3,7 +3,6 @@
 //! ([`SpecOracle`]).
 
 use cg_core::glam::{DVec2, Vec2};
-use cg_core::lang::Lang;
 use cg_core::notation::decimal;
 use cg_harness::check::Failure;
 use cg_harness::text::{Text, t};
@@ -196,8 +195,8 @@ pub(super) fn corners(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         ),
     )
     .at(Text::new(
-        format!("{}、{}", g.describe(Lang::Ja), square.ja),
-        format!("{}; {}", g.describe(Lang::En), square.en),
+        format!("{}、{}", g.text().ja, square.ja),
+        format!("{}; {}", g.text().en, square.en),
     ))
     .cause(cause)
     .hint(t(

@@ -20,7 +20,7 @@
 
 use glam::{DMat3, DVec3, Mat3, Mat4, Vec3};
 
-use crate::lang::Lang;
+use crate::lang::{Lang, Text};
 use crate::math::{cross_f64, cross_kahan_f64, try_normalize, try_normalize_f64};
 use crate::mesh::{CornersByVertex, Mesh, MeshError, find_root, gather, union};
 use crate::scene::NormalSource;
@@ -592,16 +592,20 @@ impl NormalsError {
     /// The message for a student in `lang` (the `Display` text is the English one).
     #[must_use]
     pub fn message(&self, lang: Lang) -> String {
-        match (lang, self) {
-            (Lang::En, _) => self.to_string(),
-            (Lang::Ja, NormalsError::Mesh(e)) => {
-                format!("メッシュが使えません: {}", e.message(Lang::Ja))
-            }
-            (Lang::Ja, NormalsError::Missing) => "法線はメッシュに与えられているはずですが、ありません。頂点ごとに1つずつ法線を与えるか、面の法線か頂点の法線を使ってください".to_owned(),
-            (Lang::Ja, NormalsError::Unusable { vertex, normal }) => format!(
+        self.text().get(lang).to_owned()
+    }
+
+    /// The message in both languages.
+    #[must_use]
+    pub fn text(&self) -> Text {
+        let ja = match self {
+            NormalsError::Mesh(e) => format!("メッシュが使えません: {}", e.text().ja),
+            NormalsError::Missing => "法線はメッシュに与えられているはずですが、ありません。頂点ごとに1つずつ法線を与えるか、面の法線か頂点の法線を使ってください".to_owned(),
+            NormalsError::Unusable { vertex, normal } => format!(
                 "頂点 V{vertex} の法線 {normal} は向きを持ちません (ゼロ・無限大・NaN のいずれか)"
             ),
-        }
+        };
+        Text::new(ja, self.to_string())
     }
 }
 

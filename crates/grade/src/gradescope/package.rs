@@ -10,7 +10,7 @@
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 
 use crate::handout::{excluded, kit_files};
 
@@ -101,7 +101,7 @@ exit 0
 /// `run_autograder` with its results in `lang`.
 #[must_use]
 pub fn run_autograder(lang: Lang) -> String {
-    RUN_AUTOGRADER.replace("@LANG@", lang.pick("ja", "en"))
+    RUN_AUTOGRADER.replace("@LANG@", t("ja", "en").get(lang))
 }
 
 /// Writes the autograder zip of the kit at `kit` to `out`: `setup.sh` and `run_autograder`

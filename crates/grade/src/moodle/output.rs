@@ -19,7 +19,7 @@ use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::Path;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text, t};
 use serde_json::Value;
 
 use super::Name;
@@ -80,7 +80,7 @@ pub fn columns(lang: Lang) -> [&'static str; 10] {
 /// (`Participant 1234567`, `参加者1234567`).
 #[must_use]
 pub fn identifier(participant: &str, lang: Lang) -> String {
-    format!("{}{participant}", lang.pick("参加者", "Participant "))
+    format!("{}{participant}", t("参加者", "Participant ").get(lang))
 }
 
 /// The feedback file of each language.
@@ -144,21 +144,24 @@ fn number(v: &Value) -> String {
 /// checks.
 #[must_use]
 pub fn feedback_md(result: &Value, lang: Lang) -> String {
-    let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
     let cg = &result["cg"];
-    let mut md = format!("# {}\n\n", l("採点結果", "Grading results"));
-    let _ =
-        writeln!(md, "- {}: {}", l("学生番号", "student"), cg["student"].as_str().unwrap_or("?"));
+    let mut md = format!("# {}\n\n", t("採点結果", "Grading results").get(lang));
     let _ = writeln!(
         md,
         "- {}: {}",
-        l("提出物", "submission"),
+        t("学生番号", "student").get(lang),
+        cg["student"].as_str().unwrap_or("?")
+    );
+    let _ = writeln!(
+        md,
+        "- {}: {}",
+        t("提出物", "submission").get(lang),
         cg["submission"].as_str().unwrap_or("")
     );
     let _ = writeln!(
         md,
         "- {}: {} / {}\n",
-        l("点数", "score"),
+        t("点数", "score").get(lang),
         number(&result["score"]),
         number(&result["max_score"])
     );
@@ -166,9 +169,9 @@ pub fn feedback_md(result: &Value, lang: Lang) -> String {
         let _ = writeln!(
             md,
             "| {} | {} | {} |\n|---|---:|---:|",
-            l("課題", "assignment"),
-            l("点数", "score"),
-            l("満点", "out of")
+            t("課題", "assignment").get(lang),
+            t("点数", "score").get(lang),
+            t("満点", "out of").get(lang)
         );
         for (m, s) in per {
             let _ = writeln!(md, "| {m} | {} | {} |", number(&s["score"]), number(&s["max_score"]));
@@ -178,30 +181,40 @@ pub fn feedback_md(result: &Value, lang: Lang) -> String {
     let _ = write!(
         md,
         "## {}\n\n{}\n",
-        l("概要", "Summary"),
+        t("概要", "Summary").get(lang),
         block(result["output"].as_str().unwrap_or(""))
     );
     let tests = result["tests"].as_array().map(Vec::as_slice).unwrap_or_default();
     let (passed, failed): (Vec<&Value>, Vec<&Value>) =
         tests.iter().partition(|t| t["status"] == "passed");
     if !failed.is_empty() {
-        let _ = write!(md, "## {} ({})\n\n", l("不合格のチェック", "Failed checks"), failed.len());
-        for t in failed {
+        let _ = write!(
+            md,
+            "## {} ({})\n\n",
+            t("不合格のチェック", "Failed checks").get(lang),
+            failed.len()
+        );
+        for test in failed {
             let _ = write!(
                 md,
                 "### {}\n\n{} {} / {}\n\n{}\n",
-                t["name"].as_str().unwrap_or("?"),
-                l("点数", "score"),
-                number(&t["score"]),
-                number(&t["max_score"]),
-                block(t["output"].as_str().unwrap_or(""))
+                test["name"].as_str().unwrap_or("?"),
+                t("点数", "score").get(lang),
+                number(&test["score"]),
+                number(&test["max_score"]),
+                block(test["output"].as_str().unwrap_or(""))
             );
         }
     }
     if !passed.is_empty() {
-        let _ = write!(md, "## {} ({})\n\n", l("合格したチェック", "Passed checks"), passed.len());
-        for t in passed {
-            let _ = writeln!(md, "- {}", t["name"].as_str().unwrap_or("?"));
+        let _ = write!(
+            md,
+            "## {} ({})\n\n",
+            t("合格したチェック", "Passed checks").get(lang),
+            passed.len()
+        );
+        for test in passed {
+            let _ = writeln!(md, "- {}", test["name"].as_str().unwrap_or("?"));
         }
     }
     md
@@ -245,7 +258,8 @@ pub fn worksheet(rows: &[Row], settings: &Settings) -> Result<String, String> {
     let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::CRLF).from_writer(Vec::new());
     w.write_record(columns(settings.lang)).map_err(|e| e.to_string())?;
     let grade = |x: f64| format!("{x:.2}");
-    let status = settings.lang.pick("評定のために提出済み", "Submitted for grading");
+    let status = t("評定のために提出済み", "Submitted for grading");
+    let status = status.get(settings.lang);
     let modified = utc(settings.now);
     for r in rows {
         w.write_record([
@@ -294,16 +308,14 @@ fn comment(result: &Value, lang: Lang) -> String {
     if result.get("max_score").is_none() {
         let why = cg["refused"].as_str().or(cg["error"].as_str()).unwrap_or("");
         let why = why.lines().next().unwrap_or("");
-        return html(&match lang {
-            Lang::Ja => format!(
-                "採点できませんでした（理由: {why}）。詳しくはフィードバックファイル {} を見てください。",
-                feedback_file(lang)
+        let file = feedback_file(lang);
+        let text = Text::new(
+            format!(
+                "採点できませんでした（理由: {why}）。詳しくはフィードバックファイル {file} を見てください。"
             ),
-            Lang::En => format!(
-                "Could not be graded ({why}). The details are in the feedback file {}.",
-                feedback_file(lang)
-            ),
-        });
+            format!("Could not be graded ({why}). The details are in the feedback file {file}."),
+        );
+        return html(text.get(lang));
     }
     let per: Vec<String> = cg["assignments"]
         .as_object()
@@ -314,18 +326,18 @@ fn comment(result: &Value, lang: Lang) -> String {
         })
         .unwrap_or_default();
     let (score, max) = (number(&result["score"]), number(&result["max_score"]));
-    html(&match lang {
-        Lang::Ja => format!(
-            "チェックの結果: {score} / {max}（{}）。チェックごとの結果はフィードバックファイル {} にあります。",
-            per.join("、"),
-            feedback_file(lang)
+    let file = feedback_file(lang);
+    let text = Text::new(
+        format!(
+            "チェックの結果: {score} / {max}（{}）。チェックごとの結果はフィードバックファイル {file} にあります。",
+            per.join("、")
         ),
-        Lang::En => format!(
-            "Checks: {score} / {max} ({}). Each check's result is in the feedback file {}.",
-            per.join(", "),
-            feedback_file(lang)
+        format!(
+            "Checks: {score} / {max} ({}). Each check's result is in the feedback file {file}.",
+            per.join(", ")
         ),
-    })
+    );
+    html(text.get(lang))
 }
 
 /// What [`write()`] wrote.

@@ -5,7 +5,7 @@
 use std::io::Read as _;
 use std::path::Path;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use serde_json::{Value, json};
 
 use super::Name;
@@ -14,15 +14,14 @@ use crate::Graded;
 
 /// A result in the grader's shape, in `lang`: two checks of a1 (one failed), one of s.
 fn result(entry: &str, student: &str, roster_name: Option<&str>, lang: Lang) -> Value {
-    let l = |ja: &'static str, en: &'static str| lang.pick(ja, en);
     json!({
         "score": 3.0,
         "max_score": 4.0,
-        "output": format!("{}: {student}\n{}: {entry}\na1: 2 / 3\ns: 1 / 1\n", l("学生番号", "student"), l("提出物", "submission")),
+        "output": format!("{}: {student}\n{}: {entry}\na1: 2 / 3\ns: 1 / 1\n", t("学生番号", "student").get(lang), t("提出物", "submission").get(lang)),
         "tests": [
-            {"name": format!("a1.t1.count: {}", l("頂点の数", "vertex count")), "number": "a1.t1.count", "score": 2.0, "max_score": 2.0, "status": "passed", "output": ""},
-            {"name": format!("a1.t2.winding: {}", l("面の向き", "winding")), "number": "a1.t2.winding", "score": 0.0, "max_score": 1.0, "status": "failed",
-             "output": format!("{}: F0 {{ V0, V3, V1 }}\n```not a fence```", l("期待", "expected"))},
+            {"name": format!("a1.t1.count: {}", t("頂点の数", "vertex count").get(lang)), "number": "a1.t1.count", "score": 2.0, "max_score": 2.0, "status": "passed", "output": ""},
+            {"name": format!("a1.t2.winding: {}", t("面の向き", "winding").get(lang)), "number": "a1.t2.winding", "score": 0.0, "max_score": 1.0, "status": "failed",
+             "output": format!("{}: F0 {{ V0, V3, V1 }}\n```not a fence```", t("期待", "expected").get(lang))},
             {"name": "s.t1.ambient: Ia·ka", "number": "s.t1.ambient", "score": 1.0, "max_score": 1.0, "status": "passed", "output": ""},
         ],
         "cg": {
@@ -115,7 +114,8 @@ fn the_worksheet_and_the_feedback_zip_round_trip() {
         let (id, full, grade, max, modified, comment) =
             (col(c[0]), col(c[1]), col(c[4]), col(c[5]), col(c[8]), col(c[9]));
         let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
-        let hidden = lang.pick("参加者", "Participant ");
+        let hidden = t("参加者", "Participant ");
+        let hidden = hidden.get(lang);
         let got: Vec<(String, &str, &str, &str)> = rows
             .iter()
             .map(|r| {
@@ -138,8 +138,8 @@ fn the_worksheet_and_the_feedback_zip_round_trip() {
         );
         assert!(rows.iter().all(|r| &r[modified] == "2023-11-14 22:13:20 UTC"));
         let first = &rows[0][comment];
-        let expected =
-            lang.pick("チェックの結果: 3 / 4（a1 2/3、s 1/1）", "Checks: 3 / 4 (a1 2/3, s 1/1)");
+        let expected = t("チェックの結果: 3 / 4（a1 2/3、s 1/1）", "Checks: 3 / 4 (a1 2/3, s 1/1)");
+        let expected = expected.get(lang);
         assert!(first.starts_with(expected), "{first}");
         assert!(rows[4][comment].contains("../../x.rs"), "{}", &rows[4][comment]);
 

@@ -2,7 +2,7 @@
 //! numbers before it and, after it, what of the student's functions could not be derived.
 
 use cg_assign::cg_shading::report::{Cell, ShadingData, Table, Value};
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, t};
 use cg_core::product::format_number as n;
 use cg_harness::Text;
 
@@ -58,7 +58,9 @@ fn cell(c: &Cell, lang: Lang, format: Format) -> String {
         Cell::Given(v) | Cell::Chosen(v) | Cell::Yours { yours: Ok(v), .. } => {
             value_cell(v, format)
         }
-        Cell::Yours { yours: Err(_), .. } => text_cell(lang.pick("（まだ）", "(not yet)"), format),
+        Cell::Yours { yours: Err(_), .. } => {
+            text_cell(t("（まだ）", "(not yet)").get(lang), format)
+        }
         Cell::Empty => match format {
             Format::Markdown => "—".to_owned(),
             Format::Latex => "---".to_owned(),
@@ -68,8 +70,11 @@ fn cell(c: &Cell, lang: Lang, format: Format) -> String {
 
 /// The table after its tag, and a note naming what the student's functions did not give.
 fn tagged_table(t: &Table, lang: Lang, format: Format) -> String {
-    let header: Vec<String> = t.columns.iter().map(|c| text_cell(c.get(lang), format)).collect();
-    let header: Vec<&str> = header.iter().map(String::as_str).collect();
+    let header: Vec<Text> = t
+        .columns
+        .iter()
+        .map(|c| Text::new(text_cell(&c.ja, format), text_cell(&c.en, format)))
+        .collect();
     let rows: Vec<Vec<String>> = t
         .rows
         .iter()
@@ -97,7 +102,7 @@ fn tagged_table(t: &Table, lang: Lang, format: Format) -> String {
         Format::Markdown => format!("<!-- cg: {} -->\n", t.id),
         Format::Latex => format!("% cg: {}\n", t.id),
     };
-    let body = table(format, &spec, &header, &rows);
+    let body = table(format, &spec, &header, lang, &rows);
     let mut out = match format {
         Format::Markdown => tag + &body,
         // Set small and close, so that the numbers the student writes fit the page.

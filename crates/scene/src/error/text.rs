@@ -5,11 +5,6 @@ use cg_core::quote::shown;
 
 use super::{ErrorKind, Expected, Found, Rule, SceneError};
 
-/// A text from a message function of another crate's error that takes the language.
-fn from_lang(message: impl Fn(Lang) -> String) -> Text {
-    Text::new(message(Lang::Ja), message(Lang::En))
-}
-
 /// `a, b, c` with each name in backquotes.
 fn list(names: &[&str]) -> String {
     names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
@@ -126,7 +121,7 @@ impl ErrorKind {
             }
             ErrorKind::TooManyPixels { width, height } => {
                 let e = cg_core::image::SizeError::TooManyPixels { width: *width, height: *height };
-                from_lang(|lang| e.message(lang))
+                e.text()
             }
             ErrorKind::ColorWithReflectance { other } => Text::new(
                 format!(
@@ -204,7 +199,7 @@ impl ErrorKind {
                 "テクスチャにはテクスチャ座標が必要ですが、このメッシュにはありません（grid にはあります。OBJ なら vt 行が必要）",
                 "a texture needs texture coordinates and this mesh has none (grid has them; an OBJ needs `vt` lines)",
             ),
-            ErrorKind::Shape(e) => from_lang(|lang| e.message(lang)),
+            ErrorKind::Shape(e) => e.text(),
             ErrorKind::TooManyFaces { shape, faces, max } => Text::new(
                 format!(
                     "この {shape} は面（三角形）が {faces} 個になります。1 つの形の面は {max} 個までです。分割数を減らしてください"
@@ -346,7 +341,7 @@ impl ErrorKind {
                 format!("PNG 画像が壊れているか途中で切れています: {reason}"),
                 format!("corrupt or truncated PNG image: {reason}"),
             ),
-            ErrorKind::Texture(e) => from_lang(|lang| e.describe(lang)),
+            ErrorKind::Texture(e) => e.text(),
         }
     }
 }

@@ -75,19 +75,15 @@ static FIXTURES: Mutex<Vec<(Spec, Arc<Fixture>)>> = Mutex::new(Vec::new());
 const KEEP: usize = 8;
 
 fn kit_failure(e: &cg_raster::RenderError) -> Failure {
-    use cg_core::lang::Lang;
-    Failure::new(
-        t("kit があなたの球を描けること", "the kit draws your sphere"),
-        Text::new(e.message(Lang::Ja), e.message(Lang::En)),
-    )
-    .at(t("kit の描画", "the kit's rendering"))
-    .cause(t(
-        &format!(
-            "kit の描画が失敗しました（kit の不具合です。先生に知らせてください）: {}",
-            e.message(Lang::Ja)
-        ),
-        "the kit could not draw the sphere (a bug in the kit: please tell your teacher).",
-    ))
+    Failure::new(t("kit があなたの球を描けること", "the kit draws your sphere"), e.text())
+        .at(t("kit の描画", "the kit's rendering"))
+        .cause(t(
+            &format!(
+                "kit の描画が失敗しました（kit の不具合です。先生に知らせてください）: {}",
+                e.text().ja
+            ),
+            "the kit could not draw the sphere (a bug in the kit: please tell your teacher).",
+        ))
 }
 
 impl Fixture {
