@@ -22,6 +22,7 @@ mod label;
 mod printed;
 mod progress;
 mod render;
+mod similarity;
 mod watch;
 
 /// The course's sample scene, relative to the kit's root.
@@ -75,6 +76,8 @@ enum Command {
     GradeOne(gradescope::GradeOneArgs),
     /// Write the autograder zip Gradescope runs (setup.sh, run_autograder, the kit with solutions/; never hand it out) / Gradescope が動かすオートグレーダーの zip を書く（solutions/ を含むので配らないこと。教員用）
     Autograder(gradescope::AutograderArgs),
+    /// Look for copies: code fingerprinted by winnowing (stubs excluded, earlier years as references), the pairs above a threshold side by side, and numbers from another student's variant; writes similarity.html and similarity.csv (instructors) / コピーの検出: コードの指紋（スタブを除き、過去の年度と比較）、しきい値以上の組の対照表示、ほかの学生の課題の数値。similarity.html と similarity.csv を書く（教員用）
+    Similarity(similarity::Args),
     /// Which renderers and windows work on this machine, and why, each problem with its fix / このマシンで使えるレンダラとウィンドウ、使えない理由と対処
     Doctor(doctor::Args),
     /// The student's functions for `cg check`, which starts it (not for use by hand)
@@ -123,6 +126,7 @@ fn main() -> ExitCode {
         Some(Command::Grade(args)) => ok(grade::run(&args, lang)),
         Some(Command::GradeOne(args)) => ok(gradescope::grade_one(&args, lang)),
         Some(Command::Autograder(args)) => ok(gradescope::autograder(&args, lang)),
+        Some(Command::Similarity(args)) => similarity::run(&args, lang),
         Some(Command::Doctor(args)) => ok(doctor::run(&args, lang)),
         Some(Command::Worker(args)) => ok(assignments::worker(&args)),
         None => ok(render::main_job(lang)),

@@ -1,0 +1,113 @@
+//! `cg similarity <SUBMISSIONS> --out DIR`: copies found (instructors); see `cg_similarity` and
+//! docs/instructor-guide.md ("Copies found").
+
+use std::path::PathBuf;
+
+use cg_core::lang::{Lang, Text, t};
+use cg_harness::exit::Ending;
+use cg_similarity::{Settings, read};
+
+/// Options of `cg similarity`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// This year's submissions, as `cg grade` reads them (a folder of folders and .zip files, or Moodle's "Download all submissions", the .zip or its folder) / 今年の提出物（cg grade と同じ: フォルダ、または Moodle の一括ダウンロードの .zip かそのフォルダ）
+    submissions: PathBuf,
+    /// Where similarity.html and similarity.csv go / similarity.html と similarity.csv の出力先
+    #[arg(long, default_value = "similarity")]
+    out: PathBuf,
+    /// An earlier year's submissions, compared with this year's but not with one another (repeatable) / 過去の年度の提出物（今年の提出物とだけ比べます。複数指定可）
+    #[arg(long, value_name = "SUBMISSIONS")]
+    reference: Vec<PathBuf>,
+    /// A folder of reports, each file named with its student number (20260001.md, report-20260001.txt): their numbers are checked against the variants / レポートのフォルダ（ファイル名に学生番号を含める）。数値を課題と照らし合わせます
+    #[arg(long, value_name = "DIR")]
+    reports: Option<PathBuf>,
+    /// The least share of the smaller submission's fingerprints two submissions must share to be listed (0 to 1) / 一覧に載せる類似度の下限（小さいほうの提出物の指紋のうち共有する割合、0〜1）
+    #[arg(long, value_name = "SCORE", default_value_t = Settings::default().threshold)]
+    threshold: f64,
+    /// The fewest shared fingerprints of a listed pair / 一覧に載せる組が共有する指紋の最小数
+    #[arg(long, value_name = "N", default_value_t = Settings::default().min_shared)]
+    min_shared: usize,
+    /// A fingerprint found in more submissions than this is common code, not a copy (MOSS's -m) / これを超える数の提出物にある指紋は共通のコードとみなす
+    #[arg(long, value_name = "N", default_value_t = Settings::default().max_share)]
+    max_share: usize,
+}
+
+/// `cg similarity`: 0 when nothing is found, 1 when a pair or a cross-variant copy is (the
+/// kit's "mistakes found"), 2 for input that cannot be read.
+pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
+    if !(0.0..=1.0).contains(&args.threshold) {
+        return Err(t(
+            "--threshold は 0 から 1 の数にしてください",
+            "--threshold must be a number from 0 to 1",
+        )
+        .get(lang)
+        .to_owned());
+    }
+    let settings = Settings {
+        threshold: args.threshold,
+        min_shared: args.min_shared.max(1),
+        max_share: args.max_share.max(2),
+    };
+    // The stubs as handed out: the kit's exercises/ (here, or the kit this binary was built in).
+    let src = crate::kit_path(None, "exercises/src");
+    let kit = src.ancestors().nth(2).unwrap_or(&src).to_path_buf();
+    let stubs = read::stubs(&kit).map_err(|e| e.get(lang).to_owned())?;
+    let mut class = read::class(&args.submissions, false).map_err(|e| e.get(lang).to_owned())?;
+    for reference in &args.reference {
+        class.extend(read::class(reference, true).map_err(|e| e.get(lang).to_owned())?);
+    }
+    if let Some(dir) = &args.reports {
+        let unmatched = read::reports(dir, &mut class).map_err(|e| e.get(lang).to_owned())?;
+        for name in unmatched {
+            eprintln!(
+                "{}: {name}",
+                t(
+                    "学生番号で提出物に結びつかないレポート（飛ばします）",
+                    "a report that names no submission's student number (skipped)"
+                )
+                .get(lang)
+            );
+        }
+    }
+    for s in class.iter().filter(|s| s.refused.is_some()) {
+        let why = s.refused.as_ref().map(|w| w.get(lang).to_owned()).unwrap_or_default();
+        eprintln!("{}: {why}", s.name);
+    }
+    let analysis = cg_similarity::analyse(&class, &stubs, settings);
+    cg_similarity::output::write(&args.out, &class, &analysis, lang)?;
+    let this_year = class.iter().filter(|s| !s.reference).count();
+    let (references, pairs, clusters, cross) = (
+        class.len() - this_year,
+        analysis.pairs.len(),
+        analysis.clusters.len(),
+        analysis.cross.len(),
+    );
+    let summary = Text::new(
+        format!(
+            "提出物 {this_year} 件、参照 {references} 件: しきい値以上の組 {pairs}、クラスタ {clusters}、ほかの学生の課題の数値 {cross} 件"
+        ),
+        format!(
+            "{this_year} submissions, {references} references: {pairs} pairs at or above the threshold, {clusters} clusters, {cross} parts with another student's numbers"
+        ),
+    );
+    println!("{}", summary.get(lang));
+    for p in &analysis.pairs {
+        println!(
+            "  {:>3.0}%  {} ({}) — {} ({})",
+            p.score * 100.0,
+            class[p.a].name,
+            class[p.a].number(),
+            class[p.b].name,
+            class[p.b].number()
+        );
+    }
+    for c in &analysis.cross {
+        println!("  {}: {}", class[c.submission].name, cg_similarity::output::cross_note(c, lang));
+    }
+    println!(
+        "{}: {}",
+        t("書き出し", "written").get(lang),
+        args.out.join("similarity.html").display()
+    );
+    Ok(Ending::passed(!analysis.found()))
+}

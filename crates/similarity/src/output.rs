@@ -1,0 +1,153 @@
+//! What `cg similarity` writes: `similarity.csv` (one row per listed pair and per cross-variant
+//! finding, for a spreadsheet or a script) and `similarity.html` ([`crate::html`]: the same,
+//! with the matching regions side by side).
+
+use std::path::Path;
+
+use cg_core::lang::{Lang, Text, t};
+
+use crate::{Analysis, Submission, variant};
+
+/// The CSV's columns (stable names, for scripts).
+pub const COLUMNS: [&str; 12] = [
+    "kind",
+    "a",
+    "a_student",
+    "b",
+    "b_student",
+    "score",
+    "shared_fingerprints",
+    "shared_lines_a",
+    "shared_lines_b",
+    "cluster",
+    "flags",
+    "note",
+];
+
+/// `similarity.csv`: a `pair` row for each listed pair (best first), then a `cross-variant` row
+/// for each finding (`a` the submission, `b` the student whose variant it follows, `score` the
+/// evidence, `note` the numbers). `flags`: `reference` when one side is an earlier year's,
+/// `cross-variant` when a side is also flagged so.
+///
+/// # Errors
+/// The CSV writer's error (never for a `Vec`).
+pub fn csv_text(class: &[Submission], analysis: &Analysis, lang: Lang) -> Result<String, String> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record(COLUMNS).map_err(|e| e.to_string())?;
+    let flagged = |i: usize| analysis.cross.iter().any(|c| c.submission == i);
+    for p in &analysis.pairs {
+        let (a, b) = (&class[p.a], &class[p.b]);
+        let mut flags = Vec::new();
+        if a.reference || b.reference {
+            flags.push("reference");
+        }
+        if flagged(p.a) || flagged(p.b) {
+            flags.push("cross-variant");
+        }
+        let regions: Vec<String> = p
+            .regions
+            .iter()
+            .map(|r| {
+                format!(
+                    "{}.rs:{}-{} ~ {}.rs:{}-{}",
+                    r.module_a, r.lines_a.0, r.lines_a.1, r.module_b, r.lines_b.0, r.lines_b.1
+                )
+            })
+            .collect();
+        w.write_record([
+            "pair".to_owned(),
+            a.name.clone(),
+            a.number(),
+            b.name.clone(),
+            b.number(),
+            format!("{:.3}", p.score),
+            p.shared.to_string(),
+            p.lines_a.to_string(),
+            p.lines_b.to_string(),
+            p.cluster.map(|c| c.to_string()).unwrap_or_default(),
+            flags.join(" "),
+            regions.join("; "),
+        ])
+        .map_err(|e| e.to_string())?;
+    }
+    for c in &analysis.cross {
+        let s = &class[c.submission];
+        let f = &c.finding;
+        w.write_record([
+            "cross-variant".to_owned(),
+            s.name.clone(),
+            s.number(),
+            c.sources.iter().map(|i| class[*i].name.clone()).collect::<Vec<_>>().join(" "),
+            f.matches.to_string(),
+            format!("{:.2}", f.evidence),
+            String::new(),
+            String::new(),
+            String::new(),
+            String::new(),
+            f.part.clone(),
+            cross_note(c, lang),
+        ])
+        .map_err(|e| e.to_string())?;
+    }
+    let bytes = w.into_inner().map_err(|e| e.to_string())?;
+    String::from_utf8(bytes).map_err(|e| e.to_string())
+}
+
+/// One line on a cross-variant finding: which part, whose variant, which numbers.
+#[must_use]
+pub fn cross_note(c: &crate::Cross, lang: Lang) -> String {
+    let f = &c.finding;
+    let part = if f.part.starts_with(variant::REPORT) {
+        let m = variant::assignment(&f.part);
+        Text::new(format!("レポート（{m}）"), format!("the report ({m})")).get(lang).to_owned()
+    } else {
+        format!("exercises/src/{}.rs", f.part)
+    };
+    let numbers: Vec<String> =
+        f.numbers.iter().map(|(k, label)| format!("{} ({label})", variant::show(*k))).collect();
+    let also = if f.also.is_empty() {
+        String::new()
+    } else {
+        let list: Vec<String> = f.also.iter().map(ToString::to_string).collect();
+        format!(" {} {}", t("同じく一致:", "also matching:").get(lang), list.join(", "))
+    };
+    Text::new(
+        format!(
+            "{part} の数値は {} の課題から出ています（本人の課題にない数値 {} 個、重み {:.1}、本人の課題だけの数値の重み {:.1}）: {}{also}",
+            f.matches,
+            f.numbers.len(),
+            f.evidence,
+            f.own_evidence,
+            numbers.join(", ")
+        ),
+        format!(
+            "the numbers of {part} follow from {}'s variant ({} numbers not in the student's own, weight {:.1}; the own variant's numbers weigh {:.1}): {}{also}",
+            f.matches,
+            f.numbers.len(),
+            f.evidence,
+            f.own_evidence,
+            numbers.join(", ")
+        ),
+    )
+    .get(lang)
+    .to_owned()
+}
+
+/// Writes `similarity.csv` and `similarity.html` into `out` (made if missing).
+///
+/// # Errors
+/// The folder or a file cannot be written, with the path.
+pub fn write(
+    out: &Path,
+    class: &[Submission],
+    analysis: &Analysis,
+    lang: Lang,
+) -> Result<(), String> {
+    std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
+    let csv = csv_text(class, analysis, lang)?;
+    let path = out.join("similarity.csv");
+    std::fs::write(&path, csv).map_err(|e| format!("{}: {e}", path.display()))?;
+    let html = crate::html::page(class, analysis, lang);
+    let path = out.join("similarity.html");
+    std::fs::write(&path, html).map_err(|e| format!("{}: {e}", path.display()))
+}

@@ -1,0 +1,181 @@
+//! The class, read exactly as `cg grade` reads it ([`cg_grade::moodle::input`]: a folder of
+//! folders and zips, or Moodle's "download all submissions", each read as hostile input and
+//! bounded), the stubs the students were given, and the reports.
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use cg_core::lang::Text;
+use cg_grade::submission::{MAX_FILE_BYTES, MODULES};
+use cg_harness::{StudentNumber, TableVersion};
+
+use crate::Submission;
+
+/// The submissions of `path` (see [`cg_grade::moodle::input::entries`]), each marked
+/// `reference` or not. An entry that cannot be read is kept with the reason (and compared with
+/// nothing).
+///
+/// # Errors
+/// The folder or zip itself cannot be read.
+pub fn class(path: &Path, reference: bool) -> Result<Vec<Submission>, Text> {
+    let entries = cg_grade::moodle::input::entries(path)?;
+    Ok(entries
+        .iter()
+        .map(|entry| {
+            let mut s = Submission { name: entry.name.clone(), reference, ..Submission::default() };
+            match entry.read() {
+                Ok(files) => {
+                    for (m, bytes) in files.modules {
+                        s.modules.insert(m, String::from_utf8_lossy(&bytes).into_owned());
+                    }
+                    match files.student_toml.as_deref().map(student_file) {
+                        Some(Ok(file)) => s.student = Some(file),
+                        Some(Err(why)) => s.refused = Some(why),
+                        None => {
+                            s.refused = Some(Text::new(
+                                "exercises/student.toml がありません",
+                                "exercises/student.toml is missing",
+                            ));
+                        }
+                    }
+                }
+                Err(why) => s.refused = Some(why),
+            }
+            s
+        })
+        .collect())
+}
+
+/// `exercises/student.toml` from its bytes: `student = "12345678"` and an optional `table`,
+/// as [`cg_assign::read_student_file`] reads it from a file.
+///
+/// # Errors
+/// Not TOML, no `student` in quotes, a malformed number or an unknown table.
+pub fn student_file(bytes: &[u8]) -> Result<cg_assign::StudentFile, Text> {
+    let bad = |e: String| {
+        Text::new(format!("exercises/student.toml: {e}"), format!("exercises/student.toml: {e}"))
+    };
+    let text = std::str::from_utf8(bytes).map_err(|e| bad(e.to_string()))?;
+    let value: toml::Table = toml::from_str(text).map_err(|e| bad(e.to_string()))?;
+    let Some(toml::Value::String(digits)) = value.get("student") else {
+        return Err(bad("student = \"12345678\"".to_owned()));
+    };
+    let student: StudentNumber =
+        digits.parse().map_err(|e: cg_harness::variant::StudentNumberError| {
+            Text::new(
+                format!("exercises/student.toml: {}", e.message(cg_core::lang::Lang::Ja)),
+                format!("exercises/student.toml: {}", e.message(cg_core::lang::Lang::En)),
+            )
+        })?;
+    let table = match value.get("table") {
+        None => TableVersion::LATEST,
+        Some(v) => {
+            v.to_string().trim_matches('"').parse().map_err(|_| bad(format!("table = {v}")))?
+        }
+    };
+    Ok(cg_assign::StudentFile { student, table })
+}
+
+/// The stubs as handed out: `<kit>/exercises/src/<m>.rs` for every module (`cg sync-stubs`
+/// writes them from solutions/ with the solutions taken out; the handout copies them).
+///
+/// # Errors
+/// A stub is missing, too big or unreadable.
+pub fn stubs(kit: &Path) -> Result<BTreeMap<String, String>, Text> {
+    let mut out = BTreeMap::new();
+    for m in MODULES {
+        let path = kit.join("exercises/src").join(format!("{m}.rs"));
+        out.insert((*m).to_owned(), text_file(&path)?);
+    }
+    Ok(out)
+}
+
+/// A text file of at most [`MAX_FILE_BYTES`], in any encoding the kit reads.
+fn text_file(path: &Path) -> Result<String, Text> {
+    let shown = path.display();
+    let bytes = cg_core::text::read_bounded(path, MAX_FILE_BYTES).map_err(|e| {
+        Text::new(format!("{shown} を読めません: {e}"), format!("cannot read {shown}: {e}"))
+    })?;
+    cg_core::text::decode(&bytes, None)
+        .map(|(text, _)| text)
+        .map_err(|e| Text::new(format!("{shown}: {e}"), format!("{shown}: {e}")))
+}
+
+/// Attaches the reports in `dir` to this year's submissions: each file whose name holds a
+/// student number (`20260001.md`, `report-20260001.txt`) goes to that student's submissions.
+/// Returns the files that matched no one.
+///
+/// # Errors
+/// The folder or a report cannot be read (a report over [`MAX_FILE_BYTES`] included).
+pub fn reports(dir: &Path, class: &mut [Submission]) -> Result<Vec<String>, Text> {
+    let shown = dir.display();
+    let list = std::fs::read_dir(dir).map_err(|e| {
+        Text::new(format!("{shown} を読めません: {e}"), format!("cannot read {shown}: {e}"))
+    })?;
+    let mut names: Vec<_> = list.flatten().map(|e| e.path()).collect();
+    names.sort();
+    let mut unmatched = Vec::new();
+    for path in names {
+        let is_file = std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file());
+        let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        if !is_file || name.starts_with('.') {
+            continue;
+        }
+        let Some(number) = eight_digits(&name) else {
+            unmatched.push(name);
+            continue;
+        };
+        let mut owners = class
+            .iter_mut()
+            .filter(|s| {
+                !s.reference && s.student.as_ref().is_some_and(|f| f.student.as_str() == number)
+            })
+            .peekable();
+        if owners.peek().is_none() {
+            unmatched.push(name);
+            continue;
+        }
+        let text = text_file(&path)?;
+        for s in owners {
+            s.report = Some(text.clone());
+        }
+    }
+    Ok(unmatched)
+}
+
+/// The first run of exactly eight digits in `name`.
+fn eight_digits(name: &str) -> Option<&str> {
+    let bytes = name.as_bytes();
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i].is_ascii_digit() {
+            let start = i;
+            while i < bytes.len() && bytes[i].is_ascii_digit() {
+                i += 1;
+            }
+            if i - start == 8 {
+                return Some(&name[start..i]);
+            }
+        } else {
+            i += 1;
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn student_files_and_report_names_are_read() {
+        let f = student_file(b"student = \"20260001\"\ntable = 1\n").unwrap();
+        assert_eq!(f.student.as_str(), "20260001");
+        assert!(student_file(b"student = 20260001\n").is_err());
+        assert!(student_file(b"student = \"2026\"\n").is_err());
+        assert!(student_file(b"student = \"20260001\"\ntable = 99\n").is_err());
+        assert_eq!(eight_digits("report-20260001.md"), Some("20260001"));
+        assert_eq!(eight_digits("2026000123.md"), None);
+        assert_eq!(eight_digits("x1_20260002_v2.txt"), Some("20260002"));
+    }
+}
