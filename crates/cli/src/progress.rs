@@ -16,7 +16,7 @@ pub fn line(g: &Graded, lang: Lang) -> String {
     let max = g.max_score.map(|m| format!(" / {m}")).unwrap_or_default();
     let note = if g.skipped { t("（前回の結果）", " (kept)") } else { Text::default() };
     let note = note.get(lang);
-    let flag = g.flag.as_ref().map(|f| format!(" [{f}]")).unwrap_or_default();
+    let flag = g.flag.as_ref().map(|f| format!(" [{}]", f.get(lang))).unwrap_or_default();
     format!("{} ({}): {}{max}{note}{flag}", g.name, g.entry, g.score)
 }
 

@@ -89,7 +89,7 @@ pub struct Graded {
     pub skipped: bool,
     /// What the instructor should look at ([`result::flag`]): a `student.toml` that claims
     /// another number than the roster's, an entry not on the roster, a number claimed twice.
-    pub flag: Option<String>,
+    pub flag: Option<Text>,
 }
 
 /// Why grading could not start (a single submission's problems go into its result instead).
@@ -840,7 +840,7 @@ pub fn grade_with(
         .filter_map(|g| std::fs::read_to_string(out.join(format!("{}.json", g.name))).ok())
         .filter_map(|t| serde_json::from_str(&t).ok())
         .collect();
-    let csv = result::class_csv(&all);
+    let csv = result::class_csv(&all, options.lang);
     write_atomic(&out.join("class.csv"), csv.as_bytes()).map_err(|e| io(&out, e))?;
     let md = result::summary_md(&all, &absent, options.lang);
     write_atomic(&out.join("summary.md"), md.as_bytes()).map_err(|e| io(&out, e))?;

@@ -306,31 +306,38 @@ fn csv_field(s: &str) -> String {
 /// What the instructor should look at in a result (`None`: nothing): the number its
 /// `student.toml` claims when the roster says another (a Moodle participant bound to one
 /// student who hands in another's number), an entry not on the roster, the other entries that
-/// claim the same number. In English, for the class table and the progress lines.
+/// claim the same number; for the class table and the progress lines.
 #[must_use]
-pub fn flag(result: &Value) -> Option<String> {
+pub fn flag(result: &Value) -> Option<Text> {
     let cg = &result["cg"];
     let mut parts = Vec::new();
     if let Some(claimed) = cg["roster"]["claimed"].as_str() {
-        parts.push(format!(
-            "student.toml claims {claimed}, the roster says {}",
-            cg["student"].as_str().unwrap_or("?")
+        let roster = cg["student"].as_str().unwrap_or("?");
+        parts.push(Text::new(
+            format!("student.toml は {claimed}、名簿では {roster}"),
+            format!("student.toml claims {claimed}, the roster says {roster}"),
         ));
     }
     if cg["roster"]["listed"] == false {
-        parts.push("not on the roster".to_owned());
+        parts.push(t("名簿にない", "not on the roster"));
     }
     if let Some(others) = cg["same_number"].as_array().filter(|a| !a.is_empty()) {
         let others: Vec<&str> = others.iter().filter_map(Value::as_str).collect();
-        parts.push(format!("the same number as {}", others.join(", ")));
+        let others = others.join(", ");
+        parts.push(Text::new(
+            format!("{others} と同じ番号"),
+            format!("the same number as {others}"),
+        ));
     }
-    (!parts.is_empty()).then(|| parts.join("; "))
+    let join =
+        |lang: Lang, sep: &str| parts.iter().map(|p| p.get(lang)).collect::<Vec<_>>().join(sep);
+    (!parts.is_empty()).then(|| Text::new(join(Lang::Ja, "。"), join(Lang::En, "; ")))
 }
 
 /// `class.csv`: one row per result — student, submission, each assignment's score (a column
 /// per ID of the kit's list), score, max_score, and the result's [`flag`] (empty when none).
 #[must_use]
-pub fn class_csv(results: &[Value]) -> String {
+pub fn class_csv(results: &[Value], lang: Lang) -> String {
     let columns: Vec<&str> = ["student", "submission"]
         .into_iter()
         .chain(crate::submission::MODULES.iter().copied())
@@ -350,7 +357,7 @@ pub fn class_csv(results: &[Value]) -> String {
         }
         row.push(r["score"].as_f64().unwrap_or(0.0).to_string());
         row.push(r["max_score"].as_f64().map(|s| s.to_string()).unwrap_or_default());
-        row.push(csv_field(&flag(r).unwrap_or_default()));
+        row.push(csv_field(flag(r).as_ref().map_or("", |f| f.get(lang))));
         out.push_str(&row.join(","));
         out.push('\n');
     }

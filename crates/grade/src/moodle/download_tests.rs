@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text};
 use cg_sandbox::Isolation;
 
 use super::fake;
@@ -215,11 +215,17 @@ fn the_roster_binds_participants_and_a_mismatch_is_flagged() {
             result::build(&meta, &result::Facts::default(), &Config::default(), Lang::En)
         })
         .collect();
-    let flags: Vec<Option<String>> = results.iter().map(result::flag).collect();
+    let flags: Vec<Option<Text>> = results.iter().map(result::flag).collect();
     let expected = "student.toml claims 20260099, the roster says 20260006";
-    assert_eq!(flags[7].as_deref(), Some(expected));
+    assert_eq!(flags[7].as_ref().map(|f| f.en.as_str()), Some(expected));
+    assert_eq!(
+        flags[7].as_ref().map(|f| f.ja.as_str()),
+        Some("student.toml は 20260099、名簿では 20260006")
+    );
     assert!(flags[..7].iter().all(Option::is_none), "{flags:?}");
-    let csv = result::class_csv(&results);
+    let csv_ja = result::class_csv(&results, Lang::Ja);
+    assert!(csv_ja.contains(",student.toml は 20260099、名簿では 20260006\n"), "{csv_ja}");
+    let csv = result::class_csv(&results, Lang::En);
     assert!(csv.starts_with("student,submission,a1,a2,a3,a4,s,score,max_score,flag\n"), "{csv}");
     let row = csv.lines().find(|l| l.contains("鈴木")).unwrap();
     assert!(row.starts_with("20260006,鈴木 花子_1006_assignsubmission_file,"), "{row}");

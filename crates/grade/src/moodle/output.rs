@@ -53,7 +53,13 @@ pub const COLUMNS_EN: [&str; 10] = [
     "Feedback comments",
 ];
 
-/// The same columns in Moodle's Japanese language pack (`ja`).
+/// The same columns in Moodle's Japanese language pack (`ja`). Checked against the pack's
+/// `mod_assign` strings (branch MOODLE_31_STABLE and, for the older ones, MOODLE_24_STABLE):
+/// `recordid` ID, `status` ステータス, `maxgrade` 最大評点, `gradecanbechanged` 評点変更可,
+/// `lastmodifiedsubmission` 最終更新日時 (提出), `lastmodifiedgrade` 最終更新日時 (評定),
+/// `hiddenuser` 参加者, `submissionstatus_submitted` 評定のために提出済み; core's `fullname`
+/// フルネーム, `email` メールアドレス and `grade` 評点, and `assignfeedback_comments`' name
+/// フィードバックコメント, as Japanese Moodle sites show them.
 pub const COLUMNS_JA: [&str; 10] = [
     "ID",
     "フルネーム",
