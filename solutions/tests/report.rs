@@ -77,13 +77,36 @@ fn a_filled_report_reads_back_and_every_number_follows_from_the_data() {
             assert_eq!(parsed.vertices.len(), p.vertices.len(), "{student}: every vertex row read");
             assert_eq!(parsed.faces.len(), p.faces.len(), "{student}: every face row read");
             assert_eq!(parsed.tex.len(), 121, "{student}: every grid vertex read");
-            let camera = derived.a2.as_ref().unwrap().matrices.len();
-            let animation: usize =
-                derived.a3.as_ref().unwrap().objects.iter().map(|o| o.1.len()).sum();
+            // Each product and each of its factors (tagged `ID.factors`).
+            let with_factors = |m: &cg_core::product::MatrixProduct| {
+                1 + cg_report::tables::factor_matrices(m).len()
+            };
+            let transform = p.transform.as_ref().map_or(0, with_factors);
+            let camera: usize = derived
+                .a2
+                .as_ref()
+                .unwrap()
+                .matrices
+                .iter()
+                .map(|m| with_factors(&m.numeric))
+                .sum();
+            let animation: usize = derived
+                .a3
+                .as_ref()
+                .unwrap()
+                .objects
+                .iter()
+                .flat_map(|o| &o.1)
+                .map(|m| with_factors(&m.numeric))
+                .sum();
+            assert!(
+                camera > derived.a2.as_ref().unwrap().matrices.len(),
+                "{student}: factors read"
+            );
             assert_eq!(
                 parsed.matrices.len(),
-                1 + camera + animation,
-                "{student}: a1.transform, each view matrix and each model matrix read"
+                transform + camera + animation,
+                "{student}: a1.transform, each view matrix and each model matrix read, with their factors"
             );
             // The shading section: its six tables, each function's output filled in beside the
             // kit's (the point P given); the ✍ cells are the student's to write.

@@ -18,6 +18,7 @@ use cg_core::texture::{Filter, Wrap};
 use cg_harness::Text;
 
 use crate::model::{NamedMatrix, PolygonData, TextureData};
+use crate::parse::FACTORS;
 use crate::template::{Format, latex_escape};
 
 /// A component differing from the derived normal by more than this is named in the face table.
@@ -322,9 +323,13 @@ fn product_block(
         t("数値を入れた積", "with this state's numbers").get(lang),
         product_text(&numeric.numeric(), format)
     ));
-    let factors: Vec<String> =
-        numeric.factors.iter().filter_map(|f| f.matrix().ok()).map(pmatrix).collect();
+    let factors: Vec<String> = factor_matrices(numeric).into_iter().map(pmatrix).collect();
     if !factors.is_empty() {
+        // Each factor is checked too (`report check`): a tag `ID.factors` before them.
+        match format {
+            Format::Markdown => out.push_str(&format!("<!-- cg: {id}{FACTORS} -->\n")),
+            Format::Latex => out.push_str(&format!("% cg: {id}{FACTORS}\n")),
+        }
         out.push_str(&math_block(&factor_lines(factors, format), format));
         out.push('\n');
     }
@@ -336,6 +341,13 @@ fn product_block(
     }
     out.push_str(&math_block(&[format!("{eq}{}", pmatrix(result))], format));
     out
+}
+
+/// The factors of `product` that are matrices, in order: what the report writes as `pmatrix`
+/// after the tag `ID.factors`, and what `report check` compares them with.
+#[must_use]
+pub fn factor_matrices(product: &MatrixProduct) -> Vec<Mat4> {
+    product.factors.iter().filter_map(|f| f.matrix().ok()).collect()
 }
 
 /// The model transform of assignment 1 (`a1.transform`): the product, each factor as `pmatrix`,
@@ -745,18 +757,18 @@ pub(crate) mod tests {
                 assert!((x - want[r][k]).abs() < 1e-4, "({r}, {k}): {x} vs {}", want[r][k]);
             }
         }
-        // Each factor appears numerically before the result: two pmatrices, then the result.
-        let before = &md[..md.find("<!-- cg:").unwrap()];
-        assert_eq!(
-            before.matches("\\begin{pmatrix}").count(),
-            4,
-            "two symbolic and two numeric factors"
-        );
+        // Each factor appears numerically before the result, after its own tag: two symbolic
+        // pmatrices, the factors' tag and two numeric ones, then the result's tag.
+        let factors_tag = md.find("<!-- cg: a2.view.start.factors -->").unwrap();
+        let result_tag = md.find("<!-- cg: a2.view.start -->").unwrap();
+        let count = |s: &str| s.matches("\\begin{pmatrix}").count();
+        assert_eq!(count(&md[..factors_tag]), 2, "two symbolic factors: {md}");
+        assert_eq!(count(&md[factors_tag..result_tag]), 2, "two numeric factors: {md}");
         let tex = matrix(&m, Lang::Ja, Format::Latex);
         assert_balanced(&tex);
         assert_escaped(&tex);
         assert!(tex.contains("% cg: a2.view.start\n\\[\n= \\begin{pmatrix}"), "{tex}");
-        assert_eq!(tagged_matrix(&tex, "% cg: a2.view.start"), got);
+        assert_eq!(tagged_matrix(&tex, "% cg: a2.view.start\n"), got);
         let both = matrices(&[m.clone(), m], Lang::En, Format::Markdown);
         assert_eq!(both.matches("<!-- cg: a2.view.start -->").count(), 2);
     }

@@ -17,10 +17,11 @@ use std::collections::HashMap;
 use cg_core::glam::{DVec3, Mat4, Vec2, Vec3};
 use cg_core::lang::Lang;
 use cg_core::normals::face_normal_f64;
+use cg_core::product::MatrixProduct;
 use cg_harness::Text;
 
 use crate::model::{Derived, PolygonData, TexRow, TextureData, Written};
-use crate::parse::{ParsedFace, ParsedMatrix, ParsedReport, ParsedTex, ParsedVertex};
+use crate::parse::{FACTORS, ParsedFace, ParsedMatrix, ParsedReport, ParsedTex, ParsedVertex};
 
 /// A number in a report that does not follow from the data (or a face wound the wrong way).
 #[derive(Clone, Debug, PartialEq)]
@@ -366,9 +367,16 @@ impl Checker {
 
     fn matrices(&mut self, written: &[ParsedMatrix], derived: &Derived) {
         let known = known_matrices(derived);
+        // ID → the derived matrix, for the products and (`ID.factors.k`) their factors.
+        let mut by_id: Vec<(String, Option<Mat4>)> = Vec::new();
+        for k in &known {
+            by_id.push((k.id.clone(), k.matrix));
+            let ids = (1..=k.factors.len()).map(|i| format!("{}{FACTORS}.{i}", k.id));
+            by_id.extend(ids.zip(k.factors.iter().map(|&f| Some(f))));
+        }
         let mut unknown = Vec::new();
         for m in written {
-            let Some((_, result)) = known.iter().find(|(id, _)| *id == m.id) else {
+            let Some((_, result)) = by_id.iter().find(|(id, _)| *id == m.id) else {
                 unknown.push(m);
                 continue;
             };
@@ -379,24 +387,31 @@ impl Checker {
                 );
                 continue;
             };
-            for (r, row) in m.rows.iter().enumerate().take(4) {
-                for (c, w) in row.iter().enumerate().take(4) {
-                    let d = f64::from(mat.col(c)[r]);
-                    let line =
-                        m.entry_lines.get(r).and_then(|l| l.get(c)).copied().unwrap_or(m.line);
-                    self.tuple(
-                        line,
-                        format!("{} (row {}, column {})", m.id, r + 1, c + 1),
-                        std::slice::from_ref(w),
-                        &[d],
-                        &["the entry"],
-                        false,
-                    );
-                }
-            }
+            self.entries(m, mat);
+        }
+        // Factors written beyond the product's: how many the product has.
+        let (extra, unknown): (Vec<&ParsedMatrix>, Vec<&ParsedMatrix>) = unknown
+            .into_iter()
+            .partition(|m| known.iter().any(|k| m.id.starts_with(&format!("{}{FACTORS}.", k.id))));
+        for m in extra {
+            let product = m.id.rsplit_once('.').map_or("", |(p, _)| p);
+            let have = product
+                .strip_suffix(FACTORS)
+                .and_then(|id| known.iter().find(|k| k.id == id))
+                .map_or(0, |k| k.factors.len());
+            self.note(
+                format!(
+                    "`{product}`（{} 行目）: 積の因子は {have} 個ですが、それより多く書かれています（余分な因子は確かめていません）",
+                    m.line
+                ),
+                format!(
+                    "`{product}` (line {}): the product has {have} factors and more are written (the extra ones are not checked)",
+                    m.line
+                ),
+            );
         }
         if !unknown.is_empty() {
-            let ids: Vec<&str> = known.iter().map(|(id, _)| id.as_str()).collect();
+            let ids: Vec<&str> = known.iter().map(|k| k.id.as_str()).collect();
             let known_list = if ids.is_empty() { "—".to_owned() } else { ids.join(", ") };
             let tags: Vec<String> = unknown.iter().map(|m| format!("`{}`", m.id)).collect();
             let lines: Vec<String> = unknown.iter().map(|m| m.line.to_string()).collect();
@@ -408,8 +423,8 @@ impl Checker {
         }
         let missing: Vec<&str> = known
             .iter()
-            .filter(|(id, _)| !written.iter().any(|m| m.id == *id))
-            .map(|(id, _)| id.as_str())
+            .filter(|k| !written.iter().any(|m| m.id == k.id))
+            .map(|k| k.id.as_str())
             .collect();
         if !missing.is_empty() {
             let list = missing.join(", ");
@@ -417,6 +432,24 @@ impl Checker {
                 format!("レポートにタグ付きの行列がありません: {list}"),
                 format!("no tagged matrix found in the report for: {list}"),
             );
+        }
+    }
+
+    /// Each entry of a written matrix against the derived one.
+    fn entries(&mut self, m: &ParsedMatrix, mat: &Mat4) {
+        for (r, row) in m.rows.iter().enumerate().take(4) {
+            for (c, w) in row.iter().enumerate().take(4) {
+                let d = f64::from(mat.col(c)[r]);
+                let line = m.entry_lines.get(r).and_then(|l| l.get(c)).copied().unwrap_or(m.line);
+                self.tuple(
+                    line,
+                    format!("{} (row {}, column {})", m.id, r + 1, c + 1),
+                    std::slice::from_ref(w),
+                    &[d],
+                    &["the entry"],
+                    false,
+                );
+            }
         }
     }
 
@@ -548,21 +581,35 @@ fn unmatched(written: &[[Written; 2]], derived: &[Vec2]) -> Vec<usize> {
 }
 
 /// Every matrix the data derives, by ID: `a1.transform` (the polygon's model transform), the
-/// camera's and the animation's.
-fn known_matrices(derived: &Derived) -> Vec<(String, Option<Mat4>)> {
-    let mut out = Vec::new();
+/// camera's and the animation's, each with its factors ([`crate::tables::factor_matrices`]).
+fn known_matrices(derived: &Derived) -> Vec<Known> {
+    let mut products: Vec<(String, &MatrixProduct)> = Vec::new();
     if let Some(t) = derived.a1.as_ref().and_then(|p| p.transform.as_ref()) {
-        out.push(("a1.transform".to_owned(), t.matrix().ok()));
+        products.push(("a1.transform".to_owned(), t));
     }
     if let Some(c) = &derived.a2 {
-        out.extend(c.matrices.iter().map(|m| (m.id.clone(), m.numeric.matrix().ok())));
+        products.extend(c.matrices.iter().map(|m| (m.id.clone(), &m.numeric)));
     }
     if let Some(a) = &derived.a3 {
         for (_, ms) in &a.objects {
-            out.extend(ms.iter().map(|m| (m.id.clone(), m.numeric.matrix().ok())));
+            products.extend(ms.iter().map(|m| (m.id.clone(), &m.numeric)));
         }
     }
-    out
+    products
+        .into_iter()
+        .map(|(id, p)| Known {
+            matrix: p.matrix().ok(),
+            factors: crate::tables::factor_matrices(p),
+            id,
+        })
+        .collect()
+}
+
+/// A derived matrix: its ID, the product (`None` when it cannot be computed) and its factors.
+struct Known {
+    id: String,
+    matrix: Option<Mat4>,
+    factors: Vec<Mat4>,
 }
 
 /// How a written face's vertex numbers relate to the data's face.
@@ -1000,6 +1047,57 @@ $$ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0
         assert!(v.notes.is_empty(), "{:?}", v.notes);
         // 5 vertices × 3 + 6 normals × 3 + 3 matrices × 16 + (3 + 2) + (3 + 4) for the grid rows.
         assert_eq!(v.checked, 15 + 18 + 48 + 5 + 7);
+    }
+
+    /// The view's block as `report fill` writes it (Markdown and LaTeX): the factors after their
+    /// tag `a2.view.start.factors`, then the tagged product.
+    fn filled_view(format: crate::template::Format) -> String {
+        let d = derived();
+        crate::tables::matrix(&d.a2.as_ref().unwrap().matrices[0], Lang::En, format)
+    }
+
+    #[test]
+    fn each_factor_of_a_product_is_checked_and_a_wrong_one_is_named() {
+        use crate::template::Format;
+        for format in [Format::Markdown, Format::Latex] {
+            let block = filled_view(format);
+            assert!(block.contains("cg: a2.view.start.factors"), "{block}");
+            let (report, problems) = parse_report(&block);
+            assert!(problems.is_empty(), "{problems:?}");
+            let ids: Vec<&str> = report.matrices.iter().map(|m| m.id.as_str()).collect();
+            assert_eq!(
+                ids,
+                ["a2.view.start.factors.1", "a2.view.start.factors.2", "a2.view.start"],
+                "{block}"
+            );
+            let v = verify(&report, &derived());
+            assert!(v.findings.is_empty(), "{:#?}", v.findings);
+            assert_eq!(v.checked, 3 * 16, "two factors and the product, 16 entries each");
+            // T(1, 2, 3) written with z = 2: the product is still right, the factor is not.
+            let wrong = block.replacen("3 \\", "2 \\", 1);
+            assert_ne!(wrong, block, "{block}");
+            let (report, _) = parse_report(&wrong);
+            let v = verify(&report, &derived());
+            let items: Vec<&str> = v.findings.iter().map(|f| f.item.as_str()).collect();
+            assert_eq!(items, ["a2.view.start.factors.1 (row 3, column 4)"], "{format:?}");
+        }
+    }
+
+    #[test]
+    fn factors_beyond_the_products_are_a_note_not_a_mistake() {
+        let block = filled_view(crate::template::Format::Markdown);
+        let extra = "$$ \\begin{pmatrix} 1 & 0 & 0 & 0 \\\\ 0 & 1 & 0 & 0 \\\\ 0 & 0 & 1 & 0 \\\\ 0 & 0 & 0 & 1 \\end{pmatrix} $$\n";
+        let at = block.find("the product (4×4 matrix)").unwrap();
+        let text = format!("{}{extra}{}", &block[..at], &block[at..]);
+        let (report, problems) = parse_report(&text);
+        assert!(problems.is_empty(), "{problems:?}");
+        let v = verify(&report, &derived());
+        assert!(v.findings.is_empty(), "{:#?}", v.findings);
+        assert!(
+            v.notes.iter().any(|n| n.en.contains("the product has 2 factors")),
+            "{:?}",
+            v.notes
+        );
     }
 
     #[test]

@@ -1,0 +1,270 @@
+//! The tagged matrices of a report: `<!-- cg: ID -->` (or `% cg: ID`) and the first `pmatrix`
+//! after it; for an ID ending in `.factors`, every `pmatrix` up to the next tag, one per factor
+//! of the product, read as `ID.1`, `ID.2`, ….
+
+use std::collections::HashMap;
+
+use cg_harness::Text;
+
+use super::{ParsedMatrix, Reader, RowKind, parse_number, same_numbers};
+
+const BEGIN: &str = "\\begin{pmatrix}";
+const END: &str = "\\end{pmatrix}";
+/// The end of a factors tag's ID: `a2.view.start.factors`.
+pub const FACTORS: &str = ".factors";
+
+/// A `pmatrix` read: where it ends, and its entries by rows with their lines when it is a 4×4
+/// matrix of plain numbers.
+struct Pmatrix {
+    end: usize,
+    entries: Option<Entries>,
+}
+
+/// A matrix's entries by rows, and the line of each.
+type Entries = (Vec<Vec<crate::model::Written>>, Vec<Vec<usize>>);
+
+/// A tag `<!-- cg: ID -->` (Markdown) or `% cg: ID` (LaTeX): its line, ID and where it ends.
+struct Tag {
+    line: usize,
+    start: usize,
+    end: usize,
+    id: String,
+    text: String,
+}
+
+fn valid_id(id: &str) -> bool {
+    !id.is_empty() && id.chars().all(|c| c.is_ascii_alphanumeric() || matches!(c, '.' | '_' | '-'))
+}
+
+fn expected_tag() -> Text {
+    Text::new(
+        "`<!-- cg: a1.transform -->` のような、ID（英数字と `.` `_` `-`）のついたタグ",
+        "a tag like `<!-- cg: a1.transform -->` with an ID of letters, digits, `.`, `_` and `-`",
+    )
+}
+
+fn expected_matrix_entry() -> Text {
+    Text::new(
+        "行列の要素として数そのもの（`\\cos 30°` ではなく `0.866`）",
+        "a plain number as the matrix entry (`0.866`, not `\\cos 30°`)",
+    )
+}
+
+impl Reader {
+    fn tags(&mut self, text: &str, line_starts: &[usize]) -> Vec<Tag> {
+        let mut tags = Vec::new();
+        for (k, line) in text.split('\n').enumerate() {
+            let n = k + 1;
+            let base = line_starts[k];
+            let mut from = 0;
+            while let Some(p) = line[from..].find("<!--") {
+                let p = from + p;
+                let after = &line[p + 4..];
+                let body = after.trim_start();
+                from = p + 4;
+                let Some(rest) = body.strip_prefix("cg:") else { continue };
+                let Some(close) = rest.find("-->") else {
+                    self.problem(n, &line[p..], expected_tag(), RowKind::Matrix);
+                    continue;
+                };
+                let id = rest[..close].trim();
+                let end = p + 4 + (after.len() - body.len()) + 3 + close + 3;
+                if valid_id(id) {
+                    tags.push(Tag {
+                        line: n,
+                        start: base + p,
+                        end: base + end,
+                        id: id.to_owned(),
+                        text: line[p..end].to_owned(),
+                    });
+                } else {
+                    self.problem(n, &line[p..end], expected_tag(), RowKind::Matrix);
+                }
+                from = end;
+            }
+            if let Some(rest) = line.trim_start().strip_prefix('%')
+                && let Some(id) = rest.trim_start().strip_prefix("cg:")
+            {
+                let id = id.trim();
+                if valid_id(id) {
+                    tags.push(Tag {
+                        line: n,
+                        start: base,
+                        end: base + line.len(),
+                        id: id.to_owned(),
+                        text: line.trim().to_owned(),
+                    });
+                } else {
+                    self.problem(n, line, expected_tag(), RowKind::Matrix);
+                }
+            }
+        }
+        tags
+    }
+
+    pub(super) fn matrices(&mut self, text: &str) {
+        let mut line_starts = vec![0];
+        line_starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        let tags = self.tags(text, &line_starts);
+        let mut seen: HashMap<String, usize> = HashMap::new();
+        for (k, tag) in tags.iter().enumerate() {
+            // A shading table's tag: its table is read by `crate::shading`, not as a matrix.
+            if crate::shading::is_table_tag(&tag.id) {
+                continue;
+            }
+            let region_end = tags.get(k + 1).map_or(text.len(), |t| t.start);
+            // `ID.factors`: every pmatrix up to the next tag, one per factor; else the first.
+            let factors = tag.id.ends_with(FACTORS);
+            let mut from = tag.end;
+            let mut count = 0;
+            loop {
+                let region = &text[from..region_end];
+                let Some(b) = region.find(BEGIN) else {
+                    if count == 0 {
+                        let expected = if factors {
+                            Text::new(
+                                "タグのあとに、積の因子の 4×4 行列 `\\begin{pmatrix} … \\end{pmatrix}` を順に",
+                                "the product's 4×4 factors as `\\begin{pmatrix} … \\end{pmatrix}`, in order, after the tag",
+                            )
+                        } else {
+                            Text::new(
+                                "タグのあとに、積の結果の 4×4 行列 `\\begin{pmatrix} … \\end{pmatrix}`",
+                                "the 4×4 result of the product as `\\begin{pmatrix} … \\end{pmatrix}` after the tag",
+                            )
+                        };
+                        self.problem(tag.line, &tag.text, expected, RowKind::Matrix);
+                    }
+                    break;
+                };
+                count += 1;
+                let id = if factors { format!("{}.{count}", tag.id) } else { tag.id.clone() };
+                let begin = from + b;
+                let Some(next) = self.pmatrix(text, &line_starts, begin, region_end) else {
+                    break;
+                };
+                from = next.end;
+                if let Some((rows, entry_lines)) = next.entries {
+                    let m = ParsedMatrix { line: tag.line, id, rows, entry_lines };
+                    self.keep(m, tag, &mut seen);
+                }
+                if !factors {
+                    break;
+                }
+            }
+        }
+    }
+
+    /// The `pmatrix` that begins at `begin`: where it ends and, when it is a 4×4 matrix of plain
+    /// numbers, its entries with their lines (each problem found is recorded). `None` when it
+    /// is not closed before `region_end`.
+    fn pmatrix(
+        &mut self,
+        text: &str,
+        line_starts: &[usize],
+        begin: usize,
+        region_end: usize,
+    ) -> Option<Pmatrix> {
+        let line_of = |offset: usize| line_starts.partition_point(|&s| s <= offset);
+        let body_start = begin + BEGIN.len();
+        let begin_line = line_of(begin);
+        let begin_text = text[line_starts[begin_line - 1]..].split('\n').next().unwrap_or("");
+        let Some(e) = text[body_start..region_end].find(END) else {
+            let expected = Text::new(
+                "行列を閉じる `\\end{pmatrix}`（次のタグより前に）",
+                "`\\end{pmatrix}` closing the matrix (before the next tag)",
+            );
+            self.problem(begin_line, begin_text, expected, RowKind::Matrix);
+            return None;
+        };
+        let end = body_start + e + END.len();
+        let body = &text[body_start..body_start + e];
+        let mut rows = Vec::new();
+        let mut entry_lines = Vec::new();
+        let mut counts = Vec::new();
+        let mut ok = true;
+        let mut offset = body_start;
+        for row in body.split("\\\\") {
+            let row_start = offset;
+            offset += row.len() + 2;
+            // `\\[2pt]`: a row spacing, not an entry.
+            let (row, skip) = match row.trim_start().strip_prefix('[') {
+                Some(r) if r.contains(']') => {
+                    let cut = row.len() - r.len() + r.find(']').unwrap_or(0) + 1;
+                    (&row[cut..], cut)
+                }
+                _ => (row, 0),
+            };
+            if row.trim().is_empty() {
+                continue;
+            }
+            let mut values = Vec::new();
+            let mut lines = Vec::new();
+            let mut entry_offset = row_start + skip;
+            for entry in row.split('&') {
+                let at = entry_offset + (entry.len() - entry.trim_start().len());
+                entry_offset += entry.len() + 1;
+                let t = entry.trim();
+                let inner = t.strip_prefix('{').and_then(|s| s.strip_suffix('}')).unwrap_or(t);
+                match parse_number(inner) {
+                    Some(w) => {
+                        values.push(w);
+                        lines.push(line_of(at));
+                    }
+                    None => {
+                        ok = false;
+                        let found = if t.is_empty() { row } else { t };
+                        self.problem(line_of(at), found, expected_matrix_entry(), RowKind::Matrix);
+                    }
+                }
+            }
+            counts.push(row.split('&').count());
+            rows.push(values);
+            entry_lines.push(lines);
+        }
+        if counts.len() != 4 || counts.iter().any(|&c| c != 4) {
+            let counts: Vec<String> = counts.iter().map(ToString::to_string).collect();
+            let expected = Text::new(
+                format!(
+                    "4×4 行列: `\\\\` で区切った 4 行、それぞれ `&` で区切った 4 つの要素（{} 行あり、要素の数は {}）",
+                    counts.len(),
+                    counts.join(", ")
+                ),
+                format!(
+                    "a 4×4 matrix: 4 rows separated by `\\\\`, each of 4 entries separated by `&` (found {} rows of {} entries)",
+                    counts.len(),
+                    counts.join(", ")
+                ),
+            );
+            self.problem(begin_line, begin_text, expected, RowKind::Matrix);
+            return Some(Pmatrix { end, entries: None });
+        }
+        Some(Pmatrix { end, entries: ok.then_some((rows, entry_lines)) })
+    }
+
+    /// Keeps a tagged matrix; the same tag again must hold the same numbers.
+    fn keep(&mut self, m: ParsedMatrix, tag: &Tag, seen: &mut HashMap<String, usize>) {
+        match seen.get(&m.id) {
+            None => {
+                seen.insert(m.id.clone(), self.report.matrices.len());
+                self.report.matrices.push(m);
+            }
+            Some(&k) => {
+                let first = &self.report.matrices[k];
+                let same = first.rows.iter().zip(&m.rows).all(|(a, b)| same_numbers(a, b));
+                if !same {
+                    let expected = Text::new(
+                        format!(
+                            "タグ `{}` は 1 回ずつ（{} 行目に別の行列があります）",
+                            m.id, first.line
+                        ),
+                        format!(
+                            "each tag once (`{}` is already on line {} with another matrix)",
+                            m.id, first.line
+                        ),
+                    );
+                    self.problem(tag.line, &tag.text, expected, RowKind::Matrix);
+                }
+            }
+        }
+    }
+}

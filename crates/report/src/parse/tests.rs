@@ -1,0 +1,398 @@
+use super::*;
+use proptest::prelude::*;
+
+fn values(w: &[Written]) -> Vec<f64> {
+    w.iter().map(|w| w.value).collect()
+}
+
+fn messages_name(p: &ParseProblem, line: usize) {
+    let (en, ja) = (p.message(Lang::En), p.message(Lang::Ja));
+    assert!(en.starts_with(&format!("line {line}: ")), "{en}");
+    assert!(ja.starts_with(&format!("{line} 行目: ")), "{ja}");
+    assert!(!p.expected.en.is_empty() && !p.expected.ja.is_empty(), "{p:?}");
+    assert_ne!(p.expected.en, p.expected.ja, "both languages are written: {p:?}");
+    assert!(p.found.chars().count() <= 80, "{p:?}");
+}
+
+#[test]
+fn numbers_remember_their_decimals() {
+    let n = |s: &str| parse_number(s).map(|w| (w.value, w.decimals));
+    assert_eq!(n("0.53"), Some((0.53, 2)));
+    assert_eq!(n("-0.8"), Some((-0.8, 1)));
+    assert_eq!(n("−0.8"), Some((-0.8, 1)), "the Unicode minus");
+    assert_eq!(n("＋1.250"), Some((1.25, 3)));
+    assert_eq!(n("15"), Some((15.0, 0)));
+    assert_eq!(n(" .5 "), Some((0.5, 1)));
+    assert_eq!(n("5."), Some((5.0, 0)));
+    assert_eq!(parse_number("−0.8").map(|w| w.text), Some("−0.8".to_owned()), "kept as written");
+    for bad in ["", "-", ".", "1e-3", "0,5", "\\cos 30°", "0.8.1", "- 1", "inf", "NaN", "1/2"] {
+        assert_eq!(parse_number(bad), None, "{bad:?}");
+    }
+    assert_eq!(parse_number(&"9".repeat(400)), None, "too large to be finite");
+}
+
+#[test]
+fn the_lecture_slide_parses() {
+    let (r, problems) = parse_report(LECTURE_SLIDE);
+    assert!(problems.is_empty(), "{problems:?}");
+    assert_eq!(r.vertices.len(), 5);
+    assert_eq!(r.faces.len(), 6);
+    assert!(r.matrices.is_empty() && r.tex.is_empty());
+    let v3 = &r.vertices[3];
+    assert_eq!((v3.index, v3.line), (3, line_of(LECTURE_SLIDE, "V3 (")));
+    assert_eq!(values(&v3.coords), [-1.0, -0.8, 1.0]);
+    assert_eq!(v3.coords.each_ref().map(|w| w.decimals), [1, 1, 1]);
+    let expected_faces = [[0, 3, 1], [0, 2, 4], [0, 1, 2], [0, 4, 3], [1, 3, 2], [4, 2, 3]];
+    for (k, f) in r.faces.iter().enumerate() {
+        assert_eq!(f.index as usize, k);
+        assert_eq!(f.vertices, expected_faces[k]);
+        assert_eq!(f.line, line_of(LECTURE_SLIDE, &format!("F{k} {{")));
+    }
+    let n0 = r.faces[0].normal.as_ref().unwrap();
+    assert_eq!(values(n0), [0.0, 0.53, 0.85]);
+    assert_eq!(n0.each_ref().map(|w| w.decimals), [1, 2, 2]);
+    assert_eq!(values(r.faces[3].normal.as_ref().unwrap()), [-0.85, 0.53, 0.0]);
+}
+
+/// Index, line, vertices and normal values of a face row.
+type FaceRow = (u32, usize, [u32; 3], Option<Vec<f64>>);
+
+#[test]
+fn the_kits_tables_and_other_spellings_parse() {
+    let text = "\
+| V | position |
+|---|---|
+| V0 | (0.000, 1.000, 0.000) |
+- V1 = (1, -0.8, 1)
+V2 （1.0，−0.8，−1.0）
+3. **V3** (-1.0, -0.8, 1.0)
+頂点V4 (-1.0, -0.8, -1.0) は裏側
+| F0 | { V0, V3, V1 } | { 0.000, 0.486, 0.874 } |
+F1 ( V0, V2, V4 )   ( 0.0, 0.4856, -0.8742 )
+F2 ｛V0，V1，V2｝
+V5 = (cos 30°, 0, sin 30°) = (0.866, 0, 0.5)
+The face F3 (the left one) and V1 (the apex's neighbour) are prose.
+Edges V3–V5, F9.
+V0 (the apex) is prose too, and so is
+F1 (the back face).
+";
+    let (r, problems) = parse_report(text);
+    assert!(problems.is_empty(), "{problems:?}");
+    let got: Vec<(u32, usize, Vec<f64>)> =
+        r.vertices.iter().map(|v| (v.index, v.line, values(&v.coords))).collect();
+    assert_eq!(
+        got,
+        vec![
+            (0, 3, vec![0.0, 1.0, 0.0]),
+            (1, 4, vec![1.0, -0.8, 1.0]),
+            (2, 5, vec![1.0, -0.8, -1.0]),
+            (3, 6, vec![-1.0, -0.8, 1.0]),
+            (4, 7, vec![-1.0, -0.8, -1.0]),
+            (5, 11, vec![0.866, 0.0, 0.5]),
+        ]
+    );
+    let faces: Vec<FaceRow> = r
+        .faces
+        .iter()
+        .map(|f| (f.index, f.line, f.vertices, f.normal.as_ref().map(|n| values(n))))
+        .collect();
+    assert_eq!(
+        faces,
+        vec![
+            (0, 8, [0, 3, 1], Some(vec![0.0, 0.486, 0.874])),
+            (1, 9, [0, 2, 4], Some(vec![0.0, 0.4856, -0.8742])),
+            (2, 10, [0, 1, 2], None),
+        ]
+    );
+}
+
+#[test]
+fn latex_rows_parse() {
+    let text =
+        "V0 & (0.0, 1.0, 0.0) \\\\\nF0 & $\\{ V0, V3, V1 \\}$ & $\\{ 0.0, 0.49, 0.87 \\}$ \\\\\n";
+    assert!(text.contains(r"$\{ V0"), "{text}");
+    let (r, problems) = parse_report(text);
+    assert!(problems.is_empty(), "{problems:?}");
+    assert_eq!(values(&r.vertices[0].coords), [0.0, 1.0, 0.0]);
+    assert_eq!(r.faces[0].vertices, [0, 3, 1]);
+    assert_eq!(values(r.faces[0].normal.as_ref().unwrap()), [0.0, 0.49, 0.87]);
+}
+
+#[test]
+fn a_row_quoted_again_with_the_same_numbers_is_kept_once() {
+    let text = "V0 (0.0, 1.0, 0.0)\nF0 { V0, V3, V1 }\nAs computed, V0 (0, 1, 0) is the apex; F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 }.";
+    let (r, problems) = parse_report(text);
+    assert!(problems.is_empty(), "{problems:?}");
+    assert_eq!(r.vertices.len(), 1);
+    assert_eq!(r.faces.len(), 1);
+    assert_eq!(r.faces[0].line, 2);
+    assert_eq!(
+        values(r.faces[0].normal.as_ref().unwrap()),
+        [0.0, 0.49, 0.87],
+        "the later normal fills in"
+    );
+}
+
+#[test]
+fn tagged_matrices_and_texture_rows_parse() {
+    let text = r"Intro with a matrix that has no tag: $\begin{pmatrix} a & b \end{pmatrix}$
+
+<!-- cg: a2.view.start -->
+$$
+T(1, 2, 3) \cdot R_y(30°) =
+\begin{pmatrix}
+0.866 & 0 & 0.5 & 1 \\
+0 & 1 & 0 & 2 \\
+-0.5 & 0 & {0.866} & 3 \\[2pt]
+0 & 0 & 0 & 1 \\
+\end{pmatrix}
+$$
+% cg: a3.object0.t1.5
+\[ \begin{pmatrix} 0 & -1 & 0 & 0 \\ 1 & 0 & 0 & 2 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0 & 1 \end{pmatrix} \]
+
+| i | j | position | texture coordinates |
+|---|---|---|---|
+| 0 | 0 | (-5.000, 0.000, -5.000) | (0.000, 0.000) |
+| 3 | 5 | (-2.000, 0.000, 0.000) | (0.300, 0.500) / (1.000, 0.500) |
+| 1 | 2 | 3 |
+";
+    let (r, problems) = parse_report(text);
+    assert!(problems.is_empty(), "{problems:?}");
+    assert_eq!(r.matrices.len(), 2);
+    let m = &r.matrices[0];
+    assert_eq!((m.id.as_str(), m.line), ("a2.view.start", 3));
+    let rows: Vec<Vec<f64>> = m.rows.iter().map(|r| values(r)).collect();
+    assert_eq!(
+        rows,
+        vec![
+            vec![0.866, 0.0, 0.5, 1.0],
+            vec![0.0, 1.0, 0.0, 2.0],
+            vec![-0.5, 0.0, 0.866, 3.0],
+            vec![0.0, 0.0, 0.0, 1.0]
+        ]
+    );
+    assert_eq!(m.entry_lines, vec![vec![7; 4], vec![8; 4], vec![9; 4], vec![10; 4]]);
+    let m = &r.matrices[1];
+    assert_eq!((m.id.as_str(), m.line), ("a3.object0.t1.5", 13));
+    assert_eq!(values(&m.rows[1]), [1.0, 0.0, 0.0, 2.0]);
+    assert_eq!(m.entry_lines[3], vec![14; 4]);
+    assert_eq!(r.tex.len(), 2);
+    let t = &r.tex[1];
+    assert_eq!((t.i, t.j, t.line), (3, 5, 19));
+    assert_eq!(values(&t.position), [-2.0, 0.0, 0.0]);
+    let tex: Vec<Vec<f64>> = t.tex.iter().map(|p| values(p)).collect();
+    assert_eq!(tex, vec![vec![0.3, 0.5], vec![1.0, 0.5]]);
+}
+
+#[test]
+fn malformed_rows_name_their_line_and_what_was_expected() {
+    let text = r"V0 (0.0, 1.0, 0.0)
+V1 (1.0, -0.8)
+F3 { V0, V4 }
+F4 { V1, V3, 2 }
+F5 { V4, V2, V3 } { 0.0, -1.0 }
+V0 (0.0, 2.0, 0.0)
+V2 (1.0, abc, 1.0)
+| 3 | 5 | (-2.000, 0.000, 0.000) |
+| 4 | 5 | (-1.000, 0.000) | (0.4, 0.5) |
+| 5 | 5 | (0.000, 0.000, 0.000) | (0.5, 0.5) / 0.6 |
+<!-- cg: a1.transform -->
+no matrix here
+<!-- cg: a2.view.start -->
+$$ \begin{pmatrix} 1 & 0 & 0 \\ 0 & 1 & 0 \\ 0 & 0 & 1 \end{pmatrix} $$
+<!-- cg: a2.view.drag -->
+$$ \begin{pmatrix}
+\cos 30° & 0 & 0 & 0 \\ 0 & 1 & 0 & 0 \\ 0 & 0 & 1 & 0 \\ 0 & 0 & 0 & 1
+\end{pmatrix} $$
+<!-- cg: bad id -->
+V6 (1.0, 2.0, 3.0
+";
+    let (r, problems) = parse_report(text);
+    let got: Vec<(usize, RowKind)> = problems.iter().map(|p| (p.line, p.kind)).collect();
+    assert_eq!(
+        got,
+        vec![
+            (2, RowKind::Vertex),
+            (3, RowKind::Face),
+            (4, RowKind::Face),
+            (5, RowKind::Face),
+            (6, RowKind::Vertex),
+            (7, RowKind::Vertex),
+            (8, RowKind::Texture),
+            (9, RowKind::Texture),
+            (10, RowKind::Texture),
+            (11, RowKind::Matrix),
+            (14, RowKind::Matrix),
+            (17, RowKind::Matrix),
+            (19, RowKind::Matrix),
+            (20, RowKind::Vertex),
+        ],
+        "{problems:#?}"
+    );
+    for p in &problems {
+        messages_name(p, p.line);
+    }
+    let by_line = |n: usize| problems.iter().find(|p| p.line == n).unwrap();
+    assert_eq!(by_line(2).found, "V1 (1.0, -0.8)");
+    assert!(by_line(2).expected.en.contains("found 2 numbers"), "{}", by_line(2).expected);
+    assert_eq!(by_line(3).found, "F3 { V0, V4 }");
+    assert!(by_line(3).expected.en.contains("three vertex numbers"), "{}", by_line(3).expected);
+    assert!(
+        by_line(3)
+            .message(Lang::En)
+            .starts_with("line 3: `F3 { V0, V4 }` — expected three vertex numbers")
+    );
+    assert!(by_line(4).expected.en.contains("`2` is not a vertex number"));
+    assert!(by_line(5).expected.en.contains("normal"));
+    assert!(
+        by_line(6).expected.en.contains("line 1"),
+        "the duplicate names the first: {}",
+        by_line(6).expected
+    );
+    assert!(by_line(7).expected.en.contains("`abc`"));
+    assert!(by_line(8).expected.en.contains("missing"));
+    assert!(by_line(11).expected.en.contains("pmatrix"));
+    assert!(
+        by_line(14).expected.en.contains("found 3 rows of 3, 3, 3 entries"),
+        "{}",
+        by_line(14).expected
+    );
+    assert_eq!(by_line(17).found, "\\cos 30°");
+    assert!(by_line(17).expected.en.contains("0.866"));
+    assert!(by_line(20).expected.en.contains("not closed"));
+    // Only the rows that parsed are kept: V0 (first), F-nothing, no tex, no matrix.
+    assert_eq!(r.vertices.len(), 1);
+    assert_eq!(values(&r.vertices[0].coords), [0.0, 1.0, 0.0]);
+    assert!(r.faces.is_empty() && r.tex.is_empty() && r.matrices.is_empty(), "{r:?}");
+}
+
+#[test]
+fn long_offending_text_is_clipped() {
+    let text = format!("F0 {{ V0, V1, {} }}", "V2, ".repeat(40));
+    let (_, problems) = parse_report(&text);
+    assert_eq!(problems.len(), 1);
+    assert_eq!(problems[0].found.chars().count(), 80);
+    assert!(problems[0].found.ends_with('…'));
+    // An invisible character pasted into a row is named where the message quotes it.
+    let (_, problems) = parse_report("F0 { V0,\u{200B} V1 }");
+    assert_eq!(problems.len(), 1, "{problems:?}");
+    assert!(problems[0].found.contains("<U+200B>"), "{}", problems[0].found);
+}
+
+#[test]
+fn data_alone_builds_the_lectures_pyramid() {
+    let p = polygon_from_text(LECTURE_SLIDE, Text::new("四角すい", "pyramid")).unwrap();
+    assert_eq!(p.vertices[2], Vec3::new(1.0, -0.8, -1.0));
+    assert_eq!(p.faces, vec![[0, 3, 1], [0, 2, 4], [0, 1, 2], [0, 4, 3], [1, 3, 2], [4, 2, 3]]);
+    // The kit's normal of F0 from the vertices: (V3 − V0) × (V1 − V0) = (0, 2, 3.6)/|…|.
+    let len = (4.0f64 + 3.6 * 3.6).sqrt();
+    let n0 = p.derived_normals[0].unwrap().as_dvec3();
+    assert!((n0 - DVec3::new(0.0, 2.0 / len, 3.6 / len)).length() < 1e-6, "{n0}");
+    let written = p.student_normals.as_ref().unwrap();
+    assert_eq!(written[0], Vec3::new(0.0, 0.53, 0.85));
+    assert_eq!(written[5], Vec3::new(0.0, -1.0, 0.0));
+    // Without every normal, there are no student normals.
+    let text =
+        "V0 (0,0,0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 { V0, V1, V2 } { 0, 0, 1 }\nF1 { V0, V2, V1 }";
+    assert_eq!(polygon_from_text(text, Text::default()).unwrap().student_normals, None);
+}
+use cg_core::glam::DVec3;
+
+#[test]
+fn data_alone_names_what_is_missing() {
+    let err = |text: &str| polygon_from_text(text, Text::default()).unwrap_err();
+    let e = err("");
+    assert_eq!(e.len(), 2, "{e:?}");
+    assert!(e.iter().all(|p| p.line == 0 && p.kind == RowKind::Data));
+    assert!(e[0].message(Lang::En).starts_with("the text: expected at least one vertex row"));
+    assert!(e[0].message(Lang::Ja).starts_with("全体: "));
+
+    let e = err("V0 (0,0,0)\nV1 (1,0,0)\nV3 (0,1,0)\nF0 { V0, V1, V3 }\nF1 { V0, V1, V7 }");
+    let got: Vec<usize> = e.iter().map(|p| p.line).collect();
+    assert_eq!(got, vec![3, 5], "{e:?}");
+    assert!(
+        e[0].expected.en.contains("V0 to V2") && e[0].expected.en.contains("V2 is missing"),
+        "{}",
+        e[0].expected
+    );
+    assert!(e[1].expected.en.contains("no V7"), "{}", e[1].expected);
+    for p in &e {
+        messages_name(p, p.line);
+    }
+
+    let e = err("V0 (0,0,0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 { V0, V1, V2 }\nF2 { V0, V2, V1 }");
+    assert_eq!(e.len(), 1);
+    assert!(e[0].expected.en.contains("F1 is missing"), "{}", e[0].expected);
+
+    let e =
+        err(&format!("V0 ({}, 0, 0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 {{ V0, V1, V2 }}", "9".repeat(40)));
+    assert_eq!(e.len(), 1);
+    assert!(e[0].expected.en.contains("f32"), "{}", e[0].expected);
+
+    let e = err("V0 (0,0,0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 { V0, V1 }\n");
+    assert_eq!(
+        e.iter().map(|p| (p.line, p.kind)).collect::<Vec<_>>(),
+        vec![(0, RowKind::Data), (4, RowKind::Face)]
+    );
+}
+
+/// Text built from the notation's own pieces, so random input reaches every branch.
+fn notation_soup() -> impl Strategy<Value = String> {
+    let piece = prop_oneof![
+        Just("V".to_owned()),
+        Just("F".to_owned()),
+        Just("{".to_owned()),
+        Just("}".to_owned()),
+        Just("(".to_owned()),
+        Just(")".to_owned()),
+        Just(", ".to_owned()),
+        Just(" | ".to_owned()),
+        Just("\n".to_owned()),
+        Just(" = ".to_owned()),
+        Just(" / ".to_owned()),
+        Just("−".to_owned()),
+        Just("，".to_owned()),
+        Just("（".to_owned()),
+        Just("&".to_owned()),
+        Just("\\\\".to_owned()),
+        Just("<!-- cg: a1.transform -->".to_owned()),
+        Just("<!-- cg:".to_owned()),
+        Just("% cg: x\n".to_owned()),
+        Just("\\begin{pmatrix}".to_owned()),
+        Just("\\end{pmatrix}".to_owned()),
+        Just("\\\\[".to_owned()),
+        "[0-9]{1,3}".prop_map(|s| s),
+        "-?[0-9]{0,2}\\.[0-9]{0,4}".prop_map(|s| s),
+        "\\PC{0,3}".prop_map(|s| s),
+    ];
+    proptest::collection::vec(piece, 0..60).prop_map(|v| v.concat())
+}
+
+proptest! {
+    #![proptest_config(cg_testkit::prop::config(256, 0x5eed_0005))]
+
+    #[test]
+    fn any_text_parses_without_panicking(text in "\\PC{0,300}") {
+        let (_, problems) = parse_report(&text);
+        for p in &problems {
+            prop_assert!(p.found.chars().count() <= 80);
+            prop_assert!(!p.message(Lang::Ja).is_empty());
+        }
+        let _ = polygon_from_text(&text, Text::default());
+    }
+
+    #[test]
+    fn notation_soup_parses_without_panicking(text in notation_soup()) {
+        let (r, problems) = parse_report(&text);
+        for p in &problems {
+            prop_assert!(p.line <= text.lines().count().max(1), "{p:?}");
+            prop_assert!(p.found.chars().count() <= 80);
+        }
+        for m in &r.matrices {
+            prop_assert!(m.rows.len() == 4 && m.rows.iter().all(|r| r.len() == 4));
+        }
+        if let Ok(p) = polygon_from_text(&text, Text::default()) {
+            prop_assert_eq!(p.derived_normals.len(), p.faces.len());
+        }
+    }
+}
