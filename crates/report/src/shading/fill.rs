@@ -68,8 +68,9 @@ fn cell(c: &Cell, lang: Lang, format: Format) -> String {
     }
 }
 
-/// The table after its tag, and a note naming what the student's functions did not give.
-fn tagged_table(t: &Table, lang: Lang, format: Format) -> String {
+/// The table after its tag, and a note naming what the student's functions did not give: each
+/// reason once in the section (`shown`: the reasons noted under the tables before this one).
+fn tagged_table(t: &Table, lang: Lang, format: Format, shown: &mut Vec<String>) -> String {
     let header: Vec<Text> = t
         .columns
         .iter()
@@ -121,8 +122,15 @@ fn tagged_table(t: &Table, lang: Lang, format: Format) -> String {
         }
     }
     if !why.is_empty() {
+        let fresh: Vec<String> = why.into_iter().filter(|w| !shown.contains(w)).collect();
+        let text = if fresh.is_empty() {
+            Text::new("上の表と同じ理由", "as for the table above").get(lang).to_owned()
+        } else {
+            fresh.join("; ")
+        };
+        shown.extend(fresh);
         out.push('\n');
-        out.push_str(&not_yet(&why.join("; "), lang, format));
+        out.push_str(&not_yet(&text, lang, format));
         out.push('\n');
     }
     out
@@ -202,7 +210,8 @@ pub fn values(d: &ShadingData, lang: Lang, format: Format) -> Vec<(&'static str,
             n(*eta)
         ),
     );
-    let t = |table: &Table| tagged_table(table, lang, format);
+    let mut shown = Vec::new();
+    let mut t = |table: &Table| tagged_table(table, lang, format, &mut shown);
     let p = |text: &Text| paragraph(text, lang, format);
     vec![
         (

@@ -133,6 +133,33 @@ fn the_stubs_fill_every_table_and_a_report_worked_by_hand_checks_clean() {
 }
 
 #[test]
+fn on_the_stubs_each_reason_a_table_is_not_derived_is_noted_once() {
+    let d = derived("12345678");
+    let data = d.s.as_ref().unwrap();
+    let section: String = crate::shading::values(data, Lang::En, Format::Markdown)
+        .into_iter()
+        .map(|(_, v)| v)
+        .collect::<Vec<_>>()
+        .join("\n");
+    let notes: Vec<&str> = section
+        .lines()
+        .filter_map(|l| l.strip_prefix("> (not derived yet: "))
+        .map(|l| l.trim_end_matches(')'))
+        .collect();
+    assert!(notes.len() >= 3, "{section}");
+    let mut reasons: Vec<&str> = notes
+        .iter()
+        .filter(|n| **n != "as for the table above")
+        .flat_map(|n| n.split("; "))
+        .collect();
+    let all = reasons.len();
+    reasons.sort_unstable();
+    reasons.dedup();
+    assert_eq!(reasons.len(), all, "a reason noted twice: {notes:#?}");
+    assert!(notes.contains(&"as for the table above"), "{notes:#?}");
+}
+
+#[test]
 fn a_wrong_number_is_named_with_its_line_item_and_derived_value() {
     let d = derived("12345678");
     let data = d.s.as_ref().unwrap();
