@@ -17,9 +17,12 @@ use cg_core::normals::face_normal;
 use cg_core::transform::look_at;
 use cg_harness::Text;
 
-use crate::model::{PolygonData, TextureData};
-use crate::tables::fixed;
+use crate::model::PolygonData;
 use crate::template::latex_escape;
+
+mod texture;
+
+pub use texture::{texture_svg, texture_tikz};
 
 /// The width and height of a view's drawing box, in figure units.
 pub const SIZE: f32 = 240.0;
@@ -636,242 +639,6 @@ pub fn tikz(fig: &Figure, lang: Lang) -> String {
     s
 }
 
-/// The texture figure's geometry in image pixels (x right, y down from the image's top edge):
-/// the region's corners `[(s₀, t₀), (s₁, t₀), (s₁, t₁), (s₀, t₁)]` with their pixel positions.
-fn region_corners(t: &TextureData) -> Option<[(Vec2, Vec2); 4]> {
-    let (w, h) = (t.image.width.max(1) as f32, t.image.height.max(1) as f32);
-    let (lo, hi) = t.region;
-    if !(lo.is_finite() && hi.is_finite()) {
-        return None;
-    }
-    let px = |st: Vec2| Vec2::new(st.x * w, (1.0 - st.y) * h);
-    let st = [lo, Vec2::new(hi.x, lo.y), hi, Vec2::new(lo.x, hi.y)];
-    Some(st.map(|c| (c, px(c))))
-}
-
-/// The texture figure's title.
-fn texture_title() -> Text {
-    Text::new(
-        "テクスチャ画像（赤枠: 地面に貼る範囲、t = 0 が下端）",
-        "the texture image (red: the region on the ground; t = 0 at the bottom)",
-    )
-}
-
-/// A standalone SVG 1.1 document: the image (`image_href`, saved next to the report) at one
-/// figure unit per texel, the mapped rectangle `t.region` outlined in red with each corner
-/// labelled with its `(s, t)` (the `<text>`'s `x`, `y` at the corner's pixel), and the image's
-/// own corners `(0, 0)` (bottom left) and `(1, 1)` (top right) for orientation. Texture
-/// coordinate t = 0 is the image's bottom edge, so the corner (s, t) is at pixel
-/// (s·width, (1 − t)·height) from the top left.
-#[must_use]
-pub fn texture_svg(t: &TextureData, image_href: &str, lang: Lang) -> String {
-    let (w, h) = (t.image.width.max(1) as f32, t.image.height.max(1) as f32);
-    let big = w.max(h);
-    let font = (big / 22.0).max(4.0);
-    // Room for the image's corner labels at the sides, one line of labels above and below.
-    let (mx, my) = (font * 4.5, font * 3.0);
-    let corners = region_corners(t);
-    // The viewBox holds the image, the region (even beyond the image) and the margins.
-    let (mut lo, mut hi) = (Vec2::ZERO, Vec2::new(w, h));
-    if let Some(c) = &corners {
-        for (_, p) in c {
-            lo = lo.min(*p);
-            hi = hi.max(*p);
-        }
-    }
-    let (x0, y0) = (lo.x - mx, lo.y - my);
-    let (vw, vh) = (hi.x - lo.x + 2.0 * mx, hi.y - lo.y + 2.0 * my + font * 1.5);
-    let display_w = 360.0;
-    let display_h = display_w * vh / vw;
-    let mut s = String::new();
-    let _ = writeln!(s, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
-    let _ = writeln!(
-        s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" version="1.1" width="{}" height="{}" viewBox="{} {} {} {}" font-family="sans-serif" font-size="{}">"#,
-        num(display_w),
-        num(display_h),
-        num(x0),
-        num(y0),
-        num(vw),
-        num(vh),
-        num(font)
-    );
-    let title = texture_title();
-    let _ = writeln!(s, "<title>{}</title>", xml_escape(title.get(lang)));
-    let _ = writeln!(
-        s,
-        r#"<rect x="{}" y="{}" width="{}" height="{}" fill="white"/>"#,
-        num(x0),
-        num(y0),
-        num(vw),
-        num(vh)
-    );
-    let href = xml_escape(image_href);
-    let _ = writeln!(
-        s,
-        r#"<image class="texture" x="0" y="0" width="{}" height="{}" preserveAspectRatio="none" xlink:href="{href}"/>"#,
-        num(w),
-        num(h)
-    );
-    let _ = writeln!(
-        s,
-        r##"<rect class="image-border" x="0" y="0" width="{}" height="{}" fill="none" stroke="#444444" stroke-width="{}"/>"##,
-        num(w),
-        num(h),
-        num(big / 400.0)
-    );
-    let gray = r##"fill="#444444""##;
-    // The image's own corners and axes beside the image (the lines above and below it are the
-    // region's labels'), for orientation.
-    let side = |class: &str, x: f32, y: f32, right: bool, text: &str| {
-        format!(
-            r#"<text class="{class}" x="{}" y="{}" dx="{}" dy="{}" text-anchor="{}" {gray}>{text}</text>"#,
-            num(x),
-            num(y),
-            num(if right { font * 0.4 } else { -font * 0.4 }),
-            num(font * 0.35),
-            if right { "start" } else { "end" },
-        )
-    };
-    let _ = writeln!(s, "{}", side("image-corner", 0.0, h, false, "(0, 0)"));
-    let _ = writeln!(s, "{}", side("image-corner", w, 0.0, true, "(1, 1)"));
-    let _ = writeln!(s, "{}", side("image-axis", w, h, true, "s →"));
-    let _ = writeln!(s, "{}", side("image-axis", 0.0, 0.0, false, "t ↑"));
-    if let Some(c) = corners {
-        let (a, b) = (c[0].1.min(c[2].1), c[0].1.max(c[2].1));
-        let _ = writeln!(
-            s,
-            r##"<rect class="region" x="{}" y="{}" width="{}" height="{}" fill="none" stroke="#ff0000" stroke-width="{}"/>"##,
-            num(a.x),
-            num(a.y),
-            num(b.x - a.x),
-            num(b.y - a.y),
-            num(big / 150.0)
-        );
-        let mid = (a + b) * 0.5;
-        // A label is about 14 characters of 0.62 em; when two do not fit side by side along the
-        // rectangle, the right-hand ones move one line further out.
-        let stacked = b.x - a.x < 2.0 * 14.0 * 0.62 * font + font;
-        for (st, p) in c {
-            // Vertically outside the rectangle, horizontally towards its inside, so a label
-            // stays within the image's width.
-            let right = p.x >= mid.x;
-            let below = p.y >= mid.y;
-            let extra = if right && stacked { font * 1.15 } else { 0.0 };
-            let _ = writeln!(
-                s,
-                r##"<circle cx="{}" cy="{}" r="{}" fill="#ff0000"/>"##,
-                num(p.x),
-                num(p.y),
-                num(big / 120.0)
-            );
-            let _ = writeln!(
-                s,
-                r##"<text class="corner" x="{}" y="{}" dx="{}" dy="{}" text-anchor="{}" fill="#cc0000" stroke="#ffffff" stroke-width="{}" paint-order="stroke">({}, {})</text>"##,
-                num(p.x),
-                num(p.y),
-                num(if right { font * 0.2 } else { -font * 0.2 }),
-                num(if below { font * 1.1 + extra } else { -font * 0.4 - extra }),
-                if right { "end" } else { "start" },
-                num(font / 5.0),
-                fixed(st.x),
-                fixed(st.y)
-            );
-        }
-    }
-    let _ = writeln!(
-        s,
-        r#"<text class="title" x="{}" y="{}" text-anchor="middle" font-size="{}">{}</text>"#,
-        num(x0 + vw / 2.0),
-        num(y0 + vh - font * 0.5),
-        num(font * 0.85),
-        xml_escape(title.get(lang))
-    );
-    s.push_str("</svg>\n");
-    s
-}
-
-/// A TikZ picture of the texture figure: the image (`image_path`, for `\includegraphics`)
-/// 6 cm on its longer side, with the axes' unit vectors set to the image's width and height so
-/// that texture coordinates are the picture's coordinates (t = 0 at the bottom edge), the
-/// mapped rectangle outlined in red and its corners labelled with their `(s, t)`.
-#[must_use]
-pub fn texture_tikz(t: &TextureData, image_path: &str, lang: Lang) -> String {
-    let (w, h) = (t.image.width.max(1) as f32, t.image.height.max(1) as f32);
-    let (cw, ch) = if w >= h { (6.0, 6.0 * h / w) } else { (6.0 * w / h, 6.0) };
-    let mut s = String::new();
-    let _ = writeln!(s, "\\begin{{tikzpicture}}[x={}cm, y={}cm, font=\\small]", num(cw), num(ch));
-    let _ = writeln!(
-        s,
-        "\\node[anchor=south west, inner sep=0pt] at (0,0) {{\\includegraphics[width={}cm, height={}cm]{{{image_path}}}}};",
-        num(cw),
-        num(ch)
-    );
-    let _ = writeln!(s, "\\draw[gray] (0,0) rectangle (1,1);");
-    let (lo, hi) = t.region;
-    let shared = |p: Vec2| {
-        lo.is_finite()
-            && hi.is_finite()
-            && [lo, Vec2::new(hi.x, lo.y), hi, Vec2::new(lo.x, hi.y)]
-                .iter()
-                .any(|c| c.distance(p) < 0.005)
-    };
-    if !shared(Vec2::ZERO) {
-        let _ = writeln!(s, "\\node[anchor=east, text=gray] at (0,0) {{$(0, 0)$}};");
-    }
-    if !shared(Vec2::ONE) {
-        let _ = writeln!(s, "\\node[anchor=west, text=gray] at (1,1) {{$(1, 1)$}};");
-    }
-    let _ = writeln!(s, "\\node[anchor=west, text=gray] at (1,0) {{$s \\rightarrow$}};");
-    let _ = writeln!(s, "\\node[anchor=east, text=gray] at (0,1) {{$t \\uparrow$}};");
-    if lo.is_finite() && hi.is_finite() {
-        let _ = writeln!(
-            s,
-            "\\draw[red, thick] ({},{}) rectangle ({},{});",
-            fixed(lo.x),
-            fixed(lo.y),
-            fixed(hi.x),
-            fixed(hi.y)
-        );
-        let mid = (lo + hi) * 0.5;
-        // A label is about 2.4 cm wide in \\small; when two do not fit side by side along the
-        // rectangle, the right-hand ones move one line further out.
-        let stacked = (hi.x - lo.x).abs() * cw < 2.0 * 2.4 + 0.2;
-        for c in [lo, Vec2::new(hi.x, lo.y), hi, Vec2::new(lo.x, hi.y)] {
-            let shift = match (stacked && c.x >= mid.x, c.y >= mid.y) {
-                (false, _) => 0.0,
-                (true, true) => 1.2,
-                (true, false) => -1.2,
-            };
-            let anchor = match (c.y >= mid.y, c.x >= mid.x) {
-                // Above the top corners, below the bottom ones, towards the inside.
-                (true, true) => "south east",
-                (true, false) => "south west",
-                (false, true) => "north east",
-                (false, false) => "north west",
-            };
-            let _ = writeln!(
-                s,
-                "\\fill[red] ({},{}) circle (1.5pt);\n\\node[anchor={anchor}, fill=white, fill opacity=0.8, text opacity=1, text=red!80!black, inner sep=1pt, yshift={shift}em] at ({},{}) {{$({}, {})$}};",
-                fixed(c.x),
-                fixed(c.y),
-                fixed(c.x),
-                fixed(c.y),
-                fixed(c.x),
-                fixed(c.y)
-            );
-        }
-    }
-    let _ = writeln!(
-        s,
-        "\\node[anchor=north, text width={}cm, align=center] at (0.5,-0.25) {{{}}};",
-        num(cw),
-        latex_escape(texture_title().get(lang))
-    );
-    s.push_str("\\end{tikzpicture}\n");
-    s
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1140,18 +907,50 @@ mod tests {
             image.attribute(("http://www.w3.org/1999/xlink", "href")),
             Some("texture & <1>.png")
         );
+        // Each corner's label is beside the image, on the corner's side and at its height (they
+        // are far enough apart here), joined to the corner's dot by a line; none covers the image.
         let c = texts(&svg, "corner");
         assert_eq!(c.len(), 4);
-        assert_at(&c, "(0.250, 0.500)", (50.0, 50.0));
-        assert_at(&c, "(0.750, 0.500)", (150.0, 50.0));
-        assert_at(&c, "(0.750, 1.000)", (150.0, 0.0));
-        assert_at(&c, "(0.250, 1.000)", (50.0, 0.0));
+        for (text, corner, right) in [
+            ("(0.250, 0.500)", (50.0, 50.0), false),
+            ("(0.750, 0.500)", (150.0, 50.0), true),
+            ("(0.750, 1.000)", (150.0, 0.0), true),
+            ("(0.250, 1.000)", (50.0, 0.0), false),
+        ] {
+            let l = find(&c, text);
+            assert!(if right { l.1 > 200.0 } else { l.1 < 0.0 }, "{text} at x {}", l.1);
+            assert!((l.2 - corner.1).abs() < 0.01, "{text} at y {}", l.2);
+            let leader = doc.descendants().any(|n| {
+                let a = |k: &str| n.attribute(k).and_then(|v| v.parse::<f32>().ok());
+                n.attribute("class") == Some("leader")
+                    && a("x1") == Some(corner.0)
+                    && a("y1") == Some(corner.1)
+                    && a("y2") == Some(l.2)
+            });
+            assert!(leader, "no line from {corner:?} to {text}");
+        }
+        // Which ground corner gets which region corner: (0, 0) is the far left, at t₀ and s₀.
+        let g = texts(&svg, "ground-corner");
+        assert_eq!(g.len(), 4);
+        assert_at(&g, "ground (i, j) = (0, 0)", (find(&c, "(0.250, 0.500)").1, 50.0));
+        assert_at(&g, "ground (i, j) = (10, 10)", (find(&c, "(0.750, 1.000)").1, 0.0));
+        assert!(g.iter().chain(&c).all(|l| l.1 < 0.0 || l.1 > 200.0), "{g:?}");
         let ja = texture_svg(&t, "texture.png", Lang::Ja);
         assert!(texts(&ja, "title")[0].0.contains("下端"));
         let tex = texture_tikz(&t, "texture.png", Lang::En);
         assert_balanced(&tex);
+        assert!(tex.contains("ground (i, j) = (10, 0)"), "{tex}");
+        assert!(tex.contains("\\draw[red!80!black, thin] (0.250,0.500) -- (c0.east);"), "{tex}");
+        assert!(tex.contains("(c2) at (1.030,1.000)"), "{tex}");
         assert!(tex.contains("\\draw[red, thick] (0.250,0.500) rectangle (0.750,1.000);"), "{tex}");
         assert!(tex.contains("x=6.00cm, y=3.00cm"), "{tex}");
+    }
+
+    #[test]
+    fn a_sides_labels_that_would_overlap_are_pushed_apart_about_their_middle() {
+        assert_eq!(texture::spread([10.0, 50.0], 20.0), [10.0, 50.0]);
+        assert_eq!(texture::spread([12.0, 10.0], 20.0), [21.0, 1.0]);
+        assert_eq!(texture::spread([5.0, 5.0], 4.0), [3.0, 7.0]);
     }
 
     /// Compiles the TikZ figures and the LaTeX tables with LuaLaTeX (`ltjsarticle`, as the
