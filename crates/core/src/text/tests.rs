@@ -1,0 +1,239 @@
+use super::*;
+
+const REPORT: &str = "# レポート\r\n頂点 V0 (1, 0, 0)\r\n";
+
+fn utf16(s: &str, little: bool) -> Vec<u8> {
+    let mut out = if little { vec![0xFF, 0xFE] } else { vec![0xFE, 0xFF] };
+    for unit in s.encode_utf16() {
+        out.extend(if little { unit.to_le_bytes() } else { unit.to_be_bytes() });
+    }
+    out
+}
+
+fn shift_jis(s: &str) -> Vec<u8> {
+    let (bytes, _, unmappable) = encoding_rs::SHIFT_JIS.encode(s);
+    assert!(!unmappable, "{s:?} is all in Shift_JIS");
+    bytes.into_owned()
+}
+
+#[test]
+fn utf16_without_a_bom_is_recognised_by_its_zero_bytes() {
+    let bare = |little| utf16(REPORT, little)[2..].to_vec();
+    assert_eq!(decode(&bare(true), None), Ok((REPORT.to_owned(), Encoding::Utf16Le)));
+    assert_eq!(decode(&bare(false), None), Ok((REPORT.to_owned(), Encoding::Utf16Be)));
+    // UTF-8 and Shift_JIS have no zero bytes: never taken for UTF-16.
+    assert_eq!(utf16_without_bom(REPORT.as_bytes()), None);
+    assert_eq!(utf16_without_bom(&shift_jis(REPORT)), None);
+    // Kanji alone have no zero byte either: not recognised (named with --encoding).
+    let kanji = utf16("頂点法線", true)[2..].to_vec();
+    assert_eq!(utf16_without_bom(&kanji), None);
+    assert_eq!(utf16_without_bom(b"a"), None);
+}
+
+/// The same report in every encoding the kit reads: one text, its encoding named.
+#[test]
+fn every_encoding_decodes_to_the_same_text_and_names_itself() {
+    let mut bom = b"\xEF\xBB\xBF".to_vec();
+    bom.extend_from_slice(REPORT.as_bytes());
+    let sjis = shift_jis(REPORT);
+    assert_ne!(sjis, REPORT.as_bytes(), "premise: Shift_JIS bytes differ from UTF-8's");
+    let cases = [
+        (REPORT.as_bytes().to_vec(), Encoding::Utf8),
+        (bom, Encoding::Utf8Bom),
+        (utf16(REPORT, true), Encoding::Utf16Le),
+        (utf16(REPORT, false), Encoding::Utf16Be),
+        (sjis, Encoding::ShiftJis),
+    ];
+    for (bytes, encoding) in &cases {
+        assert_eq!(decode(bytes, None), Ok((REPORT.to_owned(), *encoding)), "{encoding}");
+        // The owned path (files) gives the same.
+        assert_eq!(decode_cow(Cow::Owned(bytes.clone()), None), Ok((REPORT.to_owned(), *encoding)));
+        // Forced to what it is, the same again.
+        let named = if *encoding == Encoding::Utf8Bom { Encoding::Utf8 } else { *encoding };
+        assert_eq!(decode(bytes, Some(named)), Ok((REPORT.to_owned(), *encoding)));
+    }
+    assert_eq!(decode(b"", None), Ok((String::new(), Encoding::Utf8)));
+}
+
+#[test]
+fn only_shift_jis_and_utf16_are_mentioned_in_a_summary() {
+    assert_eq!(Encoding::Utf8.read_as(), None);
+    assert_eq!(Encoding::Utf8Bom.read_as(), None);
+    let said = Encoding::ShiftJis.read_as().unwrap();
+    assert_eq!(said, Text::new("Shift_JIS として読みました", "read as Shift_JIS"));
+    assert_eq!(Encoding::Utf16Le.read_as().unwrap().en, "read as UTF-16LE");
+}
+
+/// Seeded bytes of every value (xorshift), and a Latin-1 text: neither UTF-8 nor Shift_JIS.
+#[test]
+fn binary_and_latin1_are_refused_with_the_place() {
+    let mut state = 0x9E37_79B9_7F4A_7C15_u64;
+    let random: Vec<u8> = (0..4096)
+        .map(|_| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state.to_le_bytes()[0]
+        })
+        .collect();
+    let e = decode(&random, None).unwrap_err();
+    assert!(matches!(e, DecodeError::Undetected { .. }), "{e}");
+
+    let (latin1, _, _) = encoding_rs::WINDOWS_1252.encode("Caf\u{e9} cr\u{e8}me\r\nna\u{ef}ve\r\n");
+    let e = decode(&latin1, None).unwrap_err();
+    assert_eq!(
+        e,
+        DecodeError::Undetected {
+            at: Place { line: 1, column: 4, offset: 3 },
+            nearest: Encoding::Utf8
+        }
+    );
+    let text = e.text();
+    assert!(text.en.contains("neither UTF-8 nor Shift_JIS"), "{}", text.en);
+    assert!(text.en.contains("line 1, column 4 (byte offset 3)"), "{}", text.en);
+    assert!(
+        text.en.contains("save the file as UTF-8") || text.en.contains("Save the file as UTF-8")
+    );
+    assert!(text.en.contains("`--encoding shift_jis`"), "{}", text.en);
+    assert!(text.ja.contains("1 行 4 文字目"), "{}", text.ja);
+    assert!(text.ja.contains("エンコード: UTF-8"), "{}", text.ja);
+    assert!(!e.text_without_option().en.contains("--encoding"));
+    assert!(!e.text_without_option().ja.contains("--encoding"));
+}
+
+/// Shift_JIS that breaks on line 2: the place is where Shift_JIS stops, not where UTF-8 did
+/// (at the first Japanese character).
+#[test]
+fn the_reading_that_gets_further_names_the_place() {
+    let mut bytes = shift_jis("# レポート\r\n頂点 ");
+    let offset = bytes.len();
+    bytes.push(0xFF);
+    bytes.extend_from_slice(b"V0\r\n");
+    let e = decode(&bytes, None).unwrap_err();
+    assert_eq!(
+        e,
+        DecodeError::Undetected {
+            at: Place { line: 2, column: 4, offset },
+            nearest: Encoding::ShiftJis
+        }
+    );
+    // Valid UTF-8 broken on line 3 after Japanese text: UTF-8's place, counted in characters.
+    let mut bytes = "一\n二\n三四".as_bytes().to_vec();
+    bytes.push(0xFF);
+    let e = decode(&bytes, None).unwrap_err();
+    assert_eq!(e.place(), Place { line: 3, column: 3, offset: bytes.len() - 1 });
+}
+
+#[test]
+fn a_bom_decides_and_broken_text_after_it_is_refused() {
+    // Odd length: half a UTF-16 code unit at the end.
+    let mut odd = utf16("ab\n", true);
+    odd.push(b'c');
+    let e = decode(&odd, None).unwrap_err();
+    assert_eq!(
+        e,
+        DecodeError::AfterBom {
+            encoding: Encoding::Utf16Le,
+            at: Place { line: 2, column: 1, offset: 8 }
+        }
+    );
+    assert!(e.text().ja.contains("UTF-16LE の BOM"), "{}", e.text().ja);
+    // An unpaired surrogate.
+    let e = decode(b"\xFE\xFF\x00a\xD8\x00\x00b", None).unwrap_err();
+    assert_eq!(e.place(), Place { line: 1, column: 2, offset: 4 });
+    // A UTF-8 BOM followed by Shift_JIS.
+    let mut mixed = b"\xEF\xBB\xBF".to_vec();
+    mixed.extend(shift_jis("頂点"));
+    let e = decode(&mixed, None).unwrap_err();
+    assert!(e.text().en.starts_with("the file starts with a UTF-8 byte-order mark, but"));
+    assert_eq!(
+        e,
+        DecodeError::AfterBom {
+            encoding: Encoding::Utf8Bom,
+            at: Place { line: 1, column: 1, offset: 3 }
+        }
+    );
+}
+
+#[test]
+fn a_named_encoding_skips_detection() {
+    let sjis = shift_jis(REPORT);
+    assert_eq!(
+        decode(&sjis, Some(Encoding::ShiftJis)),
+        Ok((REPORT.to_owned(), Encoding::ShiftJis))
+    );
+    // ASCII is valid Shift_JIS too: named, it is read as such.
+    assert_eq!(decode(b"V0\n", Some(Encoding::ShiftJis)), Ok(("V0\n".into(), Encoding::ShiftJis)));
+    // Shift_JIS named as UTF-8: refused where UTF-8 stops, naming the option.
+    let e = decode(&sjis, Some(Encoding::Utf8)).unwrap_err();
+    assert_eq!(
+        e,
+        DecodeError::NotInNamed {
+            encoding: Encoding::Utf8,
+            at: Place { line: 1, column: 3, offset: 2 }
+        }
+    );
+    assert!(e.text().en.contains("not UTF-8 as `--encoding` says"), "{}", e.text().en);
+    // A UTF-16 file named as Shift_JIS is read as Shift_JIS (0xFF is not Shift_JIS).
+    let e = decode(&utf16(REPORT, true), Some(Encoding::ShiftJis)).unwrap_err();
+    assert_eq!(e.place().offset, 0);
+    // UTF-8 named as UTF-16BE, odd length.
+    assert!(decode(b"abc", Some(Encoding::Utf16Be)).is_err());
+    // A UTF-16LE BOM is removed when UTF-16LE is named.
+    assert_eq!(
+        decode(&utf16("x", true), Some(Encoding::Utf16Le)),
+        Ok(("x".into(), Encoding::Utf16Le))
+    );
+}
+
+#[test]
+fn parses_the_command_line_names() {
+    for (s, e) in [
+        ("utf-8", Encoding::Utf8),
+        ("UTF8", Encoding::Utf8),
+        ("utf-16le", Encoding::Utf16Le),
+        ("UTF-16BE", Encoding::Utf16Be),
+        ("shift_jis", Encoding::ShiftJis),
+        ("Shift-JIS", Encoding::ShiftJis),
+        ("sjis", Encoding::ShiftJis),
+        ("cp932", Encoding::ShiftJis),
+        ("windows-31j", Encoding::ShiftJis),
+    ] {
+        assert_eq!(s.parse::<Encoding>(), Ok(e), "{s}");
+    }
+    let e = "latin1".parse::<Encoding>().unwrap_err();
+    assert!(e.to_string().contains("shift_jis") && e.to_string().contains("文字コード"));
+    assert!("utf-16".parse::<Encoding>().is_err(), "UTF-16 without its byte order is ambiguous");
+    for e in Encoding::ALL {
+        assert_eq!(e.to_string(), e.name());
+    }
+}
+
+/// Every message: one line in each language, Japanese in the Japanese one and none in the
+/// English one.
+#[test]
+fn messages_are_one_line_in_each_language() {
+    let at = Place { line: 3, column: 7, offset: 41 };
+    let errors = [
+        ReadError::Io { reason: "No such file or directory (os error 2)".into() },
+        ReadError::TooLarge { size: Some(70_000_000) },
+        ReadError::TooLarge { size: None },
+        ReadError::Decode(DecodeError::Undetected { at, nearest: Encoding::Utf8 }),
+        ReadError::Decode(DecodeError::AfterBom { encoding: Encoding::Utf16Be, at }),
+        ReadError::Decode(DecodeError::NotInNamed { encoding: Encoding::ShiftJis, at }),
+    ];
+    let japanese = |c: char| matches!(c, '\u{3000}'..='\u{30ff}' | '\u{4e00}'..='\u{9fff}' | '\u{ff00}'..='\u{ffef}');
+    for e in &errors {
+        for text in [e.text(), e.text_without_option()] {
+            for s in [&text.ja, &text.en] {
+                assert!(!s.contains(['\n', '\r', '\t']) && !s.contains("  "), "{s:?}");
+                assert_eq!(s.trim(), s, "{s:?}");
+            }
+            assert!(text.ja.chars().any(japanese), "{}", text.ja);
+            assert!(!text.en.chars().any(japanese), "{}", text.en);
+        }
+        assert_eq!(e.to_string(), e.text().en);
+    }
+    assert!(errors[1].text().en.contains("larger than 64 MiB (70000000 bytes)"));
+    assert!(errors[1].text().ja.contains("70000000 バイト"), "{}", errors[1].text().ja);
+}

@@ -1,0 +1,168 @@
+use super::*;
+
+#[test]
+fn a_changed_copy_of_the_kit_is_noticed_and_the_students_files_are_not_a_change() {
+    let kit = std::env::temp_dir().join(format!("cg-grade-slot-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&kit);
+    std::fs::create_dir_all(kit.join("exercises/src")).unwrap();
+    std::fs::create_dir_all(kit.join("crates/a1/src")).unwrap();
+    std::fs::write(kit.join("crates/a1/src/checks.rs"), "fn check() -> bool { x == y }").unwrap();
+    std::fs::write(kit.join("exercises/src/a1.rs"), "todo!()").unwrap();
+    let pristine = slot_content(&kit).unwrap();
+    // What each submission writes is not a change of the kit.
+    std::fs::write(kit.join("exercises/src/a1.rs"), "// the next student's").unwrap();
+    std::fs::write(kit.join("exercises/student.toml"), "student = \"1\"").unwrap();
+    assert_eq!(slot_content(&kit).unwrap(), pristine);
+    // A run that patched a check (the attack without bubblewrap), added a file or a link:
+    // each is noticed.
+    std::fs::write(kit.join("crates/a1/src/checks.rs"), "fn check() -> bool { true }").unwrap();
+    assert_ne!(slot_content(&kit).unwrap(), pristine);
+    std::fs::write(kit.join("crates/a1/src/checks.rs"), "fn check() -> bool { x == y }").unwrap();
+    assert_eq!(slot_content(&kit).unwrap(), pristine);
+    std::fs::write(kit.join("exercises/src/lib.rs"), "mod evil;").unwrap();
+    assert_ne!(slot_content(&kit).unwrap(), pristine);
+    std::fs::remove_file(kit.join("exercises/src/lib.rs")).unwrap();
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::symlink("/etc/passwd", kit.join("crates/a1/src/link.rs")).unwrap();
+        assert_ne!(slot_content(&kit).unwrap(), pristine);
+    }
+    let _ = std::fs::remove_dir_all(&kit);
+}
+
+#[test]
+fn grading_without_bubblewrap_is_refused_unless_asked_for() {
+    assert_eq!(require_isolation(Isolation::Bubblewrap, false), Ok(()));
+    let why = require_isolation(Isolation::Limits, false).unwrap_err();
+    assert!(why.en.contains("apt-get install bubblewrap"), "{}", why.en);
+    assert!(why.en.contains("--unsafe-no-sandbox") && why.ja.contains("--unsafe-no-sandbox"));
+    assert_eq!(require_isolation(Isolation::Limits, true), Ok(()));
+}
+
+/// Options for [`collect`] alone, of the submissions in `root/subs`.
+fn collect_options(root: &Path, roster: Option<roster::Roster>) -> Options {
+    test_options(root, &root.join("subs"), roster)
+}
+
+#[test]
+fn the_roster_binds_entries_and_flags_the_rest() {
+    let root = std::env::temp_dir().join(format!("cg-grade-roster-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&root);
+    let subs = root.join("subs");
+    // "a" claims another student's number; the Moodle folder is bound by its participant
+    // ID; "c" is not on the roster.
+    for (entry, number) in [
+        ("a", "20260001"),
+        ("Taro Yamada_777_assignsubmission_file_", "20260002"),
+        ("c", "20260004"),
+    ] {
+        let ex = subs.join(entry).join("exercises");
+        std::fs::create_dir_all(ex.join("src")).unwrap();
+        std::fs::write(ex.join("student.toml"), format!("student = \"{number}\"\n")).unwrap();
+    }
+    let roster = roster::Roster::parse(
+        "student,name,entry\n20260009,A,a\n20260002,山田 太郎,777\n20260003,Absent,z.zip\n",
+    )
+    .unwrap();
+    let options = collect_options(&root, Some(roster));
+    let pending = collect(&options, "kit").unwrap();
+    let got: Vec<(&str, &str, Option<result::RosterMark>)> =
+        pending.iter().map(|p| (p.entry.as_str(), p.name.as_str(), p.roster.clone())).collect();
+    let mark = |listed, name: Option<&str>, claimed: Option<&str>| {
+        Some(result::RosterMark {
+            listed,
+            name: name.map(str::to_owned),
+            claimed: claimed.map(str::to_owned),
+        })
+    };
+    assert_eq!(
+        got,
+        [
+            (
+                "Taro Yamada_777_assignsubmission_file_",
+                "20260002",
+                mark(true, Some("山田 太郎"), None)
+            ),
+            ("a", "20260009", mark(true, Some("A"), Some("20260001"))),
+            ("c", "20260004", mark(false, None, None)),
+        ]
+    );
+    // The variant graded is the roster's student's.
+    let a = pending.iter().find(|p| p.entry == "a").unwrap();
+    assert_eq!(a.files.as_ref().unwrap().1.student.to_string(), "20260009");
+    // The summary lists the claim, the unlisted entry and the absent student.
+    let results: Vec<serde_json::Value> = pending
+        .iter()
+        .map(|p| {
+            let meta = result::Meta {
+                entry: &p.entry,
+                student: Some(p.name.as_str()),
+                hash: "",
+                isolation: Isolation::Bubblewrap,
+                same_number: &[],
+                roster: p.roster.as_ref(),
+                total: std::time::Duration::ZERO,
+            };
+            result::build(&meta, &result::Facts::default(), &Config::default(), Lang::En)
+        })
+        .collect();
+    let md = result::summary_md(&results, &[("20260003".into(), "Absent".into())], Lang::En);
+    for needle in [
+        "## Against the roster",
+        "- c (20260004)",
+        "- a: student.toml claims 20260001, the roster says 20260009 (A)",
+        "- 20260003 Absent",
+    ] {
+        assert!(md.contains(needle), "{needle:?} missing from:\n{md}");
+    }
+    let _ = std::fs::remove_dir_all(&root);
+}
+
+#[test]
+fn entries_that_claim_one_number_are_all_flagged_and_none_takes_the_file() {
+    let root = std::env::temp_dir().join(format!("cg-grade-claims-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&root);
+    let subs = root.join("subs");
+    // "00-impostor" sorts before the real student's entry and claims their number.
+    for (entry, number) in
+        [("00-impostor", "20260001"), ("20260001-taro", "20260001"), ("b", "20260002")]
+    {
+        let ex = subs.join(entry).join("exercises");
+        std::fs::create_dir_all(ex.join("src")).unwrap();
+        std::fs::write(ex.join("student.toml"), format!("student = \"{number}\"\n")).unwrap();
+        std::fs::write(ex.join("src/a1.rs"), format!("// {entry}")).unwrap();
+    }
+    let options = collect_options(&root, None);
+    let pending = collect(&options, "kit").unwrap();
+    let names: Vec<(&str, &str, Vec<String>)> = pending
+        .iter()
+        .map(|p| (p.entry.as_str(), p.name.as_str(), p.same_number.clone()))
+        .collect();
+    assert_eq!(
+        names,
+        [
+            ("00-impostor", "20260001~00-impostor", vec!["20260001-taro".to_owned()]),
+            ("20260001-taro", "20260001~20260001-taro", vec!["00-impostor".to_owned()]),
+            ("b", "20260002", vec![]),
+        ]
+    );
+    let _ = std::fs::remove_dir_all(&root);
+}
+
+#[test]
+fn entry_names_become_file_names() {
+    assert_eq!(file_name("../a b.zip"), "_a_b.zip");
+    assert_eq!(file_name(""), "_");
+}
+
+#[test]
+fn hashes_are_stable_and_length_prefixed() {
+    let mut a = Hasher::default();
+    a.add(b"ab");
+    a.add(b"c");
+    let mut b = Hasher::default();
+    b.add(b"a");
+    b.add(b"bc");
+    assert_ne!(a.hex(), b.hex());
+    assert_eq!(Hasher::default().hex(), "cbf29ce484222325");
+}
