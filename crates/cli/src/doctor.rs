@@ -706,6 +706,53 @@ fn lavapipe() -> Option<PathBuf> {
     found.into_iter().next()
 }
 
+/// The Vulkan drivers the loader is told about on Linux: the manifests in its standard folders,
+/// Mesa's lavapipe left out (`nvidia_icd.json`, `radeon_icd.x86_64.json`).
+// platform: the Linux loader's folders; elsewhere they are not there and the list is empty.
+fn listed_drivers() -> Vec<String> {
+    let mut names: Vec<String> = ["/usr/share/vulkan/icd.d", "/etc/vulkan/icd.d"]
+        .iter()
+        .filter_map(|d| std::fs::read_dir(d).ok())
+        .flatten()
+        .filter_map(|e| e.ok().map(|e| e.file_name().to_string_lossy().into_owned()))
+        .filter(|n| n.ends_with(".json") && !n.starts_with("lvp_icd."))
+        .collect();
+    names.sort();
+    names.dedup();
+    names
+}
+
+/// The fix when drivers are listed and still no adapter comes: the driver's own library lacks
+/// Vulkan (a container given the GPU for computing only, or a driver older than the loader).
+fn listed_but_silent(listed: &[String]) -> Option<Text> {
+    if listed.is_empty() {
+        return None;
+    }
+    let names = listed.join(", ");
+    let nvidia = listed.iter().any(|n| n.contains("nvidia"));
+    let container = if nvidia {
+        t(
+            "コンテナの中なら、GPU をグラフィックス用にも渡します（NVIDIA: NVIDIA_DRIVER_CAPABILITIES=graphics,compute,utility）",
+            "in a container, give it the GPU for graphics too (NVIDIA: NVIDIA_DRIVER_CAPABILITIES=graphics,compute,utility)",
+        )
+    } else {
+        t(
+            "コンテナの中なら、GPU をグラフィックス用にも渡します",
+            "in a container, give it the GPU for graphics too",
+        )
+    };
+    Some(Text::new(
+        format!(
+            "Vulkan ドライバ（{names}）は登録されていますが、アダプタを返しません。ドライバを入れ直すか更新します。{}",
+            container.ja
+        ),
+        format!(
+            "a Vulkan driver is listed ({names}) but gives no adapter: reinstall or update it; {}",
+            container.en
+        ),
+    ))
+}
+
 /// What to do when there is no adapter, for this system.
 fn no_adapter_fixes(r: &Report, wsl: Option<Wsl>, broken_variable: bool) -> Vec<String> {
     let mut fixes = Vec::new();
@@ -725,6 +772,9 @@ fn no_adapter_fixes(r: &Report, wsl: Option<Wsl>, broken_variable: bool) -> Vec<
             "install the newest driver from your GPU's maker (Intel, AMD, NVIDIA): it includes Vulkan. Virtual machines and remote desktops may have no Vulkan",
         ))),
         _ => {
+            if let Some(fix) = listed_but_silent(&listed_drivers()) {
+                fixes.push(r.words(fix));
+            }
             fixes.push(r.words(t(
                 "Debian・Ubuntu: sudo apt install mesa-vulkan-drivers libvulkan1（GPU がなくても Mesa の lavapipe が CPU で動きます）。Fedora: sudo dnf install mesa-vulkan-drivers、Arch: sudo pacman -S vulkan-swrast",
                 "Debian, Ubuntu: sudo apt install mesa-vulkan-drivers libvulkan1 (without a GPU, Mesa's lavapipe runs on the CPU); Fedora: sudo dnf install mesa-vulkan-drivers; Arch: sudo pacman -S vulkan-swrast",
@@ -967,5 +1017,16 @@ mod tests {
         assert_eq!(local_x_display(":12.0"), Some(12));
         assert_eq!(local_x_display("localhost:10.0"), None);
         assert_eq!(local_x_display(""), None);
+    }
+
+    #[test]
+    fn a_listed_driver_that_gives_no_adapter_is_named_with_its_likely_cause() {
+        assert!(listed_but_silent(&[]).is_none());
+        let nvidia = listed_but_silent(&["nvidia_icd.json".to_owned()]).unwrap();
+        assert!(nvidia.en.contains("(nvidia_icd.json)"), "{}", nvidia.en);
+        assert!(nvidia.en.contains("NVIDIA_DRIVER_CAPABILITIES=graphics"), "{}", nvidia.en);
+        assert!(nvidia.ja.contains("NVIDIA_DRIVER_CAPABILITIES=graphics"), "{}", nvidia.ja);
+        let amd = listed_but_silent(&["radeon_icd.x86_64.json".to_owned()]).unwrap();
+        assert!(!amd.en.contains("NVIDIA"), "{}", amd.en);
     }
 }
