@@ -361,3 +361,66 @@ fn check_runs_on_a_report_file_and_names_the_line() {
     let _ = std::fs::remove_dir_all(&dir);
     let _: &Path = &dir;
 }
+
+/// The filled LaTeX report, in both languages, fits its page: LuaLaTeX reports no line, table or
+/// figure wider than the text (an `Overfull \hbox` over 1 pt). The pictures are left out (each
+/// `\includegraphics` becomes a box): their width is the template's. Where LuaLaTeX is not
+/// installed this passes with a note; CI installs it.
+#[test]
+fn the_filled_latex_report_fits_the_page_in_both_languages() {
+    let found = std::process::Command::new("lualatex")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !found {
+        assert!(std::env::var_os("CI").is_none(), "CI installs LuaLaTeX (scripts/setup.sh)");
+        eprintln!("note: lualatex is not on PATH; the page width is not checked here");
+        return;
+    }
+    let student = STUDENTS[0];
+    let a = assignment(student);
+    let (derived, _) = derive::derive(&a, &impls());
+    let ctx = Context { student: Some(student.to_owned()), ..Context::default() };
+    for lang in [Lang::En, Lang::Ja] {
+        let text = template::fill(
+            template::template(lang, Format::Latex),
+            &fill::values(&derived, &ctx, lang, Format::Latex),
+        )
+        .unwrap();
+        let mut tex = String::new();
+        let mut rest = text.as_str();
+        while let Some(at) = rest.find("\\includegraphics") {
+            tex.push_str(&rest[..at]);
+            let after = &rest[at..];
+            let end = after.find('}').map_or(after.len(), |e| e + 1);
+            tex.push_str("\\fbox{image}");
+            rest = &after[end..];
+        }
+        tex.push_str(rest);
+        let dir = scratch(&format!("width-{lang}"));
+        std::fs::write(dir.join("report.tex"), tex).unwrap();
+        let out = std::process::Command::new("lualatex")
+            .args(["-interaction=nonstopmode", "-halt-on-error", "report.tex"])
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        let log = std::fs::read_to_string(dir.join("report.log")).unwrap_or_default();
+        assert!(
+            out.status.success(),
+            "{lang}: lualatex failed:\n{}",
+            &log[log.len().saturating_sub(3000)..]
+        );
+        let wide: Vec<&str> = log
+            .lines()
+            .filter(|l| l.starts_with("Overfull \\hbox ("))
+            .filter(|l| {
+                l["Overfull \\hbox (".len()..]
+                    .split("pt")
+                    .next()
+                    .and_then(|n| n.parse::<f64>().ok())
+                    .is_some_and(|pt| pt > 1.0)
+            })
+            .collect();
+        assert!(wide.is_empty(), "{lang}: wider than the page:\n{}", wide.join("\n"));
+    }
+}

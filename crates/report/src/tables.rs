@@ -225,8 +225,8 @@ pub fn face_table(p: &PolygonData, lang: Lang, format: Format) -> String {
         .collect();
     let mut header = vec![
         t("面", "face"),
-        t("頂点（外側から見て反時計回り）", "vertices (counter-clockwise from outside)"),
-        t("法線（頂点から導出）", "normal (derived from the vertices)"),
+        t("頂点（外側から見て反時計回り）", "vertices (CCW from outside)"),
+        t("法線（頂点から導出）", "normal (from the vertices)"),
     ];
     let spec = if with_notes {
         header.push(t("注", "note"));
@@ -256,27 +256,84 @@ fn math_block(lines: &[String], format: Format) -> String {
     }
 }
 
-/// Groups of at most three factors per line for LaTeX (a page is not wide enough for more);
+/// The widest a line of factors may be, in [`math_width`]'s characters: about the text width
+/// of an A4 page at 11 pt, less the margins of a display.
+const LINE_WIDTH: usize = 62;
+
+/// About how wide a `pmatrix` is set, in characters: each column as wide as its widest entry
+/// (commands such as `\mathit{…}` and `\cos` counted by what they print), two characters
+/// between columns and three for the parentheses.
+fn math_width(pmatrix: &str) -> usize {
+    let body =
+        pmatrix.trim().trim_start_matches("\\begin{pmatrix}").trim_end_matches("\\end{pmatrix}");
+    let printed = |cell: &str| {
+        let mut n = 0;
+        let mut chars = cell.trim().chars().peekable();
+        while let Some(c) = chars.next() {
+            match c {
+                '{' | '}' => {}
+                '\\' => {
+                    let mut name = String::new();
+                    while let Some(&d) = chars.peek().filter(|d| d.is_ascii_alphabetic()) {
+                        name.push(d);
+                        chars.next();
+                    }
+                    // A font command prints its argument; a function name prints itself.
+                    if !matches!(name.as_str(), "mathit" | "mathrm" | "left" | "right" | "") {
+                        n += name.len().min(3);
+                    }
+                }
+                _ => n += 1,
+            }
+        }
+        n
+    };
+    let rows: Vec<Vec<usize>> =
+        body.split("\\\\").map(|r| r.split('&').map(printed).collect()).collect();
+    let columns = rows.iter().map(Vec::len).max().unwrap_or(0);
+    let widths: usize = (0..columns)
+        .map(|c| rows.iter().filter_map(|r| r.get(c)).max().copied().unwrap_or(0))
+        .sum();
+    widths + 2 * columns.saturating_sub(1) + 3
+}
+
+/// For LaTeX, the factors on as few lines as fit the page ([`LINE_WIDTH`], at most three a line);
 /// Markdown keeps one factor per line in a single block.
 fn factor_lines(parts: Vec<String>, format: Format) -> Vec<String> {
-    match format {
-        Format::Markdown => parts,
-        Format::Latex if parts.len() <= 3 => parts,
-        Format::Latex => {
-            let chunks: Vec<String> = parts.chunks(3).map(|c| c.join("\n")).collect();
-            let mut lines = vec!["\\begin{gathered}".to_owned()];
-            lines.push(chunks.join(" \\\\\n"));
-            lines.push("\\end{gathered}".to_owned());
-            lines
+    if format == Format::Markdown {
+        return parts;
+    }
+    let mut lines: Vec<Vec<String>> = Vec::new();
+    let mut width = 0;
+    for part in parts {
+        let w = math_width(&part);
+        match lines.last_mut() {
+            Some(line) if line.len() < 3 && width + w <= LINE_WIDTH => {
+                line.push(part);
+                width += w;
+            }
+            _ => {
+                lines.push(vec![part]);
+                width = w;
+            }
         }
     }
+    if lines.len() <= 1 {
+        return lines.into_iter().flatten().collect();
+    }
+    let chunks: Vec<String> = lines.iter().map(|l| l.join("\n")).collect();
+    vec!["\\begin{gathered}".to_owned(), chunks.join(" \\\\\n"), "\\end{gathered}".to_owned()]
 }
 
 /// A product's label in running text: `` `T(0, 1, 0) · Rx(30°)` `` or `\texttt{…}`.
 fn product_text(label: &str, format: Format) -> String {
     match format {
         Format::Markdown => format!("`{}`", label.replace('`', "'")),
-        Format::Latex => format!("\\texttt{{{}}}", tex_text(label)),
+        // A break may follow each `·`: a long product wraps instead of running into the margin.
+        Format::Latex => format!(
+            "\\texttt{{{}}}",
+            tex_text(label).replace("\\(\\cdot\\)", "\\(\\cdot\\)\\allowbreak{}")
+        ),
     }
 }
 
@@ -437,7 +494,8 @@ pub fn tex_table(tex: &TextureData, lang: Lang, format: Format) -> String {
                     r.i.to_string(),
                     r.j.to_string(),
                     format!("${}$", tuple3(r.position)),
-                    format!("${}$", coords.join(" / ")),
+                    // Each pair its own formula, so a vertex with several wraps in its column.
+                    coords.iter().map(|c| format!("${c}$")).collect::<Vec<_>>().join(" / "),
                 ],
             }
         })
@@ -447,16 +505,21 @@ pub fn tex_table(tex: &TextureData, lang: Lang, format: Format) -> String {
             "i".into(),
             "j".into(),
             t("頂点の位置 (x, y, z)", "vertex position (x, y, z)"),
-            t("テクスチャ座標 (s, tex)", "texture coordinates (s, tex)"),
+            t("テクスチャ座標 (s, t)", "texture coordinates (s, t)"),
         ],
         Format::Latex => [
             "$i$".into(),
             "$j$".into(),
             t("頂点の位置 $(x, y, z)$", "vertex position $(x, y, z)$"),
-            t("テクスチャ座標 $(s, tex)$", "texture coordinates $(s, tex)$"),
+            t("テクスチャ座標 $(s, t)$", "texture coordinates $(s, t)$"),
         ],
     };
-    table(format, "rrll", &header, lang, &rows)
+    let body = table(format, "rrlp{0.3\\linewidth}", &header, lang, &rows);
+    match format {
+        Format::Markdown => body,
+        // Set small and close: a vertex shared by squares with other coordinates has several.
+        Format::Latex => format!("{{\\small\\setlength{{\\tabcolsep}}{{4pt}}\n{body}}}\n"),
+    }
 }
 
 /// The formula in i and j (in words, from the data) and the mapped rectangle in texture

@@ -292,7 +292,7 @@ fn texture_figure_outlines_the_region_at_its_pixels() {
     assert!(tex.contains("\\draw[red!80!black, thin] (0.250,0.500) -- (c0.east);"), "{tex}");
     assert!(tex.contains("(c2) at (1.030,1.000)"), "{tex}");
     assert!(tex.contains("\\draw[red, thick] (0.250,0.500) rectangle (0.750,1.000);"), "{tex}");
-    assert!(tex.contains("x=6.00cm, y=3.00cm"), "{tex}");
+    assert!(tex.contains("x=5.00cm, y=2.50cm"), "{tex}");
 }
 
 #[test]

@@ -227,16 +227,22 @@ pub fn texture_svg(t: &TextureData, image_href: &str, lang: Lang) -> String {
 }
 
 /// A TikZ picture of the texture figure: the image (`image_path`, for `\includegraphics`)
-/// 6 cm on its longer side, with the axes' unit vectors set to the image's width and height so
+/// 5 cm on its longer side, with the axes' unit vectors set to the image's width and height so
 /// that texture coordinates are the picture's coordinates (t = 0 at the bottom edge), the
 /// mapped rectangle outlined in red, and each corner's `(s, t)` and ground corner beside the
 /// image, joined to the corner by a line, as [`texture_svg`] draws them.
 #[must_use]
 pub fn texture_tikz(t: &TextureData, image_path: &str, lang: Lang) -> String {
     let (w, h) = (t.image.width.max(1) as f32, t.image.height.max(1) as f32);
-    let (cw, ch) = if w >= h { (6.0, 6.0 * h / w) } else { (6.0 * w / h, 6.0) };
+    // 5 cm, so that the labels beside it fit the text width.
+    let (cw, ch) = if w >= h { (5.0, 5.0 * h / w) } else { (5.0 * w / h, 5.0) };
     let mut s = String::new();
-    let _ = writeln!(s, "\\begin{{tikzpicture}}[x={}cm, y={}cm, font=\\small]", num(cw), num(ch));
+    let _ = writeln!(
+        s,
+        "\\begin{{tikzpicture}}[x={}cm, y={}cm, font=\\footnotesize]",
+        num(cw),
+        num(ch)
+    );
     let _ = writeln!(
         s,
         "\\node[anchor=south west, inner sep=0pt] at (0,0) {{\\includegraphics[width={}cm, height={}cm]{{{image_path}}}}};",
@@ -260,8 +266,8 @@ pub fn texture_tikz(t: &TextureData, image_path: &str, lang: Lang) -> String {
             fixed(hi.y)
         );
         let corners = [lo, Vec2::new(hi.x, lo.y), hi, Vec2::new(lo.x, hi.y)];
-        // Two lines of \small (about 0.9 cm) between a side's two labels, in picture units.
-        let gap = 0.95 / ch;
+        // Two lines of \footnotesize (about 0.8 cm) between a side's two labels, in picture units.
+        let gap = 0.8 / ch;
         let (left, right) = (lo.x.min(hi.x).min(0.0), lo.x.max(hi.x).max(1.0));
         for (side, pair) in SIDES.iter().enumerate() {
             let right_side = on_right([corners[0].x, corners[1].x], side);
@@ -276,10 +282,7 @@ pub fn texture_tikz(t: &TextureData, image_path: &str, lang: Lang) -> String {
                 let c = corners[k];
                 let ground = ground_label(t, c)
                     .map(|g| {
-                        format!(
-                            "\\\\\\footnotesize\\color{{black!70}}{}",
-                            latex_escape(g.get(lang))
-                        )
+                        format!("\\\\\\scriptsize\\color{{black!70}}{}", latex_escape(g.get(lang)))
                     })
                     .unwrap_or_default();
                 let _ = writeln!(

@@ -108,8 +108,9 @@ fn tagged_table(t: &Table, lang: Lang, format: Format, shown: &mut Vec<String>) 
         Format::Markdown => tag + &body,
         // Set small and close, so that the numbers the student writes fit the page.
         Format::Latex => {
-            let size = if t.columns.len() > 4 { "\\footnotesize" } else { "\\small" };
-            format!("{tag}{{{size}\\setlength{{\\tabcolsep}}{{4pt}}\n{body}}}\n")
+            let (size, sep) =
+                if t.columns.len() > 4 { ("\\footnotesize", 3) } else { ("\\small", 3) };
+            format!("{tag}{{{size}\\setlength{{\\tabcolsep}}{{{sep}pt}}\n{body}}}\n")
         }
     };
     let mut why: Vec<String> = Vec::new();
