@@ -35,6 +35,11 @@ fn assignment(student: &str) -> Variants {
 /// The filled Markdown report of a correct student, with its derived data: as `cg report fill`
 /// writes it, each assignment's own text quoted in it.
 fn filled(student: &str, lang: Lang) -> (String, cg_report::model::Derived) {
+    filled_in(student, lang, Format::Markdown)
+}
+
+/// [`filled`] in `format`.
+fn filled_in(student: &str, lang: Lang, format: Format) -> (String, cg_report::model::Derived) {
     let a = assignment(student);
     let (derived, missing) = derive::derive(&a, &impls());
     assert!(missing.is_empty(), "{student}: the solutions derive everything: {missing:?}");
@@ -43,13 +48,27 @@ fn filled(student: &str, lang: Lang) -> (String, cg_report::model::Derived) {
         .filter(|w| w.in_report())
         .map(|&w| (w.id().to_owned(), a.describe_one(w, lang)))
         .collect();
-    let ctx = Context { student: Some(student.to_owned()), assignments, ..Context::default() };
+    let ctx = Context {
+        student: Some(student.to_owned()),
+        assignments,
+        variants: Some(a),
+        ..Context::default()
+    };
     let text = template::fill(
-        template::template(lang, Format::Markdown),
-        &fill::values(&derived, &ctx, lang, Format::Markdown),
+        template::template(lang, format),
+        &fill::values(&derived, &ctx, lang, format),
     )
     .unwrap();
     (text, derived)
+}
+
+/// The report checked as `cg report check` does: against the derived data and the assignment.
+fn check(
+    student: &str,
+    parsed: &parse::ParsedReport,
+    derived: &cg_report::model::Derived,
+) -> verify::Verification {
+    verify::verify_with(parsed, derived, Some(&assignment(student)))
 }
 
 fn scratch(test: &str) -> PathBuf {
@@ -110,18 +129,32 @@ fn a_filled_report_reads_back_and_every_number_follows_from_the_data() {
             );
             // The shading section: its six tables, each function's output filled in beside the
             // kit's (the point P given); the ✍ cells are the student's to write.
+            // The periods of a3 in the same notation, before them.
             let ids: Vec<&str> = parsed.tables.iter().map(|t| t.id.as_str()).collect();
-            assert_eq!(ids, cg_assign::cg_shading::report::TABLE_IDS, "{student} {lang}");
+            assert_eq!(ids[0], cg_report::periods::TABLE_ID, "{student} {lang}");
+            assert_eq!(ids[1..], cg_assign::cg_shading::report::TABLE_IDS, "{student} {lang}");
             let shading = shading_numbers(derived.s.as_ref().unwrap());
             assert!(shading > 40, "{student}: {shading} numbers of the student's functions");
-            let v = verify::verify(&parsed, &derived);
+            // The texture formula in i and j, both equations read.
+            assert_eq!(parsed.formulas.len(), 1, "{student} {lang}");
+            let formula = &parsed.formulas[0];
+            for name in ['s', 't'] {
+                let eq = formula.equation(name);
+                assert!(eq.is_some_and(|e| e.expr.is_ok()), "{student} {lang}: {formula:?}");
+            }
+            let v = check(student, &parsed, &derived);
             assert!(v.findings.is_empty(), "{student} {lang}: {:#?}", v.findings);
+            let notes: Vec<&str> = v.notes.iter().map(|n| n.en.as_str()).collect();
+            assert!(notes.is_empty(), "{student} {lang}: {notes:?}");
+            let periods = derived.a3.as_ref().unwrap().objects.len() + 1;
             let least = p.vertices.len() * 3
                 + p.faces.len() * 3
                 + 16 * parsed.matrices.len()
                 + 121 * 5
                 + 6
-                + shading;
+                + shading
+                + periods
+                + 2;
             assert!(
                 v.checked >= least,
                 "{student}: {} numbers checked, at least {least}",
@@ -162,6 +195,23 @@ fn plant(text: &str, line_start: &str, from: &str, to: &str) -> (String, usize) 
     }
     assert!(at > 0, "no line starting with {line_start:?} containing {from:?}");
     (out.join("\n"), at)
+}
+
+/// `text` with cell `k` (split at `sep`) of the first line that starts with `line_start`
+/// replaced by `to` of what it holds (trimmed); and the line.
+fn edit_cell(
+    text: &str,
+    line_start: &str,
+    sep: char,
+    k: usize,
+    to: impl Fn(&str) -> String,
+) -> (String, usize) {
+    let mut lines: Vec<String> = text.lines().map(str::to_owned).collect();
+    let at = lines.iter().position(|l| l.starts_with(line_start)).unwrap();
+    let mut cells: Vec<String> = lines[at].split(sep).map(str::to_owned).collect();
+    cells[k] = format!(" {} ", to(cells[k].trim()));
+    lines[at] = cells.join(&sep.to_string());
+    (lines.join("\n"), at + 1)
 }
 
 fn tuple_text(s: &str) -> Vec<f64> {
@@ -229,14 +279,34 @@ fn planted_mistakes_are_named_exactly_and_nothing_else() {
         let (text, _) =
             plant(&text, "| d = 10 |", "✍", &format!("1/(kc + 10·kl + 100·kq) = {at_10}"));
 
+        // 6. A wrong period: object 2's, one second more.
+        let (text, period_line) = edit_cell(&text, "| object 2 |", '|', 3, |p| {
+            format!("{} s", p.parse::<f64>().unwrap() + 1.0)
+        });
+
+        // 7. A wrong texture formula: s moved by 0.1 everywhere.
+        let (text, formula_line) = plant(&text, "s &= ", " \\\\", " + 0.1 \\\\");
+
         let (parsed, problems) = parse::parse_report(&text);
         assert!(problems.is_empty(), "{student}: {problems:?}");
-        let v = verify::verify(&parsed, &derived);
+        let v = check(student, &parsed, &derived);
         let mut found: Vec<(usize, String)> =
             v.findings.iter().map(|f| (f.line, f.item.clone())).collect();
         found.sort();
         let matrix_item = v.findings.iter().find(|f| f.item.starts_with(&id));
-        assert_eq!(v.findings.len(), 5, "{student}: exactly the five planted mistakes: {found:#?}");
+        assert_eq!(
+            v.findings.len(),
+            7,
+            "{student}: exactly the seven planted mistakes: {found:#?}"
+        );
+        assert!(
+            found.contains(&(period_line, "a3.periods object 2 (column 3)".to_owned())),
+            "{student}: {found:?}"
+        );
+        assert!(
+            found.contains(&(formula_line, "a4.formula s at (0, 0)".to_owned())),
+            "{student}: {found:?}"
+        );
         assert!(
             found.contains(&(shading_line, "s.attenuation d = 5 (column 3)".to_owned())),
             "{student}: {found:?}"
@@ -259,6 +329,46 @@ fn planted_mistakes_are_named_exactly_and_nothing_else() {
         }
         let normal = v.findings.iter().find(|f| f.item == "F1 normal").unwrap();
         assert!(normal.tolerance.is_some_and(|t| t > 0.0 && t <= 0.01), "{normal:?}");
+    }
+}
+
+#[test]
+fn a_filled_latex_report_checks_clean_too() {
+    for student in STUDENTS {
+        for lang in [Lang::Ja, Lang::En] {
+            let (text, derived) = filled_in(student, lang, Format::Latex);
+            let (parsed, _) = parse::parse_report(&text);
+            assert_eq!(parsed.formulas.len(), 1, "{student} {lang}");
+            assert!(parsed.tables.iter().any(|t| t.id == cg_report::periods::TABLE_ID));
+            let v = check(student, &parsed, &derived);
+            assert!(v.findings.is_empty(), "{student} {lang}: {:#?}", v.findings);
+            let notes: Vec<&str> = v
+                .notes
+                .iter()
+                .map(|n| n.en.as_str())
+                .filter(|n| n.contains("a3.periods") || n.contains("a4.formula"))
+                .collect();
+            assert!(notes.is_empty(), "{student} {lang}: {notes:?}");
+            // A wrong period and a wrong formula are named in LaTeX too.
+            let object = t("物体2 &", "object 2 &");
+            let object = object.get(lang);
+            let (text, period_line) = edit_cell(&text, object, '&', 2, |p| {
+                format!("${}$", p.trim_matches('$').parse::<f64>().unwrap() + 1.0)
+            });
+            let (text, formula_line) = plant(&text, "t &= ", "t &= ", "t &= 0.1 + ");
+            let (parsed, problems) = parse::parse_report(&text);
+            assert!(problems.is_empty(), "{student}: {problems:?}");
+            let v = check(student, &parsed, &derived);
+            let items: Vec<(usize, &str)> =
+                v.findings.iter().map(|f| (f.line, f.item.as_str())).collect();
+            let label = t("物体2", "object 2");
+            let period_item = format!("a3.periods {} (column 3)", label.get(lang));
+            assert_eq!(
+                items,
+                [(period_line, period_item.as_str()), (formula_line, "a4.formula t at (0, 0)")],
+                "{student} {lang}"
+            );
+        }
     }
 }
 
@@ -380,7 +490,8 @@ fn the_filled_latex_report_fits_the_page_in_both_languages() {
     let student = STUDENTS[0];
     let a = assignment(student);
     let (derived, _) = derive::derive(&a, &impls());
-    let ctx = Context { student: Some(student.to_owned()), ..Context::default() };
+    let ctx =
+        Context { student: Some(student.to_owned()), variants: Some(a), ..Context::default() };
     for lang in [Lang::En, Lang::Ja] {
         let text = template::fill(
             template::template(lang, Format::Latex),

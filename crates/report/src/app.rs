@@ -270,6 +270,7 @@ pub fn gather(source: &Source, kit: &Kit, lang: Lang) -> Result<Gathered, String
         assignments,
         renders: Vec::new(),
         missing,
+        variants: Some(a.clone()),
     };
     Ok(Gathered { derived, context, assignment: Some(a), read: Vec::new() })
 }
@@ -603,6 +604,6 @@ pub fn check(args: &CheckArgs, kit: &Kit, lang: Lang) -> Result<CheckOutcome, St
         return Ok(CheckOutcome { report, problems, verification, missing: Vec::new(), read });
     }
     let g = gather(&args.source, kit, lang)?;
-    let verification = verify::verify(&parsed, &g.derived);
+    let verification = verify::verify_with(&parsed, &g.derived, g.assignment.as_ref());
     Ok(CheckOutcome { report, problems, verification, missing: g.context.missing, read })
 }

@@ -9,7 +9,9 @@ use cg_core::lang::{Lang, t};
 
 use crate::derive::Missing;
 use crate::figures::{self, View};
+use crate::formula;
 use crate::model::Derived;
+use crate::periods;
 use crate::shading;
 use crate::tables;
 use crate::template::{Format, latex_escape, not_yet};
@@ -58,6 +60,9 @@ pub struct Context {
     pub renders: Vec<String>,
     /// What could not be derived, and why.
     pub missing: Vec<Missing>,
+    /// The student's assignment, when known: what follows from it alone (the periods of `a3`,
+    /// [`crate::periods`]) is filled from it, even while the student's functions are stubs.
+    pub variants: Option<cg_assign::Variants>,
 }
 
 /// "Not derived yet", naming the tasks of `part` (`a1`, …; `a1.t4` for one task) that are
@@ -189,22 +194,24 @@ pub fn values(
         }
     }
 
+    // The periods follow from the assignment alone: a tagged table that `report check` reads
+    // back; without the assignment, the derived part's words.
+    match (&ctx.variants, &derived.a3) {
+        (Some(a), _) => put("a3.periods", periods::values(&a.a3, lang, format)),
+        (None, Some(a)) => put("a3.periods", plain(a.periods.get(lang))),
+        (None, None) => put("a3.periods", missing_text(ctx, "a3", lang, format)),
+    }
     match &derived.a3 {
         Some(a) => {
-            put("a3.periods", plain(a.periods.get(lang)));
             let all: Vec<_> = a.objects.iter().flat_map(|(_, ms)| ms.iter().cloned()).collect();
             put("a3.matrices", tables::matrices(&all, lang, format));
         }
-        None => {
-            for k in ["a3.periods", "a3.matrices"] {
-                put(k, missing_text(ctx, "a3", lang, format));
-            }
-        }
+        None => put("a3.matrices", missing_text(ctx, "a3", lang, format)),
     }
 
     match &derived.a4 {
         Some(tex) => {
-            put("a4.formula", tables::formula(tex, lang, format));
+            put("a4.formula", formula::values(tex, lang, format));
             put("a4.table", tables::tex_table(tex, lang, format));
             put(
                 "a4.sampler",

@@ -12,6 +12,9 @@
 //!   the data, with the derived value and the tolerance used — [`parse`], [`verify`];
 //! - **fills** the report template (`report-template/`, Markdown and LaTeX, Japanese and
 //!   English) with the derived tables, figures and matrices — [`template`];
+//! - checks the periods of assignment 3 as a tagged table ([`periods`]) and the texture
+//!   formula of assignment 4, read as arithmetic in i and j and evaluated at every ground vertex
+//!   ([`formula`]);
 //! - does the same for the shading section's tables (assignment `s`: the light model, the light
 //!   types, vertex normals, refraction), each number next to the student's functions' output —
 //!   [`shading`].
@@ -20,8 +23,10 @@ pub mod app;
 pub mod derive;
 pub mod figures;
 pub mod fill;
+pub mod formula;
 pub mod model;
 pub mod parse;
+pub mod periods;
 pub mod shading;
 pub mod tables;
 pub mod template;

@@ -526,6 +526,11 @@ pub fn tex_table(tex: &TextureData, lang: Lang, format: Format) -> String {
 /// coordinates, `s ∈ [s₀, s₁], t ∈ [t₀, t₁]`.
 #[must_use]
 pub fn formula(tex: &TextureData, lang: Lang, format: Format) -> String {
+    formula_words(&tex.formula, tex, lang, format)
+}
+
+/// [`formula`] with `words` for the formula in words.
+pub(crate) fn formula_words(words: &Text, tex: &TextureData, lang: Lang, format: Format) -> String {
     let (lo, hi) = tex.region;
     let range = format!(
         "s \\in [{}, {}],\\ t \\in [{}, {}]",
@@ -540,9 +545,9 @@ pub fn formula(tex: &TextureData, lang: Lang, format: Format) -> String {
     );
     let label = label.get(lang);
     match format {
-        Format::Markdown => format!("{}\n\n{label}: ${range}$\n", tex.formula.get(lang)),
+        Format::Markdown => format!("{}\n\n{label}: ${range}$\n", words.get(lang)),
         Format::Latex => {
-            format!("{}\n\n{}: ${range}$\n", tex_text(tex.formula.get(lang)), tex_text(label))
+            format!("{}\n\n{}: ${range}$\n", tex_text(words.get(lang)), tex_text(label))
         }
     }
 }

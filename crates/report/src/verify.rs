@@ -8,11 +8,10 @@
 //! float noise) — see [`tolerance`]. So `0.49` and `0.48` pass for 0.4856, `0.53` does not, and
 //! `1` passes for 0.9995 but not for 0.53.
 //!
-//! [`verify`] checks a report against what the kit derived from the student's own program;
+//! [`verify`] checks a report against what the kit derived from the student's own program
+//! ([`verify_with`]: and against the student's assignment, for the periods of `a3`);
 //! [`verify_data`] against a vertex and face list alone (see [`crate::parse::polygon_from_text`]),
 //! where "outward" comes from the geometry of the closed model ([`face_outwardness`]).
-
-use std::collections::HashMap;
 
 use cg_core::glam::{DVec3, Mat4, Vec2, Vec3};
 use cg_core::lang::Lang;
@@ -101,6 +100,9 @@ fn item_ja(item: &str) -> String {
         if let Some(head) = out.strip_suffix(en) {
             out = format!("{head}{ja}");
         }
+    }
+    if let Some(k) = out.find(" at (") {
+        out = format!("{}（格子点 {}）", &out[..k], &out[k + 4..]);
     }
     if let Some(k) = out.find(" (column ") {
         let column = out[k + 9..].trim_end_matches(')').to_owned();
@@ -650,11 +652,24 @@ fn tables_missing(c: &mut Checker, report: &ParsedReport) {
 /// (a rotation is fine, the reverse order is one `F4 order` finding, other vertices one
 /// `F4 vertices` finding) and its written normal against the data's derived (outward) normal;
 /// tagged matrices entry by entry against the derived matrix with that ID (`a1.transform` is the
-/// polygon's transform); texture rows by (i, j): the position, and the coordinates as a set.
+/// polygon's transform); texture rows by (i, j): the position, and the coordinates as a set; the
+/// tagged shading tables ([`crate::shading`]); the texture formula of `a4`, evaluated at every
+/// ground vertex ([`crate::formula`]).
 /// Items the report leaves out are not findings; derived tables the report lacks altogether,
 /// rows for items the data does not have and unknown tags are `notes`.
 #[must_use]
 pub fn verify(report: &ParsedReport, derived: &Derived) -> Verification {
+    verify_with(report, derived, None)
+}
+
+/// [`verify`], and what follows from the student's `assignment` alone: the periods table of
+/// `a3` ([`crate::periods`]). Without the assignment a written periods table is a note.
+#[must_use]
+pub fn verify_with(
+    report: &ParsedReport,
+    derived: &Derived,
+    assignment: Option<&cg_assign::Variants>,
+) -> Verification {
     let mut c = Checker::default();
     match &derived.a1 {
         Some(p) => {
@@ -688,6 +703,8 @@ pub fn verify(report: &ParsedReport, derived: &Derived) -> Verification {
     }
     c.matrices(&report.matrices, derived);
     crate::shading::verify(&mut c, &report.tables, derived.s.as_ref());
+    crate::periods::verify(&mut c, &report.tables, assignment);
+    crate::formula::verify(&mut c, &report.formulas, derived.a4.as_ref());
     match &derived.a4 {
         Some(t) => {
             c.texture(&report.tex, t);
@@ -772,100 +789,9 @@ pub fn verify_data(polygon: &PolygonData, report: &ParsedReport) -> Verification
     c.finish()
 }
 
-/// Which way each face points in a closed model: `Some(true)` when its vertex order makes its
-/// normal point outward, `Some(false)` inward, `None` when it cannot be judged (the face is
-/// degenerate or names a missing vertex, or its connected part is not closed, not orientable or
-/// encloses no volume).
-///
-/// Faces are oriented consistently across shared edges within each connected part (two faces
-/// agree when they traverse their shared edge in opposite directions); the part's signed volume
-/// `Σ (a−o)·((b−o)×(c−o))/6` in f64 relative to the centroid `o` of its vertices then says which
-/// of the two consistent orientations is outward. So a single face wound the wrong way is named
-/// even in a non-convex model, and a model turned inside out has every face named. Never panics.
-#[must_use]
-pub fn face_outwardness(vertices: &[Vec3], faces: &[[u32; 3]]) -> Vec<Option<bool>> {
-    let usable: Vec<bool> = faces
-        .iter()
-        .map(|f| {
-            f.iter().all(|&k| vertices.get(k as usize).is_some_and(|p| p.is_finite()))
-                && f[0] != f[1]
-                && f[1] != f[2]
-                && f[0] != f[2]
-        })
-        .collect();
-    let key = |a: u32, b: u32| (a.min(b), a.max(b));
-    let mut edges: HashMap<(u32, u32), Vec<(usize, bool)>> = HashMap::new();
-    for (fi, f) in faces.iter().enumerate() {
-        if usable[fi] {
-            for e in 0..3 {
-                let (a, b) = (f[e], f[(e + 1) % 3]);
-                edges.entry(key(a, b)).or_default().push((fi, a < b));
-            }
-        }
-    }
-    let mut flip: Vec<Option<bool>> = vec![None; faces.len()];
-    let mut result = vec![None; faces.len()];
-    for seed in 0..faces.len() {
-        if flip[seed].is_some() || !usable[seed] {
-            continue;
-        }
-        flip[seed] = Some(false);
-        let mut part = vec![seed];
-        let mut queue = vec![seed];
-        let (mut closed, mut orientable) = (true, true);
-        while let Some(f) = queue.pop() {
-            let ff = flip[f].unwrap_or(false);
-            for e in 0..3 {
-                let (a, b) = (faces[f][e], faces[f][(e + 1) % 3]);
-                let Some(list) = edges.get(&key(a, b)) else { continue };
-                if list.len() != 2 {
-                    closed = false;
-                    continue;
-                }
-                let forward = a < b;
-                for &(g, g_forward) in list {
-                    if g == f {
-                        continue;
-                    }
-                    // g agrees with f when it runs the edge the other way (after both flips).
-                    let want = g_forward ^ !(forward ^ ff);
-                    match flip[g] {
-                        None => {
-                            flip[g] = Some(want);
-                            part.push(g);
-                            queue.push(g);
-                        }
-                        Some(x) if x != want => orientable = false,
-                        Some(_) => {}
-                    }
-                }
-            }
-        }
-        if !closed || !orientable {
-            continue;
-        }
-        let mut used: Vec<u32> = part.iter().flat_map(|&f| faces[f]).collect();
-        used.sort_unstable();
-        used.dedup();
-        let o = used.iter().map(|&k| vertices[k as usize].as_dvec3()).sum::<DVec3>()
-            / used.len() as f64;
-        let (mut volume, mut scale) = (0.0f64, 0.0f64);
-        for &f in &part {
-            let [a, b, c] = faces[f].map(|k| vertices[k as usize].as_dvec3() - o);
-            let v = if flip[f] == Some(true) { a.dot(c.cross(b)) } else { a.dot(b.cross(c)) };
-            volume += v;
-            scale += v.abs();
-        }
-        if volume.is_nan() || volume.abs() <= 1e-9 * scale {
-            continue;
-        }
-        for &f in &part {
-            let flipped = flip[f] == Some(true);
-            result[f] = Some(if volume > 0.0 { !flipped } else { flipped });
-        }
-    }
-    result
-}
+mod outward;
+
+pub use outward::face_outwardness;
 
 #[cfg(test)]
 mod tests;

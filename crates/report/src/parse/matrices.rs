@@ -108,8 +108,9 @@ impl Reader {
         let tags = self.tags(text, &line_starts);
         let mut seen: HashMap<String, usize> = HashMap::new();
         for (k, tag) in tags.iter().enumerate() {
-            // A shading table's tag: its table is read by `crate::shading`, not as a matrix.
-            if crate::shading::is_table_tag(&tag.id) {
+            // A table's tag (`crate::shading`) or the texture formula's (`crate::formula`): not a
+            // matrix.
+            if crate::shading::is_table_tag(&tag.id) || tag.id == crate::formula::TAG {
                 continue;
             }
             let region_end = tags.get(k + 1).map_or(text.len(), |t| t.start);

@@ -1,4 +1,5 @@
 use super::*;
+use cg_core::glam::Vec3;
 use proptest::prelude::*;
 
 fn values(w: &[Written]) -> Vec<f64> {

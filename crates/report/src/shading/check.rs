@@ -25,8 +25,25 @@ enum Written3 {
     Numbers(Vec<Written>),
 }
 
+/// `text` without a trailing unit of an angle or a time: `45°`, `45度`, `4 s`, `4秒`, `4 sec`,
+/// `4\,\mathrm{s}` (the thin space is gone already), `4~\text{s}`.
+fn without_unit(text: &str) -> &str {
+    let s = text.trim();
+    for latex in ["\\mathrm{s}", "\\text{s}", "\\textrm{s}", "\\text{秒}", "\\mathrm{sec}"] {
+        if let Some(head) = s.strip_suffix(latex) {
+            return head.trim_end_matches([' ', '~']).trim();
+        }
+    }
+    for unit in ["°", "度", "秒", "sec", "s"] {
+        if let Some(head) = s.strip_suffix(unit) {
+            return head.trim_end_matches([' ', '~']).trim();
+        }
+    }
+    s
+}
+
 /// A cell's value: the text after the last `=` or `≈` (a working that ends in its value), without
-/// `$`, `\(`, `\)`, backticks and a trailing `°`; one plain number, or numbers in `( )`, `{ }` or
+/// `$`, `\(`, `\)`, backticks and a trailing unit ([`without_unit`]); one plain number, or numbers in `( )`, `{ }` or
 /// `[ ]`.
 fn read_cell(text: &str) -> Written3 {
     if !text.chars().any(|c| c.is_ascii_digit()) {
@@ -38,7 +55,7 @@ fn read_cell(text: &str) -> Written3 {
     }
     let s: String = s.chars().filter(|c| !matches!(c, '$' | '`' | '*')).collect();
     let last = s.rsplit(['=', '≈']).next().unwrap_or("").trim();
-    let last = last.trim_end_matches(['°', '度']).trim();
+    let last = without_unit(last);
     let inner = [('(', ')'), ('{', '}'), ('[', ']')]
         .iter()
         .find_map(|&(open, close)| last.strip_prefix(open)?.strip_suffix(close));
@@ -173,11 +190,51 @@ fn chosen_point<'a>(written: &'a ParsedTable, kit: &Table) -> Option<(&'a Parsed
     None
 }
 
+/// Checks one written tagged table against the kit's `kit` (the same ID): each row found by its
+/// label, each cell where the kit's row has a value; a row whose label the kit does not know is a
+/// note when it holds numbers. Shared by every tagged table ([`crate::periods`] too).
+pub(crate) fn check_table(c: &mut Checker, table: &ParsedTable, kit: &Table) {
+    for row in &table.rows {
+        let Some(kit_row) = kit.rows.iter().find(|r| label_matches(&row.label, &r.label)) else {
+            if row.cells.iter().any(|t| matches!(read_cell(t), Written3::Numbers(_))) {
+                let known: Vec<&str> = kit.rows.iter().map(|r| r.label.en.as_str()).collect();
+                let known = known.join(", ");
+                c.note(
+                    format!(
+                        "{} 行目: 表 {} に `{}` という行はないので確かめていません（あるのは {known}）",
+                        row.line,
+                        table.id,
+                        clip(&row.label)
+                    ),
+                    format!(
+                        "line {}: table {} has no row `{}`, so it was not checked (rows: {known})",
+                        row.line,
+                        table.id,
+                        clip(&row.label)
+                    ),
+                );
+            }
+            continue;
+        };
+        for (k, kit_cell) in kit_row.cells.iter().enumerate().take(row.cells.len()) {
+            // The chosen point is read by `kit_for`; here only when it is not three numbers.
+            if matches!(kit_cell, Cell::Chosen(_))
+                && matches!(read_cell(&row.cells[k]), Written3::Numbers(ref n) if n.len() == 3)
+            {
+                continue;
+            }
+            if let Some(value) = kit_cell.kit() {
+                cell(c, &table.id, row, k, &value);
+            }
+        }
+    }
+}
+
 /// Checks the shading section's tables `written` against `data` (see the module); a table the
 /// report lacks, a row whose label the kit does not know, and tables without data are notes.
 pub(crate) fn verify(c: &mut Checker, written: &[ParsedTable], data: Option<&ShadingData>) {
     let Some(data) = data else {
-        if !written.is_empty() {
+        if written.iter().any(|t| TABLE_IDS.contains(&t.id.as_str())) {
             c.note(
                 "シェーディングのデータがないので、シェーディングの表は確かめていません",
                 "there is no shading data, so the shading tables were not checked",
@@ -188,42 +245,7 @@ pub(crate) fn verify(c: &mut Checker, written: &[ParsedTable], data: Option<&Sha
     for table in written {
         let Some(kit) = data.table(&table.id) else { continue };
         let kit = kit_for(c, table, kit, data);
-        for row in &table.rows {
-            let Some(kit_row) = kit.rows.iter().find(|r| label_matches(&row.label, &r.label))
-            else {
-                if row.cells.iter().any(|t| matches!(read_cell(t), Written3::Numbers(_))) {
-                    let known: Vec<&str> =
-                        kit.rows.iter().map(|r| r.label.en.as_str()).collect::<Vec<_>>();
-                    let known = known.join(", ");
-                    c.note(
-                        format!(
-                            "{} 行目: 表 {} に `{}` という行はないので確かめていません（あるのは {known}）",
-                            row.line,
-                            table.id,
-                            clip(&row.label)
-                        ),
-                        format!(
-                            "line {}: table {} has no row `{}`, so it was not checked (rows: {known})",
-                            row.line,
-                            table.id,
-                            clip(&row.label)
-                        ),
-                    );
-                }
-                continue;
-            };
-            for (k, kit_cell) in kit_row.cells.iter().enumerate().take(row.cells.len()) {
-                // The chosen point is read by `kit_for`; here only when it is not three numbers.
-                if matches!(kit_cell, Cell::Chosen(_))
-                    && matches!(read_cell(&row.cells[k]), Written3::Numbers(ref n) if n.len() == 3)
-                {
-                    continue;
-                }
-                if let Some(value) = kit_cell.kit() {
-                    cell(c, &table.id, row, k, &value);
-                }
-            }
-        }
+        check_table(c, table, &kit);
     }
     let missing: Vec<&str> =
         TABLE_IDS.iter().copied().filter(|id| !written.iter().any(|t| t.id == *id)).collect();

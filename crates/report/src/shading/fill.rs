@@ -70,7 +70,12 @@ fn cell(c: &Cell, lang: Lang, format: Format) -> String {
 
 /// The table after its tag, and a note naming what the student's functions did not give: each
 /// reason once in the section (`shown`: the reasons noted under the tables before this one).
-fn tagged_table(t: &Table, lang: Lang, format: Format, shown: &mut Vec<String>) -> String {
+pub(crate) fn tagged_table(
+    t: &Table,
+    lang: Lang,
+    format: Format,
+    shown: &mut Vec<String>,
+) -> String {
     let header: Vec<Text> = t
         .columns
         .iter()

@@ -13,12 +13,15 @@
 //! | α = 15° | 0.966 | 0.933 | 0.933 |                   a row: its label, then its cells
 //! ```
 //!
+//! The notation is shared: the periods of `a3` ([`crate::periods`]) are such a table too, written
+//! and checked by the same code ([`tagged_table`], [`check_table`]).
+//!
 //! A table is the run of rows (Markdown `| … |`, or LaTeX `… & … \\`) after its tag, up to the
 //! next tag, heading, blank line after the rows or `\end{…}`. A cell is checked when the kit's
 //! row has a number there and the cell holds digits: a plain number (`0.933`), three numbers in
 //! parentheses (`(0.577, 0.577, 0.577)`), or a working that ends in one (`1/√3 = 0.577`, the
-//! value after the last `=` or `≈`; a trailing `°` is allowed). A cell without digits (`✍`, `—`,
-//! `None`) is not checked. The point Q of `s.light.q` may be the student's own: the kit derives
+//! value after the last `=` or `≈`; a trailing unit `°`, `s` or `秒` is allowed). A cell without
+//! digits (`✍`, `—`, `None`) is not checked. The point Q of `s.light.q` may be the student's own: the kit derives
 //! that table from the Q written in it.
 
 use cg_assign::cg_shading::report::TABLE_IDS;
@@ -30,13 +33,15 @@ use crate::tables::tex_text;
 mod check;
 mod fill;
 
-pub(crate) use check::verify;
+pub(crate) use check::{check_table, verify};
+pub(crate) use fill::tagged_table;
 pub use fill::{KEYS, values};
 
-/// Whether `id` is the tag of a shading table (the matrix reader leaves those alone).
+/// Whether `id` is the tag of a table in this notation: a shading table, or the periods of `a3`
+/// ([`crate::periods::TABLE_ID`]), which share it (the matrix reader leaves those alone).
 #[must_use]
 pub fn is_table_tag(id: &str) -> bool {
-    TABLE_IDS.contains(&id)
+    TABLE_IDS.contains(&id) || id == crate::periods::TABLE_ID
 }
 
 /// One row of a tagged table as written.
@@ -62,7 +67,7 @@ pub struct ParsedTable {
 }
 
 /// The ID of a tag on `line` (`<!-- cg: ID -->` or `% cg: ID`), whatever the ID.
-fn tag_on(line: &str) -> Option<String> {
+pub(crate) fn tag_on(line: &str) -> Option<String> {
     if let Some(rest) = line.trim_start().strip_prefix('%')
         && let Some(id) = rest.trim_start().strip_prefix("cg:")
     {
@@ -75,7 +80,7 @@ fn tag_on(line: &str) -> Option<String> {
 }
 
 /// The cells of a table row: Markdown `| a | b |`, or LaTeX `a & b \\`.
-fn row_cells(line: &str) -> Option<Vec<String>> {
+pub(crate) fn row_cells(line: &str) -> Option<Vec<String>> {
     let trimmed = line.trim();
     if let Some(inner) = trimmed.strip_prefix('|') {
         let inner = inner.strip_suffix('|').filter(|i| !i.ends_with('\\')).unwrap_or(inner);
@@ -114,7 +119,7 @@ fn is_separator(cells: &[String]) -> bool {
 }
 
 /// Whether the line ends a table region: a heading.
-fn is_heading(line: &str) -> bool {
+pub(crate) fn is_heading(line: &str) -> bool {
     let t = line.trim_start();
     t.starts_with('#')
         || t.starts_with("\\section")
