@@ -20,12 +20,13 @@
 //!
 //! What it writes: `similarity.csv` and `similarity.html` ([`output`]).
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 
 use cg_core::lang::Text;
-use cg_harness::StudentNumber;
 
 pub mod compare;
+pub mod cross;
+pub mod groups;
 pub mod html;
 pub mod output;
 pub mod read;
@@ -34,6 +35,7 @@ pub mod variant;
 pub mod winnow;
 
 pub use compare::Region;
+pub use cross::{numbers, report_base};
 pub use variant::Finding;
 
 /// One submission as compared.
@@ -192,66 +194,6 @@ pub fn analyse(
         pairs,
         near,
         clusters,
-        cross: cross_variant(class, stubs),
+        cross: cross::cross_variant(class, stubs),
     }
-}
-
-/// The numbers of each part of a submission: its files' numeric literals (less the stub's) and
-/// its report's numbers.
-#[must_use]
-pub fn numbers(
-    submission: &Submission,
-    stubs: &BTreeMap<String, String>,
-) -> BTreeMap<String, BTreeSet<variant::Key>> {
-    let literals = |source: &str| -> BTreeSet<variant::Key> {
-        tokenize::tokens(source).iter().filter_map(|t| t.number.and_then(variant::key)).collect()
-    };
-    let mut out = BTreeMap::new();
-    for (module, source) in &submission.modules {
-        let given = stubs.get(module).map(|s| literals(s)).unwrap_or_default();
-        let mine: BTreeSet<variant::Key> = literals(source).difference(&given).copied().collect();
-        out.insert(module.clone(), mine);
-    }
-    if let Some(report) = &submission.report {
-        let found = variant::text_numbers(report);
-        for m in cg_grade::submission::MODULES {
-            out.insert(format!("{}{m}", variant::REPORT), found.clone());
-        }
-    }
-    out
-}
-
-/// The cross-variant findings of this year's submissions, against every variant of the class
-/// (references' included: a copy from an earlier year is found too).
-fn cross_variant(class: &[Submission], stubs: &BTreeMap<String, String>) -> Vec<Cross> {
-    let mut raw = BTreeMap::new();
-    for s in class {
-        if let Some(file) = &s.student {
-            raw.entry(file.student.clone())
-                .or_insert_with(|| variant::raw_numbers(&file.student, file.table));
-        }
-    }
-    if raw.len() < 2 {
-        return Vec::new();
-    }
-    let variants = variant::class_numbers(&raw);
-    let weights = variant::weights(&variants);
-    let mut out = Vec::new();
-    for (i, s) in class.iter().enumerate() {
-        let Some(file) = s.student.as_ref().filter(|_| !s.reference) else { continue };
-        for finding in variant::findings(&file.student, &numbers(s, stubs), &variants, &weights) {
-            let sources = sources_of(class, &finding.matches);
-            out.push(Cross { submission: i, finding, sources });
-        }
-    }
-    out
-}
-
-fn sources_of(class: &[Submission], student: &StudentNumber) -> Vec<usize> {
-    class
-        .iter()
-        .enumerate()
-        .filter(|(_, s)| s.student.as_ref().is_some_and(|f| &f.student == student))
-        .map(|(i, _)| i)
-        .collect()
 }

@@ -78,13 +78,21 @@ pub fn csv_text(class: &[Submission], analysis: &Analysis, lang: Lang) -> Result
             s.name.clone(),
             s.number(),
             c.sources.iter().map(|i| class[*i].name.clone()).collect::<Vec<_>>().join(" "),
-            f.matches.to_string(),
+            if f.ambiguous {
+                std::iter::once(&f.matches)
+                    .chain(&f.also)
+                    .map(ToString::to_string)
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            } else {
+                f.matches.to_string()
+            },
             format!("{:.2}", f.evidence),
             String::new(),
             String::new(),
             String::new(),
             String::new(),
-            f.part.clone(),
+            if f.ambiguous { format!("{} ambiguous", f.part) } else { f.part.clone() },
             cross_note(c, lang),
         ])
         .map_err(|e| e.to_string())?;
@@ -105,7 +113,15 @@ pub fn cross_note(c: &crate::Cross, lang: Lang) -> String {
     };
     let numbers: Vec<String> =
         f.numbers.iter().map(|(k, label)| format!("{} ({label})", variant::show(*k))).collect();
-    let also = if f.also.is_empty() {
+    let also = if f.ambiguous {
+        let list: Vec<String> = f.also.iter().map(ToString::to_string).collect();
+        Text::new(
+            format!(" どの学生の課題か判別できません（{} か {}）", f.matches, list.join("、")),
+            format!(" cannot tell whose: {} or {}", f.matches, list.join(", ")),
+        )
+        .get(lang)
+        .to_owned()
+    } else if f.also.is_empty() {
         String::new()
     } else {
         let list: Vec<String> = f.also.iter().map(ToString::to_string).collect();
