@@ -1,8 +1,13 @@
-//! The rasterizer against the kit's wgpu renderer on the same machine, in one run: the course
-//! scene at 640 × 640 on one thread (frames per second), and an icosphere of 1.3 M triangles at
-//! 1920 × 1080 with Phong shading, the CPU rasterizer on all cores against `cg_gpu::Gpu::render`
-//! (on Mesa's lavapipe where that is the Vulkan driver: the same cores). Prints `name value` lines
-//! and the ratios (docs/performance.md).
+//! The rasterizer against the kit's wgpu renderer on the same machine, in one run, both sides
+//! timed the same way: the scene made ready once (the CPU's [`cg_raster::Prepared`], the GPU's
+//! [`cg_gpu::Gpu::frame`]: buffers made and uploaded), then each timing draws the frame and reads
+//! it back, as a window redraws (the CPU into the last frame's colour and depth buffers,
+//! [`cg_raster::Prepared::draw_into`]; the GPU into its frame's depth buffer and a new target
+//! that it copies into host memory). Four rows: the course scene at 640 × 640 and an icosphere of
+//! 1.3 M triangles at 1920 × 1080, each in Gouraud and Phong shading, the CPU rasterizer on all
+//! cores against `cg_gpu` (on Mesa's lavapipe where that is the Vulkan driver: the same cores).
+//! Prints `name value` lines, the ratios, and the CPU's Phong/Gouraud ratio at 640 × 640
+//! (docs/performance.md).
 //!
 //! ```text
 //! VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json \
@@ -12,7 +17,8 @@
 use std::path::Path;
 use std::time::Instant;
 
-use cg_raster::{Options, render};
+use cg_core::scene::{Scene, Shading};
+use cg_raster::{Options, Prepared, SceneLighting};
 
 #[path = "../benches/common/mod.rs"]
 mod common;
@@ -30,37 +36,74 @@ fn best(repeats: usize, mut f: impl FnMut()) -> f64 {
         .fold(f64::INFINITY, f64::min)
 }
 
+/// One row: `scene` at `size` in `shading`, timed on the CPU and, when there is one, the GPU.
+/// Prints both and their ratio; gives the CPU's time.
+fn row(
+    name: &str,
+    scene: &Scene,
+    size: (u32, u32),
+    shading: Shading,
+    repeats: usize,
+    gpu: Option<&cg_gpu::Gpu>,
+) -> f64 {
+    let options = Options { shading: Some(shading), size: Some(size), ..Options::default() };
+    let ready = Prepared::new(scene, &options, &SceneLighting).expect("the scene is ready");
+    // Each frame drawn into the last one's buffers, as a window redraws.
+    let mut last = Some(ready.draw().expect("the CPU draws"));
+    let cpu = best(repeats, || {
+        let frame = ready.draw_into(last.take().expect("a frame")).expect("the CPU draws");
+        last = Some(std::hint::black_box(frame));
+    });
+    println!("{name}_cpu_ms {:.3}", cpu * 1e3);
+    if let Some(gpu) = gpu {
+        let options = cg_gpu::Options { shading: Some(shading), size: Some(size) };
+        let frame =
+            gpu.frame(scene, &options, cg_gpu::READBACK_FORMAT).expect("the GPU makes the frame");
+        let t = best(repeats, || {
+            std::hint::black_box(gpu.read_back(&frame).expect("the GPU draws"));
+        });
+        println!("{name}_gpu_ms {:.3}", t * 1e3);
+        println!("{name}_cpu_over_gpu {:.2}", cpu / t);
+    }
+    cpu
+}
+
 fn main() {
     let repeats: usize =
         std::env::args().nth(1).map_or(10, |r| r.parse().expect("REPEATS is a number"));
+    let gpu = match cg_gpu::Gpu::new() {
+        Ok(gpu) => {
+            println!("gpu_adapter {}", gpu.adapter_info());
+            Some(gpu)
+        }
+        Err(e) => {
+            println!("gpu_unavailable {e}");
+            None
+        }
+    };
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/scenes/course-sample.toml");
     let course = cg_scene::load(&path).expect("the course scene loads");
-    let one = Options { threads: Some(1), ..Options::default() };
+    let gouraud =
+        row("course_640_gouraud", &course, (640, 640), Shading::Gouraud, repeats * 5, gpu.as_ref());
+    let phong =
+        row("course_640_phong", &course, (640, 640), Shading::Phong, repeats * 5, gpu.as_ref());
+    println!("course_640_cpu_phong_over_gouraud {:.2}", phong / gouraud);
+    let sphere = icosphere_scene();
+    for (name, shading) in [("gouraud", Shading::Gouraud), ("phong", Shading::Phong)] {
+        row(
+            &format!("icosphere_1080p_{name}"),
+            &sphere,
+            (1920, 1080),
+            shading,
+            repeats,
+            gpu.as_ref(),
+        );
+    }
+    // One thread: the course scene's frame rate on a single core (the goal of issue 8).
+    let one = Options { threads: Some(1), size: Some((640, 640)), ..Options::default() };
+    let ready = Prepared::new(&course, &one, &SceneLighting).expect("the scene is ready");
     let t = best(repeats * 5, || {
-        std::hint::black_box(render(&course, &one).expect("the course scene renders"));
+        std::hint::black_box(ready.draw().expect("the course scene renders"));
     });
     println!("course_640_1thread_ms {:.3}\ncourse_640_1thread_fps {:.1}", t * 1e3, 1.0 / t);
-
-    let scene = icosphere_scene();
-    let all = Options::default();
-    let cpu = best(repeats, || {
-        std::hint::black_box(render(&scene, &all).expect("the icosphere renders"));
-    });
-    let cpu_one = best(repeats.div_ceil(2), || {
-        std::hint::black_box(render(&scene, &one).expect("the icosphere renders"));
-    });
-    println!("icosphere_1080p_cpu_all_cores_ms {:.2}", cpu * 1e3);
-    println!("icosphere_1080p_cpu_1thread_ms {:.2}", cpu_one * 1e3);
-    match cg_gpu::Gpu::new() {
-        Ok(gpu) => {
-            let options = cg_gpu::Options::default();
-            let t = best(repeats, || {
-                std::hint::black_box(gpu.render(&scene, &options).expect("the GPU renders"));
-            });
-            println!("gpu_adapter {}", gpu.adapter_info());
-            println!("icosphere_1080p_gpu_ms {:.2}", t * 1e3);
-            println!("ratio_cpu_over_gpu {:.2}", cpu / t);
-        }
-        Err(e) => println!("gpu_unavailable {e}"),
-    }
 }

@@ -37,6 +37,16 @@
 //! | `depth_test` | GL_LESS against a depth buffer cleared to 1, then the write (early: before shading; the same image) |
 //! | `fragment` | perspective-correct barycentrics for colour, normal, position and uv (uv less the integer [`cg_core::texture::Sampler::repeat_origin`] of the face's first corner, so coordinates near 1e6 keep their precision: docs/numerics.md row 23); Phong lights each pixel here; texture after lighting ([`cg_core::texture::TexEnv::apply`]); clamp to `[0, 1]` |
 //!
+//! The vertex stage also computes each vertex's outcodes and window position once, so a face
+//! whose corners are all inside is culled from three precomputed records, before its vertices
+//! are read. With the scene's own light model ([`SceneLighting`]) the lighting stage runs in
+//! spans of eight points — Gouraud's vertices, Phong's fragments in the order they pass the
+//! depth test — in structure-of-arrays form (`src/span.rs`, a copy compiled for AVX2 chosen at
+//! run time), operation for operation what [`cg_core::light::shade`] computes: the same bits
+//! (`tests/spans.rs` compares with the point-by-point path on every kind of light). A
+//! [`Prepared`] scene keeps its working memory between frames, and
+//! [`Prepared::draw_into`] redraws into the last frame's buffers.
+//!
 //! Triangles are set up once and binned; each tile is drawn by one task from start to end, its
 //! triangles in submission order, so the output is bit-identical for every thread count and tile
 //! size (a 160 × 160 image is 25 tasks of 32 × 32).
@@ -90,6 +100,7 @@ mod error;
 mod lighting;
 mod output;
 mod pipeline;
+mod span;
 
 use cg_core::glam::Vec2;
 use cg_core::scene::Scene;
@@ -121,14 +132,73 @@ pub fn render_with<L: Lighting + ?Sized>(
     options: &Options,
     lighting: &L,
 ) -> Result<Output, RenderError> {
-    match options.threads {
-        None | Some(0) => pipeline::draw(scene, options, lighting),
-        Some(threads) => {
-            let pool = rayon::ThreadPoolBuilder::new()
-                .num_threads(threads)
-                .build()
-                .map_err(|e| RenderError::Threads { threads, message: e.to_string() })?;
-            pool.install(|| pipeline::draw(scene, options, lighting))
+    Prepared::new(scene, options, lighting)?.draw()
+}
+
+/// A scene made ready to draw once — the frame fixed and every object prepared (shading normals,
+/// model matrix, material, texture) — and drawn as often as needed, as a window redraws: each
+/// [`Prepared::draw`] runs the pipeline from the vertex stage on and gives the image
+/// [`render_with`] gives.
+///
+/// ```
+/// use cg_raster::{Options, Prepared, SceneLighting};
+///
+/// let scene = cg_scene::load(std::path::Path::new("../../assets/scenes/course-sample.toml")).unwrap();
+/// let options = Options { size: Some((64, 64)), ..Options::default() };
+/// let ready = Prepared::new(&scene, &options, &SceneLighting).unwrap();
+/// let first = ready.draw().unwrap();
+/// assert_eq!(first, cg_raster::render(&scene, &options).unwrap());
+/// assert_eq!(first, ready.draw().unwrap());
+/// // Again into the first frame's buffers, as a window redraws.
+/// assert_eq!(ready.draw_into(first.clone()).unwrap(), first);
+/// ```
+pub struct Prepared<'s, L: Lighting + ?Sized> {
+    ready: pipeline::Ready<'s, L>,
+    pool: Option<rayon::ThreadPool>,
+}
+
+impl<'s, L: Lighting + ?Sized> Prepared<'s, L> {
+    /// Makes `scene` ready to draw with `options`, lit by `lighting`.
+    ///
+    /// # Errors
+    /// As [`render_with`], for everything but a non-finite vertex (found when drawing).
+    pub fn new(scene: &'s Scene, options: &Options, lighting: &'s L) -> Result<Self, RenderError> {
+        let pool = match options.threads {
+            None | Some(0) => None,
+            Some(threads) => Some(
+                rayon::ThreadPoolBuilder::new()
+                    .num_threads(threads)
+                    .build()
+                    .map_err(|e| RenderError::Threads { threads, message: e.to_string() })?,
+            ),
+        };
+        Ok(Prepared { ready: pipeline::Ready::new(scene, options, lighting)?, pool })
+    }
+
+    /// Draws the prepared scene.
+    ///
+    /// # Errors
+    /// [`RenderError::NonFinite`] naming the first vertex whose transformed position is not
+    /// finite.
+    pub fn draw(&self) -> Result<Output, RenderError> {
+        self.draw_reusing(None)
+    }
+
+    /// [`Prepared::draw`] into the colour and depth buffers of an earlier frame's `output`,
+    /// as a window redraws into its framebuffer: the same image, without allocating (and, for a
+    /// large image, without the operating system clearing fresh pages) on every frame. Buffers
+    /// of another size are replaced.
+    ///
+    /// # Errors
+    /// As [`Prepared::draw`].
+    pub fn draw_into(&self, output: Output) -> Result<Output, RenderError> {
+        self.draw_reusing(Some(output))
+    }
+
+    fn draw_reusing(&self, reuse: Option<Output>) -> Result<Output, RenderError> {
+        match &self.pool {
+            None => self.ready.draw(reuse),
+            Some(pool) => pool.install(|| self.ready.draw(reuse)),
         }
     }
 }

@@ -65,6 +65,14 @@ pub trait Lighting: Sync {
         let _ = counts;
         self.light(scene, point)
     }
+
+    /// Whether this is the scene's own light model, [`SceneLighting`], which the renderer then
+    /// evaluates for eight points at once (the same bits, see `src/span.rs`). Every other hook
+    /// is called point by point.
+    #[doc(hidden)]
+    fn is_scene_lighting(&self) -> bool {
+        false
+    }
 }
 
 /// The default lighting: the scene's light model ([`Scene::light_model`], its global ambient and
@@ -74,6 +82,10 @@ pub trait Lighting: Sync {
 pub struct SceneLighting;
 
 impl Lighting for SceneLighting {
+    fn is_scene_lighting(&self) -> bool {
+        true
+    }
+
     fn light(&self, scene: &Scene, point: &SurfacePoint<'_>) -> Rgb {
         self.light_counted(scene, point, &mut LightCounts::default())
     }

@@ -35,10 +35,12 @@ use cg_core::scene::{Prepared, Scene, Shading};
 use cg_core::texture::{Sampler, TexEnv, Texture};
 use cg_core::transform::transform_point;
 use rayon::prelude::*;
+use std::sync::Mutex;
 
 use crate::error::RenderError;
 use crate::lighting::{Lighting, SurfacePoint};
 use crate::output::{DEFAULT_TILE_SIZE, Options, Output, Stats};
+use crate::span::{self, Corners, LANES, PhongSpan, Points, SpanLights, V3, saturate};
 
 /// Bits of sub-pixel precision: window coordinates are snapped to multiples of `1/256` pixel
 /// (as Direct3D 10+ requires, and as Mesa's llvmpipe does) before the edge functions are set up.
@@ -82,6 +84,9 @@ struct Frame<'s, L: ?Sized> {
     features: Features,
     /// The guard band in NDC units along x and y (≥ 1).
     guard: Vec2,
+    /// The scene's lights made ready for lighting eight points at once, when `lighting` is the
+    /// scene's own light model ([`Lighting::is_scene_lighting`]).
+    spans: Option<SpanLights>,
 }
 
 /// One object made ready to draw.
@@ -142,10 +147,13 @@ struct Triangle {
     /// The corners' vertices (see [`NEW_VERTEX`]).
     slot: [u32; 3],
     /// Phong: the face normal in world space, the fallback of [`interpolate_normal`] (zero under
-    /// the other modes, which do not read it).
+    /// the other modes, which do not read it, and when the scene's own light model lights the
+    /// fragments eight at a time: that path makes it only where it is needed).
     face_normal: Vec3,
     /// Flat: the face's colour, clamped to `[0, 1]`.
     flat_color: Rgb,
+    /// The face it is (a part of), in its object's prepared mesh.
+    face: u32,
     /// The integer shift taken off the face's texture coordinates before they are interpolated
     /// ([`Sampler::repeat_origin`] of its first corner; zero without a texture): vertices made
     /// by clipping hold shifted coordinates already, the others are shifted when the triangle is
@@ -178,6 +186,7 @@ struct ScreenVertex {
 }
 
 /// The output of the primitive stages for one chunk of faces of one object.
+#[derive(Default)]
 struct Chunk {
     object: usize,
     triangles: Vec<Triangle>,
@@ -191,6 +200,7 @@ struct Chunk {
 
 /// Every chunk's binned triangles, gathered into one list per tile (compressed rows: the list of
 /// tile `i` is `entries[start[i]..start[i + 1]]`), each in submission order.
+#[derive(Default)]
 struct Bins {
     start: Vec<usize>,
     /// `(chunk, triangle)` pairs.
@@ -200,8 +210,11 @@ struct Bins {
 impl Bins {
     /// Counts, then places, every `(tile, triangle)` pair of `chunks` (in chunk order, each
     /// chunk's pairs in order), so each tile's list keeps the submission order.
-    fn gather(chunks: &[Chunk], tiles: usize) -> Bins {
-        let mut start = vec![0usize; tiles + 1];
+    /// (Into this one's memory.)
+    fn gather(&mut self, chunks: &[Chunk], tiles: usize) {
+        let Bins { start, entries } = self;
+        start.clear();
+        start.resize(tiles + 1, 0);
         for chunk in chunks {
             for &(tile, _) in &chunk.binned {
                 start[tile as usize + 1] += 1;
@@ -211,14 +224,14 @@ impl Bins {
             start[i + 1] += start[i];
         }
         let mut next = start.clone();
-        let mut entries = vec![(0u32, 0u32); start[tiles]];
+        entries.clear();
+        entries.resize(start[tiles], (0, 0));
         for (c, chunk) in chunks.iter().enumerate() {
             for &(tile, triangle) in &chunk.binned {
                 entries[next[tile as usize]] = (c as u32, triangle);
                 next[tile as usize] += 1;
             }
         }
-        Bins { start, entries }
     }
 
     /// Tile `index`'s `(chunk, triangle)` pairs, in submission order.
@@ -239,21 +252,70 @@ struct Rect {
 // ---------------------------------------------------------------------------------------------
 // The draw call
 
-/// Renders `scene` with `lighting`; see [`crate::render_with`].
-pub(crate) fn draw<L: Lighting + ?Sized>(
-    scene: &Scene,
-    options: &Options,
-    lighting: &L,
-) -> Result<Output, RenderError> {
-    let frame = Frame::new(scene, options, lighting)?;
-    let draws = prepare_draws(scene, &frame.features)?;
+/// A scene made ready to draw: the frame fixed and every object prepared (shading normals,
+/// model matrix, material, texture), so each [`Ready::draw`] runs the pipeline from the vertex
+/// stage on.
+pub(crate) struct Ready<'s, L: ?Sized> {
+    frame: Frame<'s, L>,
+    draws: Vec<Draw<'s>>,
+    /// The last frame's working memory, reused by the next (a frame of a large mesh needs
+    /// hundreds of megabytes: taking them from the system anew, page by page, every frame
+    /// costs as much as a stage).
+    scratch: Mutex<Scratch>,
+}
 
+/// A frame's working memory besides its output: every object's vertices and windows, every
+/// chunk's triangles, and the bins.
+#[derive(Default)]
+struct Scratch {
+    vertices: Vec<Vec<Vertex>>,
+    windows: Vec<Vec<Window>>,
+    chunks: Vec<Chunk>,
+    bins: Bins,
+}
+
+impl<'s, L: Lighting + ?Sized> Ready<'s, L> {
+    pub(crate) fn new(
+        scene: &'s Scene,
+        options: &Options,
+        lighting: &'s L,
+    ) -> Result<Self, RenderError> {
+        let frame = Frame::new(scene, options, lighting)?;
+        let draws = prepare_draws(scene, &frame.features)?;
+        Ok(Ready { frame, draws, scratch: Mutex::default() })
+    }
+
+    /// Draws the prepared scene, in the current thread pool, into the colour and depth buffers
+    /// of `reuse` when it is given and of the right size (each tile clears its part first),
+    /// into new ones otherwise.
+    pub(crate) fn draw(&self, reuse: Option<Output>) -> Result<Output, RenderError> {
+        // A frame drawn meanwhile on another thread keeps the working memory; this one makes
+        // its own.
+        match self.scratch.try_lock() {
+            Ok(mut scratch) => draw_ready(&self.frame, &self.draws, reuse, &mut scratch),
+            Err(_) => draw_ready(&self.frame, &self.draws, reuse, &mut Scratch::default()),
+        }
+    }
+}
+
+fn draw_ready<L: Lighting + ?Sized>(
+    frame: &Frame<'_, L>,
+    draws: &[Draw<'_>],
+    reuse: Option<Output>,
+    scratch: &mut Scratch,
+) -> Result<Output, RenderError> {
+    let scene = frame.scene;
     let mut stats = Stats::default();
-    let mut buffers = Vec::with_capacity(draws.len());
-    for draw in &draws {
-        let (vertices, s) = vertex_stage(&frame, draw)?;
-        buffers.push(vertices);
-        stats += s;
+    let Scratch { vertices: buffers, windows, chunks, bins } = scratch;
+    buffers.resize_with(draws.len(), Vec::new);
+    windows.resize_with(draws.len(), Vec::new);
+    for ((draw, vertices), windows) in draws.iter().zip(buffers.iter_mut()).zip(windows.iter_mut())
+    {
+        stats += vertex_stage(frame, draw, vertices)?;
+        // Each vertex's outcodes and window position, once (a vertex is a corner of about six
+        // faces).
+        windows.clear();
+        windows.par_extend(vertices.par_iter().map(|v| Window::new(frame, v.p_clip)));
     }
 
     let jobs: Vec<(usize, usize, usize)> = draws
@@ -266,23 +328,33 @@ pub(crate) fn draw<L: Lighting + ?Sized>(
                 .map(move |start| (object, start, (start + FACES_PER_CHUNK).min(faces)))
         })
         .collect();
-    let chunks: Vec<Chunk> = jobs
-        .par_iter()
-        .map(|&(object, start, end)| {
-            primitive_stage(&frame, &draws[object], &buffers[object], object, start..end)
-        })
-        .collect();
-    for chunk in &chunks {
+    chunks.resize_with(jobs.len(), Chunk::default);
+    chunks.truncate(jobs.len());
+    let (buffers, windows) = (&*buffers, &*windows);
+    chunks.par_iter_mut().zip(&jobs).for_each(|(chunk, &(object, start, end))| {
+        let (vertices, windows) = (&buffers[object], &windows[object]);
+        primitive_stage(frame, &draws[object], vertices, windows, object, start..end, chunk);
+    });
+    for chunk in chunks.iter() {
         stats += chunk.stats;
     }
     let columns = frame.width.div_ceil(frame.tile);
-    let bins = Bins::gather(&chunks, (columns * frame.height.div_ceil(frame.tile)) as usize);
+    bins.gather(chunks, (columns * frame.height.div_ceil(frame.tile)) as usize);
+    let (chunks, bins) = (&*chunks, &*bins);
 
     // Each tile is one task. A band (a row of tiles) owns its rows of the colour and depth
     // buffers; its rows are cut at the tile borders, so each tile writes straight into its own
     // part of the image.
-    let mut image = Image::new(frame.width, frame.height, scene.clear_color);
-    let mut depth = vec![1.0f32; frame.width as usize * frame.height as usize];
+    let pixels = frame.width as usize * frame.height as usize;
+    let (mut image, mut depth, clear) = match reuse {
+        Some(o) if o.image.pixels.len() == pixels && o.depth.len() == pixels => {
+            let image = Image { width: frame.width, height: frame.height, ..o.image };
+            (image, o.depth, true)
+        }
+        _ => {
+            (Image::new(frame.width, frame.height, scene.clear_color), vec![1.0f32; pixels], false)
+        }
+    };
     let (width, tile) = (frame.width as usize, frame.tile as usize);
     let tile_stats = image
         .pixels
@@ -312,7 +384,13 @@ pub(crate) fn draw<L: Lighting + ?Sized>(
             let column = target.x0 / frame.tile;
             let rect = frame.tile_rect(column, row);
             let index = (row * columns + column) as usize;
-            draw_tile(&frame, &draws, &buffers, &chunks, bins.tile(index), rect, &mut target)
+            if clear {
+                for (color, depth) in target.color.iter_mut().zip(&mut target.depth) {
+                    color.fill(scene.clear_color);
+                    depth.fill(1.0);
+                }
+            }
+            draw_tile(frame, draws, buffers, chunks, bins.tile(index), rect, &mut target)
         })
         .reduce(Stats::default, |mut a, b| {
             a += b;
@@ -354,6 +432,16 @@ impl<'s, L: Lighting + ?Sized> Frame<'s, L> {
             backward,
             features: scene.features(),
             guard: (Vec2::splat(GUARD_BAND_PIXELS) / half).max(Vec2::ONE),
+            spans: lighting.is_scene_lighting().then(|| {
+                let eye = scene.camera.eye_position();
+                SpanLights::new(
+                    scene.light_model,
+                    scene.global_ambient,
+                    &scene.lights,
+                    eye,
+                    backward,
+                )
+            }),
         })
     }
 
@@ -438,12 +526,6 @@ impl Draw<'_> {
     }
 }
 
-/// A colour clamped to `[0, 1]` per channel, NaN taken as 0 (OpenGL's clamp of the lit colour).
-fn saturate(c: Rgb) -> Rgb {
-    let channel = |x: f32| if x > 0.0 { x.min(1.0) } else { 0.0 };
-    Rgb::new(channel(c.x), channel(c.y), channel(c.z))
-}
-
 // ---------------------------------------------------------------------------------------------
 // Vertex stage (頂点処理)
 
@@ -454,17 +536,39 @@ fn saturate(c: Rgb) -> Rgb {
 fn vertex_stage<L: Lighting + ?Sized>(
     frame: &Frame<'_, L>,
     draw: &Draw<'_>,
-) -> Result<(Vec<Vertex>, Stats), RenderError> {
+    vertices: &mut Vec<Vertex>,
+) -> Result<Stats, RenderError> {
     let n = draw.prepared.mesh.positions.len();
     let mut stats = Stats { vertices: n as u64, ..Stats::default() };
-    let vertices: Vec<Vertex> = if frame.shading == Shading::Gouraud && draw.lit {
-        // Lit here: the light model's counts are summed over the vertices.
-        let mut vertices = vec![Vertex::default(); n];
+    let mesh = &draw.prepared.mesh;
+    let whole_colors = mesh.colors.as_ref().is_none_or(|c| c.len() == n);
+    vertices.clear();
+    if let Some(lights) = frame
+        .spans
+        .as_ref()
+        .filter(|_| frame.shading == Shading::Gouraud && draw.lit && whole_colors)
+    {
+        // The scene's own light model, eight vertices at a time (the same bits).
+        vertices.par_extend(
+            (0..n)
+                .into_par_iter()
+                .map(|i| vertex(frame, draw, i, false, &mut LightCounts::default())),
+        );
+        let colored = draw.has_colors();
         let counts = vertices
-            .par_iter_mut()
-            .enumerate()
-            .fold(LightCounts::default, |mut counts, (i, v)| {
-                *v = vertex(frame, draw, i, &mut counts);
+            .par_chunks_mut(LANES)
+            .fold(LightCounts::default, |mut counts, chunk| {
+                let mut points = Points { len: chunk.len(), ..Points::default() };
+                for (i, v) in chunk.iter().enumerate() {
+                    points.p.set(i, v.p_world);
+                    points.n.set(i, v.n_world);
+                    points.color.set(i, v.color);
+                }
+                let mut lit = V3::default();
+                span::light(lights, &draw.material, colored, &points, &mut lit, &mut counts);
+                for (i, v) in chunk.iter_mut().enumerate() {
+                    v.color = saturate(lit.get(i));
+                }
                 counts
             })
             .reduce(LightCounts::default, |mut a, b| {
@@ -472,14 +576,29 @@ fn vertex_stage<L: Lighting + ?Sized>(
                 a
             });
         stats.add_lighting(&counts);
-        vertices
+    } else if frame.shading == Shading::Gouraud && draw.lit {
+        // Lit here: the light model's counts are summed over the vertices.
+        vertices.resize(n, Vertex::default());
+        let counts = vertices
+            .par_iter_mut()
+            .enumerate()
+            .fold(LightCounts::default, |mut counts, (i, v)| {
+                *v = vertex(frame, draw, i, true, &mut counts);
+                counts
+            })
+            .reduce(LightCounts::default, |mut a, b| {
+                a += b;
+                a
+            });
+        stats.add_lighting(&counts);
     } else {
         // Not lit here: nothing to count.
-        (0..n)
-            .into_par_iter()
-            .map(|i| vertex(frame, draw, i, &mut LightCounts::default()))
-            .collect()
-    };
+        vertices.par_extend(
+            (0..n)
+                .into_par_iter()
+                .map(|i| vertex(frame, draw, i, false, &mut LightCounts::default())),
+        );
+    }
     if let Some(i) = vertices.iter().position(|v| !v.p_clip.is_finite()) {
         // Named as the object's own mesh numbers it (the file's V-number), not as the prepared
         // mesh does (split per face for face normals, so the file's V2 may be its V4).
@@ -490,7 +609,7 @@ fn vertex_stage<L: Lighting + ?Sized>(
             position: p_clip.to_array(),
         });
     }
-    Ok((vertices, stats))
+    Ok(stats)
 }
 
 /// The first vertex of the object's own mesh (numbered as its file or shape numbers it) whose
@@ -510,13 +629,15 @@ fn first_non_finite<L: Lighting + ?Sized>(
 }
 
 /// The vertex stage for vertex `i`: model → world (positions by the model matrix, normals by the
-/// cofactor normal matrix, normalised, flipped back for a mirrored object) → view → clip. Under
-/// Gouraud shading the vertex is lit here and its colour clamped to `[0, 1]`, as OpenGL clamps
-/// the lit vertex colour before interpolating it; `counts` gets the lighting's counts.
+/// cofactor normal matrix, normalised, flipped back for a mirrored object) → view → clip. With
+/// `lit` (Gouraud, a hook other than the scene's own light model: that one lights eight vertices
+/// at a time afterwards) the vertex is lit here and its colour clamped to `[0, 1]`, as OpenGL
+/// clamps the lit vertex colour before interpolating it; `counts` gets the lighting's counts.
 fn vertex<L: Lighting + ?Sized>(
     frame: &Frame<'_, L>,
     draw: &Draw<'_>,
     i: usize,
+    lit: bool,
     counts: &mut LightCounts,
 ) -> Vertex {
     let prepared = &draw.prepared;
@@ -529,7 +650,7 @@ fn vertex<L: Lighting + ?Sized>(
     let p_clip = frame.projection * p_view.extend(1.0);
     let vertex_color = mesh.colors.as_ref().and_then(|c| c.get(i)).copied();
     let uv = mesh.uvs.as_ref().and_then(|uv| uv.get(i)).copied().unwrap_or(Vec2::ZERO);
-    let color = if frame.shading == Shading::Gouraud && draw.lit {
+    let color = if lit {
         saturate(frame.light(p_world, n_world, &draw.material.with_color(vertex_color), counts))
     } else {
         vertex_color.unwrap_or(Rgb::ONE)
@@ -546,29 +667,29 @@ fn primitive_stage<L: Lighting + ?Sized>(
     frame: &Frame<'_, L>,
     draw: &Draw<'_>,
     vertices: &[Vertex],
+    windows: &[Window],
     object: usize,
     faces: std::ops::Range<usize>,
-) -> Chunk {
-    let mut chunk = Chunk {
-        object,
-        triangles: Vec::with_capacity(faces.len()),
-        new_vertices: Vec::new(),
-        binned: Vec::with_capacity(faces.len()),
-        stats: Stats::default(),
-    };
+    chunk: &mut Chunk,
+) {
+    chunk.object = object;
+    chunk.triangles.clear();
+    chunk.new_vertices.clear();
+    chunk.binned.clear();
+    chunk.stats = Stats::default();
     let cull = if frame.scene.cull_back_faces {
         Cull::Back { mirrored: draw.prepared.mirrored }
     } else {
         Cull::None
     };
     let guard_band = planes(frame.guard);
-    for face in &draw.prepared.mesh.faces[faces] {
+    let first = faces.start;
+    for (f, face) in draw.prepared.mesh.faces[faces].iter().enumerate() {
+        let f = first + f;
         let stats = &mut chunk.stats;
         stats.triangles_in += 1;
-        let corners = face.map(|i| &vertices[i as usize]);
-        let uv_origin = draw.texture.map_or(Vec2::ZERO, |t| t.sampler.repeat_origin(corners[0].uv));
-        let codes = corners.map(|v| outcodes(v.p_clip, frame.guard));
-        if codes[0].0 & codes[1].0 & codes[2].0 != 0 {
+        let w = face.map(|i| &windows[i as usize]);
+        if w[0].codes.0 & w[1].codes.0 & w[2].codes.0 != 0 {
             stats.triangles_outside += 1;
             continue;
         }
@@ -576,6 +697,36 @@ fn primitive_stage<L: Lighting + ?Sized>(
         // leaves of it.
         let mut screen = [ScreenVertex::default(); MAX_POLYGON];
         let mut len = 0;
+        let unclipped = w[0].codes.1 | w[1].codes.1 | w[2].codes.1 == 0;
+        if unclipped {
+            if let [Some(a), Some(b), Some(c)] = w.map(|w| w.screen) {
+                // A whole triangle (the common case): culled before its vertices are read.
+                let mut fan = [a, b, c];
+                for (v, &slot) in fan.iter_mut().zip(face) {
+                    v.slot = slot;
+                }
+                match triangle_setup(fan, cull, frame.width, frame.height) {
+                    Ok((edges, order)) => {
+                        let corners = face.map(|i| &vertices[i as usize]);
+                        let uv_origin = draw
+                            .texture
+                            .map_or(Vec2::ZERO, |t| t.sampler.repeat_origin(corners[0].uv));
+                        let parts = face_parts(frame, draw, corners, stats);
+                        stats.triangles_drawn += 1;
+                        let s = order.map(|i| fan[i]);
+                        let (triangles, binned) = (&mut chunk.triangles, &mut chunk.binned);
+                        emit(frame, triangles, binned, edges, s, parts, f as u32, uv_origin);
+                    }
+                    Err(dropped) => stats.drop(dropped),
+                }
+            } else {
+                // A corner at w ≤ 0 through rounding, or not finite: never divided by.
+                stats.triangles_outside += 1;
+            }
+            continue;
+        }
+        let corners = face.map(|i| &vertices[i as usize]);
+        let uv_origin = draw.texture.map_or(Vec2::ZERO, |t| t.sampler.repeat_origin(corners[0].uv));
         let mut visible = true;
         let mut to_window = |p_clip: Vec4, slot: u32| match viewport(frame, p_clip) {
             Some(v) => {
@@ -584,23 +735,17 @@ fn primitive_stage<L: Lighting + ?Sized>(
             }
             None => visible = false,
         };
-        if codes[0].1 | codes[1].1 | codes[2].1 == 0 {
-            for k in 0..3 {
-                to_window(corners[k].p_clip, face[k]);
+        stats.triangles_clipped += 1;
+        // Clipped with shifted texture coordinates, so the new vertices keep their precision.
+        let shifted = corners.map(|v| Vertex { uv: v.uv - uv_origin, ..*v });
+        let polygon = clip(&Polygon::triangle(shifted, *face), &guard_band);
+        for corner in &polygon.corners[..polygon.len] {
+            let mut slot = corner.slot;
+            if slot == NEW_VERTEX {
+                slot = NEW_VERTEX | chunk.new_vertices.len() as u32;
+                chunk.new_vertices.push(corner.vertex);
             }
-        } else {
-            stats.triangles_clipped += 1;
-            // Clipped with shifted texture coordinates, so the new vertices keep their precision.
-            let shifted = corners.map(|v| Vertex { uv: v.uv - uv_origin, ..*v });
-            let polygon = clip(&Polygon::triangle(shifted, *face), &guard_band);
-            for corner in &polygon.corners[..polygon.len] {
-                let mut slot = corner.slot;
-                if slot == NEW_VERTEX {
-                    slot = NEW_VERTEX | chunk.new_vertices.len() as u32;
-                    chunk.new_vertices.push(corner.vertex);
-                }
-                to_window(corner.vertex.p_clip, slot);
-            }
+            to_window(corner.vertex.p_clip, slot);
         }
         if !visible || len < 3 {
             // Clipping left nothing (or, through rounding, a corner at w ≤ 0: never divided by).
@@ -615,38 +760,99 @@ fn primitive_stage<L: Lighting + ?Sized>(
             let (edges, order) = match triangle_setup(fan, cull, frame.width, frame.height) {
                 Ok(t) => t,
                 Err(dropped) => {
-                    match dropped {
-                        Dropped::Degenerate => stats.triangles_degenerate += 1,
-                        Dropped::Culled => stats.triangles_culled += 1,
-                        Dropped::TooSmall => stats.triangles_too_small += 1,
-                    }
+                    stats.drop(dropped);
                     continue;
                 }
             };
-            let (face_normal, flat_color) =
-                *face_parts.get_or_insert_with(|| match frame.shading {
-                    Shading::Flat => {
-                        let n = world_face_normal(draw, corners);
-                        (n, flat_color(frame, draw, corners, n, stats))
-                    }
-                    Shading::Phong => (world_face_normal(draw, corners), Rgb::ONE),
-                    Shading::Gouraud => (Vec3::ZERO, Rgb::ONE),
-                });
-            let s = order.map(|i| fan[i]);
+            let parts =
+                *face_parts.get_or_insert_with(|| self::face_parts(frame, draw, corners, stats));
             stats.triangles_drawn += 1;
-            chunk.triangles.push(Triangle {
+            let s = order.map(|i| fan[i]);
+            emit(
+                frame,
+                &mut chunk.triangles,
+                &mut chunk.binned,
                 edges,
-                z: s.map(|v| v.z),
-                inv_w: s.map(|v| v.inv_w),
-                slot: s.map(|v| v.slot),
-                face_normal,
-                flat_color,
+                s,
+                parts,
+                f as u32,
                 uv_origin,
-            });
-            bin(frame, &mut chunk.binned, chunk.triangles.len() - 1, &edges.bbox);
+            );
         }
     }
-    chunk
+}
+
+/// A triangle set up (`s` its corners in the edges' order) into the chunk's list, and binned.
+#[allow(clippy::too_many_arguments)]
+fn emit<L: ?Sized>(
+    frame: &Frame<'_, L>,
+    triangles: &mut Vec<Triangle>,
+    binned: &mut Vec<(u32, u32)>,
+    edges: Edges,
+    s: [ScreenVertex; 3],
+    (face_normal, flat_color): (Vec3, Rgb),
+    face: u32,
+    uv_origin: Vec2,
+) {
+    triangles.push(Triangle {
+        edges,
+        z: s.map(|v| v.z),
+        inv_w: s.map(|v| v.inv_w),
+        slot: s.map(|v| v.slot),
+        face_normal,
+        flat_color,
+        face,
+        uv_origin,
+    });
+    bin(frame, binned, triangles.len() - 1, &edges.bbox);
+}
+
+impl Stats {
+    /// Counts a triangle that triangle setup dropped.
+    fn drop(&mut self, dropped: Dropped) {
+        match dropped {
+            Dropped::Degenerate => self.triangles_degenerate += 1,
+            Dropped::Culled => self.triangles_culled += 1,
+            Dropped::TooSmall => self.triangles_too_small += 1,
+        }
+    }
+}
+
+/// The face's normal (flat, and Phong's fallback) and its lighting (flat), made once per face
+/// when a part of it is drawn.
+fn face_parts<L: Lighting + ?Sized>(
+    frame: &Frame<'_, L>,
+    draw: &Draw<'_>,
+    corners: [&Vertex; 3],
+    stats: &mut Stats,
+) -> (Vec3, Rgb) {
+    match frame.shading {
+        Shading::Flat => {
+            let n = world_face_normal(draw, corners);
+            (n, flat_color(frame, draw, corners, n, stats))
+        }
+        // The spans make it where they need it.
+        Shading::Phong if frame.spans.is_some() && draw.lit => (Vec3::ZERO, Rgb::ONE),
+        Shading::Phong => (world_face_normal(draw, corners), Rgb::ONE),
+        Shading::Gouraud => (Vec3::ZERO, Rgb::ONE),
+    }
+}
+
+/// A vertex as the primitive stages first need it: its outcodes ([`outcodes`]) and, when it
+/// can be divided by its w, its window position ([`viewport`]).
+#[derive(Clone, Copy, Debug)]
+struct Window {
+    codes: (u8, u8),
+    screen: Option<ScreenVertex>,
+}
+
+impl Window {
+    fn new<L: ?Sized>(frame: &Frame<'_, L>, p_clip: Vec4) -> Window {
+        let codes = outcodes(p_clip, frame.guard);
+        // Only a vertex inside the guard-band volume is ever used unclipped.
+        let screen = if codes.1 == 0 { viewport(frame, p_clip) } else { None };
+        Window { codes, screen }
+    }
 }
 
 /// Which planes a clip-space point lies outside, as bits (near, far, −x, +x, −y, +y): of the
@@ -933,9 +1139,32 @@ fn draw_tile<L: Lighting + ?Sized>(
 ) -> Stats {
     let mut stats = Stats::default();
     let mut counts = LightCounts::default();
+    // Phong's fragments of the scene's own light model, lit eight at a time.
+    let mut span = PhongSpan::default();
+    let spans = frame.spans.as_ref().filter(|_| frame.shading == Shading::Phong);
+    let flush = |span: &mut PhongSpan, target: &mut Target<'_>, counts: &mut LightCounts| {
+        if let Some(lights) = spans {
+            let draw = &draws[span.object];
+            let env = draw.texture.map(|t| t.env);
+            // The face normal where the corners' normals cancel, from the face's own corners.
+            let vertices = &buffers[span.object];
+            let face = |(_, face): (u32, u32)| {
+                let face = draw.prepared.mesh.faces[face as usize];
+                world_face_normal(draw, face.map(|i| &vertices[i as usize]))
+            };
+            let material = &draw.material;
+            span.flush(lights, material, draw.has_colors(), env, counts, face, |row, column, c| {
+                target.color[row as usize][column as usize] = c;
+            });
+        }
+    };
     for &(c, t) in bin {
         let chunk = &chunks[c as usize];
         let draw = &draws[chunk.object];
+        if span.object != chunk.object {
+            flush(&mut span, target, &mut counts);
+            span.object = chunk.object;
+        }
         let vertices = &buffers[chunk.object];
         let triangle = &chunk.triangles[t as usize];
         // Vertices made by clipping hold shifted texture coordinates already (see `uv_origin`).
@@ -949,6 +1178,41 @@ fn draw_tile<L: Lighting + ?Sized>(
         });
         let inv_area = 1.0 / triangle.edges.area2 as f32;
         let z = Vec3::from(triangle.z);
+        if spans.is_some() && draw.lit {
+            // Made when the first fragment passes (many small triangles have none).
+            let mut normals = None;
+            rasterize(&triangle.edges, rect, |x, y, e| {
+                stats.fragments += 1;
+                let (row, column) = ((y - target.y0) as usize, (x - target.x0) as usize);
+                let b = Vec3::new(e[0] as f32, e[1] as f32, e[2] as f32) * inv_area;
+                if !depth_test(b.dot(z).clamp(0.0, 1.0), &mut target.depth[row][column]) {
+                    stats.depth_rejects += 1;
+                    return;
+                }
+                stats.fragments_shaded += 1;
+                let b = perspective(triangle, b);
+                let interpolate3 = |f: fn(&Vertex) -> Vec3| {
+                    b.x * f(&corners[0]) + b.y * f(&corners[1]) + b.z * f(&corners[2])
+                };
+                let p_world = interpolate3(|v| v.p_world);
+                let color = if draw.has_colors() { interpolate3(|v| v.color) } else { Rgb::ONE };
+                let texel = match &draw.texture {
+                    None => Vec4::ONE,
+                    Some(t) => {
+                        let uv = b.x * corners[0].uv + b.y * corners[1].uv + b.z * corners[2].uv;
+                        stats.texture_samples += 1;
+                        t.texture.sample(uv, t.sampler)
+                    }
+                };
+                let at = (row as u32, column as u32);
+                let normals =
+                    normals.get_or_insert_with(|| Corners::new(corners.map(|v| v.n_world)));
+                if span.push(at, b, normals, (c, triangle.face), p_world, color, texel) {
+                    flush(&mut span, target, &mut counts);
+                }
+            });
+            continue;
+        }
         rasterize(&triangle.edges, rect, |x, y, e| {
             stats.fragments += 1;
             let (row, column) = ((y - target.y0) as usize, (x - target.x0) as usize);
@@ -963,8 +1227,19 @@ fn draw_tile<L: Lighting + ?Sized>(
                 fragment(frame, draw, triangle, &corners, b, &mut stats, &mut counts);
         });
     }
+    flush(&mut span, target, &mut counts);
     stats.add_lighting(&counts);
     stats
+}
+
+/// Perspective-correct barycentrics from the screen-space ones `screen_barycentric`: attributes
+/// are linear in the plane of the triangle, not on the screen, so each corner is weighted by
+/// 1/w and the weights renormalised.
+#[inline]
+fn perspective(triangle: &Triangle, screen_barycentric: Vec3) -> Vec3 {
+    let weighted = screen_barycentric * Vec3::from(triangle.inv_w);
+    let sum = weighted.x + weighted.y + weighted.z;
+    if sum > 0.0 && sum.is_finite() { weighted / sum } else { screen_barycentric }
 }
 
 /// The rasterizer (ラスタライズ): calls `emit(x, y, e)` for every pixel of `rect` whose centre
@@ -1049,11 +1324,7 @@ fn fragment<L: Lighting + ?Sized>(
     stats: &mut Stats,
     counts: &mut LightCounts,
 ) -> Rgb {
-    // Attributes are linear in the plane of the triangle, not on the screen: weight each corner by
-    // 1/w and renormalise.
-    let weighted = screen_barycentric * Vec3::from(triangle.inv_w);
-    let sum = weighted.x + weighted.y + weighted.z;
-    let b = if sum > 0.0 && sum.is_finite() { weighted / sum } else { screen_barycentric };
+    let b = perspective(triangle, screen_barycentric);
     let interpolate3 =
         |f: fn(&Vertex) -> Vec3| b.x * f(&corners[0]) + b.y * f(&corners[1]) + b.z * f(&corners[2]);
     let lit = match frame.shading {

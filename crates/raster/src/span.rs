@@ -1,0 +1,498 @@
+//! Lighting in spans of eight (issue 18): the scene's own light model ([`crate::SceneLighting`])
+//! evaluated for eight points at once, in structure-of-arrays form, so the compiler vectorises
+//! it — Phong's pixels and Gouraud's vertices.
+//!
+//! **The same bits.** Every lane computes what [`cg_core::light::shade_with_visibility_counted`]
+//! computes for its point, operation for operation, in the same precision and order: the normal
+//! interpolated and renormalised in f64 as [`cg_core::normals::interpolate_normal`] does, V and L
+//! normalised in f64 as [`LightModel::view_vector`] and [`Light::direction_from`] do, the terms
+//! summed in f32 in the light model's order. No fused multiply-add is introduced (Rust never
+//! contracts `a * b + c`), so the image is bit for bit the one the point-by-point path draws, on
+//! every CPU (`tests/spans.rs` compares the two on every kind of light and material). What it
+//! saves is the work around the arithmetic: no light list expanded and no material copied per
+//! point, the scene's constant terms made once per frame, and every term the scene does not use
+//! skipped for the whole span.
+//!
+//! The light model's counts ([`LightCounts`]) are the ones the point-by-point path makes.
+
+// Lane loops index several arrays by the lane, the structure-of-arrays idiom the vectoriser
+// reads best.
+#![allow(clippy::needless_range_loop)]
+
+use cg_core::Rgb;
+use cg_core::glam::{DVec3, Vec3};
+use cg_core::light::{
+    Light, LightCounts, LightKind, LightModel, Material, Specular, attenuation, spot_factor,
+};
+use cg_core::math::try_normalize;
+use multiversion::multiversion;
+
+/// Points lit at once.
+pub(crate) const LANES: usize = 8;
+
+/// `2⁻²⁶`: [`cg_core::normals::interpolate_normal`]'s cancellation threshold (a sum shorter than
+/// this fraction of `Σ |wᵢ|·|Nᵢ|` is rounding noise, and the face normal is used).
+const CANCEL_FRACTION: f64 = 1.0 / (1u64 << 26) as f64;
+
+/// One light as the spans use it: a point light of [`Light::point_lights`] (an area light is
+/// already its grid of samples).
+struct SpanLight {
+    light: Light,
+    /// Where it is, in f64 (point and spot lights); `None` for a directional light.
+    position: Option<DVec3>,
+    /// A directional light's `(L, d)`, the same for every point ([`Light::direction_from`]).
+    directional: Option<(Vec3, f32)>,
+    /// [`Light::needs_attenuation`].
+    attenuates: bool,
+}
+
+/// The scene's lights and light model, made ready once per frame.
+pub(crate) struct SpanLights {
+    lecture: bool,
+    specular: Specular,
+    /// The ambient intensity before `k_a`: the lecture's `Ia + Σ Iₐ` (every light's, once), or
+    /// OpenGL's global `Ia` (each light's own is attenuated and spot-scaled per point).
+    ambient: Rgb,
+    lights: Vec<SpanLight>,
+    local_viewer: bool,
+    eye: DVec3,
+    backward: Vec3,
+}
+
+impl SpanLights {
+    /// The lights of a scene lit by `model` with the global ambient `global_ambient`, seen from
+    /// `eye` (a local viewer) or along `backward` (the infinite viewer's V).
+    pub(crate) fn new(
+        model: LightModel,
+        global_ambient: Rgb,
+        lights: &[Light],
+        eye: Vec3,
+        backward: Vec3,
+    ) -> SpanLights {
+        let (lecture, specular) = match model {
+            LightModel::Lecture { specular, .. } => (true, specular),
+            LightModel::OpenGl { .. } => (false, Specular::Blinn),
+        };
+        let ambient = if lecture {
+            lights.iter().fold(global_ambient, |sum, light| sum + light.ambient)
+        } else {
+            global_ambient
+        };
+        let lights = lights
+            .iter()
+            .flat_map(Light::point_lights)
+            .map(|light| SpanLight {
+                position: match light.kind {
+                    LightKind::Point { position } | LightKind::Spot { position, .. } => {
+                        Some(position.as_dvec3())
+                    }
+                    // `point_lights` gives no area light; a directional one has no position.
+                    _ => None,
+                },
+                directional: match light.kind {
+                    LightKind::Directional { .. } => Some(
+                        light.direction_from(Vec3::ZERO).map_or((Vec3::NAN, 0.0), |(l, d)| (l, d)),
+                    ),
+                    _ => None,
+                },
+                attenuates: light.needs_attenuation(),
+                light,
+            })
+            .collect();
+        SpanLights {
+            lecture,
+            specular,
+            ambient,
+            lights,
+            local_viewer: model.local_viewer(),
+            eye: eye.as_dvec3(),
+            backward,
+        }
+    }
+}
+
+/// Eight `f32`s, one per lane.
+pub(crate) type Lanes = [f32; LANES];
+/// Eight `f64`s, one per lane.
+type Lanes64 = [f64; LANES];
+
+/// Eight 3-vectors, structure of arrays: `x[i], y[i], z[i]` is lane `i`'s vector.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct V3 {
+    pub(crate) x: Lanes,
+    pub(crate) y: Lanes,
+    pub(crate) z: Lanes,
+}
+
+impl V3 {
+    pub(crate) fn set(&mut self, i: usize, v: Vec3) {
+        (self.x[i], self.y[i], self.z[i]) = (v.x, v.y, v.z);
+    }
+
+    pub(crate) fn get(&self, i: usize) -> Vec3 {
+        Vec3::new(self.x[i], self.y[i], self.z[i])
+    }
+
+    fn splat(v: Vec3) -> V3 {
+        V3 { x: [v.x; LANES], y: [v.y; LANES], z: [v.z; LANES] }
+    }
+}
+
+/// Eight f64 3-vectors, structure of arrays.
+#[derive(Clone, Copy, Debug, Default)]
+struct D3 {
+    x: Lanes64,
+    y: Lanes64,
+    z: Lanes64,
+}
+
+/// Eight points (fewer in the last span) to light: where, with which unit normal, and the colour
+/// material where the mesh has per-vertex colours.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Points {
+    pub(crate) len: usize,
+    pub(crate) p: V3,
+    pub(crate) n: V3,
+    /// k_a = k_d per point (glColor under GL_COLOR_MATERIAL); read only when colored.
+    pub(crate) color: V3,
+}
+
+/// `|v|` as glam's `DVec3::length` computes it: `√((x·x + y·y) + z·z)`.
+#[inline(always)]
+fn length64(x: f64, y: f64, z: f64) -> f64 {
+    (x * x + y * y + z * z).sqrt()
+}
+
+/// [`cg_core::math::try_normalize_f64`] lane by lane, with its arithmetic (divide by the largest
+/// magnitude, then by the length): the unit vectors, and whether each exists (`false` for a zero
+/// or non-finite vector, whose lane then holds garbage).
+#[inline(always)]
+fn try_normalize64(v: &D3, unit: &mut D3, valid: &mut [bool; LANES]) {
+    for i in 0..LANES {
+        let (x, y, z) = (v.x[i], v.y[i], v.z[i]);
+        let m = x.abs().max(y.abs().max(z.abs()));
+        valid[i] = x.is_finite() && y.is_finite() && z.is_finite() && m != 0.0;
+        let (ux, uy, uz) = (x / m, y / m, z / m);
+        let length = length64(ux, uy, uz);
+        (unit.x[i], unit.y[i], unit.z[i]) = (ux / length, uy / length, uz / length);
+    }
+}
+
+/// [`cg_core::normals::interpolate_normal`] for each lane, with its arithmetic: `b` the
+/// perspective-correct barycentrics, `normals` the corners' normals and `lengths` theirs. Gives
+/// whether each lane's normal is usable; where it is not (the corners' normals cancel, NUMERICS
+/// row 18), the caller puts the face normal in its place.
+#[multiversion(targets("x86_64+avx2+fma"))]
+fn interpolate_normals(
+    b: &V3,
+    normals: &[V3; 3],
+    lengths: &[Lanes64; 3],
+    out: &mut V3,
+) -> [bool; LANES] {
+    let mut sum = D3::default();
+    let mut magnitude = [0.0f64; LANES];
+    for i in 0..LANES {
+        let w = [f64::from(b.x[i]), f64::from(b.y[i]), f64::from(b.z[i])];
+        let n = normals.map(|n| [f64::from(n.x[i]), f64::from(n.y[i]), f64::from(n.z[i])]);
+        sum.x[i] = n[0][0] * w[0] + n[1][0] * w[1] + n[2][0] * w[2];
+        sum.y[i] = n[0][1] * w[0] + n[1][1] * w[1] + n[2][1] * w[2];
+        sum.z[i] = n[0][2] * w[0] + n[1][2] * w[1] + n[2][2] * w[2];
+        magnitude[i] =
+            w[0].abs() * lengths[0][i] + w[1].abs() * lengths[1][i] + w[2].abs() * lengths[2][i];
+    }
+    let mut unit = D3::default();
+    let mut keep = [false; LANES];
+    try_normalize64(&sum, &mut unit, &mut keep);
+    for i in 0..LANES {
+        keep[i] &= length64(sum.x[i], sum.y[i], sum.z[i]) > CANCEL_FRACTION * magnitude[i];
+        out.x[i] = unit.x[i] as f32;
+        out.y[i] = unit.y[i] as f32;
+        out.z[i] = unit.z[i] as f32;
+    }
+    keep
+}
+
+/// Unit vectors from each point `p` to `to` in f64, as [`Light::direction_from`] and
+/// [`LightModel::view_vector`] compute them, with the distances (f32) and whether each exists.
+#[inline(always)]
+fn directions(to: DVec3, p: &V3, l: &mut V3, d: &mut Lanes, valid: &mut [bool; LANES]) {
+    let mut v = D3::default();
+    for i in 0..LANES {
+        v.x[i] = to.x - f64::from(p.x[i]);
+        v.y[i] = to.y - f64::from(p.y[i]);
+        v.z[i] = to.z - f64::from(p.z[i]);
+    }
+    let mut unit = D3::default();
+    try_normalize64(&v, &mut unit, valid);
+    for i in 0..LANES {
+        l.x[i] = unit.x[i] as f32;
+        l.y[i] = unit.y[i] as f32;
+        l.z[i] = unit.z[i] as f32;
+        d[i] = length64(v.x[i], v.y[i], v.z[i]) as f32;
+    }
+}
+
+/// `a·b` lane by lane, as glam's `Vec3::dot`: `(ax·bx + ay·by) + az·bz`.
+#[inline(always)]
+fn dot(a: &V3, b: &V3) -> Lanes {
+    std::array::from_fn(|i| a.x[i] * b.x[i] + a.y[i] * b.y[i] + a.z[i] * b.z[i])
+}
+
+/// `max(x, 0)`, NaN taken as 0 (the light model's `positive_part`).
+#[inline(always)]
+fn positive_part(x: f32) -> f32 {
+    if x > 0.0 { x } else { 0.0 }
+}
+
+/// The light model's `specular_power`.
+#[inline(always)]
+fn specular_power(cos: f32, shininess: f32) -> f32 {
+    if cos > 0.0 { cos.min(1.0).powf(positive_part(shininess)) } else { 0.0 }
+}
+
+/// `sum += s · (c ⊙ k)` per channel, as the light model adds a term (`scale * (I * k * f)`
+/// with `f` folded into `c` by the caller where it has one), skipped where `s = 0`.
+#[inline(always)]
+fn add_term(sum: &mut V3, s: &Lanes, c: Vec3, k: &V3, f: &Lanes) {
+    for i in 0..LANES {
+        if s[i] != 0.0 {
+            sum.x[i] += s[i] * (c.x * k.x[i] * f[i]);
+            sum.y[i] += s[i] * (c.y * k.y[i] * f[i]);
+            sum.z[i] += s[i] * (c.z * k.z[i] * f[i]);
+        }
+    }
+}
+
+/// The light model at each point of `points` with `material` (k_a = k_d = the point's colour when
+/// `colored`): the unclamped colour into `out`, the work into `counts`. Lane `i` gives
+/// `shade(…).total()` of its point, bit for bit.
+#[multiversion(targets("x86_64+avx2+fma"))]
+pub(crate) fn light(
+    lights: &SpanLights,
+    material: &Material,
+    colored: bool,
+    points: &Points,
+    out: &mut V3,
+    counts: &mut LightCounts,
+) {
+    let len = points.len;
+    let lanes = len as u64;
+    counts.evaluations += lanes;
+    let (ka, kd) = if colored {
+        (points.color, points.color)
+    } else {
+        (V3::splat(material.ka), V3::splat(material.kd))
+    };
+    let n = &points.n;
+    // V (LightModel::view_vector): towards the eye, or the camera's backward axis.
+    let mut v = V3::splat(lights.backward);
+    if lights.local_viewer {
+        let mut unit = V3::default();
+        let mut valid = [false; LANES];
+        directions(lights.eye, &points.p, &mut unit, &mut [0.0; LANES], &mut valid);
+        for i in 0..LANES {
+            if valid[i] {
+                v.set(i, unit.get(i));
+            }
+        }
+    }
+
+    let ones = [1.0f32; LANES];
+    let mut ambient = V3::default();
+    for i in 0..LANES {
+        ambient.set(i, lights.ambient * ka.get(i));
+    }
+    let mut diffuse = V3::default();
+    let mut specular = V3::default();
+    let with_specular = material.ks != Rgb::ZERO;
+    let mut l = V3::default();
+    let mut d = [0.0f32; LANES];
+    let mut valid = [true; LANES];
+    for span_light in &lights.lights {
+        let light = &span_light.light;
+        counts.lights += lanes;
+        // (L, d) per point; L = N and d = 0 where the light has no direction from the point.
+        match (span_light.directional, span_light.position) {
+            (Some((dl, dd)), _) => {
+                l = V3::splat(dl);
+                d = [dd; LANES];
+                valid = [!dl.is_nan(); LANES];
+            }
+            (_, Some(position)) => directions(position, &points.p, &mut l, &mut d, &mut valid),
+            (None, None) => valid = [false; LANES],
+        }
+        for i in 0..LANES {
+            if !valid[i] {
+                l.set(i, n.get(i));
+                d[i] = 0.0;
+            }
+        }
+        let mut scale = [1.0f32; LANES];
+        if span_light.attenuates {
+            counts.attenuations += lanes;
+            for i in 0..LANES {
+                scale[i] = attenuation(light.attenuation, d[i]);
+            }
+        }
+        if let LightKind::Spot { direction, cutoff_deg, exponent, inner_deg, .. } = light.kind {
+            counts.spot_factors += lanes;
+            let inner = inner_deg.filter(|_| lights.lecture);
+            for i in 0..len {
+                scale[i] *= spot_factor(l.get(i), direction, cutoff_deg, exponent, inner);
+            }
+        }
+        let lit = scale[..len].iter().filter(|&&s| s != 0.0).count() as u64;
+        counts.visibility_queries += lit;
+        counts.diffuse += lit;
+        if !lights.lecture {
+            add_term(&mut ambient, &scale, light.ambient, &ka, &ones);
+        }
+        let nl = dot(n, &l);
+        add_term(&mut diffuse, &scale, light.diffuse, &kd, &nl.map(positive_part));
+        if with_specular {
+            counts.specular += lit;
+            let (ks, shininess) = (V3::splat(material.ks), material.shininess);
+            let mut power = [0.0f32; LANES];
+            match lights.specular {
+                Specular::Phong => {
+                    // R = reflect(−L, N) = −L − 2(−L·N)N.
+                    for i in 0..len {
+                        if nl[i] > 0.0 {
+                            let (li, ni) = (l.get(i), n.get(i));
+                            let r = -li - 2.0 * (-li).dot(ni) * ni;
+                            power[i] = specular_power(r.dot(v.get(i)), shininess);
+                        }
+                    }
+                }
+                Specular::Blinn => {
+                    for i in 0..len {
+                        if nl[i] > 0.0
+                            && let Some(h) = try_normalize(l.get(i) + v.get(i))
+                        {
+                            power[i] = specular_power(n.get(i).dot(h), shininess);
+                        }
+                    }
+                }
+            }
+            add_term(&mut specular, &scale, light.specular, &ks, &power);
+        }
+    }
+    for i in 0..len {
+        out.set(i, material.emission + ambient.get(i) + diffuse.get(i) + specular.get(i));
+    }
+}
+
+/// Phong's fragments waiting to be lit, up to [`LANES`] of them, all of one object, in the order
+/// they passed the depth test (a later one may cover an earlier one's pixel: they are written in
+/// that order, so the later wins, as drawn one by one).
+/// A triangle's corner normals, with their f64 lengths (made once per triangle).
+pub(crate) struct Corners {
+    normals: [Vec3; 3],
+    lengths: [f64; 3],
+}
+
+impl Corners {
+    pub(crate) fn new(normals: [Vec3; 3]) -> Corners {
+        Corners { normals, lengths: normals.map(|n| n.as_dvec3().length()) }
+    }
+}
+
+#[derive(Default)]
+pub(crate) struct PhongSpan {
+    /// The object they belong to (the draw's index).
+    pub(crate) object: usize,
+    len: usize,
+    /// Perspective-correct barycentrics.
+    b: V3,
+    /// The corners' world normals.
+    normals: [V3; 3],
+    /// Their lengths in f64 (`DVec3::length`).
+    lengths: [Lanes64; 3],
+    /// Which triangle each came from, to make its face normal where the corners' normals
+    /// cancel (rare, so not made for every triangle).
+    tag: [(u32, u32); LANES],
+    points: Points,
+    /// The texel under each fragment (textured objects).
+    texel: [cg_core::glam::Vec4; LANES],
+    /// Where each goes: row and column within the tile.
+    at: [(u32, u32); LANES],
+}
+
+impl PhongSpan {
+    /// Adds a fragment; `true` when the span is full.
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    pub(crate) fn push(
+        &mut self,
+        at: (u32, u32),
+        b: Vec3,
+        normals: &Corners,
+        tag: (u32, u32),
+        p: Vec3,
+        color: Rgb,
+        texel: cg_core::glam::Vec4,
+    ) -> bool {
+        let i = self.len;
+        self.at[i] = at;
+        self.b.set(i, b);
+        for k in 0..3 {
+            self.normals[k].set(i, normals.normals[k]);
+            self.lengths[k][i] = normals.lengths[k];
+        }
+        self.tag[i] = tag;
+        self.points.p.set(i, p);
+        self.points.color.set(i, color);
+        self.texel[i] = texel;
+        self.len += 1;
+        self.len == LANES
+    }
+
+    /// Lights the waiting fragments and gives each its final colour — the lit colour clamped,
+    /// the texture applied by `env` (when the object has one), clamped again, as the fragment
+    /// stage does — through `write(row, column, colour)`, in order. `face(tag)` is the face
+    /// normal of the triangle a fragment was pushed with. Empties the span.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn flush(
+        &mut self,
+        lights: &SpanLights,
+        material: &Material,
+        colored: bool,
+        env: Option<cg_core::texture::TexEnv>,
+        counts: &mut LightCounts,
+        face: impl Fn((u32, u32)) -> Vec3,
+        mut write: impl FnMut(u32, u32, Rgb),
+    ) {
+        if self.len == 0 {
+            return;
+        }
+        self.points.len = self.len;
+        let keep = interpolate_normals(&self.b, &self.normals, &self.lengths, &mut self.points.n);
+        for i in 0..self.len {
+            if !keep[i] {
+                self.points.n.set(i, face(self.tag[i]));
+            }
+        }
+        let mut lit = V3::default();
+        light(lights, material, colored, &self.points, &mut lit, counts);
+        for i in 0..self.len {
+            let lit = saturate(lit.get(i));
+            let color = match env {
+                None => lit,
+                Some(env) => env.apply(lit, self.texel[i]),
+            };
+            write(self.at[i].0, self.at[i].1, saturate(color));
+        }
+        self.len = 0;
+    }
+}
+
+/// A colour clamped to `[0, 1]` per channel, NaN taken as 0 (OpenGL's clamp of the lit colour).
+#[inline]
+pub(crate) fn saturate(c: Rgb) -> Rgb {
+    let channel = |x: f32| if x > 0.0 { x.min(1.0) } else { 0.0 };
+    Rgb::new(channel(c.x), channel(c.y), channel(c.z))
+}
+
+#[cfg(test)]
+#[path = "span_tests.rs"]
+mod tests;

@@ -1,0 +1,166 @@
+//! The span kernels against the point-by-point functions they stand for, lane by lane, bit for
+//! bit — on ordinary points and on the hard cases (a light or the eye on the point, normals that
+//! cancel, zero normals).
+
+use cg_core::Rgb;
+use cg_core::glam::Vec3;
+use cg_core::light::{Attenuation, Light, LightCounts, LightKind, LightModel, Material, Specular};
+use cg_core::normals::interpolate_normal;
+
+use super::*;
+
+/// A small deterministic generator (xorshift), so the cases are the same on every run.
+struct Cases(u64);
+
+impl Cases {
+    fn next(&mut self) -> f32 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0
+    }
+
+    fn vec(&mut self) -> Vec3 {
+        Vec3::new(self.next(), self.next(), self.next())
+    }
+}
+
+fn bits(v: Vec3) -> [u32; 3] {
+    v.to_array().map(f32::to_bits)
+}
+
+#[test]
+fn interpolated_normals_are_the_reference_bit_for_bit_and_cancelling_ones_fall_back() {
+    let mut cases = Cases(0x9e37_79b9_7f4a_7c15);
+    for round in 0..400 {
+        let (mut b, mut normals) = (V3::default(), [V3::default(); 3]);
+        let mut lengths = [[0.0; LANES]; 3];
+        let mut given = [[Vec3::ZERO; 3]; LANES];
+        let mut weights = [Vec3::ZERO; LANES];
+        for i in 0..LANES {
+            let w = cases.vec().abs();
+            let w = w / (w.x + w.y + w.z);
+            let mut n = [cases.vec().normalize(), cases.vec().normalize(), cases.vec().normalize()];
+            match (round + i) % 4 {
+                // Opposite normals at the ends of an edge, halfway along it: an exact zero sum.
+                0 => (n[1], weights[i]) = (-n[0], Vec3::new(0.5, 0.5, 0.0)),
+                // Nearly opposite: the smallest coordinate one f32 step off, so the sum is a
+                // few 2⁻³⁰ long, not zero, and still below the cancellation threshold.
+                3 if round % 2 == 0 => {
+                    n[0] = Vec3::new(n[0].x, n[0].y, 1e-3).normalize();
+                    let mut m = -n[0];
+                    let axis = (0..3).min_by(|&a, &b| m[a].abs().total_cmp(&m[b].abs())).unwrap();
+                    m[axis] = f32::from_bits(m[axis].to_bits() + 1);
+                    (n[1], weights[i]) = (m, Vec3::new(0.5, 0.5, 0.0));
+                }
+                // A zero normal (a vertex without a usable one) among ordinary ones.
+                1 => (n[2], weights[i]) = (Vec3::ZERO, w),
+                _ => weights[i] = w,
+            }
+            given[i] = n;
+            b.set(i, weights[i]);
+            for k in 0..3 {
+                normals[k].set(i, n[k]);
+                lengths[k][i] = n[k].as_dvec3().length();
+            }
+        }
+        let mut out = V3::default();
+        let keep = interpolate_normals(&b, &normals, &lengths, &mut out);
+        let face = Vec3::new(0.0, 0.0, 7.0);
+        for i in 0..LANES {
+            let expected = interpolate_normal(given[i], weights[i], face);
+            let got = if keep[i] { out.get(i) } else { face };
+            assert_eq!(bits(got), bits(expected), "round {round}, lane {i}");
+            if (round + i) % 4 == 0 || ((round + i) % 4 == 3 && round % 2 == 0) {
+                assert!(!keep[i], "round {round}, lane {i}: a cancelling sum falls back");
+            }
+        }
+    }
+}
+
+#[test]
+fn the_light_model_is_the_reference_bit_for_bit() {
+    let attenuation = Attenuation { constant: 0.3, linear: 0.2, quadratic: 0.05 };
+    let light = |kind| Light {
+        kind,
+        ambient: Rgb::new(0.1, 0.2, 0.05),
+        diffuse: Rgb::new(0.9, 0.7, 0.8),
+        specular: Rgb::new(1.0, 0.9, 0.8),
+        attenuation,
+    };
+    let lights = vec![
+        light(LightKind::Directional { to_light: Vec3::new(1.0, 1.0, 0.5) }),
+        // On the first point of every span (a light without a direction from it).
+        light(LightKind::Point { position: Vec3::new(0.25, 0.5, -0.75) }),
+        light(LightKind::Spot {
+            position: Vec3::new(0.0, 2.0, 0.0),
+            direction: Vec3::NEG_Y,
+            cutoff_deg: 50.0,
+            exponent: 3.0,
+            inner_deg: Some(20.0),
+        }),
+        light(LightKind::Area {
+            corner: Vec3::new(-1.0, 2.0, -1.0),
+            edge_u: Vec3::X,
+            edge_v: Vec3::Z,
+            samples: [2, 2],
+        }),
+    ];
+    let eye = Vec3::new(0.5, 0.25, 0.125);
+    let backward = Vec3::new(0.0, 0.6, 0.8);
+    let mut cases = Cases(42);
+    for model in [
+        LightModel::Lecture { specular: Specular::Phong, local_viewer: true },
+        LightModel::Lecture { specular: Specular::Blinn, local_viewer: false },
+        LightModel::OpenGl { local_viewer: true },
+        LightModel::OpenGl { local_viewer: false },
+    ] {
+        let global_ambient = Rgb::splat(0.1);
+        let spans = SpanLights::new(model, global_ambient, &lights, eye, backward);
+        for colored in [false, true] {
+            let material = Material {
+                ka: Rgb::new(0.3, 0.2, 0.1),
+                kd: Rgb::new(0.6, 0.5, 0.4),
+                ks: Rgb::splat(0.5),
+                shininess: 12.5,
+                emission: Rgb::new(0.01, 0.02, 0.03),
+                ..Material::default()
+            };
+            for len in [LANES, 5, 1] {
+                let mut points = Points { len, ..Points::default() };
+                for i in 0..LANES {
+                    let p = if i == 0 { Vec3::new(0.25, 0.5, -0.75) } else { cases.vec() };
+                    // The eye on the third point (the local viewer's V has no direction there).
+                    let p = if i == 2 { eye } else { p };
+                    let n = if i == 3 { Vec3::ZERO } else { cases.vec().normalize() };
+                    points.p.set(i, p);
+                    points.n.set(i, n);
+                    points.color.set(i, cases.vec().abs());
+                }
+                let mut out = V3::default();
+                let mut counts = LightCounts::default();
+                super::light(&spans, &material, colored, &points, &mut out, &mut counts);
+                let mut expected_counts = LightCounts::default();
+                for i in 0..len {
+                    let p = points.p.get(i);
+                    let material = material.with_color(colored.then(|| points.color.get(i)));
+                    let v = model.view_vector(p, eye, backward);
+                    let expected = cg_core::light::shade_with_visibility_counted(
+                        model,
+                        global_ambient,
+                        &lights,
+                        &material,
+                        p,
+                        points.n.get(i),
+                        v,
+                        |_, _, _| 1.0,
+                        &mut expected_counts,
+                    )
+                    .total();
+                    assert_eq!(bits(out.get(i)), bits(expected), "{model:?}, lane {i} of {len}");
+                }
+                assert_eq!(counts, expected_counts, "{model:?}, {len} lanes: the counts");
+            }
+        }
+    }
+}
