@@ -18,9 +18,12 @@ pub struct Args {
     /// An earlier year's submissions, compared with this year's but not with one another (repeatable) / 過去の年度の提出物（今年の提出物とだけ比べます。複数指定可）
     #[arg(long, value_name = "SUBMISSIONS")]
     reference: Vec<PathBuf>,
-    /// A folder of reports, each file named with its student number (20260001.md, report-20260001.txt): their numbers are checked against the variants / レポートのフォルダ（ファイル名に学生番号を含める）。数値を課題と照らし合わせます
+    /// A folder of reports, each file named with its student number (20260001.md, report-20260001.txt), used instead of the report inside that student's submission. For a student without one here, the submission's own report/report.md or report/report.tex (where `cg report fill` writes it; UTF-8, UTF-16 or Shift_JIS; at most 4 MiB) is read. Reports' numbers are checked against the variants / レポートのフォルダ（ファイル名に学生番号を含める）。その学生の提出物の中のレポートの代わりに使います。ここにない学生は、提出物の中の report/report.md か report/report.tex（cg report fill が書く場所。UTF-8・UTF-16・Shift_JIS、4 MiB まで）を読みます。レポートの数値を課題と照らし合わせます
     #[arg(long, value_name = "DIR")]
     reports: Option<PathBuf>,
+    /// The class roster, as `cg grade --roster` reads it (CSV: student, name, entry): an entry on it is that student, and one without exercises/student.toml is compared too / 名簿（cg grade --roster と同じ CSV: student, name, entry）。名簿の学生番号を使い、exercises/student.toml のない提出物も比べます
+    #[arg(long, value_name = "FILE")]
+    roster: Option<PathBuf>,
     /// The least share of the smaller submission's fingerprints two submissions must share to be listed (0 to 1) / 一覧に載せる類似度の下限（小さいほうの提出物の指紋のうち共有する割合、0〜1）
     #[arg(long, value_name = "SCORE", default_value_t = Settings::default().threshold)]
     threshold: f64,
@@ -56,6 +59,12 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
     for reference in &args.reference {
         class.extend(read::class(reference, true).map_err(|e| e.get(lang).to_owned())?);
     }
+    if let Some(path) = &args.roster {
+        let roster = cg_grade::roster::Roster::read(path).map_err(|e| e.get(lang).to_owned())?;
+        for note in read::bind(&mut class, &roster) {
+            eprintln!("{}", note.get(lang));
+        }
+    }
     if let Some(dir) = &args.reports {
         let unmatched = read::reports(dir, &mut class).map_err(|e| e.get(lang).to_owned())?;
         for name in unmatched {
@@ -72,6 +81,11 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
     for s in class.iter().filter(|s| s.refused.is_some()) {
         let why = s.refused.as_ref().map(|w| w.get(lang).to_owned()).unwrap_or_default();
         eprintln!("{}: {why}", s.name);
+    }
+    for s in &class {
+        for note in &s.notes {
+            eprintln!("{}: {}", s.name, note.get(lang));
+        }
     }
     let analysis = cg_similarity::analyse(&class, &stubs, settings);
     cg_similarity::output::write(&args.out, &class, &analysis, lang)?;
@@ -91,6 +105,16 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
         ),
     );
     println!("{}", summary.get(lang));
+    let inside = class.iter().filter(|s| s.report_inside.is_some()).count();
+    let given = class.iter().filter(|s| s.report.is_some()).count() - inside;
+    let reports = Text::new(
+        format!("レポート: 提出物の中から {inside} 件、--reports から {given} 件"),
+        format!("reports: {inside} from inside the submissions, {given} from --reports"),
+    );
+    println!("{}", reports.get(lang));
+    if let Some(note) = read::set_aside(&class) {
+        println!("{}", note.get(lang));
+    }
     for p in &analysis.pairs {
         println!(
             "  {:>3.0}%  {} ({}) — {} ({})",

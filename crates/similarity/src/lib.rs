@@ -18,6 +18,9 @@
 //!   follow from *another* student's variant is flagged, with whose and which numbers
 //!   ([`variant`]).
 //!
+//! A student's report comes from the `--reports` folder ([`read::reports`]) or from inside the
+//! submission, where `cg report fill` writes it ([`inside`]); the first when both are there.
+//!
 //! What it writes: `similarity.csv` and `similarity.html` ([`output`]).
 
 use std::collections::BTreeMap;
@@ -28,6 +31,7 @@ pub mod compare;
 pub mod cross;
 pub mod groups;
 pub mod html;
+pub mod inside;
 pub mod output;
 pub mod read;
 pub mod tokenize;
@@ -47,8 +51,15 @@ pub struct Submission {
     pub student: Option<cg_assign::StudentFile>,
     /// `a1` … `s` → the text of `exercises/src/<m>.rs`.
     pub modules: BTreeMap<String, String>,
-    /// The student's report (Markdown or text), when given.
+    /// The student's report (Markdown, LaTeX or text), when given: from `--reports`
+    /// ([`read::reports`]), else the one inside the submission ([`inside`]).
     pub report: Option<String>,
+    /// Where `report` is inside the submission (`report/report.md`), when it came from there.
+    pub report_inside: Option<String>,
+    /// A report inside the submission that was set aside for the one `--reports` has.
+    pub report_set_aside: Option<String>,
+    /// What was skipped while reading it (a report too big or not text), to be shown.
+    pub notes: Vec<Text>,
     /// An earlier year's submission: compared with this year's only.
     pub reference: bool,
     /// Why it could not be read, if it could not.

@@ -1,6 +1,7 @@
 //! The class, read exactly as `cg grade` reads it ([`cg_grade::moodle::input`]: a folder of
 //! folders and zips, or Moodle's "download all submissions", each read as hostile input and
-//! bounded), the stubs the students were given, and the reports.
+//! bounded), the stubs the students were given, the reports (inside each submission, or from a
+//! folder of their own) and the roster.
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -12,8 +13,8 @@ use cg_harness::{StudentNumber, TableVersion};
 use crate::Submission;
 
 /// The submissions of `path` (see [`cg_grade::moodle::input::entries`]), each marked
-/// `reference` or not. An entry that cannot be read is kept with the reason (and compared with
-/// nothing).
+/// `reference` or not, this year's each with the report inside it ([`crate::inside`]). An
+/// entry that cannot be read is kept with the reason (and compared with nothing).
 ///
 /// # Errors
 /// The folder or zip itself cannot be read.
@@ -25,18 +26,21 @@ pub fn class(path: &Path, reference: bool) -> Result<Vec<Submission>, Text> {
             let mut s = Submission { name: entry.name.clone(), reference, ..Submission::default() };
             match entry.read() {
                 Ok(files) => {
+                    if !reference {
+                        let (found, notes) = crate::inside::report(entry);
+                        if let Some(found) = found {
+                            s.report = Some(found.text);
+                            s.report_inside = Some(found.path);
+                        }
+                        s.notes = notes;
+                    }
                     for (m, bytes) in files.modules {
                         s.modules.insert(m, String::from_utf8_lossy(&bytes).into_owned());
                     }
                     match files.student_toml.as_deref().map(student_file) {
                         Some(Ok(file)) => s.student = Some(file),
                         Some(Err(why)) => s.refused = Some(why),
-                        None => {
-                            s.refused = Some(Text::new(
-                                "exercises/student.toml がありません",
-                                "exercises/student.toml is missing",
-                            ));
-                        }
+                        None => s.refused = Some(no_student_toml()),
                     }
                 }
                 Err(why) => s.refused = Some(why),
@@ -44,6 +48,47 @@ pub fn class(path: &Path, reference: bool) -> Result<Vec<Submission>, Text> {
             s
         })
         .collect())
+}
+
+fn no_student_toml() -> Text {
+    Text::new("exercises/student.toml がありません", "exercises/student.toml is missing")
+}
+
+/// Binds this year's submissions to the roster's students, as `cg grade --roster` does: an
+/// entry on the roster is the roster's student, whatever its `student.toml` says; an entry
+/// without `student.toml` is the roster's student too (with the latest table), where `cg grade`
+/// would refuse it, since only the number is needed here. Returns a note for each number changed.
+#[must_use]
+pub fn bind(class: &mut [Submission], roster: &cg_grade::roster::Roster) -> Vec<Text> {
+    let mut notes = Vec::new();
+    for s in class.iter_mut().filter(|s| !s.reference) {
+        let Some(row) = roster.find(&s.name) else { continue };
+        match &mut s.student {
+            Some(file) if file.student != row.student => {
+                notes.push(Text::new(
+                    format!(
+                        "{}: student.toml は {}、名簿は {}: 名簿の番号を使います",
+                        s.name, file.student, row.student
+                    ),
+                    format!(
+                        "{}: student.toml says {}, the roster {}: the roster's is used",
+                        s.name, file.student, row.student
+                    ),
+                ));
+                file.student = row.student.clone();
+            }
+            Some(_) => {}
+            None if s.refused == Some(no_student_toml()) => {
+                s.student = Some(cg_assign::StudentFile {
+                    student: row.student.clone(),
+                    table: TableVersion::LATEST,
+                });
+                s.refused = None;
+            }
+            None => {}
+        }
+    }
+    notes
 }
 
 /// `exercises/student.toml` from its bytes: `student = "12345678"` and an optional `table`,
@@ -102,7 +147,8 @@ fn text_file(path: &Path) -> Result<String, Text> {
 }
 
 /// Attaches the reports in `dir` to this year's submissions: each file whose name holds a
-/// student number (`20260001.md`, `report-20260001.txt`) goes to that student's submissions.
+/// student number (`20260001.md`, `report-20260001.txt`) goes to that student's submissions,
+/// in place of a report found inside one (kept in `report_set_aside`: [`set_aside`]).
 /// Returns the files that matched no one.
 ///
 /// # Errors
@@ -138,9 +184,27 @@ pub fn reports(dir: &Path, class: &mut [Submission]) -> Result<Vec<String>, Text
         let text = text_file(&path)?;
         for s in owners {
             s.report = Some(text.clone());
+            s.report_set_aside = s.report_inside.take().or(s.report_set_aside.take());
         }
     }
     Ok(unmatched)
+}
+
+/// What the summary says once when `--reports` had a report for students whose submissions
+/// hold one too: that the `--reports` one was used, for how many.
+#[must_use]
+pub fn set_aside(class: &[Submission]) -> Option<Text> {
+    let n = class.iter().filter(|s| s.report_set_aside.is_some()).count();
+    (n > 0).then(|| {
+        Text::new(
+            format!(
+                "提出物の中にもレポートがある {n} 人は --reports のレポートを使いました（提出物の中のものは使いません）"
+            ),
+            format!(
+                "the --reports report was used for {n} students whose submissions hold one too (theirs was set aside)"
+            ),
+        )
+    })
 }
 
 /// The first run of exactly eight digits in `name`.

@@ -58,6 +58,21 @@ enum Source {
     Refused(Text),
 }
 
+/// Where an entry's files are ([`Entry::origin`]).
+#[derive(Clone, Copy, Debug)]
+pub enum Origin<'a> {
+    /// A folder or a `.zip` of the submissions folder.
+    Path(&'a Path),
+    /// A Moodle participant in an unpacked download: its folders and flat files, each with the
+    /// path inside the upload it stands for.
+    Folder(&'a [(String, PathBuf)]),
+    /// A Moodle participant in the download's zip: the zip, and its items (index, path inside
+    /// the upload).
+    Zip(&'a Path, &'a [(usize, String)]),
+    /// An item of a Moodle download that is no participant's.
+    Refused,
+}
+
 impl Entry {
     /// One submission on its own, named after its file or folder: what `cg grade-one` grades
     /// (Gradescope's `/autograder/submission`). A `.zip` is read as an entry of a submissions
@@ -84,6 +99,18 @@ impl Entry {
         match self.source {
             Source::Path(_) | Source::Refused(_) => None,
             Source::Folder(_) | Source::Zip(..) => Name::parse(&self.name),
+        }
+    }
+
+    /// Where the entry's files are, for a tool that reads more of them than the six
+    /// (`cg similarity` reads the report).
+    #[must_use]
+    pub fn origin(&self) -> Origin<'_> {
+        match &self.source {
+            Source::Path(path) => Origin::Path(path),
+            Source::Folder(roots) => Origin::Folder(roots),
+            Source::Zip(zip, items) => Origin::Zip(zip, items),
+            Source::Refused(_) => Origin::Refused,
         }
     }
 

@@ -1,0 +1,388 @@
+//! The report a student hands in with the code: `report/report.md` or `report/report.tex`, where
+//! `cg report fill` writes it, next to `exercises/` in the submission (a folder, a zip, a Moodle
+//! participant's upload and the zips in it), or loose at the top of an upload or of a zip in it.
+//!
+//! The submission is read as `cg grade` reads it: only listed, never extracted; links, `..`
+//! paths and folders named `target` or starting with `.` are not followed; a participant's zip
+//! is read into memory only up to [`MAX_UPLOAD_ZIP_BYTES`]. The report is read in the encoding
+//! the student's editor wrote it in (UTF-8, UTF-16 or Shift_JIS, detected as `cg report` does:
+//! [`cg_core::text::decode`]), and skipped, with a note, when over [`MAX_REPORT_BYTES`] or not
+//! text. When both `report.md` and `report.tex` are there (the fill writes both), the one changed
+//! last is the one the student wrote in; `report.md` when they were changed at once.
+
+use std::io::{Cursor, Read};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use cg_core::lang::Text;
+use cg_core::text::Encoding;
+use cg_grade::moodle::input::{Entry, MAX_UPLOAD_ZIP_BYTES, Origin};
+use cg_grade::submission::{MAX_ZIP_ENTRIES, MODULES, unsafe_name};
+
+/// The largest report read: 4 MiB (a report is some tens of KiB; its figures are other files).
+pub const MAX_REPORT_BYTES: u64 = 4 << 20;
+
+/// The report's names, in the order preferred when both were changed at once.
+pub const REPORT_NAMES: [&str; 2] = ["report.md", "report.tex"];
+
+/// How deep a submission folder is looked into (the folder holding `exercises/` is at most two
+/// levels down, as `cg grade` finds it, and the report two below that).
+const PATH_DEPTH: usize = 4;
+
+/// How deep a Moodle participant's folder is looked into, as `cg grade` does.
+const UPLOAD_DEPTH: usize = 8;
+
+/// A report found in a submission.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Found {
+    /// Where, inside the submission (`report/report.md`, `kit.zip/report/report.tex`).
+    pub path: String,
+    /// Its text.
+    pub text: String,
+    /// The encoding it was read in.
+    pub encoding: Encoding,
+}
+
+#[derive(Clone, Debug)]
+enum Loc {
+    File(PathBuf),
+    Zip(Arc<PathBuf>, usize),
+    Bytes(Arc<Vec<u8>>, usize),
+}
+
+/// A file of the submission that may matter: an exercise file (to find the base) or a report.
+#[derive(Clone, Debug)]
+struct Item {
+    rel: String,
+    /// At the top of its upload or zip.
+    top: bool,
+    size: u64,
+    /// When it was last changed (seconds; comparable within one submission).
+    time: i64,
+    loc: Loc,
+}
+
+fn basename(rel: &str) -> &str {
+    rel.rsplit('/').next().unwrap_or(rel)
+}
+
+fn is_report(rel: &str) -> bool {
+    REPORT_NAMES.iter().any(|n| basename(rel).eq_ignore_ascii_case(n))
+}
+
+/// The exercise files' paths as `cg grade` finds them (under the base).
+fn exercise_paths() -> Vec<String> {
+    let mut w: Vec<String> = MODULES.iter().map(|m| format!("exercises/src/{m}.rs")).collect();
+    w.push("exercises/student.toml".to_owned());
+    w
+}
+
+fn wanted(rel: &str) -> bool {
+    is_report(rel) || exercise_paths().iter().any(|w| basename(w) == basename(rel))
+}
+
+fn is_zip(rel: &str) -> bool {
+    basename(rel).rsplit_once('.').is_some_and(|(_, e)| e.eq_ignore_ascii_case("zip"))
+}
+
+fn join(a: &str, b: &str) -> String {
+    match (a.is_empty(), b.is_empty()) {
+        (true, _) => b.to_owned(),
+        (_, true) => a.to_owned(),
+        _ => format!("{a}/{b}"),
+    }
+}
+
+/// The report in `entry`, if one is there, and notes on a report found but skipped.
+#[must_use]
+pub fn report(entry: &Entry) -> (Option<Found>, Vec<Text>) {
+    let mut items = Vec::new();
+    match entry.origin() {
+        Origin::Path(path) => {
+            if std::fs::symlink_metadata(path).is_ok_and(|m| m.is_dir()) {
+                walk("", path, PATH_DEPTH, false, &mut items);
+            } else if is_zip(&path.to_string_lossy()) {
+                list_disk_zip(path, None, "", false, &mut items);
+            }
+        }
+        Origin::Folder(roots) => {
+            for (rel, path) in roots {
+                walk(rel, path, UPLOAD_DEPTH, true, &mut items);
+            }
+        }
+        Origin::Zip(path, chosen) => list_disk_zip(path, Some(chosen), "", true, &mut items),
+        Origin::Refused => {}
+    }
+    let mut notes = Vec::new();
+    let found = choose(&items).and_then(|item| match read(item) {
+        Ok(found) => Some(found),
+        Err(why) => {
+            notes.push(why);
+            None
+        }
+    });
+    (found, notes)
+}
+
+/// The report to read: in the folder holding `exercises/` (its `report/`), else in the
+/// shallowest `report/` folder, else loose at the top of an upload or a zip; of `report.md`
+/// and `report.tex` in one folder, the one changed last (`report.md` at a tie).
+fn choose(items: &[Item]) -> Option<&Item> {
+    let exercises = exercise_paths();
+    let base = items
+        .iter()
+        .filter_map(|i| {
+            exercises.iter().find_map(|w| {
+                i.rel.strip_suffix(w.as_str()).filter(|p| p.is_empty() || p.ends_with('/'))
+            })
+        })
+        .min_by_key(|p| (p.len(), p.to_string()));
+    let folder = |rel: &str| rel.rsplit_once('/').map_or("", |(d, _)| d).to_owned();
+    let in_report = |rel: &str| basename(&folder(rel)).eq_ignore_ascii_case("report");
+    let reports: Vec<&Item> =
+        items.iter().filter(|i| is_report(&i.rel) && (in_report(&i.rel) || i.top)).collect();
+    let rank = |i: &Item| {
+        let here = base.is_some_and(|b| folder(&i.rel) == format!("{b}report"));
+        (!here, !in_report(&i.rel), i.rel.matches('/').count(), folder(&i.rel))
+    };
+    let best = reports.iter().map(|i| rank(i)).min()?;
+    reports.into_iter().filter(|i| rank(i) == best).min_by_key(|i| {
+        let md = basename(&i.rel).eq_ignore_ascii_case(REPORT_NAMES[0]);
+        (std::cmp::Reverse(i.time), !md, i.rel.clone())
+    })
+}
+
+fn too_big(rel: &str, size: u64) -> Text {
+    Text::new(
+        format!("{rel} が大きすぎるので読みません（{size} バイト、上限 {MAX_REPORT_BYTES}）"),
+        format!("{rel} is too big and was skipped ({size} bytes, at most {MAX_REPORT_BYTES})"),
+    )
+}
+
+fn unreadable(rel: &str, e: &dyn std::fmt::Display) -> Text {
+    Text::new(
+        format!("{rel} を読めないので飛ばします: {e}"),
+        format!("{rel} cannot be read and was skipped: {e}"),
+    )
+}
+
+/// Reads `reader` up to one byte over the limit (the size a zip declares may lie).
+fn bounded(reader: impl Read, rel: &str) -> Result<Vec<u8>, Text> {
+    let mut bytes = Vec::new();
+    reader.take(MAX_REPORT_BYTES + 1).read_to_end(&mut bytes).map_err(|e| unreadable(rel, &e))?;
+    if bytes.len() as u64 > MAX_REPORT_BYTES {
+        return Err(too_big(rel, bytes.len() as u64));
+    }
+    Ok(bytes)
+}
+
+fn from_zip<R: Read + std::io::Seek>(
+    mut zip: zip::ZipArchive<R>,
+    at: usize,
+    rel: &str,
+) -> Result<Vec<u8>, Text> {
+    let entry = zip.by_index(at).map_err(|e| unreadable(rel, &e))?;
+    bounded(entry, rel)
+}
+
+fn read(item: &Item) -> Result<Found, Text> {
+    let rel = item.rel.as_str();
+    if item.size > MAX_REPORT_BYTES {
+        return Err(too_big(rel, item.size));
+    }
+    let bytes = match &item.loc {
+        Loc::File(path) => {
+            bounded(std::fs::File::open(path).map_err(|e| unreadable(rel, &e))?, rel)?
+        }
+        Loc::Zip(path, at) => {
+            let file = std::fs::File::open(path.as_path()).map_err(|e| unreadable(rel, &e))?;
+            from_zip(zip::ZipArchive::new(file).map_err(|e| unreadable(rel, &e))?, *at, rel)?
+        }
+        Loc::Bytes(bytes, at) => {
+            let zip = zip::ZipArchive::new(Cursor::new(bytes.as_slice()))
+                .map_err(|e| unreadable(rel, &e))?;
+            from_zip(zip, *at, rel)?
+        }
+    };
+    let (text, encoding) = cg_core::text::decode(&bytes, None).map_err(|e| {
+        let t = e.text();
+        Text::new(
+            format!("{rel} を文字として読めないので飛ばします: {}", t.ja),
+            format!("{rel} is not text and was skipped: {}", t.en),
+        )
+    })?;
+    Ok(Found { path: rel.to_owned(), text, encoding })
+}
+
+fn seconds(meta: &std::fs::Metadata) -> i64 {
+    meta.modified()
+        .ok()
+        .and_then(|t| t.duration_since(std::time::UNIX_EPOCH).ok())
+        .map_or(0, |d| i64::try_from(d.as_secs()).unwrap_or(i64::MAX))
+}
+
+/// The files that may matter under `path` (standing for `rel`): no link followed, no folder
+/// named `target` or starting with `.`, at most [`MAX_ZIP_ENTRIES`] looked at; with `zips`,
+/// the zips in it looked into.
+fn walk(rel: &str, path: &Path, depth: usize, zips: bool, out: &mut Vec<Item>) {
+    let mut seen = 0usize;
+    let mut stack = vec![(rel.to_owned(), path.to_path_buf(), 0usize)];
+    while let Some((rel, path, level)) = stack.pop() {
+        let Ok(meta) = std::fs::symlink_metadata(&path) else { continue };
+        if meta.file_type().is_symlink() {
+            continue;
+        }
+        if meta.is_dir() {
+            let name = basename(&rel);
+            if level >= depth || (level > 0 && (name == "target" || name.starts_with('.'))) {
+                continue;
+            }
+            let Ok(list) = std::fs::read_dir(&path) else { continue };
+            for e in list.flatten() {
+                seen += 1;
+                if seen > MAX_ZIP_ENTRIES {
+                    return;
+                }
+                let name = e.file_name().to_string_lossy().into_owned();
+                stack.push((join(&rel, &name), e.path(), level + 1));
+            }
+        } else if meta.is_file() && zips && is_zip(&rel) {
+            list_disk_zip(&path, None, &rel, false, out);
+        } else if meta.is_file() && wanted(&rel) {
+            let top = level <= 1 && !rel.contains('/');
+            out.push(Item {
+                rel,
+                top,
+                size: meta.len(),
+                time: seconds(&meta),
+                loc: Loc::File(path),
+            });
+        }
+    }
+}
+
+/// A zip entry's name as `cg grade` reads it: UTF-8, else Shift_JIS, else the zip's own; `\`
+/// as `/`.
+fn entry_name(raw: &[u8], fallback: &str) -> String {
+    let name = match std::str::from_utf8(raw) {
+        Ok(s) => s.to_owned(),
+        Err(_) => cg_core::text::decode(raw, Some(Encoding::ShiftJis))
+            .map_or_else(|_| fallback.to_owned(), |(s, _)| s),
+    };
+    name.replace('\\', "/")
+}
+
+/// A zip's date as seconds from year 0 (local time, as the zip stores it).
+fn zip_seconds(t: Option<zip::DateTime>) -> i64 {
+    let Some(t) = t else { return 0 };
+    let days = i64::from(t.year()) * 372 + i64::from(t.month()) * 31 + i64::from(t.day());
+    days * 86_400 + i64::from(t.hour()) * 3600 + i64::from(t.minute()) * 60 + i64::from(t.second())
+}
+
+/// The files that may matter in the zip at `path` (only the items `chosen`, with the paths
+/// they stand for, when given: a Moodle download's participant), each named `prefix/…`; with
+/// `zips`, the zips in it looked into (one level, as `cg grade` does).
+fn list_disk_zip(
+    path: &Path,
+    chosen: Option<&[(usize, String)]>,
+    prefix: &str,
+    zips: bool,
+    out: &mut Vec<Item>,
+) {
+    let Ok(file) = std::fs::File::open(path) else { return };
+    let Ok(mut zip) = zip::ZipArchive::new(file) else { return };
+    let shared = Arc::new(path.to_path_buf());
+    let all: Vec<(usize, Option<String>)> = match chosen {
+        Some(items) => items.iter().map(|(i, rel)| (*i, Some(rel.clone()))).collect(),
+        None if zip.len() > MAX_ZIP_ENTRIES => return,
+        None => (0..zip.len()).map(|i| (i, None)).collect(),
+    };
+    for (i, given) in all {
+        let Some((rel, size, time)) = zip.by_index_raw(i).ok().and_then(|e| {
+            if e.is_dir() || e.is_symlink() {
+                return None;
+            }
+            let name =
+                given.unwrap_or_else(|| entry_name(e.name_raw(), &e.name().unwrap_or_default()));
+            (!unsafe_name(&name)).then(|| (name, e.size(), zip_seconds(e.last_modified())))
+        }) else {
+            continue;
+        };
+        let top = !rel.contains('/');
+        let rel = join(prefix, &rel);
+        if zips && is_zip(&rel) {
+            if size > MAX_UPLOAD_ZIP_BYTES {
+                continue;
+            }
+            let Ok(entry) = zip.by_index(i) else { continue };
+            let mut bytes = Vec::new();
+            if entry.take(MAX_UPLOAD_ZIP_BYTES + 1).read_to_end(&mut bytes).is_err()
+                || bytes.len() as u64 > MAX_UPLOAD_ZIP_BYTES
+            {
+                continue;
+            }
+            list_bytes_zip(Arc::new(bytes), &rel, out);
+        } else if wanted(&rel) {
+            out.push(Item { rel, top, size, time, loc: Loc::Zip(Arc::clone(&shared), i) });
+        }
+    }
+}
+
+/// The files that may matter in a zip inside an upload, each named `prefix/…`.
+fn list_bytes_zip(bytes: Arc<Vec<u8>>, prefix: &str, out: &mut Vec<Item>) {
+    let Ok(mut zip) = zip::ZipArchive::new(Cursor::new(bytes.as_slice())) else { return };
+    if zip.len() > MAX_ZIP_ENTRIES {
+        return;
+    }
+    for i in 0..zip.len() {
+        let Ok(e) = zip.by_index_raw(i) else { continue };
+        let name = entry_name(e.name_raw(), &e.name().unwrap_or_default());
+        if e.is_dir() || e.is_symlink() || unsafe_name(&name) || !wanted(&name) {
+            continue;
+        }
+        let (top, size, time) = (!name.contains('/'), e.size(), zip_seconds(e.last_modified()));
+        out.push(Item {
+            rel: join(prefix, &name),
+            top,
+            size,
+            time,
+            loc: Loc::Bytes(Arc::clone(&bytes), i),
+        });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn item(rel: &str, time: i64) -> Item {
+        Item {
+            rel: rel.to_owned(),
+            top: !rel.contains('/'),
+            size: 1,
+            time,
+            loc: Loc::File(rel.into()),
+        }
+    }
+
+    #[test]
+    fn the_report_next_to_exercises_and_changed_last_is_chosen() {
+        let chosen = |items: &[Item]| choose(items).map(|i| i.rel.clone());
+        let kit = [
+            item("kit/exercises/src/a1.rs", 0),
+            item("kit/report/report.md", 5),
+            item("kit/report/report.tex", 9),
+            item("kit/report-template/ja/report.md", 20),
+            item("old/report/report.md", 30),
+        ];
+        assert_eq!(chosen(&kit).as_deref(), Some("kit/report/report.tex"));
+        let mut tie = kit.to_vec();
+        tie[2].time = 5;
+        assert_eq!(chosen(&tie).as_deref(), Some("kit/report/report.md"));
+        // A loose report of an upload whose exercises/ is in a zip.
+        let loose = [item("exercises.zip/exercises/student.toml", 0), item("report.md", 0)];
+        assert_eq!(chosen(&loose).as_deref(), Some("report.md"));
+        // A template's copy is no report.
+        assert_eq!(chosen(&kit[3..4]), None);
+    }
+}
