@@ -40,7 +40,7 @@ use std::sync::Mutex;
 use crate::error::RenderError;
 use crate::lighting::{Lighting, SurfacePoint};
 use crate::output::{DEFAULT_TILE_SIZE, Options, Output, Stats};
-use crate::span::{self, Corners, LANES, PhongSpan, Points, SpanLights, V3, saturate};
+use crate::span::{self, LANES, PhongSpan, Points, SpanLights, V3, saturate};
 
 /// Bits of sub-pixel precision: window coordinates are snapped to multiples of `1/256` pixel
 /// (as Direct3D 10+ requires, and as Mesa's llvmpipe does) before the edge functions are set up.
@@ -1142,45 +1142,57 @@ fn draw_tile<L: Lighting + ?Sized>(
     // Phong's fragments of the scene's own light model, lit eight at a time.
     let mut span = PhongSpan::default();
     let spans = frame.spans.as_ref().filter(|_| frame.shading == Shading::Phong);
-    let flush = |span: &mut PhongSpan, target: &mut Target<'_>, counts: &mut LightCounts| {
+    let flush = |span: &mut PhongSpan,
+                 target: &mut Target<'_>,
+                 counts: &mut LightCounts,
+                 stats: &mut Stats| {
         if let Some(lights) = spans {
             let draw = &draws[span.object];
-            let env = draw.texture.map(|t| t.env);
+            let texture = draw.texture.map(|t| span::Texturing {
+                texture: t.texture,
+                sampler: t.sampler,
+                env: t.env,
+            });
             // The face normal where the corners' normals cancel, from the face's own corners.
             let vertices = &buffers[span.object];
-            let face = |(_, face): (u32, u32)| {
+            let face = |face: u32| {
                 let face = draw.prepared.mesh.faces[face as usize];
                 world_face_normal(draw, face.map(|i| &vertices[i as usize]))
             };
-            let material = &draw.material;
-            span.flush(lights, material, draw.has_colors(), env, counts, face, |row, column, c| {
-                target.color[row as usize][column as usize] = c;
-            });
+            let (material, colored) = (&draw.material, draw.has_colors());
+            stats.texture_samples +=
+                span.flush(lights, material, colored, texture, counts, face, |row, column, c| {
+                    target.color[row as usize][column as usize] = c;
+                });
         }
     };
     for &(c, t) in bin {
         let chunk = &chunks[c as usize];
         let draw = &draws[chunk.object];
         if span.object != chunk.object {
-            flush(&mut span, target, &mut counts);
+            flush(&mut span, target, &mut counts, &mut stats);
             span.object = chunk.object;
         }
         let vertices = &buffers[chunk.object];
         let triangle = &chunk.triangles[t as usize];
         // Vertices made by clipping hold shifted texture coordinates already (see `uv_origin`).
-        let corners = triangle.slot.map(|slot| {
-            if slot & NEW_VERTEX == 0 {
-                let v = vertices[slot as usize];
-                Vertex { uv: v.uv - triangle.uv_origin, ..v }
-            } else {
-                chunk.new_vertices[(slot & !NEW_VERTEX) as usize]
-            }
-        });
+        let corners = |triangle: &Triangle| {
+            triangle.slot.map(|slot| {
+                if slot & NEW_VERTEX == 0 {
+                    let v = vertices[slot as usize];
+                    Vertex { uv: v.uv - triangle.uv_origin, ..v }
+                } else {
+                    chunk.new_vertices[(slot & !NEW_VERTEX) as usize]
+                }
+            })
+        };
         let inv_area = 1.0 / triangle.edges.area2 as f32;
         let z = Vec3::from(triangle.z);
         if spans.is_some() && draw.lit {
-            // Made when the first fragment passes (many small triangles have none).
-            let mut normals = None;
+            // The triangle as the span needs it, made when its first fragment passes (many
+            // small triangles have none).
+            let mut lane_triangle = None;
+            span.end_triangle();
             rasterize(&triangle.edges, rect, |x, y, e| {
                 stats.fragments += 1;
                 let (row, column) = ((y - target.y0) as usize, (x - target.x0) as usize);
@@ -1190,29 +1202,21 @@ fn draw_tile<L: Lighting + ?Sized>(
                     return;
                 }
                 stats.fragments_shaded += 1;
-                let b = perspective(triangle, b);
-                let interpolate3 = |f: fn(&Vertex) -> Vec3| {
-                    b.x * f(&corners[0]) + b.y * f(&corners[1]) + b.z * f(&corners[2])
-                };
-                let p_world = interpolate3(|v| v.p_world);
-                let color = if draw.has_colors() { interpolate3(|v| v.color) } else { Rgb::ONE };
-                let texel = match &draw.texture {
-                    None => Vec4::ONE,
-                    Some(t) => {
-                        let uv = b.x * corners[0].uv + b.y * corners[1].uv + b.z * corners[2].uv;
-                        stats.texture_samples += 1;
-                        t.texture.sample(uv, t.sampler)
-                    }
-                };
-                let at = (row as u32, column as u32);
-                let normals =
-                    normals.get_or_insert_with(|| Corners::new(corners.map(|v| v.n_world)));
-                if span.push(at, b, normals, (c, triangle.face), p_world, color, texel) {
-                    flush(&mut span, target, &mut counts);
+                if !span.has_triangle() {
+                    let t = *lane_triangle.get_or_insert_with(|| {
+                        let corners = corners(triangle);
+                        let corners = corners.map(|v| (v.p_world, v.n_world, v.color, v.uv));
+                        span::Triangle::new(triangle.inv_w, corners, triangle.face)
+                    });
+                    span.begin(t);
+                }
+                if span.push((row as u32, column as u32), b) {
+                    flush(&mut span, target, &mut counts, &mut stats);
                 }
             });
             continue;
         }
+        let corners = corners(triangle);
         rasterize(&triangle.edges, rect, |x, y, e| {
             stats.fragments += 1;
             let (row, column) = ((y - target.y0) as usize, (x - target.x0) as usize);
@@ -1227,7 +1231,7 @@ fn draw_tile<L: Lighting + ?Sized>(
                 fragment(frame, draw, triangle, &corners, b, &mut stats, &mut counts);
         });
     }
-    flush(&mut span, target, &mut counts);
+    flush(&mut span, target, &mut counts, &mut stats);
     stats.add_lighting(&counts);
     stats
 }

@@ -182,7 +182,7 @@ fn try_normalize64(v: &D3, unit: &mut D3, valid: &mut [bool; LANES]) {
 /// perspective-correct barycentrics, `normals` the corners' normals and `lengths` theirs. Gives
 /// whether each lane's normal is usable; where it is not (the corners' normals cancel, NUMERICS
 /// row 18), the caller puts the face normal in its place.
-#[multiversion(targets("x86_64+avx2+fma"))]
+#[inline(always)]
 fn interpolate_normals(
     b: &V3,
     normals: &[V3; 3],
@@ -385,104 +385,230 @@ pub(crate) fn light(
 /// Phong's fragments waiting to be lit, up to [`LANES`] of them, all of one object, in the order
 /// they passed the depth test (a later one may cover an earlier one's pixel: they are written in
 /// that order, so the later wins, as drawn one by one).
-/// A triangle's corner normals, with their f64 lengths (made once per triangle).
-pub(crate) struct Corners {
-    normals: [Vec3; 3],
+/// What a Phong fragment needs of its triangle: its corners' attributes (texture coordinates
+/// already shifted by the triangle's origin), made once when its first fragment passes.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Triangle {
+    /// 1/w of each corner (perspective correction).
+    inv_w: [f32; 3],
+    p: [Vec3; 3],
+    n: [Vec3; 3],
+    color: [Rgb; 3],
+    uv: [cg_core::glam::Vec2; 3],
+    /// The face it belongs to, in its object's prepared mesh (for its face normal).
+    face: u32,
+    /// `|nᵢ|` in f64 (`DVec3::length`).
     lengths: [f64; 3],
 }
 
-impl Corners {
-    pub(crate) fn new(normals: [Vec3; 3]) -> Corners {
-        Corners { normals, lengths: normals.map(|n| n.as_dvec3().length()) }
+impl Triangle {
+    pub(crate) fn new(
+        inv_w: [f32; 3],
+        corners: [(Vec3, Vec3, Rgb, cg_core::glam::Vec2); 3],
+        face: u32,
+    ) -> Triangle {
+        let n = corners.map(|c| c.1);
+        Triangle {
+            inv_w,
+            p: corners.map(|c| c.0),
+            n,
+            color: corners.map(|c| c.2),
+            uv: corners.map(|c| c.3),
+            face,
+            lengths: n.map(|n| n.as_dvec3().length()),
+        }
     }
 }
 
+/// A texture as the fragment stage applies it.
+#[derive(Clone, Copy)]
+pub(crate) struct Texturing<'a> {
+    pub(crate) texture: &'a cg_core::texture::Texture,
+    pub(crate) sampler: cg_core::texture::Sampler,
+    pub(crate) env: cg_core::texture::TexEnv,
+}
+
+/// Phong's fragments waiting to be lit, up to [`LANES`] of them, all of one object, in the order
+/// they passed the depth test (a later one may cover an earlier one's pixel: they are written in
+/// that order, so the later wins, as drawn one by one). Each lane refers to one of the span's
+/// triangles (at most one per lane).
 #[derive(Default)]
 pub(crate) struct PhongSpan {
     /// The object they belong to (the draw's index).
     pub(crate) object: usize,
     len: usize,
-    /// Perspective-correct barycentrics.
+    /// Screen-space barycentrics.
     b: V3,
-    /// The corners' world normals.
-    normals: [V3; 3],
-    /// Their lengths in f64 (`DVec3::length`).
-    lengths: [Lanes64; 3],
-    /// Which triangle each came from, to make its face normal where the corners' normals
-    /// cancel (rare, so not made for every triangle).
-    tag: [(u32, u32); LANES],
-    points: Points,
-    /// The texel under each fragment (textured objects).
-    texel: [cg_core::glam::Vec4; LANES],
+    /// Which of `triangles` each lane belongs to.
+    slot: [u8; LANES],
+    triangles: [Triangle; LANES],
+    count: usize,
+    /// The slot of the triangle being drawn, while it is in this span.
+    current: Option<u8>,
     /// Where each goes: row and column within the tile.
     at: [(u32, u32); LANES],
 }
 
 impl PhongSpan {
-    /// Adds a fragment; `true` when the span is full.
-    #[allow(clippy::too_many_arguments)]
+    /// A new triangle's fragments follow.
     #[inline]
-    pub(crate) fn push(
-        &mut self,
-        at: (u32, u32),
-        b: Vec3,
-        normals: &Corners,
-        tag: (u32, u32),
-        p: Vec3,
-        color: Rgb,
-        texel: cg_core::glam::Vec4,
-    ) -> bool {
+    pub(crate) fn end_triangle(&mut self) {
+        self.current = None;
+    }
+
+    /// Whether the triangle being drawn is in the span already (else [`PhongSpan::begin`]).
+    #[inline]
+    pub(crate) fn has_triangle(&self) -> bool {
+        self.current.is_some()
+    }
+
+    /// Registers the triangle whose fragments come next.
+    pub(crate) fn begin(&mut self, triangle: Triangle) {
+        self.triangles[self.count] = triangle;
+        self.current = Some(self.count as u8);
+        self.count += 1;
+    }
+
+    /// Adds a fragment of the current triangle with its screen-space barycentrics; `true` when
+    /// the span is full.
+    #[inline]
+    pub(crate) fn push(&mut self, at: (u32, u32), b: Vec3) -> bool {
         let i = self.len;
         self.at[i] = at;
         self.b.set(i, b);
-        for k in 0..3 {
-            self.normals[k].set(i, normals.normals[k]);
-            self.lengths[k][i] = normals.lengths[k];
-        }
-        self.tag[i] = tag;
-        self.points.p.set(i, p);
-        self.points.color.set(i, color);
-        self.texel[i] = texel;
+        self.slot[i] = self.current.unwrap_or(0);
         self.len += 1;
         self.len == LANES
     }
 
     /// Lights the waiting fragments and gives each its final colour — the lit colour clamped,
-    /// the texture applied by `env` (when the object has one), clamped again, as the fragment
-    /// stage does — through `write(row, column, colour)`, in order. `face(tag)` is the face
-    /// normal of the triangle a fragment was pushed with. Empties the span.
+    /// the texture applied (when the object has one), clamped again, as the fragment stage does
+    /// — through `write(row, column, colour)`, in order. `face(face)` is a face's normal.
+    /// Empties the span (the triangle being drawn registers again). Gives the texture samples
+    /// taken.
     #[allow(clippy::too_many_arguments)]
     pub(crate) fn flush(
         &mut self,
         lights: &SpanLights,
         material: &Material,
         colored: bool,
-        env: Option<cg_core::texture::TexEnv>,
+        texture: Option<Texturing<'_>>,
         counts: &mut LightCounts,
-        face: impl Fn((u32, u32)) -> Vec3,
+        face: impl Fn(u32) -> Vec3,
         mut write: impl FnMut(u32, u32, Rgb),
-    ) {
-        if self.len == 0 {
-            return;
+    ) -> u64 {
+        let len = self.len;
+        if len == 0 {
+            self.count = 0;
+            self.current = None;
+            return 0;
         }
-        self.points.len = self.len;
-        let keep = interpolate_normals(&self.b, &self.normals, &self.lengths, &mut self.points.n);
-        for i in 0..self.len {
+        let mut g = Gathered::default();
+        if self.count == 1 {
+            // One triangle (the common case for large ones): its attributes in every lane.
+            let t = &self.triangles[0];
+            for k in 0..3 {
+                g.inv_w[k] = [t.inv_w[k]; LANES];
+                g.p[k] = V3::splat(t.p[k]);
+                g.n[k] = V3::splat(t.n[k]);
+                g.lengths[k] = [t.lengths[k]; LANES];
+                g.color[k] = V3::splat(t.color[k]);
+            }
+        } else {
+            for i in 0..LANES {
+                let t = &self.triangles[usize::from(self.slot[i])];
+                for k in 0..3 {
+                    g.inv_w[k][i] = t.inv_w[k];
+                    g.p[k].set(i, t.p[k]);
+                    g.n[k].set(i, t.n[k]);
+                    g.lengths[k][i] = t.lengths[k];
+                    g.color[k].set(i, t.color[k]);
+                }
+            }
+        }
+        let mut b = V3::default();
+        let mut points = Points { len, ..Points::default() };
+        let keep = fragments(&self.b, &g, colored, &mut b, &mut points);
+        for i in 0..len {
             if !keep[i] {
-                self.points.n.set(i, face(self.tag[i]));
+                points.n.set(i, face(self.triangles[usize::from(self.slot[i])].face));
             }
         }
         let mut lit = V3::default();
-        light(lights, material, colored, &self.points, &mut lit, counts);
-        for i in 0..self.len {
+        light(lights, material, colored, &points, &mut lit, counts);
+        for i in 0..len {
             let lit = saturate(lit.get(i));
-            let color = match env {
+            let color = match texture {
                 None => lit,
-                Some(env) => env.apply(lit, self.texel[i]),
+                Some(t) => {
+                    // Shifted by the triangle's origin (an integer under repeat): small numbers.
+                    let uv = &self.triangles[usize::from(self.slot[i])].uv;
+                    let bi = b.get(i);
+                    let uv = bi.x * uv[0] + bi.y * uv[1] + bi.z * uv[2];
+                    t.env.apply(lit, t.texture.sample(uv, t.sampler))
+                }
             };
             write(self.at[i].0, self.at[i].1, saturate(color));
         }
         self.len = 0;
+        self.count = 0;
+        self.current = None;
+        if texture.is_some() { len as u64 } else { 0 }
+    }
+}
+
+/// The lanes' triangle attributes, gathered into structure-of-arrays form.
+#[derive(Default)]
+struct Gathered {
+    inv_w: [Lanes; 3],
+    p: [V3; 3],
+    n: [V3; 3],
+    lengths: [Lanes64; 3],
+    color: [V3; 3],
+}
+
+/// The fragment stage before lighting, for each lane: perspective-correct barycentrics `b` from
+/// the screen-space `screen`, then the position, the colour (when `colored`) and the normal
+/// interpolated into `points`. Gives which normals are usable ([`interpolate_normals`]).
+#[multiversion(targets("x86_64+avx2+fma"))]
+fn fragments(
+    screen: &V3,
+    g: &Gathered,
+    colored: bool,
+    b: &mut V3,
+    points: &mut Points,
+) -> [bool; LANES] {
+    perspective(screen, &g.inv_w, b);
+    interpolate(b, &g.p, &mut points.p);
+    if colored {
+        interpolate(b, &g.color, &mut points.color);
+    }
+    interpolate_normals(b, &g.n, &g.lengths, &mut points.n)
+}
+
+/// Perspective-correct barycentrics from screen-space ones, as the fragment stage computes them:
+/// each corner weighted by its 1/w, the weights divided by their sum (the screen-space ones
+/// where that sum is not positive and finite).
+#[inline(always)]
+fn perspective(screen: &V3, inv_w: &[Lanes; 3], out: &mut V3) {
+    for i in 0..LANES {
+        let (x, y, z) =
+            (screen.x[i] * inv_w[0][i], screen.y[i] * inv_w[1][i], screen.z[i] * inv_w[2][i]);
+        let sum = x + y + z;
+        let ok = sum > 0.0 && sum.is_finite();
+        out.x[i] = if ok { x / sum } else { screen.x[i] };
+        out.y[i] = if ok { y / sum } else { screen.y[i] };
+        out.z[i] = if ok { z / sum } else { screen.z[i] };
+    }
+}
+
+/// `b.x·a₀ + b.y·a₁ + b.z·a₂` per lane and channel, in glam's order.
+#[inline(always)]
+fn interpolate(b: &V3, a: &[V3; 3], out: &mut V3) {
+    for i in 0..LANES {
+        out.x[i] = b.x[i] * a[0].x[i] + b.y[i] * a[1].x[i] + b.z[i] * a[2].x[i];
+        out.y[i] = b.x[i] * a[0].y[i] + b.y[i] * a[1].y[i] + b.z[i] * a[2].y[i];
+        out.z[i] = b.x[i] * a[0].z[i] + b.y[i] * a[1].z[i] + b.z[i] * a[2].z[i];
     }
 }
 
