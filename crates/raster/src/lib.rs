@@ -101,6 +101,7 @@ mod lighting;
 mod output;
 mod pipeline;
 mod span;
+mod vertex8;
 
 use cg_core::glam::Vec2;
 use cg_core::scene::Scene;

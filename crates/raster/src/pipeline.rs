@@ -41,6 +41,7 @@ use crate::error::RenderError;
 use crate::lighting::{Lighting, SurfacePoint};
 use crate::output::{DEFAULT_TILE_SIZE, Options, Output, Stats};
 use crate::span::{self, LANES, PhongSpan, Points, SpanLights, V3, saturate};
+use crate::vertex8;
 
 /// Bits of sub-pixel precision: window coordinates are snapped to multiples of `1/256` pixel
 /// (as Direct3D 10+ requires, and as Mesa's llvmpipe does) before the edge functions are set up.
@@ -311,11 +312,9 @@ fn draw_ready<L: Lighting + ?Sized>(
     windows.resize_with(draws.len(), Vec::new);
     for ((draw, vertices), windows) in draws.iter().zip(buffers.iter_mut()).zip(windows.iter_mut())
     {
-        stats += vertex_stage(frame, draw, vertices)?;
-        // Each vertex's outcodes and window position, once (a vertex is a corner of about six
-        // faces).
-        windows.clear();
-        windows.par_extend(vertices.par_iter().map(|v| Window::new(frame, v.p_clip)));
+        // Each vertex's outcodes and window position too, once (a vertex is a corner of about
+        // six faces).
+        stats += vertex_stage(frame, draw, vertices, windows)?;
     }
 
     let jobs: Vec<(usize, usize, usize)> = draws
@@ -529,7 +528,11 @@ impl Draw<'_> {
 // ---------------------------------------------------------------------------------------------
 // Vertex stage (頂点処理)
 
-/// Runs [`vertex`] over every vertex of one object, on all cores.
+/// The vertex stage over every vertex of one object, on all cores, eight at a time
+/// (`src/vertex8.rs`: model → world → view → clip, the normal, the window position and the
+/// outcodes into `windows`); under Gouraud each vertex is then lit — eight at a time by the
+/// scene's own light model, one by one by any other hook — and its colour clamped to `[0, 1]`,
+/// as OpenGL clamps the lit vertex colour before interpolating it.
 ///
 /// # Errors
 /// [`RenderError::NonFinite`] naming the first vertex whose clip position is not finite.
@@ -537,67 +540,95 @@ fn vertex_stage<L: Lighting + ?Sized>(
     frame: &Frame<'_, L>,
     draw: &Draw<'_>,
     vertices: &mut Vec<Vertex>,
+    windows: &mut Vec<Window>,
 ) -> Result<Stats, RenderError> {
-    let n = draw.prepared.mesh.positions.len();
+    let prepared = &draw.prepared;
+    let mesh = &prepared.mesh;
+    let n = mesh.positions.len();
     let mut stats = Stats { vertices: n as u64, ..Stats::default() };
-    let mesh = &draw.prepared.mesh;
-    let whole_colors = mesh.colors.as_ref().is_none_or(|c| c.len() == n);
-    vertices.clear();
-    if let Some(lights) = frame
-        .spans
-        .as_ref()
-        .filter(|_| frame.shading == Shading::Gouraud && draw.lit && whole_colors)
-    {
-        // The scene's own light model, eight vertices at a time (the same bits).
-        vertices.par_extend(
-            (0..n)
-                .into_par_iter()
-                .map(|i| vertex(frame, draw, i, false, &mut LightCounts::default())),
-        );
-        let colored = draw.has_colors();
-        let counts = vertices
-            .par_chunks_mut(LANES)
-            .fold(LightCounts::default, |mut counts, chunk| {
-                let mut points = Points { len: chunk.len(), ..Points::default() };
-                for (i, v) in chunk.iter().enumerate() {
-                    points.p.set(i, v.p_world);
-                    points.n.set(i, v.n_world);
-                    points.color.set(i, v.color);
-                }
-                let mut lit = V3::default();
-                span::light(lights, &draw.material, colored, &points, &mut lit, &mut counts);
-                for (i, v) in chunk.iter_mut().enumerate() {
-                    v.color = saturate(lit.get(i));
-                }
-                counts
-            })
-            .reduce(LightCounts::default, |mut a, b| {
-                a += b;
-                a
-            });
+    let t = vertex8::Transforms {
+        model: prepared.model,
+        normal: prepared.normal_matrix,
+        mirrored: prepared.mirrored,
+        view: frame.view,
+        projection: frame.projection,
+        width: frame.width as f32,
+        height: frame.height as f32,
+    };
+    let (normals, colors, uvs) =
+        (mesh.normals.as_deref(), mesh.colors.as_deref(), mesh.uvs.as_deref());
+    vertices.resize(n, Vertex::default());
+    windows.resize(n, Window { codes: (0, 0), screen: None });
+    vertices.par_chunks_mut(LANES).zip(windows.par_chunks_mut(LANES)).enumerate().for_each(
+        |(k, (vs, ws))| {
+            let start = k * LANES;
+            let (p, normal) = vertex8::gather(&mesh.positions, normals, start, vs.len());
+            let mut out = vertex8::Out::default();
+            vertex8::transform(&t, &p, &normal, &mut out);
+            for (i, (v, w)) in vs.iter_mut().zip(ws.iter_mut()).enumerate() {
+                let (color, uv) = vertex8::passed_on(colors, uvs, start + i);
+                let p_clip = vertex8::lane4(&out.p_clip, i);
+                *v = Vertex {
+                    p_clip,
+                    p_world: vertex8::lane3(&out.p_world, i),
+                    n_world: vertex8::lane3(&out.n_world, i),
+                    color,
+                    uv,
+                };
+                let codes = outcodes(p_clip, frame.guard);
+                // Only a vertex inside the guard-band volume is ever used unclipped.
+                let screen = (codes.1 == 0 && out.in_window[i]).then_some(ScreenVertex {
+                    x: out.x[i],
+                    y: out.y[i],
+                    z: out.z[i],
+                    inv_w: out.inv_w[i],
+                    slot: 0,
+                });
+                *w = Window { codes, screen };
+            }
+        },
+    );
+    let whole_colors = colors.is_none_or(|c| c.len() == n);
+    let colored = |i: usize| colors.and_then(|c| c.get(i)).copied();
+    if frame.shading == Shading::Gouraud && draw.lit {
+        let counts = match frame.spans.as_ref().filter(|_| whole_colors) {
+            // The scene's own light model, eight vertices at a time (the same bits).
+            Some(lights) => vertices
+                .par_chunks_mut(LANES)
+                .fold(LightCounts::default, |mut counts, chunk| {
+                    let mut points = Points { len: chunk.len(), ..Points::default() };
+                    for (i, v) in chunk.iter().enumerate() {
+                        points.p.set(i, v.p_world);
+                        points.n.set(i, v.n_world);
+                        points.color.set(i, v.color);
+                    }
+                    let mut lit = V3::default();
+                    let (material, has) = (&draw.material, draw.has_colors());
+                    span::light(lights, material, has, &points, &mut lit, &mut counts);
+                    for (i, v) in chunk.iter_mut().enumerate() {
+                        v.color = saturate(lit.get(i));
+                    }
+                    counts
+                })
+                .reduce(LightCounts::default, |mut a, b| {
+                    a += b;
+                    a
+                }),
+            // Any other hook, one vertex at a time.
+            None => vertices
+                .par_iter_mut()
+                .enumerate()
+                .fold(LightCounts::default, |mut counts, (i, v)| {
+                    let material = draw.material.with_color(colored(i));
+                    v.color = saturate(frame.light(v.p_world, v.n_world, &material, &mut counts));
+                    counts
+                })
+                .reduce(LightCounts::default, |mut a, b| {
+                    a += b;
+                    a
+                }),
+        };
         stats.add_lighting(&counts);
-    } else if frame.shading == Shading::Gouraud && draw.lit {
-        // Lit here: the light model's counts are summed over the vertices.
-        vertices.resize(n, Vertex::default());
-        let counts = vertices
-            .par_iter_mut()
-            .enumerate()
-            .fold(LightCounts::default, |mut counts, (i, v)| {
-                *v = vertex(frame, draw, i, true, &mut counts);
-                counts
-            })
-            .reduce(LightCounts::default, |mut a, b| {
-                a += b;
-                a
-            });
-        stats.add_lighting(&counts);
-    } else {
-        // Not lit here: nothing to count.
-        vertices.par_extend(
-            (0..n)
-                .into_par_iter()
-                .map(|i| vertex(frame, draw, i, false, &mut LightCounts::default())),
-        );
     }
     if let Some(i) = vertices.iter().position(|v| !v.p_clip.is_finite()) {
         // Named as the object's own mesh numbers it (the file's V-number), not as the prepared
@@ -626,37 +657,6 @@ fn first_non_finite<L: Lighting + ?Sized>(
         let p_clip = frame.projection * p_view.extend(1.0);
         (!p_clip.is_finite()).then_some((i, p_clip))
     })
-}
-
-/// The vertex stage for vertex `i`: model → world (positions by the model matrix, normals by the
-/// cofactor normal matrix, normalised, flipped back for a mirrored object) → view → clip. With
-/// `lit` (Gouraud, a hook other than the scene's own light model: that one lights eight vertices
-/// at a time afterwards) the vertex is lit here and its colour clamped to `[0, 1]`, as OpenGL
-/// clamps the lit vertex colour before interpolating it; `counts` gets the lighting's counts.
-fn vertex<L: Lighting + ?Sized>(
-    frame: &Frame<'_, L>,
-    draw: &Draw<'_>,
-    i: usize,
-    lit: bool,
-    counts: &mut LightCounts,
-) -> Vertex {
-    let prepared = &draw.prepared;
-    let mesh = &prepared.mesh;
-    let p_model = mesh.positions[i];
-    let p_world = transform_point(prepared.model, p_model);
-    let n_model = mesh.normals.as_ref().and_then(|n| n.get(i)).copied().unwrap_or(Vec3::ZERO);
-    let n_world = prepared.world_normal(n_model).unwrap_or(Vec3::ZERO);
-    let p_view = transform_point(frame.view, p_world);
-    let p_clip = frame.projection * p_view.extend(1.0);
-    let vertex_color = mesh.colors.as_ref().and_then(|c| c.get(i)).copied();
-    let uv = mesh.uvs.as_ref().and_then(|uv| uv.get(i)).copied().unwrap_or(Vec2::ZERO);
-    let color = if lit {
-        saturate(frame.light(p_world, n_world, &draw.material.with_color(vertex_color), counts))
-    } else {
-        vertex_color.unwrap_or(Rgb::ONE)
-    };
-    debug_assert!(color.is_finite());
-    Vertex { p_clip, p_world, n_world, color, uv }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -844,15 +844,6 @@ fn face_parts<L: Lighting + ?Sized>(
 struct Window {
     codes: (u8, u8),
     screen: Option<ScreenVertex>,
-}
-
-impl Window {
-    fn new<L: ?Sized>(frame: &Frame<'_, L>, p_clip: Vec4) -> Window {
-        let codes = outcodes(p_clip, frame.guard);
-        // Only a vertex inside the guard-band volume is ever used unclipped.
-        let screen = if codes.1 == 0 { viewport(frame, p_clip) } else { None };
-        Window { codes, screen }
-    }
 }
 
 /// Which planes a clip-space point lies outside, as bits (near, far, −x, +x, −y, +y): of the
