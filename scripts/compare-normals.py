@@ -4,7 +4,9 @@ Weighting::Area)` against trimesh's `Trimesh.vertex_normals` and Open3D's
 `TriangleMesh.compute_vertex_normals`, on the kit's icosphere at subdivision 7 (327 680 faces)
 and 8 (1 310 720 faces), plus a memory-bandwidth bound from a STREAM-like copy on all cores,
 and two yardsticks of what any loop that adds face normals to vertices costs on this machine: a
-naive f32 loop on all cores, and the additions alone (no arithmetic).
+naive f32 loop on all cores, and the additions alone (no arithmetic). Then the kit's
+`NormalsPlan` for positions that move while the faces stay: the time to make the plan once, and
+its per-frame call (the plan made outside the timing), against Open3D and the bound.
 
     python3 -m venv .venv && .venv/bin/pip install numpy scipy trimesh open3d
     .venv/bin/python scripts/compare-normals.py [--repeats N]
@@ -12,7 +14,8 @@ naive f32 loop on all cores, and the additions alone (no arithmetic).
 The meshes come from `cargo run --release -p cg-core --example export_mesh -- export LEVEL DIR`
 (.npy files), the kit's times from `... -- time LEVEL N` (ns, best of N; also the kit on one
 thread, the kit with the kernel of a CPU without FMA, a naive f32 loop on one thread and on all
-cores with its error, and the additions alone on all cores). Notes: trimesh weights
+cores with its error, the additions alone on all cores, and the plan: made once, per frame on
+all cores and on one thread). Notes: trimesh weights
 its vertex normals by the corner angles, not the areas (its `vertex_normals` is what a user calls);
 Open3D reuses triangle normals it already has, so they are cleared before each call. Both are
 timed best of N like the kit. Writes nothing; prints a table (docs/performance.md).
@@ -76,7 +79,13 @@ def main():
                    "naive_all": float(k["naive_f32_all_cores_ns_best"]),
                    "additions": float(k["additions_all_cores_ns_best"]),
                    "copy_one": float(k["copy_bytes_per_s"]),
-                   "copy": float(k["copy_all_cores_bytes_per_s"])}
+                   "copy": float(k["copy_all_cores_bytes_per_s"]),
+                   "plan_build": float(k["plan_build_ns_best"]),
+                   "plan": float(k["plan_ns_best"]),
+                   "plan_median": float(k["plan_ns_median"]),
+                   "plan_one": float(k["plan_one_thread_ns_best"]),
+                   "plan_records": float(k["plan_records_per_face"]),
+                   "plan_renumbered": k["plan_renumbered"] == "1"}
             if trimesh is not None:
                 row["trimesh"] = best(
                     max(3, args.repeats // 4),
@@ -126,6 +135,25 @@ def main():
               f"| {r['naive_all'] / 1e6:.2f} | {r['kit'] / 1e6:.2f} "
               f"| {r['additions'] / r['bound']:.2f} | {r['naive_all'] / r['bound']:.2f} "
               f"| {r['kit'] / r['bound']:.2f} |")
+
+    print()
+    print("Plan (faces fixed, positions moving): made once, then per frame (best of N)")
+    print("| faces | plan made once ms | per frame ms | Open3D ms | bound ms | Open3D/plan "
+          "| plan/bound |")
+    print("|---|---|---|---|---|---|---|")
+    for r in rows:
+        o3d_ratio = f"{r['open3d'] / r['plan']:.2f}" if "open3d" in r else "—"
+        o3d_ms = f"{r['open3d'] / 1e6:.2f}" if "open3d" in r else "—"
+        print(f"| {r['faces']} | {r['plan_build'] / 1e6:.1f} | {r['plan'] / 1e6:.2f} | {o3d_ms} "
+              f"| {r['bound'] / 1e6:.2f} | {o3d_ratio} | {r['plan'] / r['bound']:.2f} |")
+    print()
+    print("| faces | plan per frame, median ms | plan, one thread | one-shot kit | "
+          "records per face | renumbered |")
+    print("|---|---|---|---|---|---|")
+    for r in rows:
+        print(f"| {r['faces']} | {r['plan_median'] / 1e6:.2f} | {r['plan_one'] / 1e6:.2f} "
+              f"| {r['kit'] / 1e6:.2f} | {r['plan_records']:.3f} "
+              f"| {'yes' if r['plan_renumbered'] else 'no'} |")
 
 
 if __name__ == "__main__":

@@ -4,6 +4,8 @@
 //! ```text
 //! cargo run --release -p cg-core --example export_mesh -- export 7 DIR   # DIR/ico7-{v,f}.npy
 //! cargo run --release -p cg-core --example export_mesh -- time 7 REPEATS # one line per measure
+//! cargo run --release -p cg-core --example export_mesh -- time-plan 7 REPEATS # the plan only
+//! cargo run --release -p cg-core --example export_mesh -- profile-plan 7 N # N frames, for perf
 //! ```
 //!
 //! `time` prints `name value` lines: the best and median nanoseconds of
@@ -13,7 +15,10 @@
 //! a CPU without FMA, a naive f32 loop on one thread and on all cores with their largest angle
 //! from the kit's normals, and the additions alone (three random 16-byte read-modify-writes per
 //! face, no arithmetic, on all cores), the least any loop that adds face normals to vertices
-//! does.
+//! does. Then the [`NormalsPlan`] for meshes whose positions move: the time to make the plan
+//! (best of a few), and its per-frame call (the plan made once, outside the timing; best and
+//! median, on all cores and on one thread), with how many face records a frame computes per face
+//! and whether the plan renumbers the vertices.
 
 use std::io::Write;
 use std::time::Instant;
@@ -21,7 +26,8 @@ use std::time::Instant;
 use cg_core::glam::{Vec3, Vec4};
 use cg_core::mesh::Mesh;
 use cg_core::normals::{
-    Weighting, area_vertex_normals_without_fma, vertex_normals, vertex_normals_reference,
+    NormalsPlan, VertexNormals, Weighting, area_vertex_normals_without_fma, vertex_normals,
+    vertex_normals_reference,
 };
 use cg_core::shapes::icosphere;
 
@@ -129,9 +135,37 @@ fn largest_angle(a: &[Vec3], b: &[Vec3]) -> f64 {
         .fold(0.0f64, f64::max)
 }
 
+/// The plan for moving positions: made once (timed apart), then its per-frame call.
+fn time_plan(mesh: &Mesh, reference: &VertexNormals, repeats: usize) {
+    let (build, _) = time(repeats.div_ceil(4).max(3), || {
+        std::hint::black_box(NormalsPlan::for_mesh(std::hint::black_box(mesh)).expect("valid"));
+    });
+    println!("plan_build_ns_best {build:.0}");
+    let mut plan = NormalsPlan::for_mesh(mesh).expect("the icosphere's indices are in range");
+    let mut out = VertexNormals::default();
+    plan.area_normals_into(&mesh.positions, &mut out).expect("one position per vertex");
+    assert_eq!(&out, reference, "the plan gives the reference's bits");
+    let (best, median) = time(repeats, || {
+        plan.area_normals_into(std::hint::black_box(&mesh.positions), &mut out).expect("valid");
+        std::hint::black_box(&mut out);
+    });
+    println!("plan_ns_best {best:.0}\nplan_ns_median {median:.0}");
+    let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("a pool");
+    let (best, _) = time(repeats, || {
+        one.install(|| plan.area_normals_into(&mesh.positions, &mut out).expect("valid"));
+    });
+    println!("plan_one_thread_ns_best {best:.0}");
+    let (records_per_face, renumbered) = plan.layout();
+    println!(
+        "plan_records_per_face {records_per_face:.3}\nplan_renumbered {}",
+        u8::from(renumbered)
+    );
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let usage = "usage: export_mesh export LEVEL DIR | time LEVEL REPEATS";
+    let usage = "usage: export_mesh export LEVEL DIR | time LEVEL REPEATS | time-plan LEVEL REPEATS \
+                 | profile LEVEL N | profile-plan LEVEL N";
     let (Some(what), Some(level)) = (args.first(), args.get(1)) else {
         eprintln!("{usage}");
         std::process::exit(2);
@@ -235,11 +269,36 @@ fn main() {
                 std::hint::black_box(&mut dst);
             });
             println!("copy_all_cores_bytes_per_s {:.0}", bytes / (best * 1e-9));
+            time_plan(&mesh, &reference, repeats);
         }
         "profile" => {
             // Only the fast path, for a profiler.
             for _ in 0..args.get(2).map_or(50, |r| r.parse().expect("REPEATS is a number")) {
                 std::hint::black_box(vertex_normals(std::hint::black_box(&mesh), Weighting::Area));
+            }
+        }
+        "time-plan" => {
+            // Only the plan's per-frame call (best of REPEATS, all cores and one thread).
+            let repeats = args.get(2).map_or(50, |r| r.parse().expect("REPEATS is a number"));
+            let mut plan = NormalsPlan::for_mesh(&mesh).expect("valid");
+            let mut out = VertexNormals::default();
+            let (best, _) = time(repeats, || {
+                plan.area_normals_into(std::hint::black_box(&mesh.positions), &mut out)
+                    .expect("valid");
+            });
+            let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("a pool");
+            let (one_best, _) = time(repeats, || {
+                one.install(|| plan.area_normals_into(&mesh.positions, &mut out).expect("valid"));
+            });
+            println!("plan_ns_best {best:.0}\nplan_one_thread_ns_best {one_best:.0}");
+        }
+        "profile-plan" => {
+            // Only the plan's per-frame call, for a profiler.
+            let mut plan = NormalsPlan::for_mesh(&mesh).expect("valid");
+            let mut out = VertexNormals::default();
+            for _ in 0..args.get(2).map_or(50, |r| r.parse().expect("REPEATS is a number")) {
+                plan.area_normals_into(std::hint::black_box(&mesh.positions), &mut out)
+                    .expect("valid");
             }
         }
         _ => {

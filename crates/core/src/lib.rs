@@ -29,6 +29,26 @@
 //! [`math::try_normalize`], [`normals::face_normal`], [`transform::perspective`],
 //! [`transform::look_at`], [`optics::refract`]. The hard cases of the kit's docs/numerics.md are named
 //! tests in `crates/core/tests/`.
+//!
+//! ## Meshes that move
+//!
+//! For a mesh whose faces stay fixed while its positions change every frame (an animation, a
+//! deforming model), [`normals::NormalsPlan`] is made once from the faces and gives each
+//! frame's area-weighted vertex normals into a reused output, bit for bit
+//! [`normals::vertex_normals_reference`]:
+//!
+//! ```
+//! use cg_core::normals::{NormalsPlan, VertexNormals};
+//!
+//! let mut mesh = cg_core::shapes::icosphere(1.0, 2).unwrap();
+//! let mut plan = NormalsPlan::for_mesh(&mesh).unwrap(); // once
+//! let mut normals = VertexNormals::default();
+//! for frame in 0..3 {
+//!     mesh.positions.iter_mut().for_each(|p| p.x *= 1.0 + 0.1 * frame as f32);
+//!     plan.area_normals_into(&mesh.positions, &mut normals).unwrap(); // each frame
+//!     assert_eq!(normals.normals.len(), mesh.positions.len());
+//! }
+//! ```
 
 pub mod camera;
 pub mod features;

@@ -29,7 +29,8 @@ use multiversion::multiversion;
 use rayon::prelude::*;
 
 use super::{
-    CANCEL_FRACTION, DEGENERATE_SINE, F32_UNIT_ROUNDOFF, Fallback, VertexNormals, face_geometry,
+    CANCEL_FRACTION, DEGENERATE_SINE, F32_UNIT_ROUNDOFF, Fallback, VertexNormals, corner_geometry,
+    face_geometry,
 };
 use crate::math::{difference_of_products_f64, try_normalize_f64};
 use crate::mesh::Mesh;
@@ -49,7 +50,7 @@ const VERTEX_TASK: usize = 8192;
 const LANES: usize = 64;
 
 /// One face's contribution: its area vector and the vector's length, `[x, y, z, |n|]`.
-type Record = [f64; 4];
+pub(super) type Record = [f64; 4];
 
 /// [`vertex_normals`](super::vertex_normals) with [`Weighting::Area`](super::Weighting::Area) on
 /// a mesh whose indices are all in range (`None` otherwise): bit for bit the reference.
@@ -80,11 +81,11 @@ pub(super) fn area_vertex_normals(mesh: &Mesh, portable: bool) -> Option<VertexN
         let block = block_of(b);
         let out = &mut out[..block.len()];
         if parallel {
-            out.par_chunks_mut(TASK).zip(block.par_chunks(TASK)).enumerate().all(
-                |(t, (out, faces))| block_records(mesh, b * BLOCK + t * TASK, faces, out, portable),
-            )
+            out.par_chunks_mut(TASK)
+                .zip(block.par_chunks(TASK))
+                .all(|(out, faces)| block_records(&mesh.positions, faces, out, portable))
         } else {
-            block_records(mesh, b * BLOCK, block, out, portable)
+            block_records(&mesh.positions, block, out, portable)
         }
     };
     let blocks = faces.len().div_ceil(BLOCK);
@@ -179,7 +180,7 @@ fn unit_or_nan(s: &Record) -> Vec3 {
 /// [`quick_unit_f32`] does not vouch going through [`unit_or_nan`] itself. Returns how many
 /// vertices got NaN (they fall back).
 #[multiversion(targets("x86_64+avx2+fma"))]
-fn units(sums: &[Record], out: &mut [Vec3]) -> usize {
+pub(super) fn units(sums: &[Record], out: &mut [Vec3]) -> usize {
     let mut unresolved = 0;
     const SLACK: f64 = 1.0 / (1u64 << 46) as f64;
     let (groups, rest) = sums.as_chunks::<LANES>();
@@ -275,15 +276,16 @@ fn settle(mesh: &Mesh, normals: &mut [Vec3], fallbacks: &mut [(u32, Fallback)]) 
     }
 }
 
-/// The record of face `f` as the reference computes it (zeros for an unusable face).
-fn exact_record(mesh: &Mesh, f: usize) -> Record {
-    face_geometry(mesh, f).map_or([0.0; 4], |g| {
+/// The record of `face` (indices in range) as the reference computes it (zeros for an unusable
+/// face).
+pub(super) fn exact_record(positions: &[Vec3], face: [u32; 3]) -> Record {
+    corner_geometry(face.map(|v| positions[v as usize])).map_or([0.0; 4], |g| {
         let v = g.area_vector;
         [v.x, v.y, v.z, v.length()]
     })
 }
 
-/// The records of `faces` (faces `first..` of `mesh`) into `out`; `false` (and nothing computed)
+/// The records of `faces` (corners in `positions`) into `out`; `false` (and nothing computed)
 /// when an index is out of range.
 ///
 /// Compiled twice by `multiversion`: for x86-64 with AVX2 and FMA, chosen at run time when the
@@ -292,14 +294,13 @@ fn exact_record(mesh: &Mesh, f: usize) -> Record {
 /// [`quick_area_record`], which avoids the fused multiply-adds a plain x86-64 build would call a
 /// library function for.
 #[multiversion(targets("x86_64+avx2+fma"))]
-fn block_records(
-    mesh: &Mesh,
-    first: usize,
+pub(super) fn block_records(
+    positions: &[Vec3],
     faces: &[[u32; 3]],
     out: &mut [Record],
     portable: bool,
 ) -> bool {
-    let n = mesh.positions.len();
+    let n = positions.len();
     if faces.iter().flatten().fold(0, |m, &v| m.max(v)) as usize >= n {
         return false;
     }
@@ -308,9 +309,9 @@ fn block_records(
         all(target_arch = "x86_64", target_feature = "fma")
     ));
     if portable || !fma {
-        for (i, (face, record)) in faces.iter().zip(out.iter_mut()).enumerate() {
-            let [a, b, c] = face.map(|v| mesh.positions[v as usize]);
-            *record = quick_area_record(a, b, c).unwrap_or_else(|| exact_record(mesh, first + i));
+        for (&face, record) in faces.iter().zip(out.iter_mut()) {
+            let [a, b, c] = face.map(|v| positions[v as usize]);
+            *record = quick_area_record(a, b, c).unwrap_or_else(|| exact_record(positions, face));
         }
         return true;
     }
@@ -319,12 +320,12 @@ fn block_records(
     let (groups, rest) = faces.as_chunks::<LANES>();
     let (out_groups, out_rest) = out.split_at_mut(groups.len() * LANES);
     let (out_groups, _) = out_groups.as_chunks_mut::<LANES>();
-    for (g, (faces, out)) in groups.iter().zip(out_groups).enumerate() {
-        let ok = lane_records(&mut scratch, &mesh.positions, faces, out);
+    for (faces, out) in groups.iter().zip(out_groups) {
+        let ok = lane_records(&mut scratch, positions, faces, out);
         if !ok.iter().fold(true, |all, &ok| all & ok) {
             for (i, record) in out.iter_mut().enumerate() {
                 if !ok[i] {
-                    *record = exact_record(mesh, first + g * LANES + i);
+                    *record = exact_record(positions, faces[i]);
                 }
             }
         }
@@ -334,10 +335,9 @@ fn block_records(
         let mut group = [pad; LANES];
         group[..rest.len()].copy_from_slice(rest);
         let mut records = [[0.0; 4]; LANES];
-        let ok = lane_records(&mut scratch, &mesh.positions, &group, &mut records);
-        let f = first + groups.len() * LANES;
+        let ok = lane_records(&mut scratch, positions, &group, &mut records);
         for (i, record) in out_rest.iter_mut().enumerate() {
-            *record = if ok[i] { records[i] } else { exact_record(mesh, f + i) };
+            *record = if ok[i] { records[i] } else { exact_record(positions, rest[i]) };
         }
     }
     true

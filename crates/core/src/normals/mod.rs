@@ -12,6 +12,7 @@
 //! |---|---|
 //! | one normal per face | [`face_normal`], [`face_normals`] |
 //! | one normal per vertex | [`vertex_normals`] |
+//! | the same each frame, for fixed faces and moving positions | [`NormalsPlan`] (area weights) |
 //! | vertices split at hard edges (稜線) | [`smooth_normals`] |
 //! | every face flat (glNormal per face) | [`face_split`] |
 //! | the mesh for a [`NormalSource`] | [`prepare_normals`] |
@@ -26,6 +27,9 @@ use crate::mesh::{CornersByVertex, Mesh, MeshError, find_root, gather, union};
 use crate::scene::NormalSource;
 
 mod fast;
+mod plan;
+
+pub use plan::{NormalsPlan, PlanError};
 
 // ---------------------------------------------------------------------------------------------
 // Face normals
@@ -215,7 +219,12 @@ impl FaceGeometry {
 
 /// The geometry of face `f`, or `None` when it is degenerate or refers to a missing vertex.
 fn face_geometry(mesh: &Mesh, f: usize) -> Option<FaceGeometry> {
-    let [a, b, c] = corners(mesh, f)?;
+    corner_geometry(corners(mesh, f)?)
+}
+
+/// The geometry of the face with corners `[a, b, c]`, or `None` when it is degenerate.
+#[inline]
+fn corner_geometry([a, b, c]: [Vec3; 3]) -> Option<FaceGeometry> {
     let area_vector = usable_area_vector(a, b, c)?;
     let unit = try_normalize_f64(area_vector)?;
     Some(FaceGeometry { p: [a, b, c].map(Vec3::as_dvec3), area_vector, unit })
@@ -328,7 +337,8 @@ impl Accumulator {
 /// Speed: [`Weighting::Area`] on a mesh whose indices are all in range takes a fast path
 /// (parallel over faces on all cores, one flat f64 array, no per-face allocation) that gives
 /// bit for bit the result of [`vertex_normals_reference`], the plain loop that every weighting
-/// uses otherwise (docs/performance.md has the figures).
+/// uses otherwise (docs/performance.md has the figures). For a mesh whose positions move every
+/// frame while its faces stay, a [`NormalsPlan`] made once gives the same bits faster.
 ///
 /// See also [`smooth_normals`] (the same with hard edges kept), [`Weighting`].
 #[must_use]
