@@ -290,17 +290,16 @@ pub(crate) fn light(
         let mut unit = V3::default();
         let mut valid = [false; LANES];
         directions(lights.eye, &points.p, &mut unit, &mut [0.0; LANES], &mut valid);
-        for i in 0..LANES {
-            if valid[i] {
-                v.set(i, unit.get(i));
-            }
-        }
+        select(&valid, &unit, &mut v);
     }
 
     let ones = [1.0f32; LANES];
+    let a = lights.ambient;
     let mut ambient = V3::default();
     for i in 0..LANES {
-        ambient.set(i, lights.ambient * ka.get(i));
+        ambient.x[i] = a.x * ka.x[i];
+        ambient.y[i] = a.y * ka.y[i];
+        ambient.z[i] = a.z * ka.z[i];
     }
     let mut diffuse = V3::default();
     let mut specular = V3::default();
@@ -321,11 +320,12 @@ pub(crate) fn light(
             (_, Some(position)) => directions(position, &points.p, &mut l, &mut d, &mut valid),
             (None, None) => valid = [false; LANES],
         }
+        // L = N, d = 0 where there is no direction.
+        let mut fallback = *n;
+        select(&valid, &l, &mut fallback);
+        l = fallback;
         for i in 0..LANES {
-            if !valid[i] {
-                l.set(i, n.get(i));
-                d[i] = 0.0;
-            }
+            d[i] = if valid[i] { d[i] } else { 0.0 };
         }
         let mut scale = [1.0f32; LANES];
         if span_light.attenuates {
@@ -377,8 +377,21 @@ pub(crate) fn light(
             add_term(&mut specular, &scale, light.specular, &ks, &power);
         }
     }
-    for i in 0..len {
-        out.set(i, material.emission + ambient.get(i) + diffuse.get(i) + specular.get(i));
+    let e = material.emission;
+    for i in 0..LANES {
+        out.x[i] = e.x + ambient.x[i] + diffuse.x[i] + specular.x[i];
+        out.y[i] = e.y + ambient.y[i] + diffuse.y[i] + specular.y[i];
+        out.z[i] = e.z + ambient.z[i] + diffuse.z[i] + specular.z[i];
+    }
+}
+
+/// `into[i] = from[i]` where `take[i]`, per lane.
+#[inline(always)]
+fn select(take: &[bool; LANES], from: &V3, into: &mut V3) {
+    for i in 0..LANES {
+        into.x[i] = if take[i] { from.x[i] } else { into.x[i] };
+        into.y[i] = if take[i] { from.y[i] } else { into.y[i] };
+        into.z[i] = if take[i] { from.z[i] } else { into.z[i] };
     }
 }
 
