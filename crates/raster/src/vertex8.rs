@@ -248,7 +248,10 @@ mod tests {
                         assert_eq!(out.x[i], (sx * 256.0).round() as i32, "lane {i}");
                         assert!(clip.w > 0.0);
                     } else {
-                        assert!(clip.w <= 0.0 || clip.w.is_nan() || !clip.is_finite(), "lane {i}: {clip}");
+                        assert!(
+                            clip.w <= 0.0 || clip.w.is_nan() || !clip.is_finite(),
+                            "lane {i}: {clip}"
+                        );
                     }
                 }
             }
