@@ -99,7 +99,7 @@ pub const MIN_GROUP: usize = 3;
 /// The fewest numbers of a group that the student's own variant must not have.
 pub const MIN_DISTINCT: usize = 2;
 
-/// The least density assumed for a part (see [`Chance`]).
+/// The least density assumed for a part (see `Chance`).
 pub const MIN_DENSITY: f64 = 0.2;
 
 /// The least weight of a flag: −ln of the chance (after every variant and group looked at) that

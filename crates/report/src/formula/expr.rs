@@ -3,7 +3,7 @@
 //! `\times`, `\bmod`, `\left( … \right)`, `−`). An expression is arithmetic in `i` and `j`:
 //! numbers, `+ − · × * / ÷`, `mod` (`%`, `\bmod`), parentheses and braces, and a product written
 //! by juxtaposition (`0.125 i`, `2(i + 1)`). It is evaluated, not solved, so any such arithmetic
-//! reads; what it gives is checked at every ground vertex ([`super::check`]).
+//! reads; what it gives is checked at every ground vertex (`check`).
 //!
 //! Bounded: at most [`MAX_TOKENS`] tokens and [`MAX_DEPTH`] nested groups; never panics.
 

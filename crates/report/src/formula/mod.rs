@@ -16,7 +16,7 @@
 //! (at most [`REGION_LINES`] lines). An equation starts at `s =` or `t =` and ends at a line
 //! break (unless the line ends in an operator), `,`, `;`, a full stop, `\\` or `\quad`; its
 //! expression is read by [`expr`]: `s = 0.25 + i/16`, `t = (j + 2) / 8 * 0.5`, `s = 0.125 i`,
-//! `\frac{i}{16}`, `(i \bmod 5)`. [`check`] evaluates it against the texture coordinates the kit
+//! `\frac{i}{16}`, `(i \bmod 5)`. `check` evaluates it against the texture coordinates the kit
 //! derived (the table's) and names the first vertex where it is wrong; an equation that does not
 //! read is a note naming its line.
 

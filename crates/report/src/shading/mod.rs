@@ -14,7 +14,7 @@
 //! ```
 //!
 //! The notation is shared: the periods of `a3` ([`crate::periods`]) are such a table too, written
-//! and checked by the same code ([`tagged_table`], [`check_table`]).
+//! and checked by the same code (`tagged_table`, `check_table`).
 //!
 //! A table is the run of rows (Markdown `| … |`, or LaTeX `… & … \\`) after its tag, up to the
 //! next tag, heading, blank line after the rows or `\end{…}`. A cell is checked when the kit's
