@@ -1179,35 +1179,13 @@ fn draw_tile<L: Lighting + ?Sized>(
         };
         let inv_area = 1.0 / triangle.edges.area2 as f32;
         let z = Vec3::from(triangle.z);
-        if spans.is_some() && draw.lit {
-            // The triangle as the span needs it, made when its first fragment passes (many
-            // small triangles have none).
-            let mut lane_triangle = None;
-            span.end_triangle();
-            rasterize(&triangle.edges, rect, |x, y, e| {
-                stats.fragments += 1;
-                let (row, column) = ((y - target.y0) as usize, (x - target.x0) as usize);
-                let b = Vec3::new(e[0] as f32, e[1] as f32, e[2] as f32) * inv_area;
-                if !depth_test(b.dot(z).clamp(0.0, 1.0), &mut target.depth[row][column]) {
-                    stats.depth_rejects += 1;
-                    return;
-                }
-                stats.fragments_shaded += 1;
-                if !span.has_triangle() {
-                    let t = *lane_triangle.get_or_insert_with(|| {
-                        let corners = corners(triangle);
-                        let corners = corners.map(|v| (v.p_world, v.n_world, v.color, v.uv));
-                        span::Triangle::new(triangle.inv_w, corners, triangle.face)
-                    });
-                    span.begin(t);
-                }
-                if span.push((row as u32, column as u32), b) {
-                    flush(&mut span, target, &mut counts, &mut stats);
-                }
-            });
-            continue;
-        }
-        let corners = corners(triangle);
+        // Phong with the scene's own light model: the fragment is queued for its span, and its
+        // triangle made as the span needs it when its first fragment passes (many small
+        // triangles have none). Otherwise the fragment stage runs here.
+        let spanned = spans.is_some() && draw.lit;
+        let corners_now = (!spanned).then(|| corners(triangle));
+        let mut lane_triangle = None;
+        span.end_triangle();
         rasterize(&triangle.edges, rect, |x, y, e| {
             stats.fragments += 1;
             let (row, column) = ((y - target.y0) as usize, (x - target.x0) as usize);
@@ -1218,8 +1196,22 @@ fn draw_tile<L: Lighting + ?Sized>(
                 return;
             }
             stats.fragments_shaded += 1;
-            target.color[row][column] =
-                fragment(frame, draw, triangle, &corners, b, &mut stats, &mut counts);
+            if let Some(corners) = &corners_now {
+                target.color[row][column] =
+                    fragment(frame, draw, triangle, corners, b, &mut stats, &mut counts);
+                return;
+            }
+            if !span.has_triangle() {
+                let t = *lane_triangle.get_or_insert_with(|| {
+                    let corners = corners(triangle);
+                    let corners = corners.map(|v| (v.p_world, v.n_world, v.color, v.uv));
+                    span::Triangle::new(triangle.inv_w, corners, triangle.face)
+                });
+                span.begin(t);
+            }
+            if span.push((row as u32, column as u32), b) {
+                flush(&mut span, target, &mut counts, &mut stats);
+            }
         });
     }
     flush(&mut span, target, &mut counts, &mut stats);
