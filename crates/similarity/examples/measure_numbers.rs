@@ -23,6 +23,10 @@ use cg_similarity::cross::{self, Bases, Variants};
 use cg_similarity::variant::{self, Finding, Key};
 use cg_similarity::{Submission, read};
 
+#[path = "../tests/common/literals.rs"]
+mod literals;
+use literals::{picked, with_literals};
+
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").canonicalize().unwrap()
 }
@@ -43,22 +47,6 @@ fn filled(student: &StudentNumber, lang: Lang, format: Format) -> String {
     let ctx = Context { student: Some(student.to_string()), assignments, ..Context::default() };
     template::fill(template::template(lang, format), &fill::values(&derived, &ctx, lang, format))
         .unwrap()
-}
-
-/// The numbers of `student`'s variant whose label `pick` takes (the spec's JSON paths, `a1 V3.x`,
-/// `a4 s_min`): what a program written for that variant has as literals.
-fn picked(student: &StudentNumber, part: &str, pick: fn(&str) -> bool) -> Vec<f64> {
-    let raw = variant::raw_numbers(student, TableVersion::LATEST);
-    raw[part].iter().filter(|(l, _)| pick(l)).map(|(_, v)| *v).collect()
-}
-
-/// `source` with `values` written into it as the constants of a hand-written program.
-fn with_literals(source: &str, values: &[f64]) -> String {
-    let mut out = source.to_owned();
-    for (i, v) in values.iter().enumerate() {
-        out.push_str(&format!("\n#[allow(dead_code)]\nconst MINE_{i}: f32 = {:?};", *v as f32));
-    }
-    out
 }
 
 /// A copy form: which file, which numbers of the variant.

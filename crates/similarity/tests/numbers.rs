@@ -13,6 +13,10 @@ use cg_similarity::groups::{self, ClassGroups, Part};
 use cg_similarity::variant::{self, RawNumbers};
 use cg_similarity::{Settings, Submission, analyse, read};
 
+#[path = "common/literals.rs"]
+mod literals;
+use literals::{picked, with_literals};
+
 fn number(i: usize) -> StudentNumber {
     format!("{}", 20260001 + i * 7).parse().unwrap()
 }
@@ -135,21 +139,6 @@ fn has_solutions() -> bool {
 
 fn solution(m: &str) -> String {
     std::fs::read_to_string(root().join(format!("solutions/src/{m}.rs"))).unwrap()
-}
-
-/// `student`'s numbers of `part` whose label `pick` takes.
-fn picked(student: &StudentNumber, part: &str, pick: fn(&str) -> bool) -> Vec<f64> {
-    let raw = variant::raw_numbers(student, TableVersion::LATEST);
-    raw[part].iter().filter(|(l, _)| pick(l)).map(|(_, v)| *v).collect()
-}
-
-/// `source` with `values` as constants, as a program written for them has them.
-fn with_literals(source: &str, values: &[f64]) -> String {
-    let mut out = source.to_owned();
-    for (i, v) in values.iter().enumerate() {
-        out.push_str(&format!("\nconst MINE_{i}: f32 = {:?};", *v as f32));
-    }
-    out
 }
 
 /// Which of a variant's labels a form of program has.
