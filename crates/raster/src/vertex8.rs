@@ -71,14 +71,15 @@ fn mul3(m: &Mat3, v: &[Lanes; 3], out: &mut [Lanes; 3]) {
     }
 }
 
-/// A window coordinate in fixed point, rounded to the nearest 1/256 pixel (the pipeline's
-/// `snap`).
+/// A window coordinate in fixed point, rounded to the nearest 1/256 pixel: the pipeline's
+/// `snap` for every position it is used for (inside the guard band), and no overflow for the
+/// finite positions beyond it, whose records are never used.
 #[inline(always)]
 fn snap(v: f32) -> i32 {
     let r = v * 256.0;
     let i = r as i32;
     let fraction = r - i as f32;
-    i + i32::from(fraction >= 0.5) - i32::from(fraction <= -0.5)
+    i.saturating_add(i32::from(fraction >= 0.5)).saturating_sub(i32::from(fraction <= -0.5))
 }
 
 /// The vertex stage for the eight vertices `p` (model space) with normals `n` (zero where a
@@ -121,10 +122,13 @@ pub(crate) fn transform(t: &Transforms, p: &[Lanes; 3], n: &[Lanes; 3], out: &mu
         let sx = (nx + 1.0) * 0.5 * t.width;
         let sy = (1.0 - ny) * 0.5 * t.height;
         let sz = if nz.is_nan() { nz } else { nz.clamp(0.0, 1.0) };
-        out.in_window[i] =
+        let in_window =
             divisible && sx.is_finite() && sy.is_finite() && sz.is_finite() && inv_w.is_finite();
-        out.x[i] = snap(sx);
-        out.y[i] = snap(sy);
+        out.in_window[i] = in_window;
+        // Snapped only where the position exists (elsewhere the cast saturates and the rounding
+        // step would overflow).
+        out.x[i] = if in_window { snap(sx) } else { 0 };
+        out.y[i] = if in_window { snap(sy) } else { 0 };
         out.z[i] = sz;
         out.inv_w[i] = inv_w;
     }
