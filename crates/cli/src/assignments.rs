@@ -13,6 +13,8 @@ use cg_harness::check::{Outcome, Report, guarded};
 use cg_harness::exit::Ending;
 use cg_harness::{TableVersion, Text};
 
+use crate::reload;
+
 /// Where the student's files are: `exercises/` of the kit being run.
 fn exercises_dir() -> PathBuf {
     crate::kit_path(None, "exercises")
@@ -523,17 +525,40 @@ fn view_window(
     let name = if warmup { format!("{which}-warmup") } else { which.to_string() };
     let mut app = cg_viewer::SideBySide::new(&name, sources, args.time)?;
     app.view.paused = args.paused;
+    // Started again after a rebuild: the same camera.
+    if let Some(r) = reload::Resume::from_env() {
+        let camera = &mut app.view.camera;
+        (camera.yaw_deg, camera.pitch_deg, camera.distance) = (r.yaw_deg, r.pitch_deg, r.distance);
+    }
+    // An interactive window watches its own program, which `cg watch` rebuilds on every save.
+    let program = std::env::current_exe().ok().filter(|_| args.frames.is_none());
     let options = cg_viewer::ViewerOptions {
         frames: args.frames,
         screenshot: args.screenshot.clone(),
         out_dir: Some(args.output.clone()),
         paused: args.paused,
         lang,
+        reload_on_change: program.clone(),
         ..cg_viewer::ViewerOptions::default()
     };
     cg_viewer::print_keys(lang);
     let backends = cg_viewer::default_backends(None, lang);
-    cg_viewer::run_window(&mut app, backends, &options).map_err(|e| e.message(lang))
+    match cg_viewer::run_window(&mut app, backends, &options).map_err(|e| e.message(lang))? {
+        cg_viewer::WindowEnd::Closed => Ok(None),
+        cg_viewer::WindowEnd::NoWindow(reason) => Ok(Some(reason)),
+        cg_viewer::WindowEnd::Changed => {
+            let camera = &app.view.camera;
+            let resume = reload::Resume {
+                yaw_deg: camera.yaw_deg,
+                pitch_deg: camera.pitch_deg,
+                distance: camera.distance,
+            };
+            let args: Vec<String> = std::env::args().skip(1).collect();
+            let args = reload::arguments(&args, app.time, app.view.paused);
+            let program = program.unwrap_or_default();
+            reload::restart(&program, &args, resume, lang).map(|()| None)
+        }
+    }
 }
 
 /// `cg sync-stubs`: regenerates exercises/ from solutions/ (the kit's maintainers only).

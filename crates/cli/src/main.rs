@@ -21,6 +21,7 @@ mod label;
 #[cfg(test)]
 mod printed;
 mod progress;
+mod reload;
 mod render;
 mod similarity;
 mod watch;

@@ -72,3 +72,50 @@ fn view_opens_a_window_with_yours_and_the_reference_side_by_side() {
     }
     assert_eq!(differ, 0, "the reference panel shows the reference as the PNG path draws it");
 }
+
+/// An open window starts again when its program is rebuilt (`cg watch` rebuilds it on every
+/// save): the program is copied, the window opened from the copy, the copy's time stamp changed
+/// as a rebuild changes it, and the view opens again, the same program started with the time it
+/// had reached.
+#[test]
+fn an_open_view_starts_again_when_its_program_is_rebuilt() {
+    if !xvfb_run_available() {
+        return;
+    }
+    let dir = scratch("view-window", "reload");
+    let program = dir.join(if cfg!(windows) { "cg.exe" } else { "cg" });
+    std::fs::copy(env!("CARGO_BIN_EXE_cg"), &program).unwrap();
+    let rebuild = {
+        let program = program.clone();
+        std::thread::spawn(move || {
+            std::thread::sleep(std::time::Duration::from_secs(6));
+            // What a rebuild does: a new file put in the old one's place, with a new time stamp.
+            let new = program.with_extension("new");
+            std::fs::copy(env!("CARGO_BIN_EXE_cg"), &new).unwrap();
+            let file = std::fs::File::open(&new).unwrap();
+            file.set_modified(std::time::SystemTime::now() + std::time::Duration::from_secs(5))
+                .unwrap();
+            std::fs::rename(&new, &program).unwrap();
+        })
+    };
+    let out = Command::new("timeout")
+        .args(["-s", "TERM", "14", "xvfb-run", "-a", "-s", "-screen 0 1600x900x24"])
+        .arg(&program)
+        .args(["--lang", "en", "view", "a1", "--student", "12345678", "-o"])
+        .arg(&dir)
+        .current_dir(root())
+        .env_remove("WAYLAND_DISPLAY")
+        .env_remove("CG_NO_WINDOW")
+        .env_remove("CG_VIEW_RESUME")
+        .output()
+        .unwrap();
+    rebuild.join().unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!stderr.contains("no window can be opened"), "a window opened:\n{stderr}");
+    assert!(
+        stdout.contains("the program was rebuilt: opening the view again"),
+        "the view says why it closed:\n{stdout}\n{stderr}"
+    );
+    assert_eq!(stdout.matches("controls:").count(), 2, "opened twice:\n{stdout}");
+}

@@ -59,6 +59,7 @@ pub mod app;
 pub mod backend;
 pub mod course;
 pub mod side;
+mod watch;
 mod window;
 
 use std::path::{Path, PathBuf};
@@ -147,6 +148,22 @@ pub struct ViewerOptions {
     pub renderer: RendererChoice,
     /// The language of messages.
     pub lang: Lang,
+    /// A window ends with [`WindowEnd::Changed`] when this file changes and then stays the same
+    /// (`cg view` watches its own program, rebuilt by `cg watch` when the student saves, and
+    /// starts the new one with the same view).
+    pub reload_on_change: Option<PathBuf>,
+}
+
+/// How [`run_window`] ended.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum WindowEnd {
+    /// The window was closed, or the app quit, or the frame limit was reached.
+    Closed,
+    /// No window could be opened (why); nothing was drawn.
+    NoWindow(String),
+    /// [`ViewerOptions::reload_on_change`] changed: the window closed so that the caller can
+    /// start again.
+    Changed,
 }
 
 /// Whether a window can probably be opened here: on Linux and the BSDs, a Wayland compositor
@@ -221,16 +238,16 @@ pub fn run_app<A: App>(
     let mut shared = Shared::new(backends, options)?;
     if !options.headless {
         match window_or_reason(app, &mut shared, options)? {
-            None => return Ok(()),
-            Some(reason) => eprintln!("{}", no_window(&reason, options.lang)),
+            WindowEnd::Closed | WindowEnd::Changed => return Ok(()),
+            WindowEnd::NoWindow(reason) => eprintln!("{}", no_window(&reason, options.lang)),
         }
     }
     headless(app, &mut shared)
 }
 
-/// Runs `app` in a window only: `Ok(None)` when it ran, `Ok(Some(reason))` when no window
-/// could be opened (nothing is drawn then: the caller decides what to do instead, as `cg view`
-/// draws its own PNG files).
+/// Runs `app` in a window only: [`WindowEnd::NoWindow`] when no window could be opened (nothing
+/// is drawn then: the caller decides what to do instead, as `cg view` draws its own PNG files),
+/// [`WindowEnd::Changed`] when the watched file changed.
 ///
 /// # Errors
 /// As [`run_app`].
@@ -238,7 +255,7 @@ pub fn run_window<A: App>(
     app: &mut A,
     backends: Vec<Box<dyn Backend>>,
     options: &ViewerOptions,
-) -> Result<Option<String>, ViewerError> {
+) -> Result<WindowEnd, ViewerError> {
     let mut shared = Shared::new(backends, options)?;
     window_or_reason(app, &mut shared, options)
 }
@@ -248,9 +265,9 @@ fn window_or_reason<A: App>(
     app: &mut A,
     shared: &mut Shared,
     options: &ViewerOptions,
-) -> Result<Option<String>, ViewerError> {
+) -> Result<WindowEnd, ViewerError> {
     if !display_available() {
-        return Ok(Some(
+        return Ok(WindowEnd::NoWindow(
             t(
                 "WAYLAND_DISPLAY も DISPLAY も設定されていません",
                 "neither WAYLAND_DISPLAY nor DISPLAY is set",
@@ -260,9 +277,10 @@ fn window_or_reason<A: App>(
         ));
     }
     match window::run(app, shared) {
-        Outcome::Done => Ok(None),
+        Outcome::Done => Ok(WindowEnd::Closed),
+        Outcome::Changed => Ok(WindowEnd::Changed),
         Outcome::Failed(e) => Err(e),
-        Outcome::NoDisplay(reason) => Ok(Some(reason)),
+        Outcome::NoDisplay(reason) => Ok(WindowEnd::NoWindow(reason)),
     }
 }
 
@@ -317,6 +335,8 @@ pub(crate) enum Outcome {
     NoDisplay(String),
     /// An error after the window was shown.
     Failed(ViewerError),
+    /// The watched file changed ([`ViewerOptions::reload_on_change`]).
+    Changed,
 }
 
 /// What the shell and the headless path share: options, backends, screenshots.

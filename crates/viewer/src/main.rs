@@ -77,6 +77,7 @@ fn main() -> ExitCode {
         threads: args.threads.map(usize::from),
         renderer: args.renderer,
         lang,
+        reload_on_change: None,
     };
     // The kit's exit statuses: 0 ok, 2 bad input (cg_harness::exit).
     let result = cg_viewer::run(&options).map(|()| cg_harness::exit::Ending::Ok);

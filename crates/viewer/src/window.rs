@@ -21,6 +21,7 @@ use winit::window::{Window, WindowId};
 
 use crate::app::{App, Control};
 use crate::backend::write_0rgb;
+use crate::watch::{POLL, Watch};
 use crate::{Outcome, Shared, ViewerError};
 
 /// A window and its softbuffer surface.
@@ -57,6 +58,8 @@ struct Shell<'a, A: App> {
     frames: u64,
     frame_ms: f64,
     outcome: Outcome,
+    /// [`crate::ViewerOptions::reload_on_change`], looked at while the window waits.
+    watch: Option<Watch>,
 }
 
 impl<A: App> Shell<'_, A> {
@@ -394,6 +397,14 @@ impl<A: App> ApplicationHandler for Shell<'_, A> {
             return;
         }
         let now = Instant::now();
+        if let Some(watch) = &mut self.watch
+            && watch.due(now)
+            && watch.changed(now)
+        {
+            self.outcome = Outcome::Changed;
+            event_loop.exit();
+            return;
+        }
         let dt = self.last_idle.map_or(0.0, |t| now.duration_since(t).as_secs_f32());
         self.last_idle = Some(now);
         let mut control = Control::new();
@@ -404,7 +415,11 @@ impl<A: App> ApplicationHandler for Shell<'_, A> {
             ControlFlow::Poll
         } else {
             self.last_idle = None;
-            ControlFlow::Wait
+            // Wake up now and then to look at the watched file.
+            match self.watch {
+                Some(_) => ControlFlow::WaitUntil(now + POLL),
+                None => ControlFlow::Wait,
+            }
         });
         self.control(event_loop, control);
     }
@@ -460,6 +475,7 @@ pub(crate) fn run<A: App>(app: &mut A, shared: &mut Shared) -> Outcome {
         }
     };
     event_loop.set_control_flow(ControlFlow::Wait);
+    let watch = shared.options.reload_on_change.clone().map(Watch::new);
     let mut shell = Shell {
         app,
         shared,
@@ -472,6 +488,7 @@ pub(crate) fn run<A: App>(app: &mut A, shared: &mut Shared) -> Outcome {
         frames: 0,
         frame_ms: 0.0,
         outcome: Outcome::Done,
+        watch,
     };
     if let Err(e) = event_loop.run_app(&mut shell) {
         if shell.frames == 0 && matches!(shell.outcome, Outcome::Done) {
