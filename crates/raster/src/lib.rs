@@ -23,7 +23,8 @@
 //!
 //! ## The pipeline
 //!
-//! The stages are one function each, in `src/pipeline.rs`, named as a GPU's:
+//! The stages are one function each, in `src/pipeline.rs` and `src/pipeline/` (`vertex.rs`,
+//! `primitive.rs`, `tile.rs`), named as a GPU's:
 //!
 //! | stage | what it does |
 //! |---|---|
