@@ -71,15 +71,20 @@ fn mul3(m: &Mat3, v: &[Lanes; 3], out: &mut [Lanes; 3]) {
     }
 }
 
-/// A window coordinate in fixed point, rounded to the nearest 1/256 pixel: the pipeline's
-/// `snap` for every position it is used for (inside the guard band), and no overflow for the
-/// finite positions beyond it, whose records are never used.
+/// A window coordinate in fixed point, rounded to the nearest 1/256 pixel, half away from zero:
+/// the pipeline's `snap` (`r as i32`, then ±1 by the fraction left) for every position it is used
+/// for (inside the guard band, `|r| < 2³⁰`), computed in f32 so it vectorises. `r.trunc()` is
+/// the integer the cast gives, the fraction `r − trunc(r)` is exact, and adding ±1 is exact
+/// below 2²⁴ (above it the fraction is 0); finite positions beyond the band, whose records are
+/// never used, saturate instead of overflowing.
 #[inline(always)]
 fn snap(v: f32) -> i32 {
     let r = v * 256.0;
-    let i = r as i32;
-    let fraction = r - i as f32;
-    i.saturating_add(i32::from(fraction >= 0.5)).saturating_sub(i32::from(fraction <= -0.5))
+    let whole = r.trunc();
+    let fraction = r - whole;
+    let up = if fraction >= 0.5 { 1.0 } else { 0.0 };
+    let down = if fraction <= -0.5 { 1.0 } else { 0.0 };
+    (whole + up - down) as i32
 }
 
 /// The vertex stage for the eight vertices `p` (model space) with normals `n` (zero where a
@@ -114,23 +119,26 @@ pub(crate) fn transform(t: &Transforms, p: &[Lanes; 3], n: &[Lanes; 3], out: &mu
     }
 
     // The viewport transform (the pipeline's `viewport`): never a division by w ≤ 0.
+    let (p_clip, mut sx, mut sy) = (&out.p_clip, [0.0f32; LANES], [0.0f32; LANES]);
     for i in 0..LANES {
-        let [x, y, z, w] = [0, 1, 2, 3].map(|r| out.p_clip[r][i]);
+        let (x, y, z, w) = (p_clip[0][i], p_clip[1][i], p_clip[2][i], p_clip[3][i]);
         let divisible = !(w <= 0.0 || w.is_nan());
         let inv_w = 1.0 / w;
         let (nx, ny, nz) = (x * inv_w, y * inv_w, z * inv_w);
-        let sx = (nx + 1.0) * 0.5 * t.width;
-        let sy = (1.0 - ny) * 0.5 * t.height;
-        let sz = if nz.is_nan() { nz } else { nz.clamp(0.0, 1.0) };
-        let in_window =
-            divisible && sx.is_finite() && sy.is_finite() && sz.is_finite() && inv_w.is_finite();
-        out.in_window[i] = in_window;
-        // Snapped only where the position exists (elsewhere the cast saturates and the rounding
-        // step would overflow).
-        out.x[i] = if in_window { snap(sx) } else { 0 };
-        out.y[i] = if in_window { snap(sy) } else { 0 };
+        sx[i] = (nx + 1.0) * 0.5 * t.width;
+        sy[i] = (1.0 - ny) * 0.5 * t.height;
+        let sz = nz.clamp(0.0, 1.0);
+        out.in_window[i] = divisible
+            && sx[i].is_finite()
+            && sy[i].is_finite()
+            && sz.is_finite()
+            && inv_w.is_finite();
         out.z[i] = sz;
         out.inv_w[i] = inv_w;
+    }
+    for i in 0..LANES {
+        out.x[i] = snap(sx[i]);
+        out.y[i] = snap(sy[i]);
     }
 }
 
