@@ -126,7 +126,8 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
         );
     }
     for c in &analysis.cross {
-        println!("  {}: {}", class[c.submission].name, cg_similarity::output::cross_note(c, lang));
+        let s = &class[c.submission];
+        println!("  {}: {}", s.name, cg_similarity::output::cross_note(c, s, lang));
     }
     println!(
         "{}: {}",

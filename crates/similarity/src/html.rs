@@ -129,7 +129,7 @@ pub fn page(class: &[Submission], analysis: &Analysis, lang: Lang) -> String {
                 escape(&c.finding.part),
                 escape(c.finding.matches.as_str()),
                 sources.join(", "),
-                escape(&output::cross_note(c, lang)),
+                escape(&output::cross_note(c, &class[c.submission], lang)),
             );
         }
         h.push_str("</table>\n");

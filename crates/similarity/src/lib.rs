@@ -58,6 +58,8 @@ pub struct Submission {
     pub report_inside: Option<String>,
     /// A report inside the submission that was set aside for the one `--reports` has.
     pub report_set_aside: Option<String>,
+    /// The `--reports` file `report` came from, when it came from there.
+    pub report_file: Option<String>,
     /// What was skipped while reading it (a report too big or not text), to be shown.
     pub notes: Vec<Text>,
     /// An earlier year's submission: compared with this year's only.

@@ -93,7 +93,7 @@ pub fn csv_text(class: &[Submission], analysis: &Analysis, lang: Lang) -> Result
             String::new(),
             String::new(),
             if f.ambiguous { format!("{} ambiguous", f.part) } else { f.part.clone() },
-            cross_note(c, lang),
+            cross_note(c, s, lang),
         ])
         .map_err(|e| e.to_string())?;
     }
@@ -101,13 +101,23 @@ pub fn csv_text(class: &[Submission], analysis: &Analysis, lang: Lang) -> Result
     String::from_utf8(bytes).map_err(|e| e.to_string())
 }
 
-/// One line on a cross-variant finding: which part, whose variant, which numbers.
+/// One line on a cross-variant finding in the submission `s`: which part (for a report, which
+/// file: the `--reports` one, or the one inside the submission), whose variant, which numbers.
 #[must_use]
-pub fn cross_note(c: &crate::Cross, lang: Lang) -> String {
+pub fn cross_note(c: &crate::Cross, s: &crate::Submission, lang: Lang) -> String {
     let f = &c.finding;
     let part = if f.part.starts_with(variant::REPORT) {
         let m = variant::assignment(&f.part);
-        Text::new(format!("レポート（{m}）"), format!("the report ({m})")).get(lang).to_owned()
+        let from = match (&s.report_file, &s.report_inside) {
+            (Some(file), _) => Text::new(format!("、{file}"), format!(", {file}")),
+            (None, Some(inside)) => {
+                Text::new(format!("、提出物の {inside}"), format!(", {inside} in the submission"))
+            }
+            (None, None) => Text::new(String::new(), String::new()),
+        };
+        Text::new(format!("レポート（{m}{}）", from.ja), format!("the report ({m}{})", from.en))
+            .get(lang)
+            .to_owned()
     } else {
         format!("exercises/src/{}.rs", f.part)
     };

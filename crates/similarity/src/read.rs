@@ -184,6 +184,7 @@ pub fn reports(dir: &Path, class: &mut [Submission]) -> Result<Vec<String>, Text
         let text = text_file(&path)?;
         for s in owners {
             s.report = Some(text.clone());
+            s.report_file = Some(path.display().to_string());
             s.report_set_aside = s.report_inside.take().or(s.report_set_aside.take());
         }
     }

@@ -409,8 +409,12 @@ fn numbers_from_another_students_variant_are_flagged_with_whose() {
         assert!(c.finding.numbers.len() >= 3);
     }
     // Alice's report (her own numbers) and carol's own hand-written vertices are not flagged.
-    let note = cg_similarity::output::cross_note(&a.cross[0], Lang::En);
+    let s = &class[a.cross[0].submission];
+    let note = cg_similarity::output::cross_note(&a.cross[0], s, Lang::En);
     assert!(note.contains(CAROL) && note.contains("exercises/src/a1.rs"), "{note}");
+    // The report's note names the --reports file it was read from.
+    let note = cg_similarity::output::cross_note(&a.cross[1], s, Lang::En);
+    assert!(note.contains(&format!("report-{DAVE}.md)")), "{note}");
     let csv = cg_similarity::output::csv_text(&class, &a, Lang::Ja).unwrap();
     assert!(
         csv.lines().any(|l| l.starts_with(&format!("cross-variant,dave,{DAVE},carol,{CAROL},"))),

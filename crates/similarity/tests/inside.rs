@@ -12,6 +12,7 @@ use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
 use cg_assign::Variants;
+use cg_core::lang::Lang;
 use cg_harness::{StudentNumber, TableVersion};
 use cg_similarity::inside::MAX_REPORT_BYTES;
 use cg_similarity::{Settings, Submission, analyse, read};
@@ -144,6 +145,9 @@ fn reports_inside_the_submissions_are_read_and_a_copied_one_is_flagged_with_whos
     assert_eq!(found, [("dave.zip", "report:a1")], "{:#?}", a.cross);
     assert_eq!(a.cross[0].finding.matches, number(CAROL));
     assert_eq!(a.cross[0].sources, [carol]);
+    // The note says which file: the one inside the submission.
+    let note = cg_similarity::output::cross_note(&a.cross[0], &class[dave], Lang::En);
+    assert!(note.contains("the report (a1, kit/report/report.md in the submission)"), "{note}");
     assert!(read::set_aside(&class).is_none());
 
     // With a --reports file for dave (his own), that one is used, and the summary says so.
