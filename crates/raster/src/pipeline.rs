@@ -34,14 +34,14 @@ use cg_core::image::{Image, check_size};
 use cg_core::light::{LightCounts, Material};
 use cg_core::math::try_normalize;
 use cg_core::scene::{Prepared, Scene, Shading};
-use cg_core::texture::{Sampler, TexEnv, Texture};
+use cg_core::texture::TexEnv;
 use rayon::prelude::*;
 use std::sync::Mutex;
 
 use crate::error::RenderError;
 use crate::lighting::{Lighting, SurfacePoint};
 use crate::output::{DEFAULT_TILE_SIZE, Options, Output, Stats};
-use crate::span::{self, LANES, PhongSpan, Points, SpanLights, V3, saturate};
+use crate::span::{self, LANES, PhongSpan, Points, SpanLights, Texturing, V3, saturate};
 use crate::vertex8;
 
 mod primitive;
@@ -108,14 +108,6 @@ struct Draw<'s> {
     texture: Option<Texturing<'s>>,
     /// Whether the lit colour is used at all (not under GL_REPLACE, which shows the bare texel).
     lit: bool,
-}
-
-/// A texture bound to an object.
-#[derive(Clone, Copy)]
-struct Texturing<'s> {
-    texture: &'s Texture,
-    sampler: Sampler,
-    env: TexEnv,
 }
 
 /// The vertex stage's output for one vertex (a GPU's varyings plus the clip position).

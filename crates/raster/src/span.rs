@@ -433,7 +433,7 @@ impl Triangle {
     }
 }
 
-/// A texture as the fragment stage applies it.
+/// A texture bound to an object, as the fragment stage applies it.
 #[derive(Clone, Copy)]
 pub(crate) struct Texturing<'a> {
     pub(crate) texture: &'a cg_core::texture::Texture,

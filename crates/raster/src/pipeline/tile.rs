@@ -43,11 +43,7 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
                  stats: &mut Stats| {
         if let Some(lights) = spans {
             let draw = &draws[span.object];
-            let texture = draw.texture.map(|t| span::Texturing {
-                texture: t.texture,
-                sampler: t.sampler,
-                env: t.env,
-            });
+            let texture = draw.texture;
             // The face normal where the corners' normals cancel, from the face's own corners.
             let vertices = &buffers[span.object];
             let face = |face: u32| {
