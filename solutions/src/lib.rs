@@ -27,8 +27,41 @@
 // #![allow(unused_variables, clippy::todo)]
 // END STUB
 
+// A file of yours that does not compile is left out, and a stand-in takes its place, when the
+// kit builds your functions for `cargo run --release -- check`, `view` and `report`: the other
+// assignments still run. build.rs sets `left_out` for those builds only.
+/// The stand-in of a module left out (see below).
+#[allow(unused_macros)]
+macro_rules! left_out {
+    ($module:ident) => {
+        pub mod $module {
+            //! Left out: this file does not compile.
+            /// Functions the kit never calls (it says the file does not compile instead).
+            #[must_use]
+            pub fn implementation() -> cg_student::$module::Impl {
+                cg_student::$module::Impl::left_out()
+            }
+        }
+    };
+}
+
+#[cfg(not(left_out = "a1"))]
 pub mod a1;
+#[cfg(left_out = "a1")]
+left_out!(a1);
+#[cfg(not(left_out = "a2"))]
 pub mod a2;
+#[cfg(left_out = "a2")]
+left_out!(a2);
+#[cfg(not(left_out = "a3"))]
 pub mod a3;
+#[cfg(left_out = "a3")]
+left_out!(a3);
+#[cfg(not(left_out = "a4"))]
 pub mod a4;
+#[cfg(left_out = "a4")]
+left_out!(a4);
+#[cfg(not(left_out = "s"))]
 pub mod s;
+#[cfg(left_out = "s")]
+left_out!(s);

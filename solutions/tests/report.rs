@@ -24,7 +24,11 @@ fn impls() -> Impls {
 }
 
 fn kit() -> Kit {
-    Kit { impls: impls(), student_file: || PathBuf::from("/nonexistent/student.toml") }
+    Kit {
+        impls: impls(),
+        student_file: || PathBuf::from("/nonexistent/student.toml"),
+        worker: None,
+    }
 }
 
 fn assignment(student: &str) -> Variants {

@@ -18,7 +18,7 @@ fn kit() -> Kit {
     impls.a1.vertices = |_| loop {
         std::hint::spin_loop();
     };
-    Kit { impls, student_file: || PathBuf::from("/nonexistent/student.toml") }
+    Kit { impls, student_file: || PathBuf::from("/nonexistent/student.toml"), worker: None }
 }
 
 /// In the child: derive the report with the looping function, under a 1-second watchdog. Run

@@ -66,9 +66,19 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
             format!("model_transform: {}", e.text().en),
         ));
     }
+    model_scene(&mesh, normals.as_deref(), transform)
+}
+
+/// The course's stage with `mesh` placed by `transform`, each face lit with its `normals`
+/// (its derived normal where there are none).
+fn model_scene(
+    mesh: &Mesh,
+    normals: Option<&[Vec3]>,
+    transform: MatrixProduct,
+) -> Result<Scene, Text> {
     let (mesh, source) = match normals {
-        None => (mesh, NormalSource::Face),
-        Some(normals) => (with_given_normals(&mesh, &normals)?, NormalSource::Given),
+        None => (mesh.clone(), NormalSource::Face),
+        Some(normals) => (with_given_normals(mesh, normals)?, NormalSource::Given),
     };
     let mut scene = cg_harness::course::ground_only();
     scene.name = format!("{}-view", crate::ID);
@@ -118,4 +128,31 @@ fn with_given_normals(mesh: &Mesh, normals: &[Vec3]) -> Result<Mesh, Text> {
     }
     split.normals = Some(corner_normals);
     Ok(split)
+}
+
+/// The kit's reference picture ([`cg_harness::Assignment::reference_view`]): the expected
+/// vertices (the `a1.t1` oracle), the faces of their convex hull (every solid of the assignment
+/// is convex; [`crate::hull`]), each face's own normal, and the placement `T(x, y, z) · Ry(θ)`
+/// that `a1.t4` asks for.
+#[must_use]
+pub fn reference(spec: &Spec) -> Scene {
+    use crate::spec::SpecExt;
+    let positions = spec.expected_vertices();
+    let faces = crate::hull::faces(&positions);
+    let mesh = Mesh::new(positions, faces);
+    let normals: Vec<Vec3> = mesh
+        .faces
+        .iter()
+        .map(|f| {
+            let [a, b, c] = f.map(|i| mesh.positions[i as usize].as_dvec3());
+            (b - a).cross(c - a).normalize().as_vec3()
+        })
+        .collect();
+    let p = spec.placement;
+    let transform = MatrixProduct::identity()
+        .then(cg_core::product::Factor::translate(Vec3::new(p.x, p.y, p.z)))
+        .then(cg_core::product::Factor::rotate_y_deg(p.angle_deg));
+    // The hull's normals have a direction and match its faces one for one.
+    model_scene(&mesh, Some(&normals), transform)
+        .unwrap_or_else(|_| cg_harness::course::ground_only())
 }

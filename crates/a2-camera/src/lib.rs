@@ -43,7 +43,7 @@ pub use checks::checks;
 pub use oracle::expected_product;
 pub use show::camera_product;
 pub use spec::{SpecExt, variant};
-pub use view::{draw_course_objects, replay, view};
+pub use view::{draw_course_objects, reference, replay, view};
 
 /// The assignment's ID, the prefix of its task IDs (`a2.t1`, …).
 pub const ID: &str = "a2";
@@ -92,5 +92,9 @@ impl cg_harness::Assignment for A2 {
         time_s: f64,
     ) -> Result<cg_core::scene::Scene, cg_harness::Text> {
         view(spec, imp, time_s)
+    }
+
+    fn reference_view(spec: &Spec, time_s: f64) -> Option<cg_core::scene::Scene> {
+        Some(view::reference(spec, time_s))
     }
 }

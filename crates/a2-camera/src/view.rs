@@ -1,6 +1,6 @@
-//! The scene the student's functions draw: [`view`], the course's objects
-//! ([`draw_course_objects`]) and the replay of a recorded frame ([`replay`]) that the checks
-//! and the report use too.
+//! The scene the student's functions draw: [`view`], the kit's reference picture
+//! ([`reference`]), the course's objects ([`draw_course_objects`]) and the replay of a recorded
+//! frame ([`replay`]) that the checks and the report use too.
 
 use std::sync::LazyLock;
 
@@ -13,7 +13,7 @@ use cg_harness::Text;
 use cg_harness::text::t;
 
 use crate::oracle;
-use crate::{Impl, Spec};
+use crate::{Impl, LIGHT0_POSITION, Spec};
 
 /// The objects of the course's sample scene (the ground and the pyramid), from
 /// `cg_harness::course::scene()`: name, polygon model, colour and model transform.
@@ -78,4 +78,97 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
         ));
     }
     Ok(gl.to_scene(&cg_harness::course::stage()))
+}
+
+/// The kit's reference picture ([`cg_harness::Assignment::reference_view`]): [`view`]'s scene
+/// for a correct answer, from the oracle alone. The scripted drags of [`view`] move the camera
+/// by the `a2.t1` oracle's `motion()`, and the frame is `display()` as `a2.t3` asks for it on
+/// the kit's [`Gl`]: the identity, the view transform of the `a2.t2` oracle
+/// ([`crate::expected_product`]), the light at [`LIGHT0_POSITION`] after it (fixed in the
+/// world), then [`draw_course_objects`].
+#[must_use]
+pub fn reference(spec: &Spec, time_s: f64) -> Scene {
+    let mut state = spec.start;
+    for drag in oracle::demo_drags(spec, time_s) {
+        oracle::motion(spec, &mut state, &drag);
+    }
+    let mut gl = Gl::new();
+    gl.load_identity();
+    for factor in oracle::expected_product(spec, &state).factors {
+        gl.mult(factor);
+    }
+    gl.light_position(0, LIGHT0_POSITION);
+    draw_course_objects(&mut gl);
+    gl.to_scene(&cg_harness::course::stage())
+}
+
+#[cfg(test)]
+mod tests {
+    use cg_core::glam::{Mat4, Vec3};
+    use cg_core::light::LightKind;
+    use cg_harness::{StudentNumber, TableVersion, VariantRng};
+
+    use super::*;
+    use crate::CameraState;
+
+    /// Each object's matrix (eye space) and light 0's eye-space position.
+    fn geometry(scene: &Scene) -> (Vec<(String, Mat4)>, Vec3) {
+        let objects =
+            scene.objects.iter().map(|o| (o.name.clone(), o.transform.matrix().unwrap())).collect();
+        let LightKind::Point { position } = scene.lights[0].kind else { panic!("a point light") };
+        (objects, position)
+    }
+
+    fn same(a: &Scene, b: &Scene) -> bool {
+        let ((oa, la), (ob, lb)) = (geometry(a), geometry(b));
+        oa.len() == ob.len()
+            && oa.iter().zip(&ob).all(|((na, ma), (nb, mb))| na == nb && ma.abs_diff_eq(*mb, 1e-4))
+            && la.abs_diff_eq(lb, 1e-3)
+    }
+
+    // A hand-written answer on the student's side of the API (not the reference solutions):
+    // the oracle's motion, the course's camera, the light after it, the course's objects.
+    fn motion(spec: &Spec, s: &mut CameraState, drag: &crate::Drag) {
+        oracle::motion(spec, s, drag);
+    }
+    fn still(_: &Spec, _: &mut CameraState, _: &crate::Drag) {}
+    fn camera(gl: &mut cg_student::gl::Gl, s: &CameraState) {
+        gl.translate(0.0, 0.0, -s.camera_distance);
+        gl.rotate(-s.camera_pitch, 1.0, 0.0, 0.0);
+        gl.rotate(-s.camera_yaw, 0.0, 1.0, 0.0);
+        gl.translate(-s.target_x, 0.0, -s.target_z);
+    }
+    fn display(gl: &mut cg_student::gl::Gl, s: &CameraState) {
+        gl.load_identity();
+        camera(gl, s);
+        gl.light_position(0, LIGHT0_POSITION);
+        cg_student::a2::draw_course_objects(gl);
+    }
+    fn light_first(gl: &mut cg_student::gl::Gl, s: &CameraState) {
+        gl.load_identity();
+        gl.light_position(0, LIGHT0_POSITION);
+        camera(gl, s);
+        cg_student::a2::draw_course_objects(gl);
+    }
+
+    #[test]
+    fn the_reference_is_a_correct_answers_view_and_not_a_wrong_ones() {
+        let right = Impl { motion, camera, display };
+        let unmoved = Impl { motion: still, ..right };
+        let early_light = Impl { display: light_first, ..right };
+        for number in ["12345678", "20260002", "31415926"] {
+            let student: StudentNumber = number.parse().unwrap();
+            let spec = crate::variant(&mut VariantRng::new(&student, TableVersion::V1, crate::ID));
+            for time_s in [0.0, 1.6, 7.3] {
+                let reference = reference(&spec, time_s);
+                assert_eq!(reference.objects.len(), 2, "the ground and the pyramid");
+                assert!(
+                    same(&reference, &view(&spec, &right, time_s).unwrap()),
+                    "{number} {time_s}"
+                );
+                assert!(!same(&reference, &view(&spec, &unmoved, time_s).unwrap()));
+                assert!(!same(&reference, &view(&spec, &early_light, time_s).unwrap()));
+            }
+        }
+    }
 }

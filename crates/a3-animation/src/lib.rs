@@ -44,7 +44,7 @@ pub use spec::{
     ShapeExt, SpecExt, WorldAxisExt, camera_product, new_object, variant, warmup_objects,
 };
 pub(crate) use spec::{gcd, lcm};
-pub use view::{record_frame, replay, view, warmup_frame, warmup_view};
+pub use view::{record_frame, reference, replay, view, warmup_frame, warmup_view};
 
 /// The assignment's ID, the prefix of its task IDs (`a3.t1`, …).
 pub const ID: &str = "a3";
@@ -94,6 +94,10 @@ impl cg_harness::Assignment for A3 {
     /// The whole animation repeats after the least common multiple of the periods.
     fn view_period_s(spec: &Spec) -> Option<f64> {
         Some(spec.common_period_s())
+    }
+
+    fn reference_view(spec: &Spec, time_s: f64) -> Option<cg_core::scene::Scene> {
+        Some(view::reference(spec, time_s))
     }
 
     fn warmup(imp: &Impl, time_s: f64) -> Option<cg_core::scene::Scene> {

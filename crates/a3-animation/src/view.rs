@@ -1,14 +1,18 @@
 //! The scene the student's functions draw (`a3`): [`view`] (the spec's animation at a time),
 //! [`warmup_view`] (the warm-up's boxes), the frames they come from ([`record_frame`],
-//! [`warmup_frame`], [`replay`]) and the course's ground under them.
+//! [`warmup_frame`], [`replay`]) and the course's ground under them; and the kit's reference
+//! picture, [`reference`], drawn from the oracle.
 
 use cg_core::gl::Gl;
+use cg_core::glam::{DMat4, Vec3};
+use cg_core::product::Factor;
 use cg_core::scene::Scene;
 use cg_harness::Text;
 
+use crate::oracle::{Variation, local};
 use crate::{
-    CAMERA_DISTANCE, CAMERA_PITCH_DEG, DRIFT_FRAMES, FPS, Impl, LIGHT0_POSITION, Spec, State,
-    camera_product,
+    CAMERA_DISTANCE, CAMERA_PITCH_DEG, DRIFT_FRAMES, FPS, Impl, LIGHT0_POSITION, Motion, Spec,
+    State, camera_product, expected_model,
 };
 
 /// Sets the common camera and the light, as the warm-up's `display()` does before the boxes:
@@ -73,6 +77,60 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
     Ok(on_ground(&record_frame(spec, imp, frames)))
 }
 
+/// The kit's reference picture ([`cg_harness::Assignment::reference_view`]): [`view`]'s scene
+/// for a correct answer, from the oracle alone. At frame `round(60·time_s)` (frame 0 for a time
+/// [`view`] rejects), `display()` as `a3.t2` asks for it on the kit's [`Gl`]: the common camera
+/// and the light, then each object between `glPushMatrix` and `glPopMatrix` with its colour and
+/// its model matrix (`shown_model`: the oracle's [`expected_model`], in f64 at the exact phase;
+/// a child's includes its parent's), parents first, each followed by its children, as a correct
+/// `display()` nests them. On the course's ground, as [`view`].
+#[must_use]
+pub fn reference(spec: &Spec, time_s: f64) -> Scene {
+    let frames = if time_s.is_finite() && (0.0..=VIEW_MAX_S).contains(&time_s) {
+        (time_s * f64::from(FPS)).round() as u64
+    } else {
+        0
+    };
+    let mut gl = Gl::new();
+    gl.load_identity();
+    gl.translate(0.0, 0.0, -CAMERA_DISTANCE);
+    gl.rotate(-CAMERA_PITCH_DEG, 1.0, 0.0, 0.0);
+    gl.light_position(0, LIGHT0_POSITION);
+    let roots = (0..spec.objects.len()).filter(|&i| spec.objects[i].motion.parent().is_none());
+    for i in roots.flat_map(|i| std::iter::once(i).chain(spec.children(i))) {
+        let object = &spec.objects[i];
+        gl.push_matrix();
+        gl.mult(Factor::named(format!("M_{}", i + 1), shown_model(spec, i, frames).as_mat4()));
+        let [r, g, b] = object.color;
+        gl.color(r, g, b);
+        gl.draw(&object.name, &cg_core::mesh::Mesh::from(&object.mesh));
+        gl.pop_matrix();
+    }
+    on_ground(&gl)
+}
+
+/// Object `index`'s model matrix (world) as [`view`] shows it at `frame` for a correct answer:
+/// the oracle's [`expected_model`], except at frame 0. There [`view`] draws the state before the
+/// first `idle()`, `State::new()` with every motion parameter 0 (the report skips that frame for
+/// this reason): every angle at 0°, which is the oracle's phase 0 too, but a hop's offset and
+/// height at 0 as well, so a hop sits at its centre rather than at its −end (with its children).
+fn shown_model(spec: &Spec, index: usize, frame: u64) -> DMat4 {
+    if frame > 0 {
+        return expected_model(spec, index, frame);
+    }
+    let at_start = |motion: &Motion| match *motion {
+        Motion::Hop { center, .. } => DMat4::from_translation(Vec3::from_array(center).as_dvec3()),
+        ref other => local(other, 0.0, Variation::EXACT),
+    };
+    let Some(object) = spec.objects.get(index) else { return DMat4::IDENTITY };
+    let own = at_start(&object.motion);
+    // A parent is never a child itself (the spec's rule), so one level is all there is.
+    match object.motion.parent().filter(|&p| p != index).and_then(|p| spec.objects.get(p)) {
+        Some(parent) => at_start(&parent.motion) * own,
+        None => own,
+    }
+}
+
 /// The warm-up's frame at time `t` (s): the camera and light set, then `warmup_display`.
 #[must_use]
 pub fn warmup_frame(imp: &Impl, t: f64) -> Gl {
@@ -104,7 +162,10 @@ fn on_ground(gl: &Gl) -> Scene {
 
 #[cfg(test)]
 mod tests {
+    use cg_core::glam::DVec3;
+
     use super::*;
+    use crate::SpecExt;
     use crate::spec::spec_of;
 
     #[test]
@@ -122,5 +183,63 @@ mod tests {
         let scene = view(&spec, &imp, 1.0).unwrap();
         assert_eq!(scene.objects.len(), 1, "the ground alone");
         assert_eq!(warmup_view(&imp, 0.0).objects.len(), 1);
+    }
+
+    /// The drawn object named `name`'s model matrix (world), the camera taken off.
+    fn drawn_model(scene: &Scene, name: &str) -> DMat4 {
+        let object = scene.objects.iter().find(|o| o.name == name).expect("drawn");
+        crate::pose::view().inverse() * object.transform.matrix().unwrap().as_dmat4()
+    }
+
+    #[test]
+    fn the_reference_draws_the_oracles_poses_on_the_ground() {
+        for n in [12_345_678, 20_260_002, 31_415_926] {
+            let spec = spec_of(n);
+            for time_s in [0.37 * spec.common_period_s(), 1.6] {
+                let frame = (time_s * 60.0).round() as u64;
+                let scene = reference(&spec, time_s);
+                assert_eq!(scene.objects.len(), 1 + spec.objects.len(), "the ground and each");
+                assert_eq!(scene.objects[0].name, "ground");
+                for (i, object) in spec.objects.iter().enumerate() {
+                    let m = drawn_model(&scene, &object.name);
+                    assert!(m.abs_diff_eq(expected_model(&spec, i, frame), 1e-4), "{n} {i}");
+                    let drawn = scene.objects.iter().find(|o| o.name == object.name).unwrap();
+                    assert_eq!(drawn.material.kd.to_array(), object.color);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn at_frame_0_a_hop_sits_at_its_centre_with_every_parameter_0() {
+        // A student whose hop carries a child.
+        let spec = (0..500)
+            .map(|k| spec_of(20_260_000 + k))
+            .find(|s| {
+                s.objects.iter().any(|o| {
+                    o.motion
+                        .parent()
+                        .is_some_and(|p| matches!(s.objects[p].motion, Motion::Hop { .. }))
+                })
+            })
+            .expect("a hop with a child among 500 students");
+        let child = spec.objects.iter().position(|o| o.motion.parent().is_some()).unwrap();
+        let parent = spec.objects[child].motion.parent().unwrap();
+        let (Motion::Hop { center, .. }, Motion::Satellite { radius, .. }) =
+            (spec.objects[parent].motion, spec.objects[child].motion)
+        else {
+            unreachable!()
+        };
+        let centre = DMat4::from_translation(Vec3::from_array(center).as_dvec3());
+        let scene = reference(&spec, 0.0);
+        let hop = drawn_model(&scene, &spec.objects[parent].name);
+        assert!(hop.abs_diff_eq(centre, 1e-5));
+        // Not the oracle's phase 0 (the −end), which every later period starts from.
+        assert!(!hop.abs_diff_eq(expected_model(&spec, parent, 0), 1e-3));
+        let ahead = centre * DMat4::from_translation(DVec3::new(0.0, 0.0, f64::from(radius)));
+        assert!(drawn_model(&scene, &spec.objects[child].name).abs_diff_eq(ahead, 1e-5));
+        // One frame on, the oracle's pose.
+        let next = drawn_model(&reference(&spec, 1.0 / 60.0), &spec.objects[parent].name);
+        assert!(next.abs_diff_eq(expected_model(&spec, parent, 1), 1e-5));
     }
 }

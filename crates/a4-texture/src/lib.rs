@@ -103,6 +103,11 @@ impl cg_harness::Assignment for A4 {
         view(spec, imp, time_s)
     }
 
+    fn reference_view(spec: &Spec, time_s: f64) -> Option<cg_core::scene::Scene> {
+        let _ = time_s;
+        Some(view::reference(spec))
+    }
+
     fn spec_json(spec: &Spec) -> cg_harness::unit::Json {
         cg_harness::unit::json(&Presented(spec))
     }

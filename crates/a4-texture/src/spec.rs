@@ -273,7 +273,7 @@ pub impl Spec {
     }
 }
 
-/// The oracle of `a4.t2`, for the checks only.
+/// The oracle of `a4.t2`, for the checks and the kit's reference picture.
 #[ext(SpecOracle)]
 pub(crate) impl Spec {
     /// Ground squares along each side of one block (`10 / repeat`).
@@ -306,7 +306,6 @@ pub(crate) impl Spec {
 
     /// What `a4.t2` must return for square `(i, j)`: its corners in drawing order, from the
     /// f64 oracle.
-    #[cfg(test)]
     fn expected_square(&self, i: u32, j: u32) -> [Vec2; 4] {
         let k = f64::from(self.block());
         CORNER_STEPS.map(|(di, dj)| {

@@ -69,7 +69,9 @@ fn panicked(function: &str, outcome: Outcome) -> Text {
     let (message, location) = match outcome {
         Outcome::Panicked { message, location } => (message, location),
         Outcome::NotDone { message } => (message, None),
-        other @ (Outcome::TimedOut { .. } | Outcome::Crashed { .. }) => {
+        other @ (Outcome::TimedOut { .. }
+        | Outcome::Crashed { .. }
+        | Outcome::DoesNotCompile { .. }) => {
             let text = other.describe().unwrap_or_default();
             return Text::new(
                 format!("{function}: {}", text.ja),
@@ -107,6 +109,31 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
         Err(Outcome::NotDone { .. }) => Sampler::default(),
         Err(other) => return Err(panicked("a4.t3 sampler", other)),
     };
+    Ok(textured_stage(&coords, sampler))
+}
+
+/// The kit's reference picture ([`cg_harness::Assignment::reference_view`]): [`view`]'s scene
+/// with the coordinates of the `a4.t2` oracle (each square's corners from the region's corners,
+/// blended in f64) and the sampler `a4.t3` asks for (GL_CLAMP_TO_EDGE both ways, GL_LINEAR).
+#[must_use]
+pub fn reference(spec: &Spec) -> Scene {
+    use crate::spec::SpecOracle;
+    let mut coords = [[[Vec2::ZERO; 4]; SQUARES as usize]; SQUARES as usize];
+    for (i, column) in (0..SQUARES).zip(coords.iter_mut()) {
+        for (j, square) in (0..SQUARES).zip(column.iter_mut()) {
+            *square = spec.expected_square(i, j);
+        }
+    }
+    let sampler = crate::Sampler {
+        filter: crate::Filter::Bilinear,
+        wrap_u: crate::Wrap::Clamp,
+        wrap_v: crate::Wrap::Clamp,
+    };
+    textured_stage(&coords, crate::core_sampler(sampler))
+}
+
+/// The course's stage with the ground textured at `coords` through `sampler`.
+fn textured_stage(coords: &Coordinates, sampler: Sampler) -> Scene {
     let mut scene = cg_harness::course::stage();
     scene.name = "a4-texture".to_owned();
     // Drawn once per process: a viewer calls this every frame.
@@ -114,7 +141,7 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
     scene.textures = vec![IMAGE.get_or_init(prepared_image).clone()];
     scene.objects.push(Object {
         name: "ground".to_owned(),
-        mesh: ground_mesh(&coords),
+        mesh: ground_mesh(coords),
         normals: NormalSource::Face,
         material: Material::from_color(Rgb::ONE),
         transform: MatrixProduct::identity(),
@@ -122,5 +149,5 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
         weld: None,
         analytic: None,
     });
-    Ok(scene)
+    scene
 }

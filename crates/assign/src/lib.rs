@@ -21,6 +21,7 @@
 //! table = 1
 //! ```
 
+pub mod local;
 mod student_file;
 mod units;
 

@@ -155,6 +155,15 @@ macro_rules! derive_from_list {
                 }
             }
 
+            /// The kit's own reference picture of `which` at `time_s`
+            /// ([`cg_harness::Assignment::reference_view`]), where it has one.
+            #[must_use]
+            pub fn reference_view(&self, which: Which, time_s: f64) -> Option<Scene> {
+                match which {
+                    $(Which::$id => <$unit as Unit>::reference_view(&self.$id, time_s),)*
+                }
+            }
+
             /// After how many seconds `which`'s view repeats (`None`: a still picture).
             #[must_use]
             pub fn view_period_s(&self, which: Which) -> Option<f64> {

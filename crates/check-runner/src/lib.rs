@@ -9,8 +9,9 @@
 //! functions over the worker's pipe, each call within its budget.
 //!
 //! The grader builds this crate from each submission's `exercises/` and starts its program,
-//! `cg-check-runner`, in the sandbox (cg-sandbox); `cg check` starts itself in worker mode
-//! (`cg worker`), which serves the same [`handlers`].
+//! `cg-check-runner`, in the sandbox (cg-sandbox); `cg check`, `cg view` and `cg report` build it
+//! from the student's own `exercises/`, leaving out a file that does not compile
+//! (`cg_assign::local`), and start it as well.
 //!
 //! ```text
 //! cg-check-runner [--memory-mb N]

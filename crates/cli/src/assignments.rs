@@ -109,41 +109,20 @@ pub struct CheckArgs {
     memory_limit: u64,
 }
 
-/// Options of the hidden `cg worker`: the student's functions served on stdin and stdout for
-/// `cg check` (which starts it), as the grader's `cg-check-runner` serves them.
-#[derive(clap::Args)]
-pub struct WorkerArgs {
-    /// MiB of address space (Unix)
-    #[arg(long, value_name = "MIB")]
-    memory_mb: Option<u64>,
-}
-
-/// `cg worker`: serves the student's functions until stdin ends.
-pub fn worker(args: &WorkerArgs) -> Result<(), String> {
-    if let Some(mb) = args.memory_mb {
-        cg_check_runner::limit_memory(mb).map_err(|e| format!("--memory-mb {mb}: {e}"))?;
-    }
-    cg_check_runner::serve().map_err(|e| e.to_string())
-}
-
 /// `cg check`: runs the student's checks. Exit status 0 when every check passes, 1 when one
 /// fails or is not done yet, 3 when one ran out of time.
 ///
-/// The checks run here; the student's functions run in a worker, this program started again
-/// as `cg worker`, each check's calls within `--time-limit` and the worker's memory within
-/// `--memory-limit`: a function that loops, crashes or allocates without end fails only the
-/// checks that called it.
+/// The checks run here; the student's functions run in a worker, `cg-check-runner` built from
+/// exercises/ ([`cg_assign::local`]), each check's calls within `--time-limit` and the worker's
+/// memory within `--memory-limit`: a function that loops, crashes or allocates without end fails
+/// only the checks that called it, and a file that does not compile only its assignment's.
 pub fn check(args: &CheckArgs, lang: Lang) -> Result<Ending, String> {
     let record = student(args.student.as_deref(), None, lang)?;
     let a = Variants::for_student(&record.student, record.table);
     let which: Vec<Which> =
         args.which.as_ref().map_or_else(|| Which::ALL.to_vec(), |s| vec![s.which]);
     let only = args.which.as_ref().and_then(|s| s.only.as_deref());
-    let me = std::env::current_exe().map_err(|e| format!("current_exe: {e}"))?;
-    let worker = cg_worker::Worker::new(
-        me,
-        vec!["worker".into(), "--memory-mb".into(), args.memory_limit.max(64).to_string()],
-    );
+    let worker = cg_assign::local::worker_for_this_kit(args.memory_limit, lang)?;
     let per_check = Duration::from_secs(args.time_limit.max(1));
     let (mut reports, worker) =
         cg_harness::check::run_only(only, || a.reports_in_worker(&which, worker, per_check));
@@ -298,15 +277,16 @@ impl ViewArgs {
     }
 }
 
-/// The functions a side of `cg view` draws: the student's, or the reference solutions' when
-/// they are part of this kit.
+/// The functions a side of `cg view` draws: the student's, in the worker current on this thread
+/// (`view` starts it), or the reference solutions' when they are part of this kit (for a view
+/// the kit has no reference picture of its own for: the warm-up).
 fn impls(reference: bool) -> Impls {
     let _ = reference;
     #[cfg(feature = "reference")]
     if reference {
         return cg_assign::impls!(cg_solutions);
     }
-    cg_assign::impls!(cg_exercises)
+    Impls::worker()
 }
 
 fn view_scene(
@@ -316,11 +296,37 @@ fn view_scene(
     time: f64,
     warmup: bool,
 ) -> Result<Result<Scene, Text>, Outcome> {
+    // The reference: the kit's own picture, built from its oracles (the students' copy has it
+    // too); the reference solutions only where the kit has none (the warm-up).
+    if reference
+        && !warmup
+        && let Some(scene) = a.reference_view(which, time)
+    {
+        return Ok(Ok(scene));
+    }
     let impls = impls(reference);
     if warmup {
         return guarded(|| Variants::warmup(which, &impls, time).ok_or_else(|| no_warmup(which)));
     }
     guarded(|| a.view(which, &impls, time))
+}
+
+/// Why a side has no picture: the student's function is a stub, panicked, ran out of time, or
+/// its file does not compile (then with the compiler's first error).
+fn not_drawn(outcome: &Outcome, lang: Lang) -> String {
+    match outcome {
+        Outcome::NotDone { message } => format!(
+            "{}: {}",
+            t("まだです", "not done yet").get(lang),
+            cg_harness::check::stub_message(message, lang)
+        ),
+        Outcome::DoesNotCompile { errors, .. } => {
+            let first = errors.first().map(|e| e.lines().take(8).collect::<Vec<_>>().join("\n"));
+            let head = outcome.describe().map(|d| d.get(lang).to_owned()).unwrap_or_default();
+            first.map_or_else(|| head.clone(), |e| format!("{head}\n{e}"))
+        }
+        other => other.describe().map_or_else(|| format!("{other:?}"), |d| d.get(lang).to_owned()),
+    }
 }
 
 /// Why `--warmup` does not apply to `which`, naming the assignments it applies to.
@@ -333,16 +339,24 @@ fn no_warmup(which: Which) -> Text {
     )
 }
 
-/// `cg view`: draws the student's result (and the reference beside it when the solutions are
-/// part of this kit) to PNG files.
+/// `cg view`: draws the student's result and the kit's reference picture beside it
+/// (`Assignment::reference_view`, in the students' copy too), in a window or to PNG files, with
+/// their difference. The student's functions run in a worker.
 pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
+    use cg_assign::local;
+    let worker = local::worker_for_this_kit(local::MEMORY_MB, lang)?;
+    cg_worker::proxy::with_worker(worker, local::CALL_LIMIT, || view_in_worker(args, lang)).0
+}
+
+fn view_in_worker(args: &ViewArgs, lang: Lang) -> Result<(), String> {
     let record = student(args.student.as_deref(), None, lang)?;
     let a = Variants::for_student(&record.student, record.table);
     if args.warmup && !args.which.has_warmup() {
         return Err(no_warmup(args.which).get(lang).to_owned());
     }
     let mut sides = vec![(false, t("あなたの結果", "yours"), "yours")];
-    if cfg!(feature = "reference") {
+    let kit_reference = !args.warmup && a.reference_view(args.which, args.time).is_some();
+    if kit_reference || cfg!(feature = "reference") {
         sides.push((true, t("参考解答", "reference"), "reference"));
     }
     if !args.png_only()
@@ -380,13 +394,9 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
                 drawn.push(image);
             }
             Ok(Err(why)) => println!("  {label}: {}", why.get(lang)),
-            Err(Outcome::NotDone { message }) => {
-                println!("  {label}: {}: {message}", t("まだです", "not done yet").get(lang));
+            Err(outcome) => {
+                println!("  {label}: {}", not_drawn(&outcome, lang).replace('\n', "\n    "));
             }
-            Err(other) => println!(
-                "  {label}: {}",
-                other.describe().map_or_else(|| format!("{other:?}"), |t| t.get(lang).to_owned())
-            ),
         }
     }
     let diff_path = args.output.join(format!("view-{name}-diff.png"));
@@ -510,12 +520,7 @@ fn view_window(
                     match view_scene(which, &a, reference, time, warmup) {
                         Ok(Ok(scene)) => Ok(scene),
                         Ok(Err(why)) => Err(why.get(lang).to_owned()),
-                        Err(Outcome::NotDone { message }) => Err(format!(
-                            "{}: {}",
-                            t("まだです", "not done yet").get(lang),
-                            cg_harness::check::stub_message(&message, lang)
-                        )),
-                        Err(other) => Err(format!("{other:?}")),
+                        Err(outcome) => Err(not_drawn(&outcome, lang)),
                     }
                 }),
                 own_camera: which.own_camera() && !warmup,
@@ -530,7 +535,8 @@ fn view_window(
         let camera = &mut app.view.camera;
         (camera.yaw_deg, camera.pitch_deg, camera.distance) = (r.yaw_deg, r.pitch_deg, r.distance);
     }
-    // An interactive window watches its own program, which `cg watch` rebuilds on every save.
+    // An interactive window watches the program of the student's functions, which `cg watch`
+    // rebuilds on every save; it then starts this one again.
     let program = std::env::current_exe().ok().filter(|_| args.frames.is_none());
     let options = cg_viewer::ViewerOptions {
         frames: args.frames,
@@ -538,7 +544,7 @@ fn view_window(
         out_dir: Some(args.output.clone()),
         paused: args.paused,
         lang,
-        reload_on_change: program.clone(),
+        reload_on_change: program.as_ref().map(|_| cg_assign::local::worker_program()),
         ..cg_viewer::ViewerOptions::default()
     };
     cg_viewer::print_keys(lang);

@@ -81,9 +81,6 @@ enum Command {
     Similarity(similarity::Args),
     /// Which renderers and windows work on this machine, and why, each problem with its fix / このマシンで使えるレンダラとウィンドウ、使えない理由と対処
     Doctor(doctor::Args),
-    /// The student's functions for `cg check`, which starts it (not for use by hand)
-    #[command(hide = true)]
-    Worker(assignments::WorkerArgs),
 }
 
 /// Ends quietly when the reader of our output goes away (`cg check | head`): printing to a closed
@@ -117,7 +114,6 @@ fn main() -> ExitCode {
         Some(Command::View(args)) => ok(assignments::view(&args, lang)),
         Some(Command::Watch(args)) => ok(watch::run(&args, lang)),
         Some(Command::Report(command)) => {
-            cg_report::app::start_watchdog(cg_report::app::TIME_LIMIT, lang);
             cg_report::app::run(&command, &cg_report::app::Kit::exercises(), lang)
                 .map(Ending::passed)
         }
@@ -129,7 +125,6 @@ fn main() -> ExitCode {
         Some(Command::Autograder(args)) => ok(gradescope::autograder(&args, lang)),
         Some(Command::Similarity(args)) => similarity::run(&args, lang),
         Some(Command::Doctor(args)) => ok(doctor::run(&args, lang)),
-        Some(Command::Worker(args)) => ok(assignments::worker(&args)),
         None => ok(render::main_job(lang)),
     };
     // 0 ok, 1 mistakes found, 2 bad input or usage, 3 the student's code ran out of time.

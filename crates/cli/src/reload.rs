@@ -1,8 +1,9 @@
-//! `cg view`'s window starts again when its program is rebuilt (issue 15: "an open viewer
-//! reloads the student's result on save"). `cg watch` rebuilds `target/release/cg` on every
-//! save; the window, which watches the program it was started from, then closes, and the view
-//! starts the new program with the same arguments, at the same animation time, from the same
-//! camera (`CG_VIEW_RESUME`), so the student's saved code is what it shows.
+//! `cg view`'s window starts again when the student's functions are rebuilt (issue 15: "an open
+//! viewer reloads the student's result on save"). `cg watch` rebuilds their worker,
+//! `target/release/cg-check-runner`, on every save (`cg_assign::local`); the window, which
+//! watches that program, then closes, and the view starts again with the same arguments, at the
+//! same animation time, from the same camera (`CG_VIEW_RESUME`), with a fresh worker, so the
+//! student's saved code is what it shows.
 //!
 //! On Unix the new program replaces this one (`exec`). On Windows a running program cannot be
 //! replaced on disk, so the rebuild waits for the window to close: there it does not happen.
@@ -70,7 +71,7 @@ pub fn arguments(args: &[String], time: f64, paused: bool) -> Vec<String> {
     out
 }
 
-/// Starts `program` (the rebuilt `cg`) with `args` and the view `resume`; on Unix in place of
+/// Starts `program` (`cg` itself) with `args` and the view `resume`; on Unix in place of
 /// this process (it does not come back unless that fails).
 ///
 /// # Errors

@@ -14,7 +14,7 @@ use std::process::Command;
 use std::sync::mpsc::{Receiver, Sender, channel};
 use std::time::Duration;
 
-use cg_core::lang::{Lang, t};
+use cg_core::lang::{Lang, Text, t};
 use notify::Watcher;
 use serde_json::Value;
 
@@ -341,6 +341,15 @@ fn board(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal)
                     text.push_str(&format!("      {m}\n"));
                     said = Some(m);
                 }
+                // A file that does not compile: its first error, once.
+                if let Some(first) = compile_errors(c).first()
+                    && said != Some(*first)
+                {
+                    for l in first.lines() {
+                        text.push_str(&format!("      | {l}\n"));
+                    }
+                    said = Some(*first);
+                }
             }
         }
     }
@@ -377,7 +386,21 @@ fn hint(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal) 
             any = true;
         }
     }
-    if !any {
+    let errors = compile_errors(c);
+    if !errors.is_empty() {
+        let module = c.json["module"].as_str().unwrap_or_default();
+        text.push_str(&format!(
+            "\n  {}",
+            Text::new(
+                format!("exercises/src/{module}.rs がコンパイルできません。最初のエラーから直してください:"),
+                format!("exercises/src/{module}.rs does not compile; fix the first error first:"),
+            )
+            .get(lang)
+        ));
+        for l in errors.iter().flat_map(|e| e.lines()) {
+            text.push_str(&format!("\n    {l}"));
+        }
+    } else if !any {
         let m = c.json["message"].as_str().unwrap_or_default();
         text.push_str(&format!(
             "\n  {} {m}",
@@ -389,6 +412,14 @@ fn hint(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal) 
         ));
     }
     terminal.say(&text);
+}
+
+/// The compiler's errors of a check whose file did not compile (its JSON's `errors`).
+fn compile_errors(c: &Check) -> Vec<&str> {
+    c.json["errors"]
+        .as_array()
+        .map(|a| a.iter().filter_map(Value::as_str).collect())
+        .unwrap_or_default()
 }
 
 /// The terminal: raw mode (single keys) when input and output are a terminal, restored on exit.

@@ -11,7 +11,6 @@ use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 use crate::result::tail;
-use crate::submission::MODULES;
 
 /// How a build ended.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -28,49 +27,16 @@ pub struct BuildOutput {
     pub stderr_tail: String,
 }
 
-/// The module a compiler message's file belongs to: `exercises/src/a2.rs` → `a2`.
-fn module_of(file: &str) -> Option<&'static str> {
-    let file = file.replace('\\', "/");
-    MODULES.iter().copied().find(|m| {
-        let name = format!("src/{m}.rs");
-        file == name || file.ends_with(&format!("exercises/{name}"))
-    })
-}
-
-/// Reads cargo's JSON messages: errors by module, and the others.
+/// Reads cargo's JSON messages: errors by module (`file:line: message`), and the others
+/// ([`cg_assign::local::diagnostics`], which `cg check` reads the student's own build with).
 #[must_use]
 pub fn parse_messages(stdout: &str) -> (BTreeMap<String, Vec<String>>, Vec<String>) {
     let mut by_module: BTreeMap<String, Vec<String>> = BTreeMap::new();
     let mut other = Vec::new();
-    for line in stdout.lines() {
-        let Ok(v) = serde_json::from_str::<serde_json::Value>(line) else { continue };
-        if v["reason"] != "compiler-message" || v["message"]["level"] != "error" {
-            continue;
-        }
-        let text = v["message"]["message"].as_str().unwrap_or("").to_owned();
-        if text.starts_with("aborting due to") || text.starts_with("could not compile") {
-            continue;
-        }
-        let spans = v["message"]["spans"].as_array().cloned().unwrap_or_default();
-        let primary = spans.iter().find(|s| s["is_primary"] == true).or(spans.first());
-        let place = primary.map(|s| {
-            (
-                s["file_name"].as_str().unwrap_or("?").to_owned(),
-                s["line_start"].as_u64().unwrap_or(0),
-            )
-        });
-        // The module is the primary span's, or else any span's in a student module.
-        let module = place
-            .as_ref()
-            .and_then(|(f, _)| module_of(f))
-            .or_else(|| spans.iter().find_map(|s| s["file_name"].as_str().and_then(module_of)));
-        let shown = match &place {
-            Some((file, line)) => format!("{file}:{line}: {text}"),
-            None => text,
-        };
-        match module {
-            Some(m) => by_module.entry(m.to_owned()).or_default().push(shown),
-            None => other.push(shown),
+    for d in cg_assign::local::diagnostics(stdout) {
+        match d.module {
+            Some(m) => by_module.entry(m.to_owned()).or_default().push(d.short),
+            None => other.push(d.short),
         }
     }
     (by_module, other)
@@ -275,7 +241,6 @@ mod tests {
         assert_eq!(by["a2"], vec!["exercises/src/a2.rs:7: expected `;`, found `}`".to_owned()]);
         assert_eq!(by.len(), 1);
         assert_eq!(other, vec!["crates/cli/src/main.rs:7: mismatched types".to_owned()]);
-        assert_eq!(module_of("src/s.rs"), Some("s"));
-        assert_eq!(module_of("exercises/src/lib.rs"), None);
+        assert_eq!(cg_assign::local::module_of("src/s.rs"), Some("s"));
     }
 }

@@ -52,7 +52,9 @@ impl Missing {
                     format!("{function} panicked: {message}{at}"),
                 )
             }
-            other @ (Outcome::TimedOut { .. } | Outcome::Crashed { .. }) => {
+            other @ (Outcome::TimedOut { .. }
+            | Outcome::Crashed { .. }
+            | Outcome::DoesNotCompile { .. }) => {
                 let text = other.describe().unwrap_or_default();
                 Text::new(format!("{function}: {}", text.ja), format!("{function}: {}", text.en))
             }

@@ -112,7 +112,7 @@ pub fn stub_from_solution(text: &str, file: &str, comment: &str) -> Result<Strin
 }
 
 /// Every file of the exercises crate as the solutions crate at `solutions` generates it:
-/// `Cargo.toml` and every `src/**/*.rs`, as (path relative to the crate, contents), sorted.
+/// `Cargo.toml`, `build.rs` and every `src/**/*.rs`, as (path relative to the crate, contents), sorted.
 ///
 /// # Errors
 /// A file that cannot be read, or a marker out of place.
@@ -127,6 +127,12 @@ pub fn generate(solutions: &Path) -> Result<Vec<(PathBuf, String)>, StubError> {
     let text = stub_from_solution(&text, "Cargo.toml", "#")?
         .replace("name = \"cg-solutions\"", "name = \"cg-exercises\"");
     let mut files = vec![(PathBuf::from("Cargo.toml"), text)];
+    // The build script that leaves out a module that does not compile (the same in both).
+    let script = solutions.join("build.rs");
+    if script.exists() {
+        let text = std::fs::read_to_string(&script).map_err(|e| io(&script, e))?;
+        files.push((PathBuf::from("build.rs"), stub_from_solution(&text, "build.rs", "//")?));
+    }
     let mut stack = vec![solutions.join("src")];
     while let Some(dir) = stack.pop() {
         let entries = std::fs::read_dir(&dir).map_err(|e| io(&dir, e))?;

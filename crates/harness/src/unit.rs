@@ -66,6 +66,14 @@ pub trait Assignment: 'static {
     /// [`Missing`](crate::report::Missing),
     /// never a crash.
     fn report(spec: &Self::Spec, imp: &Self::Impl) -> Part<Self::Report>;
+    /// The reference picture's scene at `time_s`: what [`Self::view`] shows for a correct
+    /// answer, built on the trusted side from the kit's own oracle (never from a student's or
+    /// the reference solutions' code), so that the students' copy, which has no solutions, shows
+    /// it beside the student's result. `None` where the kit has no such oracle.
+    fn reference_view(spec: &Self::Spec, time_s: f64) -> Option<Scene> {
+        let _ = (spec, time_s);
+        None
+    }
     /// Labels for [`Self::view`]'s picture: where (as fractions of the picture's width and
     /// height from its top-left corner) and the word written there, centred (`cg view s` names
     /// its three spheres). None by default.

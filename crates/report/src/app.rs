@@ -103,11 +103,12 @@ pub struct CheckArgs {
 }
 
 /// How long one of the student's functions may run while a report command calls it.
-pub const TIME_LIMIT: std::time::Duration = std::time::Duration::from_secs(20);
+pub const TIME_LIMIT: std::time::Duration = cg_assign::local::CALL_LIMIT;
 
-/// For the command line (`cg report`, `report-checker`): a student's function that never returns
-/// ends the command after `limit` with exit code 3 and a message in `lang`, instead of hanging
-/// (the watchdog of `cg check`). Call once, before [`run`].
+/// For a [`Kit`] whose functions run in this process (no [`Kit::worker`]): a student's function
+/// that never returns ends the command after `limit` with exit code 3 and a message in `lang`,
+/// instead of hanging. Call once, before [`run`]. (The worker of [`Kit::exercises`] stops such a
+/// call by itself, and the part it was for is reported missing.)
 pub fn start_watchdog(limit: std::time::Duration, lang: Lang) {
     cg_harness::check::watchdog(limit, lang);
 }
@@ -119,15 +120,22 @@ pub struct Kit {
     pub impls: Impls,
     /// `exercises/student.toml`.
     pub student_file: fn() -> PathBuf,
+    /// Starts the worker that `impls` call when they are the worker's ([`Impls::worker`]);
+    /// `None` when they run in this process (the kit's tests, with its reference solutions).
+    pub worker: Option<fn(Lang) -> Result<cg_worker::Worker, String>>,
 }
 
 impl Kit {
-    /// The student's exercises of this kit.
+    /// The student's exercises of this kit, run in a worker built from them
+    /// ([`cg_assign::local`]): a file that does not compile leaves out only its own parts.
     #[must_use]
     pub fn exercises() -> Kit {
         Kit {
-            impls: cg_assign::impls!(cg_exercises),
+            impls: Impls::worker(),
             student_file: || cg_harness::kit_path(None, "exercises").join("student.toml"),
+            worker: Some(|lang| {
+                cg_assign::local::worker_for_this_kit(cg_assign::local::MEMORY_MB, lang)
+            }),
         }
     }
 }
@@ -137,6 +145,23 @@ impl Kit {
 /// # Errors
 /// What could not be read or written, as a message in `lang`.
 pub fn run(command: &Command, kit: &Kit, lang: Lang) -> Result<bool, String> {
+    let source = match command {
+        Command::Derive(args) => &args.source,
+        Command::Fill(args) => &args.derive.source,
+        Command::Check(args) => &args.source,
+    };
+    // The student's functions are called only when the data is not a file of its own.
+    match kit.worker.filter(|_| source.data.is_none()) {
+        Some(start) => {
+            let worker = start(lang)?;
+            cg_worker::proxy::with_worker(worker, TIME_LIMIT, || run_here(command, kit, lang)).0
+        }
+        None => run_here(command, kit, lang),
+    }
+}
+
+/// [`run`], the student's functions being ready to call.
+fn run_here(command: &Command, kit: &Kit, lang: Lang) -> Result<bool, String> {
     match command {
         Command::Derive(args) => {
             let written = derive_to(args, kit, lang)?;

@@ -149,6 +149,13 @@ impl cg_harness::Assignment for S {
         view(spec, imp, time_s)
     }
 
+    /// The view a correct answer gives, drawn with the kit's own light model
+    /// ([`cg_core::light`]), vertex normals ([`cg_core::normals`]) and shading rule
+    /// ([`kit_rule`]) in place of the student's functions.
+    fn reference_view(spec: &Spec, time_s: f64) -> Option<cg_core::scene::Scene> {
+        Some(view::reference(spec, time_s))
+    }
+
     /// Each sphere's name on the ground in front of it, as the stage's camera sees it (the
     /// spheres are flat, Gouraud and Phong from left to right).
     fn view_labels(spec: &Spec) -> Vec<([f32; 2], &'static str)> {

@@ -13,6 +13,7 @@
 //! | cells | spreadsheet names: columns `A`–`H` left to right, rows `1`–`8` **top to bottom** ([`CELLS`] of each) |
 //! | ground | [`SQUARES`] × [`SQUARES`] squares: vertex `(i, j)`, `i, j = 0…10`, at `(i·1 − 5, 0, j·1 − 5)`; square `(i, j)` is drawn through its corners in the order of [`CORNER_STEPS`] |
 
+use crate::left_out;
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
@@ -118,4 +119,18 @@ pub struct Impl {
     pub tex_coords: fn(&Spec, u32, u32) -> [Vec2; 4],
     /// `a4.t3`: the sampler (filter, wrap modes).
     pub sampler: fn() -> Sampler,
+}
+
+impl Impl {
+    /// For the kit, not for your code: what stands in for `exercises/src/a4.rs` while that file
+    /// does not compile, so that the other assignments still build and run. The kit never calls
+    /// these functions: it says the file does not compile instead.
+    #[must_use]
+    pub fn left_out() -> Impl {
+        Impl {
+            tex_range: |_| left_out("a4"),
+            tex_coords: |_, _, _| left_out("a4"),
+            sampler: || left_out("a4"),
+        }
+    }
 }

@@ -102,3 +102,11 @@ pub(crate) fn from_friendly(v: f64) -> f32 {
     let x = v as f32;
     [x, x.next_down(), x.next_up()].into_iter().find(|&c| friendly_f64(c) == v).unwrap_or(x)
 }
+
+/// The body of every function of [`a1::Impl::left_out`] and its kind: the module did not
+/// compile. The kit answers such a call itself and never sends it here.
+fn left_out(module: &str) -> ! {
+    panic!(
+        "exercises/src/{module}.rs does not compile / exercises/src/{module}.rs がコンパイルできません"
+    )
+}

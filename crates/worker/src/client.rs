@@ -1,6 +1,7 @@
 //! The trusted side: start a worker, call its functions one at a time, each within a time
 //! budget; a call that runs over, or a worker that dies, fails that call alone.
 
+use std::collections::BTreeMap;
 use std::ffi::OsString;
 use std::io::{BufReader, Read, Write};
 use std::path::PathBuf;
@@ -37,6 +38,15 @@ pub enum CallError {
     /// The worker could not be started, or its reply did not read (a mismatch of kit and
     /// worker, or a student's program that wrote a frame of its own).
     Broken(String),
+    /// The function's module did not compile, so the worker was built without it
+    /// ([`Worker::without_modules`]): the module (`a1`) and the compiler's errors in it, the
+    /// first as the compiler shows it.
+    DoesNotCompile {
+        /// `a1`, `a2`, … (`exercises/src/<module>.rs`).
+        module: String,
+        /// The compiler's errors in that file, `file:line: message` (the first one whole).
+        errors: Vec<String>,
+    },
 }
 
 /// A running worker and what is needed to start another.
@@ -47,6 +57,9 @@ pub struct Worker {
     clear_env: bool,
     dir: Option<PathBuf>,
     running: Option<Running>,
+    /// The modules the worker was built without, because they did not compile, with the
+    /// compiler's errors in each: a call of one of their functions is answered here.
+    without: BTreeMap<String, Vec<String>>,
     /// What the student's functions printed on stdout, in order.
     pub printed: Vec<u8>,
 }
@@ -82,8 +95,24 @@ impl Worker {
             clear_env: false,
             dir: None,
             running: None,
+            without: BTreeMap::new(),
             printed: Vec::new(),
         }
+    }
+
+    /// The same worker, built without `modules` (each with the compiler's errors that kept it
+    /// out): a call of `a1.vertices` when `a1` is one of them gives
+    /// [`CallError::DoesNotCompile`] without reaching the worker.
+    #[must_use]
+    pub fn without_modules(mut self, modules: BTreeMap<String, Vec<String>>) -> Worker {
+        self.without = modules;
+        self
+    }
+
+    /// The modules the worker was built without, with their compiler errors.
+    #[must_use]
+    pub fn modules_left_out(&self) -> &BTreeMap<String, Vec<String>> {
+        &self.without
     }
 
     /// The same worker started with only the variables given by [`Worker::env`] (a sandbox's
@@ -178,6 +207,13 @@ impl Worker {
         A: serde::Serialize,
         R: serde::de::DeserializeOwned,
     {
+        let module = function.split('.').next().unwrap_or_default();
+        if let Some(errors) = self.without.get(module) {
+            return Err(CallError::DoesNotCompile {
+                module: module.to_owned(),
+                errors: errors.clone(),
+            });
+        }
         let call = Call {
             function: function.to_owned(),
             args: to_value(args).map_err(CallError::Broken)?,

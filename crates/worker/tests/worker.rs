@@ -102,3 +102,18 @@ fn the_memory_limit_stops_a_hoarding_function() {
     }
     assert_eq!(w.call::<_, i64>("add", &(1, 2), BUDGET), Ok(3));
 }
+
+#[test]
+fn a_module_left_out_is_answered_with_its_errors_and_the_others_still_run() {
+    let errors = vec!["error: expected `;`".to_owned()];
+    let left_out = [("a1".to_owned(), errors.clone())].into_iter().collect();
+    let mut w = worker().without_modules(left_out);
+    // Only the module's own functions (`a1.…`), not one whose name merely starts alike.
+    assert_eq!(
+        w.call::<_, i64>("a1.vertices", &(), BUDGET),
+        Err(CallError::DoesNotCompile { module: "a1".into(), errors })
+    );
+    assert_eq!(w.call::<_, i64>("add", &(2, 3), BUDGET), Ok(5));
+    assert!(matches!(w.call::<_, i64>("a10.x", &(), BUDGET), Err(CallError::Broken(_))));
+    assert_eq!(w.modules_left_out().len(), 1);
+}

@@ -1,0 +1,315 @@
+//! The student's functions of this kit's own `exercises/`, in a worker (principle 2): what
+//! `cg check`, `cg view` and `cg report` call. The front end (`cg`) does not link the
+//! exercises; [`worker`] builds `cg-check-runner` from them with cargo, in the profile and target
+//! folder of the running program, and the calls go to that program over a pipe
+//! ([`Impls::worker`](crate::Impls::worker)).
+//!
+//! **A file that does not compile is left out**, so that the other assignments still run: the
+//! compiler's errors are read from cargo's JSON messages ([`diagnostics`]), each file with an
+//! error is named in `CG_EXERCISES_LEFT_OUT` (exercises/build.rs turns it into a stand-in module)
+//! and the build is tried again. The worker then answers every call of that file's functions
+//! with the compiler's errors ([`cg_worker::Worker::without_modules`]), so each check, picture
+//! and report part that needs them says "does not compile" and shows where.
+
+use std::collections::BTreeMap;
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use cg_core::lang::{Lang, t};
+use cg_worker::Worker;
+
+use crate::IDS;
+
+/// The package of the worker program.
+pub const WORKER_PACKAGE: &str = "cg-check-runner";
+
+/// The variable exercises/build.rs reads: the modules to leave out, `a1,s`.
+pub const LEFT_OUT_VARIABLE: &str = "CG_EXERCISES_LEFT_OUT";
+
+/// How many of a file's compiler errors are kept (the first one whole).
+const ERRORS_KEPT: usize = 8;
+
+/// One compiler error, from cargo's `--message-format=json`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Diagnostic {
+    /// The student's module the error is in (`a1` for `exercises/src/a1.rs`), when it is in one.
+    pub module: Option<&'static str>,
+    /// `file:line: message`.
+    pub short: String,
+    /// The error as the compiler shows it (with the source line and the caret), without colour.
+    pub rendered: String,
+}
+
+/// The module a compiler message's file belongs to: `exercises/src/a2.rs` → `a2`.
+#[must_use]
+pub fn module_of(file: &str) -> Option<&'static str> {
+    let file = file.replace('\\', "/");
+    IDS.iter().copied().find(|m| {
+        let name = format!("src/{m}.rs");
+        file == name || file.ends_with(&format!("exercises/{name}"))
+    })
+}
+
+/// The errors in cargo's JSON messages (`stdout` of `cargo build --message-format=json`), in
+/// order; each goes to the module of its primary span, or else of any span in a student
+/// module.
+#[must_use]
+pub fn diagnostics(stdout: &str) -> Vec<Diagnostic> {
+    let mut out = Vec::new();
+    for line in stdout.lines() {
+        let Ok(v) = serde_json::from_str::<serde_json::Value>(line) else { continue };
+        if v["reason"] != "compiler-message" || v["message"]["level"] != "error" {
+            continue;
+        }
+        let text = v["message"]["message"].as_str().unwrap_or("").to_owned();
+        if text.starts_with("aborting due to") || text.starts_with("could not compile") {
+            continue;
+        }
+        let spans = v["message"]["spans"].as_array().cloned().unwrap_or_default();
+        let primary = spans.iter().find(|s| s["is_primary"] == true).or(spans.first());
+        let place = primary.map(|s| {
+            (
+                s["file_name"].as_str().unwrap_or("?").to_owned(),
+                s["line_start"].as_u64().unwrap_or(0),
+            )
+        });
+        let module = place
+            .as_ref()
+            .and_then(|(f, _)| module_of(f))
+            .or_else(|| spans.iter().find_map(|s| s["file_name"].as_str().and_then(module_of)));
+        let short = match &place {
+            Some((file, line)) => format!("{file}:{line}: {text}"),
+            None => text,
+        };
+        let rendered = v["message"]["rendered"].as_str().unwrap_or(&short).trim_end().to_owned();
+        out.push(Diagnostic { module, short, rendered });
+    }
+    out
+}
+
+/// The errors of each module: the first as the compiler shows it, the others one line each, at
+/// most [`ERRORS_KEPT`].
+fn by_module(diagnostics: &[Diagnostic]) -> BTreeMap<String, Vec<String>> {
+    let mut out: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    for d in diagnostics {
+        if let Some(m) = d.module {
+            let errors = out.entry(m.to_owned()).or_default();
+            if errors.is_empty() {
+                errors.push(d.rendered.clone());
+            } else if errors.len() < ERRORS_KEPT {
+                errors.push(d.short.clone());
+            }
+        }
+    }
+    out
+}
+
+/// Where the worker is built: the profile's folder of the running program (`target/release`,
+/// when it runs from a cargo target folder, as `cargo run` runs it) and the profile's name for
+/// cargo (`release`, `dev`); else `<root>/target/release`.
+fn build_place(root: &Path) -> (PathBuf, String) {
+    let exe = std::env::current_exe().ok();
+    let mut dir = exe.as_deref().and_then(Path::parent).map(Path::to_path_buf).unwrap_or_default();
+    // A test program (target/debug/deps/…): the profile's folder is the one above.
+    if dir.file_name().is_some_and(|n| n == "deps") {
+        dir.pop();
+    }
+    // Cargo marks each target folder with CACHEDIR.TAG.
+    let in_target = dir.parent().is_some_and(|p| p.join("CACHEDIR.TAG").is_file());
+    match dir.file_name().and_then(|n| n.to_str()) {
+        Some("debug") if in_target => (dir, "dev".to_owned()),
+        Some(name) if in_target => {
+            let name = name.to_owned();
+            (dir, name)
+        }
+        _ => (root.join("target").join("release"), "release".to_owned()),
+    }
+}
+
+/// How one `cargo build` of the worker ended.
+struct Build {
+    success: bool,
+    diagnostics: Vec<Diagnostic>,
+    stderr: String,
+}
+
+/// `cargo build --profile <profile> -p cg-check-runner --message-format=json` of the kit at
+/// `root`, into the target folder above `profile_dir`, leaving out `left_out`. Says on stderr
+/// what it is doing when it takes more than two seconds (the first build after a fresh copy).
+fn cargo_build(
+    root: &Path,
+    profile_dir: &Path,
+    profile: &str,
+    left_out: &[String],
+    lang: Lang,
+) -> Result<Build, String> {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let target = profile_dir.parent().unwrap_or(profile_dir);
+    let mut command = Command::new(&cargo);
+    command
+        .args(["build", "--message-format=json", "--profile", profile, "-p", WORKER_PACKAGE])
+        .arg("--manifest-path")
+        .arg(root.join("Cargo.toml"))
+        .arg("--target-dir")
+        .arg(target)
+        .env(LEFT_OUT_VARIABLE, left_out.join(","))
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped());
+    let mut child = command.spawn().map_err(|e| {
+        t(
+            &format!(
+                "cargo を起動できません（{e}）。Rust が入っているか、`cargo --version` で確かめてください"
+            ),
+            &format!("cannot start cargo ({e}); is Rust installed? Try `cargo --version`"),
+        )
+        .get(lang)
+        .to_owned()
+    })?;
+    let read_all = |mut r: Box<dyn Read + Send>| {
+        std::thread::spawn(move || {
+            let mut s = Vec::new();
+            let _ = r.read_to_end(&mut s);
+            String::from_utf8_lossy(&s).into_owned()
+        })
+    };
+    let out = child.stdout.take().map(|s| read_all(Box::new(s)));
+    let err = child.stderr.take().map(|s| read_all(Box::new(s)));
+    let started = Instant::now();
+    let mut said = false;
+    let status = loop {
+        if let Some(status) = child.try_wait().map_err(|e| e.to_string())? {
+            break status;
+        }
+        if !said && started.elapsed() > Duration::from_secs(2) {
+            said = true;
+            eprintln!(
+                "{}",
+                t(
+                    "exercises/ のあなたの関数をビルドしています…",
+                    "building your functions in exercises/…"
+                )
+                .get(lang)
+            );
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let stdout = out.and_then(|h| h.join().ok()).unwrap_or_default();
+    let stderr = err.and_then(|h| h.join().ok()).unwrap_or_default();
+    Ok(Build { success: status.success(), diagnostics: diagnostics(&stdout), stderr })
+}
+
+/// The student's functions of the kit at `root` (the folder of `exercises/`), built into the
+/// running program's target folder and run as a worker limited to `memory_mb` MiB; each file
+/// that does not compile is left out, with its errors ([`Worker::modules_left_out`]).
+///
+/// # Errors
+/// cargo could not be started, or the exercises do not build even with every failing file left
+/// out (an error elsewhere: in lib.rs, Cargo.toml or the kit), as a message in `lang`.
+pub fn worker(root: &Path, memory_mb: u64, lang: Lang) -> Result<Worker, String> {
+    let (profile_dir, profile) = build_place(root);
+    let mut left_out: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    loop {
+        let names: Vec<String> = left_out.keys().cloned().collect();
+        let build = cargo_build(root, &profile_dir, &profile, &names, lang)?;
+        if build.success {
+            break;
+        }
+        let blamed: BTreeMap<String, Vec<String>> = by_module(&build.diagnostics)
+            .into_iter()
+            .filter(|(m, _)| !left_out.contains_key(m))
+            .collect();
+        if blamed.is_empty() {
+            let errors: Vec<&str> = build.diagnostics.iter().map(|d| d.rendered.as_str()).collect();
+            let shown = if errors.is_empty() {
+                build.stderr.trim_end().to_owned()
+            } else {
+                errors.join("\n")
+            };
+            return Err(format!(
+                "{}\n{shown}",
+                t(
+                    "あなたの関数（exercises/）をビルドできません。課題のファイル（a1.rs など）以外にエラーがあります:",
+                    "your functions (exercises/) do not build; there are errors outside the assignments' files (a1.rs, …):",
+                )
+                .get(lang)
+            ));
+        }
+        left_out.extend(blamed);
+    }
+    let program = profile_dir.join(format!("{WORKER_PACKAGE}{}", std::env::consts::EXE_SUFFIX));
+    Ok(Worker::new(program, ["--memory-mb".to_owned(), memory_mb.max(64).to_string()])
+        .without_modules(left_out))
+}
+
+/// The kit this program runs in: the folder above `exercises/` (the current folder's, or the
+/// kit's this program was built from: `cg_harness::kit_path`).
+fn this_kit() -> PathBuf {
+    let exercises = cg_harness::kit_path(None, "exercises");
+    let exercises = exercises.canonicalize().unwrap_or(exercises);
+    exercises.parent().map_or(exercises.clone(), Path::to_path_buf)
+}
+
+/// [`worker`] for the kit this program runs in.
+///
+/// # Errors
+/// As [`worker`].
+pub fn worker_for_this_kit(memory_mb: u64, lang: Lang) -> Result<Worker, String> {
+    worker(&this_kit(), memory_mb, lang)
+}
+
+/// The memory a worker of `cg view` and `cg report` may use, in MiB (as `cg check`'s default).
+pub const MEMORY_MB: u64 = 2048;
+
+/// The time one call of a student's function may take in `cg view` and `cg report`.
+pub const CALL_LIMIT: Duration = Duration::from_secs(20);
+
+/// The worker program [`worker_for_this_kit`] builds: what a window watches for a rebuild.
+#[must_use]
+pub fn worker_program() -> PathBuf {
+    let (profile_dir, _) = build_place(&this_kit());
+    profile_dir.join(format!("{WORKER_PACKAGE}{}", std::env::consts::EXE_SUFFIX))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn message(file: &str, line: u64, text: &str) -> String {
+        serde_json::json!({
+            "reason": "compiler-message",
+            "message": {
+                "level": "error",
+                "message": text,
+                "rendered": format!("error: {text}\n --> {file}:{line}:5\n"),
+                "spans": [{"file_name": file, "line_start": line, "is_primary": true}],
+            }
+        })
+        .to_string()
+    }
+
+    #[test]
+    fn errors_go_to_their_module_the_first_whole() {
+        let out = [
+            message("exercises/src/a1.rs", 12, "expected `;`"),
+            message("exercises/src/a1.rs", 20, "mismatched types"),
+            message("exercises/src/s.rs", 3, "cannot find value `x`"),
+            message("crates/check-runner/src/lib.rs", 28, "no function"),
+            r#"{"reason":"compiler-message","message":{"level":"error","message":"aborting due to 2 previous errors","spans":[]}}"#.to_owned(),
+            "not json".to_owned(),
+        ]
+        .join("\n");
+        let d = diagnostics(&out);
+        assert_eq!(d.len(), 4, "{d:?}");
+        assert_eq!(d[3].module, None);
+        let m = by_module(&d);
+        assert_eq!(m.keys().collect::<Vec<_>>(), ["a1", "s"]);
+        assert!(m["a1"][0].starts_with("error: expected `;`\n --> exercises/src/a1.rs:12"));
+        assert_eq!(m["a1"][1], "exercises/src/a1.rs:20: mismatched types");
+        assert_eq!(module_of("C:\\kit\\exercises\\src\\a4.rs"), Some("a4"));
+        assert_eq!(module_of("exercises/src/lib.rs"), None);
+        assert_eq!(module_of("solutions/src/a1.rs"), None);
+    }
+}
