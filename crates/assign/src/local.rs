@@ -155,10 +155,15 @@ fn cargo_build(
         .arg("--target-dir")
         .arg(target)
         .env(LEFT_OUT_VARIABLE, left_out.join(","))
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped());
-    let mut child = command.spawn().map_err(|e| {
+        .stdin(Stdio::null());
+    let say = || {
+        let building = t(
+            "exercises/ のあなたの関数をビルドしています…",
+            "building your functions in exercises/…",
+        );
+        eprintln!("{}", building.get(lang));
+    };
+    let ran = run_captured(&mut command, None, &say).map_err(|e| {
         t(
             &format!(
                 "cargo を起動できません（{e}）。Rust が入っているか、`cargo --version` で確かめてください"
@@ -168,6 +173,37 @@ fn cargo_build(
         .get(lang)
         .to_owned()
     })?;
+    let (success, stdout, stderr) =
+        (ran.status.is_some_and(|s| s.success()), ran.stdout, ran.stderr);
+    Ok(Build { success, diagnostics: diagnostics(&stdout), stderr })
+}
+
+/// How a program run by [`run_captured`] ended.
+#[derive(Debug)]
+pub struct Captured {
+    /// Its exit status; `None` when it ran over its limit and was killed.
+    pub status: Option<std::process::ExitStatus>,
+    /// Whether it ran over its limit.
+    pub timed_out: bool,
+    /// Its whole stdout.
+    pub stdout: String,
+    /// Its whole stderr.
+    pub stderr: String,
+}
+
+/// Runs `command` (a build: cargo) with its stdout and stderr read whole on threads of their
+/// own, so that neither pipe blocks it; kills it after `limit`, when given (on Unix its whole
+/// process group, so the compilers it started go too: set one with `process_group(0)`), and
+/// calls `slow` once when it has run for two seconds (to say what is going on).
+///
+/// # Errors
+/// The program could not be started, or waited for.
+pub fn run_captured(
+    command: &mut Command,
+    limit: Option<Duration>,
+    slow: &dyn Fn(),
+) -> std::io::Result<Captured> {
+    let mut child = command.stdout(Stdio::piped()).stderr(Stdio::piped()).spawn()?;
     let read_all = |mut r: Box<dyn Read + Send>| {
         std::thread::spawn(move || {
             let mut s = Vec::new();
@@ -179,26 +215,28 @@ fn cargo_build(
     let err = child.stderr.take().map(|s| read_all(Box::new(s)));
     let started = Instant::now();
     let mut said = false;
+    let mut timed_out = false;
     let status = loop {
-        if let Some(status) = child.try_wait().map_err(|e| e.to_string())? {
-            break status;
+        if let Some(status) = child.try_wait()? {
+            break Some(status);
+        }
+        if limit.is_some_and(|l| started.elapsed() > l) {
+            timed_out = true;
+            #[cfg(unix)]
+            let _ = Command::new("kill").arg("-KILL").arg(format!("-{}", child.id())).status();
+            let _ = child.kill();
+            let _ = child.wait();
+            break None;
         }
         if !said && started.elapsed() > Duration::from_secs(2) {
             said = true;
-            eprintln!(
-                "{}",
-                t(
-                    "exercises/ のあなたの関数をビルドしています…",
-                    "building your functions in exercises/…"
-                )
-                .get(lang)
-            );
+            slow();
         }
         std::thread::sleep(Duration::from_millis(20));
     };
     let stdout = out.and_then(|h| h.join().ok()).unwrap_or_default();
     let stderr = err.and_then(|h| h.join().ok()).unwrap_or_default();
-    Ok(Build { success: status.success(), diagnostics: diagnostics(&stdout), stderr })
+    Ok(Captured { status, timed_out, stdout, stderr })
 }
 
 /// The student's functions of the kit at `root` (the folder of `exercises/`), built into the
@@ -223,18 +261,27 @@ pub fn worker(root: &Path, memory_mb: u64, lang: Lang) -> Result<Worker, String>
             .collect();
         if blamed.is_empty() {
             let errors: Vec<&str> = build.diagnostics.iter().map(|d| d.rendered.as_str()).collect();
-            let shown = if errors.is_empty() {
-                build.stderr.trim_end().to_owned()
-            } else {
-                errors.join("\n")
-            };
+            if errors.is_empty() {
+                // No compiler error: cargo itself failed (on Windows, typically the worker's
+                // program still running in an open `cg view` window, which cannot be replaced).
+                return Err(format!(
+                    "{}\n{}",
+                    t(
+                        "あなたの関数（exercises/）をビルドできません（cargo のエラー）。Windows では、開いている `cargo run --release -- view …` のウィンドウを閉じてからやり直してください:",
+                        "your functions (exercises/) could not be built (cargo failed). On Windows, close an open `cargo run --release -- view …` window and try again:",
+                    )
+                    .get(lang),
+                    build.stderr.trim_end()
+                ));
+            }
             return Err(format!(
-                "{}\n{shown}",
+                "{}\n{}",
                 t(
                     "あなたの関数（exercises/）をビルドできません。課題のファイル（a1.rs など）以外にエラーがあります:",
                     "your functions (exercises/) do not build; there are errors outside the assignments' files (a1.rs, …):",
                 )
-                .get(lang)
+                .get(lang),
+                errors.join("\n")
             ));
         }
         left_out.extend(blamed);

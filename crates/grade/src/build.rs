@@ -5,10 +5,9 @@
 //! its own target folder writable.
 
 use std::collections::BTreeMap;
-use std::io::Read;
 use std::path::Path;
 use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use crate::result::tail;
 
@@ -70,34 +69,8 @@ pub fn cargo_build(
     // runs on Linux, and elsewhere only cargo itself is killed).
     #[cfg(unix)]
     std::os::unix::process::CommandExt::process_group(&mut command, 0);
-    let mut child = command.spawn()?;
-    let read_all = |mut r: Box<dyn Read + Send>| {
-        std::thread::spawn(move || {
-            let mut s = Vec::new();
-            let _ = r.read_to_end(&mut s);
-            String::from_utf8_lossy(&s).into_owned()
-        })
-    };
-    let out = child.stdout.take().map(|s| read_all(Box::new(s)));
-    let err = child.stderr.take().map(|s| read_all(Box::new(s)));
-    let started = Instant::now();
-    let mut timed_out = false;
-    let status = loop {
-        if let Some(status) = child.try_wait()? {
-            break Some(status);
-        }
-        if started.elapsed() > limit {
-            timed_out = true;
-            #[cfg(unix)]
-            let _ = Command::new("kill").arg("-KILL").arg(format!("-{}", child.id())).status();
-            let _ = child.kill();
-            let _ = child.wait();
-            break None;
-        }
-        std::thread::sleep(Duration::from_millis(50));
-    };
-    let stdout = out.and_then(|h| h.join().ok()).unwrap_or_default();
-    let stderr = err.and_then(|h| h.join().ok()).unwrap_or_default();
+    let ran = cg_assign::local::run_captured(&mut command, Some(limit), &|| {})?;
+    let (status, timed_out, stdout, stderr) = (ran.status, ran.timed_out, ran.stdout, ran.stderr);
     let (module_errors, other_errors) = parse_messages(&stdout);
     Ok(BuildOutput {
         success: status.is_some_and(|s| s.success()),
