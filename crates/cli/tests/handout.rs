@@ -2,7 +2,7 @@
 //! builds, runs and checks on its own (every check "not done yet" or failing, none passing).
 //! Then the student's whole day in that copy, on the reference answers: `assignment --save`,
 //! `check` (all pass), `view` of each assignment beside the kit's own reference picture, `report fill`, `report check` (exit status 0,
-//! no false positive) and LuaLaTeX on the filled template. Last, two files that do not compile
+//! no false positive) and LuaLaTeX on the filled templates, English and Japanese. Last, two files that do not compile
 //! stop only their own assignments in `check`, `view` and `report`.
 
 use std::path::Path;
@@ -137,18 +137,39 @@ fn the_handout_builds_and_checks_on_its_own_and_a_students_day_runs_in_it() {
     }
     let (code, text) = run(&["report", "check"]);
     assert_eq!(code, Some(0), "the untouched filled report must check clean:\n{text}");
-    // 7. The LaTeX template compiles (where LuaLaTeX is installed; CI installs it).
+    // The Japanese template too, filled into a folder of its own.
+    let o = cargo(&[
+        "run",
+        "--offline",
+        "--locked",
+        "--quiet",
+        "--",
+        "report",
+        "fill",
+        "-o",
+        "report-ja",
+        "--lang",
+        "ja",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let ja = std::fs::read_to_string(dir.join("report-ja/report.tex")).unwrap();
+    assert!(ja.contains("luatexja") || ja.contains("ltjs"), "the Japanese template");
+    // 7. Both LaTeX templates compile (where LuaLaTeX is installed; CI installs it).
     let lualatex =
         Command::new("lualatex").arg("--version").output().is_ok_and(|o| o.status.success());
     if lualatex {
-        let o = Command::new("lualatex")
-            .args(["-interaction=nonstopmode", "-halt-on-error", "report.tex"])
-            .current_dir(dir.join("report"))
-            .output()
-            .unwrap();
-        let log = String::from_utf8_lossy(&o.stdout);
-        assert!(o.status.success(), "lualatex:\n{}", &log[log.len().saturating_sub(3000)..]);
-        assert!(dir.join("report/report.pdf").exists());
+        for folder in ["report", "report-ja"] {
+            let o = Command::new("lualatex")
+                .args(["-interaction=nonstopmode", "-halt-on-error", "report.tex"])
+                .current_dir(dir.join(folder))
+                .output()
+                .unwrap();
+            let log = String::from_utf8_lossy(&o.stdout);
+            let skip = log.chars().count().saturating_sub(3000);
+            let end: String = log.chars().skip(skip).collect();
+            assert!(o.status.success(), "lualatex in {folder}:\n{end}");
+            assert!(dir.join(folder).join("report.pdf").exists());
+        }
     } else {
         assert!(std::env::var_os("CI").is_none(), "CI installs LuaLaTeX (scripts/setup.sh)");
         eprintln!("note: lualatex is not on PATH; the report's LaTeX is not compiled here");
