@@ -4,15 +4,13 @@
 //! picture, [`reference`], drawn from the oracle.
 
 use cg_core::gl::Gl;
-use cg_core::glam::{DMat4, Vec3};
 use cg_core::product::Factor;
 use cg_core::scene::Scene;
 use cg_harness::Text;
 
-use crate::oracle::{Variation, local};
 use crate::{
-    CAMERA_DISTANCE, CAMERA_PITCH_DEG, DRIFT_FRAMES, FPS, Impl, LIGHT0_POSITION, Motion, Spec,
-    State, camera_product, expected_model,
+    CAMERA_DISTANCE, CAMERA_PITCH_DEG, DRIFT_FRAMES, FPS, Impl, LIGHT0_POSITION, Spec, State,
+    camera_product, expected_model,
 };
 
 /// Sets the common camera and the light, as the warm-up's `display()` does before the boxes:
@@ -58,9 +56,13 @@ pub fn replay(recorded: &cg_student::gl::Gl) -> Gl {
 const VIEW_MAX_S: f64 = DRIFT_FRAMES as f64 / FPS as f64;
 
 /// The scene that shows `imp`'s result at time `time_s` (seconds): `idle` called
-/// `round(60·time_s)` times from the start, then `display` recorded and drawn in eye space on the
-/// course's ground (the ground with the kit's camera, so a wrong camera shows as objects off the
-/// ground). A frame that draws nothing shows the ground alone.
+/// `round(60·time_s)` times from the start, but at least once, then `display` recorded and drawn
+/// in eye space on the course's ground (the ground with the kit's camera, so a wrong camera shows
+/// as objects off the ground). A frame that draws nothing shows the ground alone.
+///
+/// At least one `idle()`: before it, `display()` reads `State::new()`, whose parameters are all
+/// 0 whatever they mean in the student's own layout, so that picture says nothing (the report
+/// skips it too) and could not be compared with the kit's reference.
 ///
 /// # Errors
 /// A time that is negative, not finite or beyond 10⁶ frames.
@@ -73,23 +75,27 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
             format!("the time must be between 0 and {VIEW_MAX_S:.0} s (got {time_s})"),
         ));
     }
-    let frames = (time_s * f64::from(FPS)).round() as u64;
-    Ok(on_ground(&record_frame(spec, imp, frames)))
+    Ok(on_ground(&record_frame(spec, imp, frame_at(time_s))))
+}
+
+/// The frame [`view`] draws at `time_s`: `round(60·time_s)`, at least 1.
+fn frame_at(time_s: f64) -> u64 {
+    ((time_s * f64::from(FPS)).round() as u64).max(1)
 }
 
 /// The kit's reference picture ([`cg_harness::Assignment::reference_view`]): [`view`]'s scene
-/// for a correct answer, from the oracle alone. At frame `round(60·time_s)` (frame 0 for a time
-/// [`view`] rejects), `display()` as `a3.t2` asks for it on the kit's [`Gl`]: the common camera
-/// and the light, then each object between `glPushMatrix` and `glPopMatrix` with its colour and
-/// its model matrix (`shown_model`: the oracle's [`expected_model`], in f64 at the exact phase;
-/// a child's includes its parent's), parents first, each followed by its children, as a correct
-/// `display()` nests them. On the course's ground, as [`view`].
+/// for a correct answer, from the oracle alone. At [`view`]'s frame (frame 1 for a time [`view`]
+/// rejects), `display()` as `a3.t2` asks for it on the kit's [`Gl`]: the common camera and the
+/// light, then each object between `glPushMatrix` and `glPopMatrix` with its colour and its model
+/// matrix (the oracle's [`expected_model`], in f64 at the exact phase; a child's includes its
+/// parent's), parents first, each followed by its children, as a correct `display()` nests them.
+/// On the course's ground, as [`view`].
 #[must_use]
 pub fn reference(spec: &Spec, time_s: f64) -> Scene {
-    let frames = if time_s.is_finite() && (0.0..=VIEW_MAX_S).contains(&time_s) {
-        (time_s * f64::from(FPS)).round() as u64
+    let frame = if time_s.is_finite() && (0.0..=VIEW_MAX_S).contains(&time_s) {
+        frame_at(time_s)
     } else {
-        0
+        1
     };
     let mut gl = Gl::new();
     gl.load_identity();
@@ -100,35 +106,14 @@ pub fn reference(spec: &Spec, time_s: f64) -> Scene {
     for i in roots.flat_map(|i| std::iter::once(i).chain(spec.children(i))) {
         let object = &spec.objects[i];
         gl.push_matrix();
-        gl.mult(Factor::named(format!("M_{}", i + 1), shown_model(spec, i, frames).as_mat4()));
+        let model = expected_model(spec, i, frame).as_mat4();
+        gl.mult(Factor::named(format!("M_{}", i + 1), model));
         let [r, g, b] = object.color;
         gl.color(r, g, b);
         gl.draw(&object.name, &cg_core::mesh::Mesh::from(&object.mesh));
         gl.pop_matrix();
     }
     on_ground(&gl)
-}
-
-/// Object `index`'s model matrix (world) as [`view`] shows it at `frame` for a correct answer:
-/// the oracle's [`expected_model`], except at frame 0. There [`view`] draws the state before the
-/// first `idle()`, `State::new()` with every motion parameter 0 (the report skips that frame for
-/// this reason): every angle at 0°, which is the oracle's phase 0 too, but a hop's offset and
-/// height at 0 as well, so a hop sits at its centre rather than at its −end (with its children).
-fn shown_model(spec: &Spec, index: usize, frame: u64) -> DMat4 {
-    if frame > 0 {
-        return expected_model(spec, index, frame);
-    }
-    let at_start = |motion: &Motion| match *motion {
-        Motion::Hop { center, .. } => DMat4::from_translation(Vec3::from_array(center).as_dvec3()),
-        ref other => local(other, 0.0, Variation::EXACT),
-    };
-    let Some(object) = spec.objects.get(index) else { return DMat4::IDENTITY };
-    let own = at_start(&object.motion);
-    // A parent is never a child itself (the spec's rule), so one level is all there is.
-    match object.motion.parent().filter(|&p| p != index).and_then(|p| spec.objects.get(p)) {
-        Some(parent) => at_start(&parent.motion) * own,
-        None => own,
-    }
 }
 
 /// The warm-up's frame at time `t` (s): the camera and light set, then `warmup_display`.
@@ -162,7 +147,7 @@ fn on_ground(gl: &Gl) -> Scene {
 
 #[cfg(test)]
 mod tests {
-    use cg_core::glam::DVec3;
+    use cg_core::glam::DMat4;
 
     use super::*;
     use crate::SpecExt;
@@ -211,35 +196,25 @@ mod tests {
     }
 
     #[test]
-    fn at_frame_0_a_hop_sits_at_its_centre_with_every_parameter_0() {
-        // A student whose hop carries a child.
-        let spec = (0..500)
-            .map(|k| spec_of(20_260_000 + k))
-            .find(|s| {
-                s.objects.iter().any(|o| {
-                    o.motion
-                        .parent()
-                        .is_some_and(|p| matches!(s.objects[p].motion, Motion::Hop { .. }))
-                })
-            })
-            .expect("a hop with a child among 500 students");
-        let child = spec.objects.iter().position(|o| o.motion.parent().is_some()).unwrap();
-        let parent = spec.objects[child].motion.parent().unwrap();
-        let (Motion::Hop { center, .. }, Motion::Satellite { radius, .. }) =
-            (spec.objects[parent].motion, spec.objects[child].motion)
-        else {
-            unreachable!()
-        };
-        let centre = DMat4::from_translation(Vec3::from_array(center).as_dvec3());
-        let scene = reference(&spec, 0.0);
-        let hop = drawn_model(&scene, &spec.objects[parent].name);
-        assert!(hop.abs_diff_eq(centre, 1e-5));
-        // Not the oracle's phase 0 (the −end), which every later period starts from.
-        assert!(!hop.abs_diff_eq(expected_model(&spec, parent, 0), 1e-3));
-        let ahead = centre * DMat4::from_translation(DVec3::new(0.0, 0.0, f64::from(radius)));
-        assert!(drawn_model(&scene, &spec.objects[child].name).abs_diff_eq(ahead, 1e-5));
-        // One frame on, the oracle's pose.
-        let next = drawn_model(&reference(&spec, 1.0 / 60.0), &spec.objects[parent].name);
-        assert!(next.abs_diff_eq(expected_model(&spec, parent, 1), 1e-5));
+    fn the_view_starts_after_the_first_idle_as_the_reference_does() {
+        fn nothing(_: &mut cg_student::gl::Gl, _: f64) {}
+        fn idle(_: &Spec, s: &mut State) {
+            s.frame += 1;
+        }
+        // Draws its first object only once idle() has run exactly once.
+        fn display(spec: &Spec, s: &State, gl: &mut cg_student::gl::Gl) {
+            if s.frame == 1 {
+                gl.draw(&spec.objects[0].name, &spec.objects[0].mesh);
+            }
+        }
+        let imp = Impl { warmup_display: nothing, idle, display };
+        let spec = spec_of(20_260_002);
+        assert_eq!(view(&spec, &imp, 0.0).unwrap().objects.len(), 2, "frame 1 at t = 0");
+        assert_eq!(view(&spec, &imp, 1.0 / 60.0).unwrap().objects.len(), 2);
+        assert_eq!(view(&spec, &imp, 2.0 / 60.0).unwrap().objects.len(), 1, "frame 2");
+        let name = &spec.objects[0].name;
+        let at_start = drawn_model(&reference(&spec, 0.0), name);
+        assert!(at_start.abs_diff_eq(expected_model(&spec, 0, 1), 1e-5));
+        assert!(!at_start.abs_diff_eq(expected_model(&spec, 0, 30), 1e-3), "it moves");
     }
 }
