@@ -307,6 +307,41 @@ pub fn worker_for_this_kit(memory_mb: u64, lang: Lang) -> Result<Worker, String>
     worker(&this_kit(), memory_mb, lang)
 }
 
+/// [`worker_for_this_kit`] for a window that stays open while `cg watch` rebuilds the worker.
+/// On Windows a running program cannot be replaced, so the window's worker runs from a copy of
+/// its own (`cg-check-runner-view-<process>.exe` beside it) and the rebuild goes ahead; the
+/// copies of earlier views that no longer run are removed first (a running one cannot be).
+/// Elsewhere the rebuild replaces the file while the old program runs on, and no copy is made.
+///
+/// # Errors
+/// As [`worker`]; or the copy could not be made.
+pub fn worker_for_a_window(memory_mb: u64, lang: Lang) -> Result<Worker, String> {
+    let worker = worker_for_this_kit(memory_mb, lang)?;
+    if cfg!(windows) { run_from_a_copy(worker) } else { Ok(worker) }
+}
+
+/// `worker` running from a copy of its program, `<program>-view-<this process>` beside it, the
+/// copies of earlier views removed where they can be ([`worker_for_a_window`]).
+///
+/// # Errors
+/// The copy could not be made.
+fn run_from_a_copy(worker: Worker) -> Result<Worker, String> {
+    let program = worker.program().to_path_buf();
+    let dir = program.parent().map(Path::to_path_buf).unwrap_or_default();
+    let prefix = format!("{WORKER_PACKAGE}-view-");
+    if let Ok(entries) = std::fs::read_dir(&dir) {
+        for entry in entries.flatten() {
+            if entry.file_name().to_string_lossy().starts_with(&prefix) {
+                // In use by another open view: Windows refuses, and it stays.
+                let _ = std::fs::remove_file(entry.path());
+            }
+        }
+    }
+    let copy = dir.join(format!("{prefix}{}{}", std::process::id(), std::env::consts::EXE_SUFFIX));
+    std::fs::copy(&program, &copy).map_err(|e| format!("{}: {e}", copy.display()))?;
+    Ok(worker.with_program(copy))
+}
+
 /// The memory a worker of `cg view` and `cg report` may use, in MiB (as `cg check`'s default).
 pub const MEMORY_MB: u64 = 2048;
 
@@ -323,6 +358,26 @@ pub fn worker_program() -> PathBuf {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_window_runs_its_worker_from_a_copy_and_old_copies_go() {
+        let dir = std::env::temp_dir().join(format!("cg-local-copy-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        let exe = std::env::consts::EXE_SUFFIX;
+        let program = dir.join(format!("{WORKER_PACKAGE}{exe}"));
+        std::fs::write(&program, b"the worker").unwrap();
+        let stale = dir.join(format!("{WORKER_PACKAGE}-view-1{exe}"));
+        std::fs::write(&stale, b"an old view's").unwrap();
+        let other = dir.join("cg-check-runner.d");
+        std::fs::write(&other, b"kept").unwrap();
+        let worker = run_from_a_copy(Worker::new(&program, Vec::<String>::new())).unwrap();
+        let copy = dir.join(format!("{WORKER_PACKAGE}-view-{}{exe}", std::process::id()));
+        assert_eq!(worker.program(), copy);
+        assert_eq!(std::fs::read(&copy).unwrap(), b"the worker");
+        assert!(!stale.exists() && other.exists() && program.exists());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 
     fn message(file: &str, line: u64, text: &str) -> String {
         serde_json::json!({

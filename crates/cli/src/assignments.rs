@@ -344,7 +344,7 @@ fn no_warmup(which: Which) -> Text {
 /// their difference. The student's functions run in a worker.
 pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
     use cg_assign::local;
-    let worker = local::worker_for_this_kit(local::MEMORY_MB, lang)?;
+    let worker = local::worker_for_a_window(local::MEMORY_MB, lang)?;
     cg_worker::proxy::with_worker(worker, local::CALL_LIMIT, || view_in_worker(args, lang)).0
 }
 

@@ -5,8 +5,10 @@
 //! same animation time, from the same camera (`CG_VIEW_RESUME`), with a fresh worker, so the
 //! student's saved code is what it shows.
 //!
-//! On Unix the new program replaces this one (`exec`). On Windows a running program cannot be
-//! replaced on disk, so the rebuild waits for the window to close: there it does not happen.
+//! On Unix the new program replaces this one (`exec`); on Windows it is started and this one
+//! waits for it. A running program cannot be replaced on disk there, so the window's worker runs
+//! from a copy of its own (`cg_assign::local::worker_for_a_window`) and the rebuild goes ahead.
+//! (Not tried on a Windows machine: the kit's CI checks that it builds for Windows.)
 
 use std::path::Path;
 use std::process::Command;

@@ -100,6 +100,20 @@ impl Worker {
         }
     }
 
+    /// The program the worker runs.
+    #[must_use]
+    pub fn program(&self) -> &std::path::Path {
+        &self.program
+    }
+
+    /// The same worker running `program` instead (a copy of its program, say).
+    #[must_use]
+    pub fn with_program(mut self, program: impl Into<PathBuf>) -> Worker {
+        self.stop();
+        self.program = program.into();
+        self
+    }
+
     /// The same worker, built without `modules` (each with the compiler's errors that kept it
     /// out): a call of `a1.vertices` when `a1` is one of them gives
     /// [`CallError::DoesNotCompile`] without reaching the worker.
