@@ -49,11 +49,7 @@ fn random_meshes_with_every_hard_case() {
     for case in 0..3000 {
         let mesh = random_mesh(&mut s);
         let reference = vertex_normals_reference(&mesh, Weighting::Area);
-        cancelled += reference
-            .fallbacks
-            .iter()
-            .filter(|(_, f)| matches!(f, Fallback::Cancelled { .. }))
-            .count();
+        cancelled += common::cancelled(&reference);
         assert_same(&mesh, &format!("case {case} (seed {:#x})", s.seed()));
     }
     assert!(cancelled > 100, "premise: the meshes have cancelling vertices ({cancelled})");

@@ -15,7 +15,7 @@ use cg_core::normals::{
 };
 use cg_core::shapes::icosphere;
 use cg_testkit::Inputs;
-use common::{bits, corner, large_random_mesh, random_mesh};
+use common::{bits, corner, large_random_mesh, random_mesh, shuffled};
 use glam::Vec3;
 
 /// Both kernels of the plan give the reference's bits for `mesh`'s positions, written over
@@ -26,21 +26,6 @@ fn assert_frame(plan: &mut NormalsPlan, mesh: &Mesh, out: &mut VertexNormals, wh
     assert_eq!(bits(out), reference, "{what}");
     plan.area_normals_into_without_fma(&mesh.positions, out).unwrap();
     assert_eq!(bits(out), reference, "{what} (kernel without FMA)");
-}
-
-/// The mesh with its vertices renumbered at random (the faces follow).
-fn shuffled(mesh: &Mesh, s: &mut Inputs) -> Mesh {
-    let n = mesh.positions.len();
-    let mut order: Vec<u32> = (0..n as u32).collect();
-    for i in (1..n).rev() {
-        order.swap(i, s.int(0, i as i64 + 1) as usize);
-    }
-    let mut positions = vec![Vec3::ZERO; n];
-    for (old, &new) in order.iter().enumerate() {
-        positions[new as usize] = mesh.positions[old];
-    }
-    let faces = mesh.faces.iter().map(|f| f.map(|v| order[v as usize])).collect();
-    Mesh::new(positions, faces)
 }
 
 /// Frames of a moving icosphere with one plan: a wave along y, then scaled and moved far from
@@ -109,11 +94,7 @@ fn random_meshes_with_every_hard_case_frame_after_frame() {
         let mut plan = NormalsPlan::for_mesh(&mesh).unwrap();
         for frame in 0..3 {
             let reference = vertex_normals_reference(&mesh, Weighting::Area);
-            cancelled += reference
-                .fallbacks
-                .iter()
-                .filter(|(_, f)| matches!(f, Fallback::Cancelled { .. }))
-                .count();
+            cancelled += common::cancelled(&reference);
             let what = format!("case {case} frame {frame} (seed {:#x})", s.seed());
             assert_frame(&mut plan, &mesh, &mut out, &what);
             move_at_random(&mut mesh, &mut s);

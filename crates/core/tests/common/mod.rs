@@ -75,16 +75,25 @@ pub fn large_random_mesh(s: &mut Inputs, faces: usize) -> Mesh {
         big.positions.append(&mut part.positions);
         big.faces.extend(part.faces.iter().map(|f| f.map(|v| v + offset)));
     }
-    let n = big.positions.len();
+    shuffled(&big, s)
+}
+
+/// The mesh with its vertices renumbered at random (the faces follow).
+pub fn shuffled(mesh: &Mesh, s: &mut Inputs) -> Mesh {
+    let n = mesh.positions.len();
     let mut order: Vec<u32> = (0..n as u32).collect();
     for i in (1..n).rev() {
         order.swap(i, s.int(0, i as i64 + 1) as usize);
     }
     let mut positions = vec![Vec3::ZERO; n];
     for (old, &new) in order.iter().enumerate() {
-        positions[new as usize] = big.positions[old];
+        positions[new as usize] = mesh.positions[old];
     }
-    big.faces.iter_mut().for_each(|f| *f = f.map(|v| order[v as usize]));
-    big.positions = positions;
-    big
+    let faces = mesh.faces.iter().map(|f| f.map(|v| order[v as usize])).collect();
+    Mesh::new(positions, faces)
+}
+
+/// How many vertices of `normals` fell back because their faces' normals cancel.
+pub fn cancelled(normals: &VertexNormals) -> usize {
+    normals.fallbacks.iter().filter(|(_, f)| matches!(f, Fallback::Cancelled { .. })).count()
 }
