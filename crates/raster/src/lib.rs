@@ -41,7 +41,7 @@
 //! The vertex stage also computes each vertex's outcodes and window position once, so a face
 //! whose corners are all inside is culled from three precomputed records, before its vertices
 //! are read. With the scene's own light model ([`SceneLighting`]) the lighting stage runs in
-//! spans of eight points — Gouraud's vertices, Phong's fragments in the order they pass the
+//! spans of sixteen points — Gouraud's vertices, Phong's fragments in the order they pass the
 //! depth test — in structure-of-arrays form (`src/span.rs`, a copy compiled for AVX2 chosen at
 //! run time), operation for operation what [`cg_core::light::shade`] computes: the same bits
 //! (`tests/spans.rs` compares with the point-by-point path on every kind of light). A
@@ -102,7 +102,7 @@ mod lighting;
 mod output;
 mod pipeline;
 mod span;
-mod vertex8;
+mod vertex_lanes;
 
 use cg_core::glam::Vec2;
 use cg_core::scene::Scene;

@@ -67,7 +67,7 @@ pub trait Lighting: Sync {
     }
 
     /// Whether this is the scene's own light model, [`SceneLighting`], which the renderer then
-    /// evaluates for eight points at once (the same bits, see `src/span.rs`). Every other hook
+    /// evaluates for sixteen points at once (the same bits, see `src/span.rs`). Every other hook
     /// is called point by point.
     #[doc(hidden)]
     fn is_scene_lighting(&self) -> bool {

@@ -12,16 +12,19 @@
 //!       ├─ Bins::gather       every chunk's (tile, triangle) pairs into one list per tile
 //!       └─ draw_tile, each tile a task on all cores, triangles in submission order:
 //!            rasterize        edge functions in fixed point, OpenGL's fill rule (left and
-//!                             bottom edges as the image is displayed)
+//!                             bottom edges as the image is displayed); a triangle 8 pixels
+//!                             wide or more in runs of 8 or 16 pixels of a row (`cover`)
 //!            depth_test       GL_LESS against the tile's depth buffer, then the depth write
-//!            fragment         perspective-correct attributes; Phong lights here; texture
+//!            fragment         perspective-correct attributes; Phong lights here, 16 at a
+//!                             time with the scene's own light model (`span.rs`); texture
 //! ```
 //!
 //! Each tile is drawn by one thread from start to end, its triangles in the order they were
 //! submitted, so the image is the same bits whatever the thread count or the tile size.
 //!
 //! This file holds what every stage reads and the draw call; the stages are in `pipeline/`:
-//! `vertex.rs`, `primitive.rs` (clip to bin) and `tile.rs` (rasterize to fragment).
+//! `vertex.rs`, `primitive.rs` (clip to bin), `tile.rs` (rasterize to fragment) and `cover.rs`
+//! (rasterize and depth-test a run of a row's pixels at once).
 //!
 //! Spaces and names: `p_model`, `p_world` (lighting happens here), `p_view`, `p_clip` (homogeneous,
 //! `[0, 1]` depth), `p_ndc`, `p_screen` (window: pixels, x right, y *down* from the image's top-left
@@ -42,8 +45,9 @@ use crate::error::RenderError;
 use crate::lighting::{Lighting, SurfacePoint};
 use crate::output::{DEFAULT_TILE_SIZE, Options, Output, Stats};
 use crate::span::{self, LANES, PhongSpan, Points, SpanLights, Texturing, V3, saturate};
-use crate::vertex8;
+use crate::vertex_lanes;
 
+mod cover;
 mod primitive;
 mod tile;
 mod vertex;
@@ -95,7 +99,7 @@ struct Frame<'s, L: ?Sized> {
     features: Features,
     /// The guard band in NDC units along x and y (≥ 1).
     guard: Vec2,
-    /// The scene's lights made ready for lighting eight points at once, when `lighting` is the
+    /// The scene's lights made ready for lighting sixteen points at once, when `lighting` is the
     /// scene's own light model ([`Lighting::is_scene_lighting`]).
     spans: Option<SpanLights>,
 }
@@ -151,7 +155,7 @@ struct Triangle {
     slot: [u32; 3],
     /// Phong: the face normal in world space, the fallback of [`interpolate_normal`] (zero under
     /// the other modes, which do not read it, and when the scene's own light model lights the
-    /// fragments eight at a time: that path makes it only where it is needed).
+    /// fragments sixteen at a time: that path makes it only where it is needed).
     face_normal: Vec3,
     /// Flat: the face's colour, clamped to `[0, 1]`.
     flat_color: Rgb,
@@ -357,6 +361,7 @@ fn draw_ready<L: Lighting + ?Sized>(
         }
     };
     let (width, tile) = (frame.width as usize, frame.tile as usize);
+    let clear_row = (vec![scene.clear_color; tile], vec![1.0f32; tile]);
     let tile_stats = image
         .pixels
         .par_chunks_mut(width * tile)
@@ -386,9 +391,10 @@ fn draw_ready<L: Lighting + ?Sized>(
             let rect = frame.tile_rect(column, row);
             let index = (row * columns + column) as usize;
             if clear {
+                // Copied from a cleared row (one memcpy each) rather than filled pixel by pixel.
                 for (color, depth) in target.color.iter_mut().zip(&mut target.depth) {
-                    color.fill(scene.clear_color);
-                    depth.fill(1.0);
+                    color.copy_from_slice(&clear_row.0[..color.len()]);
+                    depth.copy_from_slice(&clear_row.1[..depth.len()]);
                 }
             }
             draw_tile(frame, draws, buffers, chunks, bins.tile(index), rect, &mut target)

@@ -1,5 +1,5 @@
-//! Lighting in spans of eight (issue 18): the scene's own light model ([`crate::SceneLighting`])
-//! evaluated for eight points at once, in structure-of-arrays form, so the compiler vectorises
+//! Lighting in spans of sixteen (issue 18): the scene's own light model ([`crate::SceneLighting`])
+//! evaluated for sixteen points at once, in structure-of-arrays form, so the compiler vectorises
 //! it — Phong's pixels and Gouraud's vertices.
 //!
 //! **The same bits.** Every lane computes what [`cg_core::light::shade_with_visibility_counted`]
@@ -12,6 +12,17 @@
 //! saves is the work around the arithmetic: no light list expanded and no material copied per
 //! point, the scene's constant terms made once per frame, and every term the scene does not use
 //! skipped for the whole span.
+//!
+//! **Why sixteen.** Each lane's f64 normalisations are a chain of divisions and a square root
+//! whose latency, not their count, bounds a span: sixteen lanes give the core two independent
+//! chains of AVX2 vectors to overlap. Measured side by side on the course scene in Phong (one
+//! thread): spans of sixteen took 0.56 of the time of spans of eight; of thirty-two, no less than
+//! sixteen (docs/performance.md §2).
+//!
+//! **A triangle with one normal** (a face normal, every triangle of a flat object) gives every
+//! fragment the same normal: [`certified`] proves, once per triangle, that the per-fragment f64
+//! interpolation and renormalisation would round to that normal's bits, and the span then skips
+//! that work.
 //!
 //! The light model's counts ([`LightCounts`]) are the ones the point-by-point path makes.
 
@@ -28,7 +39,7 @@ use cg_core::math::try_normalize;
 use multiversion::multiversion;
 
 /// Points lit at once.
-pub(crate) const LANES: usize = 8;
+pub(crate) const LANES: usize = 16;
 
 /// `2⁻²⁶`: [`cg_core::normals::interpolate_normal`]'s cancellation threshold (a sum shorter than
 /// this fraction of `Σ |wᵢ|·|Nᵢ|` is rounding noise, and the face normal is used).
@@ -111,20 +122,29 @@ impl SpanLights {
     }
 }
 
-/// Eight `f32`s, one per lane.
+/// One `f32` per lane.
 pub(crate) type Lanes = [f32; LANES];
-/// Eight `f64`s, one per lane.
+/// One `f64` per lane.
 type Lanes64 = [f64; LANES];
 
-/// Eight 3-vectors, structure of arrays: `x[i], y[i], z[i]` is lane `i`'s vector.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct V3 {
-    pub(crate) x: Lanes,
-    pub(crate) y: Lanes,
-    pub(crate) z: Lanes,
+/// `N` 3-vectors, structure of arrays: `x[i], y[i], z[i]` is lane `i`'s vector.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct V3N<const N: usize> {
+    pub(crate) x: [f32; N],
+    pub(crate) y: [f32; N],
+    pub(crate) z: [f32; N],
 }
 
-impl V3 {
+/// [`LANES`] 3-vectors, the spans' points.
+pub(crate) type V3 = V3N<LANES>;
+
+impl<const N: usize> Default for V3N<N> {
+    fn default() -> Self {
+        V3N { x: [0.0; N], y: [0.0; N], z: [0.0; N] }
+    }
+}
+
+impl<const N: usize> V3N<N> {
     pub(crate) fn set(&mut self, i: usize, v: Vec3) {
         (self.x[i], self.y[i], self.z[i]) = (v.x, v.y, v.z);
     }
@@ -133,12 +153,12 @@ impl V3 {
         Vec3::new(self.x[i], self.y[i], self.z[i])
     }
 
-    fn splat(v: Vec3) -> V3 {
-        V3 { x: [v.x; LANES], y: [v.y; LANES], z: [v.z; LANES] }
+    pub(crate) fn splat(v: Vec3) -> Self {
+        V3N { x: [v.x; N], y: [v.y; N], z: [v.z; N] }
     }
 }
 
-/// Eight f64 3-vectors, structure of arrays.
+/// [`LANES`] f64 3-vectors, structure of arrays.
 #[derive(Clone, Copy, Debug, Default)]
 struct D3 {
     x: Lanes64,
@@ -146,7 +166,7 @@ struct D3 {
     z: Lanes64,
 }
 
-/// Eight points (fewer in the last span) to light: where, with which unit normal, and the colour
+/// [`LANES`] points (fewer in the last span) to light: where, with which unit normal, and the colour
 /// material where the mesh has per-vertex colours.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Points {
@@ -213,9 +233,10 @@ fn interpolate_normals(
 }
 
 /// Unit vectors from each point `p` to `to` in f64, as [`Light::direction_from`] and
-/// [`LightModel::view_vector`] compute them, with the distances (f32) and whether each exists.
+/// [`LightModel::view_vector`] compute them, whether each exists, and the distances (f32) where
+/// `d` asks for them (only attenuation reads them: a square root per point saved otherwise).
 #[inline(always)]
-fn directions(to: DVec3, p: &V3, l: &mut V3, d: &mut Lanes, valid: &mut [bool; LANES]) {
+fn directions(to: DVec3, p: &V3, l: &mut V3, d: Option<&mut Lanes>, valid: &mut [bool; LANES]) {
     let mut v = D3::default();
     for i in 0..LANES {
         v.x[i] = to.x - f64::from(p.x[i]);
@@ -228,7 +249,11 @@ fn directions(to: DVec3, p: &V3, l: &mut V3, d: &mut Lanes, valid: &mut [bool; L
         l.x[i] = unit.x[i] as f32;
         l.y[i] = unit.y[i] as f32;
         l.z[i] = unit.z[i] as f32;
-        d[i] = length64(v.x[i], v.y[i], v.z[i]) as f32;
+    }
+    if let Some(d) = d {
+        for i in 0..LANES {
+            d[i] = length64(v.x[i], v.y[i], v.z[i]) as f32;
+        }
     }
 }
 
@@ -255,11 +280,15 @@ fn specular_power(cos: f32, shininess: f32) -> f32 {
 #[inline(always)]
 fn add_term(sum: &mut V3, s: &Lanes, c: Vec3, k: &V3, f: &Lanes) {
     for i in 0..LANES {
-        if s[i] != 0.0 {
-            sum.x[i] += s[i] * (c.x * k.x[i] * f[i]);
-            sum.y[i] += s[i] * (c.y * k.y[i] * f[i]);
-            sum.z[i] += s[i] * (c.z * k.z[i] * f[i]);
-        }
+        let on = s[i] != 0.0;
+        let (x, y, z) = (
+            sum.x[i] + s[i] * (c.x * k.x[i] * f[i]),
+            sum.y[i] + s[i] * (c.y * k.y[i] * f[i]),
+            sum.z[i] + s[i] * (c.z * k.z[i] * f[i]),
+        );
+        sum.x[i] = if on { x } else { sum.x[i] };
+        sum.y[i] = if on { y } else { sum.y[i] };
+        sum.z[i] = if on { z } else { sum.z[i] };
     }
 }
 
@@ -289,7 +318,7 @@ pub(crate) fn light(
     if lights.local_viewer {
         let mut unit = V3::default();
         let mut valid = [false; LANES];
-        directions(lights.eye, &points.p, &mut unit, &mut [0.0; LANES], &mut valid);
+        directions(lights.eye, &points.p, &mut unit, None, &mut valid);
         select(&valid, &unit, &mut v);
     }
 
@@ -317,15 +346,20 @@ pub(crate) fn light(
                 d = [dd; LANES];
                 valid = [!dl.is_nan(); LANES];
             }
-            (_, Some(position)) => directions(position, &points.p, &mut l, &mut d, &mut valid),
+            (_, Some(position)) => {
+                let distances = span_light.attenuates.then_some(&mut d);
+                directions(position, &points.p, &mut l, distances, &mut valid);
+            }
             (None, None) => valid = [false; LANES],
         }
         // L = N, d = 0 where there is no direction.
-        let mut fallback = *n;
-        select(&valid, &l, &mut fallback);
-        l = fallback;
-        for i in 0..LANES {
-            d[i] = if valid[i] { d[i] } else { 0.0 };
+        if !valid.iter().all(|&v| v) {
+            let mut fallback = *n;
+            select(&valid, &l, &mut fallback);
+            l = fallback;
+            for i in 0..LANES {
+                d[i] = if valid[i] { d[i] } else { 0.0 };
+            }
         }
         let mut scale = [1.0f32; LANES];
         if span_light.attenuates {
@@ -410,8 +444,28 @@ pub(crate) struct Triangle {
     uv: [cg_core::glam::Vec2; 3],
     /// The face it belongs to, in its object's prepared mesh (for its face normal).
     face: u32,
-    /// `|nᵢ|` in f64 (`DVec3::length`).
-    lengths: [f64; 3],
+    /// The normal every fragment gets, where the corners share one normal and it is
+    /// [`certified`] (a face normal, a flat object's triangles).
+    unit: Option<Vec3>,
+}
+
+/// The unit normal that [`interpolate_normals`] gives **every** fragment of a triangle whose three
+/// corners have the normal `n` (bit for bit), or `None` where that cannot be vouched for.
+///
+/// With weights `w ≥ 0`, not all zero, each `nᶜ·wₖ` is exact in f64 (two f32s' product fits in
+/// 48 bits) and the three have one sign, so the sum is `nᶜ·Σw` times `1 + δ`, `|δ| ≤ 2⁻⁵²`, per
+/// component; normalising divides out `Σw`, and the whole fragment's arithmetic puts each
+/// component within `2⁻⁴⁹` (relative) of `try_normalize_f64(n)`'s. Where that component is
+/// farther than `2⁻⁴⁰` (relative) from a rounding boundary of f32, every fragment's rounding to
+/// f32 gives the same value; otherwise (about one triangle in 10⁵) the fragments go the usual way.
+/// The cancellation test cannot fail either: `|Σ| = Σw·|n|·(1 ± 2⁻⁵⁰)`.
+fn certified(n: Vec3) -> Option<Vec3> {
+    const MARGIN: f64 = 1.0 / (1u64 << 40) as f64;
+    let t = cg_core::math::try_normalize_f64(n.as_dvec3())?;
+    let r = t.as_vec3();
+    let sure =
+        |t: f64, r: f32| (t * (1.0 + MARGIN)) as f32 == r && (t * (1.0 - MARGIN)) as f32 == r;
+    (sure(t.x, r.x) && sure(t.y, r.y) && sure(t.z, r.z)).then_some(r)
 }
 
 impl Triangle {
@@ -421,6 +475,9 @@ impl Triangle {
         face: u32,
     ) -> Triangle {
         let n = corners.map(|c| c.1);
+        let same =
+            |a: Vec3, b: Vec3| a.to_array().map(f32::to_bits) == b.to_array().map(f32::to_bits);
+        let unit = (same(n[0], n[1]) && same(n[1], n[2])).then(|| certified(n[0])).flatten();
         Triangle {
             inv_w,
             p: corners.map(|c| c.0),
@@ -428,7 +485,7 @@ impl Triangle {
             color: corners.map(|c| c.2),
             uv: corners.map(|c| c.3),
             face,
-            lengths: n.map(|n| n.as_dvec3().length()),
+            unit,
         }
     }
 }
@@ -460,6 +517,15 @@ pub(crate) struct PhongSpan {
     current: Option<u8>,
     /// Where each goes: row and column within the tile.
     at: [(u32, u32); LANES],
+    /// Each slot's triangle's serial number ([`PhongSpan::serial`]).
+    serials: [u64; LANES],
+    next_serial: u64,
+    /// The attributes gathered at the last flush, and the serial of their triangle when that
+    /// flush had one (a large triangle's spans follow one another: gathered once).
+    gathered: Gathered,
+    gathered_for: Option<u64>,
+    /// The points to light, made at each flush (kept: nothing to clear).
+    points: Points,
 }
 
 impl PhongSpan {
@@ -467,6 +533,10 @@ impl PhongSpan {
     #[inline]
     pub(crate) fn end_triangle(&mut self) {
         self.current = None;
+        if self.len == 0 {
+            // Only the last triangle, kept by a flush in its middle: not needed any more.
+            self.count = 0;
+        }
     }
 
     /// Whether the triangle being drawn is in the span already (else [`PhongSpan::begin`]).
@@ -476,7 +546,15 @@ impl PhongSpan {
     }
 
     /// Registers the triangle whose fragments come next.
-    pub(crate) fn begin(&mut self, triangle: Triangle) {
+    /// A number for a new triangle, for [`PhongSpan::begin`]: each time the same triangle
+    /// registers again (a span ended in its middle), it gives the same number.
+    pub(crate) fn serial(&mut self) -> u64 {
+        self.next_serial += 1;
+        self.next_serial
+    }
+
+    pub(crate) fn begin(&mut self, triangle: Triangle, serial: u64) {
+        self.serials[self.count] = serial;
         self.triangles[self.count] = triangle;
         self.current = Some(self.count as u8);
         self.count += 1;
@@ -497,7 +575,7 @@ impl PhongSpan {
     /// Lights the waiting fragments and gives each its final colour — the lit colour clamped,
     /// the texture applied (when the object has one), clamped again, as the fragment stage does
     /// — through `write(row, column, colour)`, in order. `face(face)` is a face's normal.
-    /// Empties the span (the triangle being drawn registers again). Gives the texture samples
+    /// Empties the span; the triangle being drawn stays registered, as the next span's first. Gives the texture samples
     /// taken.
     #[allow(clippy::too_many_arguments)]
     pub(crate) fn flush(
@@ -512,43 +590,53 @@ impl PhongSpan {
     ) -> u64 {
         let len = self.len;
         if len == 0 {
-            self.count = 0;
-            self.current = None;
             return 0;
         }
-        let mut g = Gathered::default();
+        let g = &mut self.gathered;
         if self.count == 1 {
-            // One triangle (the common case for large ones): its attributes in every lane.
-            let t = &self.triangles[0];
-            for k in 0..3 {
-                g.inv_w[k] = [t.inv_w[k]; LANES];
-                g.p[k] = V3::splat(t.p[k]);
-                g.n[k] = V3::splat(t.n[k]);
-                g.lengths[k] = [t.lengths[k]; LANES];
-                g.color[k] = V3::splat(t.color[k]);
+            // One triangle (the common case for large ones): its attributes in every lane, as
+            // the last flush left them when it was the same triangle.
+            if self.gathered_for != Some(self.serials[0]) {
+                self.gathered_for = Some(self.serials[0]);
+                let t = &self.triangles[0];
+                for k in 0..3 {
+                    g.inv_w[k] = [t.inv_w[k]; LANES];
+                    g.p[k] = V3::splat(t.p[k]);
+                    g.n[k] = V3::splat(t.n[k]);
+                    if colored {
+                        g.color[k] = V3::splat(t.color[k]);
+                    }
+                }
+                g.unit = V3::splat(t.unit.unwrap_or_default());
+                g.certified = [t.unit.is_some(); LANES];
             }
         } else {
+            self.gathered_for = None;
             for i in 0..LANES {
                 let t = &self.triangles[usize::from(self.slot[i])];
                 for k in 0..3 {
                     g.inv_w[k][i] = t.inv_w[k];
                     g.p[k].set(i, t.p[k]);
                     g.n[k].set(i, t.n[k]);
-                    g.lengths[k][i] = t.lengths[k];
-                    g.color[k].set(i, t.color[k]);
+                    if colored {
+                        g.color[k].set(i, t.color[k]);
+                    }
                 }
+                g.unit.set(i, t.unit.unwrap_or_default());
+                g.certified[i] = t.unit.is_some();
             }
         }
         let mut b = V3::default();
-        let mut points = Points { len, ..Points::default() };
-        let keep = fragments(&self.b, &g, colored, &mut b, &mut points);
+        let points = &mut self.points;
+        points.len = len;
+        let keep = fragments(&self.b, g, colored, &mut b, points);
         for i in 0..len {
             if !keep[i] {
                 points.n.set(i, face(self.triangles[usize::from(self.slot[i])].face));
             }
         }
         let mut lit = V3::default();
-        light(lights, material, colored, &points, &mut lit, counts);
+        light(lights, material, colored, points, &mut lit, counts);
         for i in 0..len {
             let lit = saturate(lit.get(i));
             let color = match texture {
@@ -564,20 +652,34 @@ impl PhongSpan {
             write(self.at[i].0, self.at[i].1, saturate(color));
         }
         self.len = 0;
-        self.count = 0;
-        self.current = None;
+        // The triangle being drawn stays, as the next span's first: its fragments go on.
+        match self.current {
+            Some(k) => {
+                let k = usize::from(k);
+                self.triangles[0] = self.triangles[k];
+                self.serials[0] = self.serials[k];
+                self.count = 1;
+                self.current = Some(0);
+                if k != 0 {
+                    self.gathered_for = None;
+                }
+            }
+            None => self.count = 0,
+        }
         if texture.is_some() { len as u64 } else { 0 }
     }
 }
 
 /// The lanes' triangle attributes, gathered into structure-of-arrays form.
-#[derive(Default)]
+#[derive(Clone, Copy, Default)]
 struct Gathered {
     inv_w: [Lanes; 3],
     p: [V3; 3],
     n: [V3; 3],
-    lengths: [Lanes64; 3],
     color: [V3; 3],
+    /// Each lane's triangle's [`Triangle::unit`], where it has one.
+    unit: V3,
+    certified: [bool; LANES],
 }
 
 /// The fragment stage before lighting, for each lane: perspective-correct barycentrics `b` from
@@ -596,15 +698,36 @@ fn fragments(
     if colored {
         interpolate(b, &g.color, &mut points.color);
     }
-    interpolate_normals(b, &g.n, &g.lengths, &mut points.n)
+    // A span whose every lane is a certified triangle's, with weights ≥ 0 and not all zero (as
+    // the rasterizer's always are), takes the triangles' normals: the same bits, no f64 work.
+    let mut constant = [true; LANES];
+    for i in 0..points.len {
+        let w = [b.x[i], b.y[i], b.z[i]];
+        constant[i] = g.certified[i] && w.iter().all(|&w| w >= 0.0) && w.iter().any(|&w| w > 0.0);
+    }
+    if constant.iter().all(|&c| c) {
+        points.n = g.unit;
+        return [true; LANES];
+    }
+    // `|nᵢ|` in f64 (`DVec3::length`), here rather than per triangle: a dense mesh's triangle
+    // has one or two fragments, and sixteen lanes take the square roots four at a time.
+    let lengths: [Lanes64; 3] = std::array::from_fn(|k| {
+        let n = &g.n[k];
+        std::array::from_fn(|i| length64(f64::from(n.x[i]), f64::from(n.y[i]), f64::from(n.z[i])))
+    });
+    interpolate_normals(b, &g.n, &lengths, &mut points.n)
 }
 
 /// Perspective-correct barycentrics from screen-space ones, as the fragment stage computes them:
 /// each corner weighted by its 1/w, the weights divided by their sum (the screen-space ones
 /// where that sum is not positive and finite).
 #[inline(always)]
-fn perspective(screen: &V3, inv_w: &[Lanes; 3], out: &mut V3) {
-    for i in 0..LANES {
+pub(crate) fn perspective<const N: usize>(
+    screen: &V3N<N>,
+    inv_w: &[[f32; N]; 3],
+    out: &mut V3N<N>,
+) {
+    for i in 0..N {
         let (x, y, z) =
             (screen.x[i] * inv_w[0][i], screen.y[i] * inv_w[1][i], screen.z[i] * inv_w[2][i]);
         let sum = x + y + z;
@@ -617,8 +740,8 @@ fn perspective(screen: &V3, inv_w: &[Lanes; 3], out: &mut V3) {
 
 /// `b.x·a₀ + b.y·a₁ + b.z·a₂` per lane and channel, in glam's order.
 #[inline(always)]
-fn interpolate(b: &V3, a: &[V3; 3], out: &mut V3) {
-    for i in 0..LANES {
+pub(crate) fn interpolate<const N: usize>(b: &V3N<N>, a: &[V3N<N>; 3], out: &mut V3N<N>) {
+    for i in 0..N {
         out.x[i] = b.x[i] * a[0].x[i] + b.y[i] * a[1].x[i] + b.z[i] * a[2].x[i];
         out.y[i] = b.x[i] * a[0].y[i] + b.y[i] * a[1].y[i] + b.z[i] * a[2].y[i];
         out.z[i] = b.x[i] * a[0].z[i] + b.y[i] * a[1].z[i] + b.z[i] * a[2].z[i];

@@ -6,6 +6,7 @@ use cg_core::light::LightCounts;
 use cg_core::normals::interpolate_normal;
 use cg_core::scene::Shading;
 
+use super::cover::{Gouraud, SIMPLE, STAGED, Simple, cover};
 use super::*;
 
 /// The pixels of one tile: its part of each of its rows of the colour and depth buffers.
@@ -34,8 +35,10 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
 ) -> Stats {
     let mut stats = Stats::default();
     let mut counts = LightCounts::default();
-    // Phong's fragments of the scene's own light model, lit eight at a time.
+    // Phong's fragments of the scene's own light model, lit sixteen at a time.
     let mut span = PhongSpan::default();
+    // Runs of sixteen pixels that passed the depth test and still need their fragment stage.
+    let mut runs = Vec::new();
     let spans = frame.spans.as_ref().filter(|_| frame.shading == Shading::Phong);
     let flush = |span: &mut PhongSpan,
                  target: &mut Target<'_>,
@@ -77,42 +80,85 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
                 }
             })
         };
-        let inv_area = 1.0 / triangle.edges.area2 as f32;
-        let z = Vec3::from(triangle.z);
         // Phong with the scene's own light model: the fragment is queued for its span, and its
         // triangle made as the span needs it when its first fragment passes (many small
         // triangles have none). Otherwise the fragment stage runs here.
         let spanned = spans.is_some() && draw.lit;
         let corners_now = (!spanned).then(|| corners(triangle));
-        let mut lane_triangle = None;
         span.end_triangle();
-        rasterize(&triangle.edges, rect, |x, y, e| {
-            stats.fragments += 1;
-            let (row, column) = ((y - target.y0) as usize, (x - target.x0) as usize);
-            // Screen-space (linear) barycentrics: window depth is linear on the screen.
-            let b = Vec3::new(e[0] as f32, e[1] as f32, e[2] as f32) * inv_area;
-            if !depth_test(b.dot(z).clamp(0.0, 1.0), &mut target.depth[row][column]) {
-                stats.depth_rejects += 1;
-                return;
+        // One fragment's stage after the depth test, where `simple` does not give its colour
+        // (a macro: the same code in both loops, inlined).
+        macro_rules! stage {
+            ($row:expr, $column:expr, $b:expr) => {{
+                let (row, column, b) = ($row, $column, $b);
+                if let Some(corners) = &corners_now {
+                    target.color[row][column] =
+                        fragment(frame, draw, triangle, corners, b, &mut stats, &mut counts);
+                } else {
+                    if !span.has_triangle() {
+                        // Its first fragment that passed: made once (a flush in its middle keeps
+                        // it registered).
+                        let corners = corners(triangle);
+                        let corners = corners.map(|v| (v.p_world, v.n_world, v.color, v.uv));
+                        let serial = span.serial();
+                        span.begin(
+                            span::Triangle::new(triangle.inv_w, corners, triangle.face),
+                            serial,
+                        );
+                    }
+                    if span.push((row as u32, column as u32), b) {
+                        flush(&mut span, target, &mut counts, &mut stats);
+                    }
+                }
+            }};
+        }
+        let [x0, _, x1, _] = triangle.edges.bbox;
+        if x1.min(rect.x1) < x0.max(rect.x0) + NARROW {
+            // A narrow triangle (most of a dense mesh's): pixel by pixel.
+            let inv_area = 1.0 / triangle.edges.area2 as f32;
+            let z = Vec3::from(triangle.z);
+            rasterize(&triangle.edges, rect, |x, y, e| {
+                stats.fragments += 1;
+                let (row, column) = ((y - target.y0) as usize, (x - target.x0) as usize);
+                // Screen-space (linear) barycentrics: window depth is linear on the screen.
+                let b = Vec3::new(e[0] as f32, e[1] as f32, e[2] as f32) * inv_area;
+                if !depth_test(b.dot(z).clamp(0.0, 1.0), &mut target.depth[row][column]) {
+                    stats.depth_rejects += 1;
+                    return;
+                }
+                stats.fragments_shaded += 1;
+                stage!(row, column, b);
+            });
+            continue;
+        }
+        // Flat and Gouraud without a texture: the colour of eight pixels at once ([`SIMPLE`]).
+        let simple = match (frame.shading, &corners_now) {
+            (Shading::Flat, _) if draw.texture.is_none() => {
+                Simple::Flat(saturate(triangle.flat_color))
             }
-            stats.fragments_shaded += 1;
-            if let Some(corners) = &corners_now {
-                target.color[row][column] =
-                    fragment(frame, draw, triangle, corners, b, &mut stats, &mut counts);
-                return;
+            (Shading::Gouraud, Some(c)) if draw.texture.is_none() => {
+                Simple::Gouraud(Gouraud::new(triangle.inv_w, c.each_ref().map(|v| v.color)))
             }
-            if !span.has_triangle() {
-                let t = *lane_triangle.get_or_insert_with(|| {
-                    let corners = corners(triangle);
-                    let corners = corners.map(|v| (v.p_world, v.n_world, v.color, v.uv));
-                    span::Triangle::new(triangle.inv_w, corners, triangle.face)
-                });
-                span.begin(t);
+            _ => Simple::No,
+        };
+        runs.clear();
+        let (covered, passed) = match simple {
+            Simple::No => {
+                cover::<STAGED>(&triangle.edges, rect, triangle.z, &simple, target, &mut runs)
             }
-            if span.push((row as u32, column as u32), b) {
-                flush(&mut span, target, &mut counts, &mut stats);
+            _ => {
+                cover::<SIMPLE>(&triangle.edges, rect, triangle.z, &simple, target, &mut Vec::new())
             }
-        });
+        };
+        stats.fragments += covered;
+        stats.depth_rejects += covered - passed;
+        stats.fragments_shaded += passed;
+        for run in &runs {
+            let (row, column) = ((run.y - target.y0) as usize, (run.x - target.x0) as usize);
+            for k in (0..STAGED).filter(|k| run.passed >> k & 1 != 0) {
+                stage!(row, column + k, run.b.get(k));
+            }
+        }
     }
     flush(&mut span, target, &mut counts, &mut stats);
     stats.add_lighting(&counts);
@@ -142,13 +188,39 @@ fn perspective(triangle: &Triangle, screen_barycentric: Vec3) -> Vec3 {
 /// shared by two triangles is drawn exactly once, none is missed (docs/numerics.md row 22), and the ties
 /// fall as in the course's OpenGL (`tests/opengl.rs` checks it pixel by pixel).
 #[inline]
-fn rasterize(edges: &Edges, rect: Rect, mut emit: impl FnMut(u32, u32, [i64; 3])) {
+pub(super) fn rasterize(edges: &Edges, rect: Rect, mut emit: impl FnMut(u32, u32, [i64; 3])) {
     let [bx0, by0, bx1, by1] = edges.bbox;
     let (x0, y0) = (bx0.max(rect.x0), by0.max(rect.y0));
     let (x1, y1) = (bx1.min(rect.x1.saturating_sub(1)), by1.min(rect.y1.saturating_sub(1)));
     if x0 > x1 || y0 > y1 {
         return;
     }
+    let (mut row, step_x, step_y, bias) = edge_setup(edges, x0, y0);
+    for py in y0..=y1 {
+        let mut e = row;
+        for px in x0..=x1 {
+            // Inside: every biased edge function ≥ 0 (the sign bits of all three are clear).
+            if (e[0] | e[1] | e[2]) >= 0 {
+                emit(px, py, [e[0] - bias[0], e[1] - bias[1], e[2] - bias[2]]);
+            }
+            for i in 0..3 {
+                e[i] += step_x[i];
+            }
+        }
+        for i in 0..3 {
+            row[i] += step_y[i];
+        }
+    }
+}
+
+/// The edge functions at pixel `(x0, y0)`'s centre, biased by the fill rule (so a pixel is
+/// covered where all three are ≥ 0), their steps to the next pixel right and down, and the biases.
+#[inline]
+pub(super) fn edge_setup(
+    edges: &Edges,
+    x0: u32,
+    y0: u32,
+) -> ([i64; 3], [i64; 3], [i64; 3], [i64; 3]) {
     let (x, y) = (edges.x.map(i64::from), edges.y.map(i64::from));
     let (px, py) = (i64::from(x0) * ONE + HALF, i64::from(y0) * ONE + HALF);
     let mut row = [0i64; 3];
@@ -168,22 +240,12 @@ fn rasterize(edges: &Edges, rect: Rect, mut emit: impl FnMut(u32, u32, [i64; 3])
         step_x[i] = -dy * ONE;
         step_y[i] = dx * ONE;
     }
-    for py in y0..=y1 {
-        let mut e = row;
-        for px in x0..=x1 {
-            // Inside: every biased edge function ≥ 0 (the sign bits of all three are clear).
-            if (e[0] | e[1] | e[2]) >= 0 {
-                emit(px, py, [e[0] - bias[0], e[1] - bias[1], e[2] - bias[2]]);
-            }
-            for i in 0..3 {
-                e[i] += step_x[i];
-            }
-        }
-        for i in 0..3 {
-            row[i] += step_y[i];
-        }
-    }
+    (row, step_x, step_y, bias)
 }
+
+/// Below this many pixels' width (within the tile), a triangle is drawn pixel by pixel; wider
+/// ones eight or sixteen pixels at a time ([`cover`]).
+const NARROW: u32 = 8;
 
 /// The depth test (隠面消去, Z バッファ法): GL_LESS against the buffer cleared to 1; on a pass the
 /// depth is written. It runs before the fragment stage (early depth test, as GPUs do when a
@@ -204,7 +266,7 @@ fn depth_test(z: f32, stored: &mut f32) -> bool {
 /// [`interpolate_normal`] (falling back to the face normal, docs/numerics.md row 18) and lit here — and
 /// the texture applied after lighting as OpenGL does (GL_MODULATE: colour × texel; GL_REPLACE:
 /// the texel). The result is clamped to `[0, 1]`.
-#[inline]
+#[inline(always)]
 fn fragment<L: Lighting + ?Sized>(
     frame: &Frame<'_, L>,
     draw: &Draw<'_>,

@@ -1,5 +1,5 @@
-//! The vertex stage (頂点処理): every vertex of an object transformed eight at a time
-//! (`src/vertex8.rs`), its window record made, and, under Gouraud, lit.
+//! The vertex stage (頂点処理): every vertex of an object transformed sixteen at a time
+//! (`src/vertex_lanes.rs`), its window record made, and, under Gouraud, lit.
 
 use cg_core::glam::Vec4;
 use cg_core::light::LightCounts;
@@ -9,9 +9,9 @@ use rayon::prelude::*;
 
 use super::*;
 
-/// The vertex stage over every vertex of one object, on all cores, eight at a time
-/// (`src/vertex8.rs`: model → world → view → clip, the normal, the window position and the
-/// outcodes into `windows`); under Gouraud each vertex is then lit — eight at a time by the
+/// The vertex stage over every vertex of one object, on all cores, sixteen at a time
+/// (`src/vertex_lanes.rs`: model → world → view → clip, the normal, the window position and the
+/// outcodes into `windows`); under Gouraud each vertex is then lit — sixteen at a time by the
 /// scene's own light model, one by one by any other hook — and its colour clamped to `[0, 1]`,
 /// as OpenGL clamps the lit vertex colour before interpolating it.
 ///
@@ -27,7 +27,7 @@ pub(super) fn vertex_stage<L: Lighting + ?Sized>(
     let mesh = &prepared.mesh;
     let n = mesh.positions.len();
     let mut stats = Stats { vertices: n as u64, ..Stats::default() };
-    let t = vertex8::Transforms {
+    let t = vertex_lanes::Transforms {
         model: prepared.model,
         normal: prepared.normal_matrix,
         mirrored: prepared.mirrored,
@@ -43,16 +43,16 @@ pub(super) fn vertex_stage<L: Lighting + ?Sized>(
     vertices.par_chunks_mut(LANES).zip(windows.par_chunks_mut(LANES)).enumerate().for_each(
         |(k, (vs, ws))| {
             let start = k * LANES;
-            let (p, normal) = vertex8::gather(&mesh.positions, normals, start, vs.len());
-            let mut out = vertex8::Out::default();
-            vertex8::transform(&t, &p, &normal, &mut out);
+            let (p, normal) = vertex_lanes::gather(&mesh.positions, normals, start, vs.len());
+            let mut out = vertex_lanes::Out::default();
+            vertex_lanes::transform(&t, &p, &normal, &mut out);
             for (i, (v, w)) in vs.iter_mut().zip(ws.iter_mut()).enumerate() {
-                let (color, uv) = vertex8::passed_on(colors, uvs, start + i);
-                let p_clip = vertex8::lane4(&out.p_clip, i);
+                let (color, uv) = vertex_lanes::passed_on(colors, uvs, start + i);
+                let p_clip = vertex_lanes::lane4(&out.p_clip, i);
                 *v = Vertex {
                     p_clip,
-                    p_world: vertex8::lane3(&out.p_world, i),
-                    n_world: vertex8::lane3(&out.n_world, i),
+                    p_world: vertex_lanes::lane3(&out.p_world, i),
+                    n_world: vertex_lanes::lane3(&out.n_world, i),
                     color,
                     uv,
                 };
@@ -73,7 +73,7 @@ pub(super) fn vertex_stage<L: Lighting + ?Sized>(
     let colored = |i: usize| colors.and_then(|c| c.get(i)).copied();
     if frame.shading == Shading::Gouraud && draw.lit {
         let counts = match frame.spans.as_ref().filter(|_| whole_colors) {
-            // The scene's own light model, eight vertices at a time (the same bits).
+            // The scene's own light model, sixteen vertices at a time (the same bits).
             Some(lights) => vertices
                 .par_chunks_mut(LANES)
                 .fold(LightCounts::default, |mut counts, chunk| {

@@ -1,4 +1,4 @@
-//! The vertex stage eight vertices at a time (issue 18): model → world → view → clip, the
+//! The vertex stage sixteen vertices at a time (issue 18): model → world → view → clip, the
 //! normal by the cofactor normal matrix, and each vertex's window position and outcodes, in
 //! structure-of-arrays form so the compiler vectorises the matrix products and the divisions
 //! (a copy compiled for AVX2 is chosen at run time).
@@ -32,7 +32,7 @@ pub(crate) struct Transforms {
     pub(crate) height: f32,
 }
 
-/// Eight vertices' results, structure of arrays.
+/// [`LANES`] vertices' results, structure of arrays.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Out {
     pub(crate) p_world: [Lanes; 3],
@@ -87,7 +87,7 @@ fn snap(v: f32) -> i32 {
     (whole + up - down) as i32
 }
 
-/// The vertex stage for the eight vertices `p` (model space) with normals `n` (zero where a
+/// The vertex stage for the [`LANES`] vertices `p` (model space) with normals `n` (zero where a
 /// vertex has none): world position, unit world normal (zero where it has none, flipped back
 /// for a mirrored object), clip position, window position.
 #[multiversion(targets("x86_64+avx2+fma"))]
@@ -142,7 +142,7 @@ pub(crate) fn transform(t: &Transforms, p: &[Lanes; 3], n: &[Lanes; 3], out: &mu
     }
 }
 
-/// Gathers eight vertices' model positions and normals (zero past `len` and where the mesh has
+/// Gathers [`LANES`] vertices' model positions and normals (zero past `len` and where the mesh has
 /// no normal) into structure-of-arrays form.
 pub(crate) fn gather(
     positions: &[Vec3],
@@ -196,7 +196,7 @@ mod tests {
     /// `Prepared::world_normal`'s normalisation and flip, the viewport transform — for ordinary,
     /// mirrored and non-uniformly scaled objects, zero normals, and points behind the eye.
     #[test]
-    fn eight_vertices_are_the_point_by_point_arithmetic_bit_for_bit() {
+    fn a_span_of_vertices_is_the_point_by_point_arithmetic_bit_for_bit() {
         let mut seed = 7u64;
         let mut next = move || {
             seed ^= seed << 13;

@@ -1,0 +1,440 @@
+//! Rasterize and depth-test a run of pixels of a row at a time (issue 18): the edge functions,
+//! the screen-space barycentrics and the depths of eight ([`SIMPLE`]) or sixteen ([`STAGED`])
+//! pixels as lanes the compiler vectorises, in an AVX2 copy chosen at run time. Flat and Gouraud
+//! colours without a texture are written here, eight at a time; every other fragment is handed
+//! back in runs of sixteen, which fill one of Phong's spans ([`crate::span::LANES`]).
+//!
+//! The edge functions are f64 lanes: integers, exact below 2⁵³, so each step is exact and each
+//! conversion to f32 rounds once, as from the integer; a triangle reaching so far into the guard
+//! band that they could exceed that takes i64 lanes ([`cover_wide`]). Narrow triangles (most of a
+//! dense mesh's, 1–2 pixels wide) stay pixel by pixel in [`super::tile`]: a run would be mostly
+//! empty lanes.
+//!
+//! The same pixels with the same numbers, in the same order, as pixel by pixel: each lane's edge
+//! functions are the integers [`super::tile`]'s rasterizer steps through, converted to f32 with
+//! one rounding, and each lane's depth, test, perspective correction and colour are its
+//! arithmetic, operation for operation.
+
+// Lane loops index several arrays by the lane, the structure-of-arrays idiom the vectoriser
+// reads best.
+#![allow(clippy::needless_range_loop)]
+
+use cg_core::Rgb;
+use cg_core::glam::Vec3;
+use multiversion::multiversion;
+
+use super::tile::{Target, edge_setup};
+use super::{Edges, Rect};
+use crate::span::{self, V3N};
+
+/// Pixels of a row rasterized at once where the colour is made here (flat, Gouraud).
+pub(super) const SIMPLE: usize = 8;
+/// Pixels of a row rasterized at once where the fragments go to the fragment stage (Phong's
+/// spans take [`crate::span::W`] at a time).
+pub(super) const STAGED: usize = 16;
+/// One bit per pixel of a run (at most 32).
+pub(super) type Mask = u32;
+
+/// A triangle whose colour needs neither a texture nor the light model per fragment.
+pub(super) enum Simple {
+    /// Flat: the face's colour, clamped.
+    Flat(Rgb),
+    /// Gouraud: the corners' colours, interpolated.
+    Gouraud(Gouraud),
+    /// Anything else: the fragment stage, fragment by fragment.
+    No,
+}
+
+/// Gouraud's corners, for a run of fragments at once.
+pub(super) struct Gouraud {
+    inv_w: [f32; 3],
+    colors: [Rgb; 3],
+}
+
+impl Gouraud {
+    pub(super) fn new(inv_w: [f32; 3], colors: [Rgb; 3]) -> Gouraud {
+        Gouraud { inv_w, colors }
+    }
+}
+
+/// `W` pixels of a row, `x..x + W`, that passed the depth test (bit `k` of `passed` for pixel
+/// `x + k`), with their screen-space barycentrics, waiting for their fragment stage.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Run<const W: usize> {
+    pub(super) x: u32,
+    pub(super) y: u32,
+    pub(super) passed: Mask,
+    pub(super) b: V3N<W>,
+}
+
+/// Rasterizes `edges` within `rect`, depth-tests every covered pixel against `target`'s depth
+/// (window depth `z` at the corners, GL_LESS, written on a pass) and gives the fragments that
+/// passed their colour: `simple`'s where it has one, otherwise as [`Run`]s pushed to `runs`.
+/// Gives the covered and passed pixel counts.
+///
+/// The fill rule and the edge functions are [`super::tile`]'s rasterizer's: the pixels whose
+/// biased edge functions are all ≥ 0, in rows from the top, left to right.
+#[multiversion(targets("x86_64+avx2+fma"))]
+pub(super) fn cover<'t, const W: usize>(
+    edges: &Edges,
+    rect: Rect,
+    z: [f32; 3],
+    simple: &Simple,
+    target: &mut Target<'t>,
+    runs: &mut Vec<Run<W>>,
+) -> (u64, u64) {
+    let [bx0, by0, bx1, by1] = edges.bbox;
+    let (x0, y0) = (bx0.max(rect.x0), by0.max(rect.y0));
+    let (x1, y1) = (bx1.min(rect.x1.saturating_sub(1)), by1.min(rect.y1.saturating_sub(1)));
+    if x0 > x1 || y0 > y1 {
+        return (0, 0);
+    }
+    let inv_area = 1.0 / edges.area2 as f32;
+    let z = Vec3::from(z);
+    let (row, step_x, step_y, bias) = edge_setup(edges, x0, y0);
+    // The edge functions as f64 lanes: integers below 2⁵³ in magnitude, so every step is exact,
+    // and the conversion to f32 rounds once, as from the integer. With every corner and every
+    // pixel centre visited (the lanes past the bounding box too) within ±g of the origin, in
+    // 1/256 pixel, |e| ≤ 2g·2g + 2g·2g + 1: below 2⁵² when g < 2²⁴ (65 536 pixels).
+    let reach = edges.x.iter().chain(&edges.y).map(|&c| i64::from(c).abs()).max().unwrap_or(0);
+    let visited = (i64::from(x1.max(y1)) + W as i64 + 1) * super::ONE;
+    if reach.max(visited) >= 1 << 24 {
+        return cover_wide::<W>(edges, rect, z, simple, target, runs);
+    }
+    let lanes: [[f64; W]; 3] =
+        std::array::from_fn(|i| std::array::from_fn(|k| (k as i64 * step_x[i]) as f64));
+    let step8 = step_x.map(|s| (s * W as i64) as f64);
+    let (step_y, bias) = (step_y.map(|s| s as f64), bias.map(|b| b as f64));
+    let mut row = row.map(|e| e as f64);
+    let (mut covered_count, mut passed_count) = (0u64, 0u64);
+    for py in y0..=y1 {
+        let mut e0 = row;
+        let mut x = x0;
+        let r = (py - target.y0) as usize;
+        while x <= x1 {
+            let n = (x1 - x + 1).min(W as u32);
+            let mut e = [[0f64; W]; 3];
+            for i in 0..3 {
+                for k in 0..W {
+                    e[i][k] = e0[i] + lanes[i][k];
+                }
+            }
+            let mut covered: Mask = 0;
+            for k in 0..W {
+                let inside = e[0][k] >= 0.0 && e[1][k] >= 0.0 && e[2][k] >= 0.0;
+                covered |= Mask::from(inside && (k as u32) < n) << k;
+            }
+            for i in 0..3 {
+                e0[i] += step8[i];
+            }
+            let at = x;
+            x += W as u32;
+            if covered == 0 {
+                continue;
+            }
+            // Screen-space (linear) barycentrics from the unbiased edge functions: window depth
+            // is linear on the screen.
+            let mut b = V3N::<W>::default();
+            for k in 0..W {
+                b.x[k] = ((e[0][k] - bias[0]) as f32) * inv_area;
+                b.y[k] = ((e[1][k] - bias[1]) as f32) * inv_area;
+                b.z[k] = ((e[2][k] - bias[2]) as f32) * inv_area;
+            }
+            let column = (at - target.x0) as usize;
+            let passed = depth_test(&b, z, covered, &mut target.depth[r][column..]);
+            covered_count += u64::from(covered.count_ones());
+            passed_count += u64::from(passed.count_ones());
+            if passed != 0 {
+                shade(simple, &b, passed, &mut target.color[r][column..], runs, at, py);
+            }
+        }
+        for i in 0..3 {
+            row[i] += step_y[i];
+        }
+    }
+    (covered_count, passed_count)
+}
+
+/// [`cover`] for a triangle too large for exact f64 edge functions (it reaches far into the
+/// guard band): the same pixels through i64 edge functions, `W` at a time.
+#[inline(never)]
+fn cover_wide<const W: usize>(
+    edges: &Edges,
+    rect: Rect,
+    z: Vec3,
+    simple: &Simple,
+    target: &mut Target<'_>,
+    runs: &mut Vec<Run<W>>,
+) -> (u64, u64) {
+    let [bx0, by0, bx1, by1] = edges.bbox;
+    let (x0, y0) = (bx0.max(rect.x0), by0.max(rect.y0));
+    let (x1, y1) = (bx1.min(rect.x1.saturating_sub(1)), by1.min(rect.y1.saturating_sub(1)));
+    let inv_area = 1.0 / edges.area2 as f32;
+    let (mut row, step_x, step_y, bias) = edge_setup(edges, x0, y0);
+    let (mut covered_count, mut passed_count) = (0u64, 0u64);
+    for py in y0..=y1 {
+        let mut e0 = row;
+        let mut x = x0;
+        let r = (py - target.y0) as usize;
+        while x <= x1 {
+            let n = (x1 - x + 1).min(W as u32);
+            let e: [[i64; W]; 3] =
+                std::array::from_fn(|i| std::array::from_fn(|k| e0[i] + k as i64 * step_x[i]));
+            let mut covered: Mask = 0;
+            for k in 0..W {
+                let inside = (e[0][k] | e[1][k] | e[2][k]) >= 0;
+                covered |= Mask::from(inside && (k as u32) < n) << k;
+            }
+            for i in 0..3 {
+                e0[i] += W as i64 * step_x[i];
+            }
+            let at = x;
+            x += W as u32;
+            if covered == 0 {
+                continue;
+            }
+            let mut b = V3N::<W>::default();
+            for k in 0..W {
+                b.x[k] = ((e[0][k] - bias[0]) as f32) * inv_area;
+                b.y[k] = ((e[1][k] - bias[1]) as f32) * inv_area;
+                b.z[k] = ((e[2][k] - bias[2]) as f32) * inv_area;
+            }
+            let column = (at - target.x0) as usize;
+            let passed = depth_test(&b, z, covered, &mut target.depth[r][column..]);
+            covered_count += u64::from(covered.count_ones());
+            passed_count += u64::from(passed.count_ones());
+            if passed != 0 {
+                shade(simple, &b, passed, &mut target.color[r][column..], runs, at, py);
+            }
+        }
+        for i in 0..3 {
+            row[i] += step_y[i];
+        }
+    }
+    (covered_count, passed_count)
+}
+
+/// The colour of the `W` pixels from `color[0]` that `passed` holds: `simple`'s, or else a
+/// [`Run`] for the fragment stage.
+#[inline(always)]
+fn shade<const W: usize>(
+    simple: &Simple,
+    b: &V3N<W>,
+    passed: Mask,
+    color: &mut [Rgb],
+    runs: &mut Vec<Run<W>>,
+    x: u32,
+    y: u32,
+) {
+    let write = |color: &mut [Rgb], c: &dyn Fn(usize) -> Rgb| {
+        if passed == Mask::MAX && color.len() >= W {
+            for k in 0..W {
+                color[k] = c(k);
+            }
+        } else {
+            for k in 0..color.len().min(W) {
+                if passed >> k & 1 != 0 {
+                    color[k] = c(k);
+                }
+            }
+        }
+    };
+    match simple {
+        Simple::Flat(c) => write(color, &|_| *c),
+        Simple::Gouraud(g) => {
+            // As the fragment stage: perspective-correct barycentrics, then
+            // `b.x·c₀ + b.y·c₁ + b.z·c₂`, clamped.
+            let (inv_w, colors) = (g.inv_w.map(|w| [w; W]), g.colors.map(V3N::<W>::splat));
+            let mut weights = V3N::default();
+            span::perspective(b, &inv_w, &mut weights);
+            let mut lit = V3N::default();
+            span::interpolate(&weights, &colors, &mut lit);
+            for k in 0..W {
+                lit.x[k] = channel(lit.x[k]);
+                lit.y[k] = channel(lit.y[k]);
+                lit.z[k] = channel(lit.z[k]);
+            }
+            write(color, &|k| lit.get(k));
+        }
+        Simple::No => runs.push(Run { x, y, passed, b: *b }),
+    }
+}
+
+/// [`saturate`] of one channel.
+#[inline(always)]
+fn channel(x: f32) -> f32 {
+    if x > 0.0 { x.min(1.0) } else { 0.0 }
+}
+
+/// The depth test (隠面消去, Z バッファ法) of `W` pixels of a row (`covered`: bit `k` for pixel
+/// `k`, all within `depth`): GL_LESS against the buffer cleared to 1, each covered pixel's window
+/// depth `b·z` clamped to `[0, 1]`; on a pass the depth is written. It runs before the fragment
+/// stage (early depth test, as GPUs do when a fragment cannot be discarded): the same image,
+/// without shading hidden fragments. Gives the pixels that passed.
+#[inline(always)]
+fn depth_test<const W: usize>(b: &V3N<W>, z: Vec3, covered: Mask, depth: &mut [f32]) -> Mask {
+    let n = depth.len().min(W);
+    let mut stored = [0.0f32; W];
+    stored[..n].copy_from_slice(&depth[..n]);
+    let mut passed: Mask = 0;
+    for k in 0..W {
+        // glam's dot: (x·x' + y·y') + z·z'.
+        let d = (b.x[k] * z.x + b.y[k] * z.y + b.z[k] * z.z).clamp(0.0, 1.0);
+        let pass = covered >> k & 1 != 0 && d < stored[k];
+        stored[k] = if pass { d } else { stored[k] };
+        passed |= Mask::from(pass) << k;
+    }
+    depth[..n].copy_from_slice(&stored[..n]);
+    passed
+}
+
+#[cfg(test)]
+mod tests {
+    //! Runs of pixels against the pixel-by-pixel rasterizer, bit for bit: the same pixels in the
+    //! same order, the same barycentrics, depths and Gouraud colours.
+
+    use super::*;
+    use crate::pipeline::primitive::{Cull, snap, triangle_setup};
+    use crate::pipeline::tile::rasterize;
+    use crate::pipeline::{GUARD_BAND_PIXELS, ScreenVertex};
+
+    /// A small deterministic generator (xorshift).
+    struct Cases(u64);
+
+    impl Cases {
+        fn next(&mut self) -> f32 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            (self.0 >> 40) as f32 / (1u64 << 24) as f32
+        }
+    }
+
+    const WIDTH: u32 = 101;
+    const HEIGHT: u32 = 77;
+
+    /// What the pixel-by-pixel path gives a tile: each covered pixel's position and
+    /// barycentrics, and whether it passed the depth test, in order, with the depths after.
+    type Seen = (Vec<(u32, u32, [u32; 3], bool)>, Vec<u32>);
+
+    fn buffers() -> (Vec<Vec<Rgb>>, Vec<Vec<f32>>) {
+        (
+            vec![vec![Rgb::ZERO; WIDTH as usize]; HEIGHT as usize],
+            vec![vec![1.0; WIDTH as usize]; HEIGHT as usize],
+        )
+    }
+
+    fn target<'a>(color: &'a mut [Vec<Rgb>], depth: &'a mut [Vec<f32>]) -> Target<'a> {
+        Target {
+            color: color.iter_mut().map(Vec::as_mut_slice).collect(),
+            depth: depth.iter_mut().map(Vec::as_mut_slice).collect(),
+            x0: 0,
+            y0: 0,
+        }
+    }
+
+    fn bits(b: Vec3) -> [u32; 3] {
+        b.to_array().map(f32::to_bits)
+    }
+
+    #[test]
+    fn runs_are_the_pixel_by_pixel_rasterizer_bit_for_bit() {
+        let mut cases = Cases(0x853c_49e6_748f_ea9b);
+        let rect = Rect { x0: 0, y0: 0, x1: WIDTH, y1: HEIGHT };
+        let (mut wide, mut tested) = (0, 0);
+        for round in 0..3000 {
+            // Corners anywhere around the image, snapped to the pixel grid now and then (edges
+            // through pixel centres), and far into the guard band now and then.
+            let reach = match round % 10 {
+                0 => GUARD_BAND_PIXELS * 0.9,
+                1 => 3000.0,
+                _ => 160.0,
+            };
+            let corner = |cases: &mut Cases| {
+                let mut p = [cases.next(), cases.next()].map(|t| (t * 2.0 - 1.0) * reach + 50.0);
+                if round % 3 == 0 {
+                    p = p.map(|v| v.round() + 0.5);
+                }
+                ScreenVertex { x: snap(p[0]), y: snap(p[1]), ..ScreenVertex::default() }
+            };
+            let s = [corner(&mut cases), corner(&mut cases), corner(&mut cases)];
+            let Ok((edges, _)) = triangle_setup(s, Cull::None, WIDTH, HEIGHT) else { continue };
+            let z = [cases.next(), cases.next(), cases.next()];
+            let inv_w = [cases.next() + 0.1, cases.next() * 3.0 + 0.1, cases.next() + 0.5];
+            let colors =
+                [0, 1, 2].map(|_| Rgb::new(cases.next(), cases.next() * 2.0, -cases.next()));
+            tested += 1;
+            let reach = edges.x.iter().chain(&edges.y).map(|&c| i64::from(c).abs()).max();
+            wide += usize::from(reach >= Some(1 << 24));
+
+            // The pixel-by-pixel path, over a depth buffer already holding something.
+            let (mut color, mut depth) = buffers();
+            for (y, row) in depth.iter_mut().enumerate() {
+                for (x, d) in row.iter_mut().enumerate() {
+                    *d = ((x * 7 + y * 13) % 17) as f32 / 16.0;
+                }
+            }
+            let before = depth.clone();
+            let inv_area = 1.0 / edges.area2 as f32;
+            let mut expected: Seen = (Vec::new(), Vec::new());
+            let mut expected_color = color.clone();
+            rasterize(&edges, rect, |x, y, e| {
+                let b = Vec3::new(e[0] as f32, e[1] as f32, e[2] as f32) * inv_area;
+                let d = b.dot(Vec3::from(z)).clamp(0.0, 1.0);
+                let stored = &mut depth[y as usize][x as usize];
+                let pass = d < *stored;
+                if pass {
+                    *stored = d;
+                    // The fragment stage's Gouraud colour.
+                    let weighted = b * Vec3::from(inv_w);
+                    let sum = weighted.x + weighted.y + weighted.z;
+                    let w = if sum > 0.0 && sum.is_finite() { weighted / sum } else { b };
+                    let c = w.x * colors[0] + w.y * colors[1] + w.z * colors[2];
+                    expected_color[y as usize][x as usize] = span::saturate(c);
+                }
+                expected.0.push((x, y, bits(b), pass));
+            });
+            expected.1 = depth.iter().flatten().map(|d| d.to_bits()).collect();
+
+            // Runs of sixteen, handed back.
+            let (mut color16, mut depth16) = (color.clone(), before.clone());
+            let mut runs = Vec::new();
+            let counts = cover::<STAGED>(
+                &edges,
+                rect,
+                z,
+                &Simple::No,
+                &mut target(&mut color16, &mut depth16),
+                &mut runs,
+            );
+            let mut got: Vec<(u32, u32, [u32; 3], bool)> = Vec::new();
+            for run in &runs {
+                for k in (0..STAGED).filter(|k| run.passed >> k & 1 != 0) {
+                    got.push((run.x + k as u32, run.y, bits(run.b.get(k)), true));
+                }
+            }
+            let passed: Vec<_> = expected.0.iter().filter(|p| p.3).copied().collect();
+            assert_eq!(got, passed, "round {round}: the pixels that passed, in order");
+            let covered = expected.0.len() as u64;
+            assert_eq!(counts, (covered, passed.len() as u64), "round {round}: the counts");
+            let depths: Vec<u32> = depth16.iter().flatten().map(|d| d.to_bits()).collect();
+            assert_eq!(depths, expected.1, "round {round}: the depth buffer");
+
+            // Runs of eight, Gouraud's colour made here.
+            let (mut depth8, gouraud) =
+                (before.clone(), Simple::Gouraud(Gouraud::new(inv_w, colors)));
+            let mut none = Vec::new();
+            let mut t = target(&mut color, &mut depth8);
+            let counts = cover::<SIMPLE>(&edges, rect, z, &gouraud, &mut t, &mut none);
+            assert_eq!(counts, (covered, passed.len() as u64), "round {round}: the counts");
+            assert!(none.is_empty());
+            let colors_bits = |c: &[Vec<Rgb>]| -> Vec<[u32; 3]> {
+                c.iter().flatten().map(|c| c.to_array().map(f32::to_bits)).collect()
+            };
+            assert_eq!(colors_bits(&color), colors_bits(&expected_color), "round {round}: colours");
+            let depths: Vec<u32> = depth8.iter().flatten().map(|d| d.to_bits()).collect();
+            assert_eq!(depths, expected.1, "round {round}: the depth buffer");
+        }
+        assert!(tested > 2000 && wide > 100, "{tested} triangles, {wide} through i64 lanes");
+    }
+}
