@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The kit compiles for the systems students use: Windows and macOS (Linux is the test run itself).
-# `cargo check` of the whole workspace for each target (no linker needed); the targets' standard
+# `cargo check` of the whole workspace for each target (no linker needed), and of `cg` as the
+# students' copy builds it (without default features); the targets' standard
 # libraries are added with rustup, idempotently. Run by CI (.ci/run).
 # 学生の使う Windows と macOS 向けにもコンパイルできることを確かめます（CI が実行します）。
 set -euo pipefail
@@ -16,4 +17,8 @@ for target in "${TARGETS[@]}"; do
   fi
   echo "check-platforms: cargo check --workspace --target $target"
   cargo check --workspace --locked --target "$target" --quiet
+  # The students' copy builds `cg` without its default features (no GPU renderer, no
+  # instructors' commands: crates/cli/Cargo.toml), which compiles other code at the seams.
+  echo "check-platforms: cargo check -p cg-cli --no-default-features --target $target"
+  cargo check -p cg-cli --no-default-features --locked --target "$target" --quiet
 done

@@ -5,10 +5,16 @@
 //!
 //! Without an adapter the GPU rows must be absent and the text must say why (in Japanese and
 //! English) — unless `CI` is set: there a missing adapter is a failure, as in crates/gpu's tests.
+//! In a build without the `gpu` feature (the students' copy) the rows are absent and the text
+//! gives the command that measures them.
 
-use cg_bench::{Config, Experiment};
+use cg_bench::Config;
+#[cfg(feature = "gpu")]
+use cg_bench::Experiment;
 
+#[cfg(feature = "gpu")]
 const NONE: &str = "none (diffuse, point light)";
+#[cfg(feature = "gpu")]
 /// The variants the GPU draws (all but the tracer's shadows and reflection).
 const GPU_VARIANTS: [&str; 9] = [
     NONE,
@@ -22,6 +28,7 @@ const GPU_VARIANTS: [&str; 9] = [
     "texture, checker",
 ];
 
+#[cfg(feature = "gpu")]
 /// The adapter's name up to its first parenthesis, or `None` (with a note) where there is none.
 fn adapter() -> Option<String> {
     match cg_gpu::Gpu::new() {
@@ -37,10 +44,12 @@ fn adapter() -> Option<String> {
     }
 }
 
+#[cfg(feature = "gpu")]
 fn gpu_value(e: &Experiment, key: &str, variant: &str, column: &str) -> f64 {
     e.value(&[key, variant], column).unwrap_or_else(|| panic!("no row {key} / {variant}"))
 }
 
+#[cfg(feature = "gpu")]
 #[test]
 fn the_gpu_rows_skip_what_the_scene_does_not_need() {
     let adapter = adapter();
@@ -107,4 +116,16 @@ fn a_measure_that_does_not_apply_is_a_dash() {
     assert_eq!(cg_bench::format_value(f64::NAN), "—");
     assert_eq!(cg_bench::format_value(0.0), "0");
     assert_eq!(cg_bench::format_value(12.5), "12.50");
+}
+
+#[cfg(not(feature = "gpu"))]
+#[test]
+fn without_the_gpu_feature_the_text_gives_the_command_that_measures_the_gpu_rows() {
+    let e = cg_bench::experiments::features::run(&Config::tiny()).unwrap();
+    assert!(e.rows.iter().all(|r| !r.key[0].starts_with("GPU")), "{:?}", e.rows);
+    for says in
+        ["No GPU rows", "GPU の行はありません", "`cargo run --release --features gpu -- bench`"]
+    {
+        assert!(e.about.contains(says), "{says:?} in {}", e.about);
+    }
 }

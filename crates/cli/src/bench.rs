@@ -39,6 +39,14 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
             ).get(lang)
         );
     }
+    if !cg_viewer::GPU_BUILT {
+        let command = cg_harness::args::rerun_with_features("gpu");
+        eprintln!(
+            "{} {}",
+            t("注意: GPU の行はありません。", "note: the report has no GPU rows:").get(lang),
+            cg_viewer::gpu_left_out(&command).get(lang)
+        );
+    }
     let start = Instant::now();
     let report = cg_bench::run(&config, machine, |id| {
         eprintln!("[{:6.1} s] {id}", start.elapsed().as_secs_f64());

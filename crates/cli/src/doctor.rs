@@ -594,6 +594,7 @@ fn cpu(r: &mut Report) {
 /// What the GPU probe found, as the probe process prints it (one JSON line). A panic here (a
 /// driver wgpu does not expect) ends the probe process; `cg doctor` reports it with the end of its
 /// error output.
+#[cfg(feature = "gpu")]
 fn probe_gpu_here() -> Value {
     match cg_gpu::Gpu::new() {
         Ok(gpu) => {
@@ -611,6 +612,13 @@ fn probe_gpu_here() -> Value {
             "no_adapter": matches!(e, cg_gpu::GpuError::NoAdapter),
         }),
     }
+}
+
+/// The probe in a build without the GPU renderer: nothing to open. (`cg doctor` does not start
+/// it there; [`gpu`] says why.)
+#[cfg(not(feature = "gpu"))]
+fn probe_gpu_here() -> Value {
+    json!({ "built": false, "no_adapter": false })
 }
 
 /// How the probe ended.
@@ -843,6 +851,23 @@ fn gpu(r: &mut Report, limit: Duration, wsl: Option<Wsl>) {
         "GPU レンダラ（render --renderer gpu、ビューアの r キー）",
         "GPU renderer (render --renderer gpu, the viewer's r key)",
     ));
+    r.set("gpu_built", cg_viewer::GPU_BUILT);
+    if !cg_viewer::GPU_BUILT {
+        // The students' copy: left out on purpose, so a note (not a problem) with the command
+        // that builds it and runs this report again.
+        let command = cg_harness::args::rerun_with_features("gpu");
+        let message = r.words(cg_viewer::gpu_left_out(&command));
+        for key in ["gpu_adapter", "gpu_device_type", "gpu_software"] {
+            r.set(key, Value::Null);
+        }
+        for key in DRIVER_VARIABLES {
+            r.set(&key.to_ascii_lowercase(), env(key));
+        }
+        r.set("gpu", false);
+        r.set("gpu_error", message.clone());
+        r.note(format!("{name}: {message}"));
+        return;
+    }
     let broken_variable = driver_variables(r);
     if let Some(b) = env("WGPU_BACKEND") {
         r.note(format!(

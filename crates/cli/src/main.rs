@@ -13,16 +13,22 @@ use clap::{Parser, Subcommand};
 mod assignments;
 mod bench;
 mod doctor;
+#[cfg(feature = "instructor")]
 mod grade;
+#[cfg(feature = "instructor")]
 mod gradescope;
+#[cfg(feature = "instructor")]
 mod handout;
 mod inspect;
+mod instructor;
 mod label;
 #[cfg(test)]
 mod printed;
+#[cfg(feature = "instructor")]
 mod progress;
 mod reload;
 mod render;
+#[cfg(feature = "instructor")]
 mod similarity;
 mod watch;
 
@@ -67,18 +73,13 @@ enum Command {
     Report(cg_report::app::Command),
     /// Regenerate exercises/ from solutions/ (kit maintainers) / solutions/ から exercises/ を生成（管理者用）
     SyncStubs,
-    /// Write the students' copy of the kit, without solutions/ (instructors) / 学生に配るコピーを作る（教員用）
-    Handout(handout::Args),
     /// Measure speed against error and write docs/speed-vs-error.md with its plots / 速度と誤差を測り docs/speed-vs-error.md に書く
     Bench(bench::Args),
-    /// Grade every submission (a folder, a zip, or Moodle's "download all submissions") with the kit's own checks, in a sandbox; Moodle's grading worksheet and feedback zip back (instructors) / 提出物（フォルダ・zip・Moodle の一括ダウンロード）をまとめて採点し、Moodle 用の評定ワークシートとフィードバックを書く（教員用）
-    Grade(grade::Args),
-    /// Grade one submission as `cg grade` grades each, with Gradescope's results.json (Gradescope, or a batch system's job per submission) / 提出物 1 件を採点し、Gradescope の results.json を書く（Gradescope や、提出物ごとにジョブを動かすバッチシステム用。教員用）
-    GradeOne(gradescope::GradeOneArgs),
-    /// Write the autograder zip Gradescope runs (setup.sh, run_autograder, the kit with solutions/; never hand it out) / Gradescope が動かすオートグレーダーの zip を書く（solutions/ を含むので配らないこと。教員用）
-    Autograder(gradescope::AutograderArgs),
-    /// Look for copies: code fingerprinted by winnowing (stubs excluded, earlier years as references), the pairs above a threshold side by side, and numbers from another student's variant; writes similarity.html and similarity.csv (instructors) / コピーの検出: コードの指紋（スタブを除き、過去の年度と比較）、しきい値以上の組の対照表示、ほかの学生の課題の数値。similarity.html と similarity.csv を書く（教員用）
-    Similarity(similarity::Args),
+    // The instructors' commands: handout, grade, grade-one, autograder, similarity (feature
+    // `instructor`; in a build without it, such as the students' copy, hidden, and each says
+    // how to build it).
+    #[command(flatten)]
+    Instructor(instructor::Command),
     /// Which renderers and windows work on this machine, and why, each problem with its fix / このマシンで使えるレンダラとウィンドウ、使えない理由と対処
     Doctor(doctor::Args),
 }
@@ -104,7 +105,12 @@ fn quiet_on_closed_pipe() {
 fn main() -> ExitCode {
     quiet_on_closed_pipe();
     let cli: Cli = cg_harness::args::parse();
-    let lang = cli.lang.unwrap_or_else(Lang::from_env);
+    // `--lang` after a command that takes every argument as it comes (an instructors' command
+    // in a build without them) is not parsed as the option: it still sets the language.
+    let lang = cli
+        .lang
+        .or_else(|| cg_harness::args::lang_in(&std::env::args_os().collect::<Vec<_>>()))
+        .unwrap_or_else(Lang::from_env);
     let ok = |r: Result<(), String>| r.map(|()| Ending::Ok);
     let result = match cli.command {
         Some(Command::Inspect(args)) => ok(inspect::run(&args, lang)),
@@ -118,12 +124,8 @@ fn main() -> ExitCode {
                 .map(Ending::passed)
         }
         Some(Command::SyncStubs) => ok(assignments::sync_stubs(lang)),
-        Some(Command::Handout(args)) => ok(handout::run(&args, lang)),
         Some(Command::Bench(args)) => ok(bench::run(&args, lang)),
-        Some(Command::Grade(args)) => ok(grade::run(&args, lang)),
-        Some(Command::GradeOne(args)) => ok(gradescope::grade_one(&args, lang)),
-        Some(Command::Autograder(args)) => ok(gradescope::autograder(&args, lang)),
-        Some(Command::Similarity(args)) => similarity::run(&args, lang),
+        Some(Command::Instructor(command)) => instructor::run(&command, lang),
         Some(Command::Doctor(args)) => ok(doctor::run(&args, lang)),
         None => ok(render::main_job(lang)),
     };

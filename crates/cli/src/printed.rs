@@ -11,6 +11,14 @@ use crate::Cli;
 
 const PREFIX: &str = "cargo run --release -- ";
 
+/// `cargo run --release`, then `--` or one of [`FEATURES`] and `--`: what starts a command of `cg`.
+const RUN: &str = "cargo run --release ";
+
+/// The features a printed command may build before `--`: the students' copy builds the GPU
+/// renderer and the instructors' commands only when asked (`--features gpu -- render --renderer
+/// gpu`). This test runs on the kit's own build, which has them all.
+const FEATURES: [&str; 2] = ["--features gpu -- ", "--features instructor -- "];
+
 /// The text files of the kit a student or an instructor reads commands in.
 fn files(dir: &Path, out: &mut Vec<PathBuf>) {
     let Ok(entries) = std::fs::read_dir(dir) else { return };
@@ -37,13 +45,21 @@ fn names_a_file(text: &str) -> bool {
     word.contains(['.', '/']) && word.chars().last().is_some_and(|c| c.is_ascii_alphanumeric())
 }
 
-/// The commands after [`PREFIX`] in `text`: each up to the end of its line, quote, backquote,
+/// The commands after [`PREFIX`] (or [`RUN`] and one of [`FEATURES`]) in `text`: each up to the
+/// end of its line, quote, backquote,
 /// table cell, parenthesis, a run of two spaces (an aligned comment) or the first non-ASCII
 /// character (the Japanese sentence around it); an ellipsis `…` is kept (a placeholder).
 fn commands(text: &str) -> Vec<String> {
     let mut found = Vec::new();
-    for (at, _) in text.match_indices(PREFIX) {
-        let rest = &text[at + PREFIX.len()..];
+    for (at, _) in text.match_indices(RUN) {
+        let after = &text[at + RUN.len()..];
+        let Some(skip) = std::iter::once("-- ")
+            .chain(FEATURES)
+            .find_map(|p| after.starts_with(p).then_some(p.len()))
+        else {
+            continue;
+        };
+        let rest = &after[skip..];
         let mut end = rest.len();
         for (i, c) in rest.char_indices() {
             if c == '…' {
@@ -119,7 +135,11 @@ fn the_scan_finds_commands_where_they_are_written() {
                 cargo run --release -- check s    View: cargo run --release -- view s\n\
                 cargo run --release -- report check <report.md>\n\
                 then `cargo run --release -- check a1 --student …` (yours)\n\
-                cargo run --release -- grade 課題1のダウンロード.zip --out grades";
+                cargo run --release -- grade 課題1のダウンロード.zip --out grades\n\
+                cargo run --release --features gpu -- render --renderer gpu で GPU\n\
+                cargo run --release --features instructor -- grade subs\n\
+                cargo run --release -p cg-viewer --features gpu -- --renderer gpu\n\
+                cargo run --release --locked -- check";
     assert_eq!(
         commands(text),
         [
@@ -130,7 +150,9 @@ fn the_scan_finds_commands_where_they_are_written() {
             "view s",
             "report check <report.md>",
             "check a1 --student …",
-            "grade 課"
+            "grade 課",
+            "render --renderer gpu",
+            "grade subs"
         ]
     );
     // A command that cannot parse is caught: the test above would fail on it.

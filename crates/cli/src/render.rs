@@ -18,7 +18,7 @@ pub enum Renderer {
     Raster,
     /// The Whitted ray tracer (shadows, k_r·I_r, k_t·I_t) / レイトレーシング
     Trace,
-    /// The GPU renderer (wgpu; WGSL generated for the scene's features) / GPU レンダラ
+    /// The GPU renderer (wgpu; WGSL generated for the scene's features; the students' copy builds it with `--features gpu`) / GPU レンダラ（学生用のコピーでは --features gpu を付けてビルド）
     Gpu,
 }
 
@@ -323,6 +323,7 @@ fn draw(
             // What the tracer did: it traces Gouraud as Phong, and says so.
             Ok(Rendered { image: out.image, shading: out.shading, millis, report })
         }
+        #[cfg(feature = "gpu")]
         Renderer::Gpu => {
             let gpu = cg_gpu::Gpu::new().map_err(|e| e.message(lang))?;
             let setup = start.elapsed().as_secs_f64() * 1e3;
@@ -341,6 +342,12 @@ fn draw(
                 t("デバイスの準備", "device set-up").get(lang),
             );
             Ok(Rendered { image: out.image, shading: out.shading, millis, report })
+        }
+        // A build without the GPU renderer (the students' copy): the command that builds it.
+        #[cfg(not(feature = "gpu"))]
+        Renderer::Gpu => {
+            let command = cg_harness::args::rerun_with_features("gpu");
+            Err(cg_viewer::gpu_left_out(&command).get(lang).to_owned())
         }
     }
 }

@@ -222,17 +222,40 @@ fn check(args: &Args, lang: Lang, terminal: &Terminal) -> Vec<Check> {
     checks
 }
 
-/// The command that checks: `cargo run --release -q -- ` in the kit's root, or the program
-/// `CG_WATCH_CHECKER` names (the tests: the `cg` they built).
+/// The command that checks: `cargo run --release -q -- ` in the kit's root (with the features
+/// this `cg` was built with, [`features`]), or the program `CG_WATCH_CHECKER` names (the tests:
+/// the `cg` they built).
 fn checker() -> Command {
     if let Some(program) = std::env::var_os("CG_WATCH_CHECKER") {
         return Command::new(program);
     }
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let mut command = Command::new(cargo);
-    command.args(["run", "--release", "-q", "--"]);
+    command.args(["run", "--release", "-q"]);
+    command.args(features());
+    command.arg("--");
     command.current_dir(cg_harness::kit_path(None, "."));
     command
+}
+
+/// cargo's options for the features this `cg` was built with, so that the checks run by the
+/// same build instead of one with other features (a students' copy started with `cargo run
+/// --release --features gpu -- watch` would otherwise be rebuilt without the GPU renderer, and
+/// back again at the next `--features gpu`).
+fn features() -> Vec<String> {
+    let on: Vec<&str> = [
+        ("reference", cfg!(feature = "reference")),
+        ("gpu", cfg!(feature = "gpu")),
+        ("instructor", cfg!(feature = "instructor")),
+    ]
+    .into_iter()
+    .filter_map(|(name, built)| built.then_some(name))
+    .collect();
+    let mut options = vec!["--no-default-features".to_owned()];
+    if !on.is_empty() {
+        options.extend(["--features".to_owned(), on.join(",")]);
+    }
+    options
 }
 
 /// The tasks in order, each once.

@@ -5,6 +5,7 @@ mod common;
 
 use std::path::Path;
 use std::process::{Command, Output};
+#[cfg(feature = "gpu")]
 use std::time::{Duration, Instant};
 
 use common::{cg, root, scratch};
@@ -137,6 +138,7 @@ fn a_runtime_folder_that_does_not_exist_is_named_with_its_fix() {
     assert!(!stdout(&fine).contains("✗ XDG_RUNTIME_DIR"), "{}", all(&fine));
 }
 
+#[cfg(feature = "gpu")]
 #[test]
 fn a_missing_vulkan_driver_is_an_explanation_not_a_crash() {
     let dir = kit_dir("no-vulkan");
@@ -157,6 +159,7 @@ fn a_missing_vulkan_driver_is_an_explanation_not_a_crash() {
     assert!(text.contains("the kit\n"), "the report goes on after the GPU: {text}");
 }
 
+#[cfg(feature = "gpu")]
 #[cfg(unix)]
 #[test]
 fn a_driver_that_never_answers_is_given_up_on_in_time() {
@@ -205,6 +208,7 @@ fn json_is_one_flat_object_of_the_findings() {
     assert_eq!(object["cpu_raster"], true);
     assert_eq!(object["cpu_trace"], true);
     assert_eq!(object["gpu"], false);
+    assert_eq!(object["gpu_built"], cfg!(feature = "gpu"));
     assert!(object["gpu_error"].as_str().is_some_and(|e| !e.is_empty()), "{value}");
     assert_eq!(object["vk_icd_filenames"], NO_DRIVER);
     assert_eq!(object["student"], serde_json::Value::Null);
@@ -249,4 +253,25 @@ fn the_help_lists_doctor_and_its_options_but_not_the_probe() {
     // A limit of 0 s is a usage error, not a report without a GPU.
     let out = cg(&root(), &["doctor", "--gpu-timeout", "0"]);
     assert_eq!(out.status.code(), Some(2), "{}", all(&out));
+}
+
+/// A build without the GPU renderer (the students' copy): the GPU line is a note, not a problem,
+/// that says so in the user's language and gives the command that builds it and runs the report
+/// again; no GPU is probed.
+#[cfg(not(feature = "gpu"))]
+#[test]
+fn without_the_gpu_feature_the_gpu_line_is_a_note_with_the_command_that_builds_it() {
+    let dir = kit_dir("no-gpu");
+    for (lang, name, says) in [
+        ("en", "· GPU renderer (", "built without the GPU renderer"),
+        ("ja", "· GPU レンダラ（", "GPU レンダラ（wgpu）なしでビルド"),
+    ] {
+        let out = doctor(&dir, &["--lang", lang], &[]);
+        let text = stdout(&out);
+        assert!(out.status.success(), "{}", all(&out));
+        let gpu = text.lines().find(|l| l.trim_start().starts_with(name)).expect("a GPU line");
+        assert!(gpu.contains(says), "{text}");
+        let command = format!("cargo run --release --features gpu -- doctor --lang {lang}");
+        assert!(gpu.contains(&command), "{command}\n{text}");
+    }
 }

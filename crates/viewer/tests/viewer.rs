@@ -45,6 +45,7 @@ fn state_of(line: &str) -> Vec<(String, String)> {
 }
 
 /// Every `saved PATH (…)` line in order: the file and the state it shows.
+#[cfg(feature = "gpu")]
 fn saved_all(stdout: &str) -> Vec<(PathBuf, Vec<(String, String)>)> {
     stdout
         .lines()
@@ -337,6 +338,7 @@ fn a_wayland_window_draws_its_frames_and_the_screenshot_matches_the_headless_ren
 
 /// Whether the GPU window tests can run: Xvfb and xdotool ([`xvfb_available`]) and a GPU
 /// adapter (lavapipe in CI). Without an adapter the test is skipped with a note, except under CI.
+#[cfg(feature = "gpu")]
 fn gpu_window_available(test: &str) -> bool {
     if !xvfb_available(test) {
         return false;
@@ -351,6 +353,7 @@ fn gpu_window_available(test: &str) -> bool {
     }
 }
 
+#[cfg(feature = "gpu")]
 #[test]
 fn window_gpu_presents_to_its_surface_and_the_screenshot_matches_the_cpu() {
     let test = "window_gpu_presents_to_its_surface_and_the_screenshot_matches_the_cpu";
@@ -381,6 +384,7 @@ fn window_gpu_presents_to_its_surface_and_the_screenshot_matches_the_cpu() {
     assert_png_is_headless_render_within("xvfb-gpu", &shot, &state, 2);
 }
 
+#[cfg(feature = "gpu")]
 #[test]
 fn window_r_switches_cpu_gpu_cpu_and_every_screenshot_matches() {
     let test = "window_r_switches_cpu_gpu_cpu_and_every_screenshot_matches";
@@ -430,5 +434,27 @@ wait $PID
             // Back on the CPU, the window shows softbuffer's image again, exactly.
             assert_png_is_headless_render(&format!("xvfb-switch-{k}"), png, state);
         }
+    }
+}
+
+/// A build without the GPU renderer (the students' copy): `--renderer gpu` says so, in the
+/// user's language, with the command that builds it and runs the same again (exit status 2).
+#[cfg(not(feature = "gpu"))]
+#[test]
+fn without_the_gpu_feature_asking_for_the_gpu_gives_the_command_that_builds_it() {
+    let dir = scratch("no-gpu");
+    let d = dir.to_str().unwrap();
+    for (lang, says) in
+        [("en", "built without the GPU renderer"), ("ja", "GPU レンダラ（wgpu）なしでビルド")]
+    {
+        let args = ["--renderer", "gpu", "--headless", "--frames", "1", "--out", d, "--lang", lang];
+        let out = Command::new(BIN).args(args).output().unwrap();
+        let all = text(&out);
+        assert_eq!(out.status.code(), Some(2), "{all}");
+        assert!(all.contains(says), "{all}");
+        let command =
+            format!("cargo run --release -p cg-viewer --features gpu -- {}", args.join(" "));
+        assert!(all.contains(&command), "{command}\n{all}");
+        assert!(std::fs::read_dir(&dir).unwrap().next().is_none(), "nothing drawn: {all}");
     }
 }
