@@ -16,8 +16,8 @@
 //! **Why sixteen.** Each lane's f64 normalisations are a chain of divisions and a square root
 //! whose latency, not their count, bounds a span: sixteen lanes give the core two independent
 //! chains of AVX2 vectors to overlap. Measured side by side on the course scene in Phong (one
-//! thread): spans of sixteen took 0.56 of the time of spans of eight; of thirty-two, no less than
-//! sixteen (docs/performance.md §2).
+//! thread, the whole frame): spans of sixteen took 0.75 of the time of spans of eight; spans of
+//! thirty-two were no faster than sixteen (docs/performance.md §2).
 //!
 //! **A triangle with one normal** (a face normal, every triangle of a flat object) gives every
 //! fragment the same normal: [`certified`] proves, once per triangle, that the per-fragment f64
