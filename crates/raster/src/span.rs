@@ -757,4 +757,4 @@ pub(crate) fn saturate(c: Rgb) -> Rgb {
 
 #[cfg(test)]
 #[path = "span_tests.rs"]
-mod tests;
+pub(crate) mod tests;

@@ -10,10 +10,11 @@ use cg_core::normals::interpolate_normal;
 use super::*;
 
 /// A small deterministic generator (xorshift), so the cases are the same on every run.
-struct Cases(u64);
+pub(crate) struct Cases(pub(crate) u64);
 
 impl Cases {
-    fn next(&mut self) -> f32 {
+    /// In `[-1, 1)`.
+    pub(crate) fn next(&mut self) -> f32 {
         self.0 ^= self.0 << 13;
         self.0 ^= self.0 >> 7;
         self.0 ^= self.0 << 17;

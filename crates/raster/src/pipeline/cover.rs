@@ -6,7 +6,7 @@
 //!
 //! The edge functions are f64 lanes: integers, exact below 2⁵³, so each step is exact and each
 //! conversion to f32 rounds once, as from the integer; a triangle reaching so far into the guard
-//! band that they could exceed that takes i64 lanes ([`cover_wide`]). Narrow triangles (most of a
+//! band that they could exceed that takes i64 lanes. Narrow triangles (most of a
 //! dense mesh's, 1–2 pixels wide) stay pixel by pixel in [`super::tile`]: a run would be mostly
 //! empty lanes.
 //!
@@ -89,23 +89,78 @@ pub(super) fn cover<'t, const W: usize>(
     if x0 > x1 || y0 > y1 {
         return (0, 0);
     }
-    let inv_area = 1.0 / edges.area2 as f32;
     let z = Vec3::from(z);
-    let (row, step_x, step_y, bias) = edge_setup(edges, x0, y0);
     // The edge functions as f64 lanes: integers below 2⁵³ in magnitude, so every step is exact,
     // and the conversion to f32 rounds once, as from the integer. With every corner and every
     // pixel centre visited (the lanes past the bounding box too) within ±g of the origin, in
-    // 1/256 pixel, |e| ≤ 2g·2g + 2g·2g + 1: below 2⁵² when g < 2²⁴ (65 536 pixels).
+    // 1/256 pixel, |e| ≤ 2g·2g + 2g·2g + 1: below 2⁵² when g < 2²⁴ (65 536 pixels). A triangle
+    // reaching farther into the guard band takes i64 lanes.
     let reach = edges.x.iter().chain(&edges.y).map(|&c| i64::from(c).abs()).max().unwrap_or(0);
     let visited = (i64::from(x1.max(y1)) + W as i64 + 1) * super::ONE;
+    let area = [x0, y0, x1, y1];
     if reach.max(visited) >= 1 << 24 {
-        return cover_wide::<W>(edges, rect, z, simple, target, runs);
+        runs_of::<i64, W>(edges, area, z, simple, target, runs)
+    } else {
+        runs_of::<f64, W>(edges, area, z, simple, target, runs)
     }
-    let lanes: [[f64; W]; 3] =
-        std::array::from_fn(|i| std::array::from_fn(|k| (k as i64 * step_x[i]) as f64));
-    let step8 = step_x.map(|s| (s * W as i64) as f64);
-    let (step_y, bias) = (step_y.map(|s| s as f64), bias.map(|b| b as f64));
-    let mut row = row.map(|e| e as f64);
+}
+
+/// An edge function's lane: the exact integer, as an f64 (below 2⁵³) or as itself.
+trait Edge: Copy + std::ops::Add<Output = Self> + std::ops::Sub<Output = Self> {
+    fn from_i64(e: i64) -> Self;
+    fn non_negative(self) -> bool;
+    /// `e as f32`, rounded once.
+    fn to_f32(self) -> f32;
+}
+
+impl Edge for f64 {
+    #[inline(always)]
+    fn from_i64(e: i64) -> f64 {
+        e as f64
+    }
+    #[inline(always)]
+    fn non_negative(self) -> bool {
+        self >= 0.0
+    }
+    #[inline(always)]
+    fn to_f32(self) -> f32 {
+        self as f32
+    }
+}
+
+impl Edge for i64 {
+    #[inline(always)]
+    fn from_i64(e: i64) -> i64 {
+        e
+    }
+    #[inline(always)]
+    fn non_negative(self) -> bool {
+        self >= 0
+    }
+    #[inline(always)]
+    fn to_f32(self) -> f32 {
+        self as f32
+    }
+}
+
+/// [`cover`]'s rows over the pixels `[x0, y0, x1, y1]` (inclusive), `W` pixels at a time, with
+/// the edge functions as `E` lanes.
+#[inline(always)]
+fn runs_of<E: Edge, const W: usize>(
+    edges: &Edges,
+    [x0, y0, x1, y1]: [u32; 4],
+    z: Vec3,
+    simple: &Simple,
+    target: &mut Target<'_>,
+    runs: &mut Vec<Run<W>>,
+) -> (u64, u64) {
+    let inv_area = 1.0 / edges.area2 as f32;
+    let (row, step_x, step_y, bias) = edge_setup(edges, x0, y0);
+    let lanes: [[E; W]; 3] =
+        std::array::from_fn(|i| std::array::from_fn(|k| E::from_i64(k as i64 * step_x[i])));
+    let step_w = step_x.map(|s| E::from_i64(s * W as i64));
+    let (step_y, bias) = (step_y.map(E::from_i64), bias.map(E::from_i64));
+    let mut row = row.map(E::from_i64);
     let (mut covered_count, mut passed_count) = (0u64, 0u64);
     for py in y0..=y1 {
         let mut e0 = row;
@@ -113,19 +168,16 @@ pub(super) fn cover<'t, const W: usize>(
         let r = (py - target.y0) as usize;
         while x <= x1 {
             let n = (x1 - x + 1).min(W as u32);
-            let mut e = [[0f64; W]; 3];
-            for i in 0..3 {
-                for k in 0..W {
-                    e[i][k] = e0[i] + lanes[i][k];
-                }
-            }
+            let e: [[E; W]; 3] =
+                std::array::from_fn(|i| std::array::from_fn(|k| e0[i] + lanes[i][k]));
             let mut covered: Mask = 0;
             for k in 0..W {
-                let inside = e[0][k] >= 0.0 && e[1][k] >= 0.0 && e[2][k] >= 0.0;
+                let inside =
+                    e[0][k].non_negative() && e[1][k].non_negative() && e[2][k].non_negative();
                 covered |= Mask::from(inside && (k as u32) < n) << k;
             }
             for i in 0..3 {
-                e0[i] += step8[i];
+                e0[i] = e0[i] + step_w[i];
             }
             let at = x;
             x += W as u32;
@@ -136,9 +188,9 @@ pub(super) fn cover<'t, const W: usize>(
             // is linear on the screen.
             let mut b = V3N::<W>::default();
             for k in 0..W {
-                b.x[k] = ((e[0][k] - bias[0]) as f32) * inv_area;
-                b.y[k] = ((e[1][k] - bias[1]) as f32) * inv_area;
-                b.z[k] = ((e[2][k] - bias[2]) as f32) * inv_area;
+                b.x[k] = (e[0][k] - bias[0]).to_f32() * inv_area;
+                b.y[k] = (e[1][k] - bias[1]).to_f32() * inv_area;
+                b.z[k] = (e[2][k] - bias[2]).to_f32() * inv_area;
             }
             let column = (at - target.x0) as usize;
             let passed = depth_test(&b, z, covered, &mut target.depth[r][column..]);
@@ -149,66 +201,7 @@ pub(super) fn cover<'t, const W: usize>(
             }
         }
         for i in 0..3 {
-            row[i] += step_y[i];
-        }
-    }
-    (covered_count, passed_count)
-}
-
-/// [`cover`] for a triangle too large for exact f64 edge functions (it reaches far into the
-/// guard band): the same pixels through i64 edge functions, `W` at a time.
-#[inline(never)]
-fn cover_wide<const W: usize>(
-    edges: &Edges,
-    rect: Rect,
-    z: Vec3,
-    simple: &Simple,
-    target: &mut Target<'_>,
-    runs: &mut Vec<Run<W>>,
-) -> (u64, u64) {
-    let [bx0, by0, bx1, by1] = edges.bbox;
-    let (x0, y0) = (bx0.max(rect.x0), by0.max(rect.y0));
-    let (x1, y1) = (bx1.min(rect.x1.saturating_sub(1)), by1.min(rect.y1.saturating_sub(1)));
-    let inv_area = 1.0 / edges.area2 as f32;
-    let (mut row, step_x, step_y, bias) = edge_setup(edges, x0, y0);
-    let (mut covered_count, mut passed_count) = (0u64, 0u64);
-    for py in y0..=y1 {
-        let mut e0 = row;
-        let mut x = x0;
-        let r = (py - target.y0) as usize;
-        while x <= x1 {
-            let n = (x1 - x + 1).min(W as u32);
-            let e: [[i64; W]; 3] =
-                std::array::from_fn(|i| std::array::from_fn(|k| e0[i] + k as i64 * step_x[i]));
-            let mut covered: Mask = 0;
-            for k in 0..W {
-                let inside = (e[0][k] | e[1][k] | e[2][k]) >= 0;
-                covered |= Mask::from(inside && (k as u32) < n) << k;
-            }
-            for i in 0..3 {
-                e0[i] += W as i64 * step_x[i];
-            }
-            let at = x;
-            x += W as u32;
-            if covered == 0 {
-                continue;
-            }
-            let mut b = V3N::<W>::default();
-            for k in 0..W {
-                b.x[k] = ((e[0][k] - bias[0]) as f32) * inv_area;
-                b.y[k] = ((e[1][k] - bias[1]) as f32) * inv_area;
-                b.z[k] = ((e[2][k] - bias[2]) as f32) * inv_area;
-            }
-            let column = (at - target.x0) as usize;
-            let passed = depth_test(&b, z, covered, &mut target.depth[r][column..]);
-            covered_count += u64::from(covered.count_ones());
-            passed_count += u64::from(passed.count_ones());
-            if passed != 0 {
-                shade(simple, &b, passed, &mut target.color[r][column..], runs, at, py);
-            }
-        }
-        for i in 0..3 {
-            row[i] += step_y[i];
+            row[i] = row[i] + step_y[i];
         }
     }
     (covered_count, passed_count)
@@ -297,17 +290,11 @@ mod tests {
     use crate::pipeline::primitive::{Cull, snap, triangle_setup};
     use crate::pipeline::tile::rasterize;
     use crate::pipeline::{GUARD_BAND_PIXELS, ScreenVertex};
+    use crate::span::tests::Cases;
 
-    /// A small deterministic generator (xorshift).
-    struct Cases(u64);
-
-    impl Cases {
-        fn next(&mut self) -> f32 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            (self.0 >> 40) as f32 / (1u64 << 24) as f32
-        }
+    /// In `[0, 1)`.
+    fn unit(cases: &mut Cases) -> f32 {
+        (cases.next() + 1.0) * 0.5
     }
 
     const WIDTH: u32 = 101;
@@ -351,7 +338,7 @@ mod tests {
                 _ => 160.0,
             };
             let corner = |cases: &mut Cases| {
-                let mut p = [cases.next(), cases.next()].map(|t| (t * 2.0 - 1.0) * reach + 50.0);
+                let mut p = [cases.next(), cases.next()].map(|t| t * reach + 50.0);
                 if round % 3 == 0 {
                     p = p.map(|v| v.round() + 0.5);
                 }
@@ -359,10 +346,11 @@ mod tests {
             };
             let s = [corner(&mut cases), corner(&mut cases), corner(&mut cases)];
             let Ok((edges, _)) = triangle_setup(s, Cull::None, WIDTH, HEIGHT) else { continue };
-            let z = [cases.next(), cases.next(), cases.next()];
-            let inv_w = [cases.next() + 0.1, cases.next() * 3.0 + 0.1, cases.next() + 0.5];
-            let colors =
-                [0, 1, 2].map(|_| Rgb::new(cases.next(), cases.next() * 2.0, -cases.next()));
+            let z = [unit(&mut cases), unit(&mut cases), unit(&mut cases)];
+            let inv_w =
+                [unit(&mut cases) + 0.1, unit(&mut cases) * 3.0 + 0.1, unit(&mut cases) + 0.5];
+            let colors = [0, 1, 2]
+                .map(|_| Rgb::new(unit(&mut cases), unit(&mut cases) * 2.0, -unit(&mut cases)));
             tested += 1;
             let reach = edges.x.iter().chain(&edges.y).map(|&c| i64::from(c).abs()).max();
             wide += usize::from(reach >= Some(1 << 24));
