@@ -6,7 +6,7 @@ use cg_core::light::LightCounts;
 use cg_core::normals::interpolate_normal;
 use cg_core::scene::Shading;
 
-use super::cover::{Gouraud, SIMPLE, STAGED, Simple, cover};
+use super::cover::{Gouraud, Mask, SIMPLE, STAGED, Simple, cover};
 use super::*;
 
 /// The pixels of one tile: its part of each of its rows of the colour and depth buffers.
@@ -88,6 +88,18 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
         span.end_triangle();
         // One fragment's stage after the depth test, where `simple` does not give its colour
         // (a macro: the same code in both loops, inlined).
+        // The triangle's attributes for Phong's spans, at its first fragment that passed: made
+        // once (a flush in its middle keeps it registered).
+        macro_rules! register {
+            () => {
+                if !span.has_triangle() {
+                    let corners = corners(triangle);
+                    let corners = corners.map(|v| (v.p_world, v.n_world, v.color, v.uv));
+                    let serial = span.serial();
+                    span.begin(span::Triangle::new(triangle.inv_w, corners, triangle.face), serial);
+                }
+            };
+        }
         macro_rules! stage {
             ($row:expr, $column:expr, $b:expr) => {{
                 let (row, column, b) = ($row, $column, $b);
@@ -95,17 +107,7 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
                     target.color[row][column] =
                         fragment(frame, draw, triangle, corners, b, &mut stats, &mut counts);
                 } else {
-                    if !span.has_triangle() {
-                        // Its first fragment that passed: made once (a flush in its middle keeps
-                        // it registered).
-                        let corners = corners(triangle);
-                        let corners = corners.map(|v| (v.p_world, v.n_world, v.color, v.uv));
-                        let serial = span.serial();
-                        span.begin(
-                            span::Triangle::new(triangle.inv_w, corners, triangle.face),
-                            serial,
-                        );
-                    }
+                    register!();
                     if span.push((row as u32, column as u32), b) {
                         flush(&mut span, target, &mut counts, &mut stats);
                     }
@@ -153,8 +155,16 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
         stats.fragments += covered;
         stats.depth_rejects += covered - passed;
         stats.fragments_shaded += passed;
+        const FULL: Mask = (1 << STAGED) - 1;
         for run in &runs {
             let (row, column) = ((run.y - target.y0) as usize, (run.x - target.x0) as usize);
+            if corners_now.is_none() && run.passed == FULL && span.is_empty() {
+                // A whole run is one span (the common case inside a large triangle).
+                register!();
+                span.fill((row as u32, column as u32), &run.b);
+                flush(&mut span, target, &mut counts, &mut stats);
+                continue;
+            }
             for k in (0..STAGED).filter(|k| run.passed >> k & 1 != 0) {
                 stage!(row, column + k, run.b.get(k));
             }
