@@ -517,13 +517,11 @@ pub(crate) struct PhongSpan {
     current: Option<u8>,
     /// Where each goes: row and column within the tile.
     at: [(u32, u32); LANES],
-    /// Each slot's triangle's serial number ([`PhongSpan::serial`]).
-    serials: [u64; LANES],
-    next_serial: u64,
-    /// The attributes gathered at the last flush, and the serial of their triangle when that
-    /// flush had one (a large triangle's spans follow one another: gathered once).
+    /// The attributes gathered at the last flush.
     gathered: Gathered,
-    gathered_for: Option<u64>,
+    /// Whether `gathered` holds slot 0's triangle in every lane (a large triangle's spans follow
+    /// one another: gathered once).
+    gathered_slot_0: bool,
     /// The points to light, made at each flush (kept: nothing to clear).
     points: Points,
 }
@@ -546,15 +544,10 @@ impl PhongSpan {
     }
 
     /// Registers the triangle whose fragments come next.
-    /// A number for a new triangle, for [`PhongSpan::begin`]: each time the same triangle
-    /// registers again (a span ended in its middle), it gives the same number.
-    pub(crate) fn serial(&mut self) -> u64 {
-        self.next_serial += 1;
-        self.next_serial
-    }
-
-    pub(crate) fn begin(&mut self, triangle: Triangle, serial: u64) {
-        self.serials[self.count] = serial;
+    pub(crate) fn begin(&mut self, triangle: Triangle) {
+        if self.count == 0 {
+            self.gathered_slot_0 = false;
+        }
         self.triangles[self.count] = triangle;
         self.current = Some(self.count as u8);
         self.count += 1;
@@ -615,8 +608,8 @@ impl PhongSpan {
         if self.count == 1 {
             // One triangle (the common case for large ones): its attributes in every lane, as
             // the last flush left them when it was the same triangle.
-            if self.gathered_for != Some(self.serials[0]) {
-                self.gathered_for = Some(self.serials[0]);
+            if !self.gathered_slot_0 {
+                self.gathered_slot_0 = true;
                 let t = &self.triangles[0];
                 for k in 0..3 {
                     g.inv_w[k] = [t.inv_w[k]; LANES];
@@ -630,7 +623,7 @@ impl PhongSpan {
                 g.certified = [t.unit.is_some(); LANES];
             }
         } else {
-            self.gathered_for = None;
+            self.gathered_slot_0 = false;
             for i in 0..LANES {
                 let t = &self.triangles[usize::from(self.slot[i])];
                 for k in 0..3 {
@@ -676,11 +669,10 @@ impl PhongSpan {
             Some(k) => {
                 let k = usize::from(k);
                 self.triangles[0] = self.triangles[k];
-                self.serials[0] = self.serials[k];
                 self.count = 1;
                 self.current = Some(0);
                 if k != 0 {
-                    self.gathered_for = None;
+                    self.gathered_slot_0 = false;
                 }
             }
             None => self.count = 0,

@@ -86,8 +86,6 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
         let spanned = spans.is_some() && draw.lit;
         let corners_now = (!spanned).then(|| corners(triangle));
         span.end_triangle();
-        // One fragment's stage after the depth test, where `simple` does not give its colour
-        // (a macro: the same code in both loops, inlined).
         // The triangle's attributes for Phong's spans, at its first fragment that passed: made
         // once (a flush in its middle keeps it registered).
         macro_rules! register {
@@ -95,11 +93,12 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
                 if !span.has_triangle() {
                     let corners = corners(triangle);
                     let corners = corners.map(|v| (v.p_world, v.n_world, v.color, v.uv));
-                    let serial = span.serial();
-                    span.begin(span::Triangle::new(triangle.inv_w, corners, triangle.face), serial);
+                    span.begin(span::Triangle::new(triangle.inv_w, corners, triangle.face));
                 }
             };
         }
+        // One fragment's stage after the depth test, where `simple` does not give its colour
+        // (a macro: the same code in both loops, inlined).
         macro_rules! stage {
             ($row:expr, $column:expr, $b:expr) => {{
                 let (row, column, b) = ($row, $column, $b);
