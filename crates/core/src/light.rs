@@ -77,7 +77,7 @@
 use glam::Vec3;
 
 use crate::Rgb;
-use crate::math::{cross_f64, try_normalize, try_normalize_f64};
+use crate::math::{cross_f64, try_normalize, try_normalize_f64, try_unit_and_length_f64};
 use crate::optics::reflect;
 
 /// The reflection properties of a surface (物体の反射特性). Every `k` is RGB.
@@ -493,9 +493,8 @@ impl Light {
             LightKind::Point { position } | LightKind::Spot { position, .. } => *position,
             LightKind::Area { corner, edge_u, edge_v, .. } => *corner + 0.5 * (*edge_u + *edge_v),
         };
-        let to_light = position.as_dvec3() - p.as_dvec3();
-        let l = try_normalize_f64(to_light)?;
-        Some((l.as_vec3(), to_light.length() as f32))
+        let (l, d) = try_unit_and_length_f64(position.as_dvec3() - p.as_dvec3())?;
+        Some((l.as_vec3(), d as f32))
     }
 
     /// Whether the light's distance attenuation changes anything: never for a directional light
@@ -580,7 +579,8 @@ impl LightModel {
     #[must_use]
     pub fn view_vector(self, p: Vec3, eye: Vec3, backward: Vec3) -> Vec3 {
         if self.local_viewer() {
-            try_normalize_f64(eye.as_dvec3() - p.as_dvec3()).map_or(backward, |v| v.as_vec3())
+            try_unit_and_length_f64(eye.as_dvec3() - p.as_dvec3())
+                .map_or(backward, |(v, _)| v.as_vec3())
         } else {
             backward
         }

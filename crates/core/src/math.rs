@@ -112,6 +112,34 @@ pub fn try_normalize_f64(v: DVec3) -> Option<DVec3> {
     Some(u / u.length())
 }
 
+/// Below this squared length [`try_unit_and_length_f64`] takes [`try_normalize_f64`]'s way:
+/// a component whose square underflows could then matter.
+pub const DIRECT_UNIT_MIN: f64 = f64::from_bits((1023 - 600) << 52);
+
+/// `v/|v|` and `|v|` in f64, or `None` for a zero or non-finite `v`: the unit vector the
+/// lights' directions (L, V) and the interpolated normals use, in the cheap form
+/// `v · (1/√(v·v))` — one square root and one division for the three components, where
+/// [`try_normalize_f64`] divides six times — whenever `v·v` lies in `[2⁻⁶⁰⁰, f64::MAX]`.
+///
+/// Every vector those callers pass qualifies: its components are zero or differences of two
+/// f32s, or sums of products of two f32s, so of magnitude within `[2⁻²⁹⁸, 2²⁶⁰]`, and neither
+/// the squares nor the sum can overflow or lose anything to underflow. Each component is within
+/// 5 · 2⁻⁵³ (relative) of the exact unit vector's, as [`try_normalize_f64`]'s is: rounded to
+/// f32, the two agree but where a component lies within about 2⁻⁴⁹ of an f32 rounding boundary,
+/// and differ there by one ulp of f32. Outside that
+/// range it is [`try_normalize_f64`] with `v.length()`. `|v|` is `DVec3::length`'s, bit for bit.
+#[must_use]
+#[inline]
+pub fn try_unit_and_length_f64(v: DVec3) -> Option<(DVec3, f64)> {
+    let squared = v.length_squared();
+    if (DIRECT_UNIT_MIN..f64::INFINITY).contains(&squared) {
+        let length = squared.sqrt();
+        Some((v * (1.0 / length), length))
+    } else {
+        try_normalize_f64(v).map(|u| (u, v.length()))
+    }
+}
+
 /// [`try_normalize`], or `fallback` (returned as given) when `v` is zero or not finite.
 #[must_use]
 #[inline]
@@ -200,6 +228,58 @@ mod tests {
         assert_eq!(try_normalize(Vec3::new(f32::INFINITY, 0.0, 0.0)), None);
         assert_eq!(try_normalize(Vec3::new(0.0, f32::NAN, 1.0)), None);
         assert_eq!(normalize_or(Vec3::ZERO, Vec3::Y), Vec3::Y);
+    }
+
+    #[test]
+    fn unit_and_length_agrees_with_the_careful_normalisation() {
+        use rand::rngs::StdRng;
+        use rand::{RngExt, SeedableRng};
+        let mut rng = StdRng::seed_from_u64(18);
+        // Differences of two f32s of every magnitude (the lights' L and V), subnormals included.
+        let f32_value = |rng: &mut StdRng| -> f32 {
+            let v = f32::from_bits(rng.random::<u32>() & 0x7fff_ffff);
+            let v = if v.is_finite() { v } else { 1.0 };
+            if rng.random::<bool>() { v } else { -v }
+        };
+        let (mut vectors, mut one_ulp) = (0, 0);
+        for _ in 0..200_000 {
+            let scale = 2f32.powi(rng.random_range(-140..120));
+            let a = Vec3::new(f32_value(&mut rng), f32_value(&mut rng), f32_value(&mut rng));
+            let b = a + Vec3::new(rng.random(), rng.random(), rng.random()) * scale;
+            let v = b.as_dvec3() - a.as_dvec3();
+            let (Some((unit, length)), Some(careful)) =
+                (try_unit_and_length_f64(v), try_normalize_f64(v))
+            else {
+                assert!(
+                    try_unit_and_length_f64(v).is_none() && try_normalize_f64(v).is_none(),
+                    "{v}"
+                );
+                continue;
+            };
+            vectors += 1;
+            assert_eq!(length.to_bits(), v.length().to_bits(), "{v}");
+            for k in 0..3 {
+                assert!(
+                    (unit[k] - careful[k]).abs() <= 10.0 * f64::EPSILON / 2.0 * careful[k].abs(),
+                    "{v}: {unit} against {careful}"
+                );
+                let (u, c) = (unit[k] as f32, careful[k] as f32);
+                assert!(u == c || u.to_bits().abs_diff(c.to_bits()) == 1, "{v}: {u} against {c}");
+                one_ulp += usize::from(u != c);
+            }
+        }
+        assert!(vectors > 100_000, "{vectors}");
+        // Rounded to f32 they differ only where a component lies next to a rounding boundary.
+        assert!(one_ulp * 10_000 < vectors, "{one_ulp} of {vectors}");
+        // Zero and non-finite vectors have no direction; tiny and huge ones take the careful way.
+        assert_eq!(try_unit_and_length_f64(DVec3::ZERO), None);
+        assert_eq!(try_unit_and_length_f64(DVec3::new(f64::NAN, 0.0, 1.0)), None);
+        assert_eq!(try_unit_and_length_f64(DVec3::new(f64::INFINITY, 0.0, 1.0)), None);
+        for v in [DVec3::new(3e-300, 4e-300, 0.0), DVec3::new(3e200, -4e200, 0.0)] {
+            let (unit, _) = try_unit_and_length_f64(v).unwrap();
+            assert_eq!(unit, try_normalize_f64(v).unwrap(), "{v}");
+            assert!((unit - DVec3::new(0.6, v.y.signum() * 0.8, 0.0)).length() < 1e-15, "{unit}");
+        }
     }
 
     #[test]

@@ -13,7 +13,7 @@
 //! point, the scene's constant terms made once per frame, and every term the scene does not use
 //! skipped for the whole span.
 //!
-//! **Why sixteen.** Each lane's f64 normalisations are a chain of divisions and a square root
+//! **Why sixteen.** Each lane's f64 normalisations are a chain of a square root and a division
 //! whose latency, not their count, bounds a span: sixteen lanes give the core two independent
 //! chains of AVX2 vectors to overlap. Measured side by side on the course scene in Phong (one
 //! thread, the whole frame): spans of sixteen took 0.75 of the time of spans of eight; spans of
@@ -35,7 +35,7 @@ use cg_core::glam::{DVec3, Vec3};
 use cg_core::light::{
     Light, LightCounts, LightKind, LightModel, Material, Specular, attenuation, spot_factor,
 };
-use cg_core::math::try_normalize;
+use cg_core::math::{DIRECT_UNIT_MIN, try_normalize, try_unit_and_length_f64};
 use multiversion::multiversion;
 
 /// Points lit at once.
@@ -183,18 +183,36 @@ fn length64(x: f64, y: f64, z: f64) -> f64 {
     (x * x + y * y + z * z).sqrt()
 }
 
-/// [`cg_core::math::try_normalize_f64`] lane by lane, with its arithmetic (divide by the largest
-/// magnitude, then by the length): the unit vectors, and whether each exists (`false` for a zero
-/// or non-finite vector, whose lane then holds garbage).
+/// [`cg_core::math::try_unit_and_length_f64`] lane by lane, with its arithmetic (`v · (1/√(v·v))`):
+/// the unit vectors, the lengths, and whether each exists (`false` for a zero or non-finite
+/// vector, whose lane then holds garbage).
 #[inline(always)]
-fn try_normalize64(v: &D3, unit: &mut D3, valid: &mut [bool; LANES]) {
+fn units64(v: &D3, unit: &mut D3, length: &mut Lanes64, valid: &mut [bool; LANES]) {
     for i in 0..LANES {
         let (x, y, z) = (v.x[i], v.y[i], v.z[i]);
-        let m = x.abs().max(y.abs().max(z.abs()));
-        valid[i] = x.is_finite() && y.is_finite() && z.is_finite() && m != 0.0;
-        let (ux, uy, uz) = (x / m, y / m, z / m);
-        let length = length64(ux, uy, uz);
-        (unit.x[i], unit.y[i], unit.z[i]) = (ux / length, uy / length, uz / length);
+        let squared = x * x + y * y + z * z;
+        valid[i] = (DIRECT_UNIT_MIN..f64::INFINITY).contains(&squared);
+        let l = squared.sqrt();
+        let inverse = 1.0 / l;
+        (unit.x[i], unit.y[i], unit.z[i]) = (x * inverse, y * inverse, z * inverse);
+        length[i] = l;
+    }
+    if !valid.iter().fold(true, |all, &v| all & v) {
+        units64_rest(v, unit, length, valid);
+    }
+}
+
+/// The lanes [`units64`] left: zero or non-finite vectors (`None`), or ones too short or too long
+/// for its shortcut, which no span's vector is (see [`try_unit_and_length_f64`]).
+#[cold]
+#[inline(never)]
+fn units64_rest(v: &D3, unit: &mut D3, length: &mut Lanes64, valid: &mut [bool; LANES]) {
+    for i in 0..LANES {
+        if !valid[i]
+            && let Some((u, l)) = try_unit_and_length_f64(DVec3::new(v.x[i], v.y[i], v.z[i]))
+        {
+            (unit.x[i], unit.y[i], unit.z[i], length[i], valid[i]) = (u.x, u.y, u.z, l, true);
+        }
     }
 }
 
@@ -221,10 +239,11 @@ fn interpolate_normals(
             w[0].abs() * lengths[0][i] + w[1].abs() * lengths[1][i] + w[2].abs() * lengths[2][i];
     }
     let mut unit = D3::default();
+    let mut length = [0.0f64; LANES];
     let mut keep = [false; LANES];
-    try_normalize64(&sum, &mut unit, &mut keep);
+    units64(&sum, &mut unit, &mut length, &mut keep);
     for i in 0..LANES {
-        keep[i] &= length64(sum.x[i], sum.y[i], sum.z[i]) > CANCEL_FRACTION * magnitude[i];
+        keep[i] &= length[i] > CANCEL_FRACTION * magnitude[i];
         out.x[i] = unit.x[i] as f32;
         out.y[i] = unit.y[i] as f32;
         out.z[i] = unit.z[i] as f32;
@@ -244,7 +263,8 @@ fn directions(to: DVec3, p: &V3, l: &mut V3, d: Option<&mut Lanes>, valid: &mut 
         v.z[i] = to.z - f64::from(p.z[i]);
     }
     let mut unit = D3::default();
-    try_normalize64(&v, &mut unit, valid);
+    let mut length = [0.0f64; LANES];
+    units64(&v, &mut unit, &mut length, valid);
     for i in 0..LANES {
         l.x[i] = unit.x[i] as f32;
         l.y[i] = unit.y[i] as f32;
@@ -252,7 +272,7 @@ fn directions(to: DVec3, p: &V3, l: &mut V3, d: Option<&mut Lanes>, valid: &mut 
     }
     if let Some(d) = d {
         for i in 0..LANES {
-            d[i] = length64(v.x[i], v.y[i], v.z[i]) as f32;
+            d[i] = length[i] as f32;
         }
     }
 }
@@ -455,7 +475,8 @@ pub(crate) struct Triangle {
 /// With weights `w ≥ 0`, not all zero, each `nᶜ·wₖ` is exact in f64 (two f32s' product fits in
 /// 48 bits) and the three have one sign, so the sum is `nᶜ·Σw` times `1 + δ`, `|δ| ≤ 2⁻⁵²`, per
 /// component; normalising divides out `Σw`, and the whole fragment's arithmetic puts each
-/// component within `2⁻⁴⁹` (relative) of `try_normalize_f64(n)`'s. Where that component is
+/// component within `7 · 2⁻⁵³` (relative) of the exact unit vector's, and so within `2⁻⁴⁹` of
+/// `try_normalize_f64(n)`'s (itself within `5 · 2⁻⁵³`). Where that component is
 /// farther than `2⁻⁴⁰` (relative) from a rounding boundary of f32, every fragment's rounding to
 /// f32 gives the same value; otherwise (about one triangle in 10⁵) the fragments go the usual way.
 /// The cancellation test cannot fail either: `|Σ| = Σw·|n|·(1 ± 2⁻⁵⁰)`.

@@ -22,7 +22,9 @@
 use glam::{DMat3, DVec3, Mat3, Mat4, Vec3};
 
 use crate::lang::{Lang, Text};
-use crate::math::{cross_f64, cross_kahan_f64, try_normalize, try_normalize_f64};
+use crate::math::{
+    cross_f64, cross_kahan_f64, try_normalize, try_normalize_f64, try_unit_and_length_f64,
+};
 use crate::mesh::{CornersByVertex, Mesh, MeshError, find_root, gather, union};
 use crate::scene::NormalSource;
 
@@ -725,8 +727,8 @@ pub fn interpolate_normal(normals: [Vec3; 3], barycentric: Vec3, face_normal: Ve
     let [n0, n1, n2] = normals.map(Vec3::as_dvec3);
     let sum = n0 * w.x + n1 * w.y + n2 * w.z;
     let magnitude = w.x.abs() * n0.length() + w.y.abs() * n1.length() + w.z.abs() * n2.length();
-    if sum.length() > CANCEL_FRACTION * magnitude
-        && let Some(n) = try_normalize_f64(sum)
+    if let Some((n, length)) = try_unit_and_length_f64(sum)
+        && length > CANCEL_FRACTION * magnitude
     {
         return n.as_vec3();
     }
