@@ -324,6 +324,20 @@ pub(crate) fn light(
     out: &mut V3,
     counts: &mut LightCounts,
 ) {
+    light_lanes(lights, material, colored, points, out, counts);
+}
+
+/// [`light`]'s body, inlined where it is called (so that the fragment stage and the light model
+/// are compiled as one, see [`shade_fragments`]).
+#[inline(always)]
+fn light_lanes(
+    lights: &SpanLights,
+    material: &Material,
+    colored: bool,
+    points: &Points,
+    out: &mut V3,
+    counts: &mut LightCounts,
+) {
     let len = points.len;
     let lanes = len as u64;
     counts.evaluations += lanes;
@@ -662,27 +676,28 @@ impl PhongSpan {
         let mut b = V3::default();
         let points = &mut self.points;
         points.len = len;
-        let keep = fragments(&self.b, g, colored, &mut b, points);
-        for i in 0..len {
-            if !keep[i] {
-                points.n.set(i, face(self.triangles[usize::from(self.slot[i])].face));
-            }
-        }
         let mut lit = V3::default();
-        light(lights, material, colored, points, &mut lit, counts);
-        for i in 0..len {
-            let lit = saturate(lit.get(i));
-            let color = match texture {
-                None => lit,
-                Some(t) => {
+        let (triangles, slot) = (&self.triangles, &self.slot);
+        let mut face = |i: usize| face(triangles[usize::from(slot[i])].face);
+        let stage = Stage { lights, material, colored };
+        shade_fragments(&stage, &self.b, g, &mut b, points, &mut face, &mut lit, counts);
+        // `lit` is clamped already (`shade_fragments`).
+        match texture {
+            None => {
+                for i in 0..len {
+                    write(self.at[i].0, self.at[i].1, lit.get(i));
+                }
+            }
+            Some(t) => {
+                for i in 0..len {
                     // Shifted by the triangle's origin (an integer under repeat): small numbers.
                     let uv = &self.triangles[usize::from(self.slot[i])].uv;
                     let bi = b.get(i);
                     let uv = bi.x * uv[0] + bi.y * uv[1] + bi.z * uv[2];
-                    t.env.apply(lit, t.texture.sample(uv, t.sampler))
+                    let color = t.env.apply(lit.get(i), t.texture.sample(uv, t.sampler));
+                    write(self.at[i].0, self.at[i].1, saturate(color));
                 }
-            };
-            write(self.at[i].0, self.at[i].1, saturate(color));
+            }
         }
         self.len = 0;
         // The triangle being drawn stays, as the next span's first: its fragments go on.
@@ -714,10 +729,49 @@ struct Gathered {
     certified: [bool; LANES],
 }
 
+/// What lights a span: the scene's lights, the object's material, and whether the points have
+/// their own colours.
+struct Stage<'a> {
+    lights: &'a SpanLights,
+    material: &'a Material,
+    colored: bool,
+}
+
+/// The fragment stage of a span and its light model, compiled as one (the points stay where the
+/// light model reads them at the width they were written): [`fragments`], the face normal
+/// `face(lane)` where a lane's normals cancel, then [`light`] into `lit`, clamped to `[0, 1]` as
+/// [`saturate`] clamps.
+#[multiversion(targets("x86_64+avx2+fma"))]
+#[allow(clippy::too_many_arguments)]
+fn shade_fragments<'a>(
+    stage: &Stage<'a>,
+    screen: &V3,
+    g: &Gathered,
+    b: &mut V3,
+    points: &mut Points,
+    face: &mut dyn FnMut(usize) -> Vec3,
+    lit: &mut V3,
+    counts: &mut LightCounts,
+) {
+    let keep = fragments(screen, g, stage.colored, b, points);
+    for i in 0..points.len {
+        if !keep[i] {
+            points.n.set(i, face(i));
+        }
+    }
+    light_lanes(stage.lights, stage.material, stage.colored, points, lit, counts);
+    // Clamped as `saturate` clamps, all lanes at once.
+    for channel in [&mut lit.x, &mut lit.y, &mut lit.z] {
+        for x in channel.iter_mut() {
+            *x = if *x > 0.0 { x.min(1.0) } else { 0.0 };
+        }
+    }
+}
+
 /// The fragment stage before lighting, for each lane: perspective-correct barycentrics `b` from
 /// the screen-space `screen`, then the position, the colour (when `colored`) and the normal
 /// interpolated into `points`. Gives which normals are usable ([`interpolate_normals`]).
-#[multiversion(targets("x86_64+avx2+fma"))]
+#[inline(always)]
 fn fragments(
     screen: &V3,
     g: &Gathered,
