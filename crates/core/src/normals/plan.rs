@@ -667,7 +667,8 @@ fn tile_records(
     let mut largest: [f64; 4] = std::array::from_fn(|k| (-low[k]).max(high[k]));
     let clean =
         (0..4).all(|k| largest[k] < f64::INFINITY && smallest[k] * EXACT_RANGE >= largest[k]);
-    if !clean {
+    // (Where every coordinate's range is finite, it is already the largest finite magnitude.)
+    if !clean && !largest.iter().all(|l| l.is_finite()) {
         largest = largest_finite(corners);
     }
     let (low, high) = if clean { (low, high) } else { mark_untrusted(corners, largest) };
