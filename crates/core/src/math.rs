@@ -124,9 +124,9 @@ pub const DIRECT_UNIT_MIN: f64 = f64::from_bits((1023 - 600) << 52);
 /// Every vector those callers pass qualifies: its components are zero or differences of two
 /// f32s, or sums of products of two f32s, so of magnitude within `[2⁻²⁹⁸, 2²⁶⁰]`, and neither
 /// the squares nor the sum can overflow or lose anything to underflow. Each component is within
-/// 5 · 2⁻⁵³ (relative) of the exact unit vector's, as [`try_normalize_f64`]'s is: rounded to
-/// f32, the two agree but where a component lies within about 2⁻⁴⁹ of an f32 rounding boundary,
-/// and differ there by one ulp of f32. Outside that
+/// 5 units of f64 rounding (u = 2⁻⁵³, relative) of the exact unit vector's, and
+/// [`try_normalize_f64`]'s within 6: rounded to f32 the two agree, but where a component lies
+/// within 2⁻⁴⁹ (relative) of an f32 rounding boundary, and differ there by one ulp of f32. Outside that
 /// range it is [`try_normalize_f64`] with `v.length()`. `|v|` is `DVec3::length`'s, bit for bit.
 #[must_use]
 #[inline]

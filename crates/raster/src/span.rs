@@ -489,8 +489,8 @@ pub(crate) struct Triangle {
 /// With weights `w ≥ 0`, not all zero, each `nᶜ·wₖ` is exact in f64 (two f32s' product fits in
 /// 48 bits) and the three have one sign, so the sum is `nᶜ·Σw` times `1 + δ`, `|δ| ≤ 2⁻⁵²`, per
 /// component; normalising divides out `Σw`, and the whole fragment's arithmetic puts each
-/// component within `7 · 2⁻⁵³` (relative) of the exact unit vector's, and so within `2⁻⁴⁹` of
-/// `try_normalize_f64(n)`'s (itself within `5 · 2⁻⁵³`). Where that component is
+/// component within `9 · 2⁻⁵³` (relative) of the exact unit vector's, and so within `2⁻⁴⁹` of
+/// `try_normalize_f64(n)`'s (itself within `6 · 2⁻⁵³`). Where that component is
 /// farther than `2⁻⁴⁰` (relative) from a rounding boundary of f32, every fragment's rounding to
 /// f32 gives the same value; otherwise (about one triangle in 10⁵) the fragments go the usual way.
 /// The cancellation test cannot fail either: `|Σ| = Σw·|n|·(1 ± 2⁻⁵⁰)`.
