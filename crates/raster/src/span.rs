@@ -316,28 +316,20 @@ fn add_term(sum: &mut V3, s: &Lanes, c: Vec3, k: &V3, f: &Lanes) {
 /// `colored`): the unclamped colour into `out`, the work into `counts`. Lane `i` gives
 /// `shade(…).total()` of its point, bit for bit.
 #[multiversion(targets("x86_64+avx2+fma"))]
-pub(crate) fn light(
-    lights: &SpanLights,
-    material: &Material,
-    colored: bool,
+pub(crate) fn light<'a>(
+    stage: &Stage<'a>,
     points: &Points,
     out: &mut V3,
     counts: &mut LightCounts,
 ) {
-    light_lanes(lights, material, colored, points, out, counts);
+    light_lanes(stage, points, out, counts);
 }
 
 /// [`light`]'s body, inlined where it is called (so that the fragment stage and the light model
 /// are compiled as one, see [`shade_fragments`]).
 #[inline(always)]
-fn light_lanes(
-    lights: &SpanLights,
-    material: &Material,
-    colored: bool,
-    points: &Points,
-    out: &mut V3,
-    counts: &mut LightCounts,
-) {
+fn light_lanes(stage: &Stage<'_>, points: &Points, out: &mut V3, counts: &mut LightCounts) {
+    let Stage { lights, material, colored } = *stage;
     let len = points.len;
     let lanes = len as u64;
     counts.evaluations += lanes;
@@ -731,10 +723,11 @@ struct Gathered {
 
 /// What lights a span: the scene's lights, the object's material, and whether the points have
 /// their own colours.
-struct Stage<'a> {
-    lights: &'a SpanLights,
-    material: &'a Material,
-    colored: bool,
+#[derive(Clone, Copy)]
+pub(crate) struct Stage<'a> {
+    pub(crate) lights: &'a SpanLights,
+    pub(crate) material: &'a Material,
+    pub(crate) colored: bool,
 }
 
 /// The fragment stage of a span and its light model, compiled as one (the points stay where the
@@ -759,7 +752,7 @@ fn shade_fragments<'a>(
             points.n.set(i, face(i));
         }
     }
-    light_lanes(stage.lights, stage.material, stage.colored, points, lit, counts);
+    light_lanes(stage, points, lit, counts);
     // Clamped as `saturate` clamps, all lanes at once.
     for channel in [&mut lit.x, &mut lit.y, &mut lit.z] {
         for x in channel.iter_mut() {

@@ -140,7 +140,8 @@ fn the_light_model_is_the_reference_bit_for_bit() {
                 }
                 let mut out = V3::default();
                 let mut counts = LightCounts::default();
-                super::light(&spans, &material, colored, &points, &mut out, &mut counts);
+                let stage = super::Stage { lights: &spans, material: &material, colored };
+                super::light(&stage, &points, &mut out, &mut counts);
                 let mut expected_counts = LightCounts::default();
                 for i in 0..len {
                     let p = points.p.get(i);

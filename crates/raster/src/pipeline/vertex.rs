@@ -85,7 +85,12 @@ pub(super) fn vertex_stage<L: Lighting + ?Sized>(
                     }
                     let mut lit = V3::default();
                     let (material, has) = (&draw.material, draw.has_colors());
-                    span::light(lights, material, has, &points, &mut lit, &mut counts);
+                    span::light(
+                        &span::Stage { lights, material, colored: has },
+                        &points,
+                        &mut lit,
+                        &mut counts,
+                    );
                     for (i, v) in chunk.iter_mut().enumerate() {
                         v.color = saturate(lit.get(i));
                     }
