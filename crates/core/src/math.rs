@@ -126,8 +126,9 @@ pub const DIRECT_UNIT_MIN: f64 = f64::from_bits((1023 - 600) << 52);
 /// the squares nor the sum can overflow or lose anything to underflow. Each component is within
 /// 5 units of f64 rounding (u = 2⁻⁵³, relative) of the exact unit vector's, and
 /// [`try_normalize_f64`]'s within 6: rounded to f32 the two agree, but where a component lies
-/// within 2⁻⁴⁹ (relative) of an f32 rounding boundary, and differ there by one ulp of f32. Outside that
-/// range it is [`try_normalize_f64`] with `v.length()`. `|v|` is `DVec3::length`'s, bit for bit.
+/// within 2⁻⁴⁹ (relative) of an f32 rounding boundary, and differ there by one ulp of f32.
+/// Where `v·v` lies outside that range it is [`try_normalize_f64`] with `v.length()`. `|v|` is
+/// `DVec3::length`'s, bit for bit.
 #[must_use]
 #[inline]
 pub fn try_unit_and_length_f64(v: DVec3) -> Option<(DVec3, f64)> {

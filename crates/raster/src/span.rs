@@ -755,9 +755,7 @@ fn shade_fragments<'a>(
     light_lanes(stage, points, lit, counts);
     // Clamped as `saturate` clamps, all lanes at once.
     for channel in [&mut lit.x, &mut lit.y, &mut lit.z] {
-        for x in channel.iter_mut() {
-            *x = if *x > 0.0 { x.min(1.0) } else { 0.0 };
-        }
+        channel.iter_mut().for_each(|x| *x = clamp_channel(*x));
     }
 }
 
@@ -830,8 +828,13 @@ pub(crate) fn interpolate<const N: usize>(b: &V3N<N>, a: &[V3N<N>; 3], out: &mut
 /// A colour clamped to `[0, 1]` per channel, NaN taken as 0 (OpenGL's clamp of the lit colour).
 #[inline]
 pub(crate) fn saturate(c: Rgb) -> Rgb {
-    let channel = |x: f32| if x > 0.0 { x.min(1.0) } else { 0.0 };
-    Rgb::new(channel(c.x), channel(c.y), channel(c.z))
+    Rgb::new(clamp_channel(c.x), clamp_channel(c.y), clamp_channel(c.z))
+}
+
+/// One channel clamped to `[0, 1]`, NaN taken as 0 ([`saturate`]).
+#[inline(always)]
+fn clamp_channel(x: f32) -> f32 {
+    if x > 0.0 { x.min(1.0) } else { 0.0 }
 }
 
 #[cfg(test)]

@@ -359,15 +359,23 @@ mod tests {
     /// The window path without a window: the frame kept for the surface follows the camera
     /// (moved, not made again) and is made again when the objects change, and what a
     /// screenshot reads back is the fresh render of the scene of the moment.
-    #[test]
-    fn the_presented_frame_follows_the_camera_and_is_made_again_for_new_geometry() {
-        let mut gpu = match GpuBackend::new(Lang::En) {
-            Ok(gpu) => gpu,
+    /// The GPU backend, or `None` (with a note that `what` is not tested) where there is no
+    /// adapter — never in CI, which has lavapipe.
+    fn backend_or_skip(what: &str) -> Option<GpuBackend> {
+        match GpuBackend::new(Lang::En) {
+            Ok(gpu) => Some(gpu),
             Err(why) => {
                 assert!(std::env::var_os("CI").is_none(), "CI has lavapipe: {why}");
-                eprintln!("note: no GPU adapter, the presented frame is not tested: {why}");
-                return;
+                eprintln!("note: no GPU adapter, {what}: {why}");
+                None
             }
+        }
+    }
+
+    #[test]
+    fn the_presented_frame_follows_the_camera_and_is_made_again_for_new_geometry() {
+        let Some(mut gpu) = backend_or_skip("the presented frame is not tested") else {
+            return;
         };
         let chosen = backends_for(RendererChoice::Gpu, Some(1), Lang::En).unwrap();
         assert!(chosen[0].name().starts_with("GPU") && chosen[1].name() == "CPU");
@@ -397,13 +405,8 @@ mod tests {
 
     #[test]
     fn the_gpu_backend_shows_what_the_cpu_backend_shows() {
-        let mut gpu = match GpuBackend::new(Lang::En) {
-            Ok(gpu) => gpu,
-            Err(why) => {
-                assert!(std::env::var_os("CI").is_none(), "CI has lavapipe: {why}");
-                eprintln!("note: no GPU adapter, the GPU backend is not tested: {why}");
-                return;
-            }
+        let Some(mut gpu) = backend_or_skip("the GPU backend is not tested") else {
+            return;
         };
         assert!(gpu.name().starts_with("GPU"), "{}", gpu.name());
         let scene = cg_harness::course::scene();
