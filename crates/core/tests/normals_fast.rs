@@ -9,18 +9,22 @@ mod common;
 
 use cg_core::mesh::Mesh;
 use cg_core::normals::{
-    Fallback, Weighting, area_vertex_normals_without_fma, vertex_normals, vertex_normals_reference,
+    Fallback, Weighting, area_vertex_normals_without_fma, area_vertex_normals_without_simd,
+    vertex_normals, vertex_normals_reference,
 };
 use cg_core::shapes::icosphere;
 use cg_testkit::Inputs;
 use common::{bits, large_random_mesh, random_mesh};
 use glam::Vec3;
 
-/// Both kernels of the fast path (the one this CPU picks, and the one a CPU without FMA runs)
-/// give the reference's bits.
+/// Every set of the fast path's kernels (the one this CPU picks, the compiler's with FMA, and the
+/// one a CPU without FMA runs) gives the reference's bits.
 fn assert_same(mesh: &Mesh, what: &str) {
     let reference = bits(&vertex_normals_reference(mesh, Weighting::Area));
     assert_eq!(bits(&vertex_normals(mesh, Weighting::Area)), reference, "{what}");
+    if let Some(compiled) = area_vertex_normals_without_simd(mesh) {
+        assert_eq!(bits(&compiled), reference, "{what} (kernels without SIMD)");
+    }
     if let Some(portable) = area_vertex_normals_without_fma(mesh) {
         assert_eq!(bits(&portable), reference, "{what} (kernel without FMA)");
     }

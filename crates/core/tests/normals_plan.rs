@@ -3,8 +3,9 @@
 //! frame with one plan: on icospheres near and far from the origin (numbered as the kit makes
 //! them, and at random), on seeded random meshes full of every hard case (shared with
 //! `normals_fast.rs`), on one large mesh of them in random vertex order, and on fans whose centre
-//! has more faces than a tile takes. Both face kernels (the one this CPU picks, and the one a
-//! CPU without FMA runs). Faces out of range and positions of the wrong length are errors.
+//! has more faces than a tile takes. Every set of kernels (the hand-vectorised ones this CPU
+//! picks, the compiler's with FMA, and those of a CPU without FMA). Faces out of range and
+//! positions of the wrong length are errors.
 
 mod common;
 
@@ -18,12 +19,15 @@ use cg_testkit::Inputs;
 use common::{bits, corner, large_random_mesh, random_mesh, shuffled};
 use glam::Vec3;
 
-/// Both kernels of the plan give the reference's bits for `mesh`'s positions, written over
-/// whatever `out` held before.
+/// Every set of the plan's kernels (the hand-vectorised ones this CPU may pick, the compiler's
+/// with FMA, and those of a CPU without FMA) gives the reference's bits for `mesh`'s positions,
+/// written over whatever `out` held before.
 fn assert_frame(plan: &mut NormalsPlan, mesh: &Mesh, out: &mut VertexNormals, what: &str) {
     let reference = bits(&vertex_normals_reference(mesh, Weighting::Area));
     plan.area_normals_into(&mesh.positions, out).unwrap();
     assert_eq!(bits(out), reference, "{what}");
+    plan.area_normals_into_without_simd(&mesh.positions, out).unwrap();
+    assert_eq!(bits(out), reference, "{what} (kernels without SIMD)");
     plan.area_normals_into_without_fma(&mesh.positions, out).unwrap();
     assert_eq!(bits(out), reference, "{what} (kernel without FMA)");
 }

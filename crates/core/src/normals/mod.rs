@@ -33,6 +33,27 @@ mod plan;
 
 pub use plan::{NormalsPlan, PlanError};
 
+/// Which kernels a fast path may use: all that this CPU has, or fewer, for the tests (which must
+/// cover every kernel on any machine) and the benchmarks. Every choice gives the same bits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kernels {
+    /// The best this CPU has: on x86-64 with AVX2 and FMA, the hand-vectorised kernels.
+    Best,
+    /// The compiler's code, with FMA where the CPU has it (as on an ARM Mac).
+    Compiled,
+    /// The code a CPU without FMA runs (plain x86-64).
+    NoFma,
+}
+
+impl Kernels {
+    /// The token of the hand-vectorised kernels (AVX2 and FMA), where they may run.
+    #[cfg(target_arch = "x86_64")]
+    #[inline]
+    fn v3(self) -> Option<pulp::x86::V3> {
+        if self == Kernels::Best { pulp::x86::V3::try_new() } else { None }
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Face normals
 
@@ -346,7 +367,7 @@ impl Accumulator {
 #[must_use]
 pub fn vertex_normals(mesh: &Mesh, weighting: Weighting) -> VertexNormals {
     if weighting == Weighting::Area
-        && let Some(fast) = fast::area_vertex_normals(mesh, false)
+        && let Some(fast) = fast::area_vertex_normals(mesh, Kernels::Best)
     {
         return fast;
     }
@@ -360,7 +381,16 @@ pub fn vertex_normals(mesh: &Mesh, weighting: Weighting) -> VertexNormals {
 #[doc(hidden)]
 #[must_use]
 pub fn area_vertex_normals_without_fma(mesh: &Mesh) -> Option<VertexNormals> {
-    fast::area_vertex_normals(mesh, true)
+    fast::area_vertex_normals(mesh, Kernels::NoFma)
+}
+
+/// The fast path of [`vertex_normals`] with [`Weighting::Area`] without the hand-vectorised
+/// kernels, as it runs on a CPU with FMA but without AVX2 (an ARM Mac, say), whatever this CPU
+/// has: for the tests. `None` as for [`area_vertex_normals_without_fma`].
+#[doc(hidden)]
+#[must_use]
+pub fn area_vertex_normals_without_simd(mesh: &Mesh) -> Option<VertexNormals> {
+    fast::area_vertex_normals(mesh, Kernels::Compiled)
 }
 
 /// [`vertex_normals`] as one plain sequential loop over the faces, for every weighting: the

@@ -32,16 +32,14 @@ use std::collections::VecDeque;
 use std::ops::Range;
 
 use glam::Vec3;
-use multiversion::multiversion;
 use rayon::prelude::*;
 
-use super::fast::{Record, block_records, exact_record, units};
-use super::{
-    Accumulator, DEGENERATE_SINE, F32_UNIT_ROUNDOFF, VertexNormals, Weighting, corner_geometry,
-};
+use super::fast::{Record, units};
+use super::{Accumulator, Kernels, VertexNormals, Weighting, corner_geometry};
 use crate::lang::{Lang, Text};
-use crate::math::difference_of_products_f64;
 use crate::mesh::{Mesh, MeshError};
+
+mod tile;
 
 /// Faces per tile at most: their records (32 B each, 64 KiB) stay in the core's cache.
 const FACE_CAP: usize = 2048;
@@ -356,7 +354,7 @@ impl NormalsPlan {
         positions: &[Vec3],
         out: &mut VertexNormals,
     ) -> Result<(), PlanError> {
-        self.run(positions, out, false)
+        self.run(positions, out, Kernels::Best)
     }
 
     /// [`NormalsPlan::area_normals_into`] with the face kernel of a CPU without FMA, whatever
@@ -370,14 +368,28 @@ impl NormalsPlan {
         positions: &[Vec3],
         out: &mut VertexNormals,
     ) -> Result<(), PlanError> {
-        self.run(positions, out, true)
+        self.run(positions, out, Kernels::NoFma)
+    }
+
+    /// [`NormalsPlan::area_normals_into`] without the hand-vectorised kernels, as on a CPU with
+    /// FMA but without AVX2 (an ARM Mac, say), whatever this CPU has: for the tests.
+    ///
+    /// # Errors
+    /// As [`NormalsPlan::area_normals_into`].
+    #[doc(hidden)]
+    pub fn area_normals_into_without_simd(
+        &mut self,
+        positions: &[Vec3],
+        out: &mut VertexNormals,
+    ) -> Result<(), PlanError> {
+        self.run(positions, out, Kernels::Compiled)
     }
 
     fn run(
         &mut self,
         positions: &[Vec3],
         out: &mut VertexNormals,
-        portable: bool,
+        kernels: Kernels,
     ) -> Result<(), PlanError> {
         let n = self.vertex_count;
         if positions.len() != n {
@@ -391,7 +403,7 @@ impl NormalsPlan {
         let parallel = self.faces.len() >= PARALLEL_FACES && rayon::current_num_threads() > 1;
         let mut in_order = std::mem::take(&mut self.in_order);
         let tiles = 0..self.tile_vertex_start.len() - 1;
-        let work = Work { plan: self, positions, portable, parallel };
+        let work = Work { plan: self, positions, kernels, parallel };
         let unresolved = if let Some(at) = &self.position_in_order {
             let unresolved = work.tiles(tiles, &mut in_order);
             let put_back = |(out, at): (&mut [Vec3], &[u32])| {
@@ -527,7 +539,7 @@ fn tiling<'a>(
 struct Work<'a> {
     plan: &'a NormalsPlan,
     positions: &'a [Vec3],
-    portable: bool,
+    kernels: Kernels,
     parallel: bool,
 }
 
@@ -561,210 +573,23 @@ impl Work<'_> {
                 let faces = &plan.tile_faces[in_tile.clone()];
                 let vertices = span(starts, t);
                 let locals = &plan.local_vertices[span(&plan.tile_local_start, t)];
-                tile_records(
+                tile::records(
                     self.positions,
                     locals,
                     &plan.local_faces[in_tile],
                     faces,
                     corners,
                     &mut records[..faces.len()],
-                    self.portable,
+                    self.kernels,
                 );
                 let sums = &mut sums[..vertices.len()];
-                gather(&plan.ref_start[vertices.start..=vertices.end], &plan.refs, records, sums);
+                let ref_start = &plan.ref_start[vertices.start..=vertices.end];
+                tile::gather(ref_start, &plan.refs, records, sums);
                 let (here, rest) = std::mem::take(&mut out).split_at_mut(vertices.len());
-                unresolved += units(sums, here);
+                unresolved += units(sums, here, self.kernels);
                 out = rest;
             }
             unresolved
         })
     }
-}
-
-/// The sums of each vertex: its faces' records added in ascending face order (4-wide in the
-/// AVX copy), as the reference adds them, so the area vector's sum has the reference's bits.
-/// The fourth sum is of each face's `|x| + |y| + |z|` (the one-shot kernel's records carry `|n|`
-/// there, which is no larger), times `1 + 2⁻¹⁶`: an upper bound of the reference's sum of the
-/// vectors' lengths, with room for the rounding of both sums for any number of faces below 2³⁴.
-/// The bound is only compared with the length of the sum (cancellation): where it says
-/// "cancelled" the vertex is settled exactly, so it never changes a result. It is positive
-/// exactly when a usable face touches the vertex (an unusable face's record is zero).
-#[multiversion(targets("x86_64+avx2+fma"))]
-fn gather(ref_start: &[u32], refs: &[u16], records: &[Record; FACE_CAP], sums: &mut [Record]) {
-    const SLACK: f64 = 1.0 + 1.0 / (1u64 << 16) as f64;
-    let mut previous = ref_start[0] as usize;
-    for (s, &end) in sums.iter_mut().zip(&ref_start[1..]) {
-        let mut sum = [0.0f64; 4];
-        for &r in &refs[previous..end as usize] {
-            let x = records[r as usize & (FACE_CAP - 1)];
-            sum = [sum[0] + x[0], sum[1] + x[1], sum[2] + x[2], sum[3] + x[3]];
-        }
-        *s = [sum[0], sum[1], sum[2], sum[3] * SLACK];
-        previous = end as usize;
-    }
-}
-
-/// Where a tile's corners can be trusted, every edge `b − a` of its faces is exact in f64: each
-/// coordinate's largest magnitude is at most this many times its smallest non-zero one.
-///
-/// Why: two f32 numbers are multiples of the smaller one's ulp, which is at least 2⁻²⁴ of it
-/// (2⁻¹⁴⁹ for subnormals, also at least 2⁻²⁴ of them), and their difference is below twice the
-/// larger; so it has at most `25 + log₂(largest/smallest)` significant bits, here at most 52.
-const EXACT_RANGE: f64 = (1u64 << 27) as f64;
-
-/// The records of a tile's faces into `records`: the area vector, bit for bit the reference's,
-/// and `|x| + |y| + |z|` (see [`gather`]).
-///
-/// The shortcut, on a CPU with FMA: the tile's corners are read once, into f64, and checked
-/// once ([`mark_untrusted`]): a corner that is not finite, or has a coordinate far smaller than
-/// the tile's largest (rounding residue next to a coordinate plane, say), is marked so that its
-/// faces go the exact way; among the others every edge is exact in f64. An upper bound `T` of
-/// every face's squared degeneracy threshold is taken from the tile's extent (an edge is no
-/// longer than the diagonal of the box around the trusted corners, a corner no farther from the
-/// origin than the box's farthest corner; see the one-shot kernel for the two thresholds and
-/// their squared bounds). Then each face is edges, Kahan's cross product and one comparison: a
-/// face whose squared area vector exceeds `T` (with room for rounding) is usable and its vector
-/// is the reference's; any other face (a sliver, a needle, a marked corner) goes the exact way,
-/// and so does every face of a tile on a CPU without FMA (the one-shot path's kernels).
-#[multiversion(targets("x86_64+avx2+fma"))]
-fn tile_records(
-    positions: &[Vec3],
-    locals: &[u32],
-    local_faces: &[[u16; 3]],
-    faces: &[[u32; 3]],
-    corners: &mut [[f64; 4]; CORNER_CAP],
-    records: &mut [Record],
-    portable: bool,
-) {
-    let fma = multiversion::target::target_cfg_f!(any(
-        target_arch = "aarch64",
-        all(target_arch = "x86_64", target_feature = "fma")
-    ));
-    if portable || !fma {
-        block_records(positions, faces, records, portable);
-        return;
-    }
-    let all_corners = corners;
-    let corners = &mut all_corners[..locals.len()];
-    // While reading the corners: each coordinate's range and smallest non-zero magnitude.
-    let (mut low, mut high) = ([f64::INFINITY; 4], [f64::NEG_INFINITY; 4]);
-    let mut smallest = [f64::INFINITY; 4];
-    for (corner, &v) in corners.iter_mut().zip(locals) {
-        let p = positions[v as usize];
-        let c = [f64::from(p.x), f64::from(p.y), f64::from(p.z), 0.0];
-        *corner = c;
-        for k in 0..4 {
-            // (NaN is never taken.)
-            low[k] = if c[k] < low[k] { c[k] } else { low[k] };
-            high[k] = if c[k] > high[k] { c[k] } else { high[k] };
-            let a = c[k].abs();
-            let a = if a == 0.0 { f64::INFINITY } else { a };
-            smallest[k] = if a < smallest[k] { a } else { smallest[k] };
-        }
-    }
-    // Usually every corner is finite and within EXACT_RANGE (the range is then that of all
-    // corners); otherwise the corners that are not are marked, and the range is over the others.
-    let mut largest: [f64; 4] = std::array::from_fn(|k| (-low[k]).max(high[k]));
-    let clean =
-        (0..4).all(|k| largest[k] < f64::INFINITY && smallest[k] * EXACT_RANGE >= largest[k]);
-    // (Where every coordinate's range is finite, it is already the largest finite magnitude.)
-    if !clean && !largest.iter().all(|l| l.is_finite()) {
-        largest = largest_finite(corners);
-    }
-    let (low, high) = if clean { (low, high) } else { mark_untrusted(corners, largest) };
-    let mut extent = 0.0;
-    for k in 0..3 {
-        // No trusted corner: no face passes anyway.
-        if high[k] >= low[k] {
-            extent += (high[k] - low[k]) * (high[k] - low[k]);
-        }
-    }
-    let farthest: f64 = largest[..3].iter().map(|l| l * l).sum();
-    // Squared edges are at most `extent` and squared corners at most `farthest` (both rounded:
-    // the factors below cover that). The two squared thresholds of the one-shot kernel:
-    // D2·l₁·l₂ ≤ D2·extent², and K·P·(l₁ + l₂) ≤ K·farthest·2·extent.
-    const K: f64 = 32.0 * F32_UNIT_ROUNDOFF * F32_UNIT_ROUNDOFF;
-    const D2: f64 = DEGENERATE_SINE * DEGENERATE_SINE;
-    let (extent, farthest) = (extent * 1.001, farthest * 1.001);
-    let threshold = (D2 * extent * extent).max(K * farthest * 2.0 * extent) * 1.01;
-    // |n| ≥ (|x| + |y| + |z|)/√3, so a face whose sum of magnitudes exceeds √(3·threshold) (with
-    // room for rounding) is clearly above its degeneracy threshold.
-    let least = (3.0 * threshold).sqrt() * (1.0 + 1e-6);
-    if !face_records(&*all_corners, local_faces, least, records) {
-        // Some face is not clearly usable (or has a marked corner: its sum is NaN).
-        for (record, &face) in records.iter_mut().zip(faces) {
-            // Not above `least`, or NaN.
-            if record[3].partial_cmp(&least) != Some(std::cmp::Ordering::Greater) {
-                *record = exact_record(positions, face);
-            }
-        }
-    }
-}
-
-/// Each coordinate's largest finite magnitude among `corners` (0 when there is none).
-#[inline(never)]
-fn largest_finite(corners: &[[f64; 4]]) -> [f64; 4] {
-    let mut largest = [0.0f64; 4];
-    for c in corners {
-        for k in 0..4 {
-            let a = c[k].abs();
-            if a > largest[k] && a < f64::INFINITY {
-                largest[k] = a;
-            }
-        }
-    }
-    largest
-}
-
-/// Marks the corners that [`tile_records`] cannot vouch for, by setting their x to NaN (every
-/// face that uses one then fails its test and goes the exact way): a coordinate that is not
-/// finite, or not zero but smaller than 2⁻²⁷ of the largest finite magnitude of that coordinate
-/// in the tile (`largest`). Among the other corners every edge is exact in f64
-/// ([`EXACT_RANGE`]). Returns the lowest and highest value of each coordinate over those.
-#[inline(never)]
-fn mark_untrusted(corners: &mut [[f64; 4]], largest: [f64; 4]) -> ([f64; 4], [f64; 4]) {
-    let floor = largest.map(|l| l / EXACT_RANGE);
-    let (mut low, mut high) = ([f64::INFINITY; 4], [f64::NEG_INFINITY; 4]);
-    for c in corners.iter_mut() {
-        let a = c.map(f64::abs);
-        // False for NaN; ±∞ is above any finite `largest`. (The fourth entries are zeros.)
-        let trusted = (0..4).all(|k| ((a[k] == 0.0) | (a[k] >= floor[k])) & (a[k] <= largest[k]));
-        if trusted {
-            for k in 0..4 {
-                low[k] = low[k].min(c[k]);
-                high[k] = high[k].max(c[k]);
-            }
-        } else {
-            c[0] = f64::NAN;
-        }
-    }
-    (low, high)
-}
-
-/// The records `[x, y, z, |x| + |y| + |z|]` of a tile's faces (see [`tile_records`]), each
-/// face's cross product in one 4-wide vector (the corners' fourth entries are zero); `false`
-/// when some face's sum of magnitudes is not above `least` (or is NaN).
-#[inline(always)]
-fn face_records(
-    corners: &[[f64; 4]; CORNER_CAP],
-    faces: &[[u16; 3]],
-    least: f64,
-    records: &mut [Record],
-) -> bool {
-    let mut all = true;
-    for (face, out) in faces.iter().zip(records.iter_mut()) {
-        let [a, b, c] = face.map(|v| corners[v as usize & (CORNER_CAP - 1)]);
-        let e1 = [b[0] - a[0], b[1] - a[1], b[2] - a[2], b[3] - a[3]];
-        let e2 = [c[0] - a[0], c[1] - a[1], c[2] - a[2], c[3] - a[3]];
-        // As `face_area_vector` computes it for exact edges (the correction is +0.0):
-        // x = e1y·e2z − e1z·e2y, y = e1z·e2x − e1x·e2z, z = e1x·e2y − e1y·e2x.
-        let (p, q) = ([e1[1], e1[2], e1[0], e1[3]], [e2[2], e2[0], e2[1], e2[3]]);
-        let (r, t) = ([e1[2], e1[0], e1[1], e1[3]], [e2[1], e2[2], e2[0], e2[3]]);
-        let n: [f64; 4] =
-            std::array::from_fn(|k| difference_of_products_f64(p[k], q[k], r[k], t[k]) + 0.0);
-        let magnitude = n[0].abs() + n[1].abs() + n[2].abs();
-        all &= magnitude > least;
-        *out = [n[0], n[1], n[2], magnitude];
-    }
-    all
 }
