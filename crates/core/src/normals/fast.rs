@@ -160,7 +160,7 @@ fn scatter(faces: &[[u32; 3]], records: &[Record], sums: &mut [Record]) {
 /// The unit normal of a vertex from its sums, as the reference's accumulator gives it, or NaN
 /// when the vertex falls back (no usable face, or cancelling normals: see [`provisional`]).
 #[inline]
-fn unit_or_nan(s: &Record) -> Vec3 {
+pub(super) fn unit_or_nan(s: &Record) -> Vec3 {
     let (sum, magnitude) = (DVec3::new(s[0], s[1], s[2]), s[3]);
     if magnitude > 0.0
         && let length = sum.length()
@@ -225,77 +225,86 @@ pub(super) fn units(sums: &[Record], out: &mut [Vec3], kernels: Kernels) -> usiz
     unresolved
 }
 
-/// [`units`] four vertices at a time in AVX2 registers: the sums transposed in registers, the
-/// same operations lane by lane (so the same bits), the f32 results interleaved back into
-/// `Vec3`s by shuffles and stored 48 bytes at once.
+/// [`units`] four vertices at a time in AVX2 registers ([`units4`]).
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 fn units_v3(simd: pulp::x86::V3, sums: &[Record], out: &mut [Vec3]) -> usize {
-    use std::arch::x86_64::{__m128, __m256d, _CMP_GT_OQ, _CMP_LT_OQ};
-    const SLACK: f64 = 1.0 / (1u64 << 46) as f64;
-    let (avx, sse) = (simd.avx, simd.sse);
     let mut unresolved = 0;
     let (groups, rest) = sums.as_chunks::<4>();
     let (out_groups, out_rest) = out.split_at_mut(groups.len() * 4);
     let (out_groups, _) = out_groups.as_chunks_mut::<4>();
-    let (below, above) = (avx._mm256_set1_pd(1.0 - SLACK), avx._mm256_set1_pd(1.0 + SLACK));
-    let (one, zero) = (avx._mm256_set1_pd(1.0), avx._mm256_setzero_pd());
-    let fraction = avx._mm256_set1_pd(CANCEL_FRACTION);
-    let infinity = avx._mm256_set1_pd(f64::INFINITY);
     for (s, out) in groups.iter().zip(out_groups) {
-        let load = |i: usize| -> __m256d { bytemuck::cast(s[i]) };
-        let (r0, r1, r2, r3) = (load(0), load(1), load(2), load(3));
-        let (t0, t1) = (avx._mm256_unpacklo_pd(r0, r1), avx._mm256_unpackhi_pd(r0, r1));
-        let (t2, t3) = (avx._mm256_unpacklo_pd(r2, r3), avx._mm256_unpackhi_pd(r2, r3));
-        let x = avx._mm256_permute2f128_pd::<0x20>(t0, t2);
-        let z = avx._mm256_permute2f128_pd::<0x31>(t0, t2);
-        let y = avx._mm256_permute2f128_pd::<0x20>(t1, t3);
-        let m = avx._mm256_permute2f128_pd::<0x31>(t1, t3);
-        let squared = avx._mm256_add_pd(
-            avx._mm256_add_pd(avx._mm256_mul_pd(x, x), avx._mm256_mul_pd(y, y)),
-            avx._mm256_mul_pd(z, z),
-        );
-        let length = avx._mm256_sqrt_pd(squared);
-        let inverse = avx._mm256_div_pd(one, length);
-        let unit = |c| avx._mm256_mul_pd(c, inverse);
-        let (ux, uy, uz) = (unit(x), unit(y), unit(z));
-        let f32s = |c, f| avx._mm256_cvtpd_ps(avx._mm256_mul_pd(c, f));
-        let low = [f32s(ux, below), f32s(uy, below), f32s(uz, below)];
-        let high = [f32s(ux, above), f32s(uy, above), f32s(uz, above)];
-        let same = sse._mm_and_ps(
-            sse._mm_and_ps(sse._mm_cmpeq_ps(low[0], high[0]), sse._mm_cmpeq_ps(low[1], high[1])),
-            sse._mm_cmpeq_ps(low[2], high[2]),
-        );
-        let usable = avx._mm256_and_pd(
-            avx._mm256_and_pd(
-                avx._mm256_cmp_pd::<_CMP_GT_OQ>(m, zero),
-                avx._mm256_cmp_pd::<_CMP_GT_OQ>(length, avx._mm256_mul_pd(fraction, m)),
-            ),
-            avx._mm256_cmp_pd::<_CMP_LT_OQ>(length, infinity),
-        );
-        let ok = sse._mm_movemask_ps(same) & avx._mm256_movemask_pd(usable);
-        let [a, b, c] = low;
-        let (xy_low, xy_high) = (sse._mm_unpacklo_ps(a, b), sse._mm_unpackhi_ps(a, b));
-        let t = sse._mm_shuffle_ps::<0b11_10_00_00>(c, xy_low);
-        let o0 = sse._mm_shuffle_ps::<0b10_00_01_00>(xy_low, t);
-        let v = sse._mm_shuffle_ps::<0b01_01_11_11>(xy_low, c);
-        let o1 = sse._mm_shuffle_ps::<0b01_00_10_00>(v, xy_high);
-        let w = sse._mm_shuffle_ps::<0b11_10_11_10>(xy_high, c);
-        let o2 = sse._mm_shuffle_ps::<0b11_01_00_10>(w, w);
-        *bytemuck::cast_mut::<[Vec3; 4], [f32; 12]>(out) =
-            bytemuck::cast::<[__m128; 3], _>([o0, o1, o2]);
-        if ok != 0b1111 {
-            for (i, normal) in out.iter_mut().enumerate() {
-                if ok & (1 << i) == 0 {
-                    *normal = unit_or_nan(&s[i]);
-                    unresolved += usize::from(normal.x.is_nan());
-                }
-            }
-        }
+        unresolved += units4(simd, s, out);
     }
     for (s, normal) in rest.iter().zip(out_rest) {
         *normal = unit_or_nan(s);
         unresolved += usize::from(normal.x.is_nan());
+    }
+    unresolved
+}
+
+/// [`unit_or_nan`] of four vertices in AVX2 registers: the sums transposed in registers, the
+/// same operations lane by lane as [`units`] (so the same bits), the f32 results interleaved
+/// back into `Vec3`s by shuffles and stored 48 bytes at once. Returns how many got NaN.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(super) fn units4(simd: pulp::x86::V3, s: &[Record; 4], out: &mut [Vec3; 4]) -> usize {
+    use std::arch::x86_64::{__m128, __m256d, _CMP_GT_OQ, _CMP_LT_OQ};
+    const SLACK: f64 = 1.0 / (1u64 << 46) as f64;
+    let (avx, sse) = (simd.avx, simd.sse);
+    let (below, above) = (avx._mm256_set1_pd(1.0 - SLACK), avx._mm256_set1_pd(1.0 + SLACK));
+    let load = |i: usize| -> __m256d { bytemuck::cast(s[i]) };
+    let (r0, r1, r2, r3) = (load(0), load(1), load(2), load(3));
+    let (t0, t1) = (avx._mm256_unpacklo_pd(r0, r1), avx._mm256_unpackhi_pd(r0, r1));
+    let (t2, t3) = (avx._mm256_unpacklo_pd(r2, r3), avx._mm256_unpackhi_pd(r2, r3));
+    let x = avx._mm256_permute2f128_pd::<0x20>(t0, t2);
+    let z = avx._mm256_permute2f128_pd::<0x31>(t0, t2);
+    let y = avx._mm256_permute2f128_pd::<0x20>(t1, t3);
+    let m = avx._mm256_permute2f128_pd::<0x31>(t1, t3);
+    let squared = avx._mm256_add_pd(
+        avx._mm256_add_pd(avx._mm256_mul_pd(x, x), avx._mm256_mul_pd(y, y)),
+        avx._mm256_mul_pd(z, z),
+    );
+    let length = avx._mm256_sqrt_pd(squared);
+    let inverse = avx._mm256_div_pd(avx._mm256_set1_pd(1.0), length);
+    let unit = |c| avx._mm256_mul_pd(c, inverse);
+    let (ux, uy, uz) = (unit(x), unit(y), unit(z));
+    let f32s = |c, f| avx._mm256_cvtpd_ps(avx._mm256_mul_pd(c, f));
+    let low = [f32s(ux, below), f32s(uy, below), f32s(uz, below)];
+    let high = [f32s(ux, above), f32s(uy, above), f32s(uz, above)];
+    let same = sse._mm_and_ps(
+        sse._mm_and_ps(sse._mm_cmpeq_ps(low[0], high[0]), sse._mm_cmpeq_ps(low[1], high[1])),
+        sse._mm_cmpeq_ps(low[2], high[2]),
+    );
+    let usable = avx._mm256_and_pd(
+        avx._mm256_and_pd(
+            avx._mm256_cmp_pd::<_CMP_GT_OQ>(m, avx._mm256_setzero_pd()),
+            avx._mm256_cmp_pd::<_CMP_GT_OQ>(
+                length,
+                avx._mm256_mul_pd(avx._mm256_set1_pd(CANCEL_FRACTION), m),
+            ),
+        ),
+        avx._mm256_cmp_pd::<_CMP_LT_OQ>(length, avx._mm256_set1_pd(f64::INFINITY)),
+    );
+    let ok = sse._mm_movemask_ps(same) & avx._mm256_movemask_pd(usable);
+    let [a, b, c] = low;
+    let (xy_low, xy_high) = (sse._mm_unpacklo_ps(a, b), sse._mm_unpackhi_ps(a, b));
+    let t = sse._mm_shuffle_ps::<0b11_10_00_00>(c, xy_low);
+    let o0 = sse._mm_shuffle_ps::<0b10_00_01_00>(xy_low, t);
+    let v = sse._mm_shuffle_ps::<0b01_01_11_11>(xy_low, c);
+    let o1 = sse._mm_shuffle_ps::<0b01_00_10_00>(v, xy_high);
+    let w = sse._mm_shuffle_ps::<0b11_10_11_10>(xy_high, c);
+    let o2 = sse._mm_shuffle_ps::<0b11_01_00_10>(w, w);
+    *bytemuck::cast_mut::<[Vec3; 4], [f32; 12]>(out) =
+        bytemuck::cast::<[__m128; 3], _>([o0, o1, o2]);
+    let mut unresolved = 0;
+    if ok != 0b1111 {
+        for (i, normal) in out.iter_mut().enumerate() {
+            if ok & (1 << i) == 0 {
+                *normal = unit_or_nan(&s[i]);
+                unresolved += usize::from(normal.x.is_nan());
+            }
+        }
     }
     unresolved
 }

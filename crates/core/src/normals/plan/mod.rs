@@ -34,7 +34,7 @@ use std::ops::Range;
 use glam::Vec3;
 use rayon::prelude::*;
 
-use super::fast::{Record, units};
+use super::fast::Record;
 use super::{Accumulator, Kernels, VertexNormals, Weighting, corner_geometry};
 use crate::lang::{Lang, Text};
 use crate::mesh::{Mesh, MeshError};
@@ -584,9 +584,9 @@ impl Work<'_> {
                 );
                 let sums = &mut sums[..vertices.len()];
                 let ref_start = &plan.ref_start[vertices.start..=vertices.end];
-                tile::gather(ref_start, &plan.refs, records, sums);
                 let (here, rest) = std::mem::take(&mut out).split_at_mut(vertices.len());
-                unresolved += units(sums, here, self.kernels);
+                unresolved +=
+                    tile::gather_units(ref_start, &plan.refs, records, sums, here, self.kernels);
                 out = rest;
             }
             unresolved

@@ -6,7 +6,9 @@
 
 use multiversion::multiversion;
 
-use super::super::fast::{Record, block_records, exact_record};
+#[cfg(target_arch = "x86_64")]
+use super::super::fast::units4;
+use super::super::fast::{Record, block_records, exact_record, units};
 use super::super::{DEGENERATE_SINE, F32_UNIT_ROUNDOFF, Kernels};
 use super::{CORNER_CAP, FACE_CAP};
 use crate::math::difference_of_products_f64;
@@ -21,13 +23,7 @@ use glam::Vec3;
 /// "cancelled" the vertex is settled exactly, so it never changes a result. It is positive
 /// exactly when a usable face touches the vertex (an unusable face's record is zero).
 #[multiversion(targets("x86_64+avx2+fma"))]
-pub(super) fn gather(
-    ref_start: &[u32],
-    refs: &[u16],
-    records: &[Record; FACE_CAP],
-    sums: &mut [Record],
-) {
-    const SLACK: f64 = 1.0 + 1.0 / (1u64 << 16) as f64;
+fn gather(ref_start: &[u32], refs: &[u16], records: &[Record; FACE_CAP], sums: &mut [Record]) {
     let mut previous = ref_start[0] as usize;
     for (s, &end) in sums.iter_mut().zip(&ref_start[1..]) {
         let mut sum = [0.0f64; 4];
@@ -35,10 +31,85 @@ pub(super) fn gather(
             let x = records[r as usize & (FACE_CAP - 1)];
             sum = [sum[0] + x[0], sum[1] + x[1], sum[2] + x[2], sum[3] + x[3]];
         }
-        *s = [sum[0], sum[1], sum[2], sum[3] * SLACK];
+        *s = [sum[0], sum[1], sum[2], sum[3] * GATHER_SLACK];
         previous = end as usize;
     }
 }
+
+/// The normals of a tile's vertices into `out` (NaN where the vertex falls back; returns how
+/// many): [`gather`], then the one-shot path's normalisation. With [`Kernels::Best`] on x86-64
+/// with AVX2 and FMA, four vertices at a time without the sums leaving the registers
+/// ([`gather_units_v3`]).
+pub(super) fn gather_units(
+    ref_start: &[u32],
+    refs: &[u16],
+    records: &[Record; FACE_CAP],
+    sums: &mut [Record],
+    out: &mut [Vec3],
+    kernels: Kernels,
+) -> usize {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(simd) = kernels.v3() {
+        return simd.vectorize(|| gather_units_v3(simd, ref_start, refs, records, out));
+    }
+    gather(ref_start, refs, records, sums);
+    units(sums, out, kernels)
+}
+
+/// [`gather`] and [`units4`] four vertices at a time: the four sums in four registers (four
+/// chains of additions side by side when the vertices have as many faces, as on most meshes),
+/// each as [`gather`] makes it, so the same bits.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn gather_units_v3(
+    simd: pulp::x86::V3,
+    ref_start: &[u32],
+    refs: &[u16],
+    records: &[Record; FACE_CAP],
+    out: &mut [Vec3],
+) -> usize {
+    use std::arch::x86_64::__m256d;
+    let avx = simd.avx;
+    let slack = avx._mm256_setr_pd(1.0, 1.0, 1.0, GATHER_SLACK);
+    let record = |r: u16| -> __m256d { bytemuck::cast(records[r as usize & (FACE_CAP - 1)]) };
+    let mut unresolved = 0;
+    let (groups, rest) = out.as_chunks_mut::<4>();
+    for (g, out) in groups.iter_mut().enumerate() {
+        let bounds: [u32; 5] = std::array::from_fn(|i| ref_start[4 * g + i]);
+        let own = |i: usize| &refs[bounds[i] as usize..bounds[i + 1] as usize];
+        let (a, b, c, d) = (own(0), own(1), own(2), own(3));
+        let mut sums = [avx._mm256_setzero_pd(); 4];
+        if a.len() == b.len() && a.len() == c.len() && a.len() == d.len() {
+            for k in 0..a.len() {
+                sums[0] = avx._mm256_add_pd(sums[0], record(a[k]));
+                sums[1] = avx._mm256_add_pd(sums[1], record(b[k]));
+                sums[2] = avx._mm256_add_pd(sums[2], record(c[k]));
+                sums[3] = avx._mm256_add_pd(sums[3], record(d[k]));
+            }
+        } else {
+            for (sum, own) in sums.iter_mut().zip([a, b, c, d]) {
+                for &r in own {
+                    *sum = avx._mm256_add_pd(*sum, record(r));
+                }
+            }
+        }
+        let sums: [Record; 4] = [
+            bytemuck::cast(avx._mm256_mul_pd(sums[0], slack)),
+            bytemuck::cast(avx._mm256_mul_pd(sums[1], slack)),
+            bytemuck::cast(avx._mm256_mul_pd(sums[2], slack)),
+            bytemuck::cast(avx._mm256_mul_pd(sums[3], slack)),
+        ];
+        unresolved += units4(simd, &sums, out);
+    }
+    let done = groups.len() * 4;
+    let mut sums = [[0.0; 4]; 3];
+    let sums = &mut sums[..rest.len()];
+    gather(&ref_start[done..], refs, records, sums);
+    unresolved + units(sums, rest, Kernels::Compiled)
+}
+
+/// The factor of the length sums' bound (see [`gather`]).
+const GATHER_SLACK: f64 = 1.0 + 1.0 / (1u64 << 16) as f64;
 
 /// Where a tile's corners can be trusted, every edge `b − a` of its faces is exact in f64: each
 /// coordinate's largest magnitude is at most this many times its smallest non-zero one.
