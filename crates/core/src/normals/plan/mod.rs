@@ -14,10 +14,11 @@
 //! [`VERTEX_CAP`] vertices whose faces number at most [`FACE_CAP`]. Per frame, each tile reads
 //! its corners once into f64 and checks them once (all finite, each coordinate's magnitudes close
 //! enough for every edge to be exact in f64; a corner that is not is marked), computes its
-//! faces' records ([`tile_records`]: edges, Kahan's cross product with hardware FMA, one
+//! faces' records ([`tile::records`]: edges, Kahan's cross product with hardware FMA, one
 //! comparison against a degeneracy bound taken from the tile's extent; the rare face that fails
 //! goes the exact way) into a buffer that stays in the core's cache, gathers them for its
-//! vertices, and normalises them (the one-shot path's vectorised kernel); tiles run on all cores.
+//! vertices, and normalises them (the one-shot path's kernel); tiles run on all cores. On x86-64
+//! with AVX2 and FMA these steps are hand-vectorised ([`tile`]); the bits are the same.
 //! A face whose corners lie in different tiles is computed once per tile, so the plan picks, of
 //! two cuttings, the one that repeats fewer faces (see [`NormalsPlan::new`]): runs of
 //! consecutive vertex numbers (the results go straight to the output), or patches grown
@@ -154,7 +155,7 @@ impl PlanError {
 /// The plan holds the faces and a tiling of the mesh (about 65 bytes per face in all) and, where
 /// it renumbers the vertices, a buffer of one normal per vertex; the latter is why a call takes
 /// `&mut self`. Each thread that runs a tile keeps 352 KiB of buffers for the life of the thread.
-/// docs/performance.md has the figures (it is 1.3–2 times as fast as the one-shot
+/// docs/performance.md has the figures (it is about twice as fast as the one-shot
 /// [`vertex_normals`](super::vertex_normals) on the same positions).
 #[derive(Clone, Debug)]
 pub struct NormalsPlan {
