@@ -179,7 +179,11 @@ pub(super) fn unit_or_nan(s: &Record) -> Vec3 {
 /// [`quick_unit_f32`] does not vouch going through [`unit_or_nan`] itself. Returns how many
 /// vertices got NaN (they fall back).
 #[multiversion(targets("x86_64+avx2+fma"))]
-pub(super) fn units(sums: &[Record], out: &mut [Vec3], kernels: Kernels) -> usize {
+pub(super) fn units(
+    sums: &[Record],
+    out: &mut [Vec3],
+    #[cfg_attr(not(target_arch = "x86_64"), allow(unused_variables))] kernels: Kernels,
+) -> usize {
     #[cfg(target_arch = "x86_64")]
     if let Some(simd) = kernels.v3() {
         return simd.vectorize(|| units_v3(simd, sums, out));

@@ -203,7 +203,7 @@ fn read_corners(
     positions: &[Vec3],
     locals: &[u32],
     corners: &mut [[f64; 4]],
-    kernels: Kernels,
+    #[cfg_attr(not(target_arch = "x86_64"), allow(unused_variables))] kernels: Kernels,
 ) -> ([f64; 4], [f64; 4], [f64; 4]) {
     #[cfg(target_arch = "x86_64")]
     if let Some(simd) = kernels.v3() {
@@ -286,7 +286,7 @@ fn largest_finite(corners: &[[f64; 4]]) -> [f64; 4] {
 fn mark_untrusted(
     corners: &mut [[f64; 4]],
     largest: [f64; 4],
-    kernels: Kernels,
+    #[cfg_attr(not(target_arch = "x86_64"), allow(unused_variables))] kernels: Kernels,
 ) -> ([f64; 4], [f64; 4]) {
     let floor = largest.map(|l| l / EXACT_RANGE);
     #[cfg(target_arch = "x86_64")]
@@ -354,7 +354,7 @@ fn face_records(
     faces: &[[u16; 3]],
     least: f64,
     records: &mut [Record],
-    kernels: Kernels,
+    #[cfg_attr(not(target_arch = "x86_64"), allow(unused_variables))] kernels: Kernels,
 ) -> bool {
     #[cfg(target_arch = "x86_64")]
     if let Some(simd) = kernels.v3() {
