@@ -49,6 +49,11 @@ const VERTEX_TASK: usize = 8192;
 /// vectoriser, small enough for the stack.
 const LANES: usize = 64;
 
+/// How far on either side of a unit vector's component the f32 rounding is tried
+/// ([`quick_unit_f32`]): more than the distance between `v · (1/|v|)` and the reference's
+/// `(v/m)/|v/m|`.
+const UNIT_SLACK: f64 = 1.0 / (1u64 << 46) as f64;
+
 /// One face's contribution: its area vector and the vector's length, `[x, y, z, |n|]`.
 pub(super) type Record = [f64; 4];
 
@@ -189,7 +194,6 @@ pub(super) fn units(
         return simd.vectorize(|| units_v3(simd, sums, out));
     }
     let mut unresolved = 0;
-    const SLACK: f64 = 1.0 / (1u64 << 46) as f64;
     let (groups, rest) = sums.as_chunks::<LANES>();
     let (out_groups, out_rest) = out.split_at_mut(groups.len() * LANES);
     for (s, out) in groups.iter().zip(out_groups.chunks_exact_mut(LANES)) {
@@ -202,8 +206,10 @@ pub(super) fn units(
             let length = (x[i] * x[i] + y[i] * y[i] + z[i] * z[i]).sqrt();
             let inverse = 1.0 / length;
             let (ux, uy, uz) = (x[i] * inverse, y[i] * inverse, z[i] * inverse);
-            let (lx, ly, lz) = (ux * (1.0 - SLACK), uy * (1.0 - SLACK), uz * (1.0 - SLACK));
-            let (hx, hy, hz) = (ux * (1.0 + SLACK), uy * (1.0 + SLACK), uz * (1.0 + SLACK));
+            let (lx, ly, lz) =
+                (ux * (1.0 - UNIT_SLACK), uy * (1.0 - UNIT_SLACK), uz * (1.0 - UNIT_SLACK));
+            let (hx, hy, hz) =
+                (ux * (1.0 + UNIT_SLACK), uy * (1.0 + UNIT_SLACK), uz * (1.0 + UNIT_SLACK));
             // A finite length means finite components; NaN fails every comparison.
             ok[i] = (m[i] > 0.0)
                 & (length > CANCEL_FRACTION * m[i])
@@ -254,9 +260,9 @@ fn units_v3(simd: pulp::x86::V3, sums: &[Record], out: &mut [Vec3]) -> usize {
 #[inline(always)]
 pub(super) fn units4(simd: pulp::x86::V3, s: &[Record; 4], out: &mut [Vec3; 4]) -> usize {
     use std::arch::x86_64::{__m128, __m256d, _CMP_GT_OQ, _CMP_LT_OQ};
-    const SLACK: f64 = 1.0 / (1u64 << 46) as f64;
     let (avx, sse) = (simd.avx, simd.sse);
-    let (below, above) = (avx._mm256_set1_pd(1.0 - SLACK), avx._mm256_set1_pd(1.0 + SLACK));
+    let (below, above) =
+        (avx._mm256_set1_pd(1.0 - UNIT_SLACK), avx._mm256_set1_pd(1.0 + UNIT_SLACK));
     let load = |i: usize| -> __m256d { bytemuck::cast(s[i]) };
     let (r0, r1, r2, r3) = (load(0), load(1), load(2), load(3));
     let (t0, t1) = (avx._mm256_unpacklo_pd(r0, r1), avx._mm256_unpackhi_pd(r0, r1));
@@ -583,11 +589,11 @@ fn quick_area_record(a: Vec3, b: Vec3, c: Vec3) -> Option<Record> {
 /// component within 2⁻⁴⁶ of an f32 rounding boundary, once in ~10⁷) the caller divides.
 #[inline]
 fn quick_unit_f32(v: DVec3, length: f64) -> Option<Vec3> {
-    const SLACK: f64 = 1.0 / (1u64 << 46) as f64;
     if !(v.is_finite() && length > 0.0 && length.is_finite()) {
         return None;
     }
     let unit = v * (1.0 / length);
-    let (low, high) = ((unit * (1.0 - SLACK)).as_vec3(), (unit * (1.0 + SLACK)).as_vec3());
+    let (low, high) =
+        ((unit * (1.0 - UNIT_SLACK)).as_vec3(), (unit * (1.0 + UNIT_SLACK)).as_vec3());
     (low == high).then_some(low)
 }

@@ -1,8 +1,8 @@
 //! One tile's work each frame (see [`super`]): its corners read and checked, its faces' records,
-//! each vertex's sums gathered from them. On x86-64 with AVX2 and FMA the corners, the face
-//! records and the marking of untrusted corners run as hand-vectorised kernels (through `pulp`,
-//! which calls the intrinsics safely once it has checked the CPU); elsewhere as the compiler's
-//! code. Both give the same bits.
+//! each vertex's sums gathered from them and normalised. On x86-64 with AVX2 and FMA the corners,
+//! the marking of untrusted corners, the face records, and the sums with their normalisation run
+//! as hand-vectorised kernels (through `pulp`, which calls the intrinsics safely once it has
+//! checked the CPU); elsewhere as the compiler's code. Both give the same bits.
 
 use multiversion::multiversion;
 
