@@ -253,6 +253,25 @@ fn units_v3(simd: pulp::x86::V3, sums: &[Record], out: &mut [Vec3]) -> usize {
     unresolved
 }
 
+/// Four 4-wide vectors as the rows of a 4 × 4 matrix, transposed: four records `[x, y, z, m]`
+/// become the x, y, z and m of all four, and back.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(super) fn transpose4(
+    simd: pulp::x86::V3,
+    [r0, r1, r2, r3]: [std::arch::x86_64::__m256d; 4],
+) -> [std::arch::x86_64::__m256d; 4] {
+    let avx = simd.avx;
+    let (t0, t1) = (avx._mm256_unpacklo_pd(r0, r1), avx._mm256_unpackhi_pd(r0, r1));
+    let (t2, t3) = (avx._mm256_unpacklo_pd(r2, r3), avx._mm256_unpackhi_pd(r2, r3));
+    [
+        avx._mm256_permute2f128_pd::<0x20>(t0, t2),
+        avx._mm256_permute2f128_pd::<0x20>(t1, t3),
+        avx._mm256_permute2f128_pd::<0x31>(t0, t2),
+        avx._mm256_permute2f128_pd::<0x31>(t1, t3),
+    ]
+}
+
 /// [`unit_or_nan`] of four vertices in AVX2 registers: the sums transposed in registers, the
 /// same operations lane by lane as [`units`] (so the same bits), the f32 results interleaved
 /// back into `Vec3`s by shuffles and stored 48 bytes at once. Returns how many got NaN.
@@ -264,13 +283,7 @@ pub(super) fn units4(simd: pulp::x86::V3, s: &[Record; 4], out: &mut [Vec3; 4]) 
     let (below, above) =
         (avx._mm256_set1_pd(1.0 - UNIT_SLACK), avx._mm256_set1_pd(1.0 + UNIT_SLACK));
     let load = |i: usize| -> __m256d { bytemuck::cast(s[i]) };
-    let (r0, r1, r2, r3) = (load(0), load(1), load(2), load(3));
-    let (t0, t1) = (avx._mm256_unpacklo_pd(r0, r1), avx._mm256_unpackhi_pd(r0, r1));
-    let (t2, t3) = (avx._mm256_unpacklo_pd(r2, r3), avx._mm256_unpackhi_pd(r2, r3));
-    let x = avx._mm256_permute2f128_pd::<0x20>(t0, t2);
-    let z = avx._mm256_permute2f128_pd::<0x31>(t0, t2);
-    let y = avx._mm256_permute2f128_pd::<0x20>(t1, t3);
-    let m = avx._mm256_permute2f128_pd::<0x31>(t1, t3);
+    let [x, y, z, m] = transpose4(simd, [load(0), load(1), load(2), load(3)]);
     let squared = avx._mm256_add_pd(
         avx._mm256_add_pd(avx._mm256_mul_pd(x, x), avx._mm256_mul_pd(y, y)),
         avx._mm256_mul_pd(z, z),

@@ -6,9 +6,9 @@
 
 use multiversion::multiversion;
 
-#[cfg(target_arch = "x86_64")]
-use super::super::fast::units4;
 use super::super::fast::{Record, block_records, exact_record, units};
+#[cfg(target_arch = "x86_64")]
+use super::super::fast::{transpose4, units4};
 use super::super::{DEGENERATE_SINE, F32_UNIT_ROUNDOFF, Kernels};
 use super::{CORNER_CAP, FACE_CAP};
 use crate::math::difference_of_products_f64;
@@ -418,17 +418,10 @@ fn face_records_v3(
         f: &[[u16; 3]; 4],
         k: usize,
     ) -> [__m256d; 3] {
-        let avx = simd.avx;
         let load =
             |i: usize| -> __m256d { bytemuck::cast(corners[f[i][k] as usize & (CORNER_CAP - 1)]) };
-        let (r0, r1, r2, r3) = (load(0), load(1), load(2), load(3));
-        let (t0, t1) = (avx._mm256_unpacklo_pd(r0, r1), avx._mm256_unpackhi_pd(r0, r1));
-        let (t2, t3) = (avx._mm256_unpacklo_pd(r2, r3), avx._mm256_unpackhi_pd(r2, r3));
-        [
-            avx._mm256_permute2f128_pd::<0x20>(t0, t2),
-            avx._mm256_permute2f128_pd::<0x20>(t1, t3),
-            avx._mm256_permute2f128_pd::<0x31>(t0, t2),
-        ]
+        let [x, y, z, _] = transpose4(simd, [load(0), load(1), load(2), load(3)]);
+        [x, y, z]
     }
     // `difference_of_products_f64`, operation for operation, then + 0.0.
     #[inline(always)]
@@ -453,12 +446,8 @@ fn face_records_v3(
         let abs = |v: __m256d| avx._mm256_andnot_pd(sign, v);
         let m = avx._mm256_add_pd(avx._mm256_add_pd(abs(nx), abs(ny)), abs(nz));
         all &= avx._mm256_movemask_pd(avx._mm256_cmp_pd::<_CMP_GT_OQ>(m, least4)) == 0b1111;
-        let (t0, t1) = (avx._mm256_unpacklo_pd(nx, ny), avx._mm256_unpackhi_pd(nx, ny));
-        let (t2, t3) = (avx._mm256_unpacklo_pd(nz, m), avx._mm256_unpackhi_pd(nz, m));
-        out[0] = bytemuck::cast(avx._mm256_permute2f128_pd::<0x20>(t0, t2));
-        out[1] = bytemuck::cast(avx._mm256_permute2f128_pd::<0x20>(t1, t3));
-        out[2] = bytemuck::cast(avx._mm256_permute2f128_pd::<0x31>(t0, t2));
-        out[3] = bytemuck::cast(avx._mm256_permute2f128_pd::<0x31>(t1, t3));
+        let [r0, r1, r2, r3] = transpose4(simd, [nx, ny, nz, m]);
+        *out = [bytemuck::cast(r0), bytemuck::cast(r1), bytemuck::cast(r2), bytemuck::cast(r3)];
     }
     all & face_records_compiled(corners, rest, least, record_rest)
 }
