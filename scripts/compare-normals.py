@@ -9,13 +9,16 @@ naive f32 loop on all cores, and the additions alone (no arithmetic). Then the k
 its per-frame call (the plan made outside the timing), against Open3D and the bound.
 
     python3 -m venv .venv && .venv/bin/pip install numpy scipy trimesh open3d
+    # Open3D's wheel also needs libusb-1.0 from the system (Debian: apt install libusb-1.0-0).
     .venv/bin/python scripts/compare-normals.py [--repeats N]
 
 The meshes come from `cargo run --release -p cg-core --example export_mesh -- export LEVEL DIR`
 (.npy files), the kit's times from `... -- time LEVEL N` (ns, best of N; also the kit on one
 thread, the kit with the kernel of a CPU without FMA, a naive f32 loop on one thread and on all
 cores with its error, the additions alone on all cores, and the plan: made once, per frame on
-all cores and on one thread). Notes: trimesh weights
+all cores and on one thread; beside the plan, the plan a user would write without care — a
+vertex-to-face table made once, then f32 face normals and a gather on all cores — with its
+error). Notes: trimesh weights
 its vertex normals by the corner angles, not the areas (its `vertex_normals` is what a user calls);
 Open3D reuses triangle normals it already has, so they are cleared before each call. Both are
 timed best of N like the kit. Writes nothing; prints a table (docs/performance.md).
@@ -78,6 +81,8 @@ def main():
                    "naive_angle": float(k["naive_f32_max_angle_rad"]),
                    "naive_all": float(k["naive_f32_all_cores_ns_best"]),
                    "additions": float(k["additions_all_cores_ns_best"]),
+                   "table": float(k["table_f32_all_cores_ns_best"]),
+                   "table_angle": float(k["table_f32_all_cores_max_angle_rad"]),
                    "copy_one": float(k["copy_bytes_per_s"]),
                    "copy": float(k["copy_all_cores_bytes_per_s"]),
                    "plan_build": float(k["plan_build_ns_best"]),
@@ -148,12 +153,13 @@ def main():
               f"| {r['bound'] / 1e6:.2f} | {o3d_ratio} | {r['plan'] / r['bound']:.2f} |")
     print()
     print("| faces | plan per frame, median ms | plan, one thread | one-shot kit | "
-          "records per face | renumbered |")
-    print("|---|---|---|---|---|---|")
+          "records per face | renumbered | table f32 loop ms | table/bound | its largest angle |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         print(f"| {r['faces']} | {r['plan_median'] / 1e6:.2f} | {r['plan_one'] / 1e6:.2f} "
               f"| {r['kit'] / 1e6:.2f} | {r['plan_records']:.3f} "
-              f"| {'yes' if r['plan_renumbered'] else 'no'} |")
+              f"| {'yes' if r['plan_renumbered'] else 'no'} | {r['table'] / 1e6:.2f} "
+              f"| {r['table'] / r['bound']:.2f} | {r['table_angle']:.1e} rad |")
 
 
 if __name__ == "__main__":
