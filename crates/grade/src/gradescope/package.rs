@@ -50,10 +50,11 @@ if ! command -v cargo >/dev/null 2>&1; then
   export PATH="$HOME/.cargo/bin:$PATH"
 fi
 
-# The kit's crates (grading builds offline) and its `cg`.
+# The kit's crates (grading builds offline) and its `cg`: grading needs the reference and the
+# instructors' commands, not the GPU renderer (wgpu and its tree), so that is left out.
 cd "$SOURCE"
 cargo fetch --locked
-cargo build --release --locked -p cg-cli
+cargo build --release --locked -p cg-cli --no-default-features --features reference,instructor
 
 # The pristine stubs graded once: the work folder's slot is built, so a submission rebuilds
 # only the student's crate and the worker.

@@ -206,6 +206,33 @@ fn the_zip_holds_the_scripts_and_the_kit_with_solutions() {
     let _ = std::fs::remove_dir_all(&root);
 }
 
+/// `setup.sh` builds `cg` with what grading needs (the reference, the instructors' commands) and
+/// without the GPU renderer, whose tree (wgpu and the rest) would only lengthen every
+/// autograder's setup: cg-cli's default features are switched off, and every feature named is
+/// one of cg-cli's.
+#[test]
+fn setup_builds_cg_without_the_gpu_renderer() {
+    let line = package::SETUP_SH
+        .lines()
+        .find(|l| l.starts_with("cargo build"))
+        .expect("setup.sh builds cg");
+    let words: Vec<&str> = line.split_whitespace().collect();
+    assert!(words.contains(&"-p") && words.contains(&"cg-cli"), "{line}");
+    assert!(words.contains(&"--no-default-features"), "{line}");
+    let at = words.iter().position(|w| *w == "--features").expect(line);
+    let features: Vec<&str> = words[at + 1].split(',').collect();
+    let manifest = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cli/Cargo.toml");
+    let manifest: toml::Table = std::fs::read_to_string(manifest).unwrap().parse().unwrap();
+    let known = manifest["features"].as_table().unwrap();
+    for feature in &features {
+        assert!(known.contains_key(*feature), "cg-cli has no feature {feature}: {line}");
+    }
+    for needed in ["reference", "instructor"] {
+        assert!(features.contains(&needed), "grading needs {needed}: {line}");
+    }
+    assert!(!features.contains(&"gpu"), "{line}");
+}
+
 /// Runs `run_autograder` in the fake tree `root` with `cg` at `cg`.
 fn run_autograder(root: &Path, cg: &Path) -> Value {
     let script = root.join("source/run_autograder");
