@@ -5,7 +5,7 @@
 //!
 //! A library with a one-line binary (`src/main.rs`): the library's compilation can start as
 //! soon as its dependencies' interfaces are known, beside theirs, where a binary would wait for
-//! all of them to finish (about 10 s of a cold build on 2 cores; docs/performance.md §3).
+//! all of them to finish (about 8 s at the end of a cold build on 2 cores; docs/performance.md §3).
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
