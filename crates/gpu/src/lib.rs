@@ -52,6 +52,7 @@
 
 mod error;
 mod prepare;
+mod readback;
 pub mod shader;
 
 use std::collections::HashMap;
@@ -159,6 +160,8 @@ pub struct Frame {
     light_count: u32,
     draws: Vec<DrawCall>,
     depth: wgpu::TextureView,
+    /// The read-back target and buffer, made on the first [`Gpu::read_back_into`].
+    readback: Mutex<Option<readback::Readback>>,
 }
 
 impl Gpu {
@@ -304,97 +307,6 @@ impl Gpu {
             enabled: enabled(&frame.features),
             shader: frame.shader,
         })
-    }
-
-    /// Draws `frame` (made for [`READBACK_FORMAT`], or for `Bgra8Unorm` — a window surface's
-    /// usual format, so a window can save the very frame it presented) into a new texture and
-    /// reads it back.
-    ///
-    /// # Errors
-    /// [`GpuError::Wgpu`] for a frame of another format, or an error wgpu reports.
-    pub fn read_back(&self, frame: &Frame) -> Result<Image, GpuError> {
-        let bgra = match frame.format {
-            READBACK_FORMAT => false,
-            wgpu::TextureFormat::Bgra8Unorm => true,
-            other => {
-                return Err(GpuError::Wgpu(format!(
-                    "read_back needs a frame made for {READBACK_FORMAT:?} or Bgra8Unorm, not \
-                     {other:?}"
-                )));
-            }
-        };
-        let (width, height) = (frame.width, frame.height);
-        let target = self.device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("cg-gpu target"),
-            size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: frame.format,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-            view_formats: &[],
-        });
-        let view = target.create_view(&wgpu::TextureViewDescriptor::default());
-        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
-        self.render_to_view(frame, &view);
-        let row = width * 4;
-        let padded =
-            row.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-        let readback = self.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("cg-gpu readback"),
-            size: u64::from(padded) * u64::from(height),
-            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-            mapped_at_creation: false,
-        });
-        let mut encoder = self.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
-            label: Some("cg-gpu readback"),
-        });
-        encoder.copy_texture_to_buffer(
-            wgpu::TexelCopyTextureInfo {
-                texture: &target,
-                mip_level: 0,
-                origin: wgpu::Origin3d::ZERO,
-                aspect: wgpu::TextureAspect::All,
-            },
-            wgpu::TexelCopyBufferInfo {
-                buffer: &readback,
-                layout: wgpu::TexelCopyBufferLayout {
-                    offset: 0,
-                    bytes_per_row: Some(padded),
-                    rows_per_image: Some(height),
-                },
-            },
-            wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
-        );
-        self.queue.submit([encoder.finish()]);
-        if let Some(e) = pollster::block_on(scope.pop()) {
-            return Err(GpuError::Wgpu(e.to_string()));
-        }
-        let slice = readback.slice(..);
-        let (sender, receiver) = std::sync::mpsc::channel();
-        slice.map_async(wgpu::MapMode::Read, move |r| {
-            let _ = sender.send(r);
-        });
-        self.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| GpuError::Wgpu(e.to_string()))?;
-        receiver
-            .recv()
-            .map_err(|e| GpuError::Wgpu(e.to_string()))?
-            .map_err(|e| GpuError::Wgpu(e.to_string()))?;
-        let pixels: Vec<[u8; 4]> = {
-            let data = slice.get_mapped_range().map_err(|e| GpuError::Wgpu(e.to_string()))?;
-            data.chunks(padded as usize)
-                .flat_map(|r| {
-                    r[..row as usize].chunks_exact(4).map(|p| {
-                        if bgra { [p[2], p[1], p[0], 255] } else { [p[0], p[1], p[2], 255] }
-                    })
-                })
-                .collect()
-        };
-        readback.unmap();
-        Image::from_rgba8(width, height, &pixels)
-            .ok_or_else(|| GpuError::Wgpu("readback size mismatch".into()))
     }
 
     /// Draws `frame` into `view` (a texture view of `frame.format`, `frame.width ×
@@ -566,6 +478,7 @@ impl Gpu {
             light_count: uniform.light_count[0],
             draws,
             depth,
+            readback: Mutex::new(None),
         })
     }
 

@@ -304,24 +304,35 @@ fn time_per_frame() {
 }
 
 /// The window path: a frame made once, moved to another camera and size by
-/// [`Gpu::update_view`], draws what a fresh render of the moved scene draws.
+/// [`Gpu::update_view`], draws what a fresh render of the moved scene draws; read back into one
+/// [`cg_core::image::Image`] again and again ([`Gpu::read_back_into`], with the frame's kept
+/// target and buffer), each size gives its own picture.
 #[test]
 fn a_frame_follows_the_camera_and_the_size() {
     let Some(gpu) = gpu() else { return };
     let mut s = scene("course-sample.toml");
     let mut frame = gpu.frame(&s, &Options::default(), cg_gpu::READBACK_FORMAT).unwrap();
+    let mut image = gpu.read_back(&frame).unwrap();
+    let first = image.to_rgba8();
+    assert_eq!((image.width, image.height), (640, 640));
     let cg_core::scene::Camera::Orbit(orbit) = &mut s.camera else {
         panic!("the course sample has the orbit camera")
     };
     orbit.pitch_deg = -60.0;
     orbit.yaw_deg = 30.0;
     gpu.update_view(&mut frame, &s, 300, 200).unwrap();
-    let image = gpu.read_back(&frame).unwrap();
+    gpu.read_back_into(&frame, &mut image).unwrap();
+    assert_eq!((image.width, image.height, image.pixels.len()), (300, 200, 300 * 200));
     let cpu =
         cg_raster::render(&s, &cg_raster::Options { size: Some((300, 200)), ..Default::default() })
             .unwrap();
     let c = compare(&image.to_rgba8(), &cpu.image.to_rgba8(), 300, 200, 1);
     assert_eq!(c.pixels_over, 0, "{c:?}");
+    // Back to the first size and camera: the first picture again, into the same image.
+    let s = scene("course-sample.toml");
+    gpu.update_view(&mut frame, &s, 640, 640).unwrap();
+    gpu.read_back_into(&frame, &mut image).unwrap();
+    assert!(image.to_rgba8() == first, "the frame read back again at 640 × 640 differs");
     assert!(gpu.update_view(&mut frame, &s, 0, 1).is_err());
 }
 
