@@ -386,7 +386,7 @@ fn draw_ready<L: Lighting + ?Sized>(
             // The band's tiles, each a task of its own (not drawn one after another).
             targets.into_iter().map(|target| (row as u32, target)).collect::<Vec<_>>()
         })
-        .map(|(row, mut target)| {
+        .map_init(PhongSpan::default, |span, (row, mut target)| {
             let column = target.x0 / frame.tile;
             let rect = frame.tile_rect(column, row);
             let index = (row * columns + column) as usize;
@@ -397,7 +397,7 @@ fn draw_ready<L: Lighting + ?Sized>(
                     depth.copy_from_slice(&clear_row.1[..depth.len()]);
                 }
             }
-            draw_tile(frame, draws, buffers, chunks, bins.tile(index), rect, &mut target)
+            draw_tile(frame, draws, buffers, chunks, bins.tile(index), rect, &mut target, span)
         })
         .reduce(Stats::default, |mut a, b| {
             a += b;

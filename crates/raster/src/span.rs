@@ -139,20 +139,24 @@ pub(crate) struct V3N<const N: usize> {
 pub(crate) type V3 = V3N<LANES>;
 
 impl<const N: usize> Default for V3N<N> {
+    #[inline(always)]
     fn default() -> Self {
         V3N { x: [0.0; N], y: [0.0; N], z: [0.0; N] }
     }
 }
 
 impl<const N: usize> V3N<N> {
+    #[inline(always)]
     pub(crate) fn set(&mut self, i: usize, v: Vec3) {
         (self.x[i], self.y[i], self.z[i]) = (v.x, v.y, v.z);
     }
 
+    #[inline(always)]
     pub(crate) fn get(&self, i: usize) -> Vec3 {
         Vec3::new(self.x[i], self.y[i], self.z[i])
     }
 
+    #[inline(always)]
     pub(crate) fn splat(v: Vec3) -> Self {
         V3N { x: [v.x; N], y: [v.y; N], z: [v.z; N] }
     }
@@ -554,6 +558,17 @@ pub(crate) struct PhongSpan {
 }
 
 impl PhongSpan {
+    /// Empty, for a new tile: as [`PhongSpan::default`], keeping the arrays (each lane's entries
+    /// are written before they are read) so that nothing is cleared.
+    #[inline]
+    pub(crate) fn reset(&mut self) {
+        self.object = 0;
+        self.len = 0;
+        self.count = 0;
+        self.current = None;
+        self.gathered_slot_0 = false;
+    }
+
     /// A new triangle's fragments follow.
     #[inline]
     pub(crate) fn end_triangle(&mut self) {

@@ -219,8 +219,11 @@ fn shade<const W: usize>(
     x: u32,
     y: u32,
 ) {
-    let write = |color: &mut [Rgb], c: &dyn Fn(usize) -> Rgb| {
-        if passed == Mask::MAX && color.len() >= W {
+    #[inline(always)]
+    fn write<const W: usize>(passed: Mask, color: &mut [Rgb], c: impl Fn(usize) -> Rgb) {
+        // Every lane passed (W ≤ 32 bits of the mask).
+        let all = Mask::MAX >> (Mask::BITS - W as u32);
+        if passed == all && color.len() >= W {
             for k in 0..W {
                 color[k] = c(k);
             }
@@ -231,13 +234,19 @@ fn shade<const W: usize>(
                 }
             }
         }
-    };
+    }
     match simple {
-        Simple::Flat(c) => write(color, &|_| *c),
+        Simple::Flat(c) => write::<W>(passed, color, |_| *c),
         Simple::Gouraud(g) => {
             // As the fragment stage: perspective-correct barycentrics, then
             // `b.x·c₀ + b.y·c₁ + b.z·c₂`, clamped.
-            let (inv_w, colors) = (g.inv_w.map(|w| [w; W]), g.colors.map(V3N::<W>::splat));
+            // Spelled out: `array::map`'s closures are not always inlined into the AVX2 copy.
+            let inv_w = [[g.inv_w[0]; W], [g.inv_w[1]; W], [g.inv_w[2]; W]];
+            let colors = [
+                V3N::<W>::splat(g.colors[0]),
+                V3N::<W>::splat(g.colors[1]),
+                V3N::<W>::splat(g.colors[2]),
+            ];
             let mut weights = V3N::default();
             span::perspective(b, &inv_w, &mut weights);
             let mut lit = V3N::default();
@@ -247,7 +256,7 @@ fn shade<const W: usize>(
                 lit.y[k] = channel(lit.y[k]);
                 lit.z[k] = channel(lit.z[k]);
             }
-            write(color, &|k| lit.get(k));
+            write::<W>(passed, color, |k| lit.get(k));
         }
         Simple::No => runs.push(Run { x, y, passed, b: *b }),
     }

@@ -22,8 +22,10 @@ pub(super) struct Target<'a> {
 }
 
 /// Draws one tile: every triangle binned to it (`bin`: `(chunk, triangle)` pairs in submission
-/// order) into `target` (the tile's pixels, cleared to the clear colour and depth 1).
+/// order) into `target` (the tile's pixels, cleared to the clear colour and depth 1). `span` is
+/// the thread's Phong span, reused from tile to tile (a new one is several kilobytes to clear).
 #[inline]
+#[allow(clippy::too_many_arguments)]
 pub(super) fn draw_tile<L: Lighting + ?Sized>(
     frame: &Frame<'_, L>,
     draws: &[Draw<'_>],
@@ -32,11 +34,12 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
     bin: &[(u32, u32)],
     rect: Rect,
     target: &mut Target<'_>,
+    span: &mut PhongSpan,
 ) -> Stats {
     let mut stats = Stats::default();
     let mut counts = LightCounts::default();
     // Phong's fragments of the scene's own light model, lit sixteen at a time.
-    let mut span = PhongSpan::default();
+    span.reset();
     // Runs of sixteen pixels that passed the depth test and still need their fragment stage.
     let mut runs = Vec::new();
     let spans = frame.spans.as_ref().filter(|_| frame.shading == Shading::Phong);
@@ -64,7 +67,7 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
         let chunk = &chunks[c as usize];
         let draw = &draws[chunk.object];
         if span.object != chunk.object {
-            flush(&mut span, target, &mut counts, &mut stats);
+            flush(span, target, &mut counts, &mut stats);
             span.object = chunk.object;
         }
         let vertices = &buffers[chunk.object];
@@ -108,7 +111,7 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
                 } else {
                     register!();
                     if span.push((row as u32, column as u32), b) {
-                        flush(&mut span, target, &mut counts, &mut stats);
+                        flush(span, target, &mut counts, &mut stats);
                     }
                 }
             }};
@@ -161,15 +164,19 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
                 // A whole run is one span (the common case inside a large triangle).
                 register!();
                 span.fill((row as u32, column as u32), &run.b);
-                flush(&mut span, target, &mut counts, &mut stats);
+                flush(span, target, &mut counts, &mut stats);
                 continue;
             }
-            for k in (0..STAGED).filter(|k| run.passed >> k & 1 != 0) {
+            // The pixels that passed, lowest bit first (left to right).
+            let mut left = run.passed;
+            while left != 0 {
+                let k = left.trailing_zeros() as usize;
+                left &= left - 1;
                 stage!(row, column + k, run.b.get(k));
             }
         }
     }
-    flush(&mut span, target, &mut counts, &mut stats);
+    flush(span, target, &mut counts, &mut stats);
     stats.add_lighting(&counts);
     stats
 }
