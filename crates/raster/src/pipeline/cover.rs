@@ -228,10 +228,11 @@ fn shade<const W: usize>(
                 color[k] = c(k);
             }
         } else {
+            // A select per lane, not a branch: at a triangle's edge which lanes passed is
+            // not predictable.
             for k in 0..color.len().min(W) {
-                if passed >> k & 1 != 0 {
-                    color[k] = c(k);
-                }
+                let new = c(k);
+                color[k] = if passed >> k & 1 != 0 { new } else { color[k] };
             }
         }
     }
