@@ -7,7 +7,9 @@
 //! 1.3 M triangles at 1920 × 1080, each in Gouraud and Phong shading, the CPU rasterizer on all
 //! cores against `cg_gpu` (on Mesa's lavapipe where that is the Vulkan driver: the same cores).
 //! Prints `name value` lines, the ratios, and the CPU's Phong/Gouraud ratio at 640 × 640
-//! (docs/performance.md).
+//! (docs/performance.md). For each GPU row also where its time goes: `_gpu_draw_ms`, the frame
+//! drawn without reading it back, and `_gpu_first_read_back_ms`, a new frame's first read-back,
+//! which makes its target and read-back buffer (docs/gpu.md).
 //!
 //! ```text
 //! VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json \
@@ -67,8 +69,49 @@ fn row(
         });
         println!("{name}_gpu_ms {:.3}", t * 1e3);
         println!("{name}_cpu_over_gpu {:.2}", cpu / t);
+        gpu_parts(name, gpu, scene, &options, &frame, repeats);
     }
     cpu
+}
+
+/// Where the GPU's time goes: the frame drawn alone (into a target of its own, then a wait for
+/// the GPU), and a new frame's first read-back, which makes the frame's target and read-back
+/// buffer (on a real GPU, driver allocations; best of three new frames, each made untimed).
+fn gpu_parts(
+    name: &str,
+    gpu: &cg_gpu::Gpu,
+    scene: &Scene,
+    options: &cg_gpu::Options,
+    frame: &cg_gpu::Frame,
+    repeats: usize,
+) {
+    use cg_gpu::wgpu;
+    let device = gpu.device();
+    let target = device.create_texture(&wgpu::TextureDescriptor {
+        label: None,
+        size: wgpu::Extent3d { width: frame.width, height: frame.height, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: frame.format,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+        view_formats: &[],
+    });
+    let view = target.create_view(&wgpu::TextureViewDescriptor::default());
+    let draw = best(repeats, || {
+        gpu.render_to_view(frame, &view);
+        device.poll(wgpu::PollType::wait_indefinitely()).expect("the GPU finishes");
+    });
+    println!("{name}_gpu_draw_ms {:.3}", draw * 1e3);
+    let first = (0..3)
+        .map(|_| {
+            let new = gpu.frame(scene, options, frame.format).expect("the GPU makes the frame");
+            let t = Instant::now();
+            std::hint::black_box(gpu.read_back(&new).expect("the GPU draws"));
+            t.elapsed().as_secs_f64()
+        })
+        .fold(f64::INFINITY, f64::min);
+    println!("{name}_gpu_first_read_back_ms {:.3}", first * 1e3);
 }
 
 fn main() {
