@@ -72,18 +72,29 @@ impl Gpu {
         Ok(())
     }
 
-    fn readback_target(&self, frame: &Frame) -> Readback {
-        let (width, height) = (frame.width, frame.height);
-        let target = self.device.create_texture(&wgpu::TextureDescriptor {
+    /// A new texture `frame` can be drawn into with [`Gpu::render_to_view`] (through a view of
+    /// it) and copied from: its size and colour format, a render attachment and a copy source.
+    #[must_use]
+    pub fn target(&self, frame: &Frame) -> wgpu::Texture {
+        self.device.create_texture(&wgpu::TextureDescriptor {
             label: Some("cg-gpu target"),
-            size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+            size: wgpu::Extent3d {
+                width: frame.width,
+                height: frame.height,
+                depth_or_array_layers: 1,
+            },
             mip_level_count: 1,
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
             format: frame.format,
             usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
             view_formats: &[],
-        });
+        })
+    }
+
+    fn readback_target(&self, frame: &Frame) -> Readback {
+        let (width, height) = (frame.width, frame.height);
+        let target = self.target(frame);
         let view = target.create_view(&wgpu::TextureViewDescriptor::default());
         let padded = (width * 4).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
             * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;

@@ -273,20 +273,7 @@ fn time_per_frame() {
         }
         let headless = start.elapsed().as_secs_f64() * 1e3 / f64::from(runs);
         let frame = gpu.frame(&s, &options, cg_gpu::READBACK_FORMAT).unwrap();
-        let target = gpu.device().create_texture(&cg_gpu::wgpu::TextureDescriptor {
-            label: None,
-            size: cg_gpu::wgpu::Extent3d {
-                width: frame.width,
-                height: frame.height,
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: cg_gpu::wgpu::TextureDimension::D2,
-            format: frame.format,
-            usage: cg_gpu::wgpu::TextureUsages::RENDER_ATTACHMENT,
-            view_formats: &[],
-        });
+        let target = gpu.target(&frame);
         let view = target.create_view(&cg_gpu::wgpu::TextureViewDescriptor::default());
         let start = Instant::now();
         for _ in 0..runs {

@@ -87,16 +87,7 @@ fn gpu_parts(
 ) {
     use cg_gpu::wgpu;
     let device = gpu.device();
-    let target = device.create_texture(&wgpu::TextureDescriptor {
-        label: None,
-        size: wgpu::Extent3d { width: frame.width, height: frame.height, depth_or_array_layers: 1 },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: frame.format,
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-        view_formats: &[],
-    });
+    let target = gpu.target(frame);
     let view = target.create_view(&wgpu::TextureViewDescriptor::default());
     let draw = best(repeats, || {
         gpu.render_to_view(frame, &view);

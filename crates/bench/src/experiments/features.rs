@@ -123,20 +123,7 @@ mod gpu {
         let frame = gpu.frame(scene, &options, cg_gpu::READBACK_FORMAT)?;
         let device = gpu.device();
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let target = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("cg-bench features"),
-            size: wgpu::Extent3d {
-                width: frame.width,
-                height: frame.height,
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: frame.format,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-            view_formats: &[],
-        });
+        let target = gpu.target(&frame);
         let view = target.create_view(&wgpu::TextureViewDescriptor::default());
         let draws = config.gpu_draws.max(1);
         let mut failure = None;
