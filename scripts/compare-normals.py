@@ -10,6 +10,7 @@ its per-frame call (the plan made outside the timing), against Open3D and the bo
 
     python3 -m venv .venv && .venv/bin/pip install numpy scipy trimesh open3d
     # Open3D's wheel also needs libusb-1.0 from the system (Debian: apt install libusb-1.0-0).
+    # Without a library its columns stay empty and the results say so; --strict fails instead.
     .venv/bin/python scripts/compare-normals.py [--repeats N]
 
 The meshes come from `cargo run --release -p cg-core --example export_mesh -- export LEVEL DIR`
@@ -56,16 +57,24 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--repeats", type=int, default=20)
     parser.add_argument("--levels", default="7,8")
+    parser.add_argument("--strict", action="store_true",
+                        help="exit with status 1 when trimesh or Open3D cannot be loaded")
     args = parser.parse_args()
+    # A library that cannot be loaded leaves its columns empty ("—"); the reason is printed with
+    # the results, not only on stderr, and --strict makes it a failure.
+    missing = {}
     try:
         import trimesh
-    except ImportError:
+    except ImportError as e:
+        missing["trimesh"] = str(e)
         trimesh = None
     try:
         import open3d as o3d
     except ImportError as e:
-        print(f"open3d not available ({e}); comparing with trimesh only", file=sys.stderr)
+        missing["Open3D"] = str(e)
         o3d = None
+    for name, why in missing.items():
+        print(f"{name} not available ({why}); its columns will be empty", file=sys.stderr)
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for level in [int(x) for x in args.levels.split(",")]:
@@ -160,6 +169,11 @@ def main():
               f"| {r['kit'] / 1e6:.2f} | {r['plan_records']:.3f} "
               f"| {'yes' if r['plan_renumbered'] else 'no'} | {r['table'] / 1e6:.2f} "
               f"| {r['table'] / r['bound']:.2f} | {r['table_angle']:.1e} rad |")
+    for name, why in missing.items():
+        print(f"\nNOT COMPARED: {name} could not be loaded ({why}); its columns are empty. See the "
+              "set-up at the top of this script.")
+    if missing and args.strict:
+        sys.exit(1)
 
 
 if __name__ == "__main__":
