@@ -45,17 +45,38 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         args.dir.display(),
         t("ファイル", "files").get(lang)
     );
-    // The folder as the command names it, quoted for a shell when it has spaces.
-    let dir = args.dir.display().to_string();
-    let dir = if dir.contains([' ', '\'', '"']) {
-        format!("'{}'", dir.replace('\'', "'\\''"))
-    } else {
-        dir
-    };
-    println!(
-        "{} cd {dir} && cargo run --release -- check --student 12345678",
-        t("solutions/ は含まれていません。確かめるには:", "It has no solutions/. To try it:")
-            .get(lang)
-    );
+    print!("{}", try_it(&args.dir, lang));
     Ok(())
+}
+
+/// How to try the copy in `dir`: two commands on lines of their own, the folder quoted for a
+/// shell where it needs it (`shell_word`: POSIX shells and PowerShell). Not joined by `&&`,
+/// which Windows PowerShell 5.1 (the one Windows opens) cannot parse.
+fn try_it(dir: &std::path::Path, lang: Lang) -> String {
+    format!(
+        "{}\n  cd {}\n  cargo run --release -- check --student 12345678\n",
+        t("solutions/ は含まれていません。確かめるには:", "It has no solutions/. To try it:")
+            .get(lang),
+        cg_harness::args::shell_word(&dir.display().to_string())
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The folder comes back whole through a shell: as it is when plain, in single quotes (a
+    /// quote inside closed, escaped and reopened) when it has spaces or quotes; and no `&&`.
+    #[test]
+    fn the_next_commands_name_the_folder_as_a_shell_reads_it() {
+        let plain = try_it(std::path::Path::new("/tmp/hand-out_1"), Lang::En);
+        assert!(plain.contains("\n  cd /tmp/hand-out_1\n"), "{plain}");
+        let odd = try_it(std::path::Path::new("/tmp/Tom's copy"), Lang::Ja);
+        assert!(odd.contains("\n  cd '/tmp/Tom'\\''s copy'\n"), "{odd}");
+        assert!(odd.contains("確かめるには"), "{odd}");
+        for text in [plain, odd] {
+            assert!(!text.contains("&&"), "{text}");
+            assert!(text.ends_with("\n  cargo run --release -- check --student 12345678\n"));
+        }
+    }
 }

@@ -39,7 +39,7 @@ fn the_handout_builds_and_checks_on_its_own_and_a_students_day_runs_in_it() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     // The next command it prints names this folder, runnable as printed.
     let out = String::from_utf8_lossy(&o.stdout);
-    let cd = format!("cd {} && cargo run --release -- check", dir.display());
+    let cd = format!("  cd {}\n  cargo run --release -- check", dir.display());
     assert!(out.contains(&cd) && !out.contains("<DIR>"), "{out}");
 
     // No solutions anywhere: not the folder, not the manifests, not the lock file.
