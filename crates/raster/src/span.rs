@@ -20,11 +20,12 @@
 //! thirty-two were no faster than sixteen (docs/performance.md §2).
 //!
 //! **A triangle with one normal** (a face normal, every triangle of a flat object) gives every
-//! fragment the same normal: [`certified`] proves, once per triangle, that the per-fragment f64
+//! fragment the same normal: [`queue::certified`] proves, once per triangle, that the per-fragment f64
 //! interpolation and renormalisation would round to that normal's bits, and the span then skips
 //! that work.
 //!
-//! The light model's counts ([`LightCounts`]) are the ones the point-by-point path makes.
+//! The light model's counts ([`LightCounts`]) are the ones the point-by-point path makes. The
+//! queue of fragments waiting for their span, [`PhongSpan`], is `span/queue.rs`.
 
 // Lane loops index several arrays by the lane, the structure-of-arrays idiom the vectoriser
 // reads best.
@@ -37,6 +38,11 @@ use cg_core::light::{
 };
 use cg_core::math::{DIRECT_UNIT_MIN, try_normalize, try_unit_and_length_f64};
 use multiversion::multiversion;
+
+mod queue;
+#[cfg(test)]
+use queue::certified;
+pub(crate) use queue::{PhongSpan, Texturing, Triangle};
 
 /// Points lit at once.
 pub(crate) const LANES: usize = 16;
@@ -456,271 +462,6 @@ fn select(take: &[bool; LANES], from: &V3, into: &mut V3) {
         into.x[i] = if take[i] { from.x[i] } else { into.x[i] };
         into.y[i] = if take[i] { from.y[i] } else { into.y[i] };
         into.z[i] = if take[i] { from.z[i] } else { into.z[i] };
-    }
-}
-
-/// Phong's fragments waiting to be lit, up to [`LANES`] of them, all of one object, in the order
-/// they passed the depth test (a later one may cover an earlier one's pixel: they are written in
-/// that order, so the later wins, as drawn one by one).
-/// What a Phong fragment needs of its triangle: its corners' attributes (texture coordinates
-/// already shifted by the triangle's origin), made once when its first fragment passes.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct Triangle {
-    /// 1/w of each corner (perspective correction).
-    inv_w: [f32; 3],
-    p: [Vec3; 3],
-    n: [Vec3; 3],
-    color: [Rgb; 3],
-    uv: [cg_core::glam::Vec2; 3],
-    /// The face it belongs to, in its object's prepared mesh (for its face normal).
-    face: u32,
-    /// The normal every fragment gets, where the corners share one normal and it is
-    /// [`certified`] (a face normal, a flat object's triangles).
-    unit: Option<Vec3>,
-}
-
-/// The unit normal that [`interpolate_normals`] gives **every** fragment of a triangle whose three
-/// corners have the normal `n` (bit for bit), or `None` where that cannot be vouched for.
-///
-/// With weights `w ≥ 0`, not all zero, each `nᶜ·wₖ` is exact in f64 (two f32s' product fits in
-/// 48 bits) and the three have one sign, so the sum is `nᶜ·Σw` times `1 + δ`, `|δ| ≤ 2⁻⁵²`, per
-/// component; normalising divides out `Σw`, and the whole fragment's arithmetic puts each
-/// component within `9 · 2⁻⁵³` (relative) of the exact unit vector's, and so within `2⁻⁴⁹` of
-/// `try_normalize_f64(n)`'s (itself within `6 · 2⁻⁵³`). Where that component is
-/// farther than `2⁻⁴⁰` (relative) from a rounding boundary of f32, every fragment's rounding to
-/// f32 gives the same value; otherwise (about one triangle in 10⁵) the fragments go the usual way.
-/// The cancellation test cannot fail either: `|Σ| = Σw·|n|·(1 ± 2⁻⁵⁰)`.
-fn certified(n: Vec3) -> Option<Vec3> {
-    const MARGIN: f64 = 1.0 / (1u64 << 40) as f64;
-    let t = cg_core::math::try_normalize_f64(n.as_dvec3())?;
-    let r = t.as_vec3();
-    let sure =
-        |t: f64, r: f32| (t * (1.0 + MARGIN)) as f32 == r && (t * (1.0 - MARGIN)) as f32 == r;
-    (sure(t.x, r.x) && sure(t.y, r.y) && sure(t.z, r.z)).then_some(r)
-}
-
-impl Triangle {
-    pub(crate) fn new(
-        inv_w: [f32; 3],
-        corners: [(Vec3, Vec3, Rgb, cg_core::glam::Vec2); 3],
-        face: u32,
-    ) -> Triangle {
-        let n = corners.map(|c| c.1);
-        let same =
-            |a: Vec3, b: Vec3| a.to_array().map(f32::to_bits) == b.to_array().map(f32::to_bits);
-        let unit = (same(n[0], n[1]) && same(n[1], n[2])).then(|| certified(n[0])).flatten();
-        Triangle {
-            inv_w,
-            p: corners.map(|c| c.0),
-            n,
-            color: corners.map(|c| c.2),
-            uv: corners.map(|c| c.3),
-            face,
-            unit,
-        }
-    }
-}
-
-/// A texture bound to an object, as the fragment stage applies it.
-#[derive(Clone, Copy)]
-pub(crate) struct Texturing<'a> {
-    pub(crate) texture: &'a cg_core::texture::Texture,
-    pub(crate) sampler: cg_core::texture::Sampler,
-    pub(crate) env: cg_core::texture::TexEnv,
-}
-
-/// Phong's fragments waiting to be lit, up to [`LANES`] of them, all of one object, in the order
-/// they passed the depth test (a later one may cover an earlier one's pixel: they are written in
-/// that order, so the later wins, as drawn one by one). Each lane refers to one of the span's
-/// triangles (at most one per lane).
-#[derive(Default)]
-pub(crate) struct PhongSpan {
-    /// The object they belong to (the draw's index).
-    pub(crate) object: usize,
-    len: usize,
-    /// Screen-space barycentrics.
-    b: V3,
-    /// Which of `triangles` each lane belongs to.
-    slot: [u8; LANES],
-    triangles: [Triangle; LANES],
-    count: usize,
-    /// The slot of the triangle being drawn, while it is in this span.
-    current: Option<u8>,
-    /// Where each goes: row and column within the tile.
-    at: [(u32, u32); LANES],
-    /// The attributes gathered at the last flush.
-    gathered: Gathered,
-    /// Whether `gathered` holds slot 0's triangle in every lane (a large triangle's spans follow
-    /// one another: gathered once).
-    gathered_slot_0: bool,
-    /// The points to light, made at each flush (kept: nothing to clear).
-    points: Points,
-}
-
-impl PhongSpan {
-    /// Empty, for a new tile: as [`PhongSpan::default`], keeping the arrays (each lane's entries
-    /// are written before they are read) so that nothing is cleared.
-    #[inline]
-    pub(crate) fn reset(&mut self) {
-        self.object = 0;
-        self.len = 0;
-        self.count = 0;
-        self.current = None;
-        self.gathered_slot_0 = false;
-    }
-
-    /// A new triangle's fragments follow.
-    #[inline]
-    pub(crate) fn end_triangle(&mut self) {
-        self.current = None;
-        if self.len == 0 {
-            // Only the last triangle, kept by a flush in its middle: not needed any more.
-            self.count = 0;
-        }
-    }
-
-    /// Whether the triangle being drawn is in the span already (else [`PhongSpan::begin`]).
-    #[inline]
-    pub(crate) fn has_triangle(&self) -> bool {
-        self.current.is_some()
-    }
-
-    /// Registers the triangle whose fragments come next.
-    pub(crate) fn begin(&mut self, triangle: Triangle) {
-        if self.count == 0 {
-            self.gathered_slot_0 = false;
-        }
-        self.triangles[self.count] = triangle;
-        self.current = Some(self.count as u8);
-        self.count += 1;
-    }
-
-    /// Adds a fragment of the current triangle with its screen-space barycentrics; `true` when
-    /// the span is full.
-    #[inline]
-    pub(crate) fn push(&mut self, at: (u32, u32), b: Vec3) -> bool {
-        let i = self.len;
-        self.at[i] = at;
-        self.b.set(i, b);
-        self.slot[i] = self.current.unwrap_or(0);
-        self.len += 1;
-        self.len == LANES
-    }
-
-    /// Fills the empty span with a run of [`LANES`] fragments of the current triangle, all
-    /// passed, from `(row, column)` rightwards, with their screen-space barycentrics `b` (what
-    /// [`PhongSpan::push`] would do lane by lane). Then the span is full.
-    #[inline]
-    pub(crate) fn fill(&mut self, (row, column): (u32, u32), b: &V3) {
-        debug_assert!(self.len == 0 && self.current.is_some());
-        self.b = *b;
-        self.at = std::array::from_fn(|k| (row, column + k as u32));
-        self.slot = [self.current.unwrap_or(0); LANES];
-        self.len = LANES;
-    }
-
-    /// Whether no fragment is waiting.
-    #[inline]
-    pub(crate) fn is_empty(&self) -> bool {
-        self.len == 0
-    }
-
-    /// Lights the waiting fragments and gives each its final colour — the lit colour clamped,
-    /// the texture applied (when the object has one), clamped again, as the fragment stage does
-    /// — through `write(row, column, colour)`, in order. `face(face)` is a face's normal.
-    /// Empties the span; the triangle being drawn stays registered, as the next span's first.
-    /// Gives the texture samples
-    /// taken.
-    #[allow(clippy::too_many_arguments)]
-    pub(crate) fn flush(
-        &mut self,
-        lights: &SpanLights,
-        material: &Material,
-        colored: bool,
-        texture: Option<Texturing<'_>>,
-        counts: &mut LightCounts,
-        face: impl Fn(u32) -> Vec3,
-        mut write: impl FnMut(u32, u32, Rgb),
-    ) -> u64 {
-        let len = self.len;
-        if len == 0 {
-            return 0;
-        }
-        let g = &mut self.gathered;
-        if self.count == 1 {
-            // One triangle (the common case for large ones): its attributes in every lane, as
-            // the last flush left them when it was the same triangle.
-            if !self.gathered_slot_0 {
-                self.gathered_slot_0 = true;
-                let t = &self.triangles[0];
-                for k in 0..3 {
-                    g.inv_w[k] = [t.inv_w[k]; LANES];
-                    g.p[k] = V3::splat(t.p[k]);
-                    g.n[k] = V3::splat(t.n[k]);
-                    if colored {
-                        g.color[k] = V3::splat(t.color[k]);
-                    }
-                }
-                g.unit = V3::splat(t.unit.unwrap_or_default());
-                g.certified = [t.unit.is_some(); LANES];
-            }
-        } else {
-            self.gathered_slot_0 = false;
-            for i in 0..LANES {
-                let t = &self.triangles[usize::from(self.slot[i])];
-                for k in 0..3 {
-                    g.inv_w[k][i] = t.inv_w[k];
-                    g.p[k].set(i, t.p[k]);
-                    g.n[k].set(i, t.n[k]);
-                    if colored {
-                        g.color[k].set(i, t.color[k]);
-                    }
-                }
-                g.unit.set(i, t.unit.unwrap_or_default());
-                g.certified[i] = t.unit.is_some();
-            }
-        }
-        let mut b = V3::default();
-        let points = &mut self.points;
-        points.len = len;
-        let mut lit = V3::default();
-        let (triangles, slot) = (&self.triangles, &self.slot);
-        let mut face = |i: usize| face(triangles[usize::from(slot[i])].face);
-        let stage = Stage { lights, material, colored };
-        shade_fragments(&stage, &self.b, g, &mut b, points, &mut face, &mut lit, counts);
-        // `lit` is clamped already (`shade_fragments`).
-        match texture {
-            None => {
-                for i in 0..len {
-                    write(self.at[i].0, self.at[i].1, lit.get(i));
-                }
-            }
-            Some(t) => {
-                for i in 0..len {
-                    // Shifted by the triangle's origin (an integer under repeat): small numbers.
-                    let uv = &self.triangles[usize::from(self.slot[i])].uv;
-                    let bi = b.get(i);
-                    let uv = bi.x * uv[0] + bi.y * uv[1] + bi.z * uv[2];
-                    let color = t.env.apply(lit.get(i), t.texture.sample(uv, t.sampler));
-                    write(self.at[i].0, self.at[i].1, saturate(color));
-                }
-            }
-        }
-        self.len = 0;
-        // The triangle being drawn stays, as the next span's first: its fragments go on.
-        match self.current {
-            Some(k) => {
-                let k = usize::from(k);
-                self.triangles[0] = self.triangles[k];
-                self.count = 1;
-                self.current = Some(0);
-                if k != 0 {
-                    self.gathered_slot_0 = false;
-                }
-            }
-            None => self.count = 0,
-        }
-        if texture.is_some() { len as u64 } else { 0 }
     }
 }
 

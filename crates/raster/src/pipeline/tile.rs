@@ -167,6 +167,19 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
                 flush(span, target, &mut counts, &mut stats);
                 continue;
             }
+            if corners_now.is_none() {
+                // Phong's spans: the run's pixels that passed go in together, left to right,
+                // flushing each time the span fills.
+                register!();
+                let mut left = run.passed;
+                while left != 0 {
+                    left = span.push_run((row as u32, column as u32), &run.b, left);
+                    if span.is_full() {
+                        flush(span, target, &mut counts, &mut stats);
+                    }
+                }
+                continue;
+            }
             // The pixels that passed, lowest bit first (left to right).
             let mut left = run.passed;
             while left != 0 {
