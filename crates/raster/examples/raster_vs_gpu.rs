@@ -3,9 +3,10 @@
 //! [`cg_gpu::Gpu::frame`]: buffers made and uploaded), then each timing draws the frame and reads
 //! it back, as a window redraws (the CPU into the last frame's colour and depth buffers,
 //! [`cg_raster::Prepared::draw_into`]; the GPU into its frame's depth buffer and target, copied
-//! into the last frame's image, [`cg_gpu::Gpu::read_back_into`]). Four rows: the course scene at 640 × 640 and an icosphere of
-//! 1.3 M triangles at 1920 × 1080, each in Gouraud and Phong shading, the CPU rasterizer on all
-//! cores against `cg_gpu` (on Mesa's lavapipe where that is the Vulkan driver: the same cores).
+//! into the last frame's image, [`cg_gpu::Gpu::read_back_into`]). Four rows: the course scene at
+//! 640 × 640 and an icosphere of 1.3 M triangles at 1920 × 1080, each in Gouraud and Phong
+//! shading, the CPU rasterizer on all cores against `cg_gpu` (on Mesa's lavapipe where that is
+//! the Vulkan driver: the same cores).
 //! Prints `name value` lines, the ratios, and the CPU's Phong/Gouraud ratio at 640 × 640
 //! (docs/performance.md). For each GPU row also where its time goes: `_gpu_draw_ms`, the frame
 //! drawn without reading it back, and `_gpu_first_read_back_ms`, a new frame's first read-back,

@@ -20,9 +20,9 @@
 //! thirty-two were no faster than sixteen (docs/performance.md §2).
 //!
 //! **A triangle with one normal** (a face normal, every triangle of a flat object) gives every
-//! fragment the same normal: [`queue::certified`] proves, once per triangle, that the per-fragment f64
-//! interpolation and renormalisation would round to that normal's bits, and the span then skips
-//! that work.
+//! fragment the same normal: [`queue::certified`] proves, once per triangle, that the
+//! per-fragment f64 interpolation and renormalisation would round to that normal's bits, and the
+//! span then skips that work.
 //!
 //! The light model's counts ([`LightCounts`]) are the ones the point-by-point path makes. The
 //! queue of fragments waiting for their span, [`PhongSpan`], is `span/queue.rs`.
