@@ -153,18 +153,19 @@ struct Triangle {
     inv_w: [f32; 3],
     /// The corners' vertices (see [`NEW_VERTEX`]).
     slot: [u32; 3],
-    /// Phong: the face normal in world space, the fallback of [`interpolate_normal`] (zero under
-    /// the other modes, which do not read it, and when the scene's own light model lights the
-    /// fragments sixteen at a time: that path makes it only where it is needed).
+    /// Phong: the face normal in world space, the fallback of
+    /// [`cg_core::normals::interpolate_normal`] (zero under the other modes, which do not read
+    /// it, and when the scene's own light model lights the fragments sixteen at a time: that path
+    /// makes it only where it is needed).
     face_normal: Vec3,
     /// Flat: the face's colour, clamped to `[0, 1]`.
     flat_color: Rgb,
     /// The face it is (a part of), in its object's prepared mesh.
     face: u32,
     /// The integer shift taken off the face's texture coordinates before they are interpolated
-    /// ([`Sampler::repeat_origin`] of its first corner; zero without a texture): vertices made
-    /// by clipping hold shifted coordinates already, the others are shifted when the triangle is
-    /// drawn (docs/numerics.md row 23).
+    /// ([`cg_core::texture::Sampler::repeat_origin`] of its first corner; zero without a
+    /// texture): vertices made by clipping hold shifted coordinates already, the others are
+    /// shifted when the triangle is drawn (docs/numerics.md row 23).
     uv_origin: Vec2,
 }
 

@@ -30,7 +30,7 @@ use crate::span::{self, V3N};
 /// Pixels of a row rasterized at once where the colour is made here (flat, Gouraud).
 pub(super) const SIMPLE: usize = 8;
 /// Pixels of a row rasterized at once where the fragments go to the fragment stage (Phong's
-/// spans take [`crate::span::W`] at a time).
+/// spans take [`crate::span::LANES`] at a time).
 pub(super) const STAGED: usize = 16;
 /// One bit per pixel of a run (at most 32).
 pub(super) type Mask = u32;
@@ -263,7 +263,7 @@ fn shade<const W: usize>(
     }
 }
 
-/// [`saturate`] of one channel.
+/// [`span::saturate`] of one channel.
 #[inline(always)]
 fn channel(x: f32) -> f32 {
     if x > 0.0 { x.min(1.0) } else { 0.0 }

@@ -273,7 +273,7 @@ pub(super) fn edge_setup(
 }
 
 /// Below this many pixels' width (within the tile), a triangle is drawn pixel by pixel; wider
-/// ones eight or sixteen pixels at a time ([`cover`]).
+/// ones eight or sixteen pixels at a time ([`cover()`]).
 const NARROW: u32 = 8;
 
 /// The depth test (隠面消去, Z バッファ法): GL_LESS against the buffer cleared to 1; on a pass the

@@ -21,7 +21,9 @@ use crate::ViewerError;
 /// window's size changes; a frame whose scene differs from the last one only in the camera and
 /// the size is moved with [`cg_gpu::Gpu::update_view`] instead of being made again. Screenshots
 /// draw that same frame into a texture and read it back ([`Backend::presented_image`]).
-/// Without a window ([`Backend::render`]) it renders into a texture and reads it back.
+/// Without a window ([`Backend::render`]) it renders into a texture and reads it back; the last
+/// few scenes rendered that way keep their frames too (a `cg view` frame composes two: the
+/// student's and the reference), moved to each new camera and size.
 pub struct GpuBackend {
     gpu: cg_gpu::Gpu,
     name: String,
@@ -35,7 +37,14 @@ pub struct GpuBackend {
     cannot_present: bool,
     /// Frames made for the surface (not moved): the tests see the reuse.
     frames_made: u64,
+    /// The frames of the last [`KEPT_RENDERS`] scenes rendered without presenting, oldest first.
+    rendered: Vec<Presented>,
+    /// Frames made for [`Backend::render`] (not moved).
+    renders_made: u64,
 }
+
+/// How many scenes [`Backend::render`] keeps frames for.
+const KEPT_RENDERS: usize = 4;
 
 /// A wgpu surface on a window, configured.
 struct WindowSurface {
@@ -52,8 +61,17 @@ struct Presented {
     /// The scene without its camera and size (what [`cg_gpu::Gpu::update_view`] cannot change).
     scene: Scene,
     shading: Option<Shading>,
-    /// Whether the frame reached the window since the surface was made.
+    /// Whether the frame reached the window since the surface was made (always `false` for a
+    /// frame kept for [`Backend::render`]).
     shown: bool,
+}
+
+impl Presented {
+    /// Whether this frame draws `key` (a scene [`without_view`]) in `shading` into `format`: only
+    /// the camera and the size may differ, which [`cg_gpu::Gpu::update_view`] changes.
+    fn draws(&self, key: &Scene, shading: Option<Shading>, format: wgpu::TextureFormat) -> bool {
+        self.frame.format == format && self.shading == shading && self.scene == *key
+    }
 }
 
 /// The surface formats the GPU presents in, in order of preference: the non-sRGB ones (the
@@ -94,6 +112,8 @@ impl GpuBackend {
             presented: None,
             cannot_present: false,
             frames_made: 0,
+            rendered: Vec::new(),
+            renders_made: 0,
         })
     }
 
@@ -190,9 +210,7 @@ impl GpuBackend {
         let (w, h) = request.size;
         let key = without_view(scene);
         if let Some(p) = &mut self.presented
-            && p.frame.format == format
-            && p.shading == request.shading
-            && p.scene == key
+            && p.draws(&key, request.shading, format)
         {
             return self
                 .gpu
@@ -275,8 +293,30 @@ impl Backend for GpuBackend {
     }
 
     fn render(&mut self, scene: &Scene, request: &FrameRequest) -> Result<Image, ViewerError> {
-        let options = cg_gpu::Options { shading: request.shading, size: Some(request.size) };
-        self.gpu.render(scene, &options).map(|out| out.image).map_err(|e| self.error(&e))
+        let (w, h) = request.size;
+        let (key, format, lang) = (without_view(scene), cg_gpu::READBACK_FORMAT, self.lang);
+        let kept = self.rendered.iter().position(|p| p.draws(&key, request.shading, format));
+        let i = match kept {
+            Some(i) => {
+                self.gpu
+                    .update_view(&mut self.rendered[i].frame, scene, w, h)
+                    .map_err(|e| ViewerError::Render(e.message(lang)))?;
+                i
+            }
+            None => {
+                let options =
+                    cg_gpu::Options { shading: request.shading, size: Some(request.size) };
+                let frame = self.gpu.frame(scene, &options, format).map_err(|e| self.error(&e))?;
+                self.renders_made += 1;
+                if self.rendered.len() == KEPT_RENDERS {
+                    self.rendered.remove(0);
+                }
+                let shading = request.shading;
+                self.rendered.push(Presented { frame, scene: key, shading, shown: false });
+                self.rendered.len() - 1
+            }
+        };
+        self.gpu.read_back(&self.rendered[i].frame).map_err(|e| self.error(&e))
     }
 
     fn present(
@@ -372,6 +412,46 @@ mod tests {
         }
     }
 
+    /// `scene` rendered by `cg_gpu` on a frame of its own, made for this call.
+    fn fresh(gpu: &GpuBackend, scene: &Scene, request: &FrameRequest) -> Image {
+        let options = cg_gpu::Options { shading: request.shading, size: Some(request.size) };
+        gpu.gpu.render(scene, &options).unwrap().image
+    }
+
+    /// A composed frame's renders (`cg view`'s two panels): each scene's frame is made once and
+    /// moved to each new camera and size, two scenes keep two frames, and every image is the
+    /// fresh render of the scene of the moment.
+    #[test]
+    fn renders_keep_a_frame_per_scene_and_move_it() {
+        let Some(mut gpu) = backend_or_skip("kept render frames are not tested") else {
+            return;
+        };
+        let mut app = crate::CourseApp::course_sample();
+        app.size = (80, 60);
+        let check = |app: &crate::CourseApp, gpu: &mut GpuBackend, made: u64| {
+            let (scene, request) = app.direct_scene().unwrap();
+            let image = gpu.render(&scene, &request).unwrap();
+            assert_eq!(gpu.renders_made, made, "frames made so far");
+            assert_eq!((image.width, image.height), request.size);
+            assert_eq!(image.to_rgba8(), fresh(gpu, &scene, &request).to_rgba8());
+        };
+        check(&app, &mut gpu, 1);
+        app.camera.yaw_deg = 40.0;
+        app.size = (90, 50);
+        check(&app, &mut gpu, 1); // moved and resized, not made again
+        let mut other = app.clone();
+        other.angle_deg = 30.0; // the objects turn: another scene
+        check(&other, &mut gpu, 2);
+        app.camera.pitch_deg = -50.0;
+        check(&app, &mut gpu, 2); // the first scene's frame was kept
+        check(&other, &mut gpu, 2);
+        for angle in [60.0, 90.0, 120.0, 150.0] {
+            other.angle_deg = angle;
+            check(&other, &mut gpu, 2 + (angle / 30.0) as u64 - 1);
+        }
+        assert_eq!(gpu.rendered.len(), KEPT_RENDERS, "the oldest are dropped");
+    }
+
     #[test]
     fn the_presented_frame_follows_the_camera_and_is_made_again_for_new_geometry() {
         let Some(mut gpu) = backend_or_skip("the presented frame is not tested") else {
@@ -389,8 +469,7 @@ mod tests {
             assert_eq!(gpu.frames_made, made, "frames made so far");
             gpu.presented.as_mut().unwrap().shown = true;
             let shot = gpu.presented_image().unwrap().unwrap();
-            let fresh = gpu.render(&scene, &request).unwrap();
-            assert_eq!(shot.to_rgba8(), fresh.to_rgba8());
+            assert_eq!(shot.to_rgba8(), fresh(gpu, &scene, &request).to_rgba8());
         };
         check(&app, &mut gpu, 1);
         app.camera.yaw_deg = 40.0;
