@@ -7,7 +7,7 @@
 //! Every assignment crate has the same shape (the command line and the tests rely on it):
 //! [`ID`], a per-student [`Spec`] drawn by [`variant`] and described by [`Spec::describe`], the
 //! exercise API [`Impl`] (the functions a student writes, in `exercises/src/a1.rs`),
-//! [`checks`] and [`view`].
+//! [`checks()`] and [`view()`].
 //!
 //! | task | function | what it returns | checks |
 //! |---|---|---|---|

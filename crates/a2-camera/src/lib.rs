@@ -28,7 +28,7 @@
 //!
 //! Every assignment crate has the same shape (the command line and the tests rely on it):
 //! [`ID`], a per-student [`Spec`] drawn by [`variant`] and described by [`Spec::describe`], the
-//! exercise API [`Impl`], [`checks`] and [`view`].
+//! exercise API [`Impl`], [`checks()`] and [`view()`].
 
 mod checks;
 mod describe;

@@ -368,7 +368,7 @@ fn drags_for(op: &Operation, amount: f32) -> Vec<Drag> {
     vec![drag; steps as usize]
 }
 
-/// The scripted drags of [`crate::view`]: yaw +40° (+30° per second of `time_s`, reduced by
+/// The scripted drags of [`crate::view()`]: yaw +40° (+30° per second of `time_s`, reduced by
 /// 360°), pitch −15°, distance +5, and with a pan the target by (+1, −1) — for a correct
 /// `motion()`.
 pub(crate) fn demo_drags(spec: &Spec, time_s: f64) -> Vec<Drag> {

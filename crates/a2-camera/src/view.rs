@@ -1,5 +1,5 @@
 //! The scene the student's functions draw: [`view`], the kit's reference picture
-//! ([`reference`]), the course's objects ([`draw_course_objects`]) and the replay of a recorded
+//! ([`reference()`]), the course's objects ([`draw_course_objects`]) and the replay of a recorded
 //! frame ([`replay`]) that the checks and the report use too.
 
 use std::sync::LazyLock;

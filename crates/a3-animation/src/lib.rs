@@ -10,7 +10,7 @@
 //! Every assignment crate has the same shape (the command line and the tests rely on it):
 //! [`ID`], a per-student [`Spec`] drawn by [`variant`] and described by [`SpecDescribe::describe`], the
 //! exercise API [`Impl`] (the functions a student writes, in `exercises/src/a3.rs`),
-//! [`checks`] and [`view`].
+//! [`checks()`] and [`view()`].
 //!
 //! The tasks:
 //!
@@ -22,7 +22,7 @@
 //!
 //! Time: one call of `idle` is one frame, [`FPS`] frames a second; after `n` calls the time is
 //! `t = n / 60` s. docs/numerics.md row 11: the parameters are rebuilt from the integer frame count
-//! each frame and reduced by the period, never accumulated in f32 ([`checks`] runs `idle`
+//! each frame and reduced by the period, never accumulated in f32 ([`checks()`] runs `idle`
 //! [`DRIFT_FRAMES`] times and compares).
 
 mod checks;

@@ -1,7 +1,7 @@
 //! The scene the student's functions draw (`a3`): [`view`] (the spec's animation at a time),
 //! [`warmup_view`] (the warm-up's boxes), the frames they come from ([`record_frame`],
 //! [`warmup_frame`], [`replay`]) and the course's ground under them; and the kit's reference
-//! picture, [`reference`], drawn from the oracle.
+//! picture, [`reference()`], drawn from the oracle.
 
 use cg_core::gl::Gl;
 use cg_core::product::Factor;

@@ -23,7 +23,7 @@
 //!
 //! Every assignment crate has the same shape (the command line and the tests rely on it):
 //! [`ID`], a per-student [`Spec`] drawn by [`variant`] and described by [`SpecExt::describe`], the
-//! exercise API [`Impl`], [`checks`] and [`view`].
+//! exercise API [`Impl`], [`checks()`] and [`view()`].
 //!
 //! The plain data a student sees ([`Spec`], [`Region`], [`TexRange`], [`Sampler`], [`Impl`], the
 //! constants [`CELLS`], [`SQUARES`], [`CORNER_STEPS`]) lives in [`cg_student::a4`] and is

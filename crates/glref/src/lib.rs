@@ -5,7 +5,7 @@
 //! Mesa's off-screen renderer OSMesa, with no display and no GPU. The kit's CPU rasterizer is
 //! tested against these images, so "looks like the course's OpenGL sample" is a measurement.
 //!
-//! How: [`script`] turns the scene into a plain-text command script, one GL call per line
+//! How: [`script()`] turns the scene into a plain-text command script, one GL call per line
 //! (documented at the top of `tools/glref/glref.c`); [`render`] builds that small C program on
 //! first use (into `target/glref/`), runs it on the script and reads back its image.
 //!
@@ -14,7 +14,7 @@
 //! | [`available`] | whether a C compiler and OSMesa are usable here |
 //! | [`require`] | the test policy: `true` when available; skip with a note on a student's machine; panic in CI |
 //! | [`render`] | the scene drawn by OpenGL, as an [`Image`] |
-//! | [`script`] | the command script for a scene (to read, or to run by hand) |
+//! | [`script()`] | the command script for a scene (to read, or to run by hand) |
 //!
 //! What OpenGL cannot draw is an error, not an approximation: the lecture's light model
 //! ([`GlRefError::LectureLightModel`]), Phong shading ([`GlRefError::PhongShading`]) and more
@@ -134,13 +134,13 @@ pub fn require() -> bool {
 
 /// `scene` drawn by OpenGL 1.x fixed-function calls in OSMesa: a `width × height` image, row 0 at
 /// the top, each channel the framebuffer's byte `/ 255` (exact: [`Image::to_rgba8`] gives the
-/// bytes back). See [`script`] for how each part of the scene becomes GL calls.
+/// bytes back). See [`script()`] for how each part of the scene becomes GL calls.
 ///
 /// The C program is built on first use (a few hundred milliseconds) and cached in
 /// [`cache_dir`]; each call then starts it once (a 640×640 scene takes tens of milliseconds).
 ///
 /// # Errors
-/// Everything [`script`] rejects (checked before anything runs, so these errors need no C
+/// Everything [`script()`] rejects (checked before anything runs, so these errors need no C
 /// compiler); [`GlRefError::NotAvailable`] without a C compiler or OSMesa;
 /// [`GlRefError::Program`] for a GL error or an OSMesa failure the program reports.
 pub fn render(scene: &Scene) -> Result<Image, GlRefError> {

@@ -3,7 +3,7 @@
 //! Every assignment crate has the same shape (the command line and the tests rely on it):
 //! [`ID`], a per-student [`Spec`] drawn by [`variant`] and described by [`Spec::describe`], the
 //! exercise API [`Impl`] (the functions a student writes, in `exercises/src/s.rs`),
-//! [`checks`] and [`view`]. [`Impl`], [`Pixel`] and [`Shading`] are the students' own types
+//! [`checks()`] and [`view()`]. [`Impl`], [`Pixel`] and [`Shading`] are the students' own types
 //! (`cg_student::s`), re-exported; [`kit_shading`] gives the renderer's
 //! [`cg_core::scene::Shading`] for a student's mode.
 //!

@@ -1,6 +1,6 @@
 //! The view: the course's stage with three of the student's spheres — flat, Gouraud, Phong from
 //! left to right — shaded by the student's own `shade_pixel`, vertex normals and light-model
-//! terms — and the kit's reference picture ([`reference`]): the same view drawn with the kit's
+//! terms — and the kit's reference picture ([`reference()`]): the same view drawn with the kit's
 //! own light model, vertex normals and shading rule in place of the student's functions.
 
 use cg_core::Rgb;

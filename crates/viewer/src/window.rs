@@ -450,7 +450,7 @@ fn new_event_loop() -> Result<EventLoop<()>, winit::error::EventLoopError> {
     builder.build()
 }
 
-/// A window system's error as a sentence: winit's "os error at <its source file>:<line>: …"
+/// A window system's error as a sentence: winit's `"os error at <its source file>:<line>: …"`
 /// without the source location (which says nothing to a student).
 pub(crate) fn tidy_reason(reason: &str) -> String {
     reason

@@ -69,7 +69,7 @@ fn light_columns() -> Vec<Text> {
     ]
 }
 
-/// The light table `id` ([`LIGHT_P`] or [`LIGHT_Q`]) at `point` on the unit sphere; the
+/// The light table `id` ([`LIGHT_P`] or [`super::LIGHT_Q`]) at `point` on the unit sphere; the
 /// student's cells from `imp` (all [`Missing`] without one: the kit's values alone, as the
 /// checker derives them at a point the student chose).
 pub(super) fn light_table(
