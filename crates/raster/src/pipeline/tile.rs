@@ -6,7 +6,7 @@ use cg_core::light::LightCounts;
 use cg_core::normals::interpolate_normal;
 use cg_core::scene::Shading;
 
-use super::cover::{Gouraud, Mask, SIMPLE, STAGED, Simple, cover};
+use super::cover::{Gouraud, SIMPLE, STAGED, Simple, cover};
 use super::*;
 
 /// The pixels of one tile: its part of each of its rows of the colour and depth buffers.
@@ -157,19 +157,12 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
         stats.fragments += covered;
         stats.depth_rejects += covered - passed;
         stats.fragments_shaded += passed;
-        const FULL: Mask = (1 << STAGED) - 1;
         for run in &runs {
             let (row, column) = ((run.y - target.y0) as usize, (run.x - target.x0) as usize);
-            if corners_now.is_none() && run.passed == FULL && span.is_empty() {
-                // A whole run is one span (the common case inside a large triangle).
-                register!();
-                span.fill((row as u32, column as u32), &run.b);
-                flush(span, target, &mut counts, &mut stats);
-                continue;
-            }
             if corners_now.is_none() {
                 // Phong's spans: the run's pixels that passed go in together, left to right,
-                // flushing each time the span fills.
+                // flushing each time the span fills (a whole run inside a large triangle is one
+                // span when it comes to an empty one).
                 register!();
                 let mut left = run.passed;
                 while left != 0 {

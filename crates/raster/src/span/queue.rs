@@ -179,24 +179,6 @@ impl PhongSpan {
         self.len == LANES
     }
 
-    /// Fills the empty span with a run of [`LANES`] fragments of the current triangle, all
-    /// passed, from `(row, column)` rightwards, with their screen-space barycentrics `b` (what
-    /// [`PhongSpan::push`] would do lane by lane). Then the span is full.
-    #[inline]
-    pub(crate) fn fill(&mut self, (row, column): (u32, u32), b: &V3) {
-        debug_assert!(self.len == 0 && self.current.is_some());
-        self.b = *b;
-        self.at = std::array::from_fn(|k| (row, column + k as u32));
-        self.slot = [self.current.unwrap_or(0); LANES];
-        self.len = LANES;
-    }
-
-    /// Whether no fragment is waiting.
-    #[inline]
-    pub(crate) fn is_empty(&self) -> bool {
-        self.len == 0
-    }
-
     /// Lights the waiting fragments and gives each its final colour — the lit colour clamped,
     /// the texture applied (when the object has one), clamped again, as the fragment stage does
     /// — through `write(row, column, colour)`, in order. `face(face)` is a face's normal.

@@ -294,13 +294,13 @@ impl Backend for GpuBackend {
 
     fn render(&mut self, scene: &Scene, request: &FrameRequest) -> Result<Image, ViewerError> {
         let (w, h) = request.size;
-        let (key, format, lang) = (without_view(scene), cg_gpu::READBACK_FORMAT, self.lang);
+        let (key, format) = (without_view(scene), cg_gpu::READBACK_FORMAT);
         let kept = self.rendered.iter().position(|p| p.draws(&key, request.shading, format));
         let i = match kept {
             Some(i) => {
                 self.gpu
                     .update_view(&mut self.rendered[i].frame, scene, w, h)
-                    .map_err(|e| ViewerError::Render(e.message(lang)))?;
+                    .map_err(|e| self.error(&e))?;
                 i
             }
             None => {
