@@ -562,8 +562,11 @@ fn colours_beyond_f32s_range_give_a_finite_image() {
 fn an_empty_scene_is_the_clear_colour() {
     let mut scene = load("course-sample.toml");
     scene.objects.clear();
-    let out = render(&scene, &small(8)).unwrap();
-    assert!(out.image.pixels.iter().all(|&c| c == scene.clear_color));
-    assert!(out.depth.iter().all(|&z| z == 1.0));
-    assert_eq!(out.stats, cg_raster::Stats::default());
+    // Every mode: Phong's spans are flushed at each tile's end with no object to name.
+    for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+        let out = render(&scene, &Options { shading: Some(shading), ..small(8) }).unwrap();
+        assert!(out.image.pixels.iter().all(|&c| c == scene.clear_color), "{shading:?}");
+        assert!(out.depth.iter().all(|&z| z == 1.0), "{shading:?}");
+        assert_eq!(out.stats, cg_raster::Stats::default(), "{shading:?}");
+    }
 }

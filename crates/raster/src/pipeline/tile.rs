@@ -47,7 +47,8 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
                  target: &mut Target<'_>,
                  counts: &mut LightCounts,
                  stats: &mut Stats| {
-        if let Some(lights) = spans {
+        // An empty span may name no object: a scene without any, or a tile none reaches.
+        if let Some(lights) = spans.filter(|_| !span.is_empty()) {
             let draw = &draws[span.object];
             let texture = draw.texture;
             // The face normal where the corners' normals cancel, from the face's own corners.

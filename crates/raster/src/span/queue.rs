@@ -173,6 +173,12 @@ impl PhongSpan {
         left
     }
 
+    /// Whether no fragment waits (nothing to flush: the span may not name an object yet).
+    #[inline]
+    pub(crate) fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
     /// Whether the span holds [`LANES`] fragments (flush it before adding more).
     #[inline]
     pub(crate) fn is_full(&self) -> bool {
