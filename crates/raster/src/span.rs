@@ -74,6 +74,9 @@ pub(crate) struct SpanLights {
     local_viewer: bool,
     eye: DVec3,
     backward: Vec3,
+    /// No light attenuates and none is a spot light: every light's scale is 1 at every point
+    /// ([`light_lanes_plain`] when the material has no specular term either).
+    plain: bool,
 }
 
 impl SpanLights {
@@ -95,7 +98,7 @@ impl SpanLights {
         } else {
             global_ambient
         };
-        let lights = lights
+        let lights: Vec<SpanLight> = lights
             .iter()
             .flat_map(Light::point_lights)
             .map(|light| SpanLight {
@@ -116,7 +119,10 @@ impl SpanLights {
                 light,
             })
             .collect();
+        let plain =
+            lights.iter().all(|l| !l.attenuates && !matches!(l.light.kind, LightKind::Spot { .. }));
         SpanLights {
+            plain,
             lecture,
             specular,
             ambient,
@@ -339,6 +345,10 @@ pub(crate) fn light<'a>(
 /// are compiled as one, see [`shade_fragments`]).
 #[inline(always)]
 fn light_lanes(stage: &Stage<'_>, points: &Points, out: &mut V3, counts: &mut LightCounts) {
+    if stage.lights.plain && stage.material.ks == Rgb::ZERO {
+        light_lanes_plain(stage, points, out, counts);
+        return;
+    }
     let Stage { lights, material, colored } = *stage;
     let len = points.len;
     let lanes = len as u64;
@@ -452,6 +462,70 @@ fn light_lanes(stage: &Stage<'_>, points: &Points, out: &mut V3, counts: &mut Li
         out.x[i] = e.x + ambient.x[i] + diffuse.x[i] + specular.x[i];
         out.y[i] = e.y + ambient.y[i] + diffuse.y[i] + specular.y[i];
         out.z[i] = e.z + ambient.z[i] + diffuse.z[i] + specular.z[i];
+    }
+}
+
+/// [`light_lanes`] where every light's scale is 1 and there is no specular term
+/// ([`SpanLights::plain`], `k_s = 0`): the same arithmetic lane by lane, each light's terms in
+/// one pass over the lanes (no scale, no view vector, no specular sum to keep).
+#[inline(always)]
+fn light_lanes_plain(stage: &Stage<'_>, points: &Points, out: &mut V3, counts: &mut LightCounts) {
+    let Stage { lights, material, colored } = *stage;
+    let lanes = points.len as u64;
+    counts.evaluations += lanes;
+    let (ka, kd) = if colored {
+        (points.color, points.color)
+    } else {
+        (V3::splat(material.ka), V3::splat(material.kd))
+    };
+    let n = &points.n;
+    let a = lights.ambient;
+    let mut ambient = V3::default();
+    for i in 0..LANES {
+        ambient.x[i] = a.x * ka.x[i];
+        ambient.y[i] = a.y * ka.y[i];
+        ambient.z[i] = a.z * ka.z[i];
+    }
+    let mut diffuse = V3::default();
+    let mut l = V3::default();
+    let mut valid = [true; LANES];
+    for span_light in &lights.lights {
+        let light = &span_light.light;
+        // Every point is lit (scale 1): each counts once.
+        counts.lights += lanes;
+        counts.visibility_queries += lanes;
+        counts.diffuse += lanes;
+        match (span_light.directional, span_light.position) {
+            (Some((dl, _)), _) => {
+                l = V3::splat(dl);
+                valid = [!dl.is_nan(); LANES];
+            }
+            (_, Some(position)) => directions(position, &points.p, &mut l, None, &mut valid),
+            (None, None) => valid = [false; LANES],
+        }
+        let (ca, cd, opengl) = (light.ambient, light.diffuse, !lights.lecture);
+        for i in 0..LANES {
+            // L = N where the light has no direction from the point.
+            let (lx, ly, lz) =
+                if valid[i] { (l.x[i], l.y[i], l.z[i]) } else { (n.x[i], n.y[i], n.z[i]) };
+            if opengl {
+                ambient.x[i] += ca.x * ka.x[i];
+                ambient.y[i] += ca.y * ka.y[i];
+                ambient.z[i] += ca.z * ka.z[i];
+            }
+            // `dot`, then `add_term` with the scale 1.
+            let f = positive_part(n.x[i] * lx + n.y[i] * ly + n.z[i] * lz);
+            diffuse.x[i] += cd.x * kd.x[i] * f;
+            diffuse.y[i] += cd.y * kd.y[i] * f;
+            diffuse.z[i] += cd.z * kd.z[i] * f;
+        }
+    }
+    // `+ 0.0`: the specular sum, as `light_lanes` adds it (it turns a −0 into +0).
+    let e = material.emission;
+    for i in 0..LANES {
+        out.x[i] = e.x + ambient.x[i] + diffuse.x[i] + 0.0;
+        out.y[i] = e.y + ambient.y[i] + diffuse.y[i] + 0.0;
+        out.z[i] = e.z + ambient.z[i] + diffuse.z[i] + 0.0;
     }
 }
 

@@ -107,6 +107,30 @@ fn the_light_model_is_the_reference_bit_for_bit() {
             samples: [2, 2],
         }),
     ];
+    let material = Material {
+        ka: Rgb::new(0.3, 0.2, 0.1),
+        kd: Rgb::new(0.6, 0.5, 0.4),
+        ks: Rgb::splat(0.5),
+        shininess: 12.5,
+        emission: Rgb::new(0.01, 0.02, 0.03),
+        ..Material::default()
+    };
+    assert_lanes_are_the_reference(&lights, &material, false);
+    // Every light's scale 1 (no attenuation, no spot or area light) and no specular term: the
+    // course scene's case, computed by `light_lanes_plain`.
+    let plain: Vec<Light> = lights[..2]
+        .iter()
+        .chain(&[light(LightKind::Point { position: Vec3::new(0.0, 2.0, 0.0) })])
+        .map(|l| Light { attenuation: Attenuation::default(), ..l.clone() })
+        .collect();
+    let no_specular = Material { ks: Rgb::ZERO, ..material };
+    assert_lanes_are_the_reference(&plain, &no_specular, true);
+}
+
+/// [`light`] on spans of random points, in every light model, with and without the points' own
+/// colours, at 16, 5 and 1 lanes, against `shade(…).total()` point by point; `plain`: whether
+/// the lights and material take [`light_lanes_plain`].
+fn assert_lanes_are_the_reference(lights: &[Light], material: &Material, plain: bool) {
     let eye = Vec3::new(0.5, 0.25, 0.125);
     let backward = Vec3::new(0.0, 0.6, 0.8);
     let mut cases = Cases(42);
@@ -117,16 +141,9 @@ fn the_light_model_is_the_reference_bit_for_bit() {
         LightModel::OpenGl { local_viewer: false },
     ] {
         let global_ambient = Rgb::splat(0.1);
-        let spans = SpanLights::new(model, global_ambient, &lights, eye, backward);
+        let spans = SpanLights::new(model, global_ambient, lights, eye, backward);
+        assert_eq!(spans.plain && material.ks == Rgb::ZERO, plain, "{model:?}: the path taken");
         for colored in [false, true] {
-            let material = Material {
-                ka: Rgb::new(0.3, 0.2, 0.1),
-                kd: Rgb::new(0.6, 0.5, 0.4),
-                ks: Rgb::splat(0.5),
-                shininess: 12.5,
-                emission: Rgb::new(0.01, 0.02, 0.03),
-                ..Material::default()
-            };
             for len in [LANES, 5, 1] {
                 let mut points = Points { len, ..Points::default() };
                 for i in 0..LANES {
@@ -140,7 +157,7 @@ fn the_light_model_is_the_reference_bit_for_bit() {
                 }
                 let mut out = V3::default();
                 let mut counts = LightCounts::default();
-                let stage = super::Stage { lights: &spans, material: &material, colored };
+                let stage = super::Stage { lights: &spans, material, colored };
                 super::light(&stage, &points, &mut out, &mut counts);
                 let mut expected_counts = LightCounts::default();
                 for i in 0..len {
@@ -150,7 +167,7 @@ fn the_light_model_is_the_reference_bit_for_bit() {
                     let expected = cg_core::light::shade_with_visibility_counted(
                         model,
                         global_ambient,
-                        &lights,
+                        lights,
                         &material,
                         p,
                         points.n.get(i),
