@@ -607,12 +607,14 @@ fn fragments(
     }
     // A span whose every lane is a certified triangle's, with weights ≥ 0 and not all zero (as
     // the rasterizer's always are), takes the triangles' normals: the same bits, no f64 work.
-    let mut constant = [true; LANES];
-    for i in 0..points.len {
-        let w = [b.x[i], b.y[i], b.z[i]];
-        constant[i] = g.certified[i] && w.iter().all(|&w| w >= 0.0) && w.iter().any(|&w| w > 0.0);
+    // Lane by lane without branches (`&`, `|` on bools), the lanes past `len` counting as such.
+    let mut constant = true;
+    for i in 0..LANES {
+        let (x, y, z) = (b.x[i], b.y[i], b.z[i]);
+        let weights = (x >= 0.0) & (y >= 0.0) & (z >= 0.0) & ((x > 0.0) | (y > 0.0) | (z > 0.0));
+        constant &= (g.certified[i] & weights) | (i >= points.len);
     }
-    if constant.iter().all(|&c| c) {
+    if constant {
         points.n = g.unit;
         return [true; LANES];
     }

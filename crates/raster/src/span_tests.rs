@@ -233,3 +233,37 @@ fn a_certified_normal_is_what_every_fragment_of_its_triangle_gets_bit_for_bit() 
         assert_eq!(certified(bad), None, "{bad}");
     }
 }
+
+#[test]
+fn the_certified_shortcut_is_taken_only_for_weights_that_interpolate() {
+    // Every lane a certified triangle's; one lane's weights all zero, or with a negative one
+    // (which the rasterizer never makes): there `interpolate_normal` may fall back to the face
+    // normal, so the span must not take the triangle's normal.
+    let n = Vec3::new(0.3, 0.4, 0.5);
+    let unit = certified(n).expect("a certified normal");
+    let face = Vec3::new(0.0, 0.0, 7.0);
+    let mut g = Gathered::default();
+    for k in 0..3 {
+        g.inv_w[k] = [1.0; LANES];
+        g.n[k] = V3::splat(n);
+    }
+    (g.unit, g.certified) = (V3::splat(unit), [true; LANES]);
+    for (case, w) in [
+        ("all zero", Vec3::ZERO),
+        ("cancelling", Vec3::new(-0.5, 0.25, 0.25)),
+        ("one negative", Vec3::new(-0.25, 0.75, 0.5)),
+    ] {
+        for len in [LANES, 6] {
+            let mut screen = V3::splat(Vec3::new(0.2, 0.3, 0.5));
+            screen.set(5, w);
+            let mut points = Points { len, ..Points::default() };
+            let mut b = V3::default();
+            let keep = fragments(&screen, &g, false, &mut b, &mut points);
+            for i in 0..len {
+                let expected = interpolate_normal([n; 3], b.get(i), face);
+                let got = if keep[i] { points.n.get(i) } else { face };
+                assert_eq!(bits(got), bits(expected), "{case}, {len} lanes: lane {i}");
+            }
+        }
+    }
+}
