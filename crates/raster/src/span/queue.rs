@@ -74,9 +74,6 @@ pub(crate) struct Texturing<'a> {
 
 /// Phong's fragments waiting to be lit, up to [`LANES`] of them, all of one object, in the order
 /// they passed the depth test (a later one may cover an earlier one's pixel: they are written in
-/// that order, so the later wins, as drawn one by one).
-/// Phong's fragments waiting to be lit, up to [`LANES`] of them, all of one object, in the order
-/// they passed the depth test (a later one may cover an earlier one's pixel: they are written in
 /// that order, so the later wins, as drawn one by one). Each lane refers to one of the span's
 /// triangles (at most one per lane).
 #[derive(Default)]
