@@ -49,6 +49,20 @@ pub enum GpuError {
         /// Where it ended up.
         position: [f32; 3],
     },
+    /// An object's vertex buffer is larger than the device allows (`max_buffer_size`).
+    #[error(
+        "object \"{object}\" has {triangles} triangles: its vertices take {bytes} bytes, more than this GPU's largest buffer ({limit} bytes); draw it with the CPU rasterizer (--renderer raster) or with fewer triangles"
+    )]
+    TooLarge {
+        /// The object's name.
+        object: String,
+        /// Its triangles.
+        triangles: usize,
+        /// Its vertex buffer's size in bytes.
+        bytes: u64,
+        /// The device's `max_buffer_size`.
+        limit: u64,
+    },
     /// wgpu reported an error (a shader or pipeline the device rejected, a lost device).
     #[error("wgpu: {0}")]
     Wgpu(String),
@@ -83,6 +97,9 @@ impl GpuError {
             GpuError::Projection(e) => format!("投影が不正です: {e}"),
             GpuError::MissingTexture { object, texture, count } => format!(
                 "オブジェクト \"{object}\" はテクスチャ {texture} を使いますが、シーンには {count} 枚しかありません"
+            ),
+            GpuError::TooLarge { object, triangles, bytes, limit } => format!(
+                "オブジェクト \"{object}\" は三角形 {triangles} 個で、頂点が {bytes} バイトになり、この GPU のバッファの上限（{limit} バイト）を超えます。CPU ラスタライザ（--renderer raster）で描くか、三角形を減らしてください"
             ),
             GpuError::NonFinite { object, vertex, position } => format!(
                 "オブジェクト \"{object}\": 頂点 {vertex} の位置 {position:?} が有限の点ではありません"

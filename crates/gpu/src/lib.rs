@@ -179,7 +179,11 @@ impl Gpu {
         .map_err(|_| GpuError::NoAdapter)?;
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("cg-gpu"),
-            required_limits: wgpu::Limits::downlevel_defaults().using_resolution(adapter.limits()),
+            // The adapter's largest buffer (wgpu's default is 256 MiB: 1.3 M triangles' vertices).
+            required_limits: wgpu::Limits {
+                max_buffer_size: adapter.limits().max_buffer_size,
+                ..wgpu::Limits::downlevel_defaults().using_resolution(adapter.limits())
+            },
             ..wgpu::DeviceDescriptor::default()
         }))
         .map_err(|e| GpuError::Device(e.to_string()))?;
@@ -365,6 +369,7 @@ impl Gpu {
             prepared;
 
         let device = &self.device;
+        prepare::check_buffers(&objects, device.limits().max_buffer_size)?;
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
 
         // Frame uniforms and lights.

@@ -96,11 +96,30 @@ pub(crate) struct Prepared {
 /// One object ready for the device.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct PreparedObject {
+    /// The scene object's name (for errors).
+    pub(crate) name: String,
     /// Three per face, in drawing order (re-wound for a mirrored object).
     pub(crate) vertices: Vec<GpuVertex>,
     pub(crate) uniform: ObjectUniform,
     /// The scene texture it samples (an index into `scene.textures`, checked) and how.
     pub(crate) texture: Option<(usize, Sampler)>,
+}
+
+/// Whether every object's vertex buffer fits the device's `max_buffer_size` (`limit` bytes);
+/// else [`GpuError::TooLarge`] for the first that does not (wgpu would refuse the buffer).
+pub(crate) fn check_buffers(objects: &[PreparedObject], limit: u64) -> Result<(), GpuError> {
+    for object in objects {
+        let bytes = (object.vertices.len() as u64).saturating_mul(size_of::<GpuVertex>() as u64);
+        if bytes > limit {
+            return Err(GpuError::TooLarge {
+                object: object.name.clone(),
+                triangles: object.vertices.len() / 3,
+                bytes,
+                limit,
+            });
+        }
+    }
+    Ok(())
 }
 
 /// Prepares `scene` as [`crate::Gpu::frame`] draws it with `options`.
@@ -213,6 +232,7 @@ pub(crate) fn prepare(scene: &Scene, options: &Options) -> Result<Prepared, GpuE
             ],
         };
         objects.push(PreparedObject {
+            name: object.name.clone(),
             vertices,
             uniform,
             texture: texture_use.map(|t| (t.texture, t.sampler)),
@@ -291,6 +311,7 @@ fn gpu_light(light: &Light, lecture: bool) -> GpuLight {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use cg_core::lang::Lang;
 
     const COURSE: &str = include_str!("../../../assets/scenes/course-sample.toml");
 
@@ -300,6 +321,28 @@ mod tests {
 
     fn v3(a: [f32; 3]) -> Vec3 {
         Vec3::from_array(a)
+    }
+
+    #[test]
+    fn an_object_larger_than_the_devices_largest_buffer_is_an_error_that_names_it() {
+        // The course scene's ground: 200 triangles, 600 vertices.
+        let p = prepare(&scene(COURSE), &Options::default()).unwrap();
+        let ground = (p.objects[0].vertices.len() * size_of::<GpuVertex>()) as u64;
+        assert!(check_buffers(&p.objects, ground).is_ok(), "a buffer of exactly the limit fits");
+        match check_buffers(&p.objects, ground - 1) {
+            Err(e @ GpuError::TooLarge { .. }) => {
+                let GpuError::TooLarge { object, triangles, bytes, limit } = &e else {
+                    unreachable!()
+                };
+                assert_eq!(
+                    (object.as_str(), *triangles, *bytes, *limit),
+                    ("ground", 200, ground, ground - 1)
+                );
+                assert!(e.message(Lang::En).contains("--renderer raster"), "{e}");
+                assert!(e.message(Lang::Ja).contains("CPU ラスタライザ"), "{e}");
+            }
+            other => panic!("{other:?}"),
+        }
     }
 
     #[test]

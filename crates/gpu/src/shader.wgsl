@@ -57,6 +57,17 @@ fn saturate3(c: vec3<f32>) -> vec3<f32> {
 fn positive(x: f32) -> f32 {
     return select(0.0, x, x > 0.0);
 }
+
+// |v| where v·v would leave f32 (a point light 1e20 away, a sun: its squared distance is beyond
+// f32's range and `length` would give infinity, so L would be 0): v scaled by its largest
+// component first. Within 1e-18..1e18 it is `length(v)` itself.
+fn far_length(v: vec3<f32>) -> f32 {
+    let m = max(abs(v.x), max(abs(v.y), abs(v.z)));
+    if m > 1e18 || (m < 1e-18 && m > 0.0) {
+        return m * length(v / m);
+    }
+    return length(v);
+}
 //#if specular
 
 // cosⁿ with the kit's rule: 0 where the cosine is ≤ 0, whatever n.
@@ -71,7 +82,7 @@ fn specular_power(c: f32, n: f32) -> f32 {
 fn view_vector(p: vec3<f32>) -> vec3<f32> {
 //#if local_viewer
     let to_eye = frame.eye.xyz - p;
-    let len = length(to_eye);
+    let len = far_length(to_eye);
     if len > 0.0 {
         return to_eye / len;
     }
@@ -130,7 +141,7 @@ fn shade(p: vec3<f32>, n: vec3<f32>, ka: vec3<f32>, kd: vec3<f32>) -> vec3<f32> 
 //#if positional && directional
         if light.position.w != 0.0 {
             let to_light = light.position.xyz - p;
-            let len = length(to_light);
+            let len = far_length(to_light);
             if len > 0.0 {
                 l = to_light / len;
                 d = len;
@@ -141,7 +152,7 @@ fn shade(p: vec3<f32>, n: vec3<f32>, ka: vec3<f32>, kd: vec3<f32>) -> vec3<f32> 
 //#endif
 //#if positional && !directional
         let to_light = light.position.xyz - p;
-        let len = length(to_light);
+        let len = far_length(to_light);
         if len > 0.0 {
             l = to_light / len;
             d = len;

@@ -163,6 +163,20 @@ fn flat_spot_light_on_a_shiny_pyramid_as_opengl_lights_it() {
     }
 }
 
+/// A point light far away, a sun (docs/scene-format.md: lights may be anywhere): its squared
+/// distance, 3·10⁴⁰, is beyond f32, and the shader's L came out 0 (the ground and the pyramid
+/// lit by the ambient term alone) until the distance was taken without squaring it whole.
+#[test]
+fn a_point_light_1e20_away_lights_as_on_the_cpu() {
+    let mut s = scene("course-sample.toml");
+    s.lights[0].kind =
+        cg_core::light::LightKind::Point { position: cg_core::glam::Vec3::splat(1e20) };
+    s.light_model = cg_core::light::LightModel::OpenGl { local_viewer: true };
+    for shading in SHADINGS {
+        agree_scene("far-point-light", &s, shading, (160, 160), (99.9, 1), (2, 0));
+    }
+}
+
 /// Every light type, attenuation, emission, a local viewer, a mirrored object, vertex colours
 /// and no culling, in both light models, at a size other than the scene's.
 #[test]
