@@ -155,7 +155,18 @@ pub(crate) fn read_root(
         None => Render::default(),
     };
     let lights = match root.get("lights") {
-        Some(v) => tables(&v)?.iter().map(read_light).collect::<Result<_, _>>()?,
+        Some(v) => {
+            let tables = tables(&v)?;
+            if matches!(render.light_model, LightModel::OpenGl { .. }) {
+                // OpenGL's spot light has no inner cone: an `inner_deg` would change nothing.
+                for t in &tables {
+                    if let Some(inner) = t.get("inner_deg") {
+                        return Err(inner.error(ErrorKind::InnerConeNeedsLectureModel));
+                    }
+                }
+            }
+            tables.iter().map(read_light).collect::<Result<_, _>>()?
+        }
         None => Vec::new(),
     };
     let materials = match root.get("materials") {

@@ -254,8 +254,8 @@ shape = { kind = "uv_sphere", radius = -1, slices = 16, stacks = 8 }
             Rule::SpotCutoff,
         ),
         (
-            "format = 1\n[[lights]]\nkind = \"spot\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0]\ncutoff_deg = 30\ninner_deg = 40\n",
-            7,
+            "format = 1\n[render]\nlight_model = \"lecture\"\n[[lights]]\nkind = \"spot\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0]\ncutoff_deg = 30\ninner_deg = 40\n",
+            9,
             "40",
             "lights[0].inner_deg",
             Rule::NotAbove { key: "cutoff_deg", value: 30.0 },
@@ -434,6 +434,17 @@ fn structural_mistakes() {
     let e = error(text);
     assert_at(&e, text, 3, "\"blinn\"", Some("render.specular"));
     assert_eq!(*e.kind, ErrorKind::SpecularNeedsLectureModel);
+    // A spot light's inner cone in OpenGL's model (the default), which has none: it would be
+    // ignored, the picture the same as without it.
+    let text = "format = 1\n[[lights]]\nkind = \"spot\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0]\ncutoff_deg = 30\ninner_deg = 10\n";
+    let e = error(text);
+    assert_at(&e, text, 7, "10", Some("lights[0].inner_deg"));
+    assert_eq!(*e.kind, ErrorKind::InnerConeNeedsLectureModel);
+    let lecture = text.replace("format = 1\n", "format = 1\n[render]\nlight_model = \"lecture\"\n");
+    assert!(
+        cg_scene::parse(&lecture, std::path::Path::new("a.toml")).is_ok(),
+        "the lecture's model takes it"
+    );
     let text = "format = 1\n[[objects]]\nname = \"x\"\nshape = { kind = \"lecture_pyramid\" }\nmesh = \"a.obj\"\n";
     let e = error(text);
     assert_at(&e, text, 5, "\"a.obj\"", Some("objects[0].mesh"));

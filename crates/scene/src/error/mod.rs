@@ -142,6 +142,9 @@ pub enum ErrorKind {
     NoGeometry,
     /// `render.specular` is given with `light_model = "opengl"`.
     SpecularNeedsLectureModel,
+    /// A spot light's `inner_deg` (the lecture's soft edge) with `light_model = "opengl"`, which
+    /// has no inner cone.
+    InnerConeNeedsLectureModel,
     /// A transform step names no operation, or more than one.
     TransformStep {
         /// The keys found in the step.

@@ -12,7 +12,7 @@ use cg_core::transform::TransformError;
 use super::*;
 
 /// How many variants [`ErrorKind`] has; [`kind_index`] numbers them `0..KINDS`.
-const KINDS: usize = 42;
+const KINDS: usize = 43;
 
 /// A number for each variant of [`ErrorKind`] (the match is exhaustive, so a new variant does not
 /// compile until it is numbered here, and [`every_kind_has_a_sample`] fails until it has a
@@ -61,6 +61,7 @@ fn kind_index(kind: &ErrorKind) -> usize {
         ErrorKind::Write { .. } => 38,
         ErrorKind::FileTooLarge { .. } => 40,
         ErrorKind::Limit(_) => 41,
+        ErrorKind::InnerConeNeedsLectureModel => 42,
     }
 }
 
@@ -227,6 +228,7 @@ fn samples() -> Vec<ErrorKind> {
         ErrorKind::ShapeAndMesh,
         ErrorKind::NoGeometry,
         ErrorKind::SpecularNeedsLectureModel,
+        ErrorKind::InnerConeNeedsLectureModel,
         ErrorKind::TransformStep { found: vec![] },
         ErrorKind::TransformStep { found: vec!["translate".into(), "scale".into()] },
         ErrorKind::UnknownMaterial { name: "glas".into(), suggestion: Some("glass".into()) },

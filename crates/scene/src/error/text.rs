@@ -145,6 +145,10 @@ impl ErrorKind {
                 "`specular` は light_model = \"lecture\" でだけ選べます（OpenGL のモデルは常に Blinn の N·H）",
                 "`specular` applies only to light_model = \"lecture\" (OpenGL's model always uses Blinn's N·H)",
             ),
+            ErrorKind::InnerConeNeedsLectureModel => t(
+                "`inner_deg`（スポットライトの内側の円錐）は light_model = \"lecture\" でだけ使えます（OpenGL のモデルには内側の円錐がなく、境目は exponent だけで決まります）。[render] に light_model = \"lecture\" を書くか、inner_deg を消してください",
+                "`inner_deg` (a spot light's inner cone) applies only to light_model = \"lecture\" (OpenGL's model has no inner cone: only the exponent softens the edge); set light_model = \"lecture\" in [render] or remove inner_deg",
+            ),
             ErrorKind::TransformStep { found } => {
                 let ops = "`translate`, `rotate_deg` (+ `axis`), `rotate_x_deg`, `rotate_y_deg`, `rotate_z_deg`, `scale`";
                 let found: Vec<&str> = found.iter().map(String::as_str).collect();
