@@ -27,10 +27,22 @@ pub(crate) fn parse_obj(text: &str, path: &Path) -> Result<Mesh, SceneError> {
         ignore_points: true,
         ignore_lines: true,
     };
+    // Points and lines (`p`, `l`) are not surfaces: tobj's options drop a two-point line, but
+    // it would triangulate `l 1 2 3 4`, a wire outline, into a filled polygon. Their lines are
+    // blanked before tobj reads the file (`scan` has checked their indices).
+    let surfaces: std::borrow::Cow<'_, str> = if text.lines().any(wire) {
+        text.lines()
+            .map(|line| if wire(line) { "" } else { line })
+            .collect::<Vec<_>>()
+            .join("\n")
+            .into()
+    } else {
+        text.into()
+    };
     // Materials come from the scene, so the `.mtl` file is never read: a missing or broken one
     // cannot stop the model from loading.
     let (models, _) =
-        tobj::load_obj_buf(&mut text.as_bytes(), &options, |_| Ok(Default::default()))
+        tobj::load_obj_buf(&mut surfaces.as_bytes(), &options, |_| Ok(Default::default()))
             .map_err(|e| error(None, ErrorKind::Obj(e)))?;
 
     let mut positions = Vec::new();
@@ -119,6 +131,11 @@ fn in_file_order(mesh: Mesh, file_order: &[usize]) -> Mesh {
 /// The elements that face corners refer to, in the order `v/vt/vn`.
 const ELEMENTS: [&str; 3] = ["v", "vt", "vn"];
 
+/// Whether an OBJ line is a point or a line element (`p`, `l`): no surface, left out.
+fn wire(line: &str) -> bool {
+    matches!(line.split_whitespace().next(), Some("p" | "l"))
+}
+
 /// An error of [`scan`]: where, and what.
 type ScanError = (Position, ErrorKind);
 
@@ -171,8 +188,8 @@ fn scan(text: &str) -> Result<Vec<usize>, ScanError> {
                         resolve(element, corner, &read).map_err(|(word, kind)| (at(word), kind))?;
                     triples.push(triple);
                 }
-                // Points and 2-point lines are ignored (LoadOptions::ignore_points/ignore_lines).
-                if triples.len() >= 3 {
+                // Lines are left out (`wire`), as are faces of fewer than three corners.
+                if keyword == "f" && triples.len() >= 3 {
                     for triple in triples {
                         if seen.insert(triple) {
                             file_order.push(triple[0]);

@@ -45,6 +45,20 @@ fn quads_are_split_and_attributes_kept() {
 }
 
 #[test]
+fn points_and_lines_are_not_surfaces() {
+    // A wire outline of four points (`l`), points (`p`), and one triangle: only the triangle,
+    // and only its vertices (tobj alone makes the outline a filled quad).
+    let text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nl 1 2 3 4\np 1 2 3\nl 1 3\nf 2 3 5\n";
+    let m = parse_obj(text, Path::new("wire.obj")).unwrap();
+    assert_eq!(m.positions, [Vec3::X, Vec3::new(1.0, 1.0, 0.0), Vec3::Z]);
+    assert_eq!(m.faces, [[0, 1, 2]]);
+    m.check_indices().unwrap();
+    // Only lines and points: no surface, as a file without faces.
+    let e = parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2 3 1\n", Path::new("wire.obj")).unwrap_err();
+    assert!(matches!(*e.kind, cg_scene::ErrorKind::ObjNoFaces), "{e}");
+}
+
+#[test]
 fn groups_merge_into_one_mesh_in_the_files_vertex_order() {
     // Two groups whose faces use the vertices out of order; the second reuses vertex 1.
     let text = "\
