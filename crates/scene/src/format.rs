@@ -275,9 +275,11 @@ impl SceneSpec {
                 material: spec.material,
                 transform: spec.transform,
                 texture,
+                // The exact surface a built-in shape stands for, while its mesh still covers it:
+                // a weld that removed faces (a tolerance as long as the edges) leaves holes that the
+                // ray tracer's exact surface would not show (every renderer draws the same mesh).
+                analytic: analytic.filter(|_| weld.is_none_or(|w| w.removed_faces == 0)),
                 weld,
-                // Welding cannot change the surface a built-in shape stands for.
-                analytic,
             });
         }
         Ok(scene)

@@ -413,6 +413,28 @@ fn weld_merges_split_vertices_and_the_scene_records_it() {
     }
 }
 
+#[test]
+fn a_weld_that_removes_faces_of_a_built_in_shape_leaves_no_exact_surface() {
+    let scene = |weld: &str| {
+        let text = format!(
+            "format = 1\n[[objects]]\nname = \"ground\"\nshape = {{ kind = \"grid\", divisions = 10, size = 10.0 }}\n{weld}\n"
+        );
+        cg_scene::parse(&text, Path::new("scene.toml")).unwrap()
+    };
+    let plane = Some(cg_core::scene::Analytic::Plane { size: 10.0 });
+    // Welded without losing a face: still the exact plane (the ray tracer intersects it).
+    for weld in ["", "weld = true", "weld = 0.5"] {
+        let s = scene(weld);
+        assert_eq!(s.objects[0].analytic, plane, "{weld}");
+    }
+    // A tolerance as long as the squares' sides collapses faces: the mesh has holes, and the
+    // tracer must draw that mesh as the rasterizers do, not the whole plane.
+    let s = scene("weld = 1");
+    let record = s.objects[0].weld.expect("welded");
+    assert!(record.removed_faces > 0, "{record:?}");
+    assert_eq!(s.objects[0].analytic, None);
+}
+
 /// Writes an RGBA image, rows listed top to bottom as PNG stores them.
 fn write_png(path: &Path, width: u32, rows_top_down: &[[u8; 4]]) {
     let height = rows_top_down.len() as u32 / width;
