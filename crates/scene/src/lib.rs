@@ -46,8 +46,8 @@ use cg_core::texture::Texture;
 
 pub use error::{ErrorKind, Expected, Found, Position, Rule, SceneError};
 pub use limits::{
-    LimitError, MAX_AREA_LIGHT_SAMPLES, MAX_COORDINATE, MAX_DEPTH_RATIO, MAX_FOVY_DEG,
-    MAX_SCENE_FACES, MIN_FOVY_DEG, MIN_NEAR, Matrix, WorldPoint,
+    LimitError, MAX_COORDINATE, MAX_DEPTH_RATIO, MAX_FOVY_DEG, MAX_POINT_LIGHTS, MAX_SCENE_FACES,
+    MIN_FOVY_DEG, MIN_NEAR, Matrix, WorldPoint,
 };
 pub use shape::{MAX_SHAPE_FACES, ShapeSpec};
 
@@ -65,7 +65,7 @@ pub const FORMAT_VERSION: i64 = format::FORMAT_VERSION;
 /// ([`ErrorKind::Limit`]): a point beyond [`MAX_COORDINATE`] in world space, a transform whose
 /// product overflows f32 (at the step), `fovy_deg` outside [[`MIN_FOVY_DEG`], [`MAX_FOVY_DEG`]],
 /// `near` below [`MIN_NEAR`], `far / near` above [`MAX_DEPTH_RATIO`], more than
-/// [`MAX_SCENE_FACES`] faces or [`MAX_AREA_LIGHT_SAMPLES`] area-light samples in all.
+/// [`MAX_SCENE_FACES`] faces or [`MAX_POINT_LIGHTS`] point lights in all (an area light counting its samples).
 ///
 /// See also [`parse`] for text already in memory.
 pub fn load(path: &Path) -> Result<Scene, SceneError> {

@@ -8,7 +8,7 @@ use std::path::Path;
 
 use cg_core::lang::Lang;
 use cg_scene::{
-    ErrorKind, LimitError, MAX_AREA_LIGHT_SAMPLES, MAX_COORDINATE, MAX_DEPTH_RATIO, MAX_FOVY_DEG,
+    ErrorKind, LimitError, MAX_COORDINATE, MAX_DEPTH_RATIO, MAX_FOVY_DEG, MAX_POINT_LIGHTS,
     MAX_SCENE_FACES, MIN_FOVY_DEG, MIN_NEAR, Matrix, SceneError, WorldPoint,
 };
 
@@ -305,7 +305,7 @@ fn too_many_faces_in_all_are_refused_before_any_is_built() {
 }
 
 #[test]
-fn too_many_area_light_samples_in_all_are_refused() {
+fn too_many_point_lights_in_all_are_refused() {
     let light = |samples: &str| {
         format!(
             "[[lights]]\nkind = \"area\"\ncorner = [-1, 6, -1]\nedge_u = [2, 0, 0]\nedge_v = [0, 0, 2]\nsamples = {samples}\n"
@@ -314,18 +314,31 @@ fn too_many_area_light_samples_in_all_are_refused() {
     // Four lights of 16 × 16: 1024 samples, the most a scene may have.
     let four = format!("format = 1\n{}", light("[16, 16]").repeat(4));
     load(&four).unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(MAX_AREA_LIGHT_SAMPLES, 1024);
+    assert_eq!(MAX_POINT_LIGHTS, 1024);
     // One more sample, in a fifth light: at its `samples` (line 1 + 4·6 + 6).
     let text = format!("{four}{}", light("[1, 1]"));
     let e = error(&text);
     assert_at(&e, &text, 31, "[1, 1]", "lights[4].samples");
-    assert_eq!(*limit(&e), LimitError::AreaSamples { samples: 1025 });
+    assert_eq!(*limit(&e), LimitError::PointLights { lights: 1025 });
     // Four lights of 256 × 256 took 8 s at 32 × 32 pixels with no warning: the first is over.
     let text = format!("format = 1\n{}", light("[256, 256]").repeat(4));
     let e = error(&text);
     assert_at(&e, &text, 7, "[256, 256]", "lights[0].samples");
-    assert!(e.to_string().contains("65536 samples (point lights) in all"), "{e}");
+    assert!(e.to_string().contains("65536 point lights in all"), "{e}");
     assert!(e.describe(Lang::Ja).contains("65536 個"), "{}", e.describe(Lang::Ja));
+    // Point lights count one each, with the area lights' samples: four of 16 × 16 and one point
+    // light are over, at the point light (line 1 + 4·6 + 1, its table). 10 000 point lights
+    // took the ray tracer past a minute.
+    let point = "[[lights]]\nkind = \"point\"\nposition = [10, 10, 10]\n";
+    let text = format!("{four}{point}");
+    let e = error(&text);
+    assert_eq!(e.key.as_deref(), Some("lights[4]"), "{e}");
+    assert_eq!(e.position.map(|p| p.line), Some(26), "{e}");
+    assert_eq!(*limit(&e), LimitError::PointLights { lights: 1025 });
+    let text = format!("format = 1\n{}", point.repeat(1024));
+    load(&text).unwrap_or_else(|e| panic!("{e}"));
+    let text = format!("format = 1\n{}", point.repeat(1025));
+    assert_eq!(*limit(&error(&text)), LimitError::PointLights { lights: 1025 });
 }
 
 // ---------------------------------------------------------------------------------------------

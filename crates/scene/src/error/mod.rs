@@ -183,7 +183,7 @@ pub enum ErrorKind {
     /// A scene beyond one of the limits that keep every scene that loads drawable, and drawn
     /// alike by every renderer ([`crate::MAX_COORDINATE`], [`crate::MAX_SCENE_FACES`], …): a
     /// point too far from the origin, a transform whose product overflows, a field of view, near
-    /// plane or depth range f32 cannot draw, too many faces or area-light samples in all.
+    /// plane or depth range f32 cannot draw, too many faces or point lights in all.
     Limit(crate::LimitError),
     /// The camera or the projection is one that `cg_core::transform` cannot build (`look_at`'s
     /// up nearly parallel to the view, a subnormal `near`, …).

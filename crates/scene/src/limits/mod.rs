@@ -1,7 +1,7 @@
 //! The limits that keep every scene that loads drawable, and drawn alike by the three renderers
 //! (the CPU rasterizer, the ray tracer and the GPU renderer all work in f32): where the world may
 //! be, how narrow or wide the view, how near the near plane and how deep the depth range, how
-//! large the transforms' products, how many faces and area-light samples in all.
+//! large the transforms' products, how many faces and point lights (area-light samples counted) in all.
 //!
 //! The checks run while the file is loaded, after every value has been read on its own, and name
 //! the line and key that goes beyond a limit — the transform step, the shape parameter, the
@@ -60,11 +60,12 @@ pub const MAX_DEPTH_RATIO: f32 = 1.0e6;
 /// parameters before any mesh is built; OBJ models as each is loaded.
 pub const MAX_SCENE_FACES: u64 = 5_000_000;
 
-/// The most samples (point lights) of all area lights of a scene together: 1024, e.g. one area
-/// light of 32 × 32 or four of 16 × 16. Each sample is one more light to evaluate, and one more
-/// shadow ray to trace, at every pixel: 1024 take about 10 s to ray-trace at 640 × 640 on two
-/// cores (four lights of 256 × 256 took 8 s at 32 × 32 pixels).
-pub const MAX_AREA_LIGHT_SAMPLES: u64 = 1024;
+/// The most point lights of a scene: 1024, each directional, point or spot light counting one
+/// and each area light its samples (e.g. one area light of 32 × 32, or four of 16 × 16). Each is
+/// one more light to evaluate, and one more shadow ray to trace, at every pixel: 1024 take about
+/// 10 s to ray-trace at 640 × 640 on two cores (four area lights of 256 × 256 took 8 s at
+/// 32 × 32 pixels; 10 000 point lights ran past a minute).
+pub const MAX_POINT_LIGHTS: u64 = 1024;
 
 // One shape of the most faces and a ground fit in a scene; the nearest near plane still leaves a
 // depth range of 100.
@@ -78,7 +79,7 @@ pub(crate) fn check_spec(spec: &SceneSpec, root: &Table<'_>) -> Result<(), Scene
     let scene = &spec.scene;
     check_camera(&scene.camera, root)?;
     check_projection(scene, root)?;
-    check_area_samples(&scene.lights, root)?;
+    check_point_lights(&scene.lights, root)?;
     // Both were built while the file was read; an error here is one more safety net.
     let camera = || table(root, "camera");
     let view = scene
@@ -205,19 +206,20 @@ pub(crate) fn view_projection_invertible(view: Mat4, projection: Mat4) -> bool {
     (projection * view).is_finite() && finite_inverse(pv) && finite_inverse(v)
 }
 
-/// At most [`MAX_AREA_LIGHT_SAMPLES`] samples of all area lights together; the error is at the
-/// `samples` of the light that goes over.
-fn check_area_samples(lights: &[Light], root: &Table<'_>) -> Result<(), SceneError> {
+/// At most [`MAX_POINT_LIGHTS`] point lights, an area light counting its samples; the error is
+/// at the `samples` of the area light that goes over, or at the light.
+fn check_point_lights(lights: &[Light], root: &Table<'_>) -> Result<(), SceneError> {
     let mut total = 0u64;
     for (index, light) in lights.iter().enumerate() {
-        if let LightKind::Area { samples: [nu, nv], .. } = light.kind {
-            total += u64::from(nu) * u64::from(nv);
-            if total > MAX_AREA_LIGHT_SAMPLES {
-                let t = element(root, "lights", index);
-                let samples = t.as_ref().and_then(|t| t.get("samples"));
-                let e = ErrorKind::Limit(LimitError::AreaSamples { samples: total });
-                return Err(error_at(root, [samples], t.as_ref(), e));
-            }
+        total += match light.kind {
+            LightKind::Area { samples: [nu, nv], .. } => u64::from(nu) * u64::from(nv),
+            _ => 1,
+        };
+        if total > MAX_POINT_LIGHTS {
+            let t = element(root, "lights", index);
+            let samples = t.as_ref().and_then(|t| t.get("samples"));
+            let e = ErrorKind::Limit(LimitError::PointLights { lights: total });
+            return Err(error_at(root, [samples], t.as_ref(), e));
         }
     }
     Ok(())

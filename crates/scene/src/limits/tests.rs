@@ -27,7 +27,7 @@ pub(crate) fn samples() -> Vec<LimitError> {
         LimitError::DepthRatio { near: 0.01, far: 1e5 },
         LimitError::ViewProjection,
         LimitError::SceneFaces { faces: 16_000_000 },
-        LimitError::AreaSamples { samples: 262_144 },
+        LimitError::PointLights { lights: 262_144 },
     ];
     // Exhaustive: a new variant does not compile until it has a sample above.
     for e in &all {
@@ -39,7 +39,7 @@ pub(crate) fn samples() -> Vec<LimitError> {
             | LimitError::DepthRatio { .. }
             | LimitError::ViewProjection
             | LimitError::SceneFaces { .. }
-            | LimitError::AreaSamples { .. } => {}
+            | LimitError::PointLights { .. } => {}
         }
     }
     all
@@ -69,7 +69,7 @@ fn the_limits_are_what_their_documentation_says() {
     let pixel = f64::from(MIN_FOVY_DEG).to_radians() / f64::from(cg_core::image::MAX_SIDE);
     let ratio = pixel / f64::from(f32::EPSILON / 2.0);
     assert!((17.0..19.0).contains(&ratio), "{ratio}");
-    assert_eq!(MAX_AREA_LIGHT_SAMPLES, 32 * 32);
+    assert_eq!(MAX_POINT_LIGHTS, 32 * 32);
 }
 
 /// The ray tracer inverts projection × view: a singular view (a camera that cannot exist in a

@@ -4,8 +4,8 @@ use cg_core::image::MAX_SIDE;
 use cg_core::lang::{Text, t};
 
 use super::{
-    MAX_AREA_LIGHT_SAMPLES, MAX_COORDINATE, MAX_DEPTH_RATIO, MAX_FOVY_DEG, MAX_SCENE_FACES,
-    MIN_FOVY_DEG, MIN_NEAR,
+    MAX_COORDINATE, MAX_DEPTH_RATIO, MAX_FOVY_DEG, MAX_POINT_LIGHTS, MAX_SCENE_FACES, MIN_FOVY_DEG,
+    MIN_NEAR,
 };
 
 /// A scene beyond one of the limits that keep every scene that loads drawable, and drawn alike
@@ -53,11 +53,11 @@ pub enum LimitError {
         /// The faces counted up to and with this object.
         faces: u64,
     },
-    /// The area lights have more than [`MAX_AREA_LIGHT_SAMPLES`] samples in all (the error's key
-    /// is the `samples` that goes over).
-    AreaSamples {
-        /// The samples counted up to and with this light.
-        samples: u64,
+    /// The lights are more than [`MAX_POINT_LIGHTS`] point lights in all, an area light counting
+    /// its samples (the error's key is the `samples` or the light that goes over).
+    PointLights {
+        /// The point lights counted up to and with this light.
+        lights: u64,
     },
 }
 
@@ -245,20 +245,21 @@ impl LimitError {
                     ),
                 )
             }
-            LimitError::AreaSamples { samples } => {
-                let max = MAX_AREA_LIGHT_SAMPLES;
+            LimitError::PointLights { lights } => {
+                let max = MAX_POINT_LIGHTS;
                 Text::new(
                     format!(
-                        "この光源までで、面光源の標本（点光源）が合わせて {samples} 個になります。1 つの\
-                         シーンでは {max} 個までです。標本の 1 つ 1 つが、\
+                        "この光源までで、点光源が合わせて {lights} 個になります（面光源は標本の数だけ\
+                         数えます）。1 つのシーンでは {max} 個までです。1 つ 1 つが、\
                          すべてのピクセルで光源計算 1 回と影のレイ 1 本になります（{max} 個で、640 × 640 の\
-                         レイトレーシングに 2 コアで約 10 秒）。samples を減らしてください"
+                         レイトレーシングに 2 コアで約 10 秒）。光源か samples を減らしてください"
                     ),
                     format!(
-                        "with this light the area lights have {samples} samples (point lights) in all, \
-                         more than the {max} a scene may have: every \
-                         sample is one more light to evaluate and shadow ray to trace at every pixel \
-                         ({max} take about 10 s to ray-trace at 640 × 640 on two cores); use fewer samples"
+                        "with this light the scene has {lights} point lights in all (an area light \
+                         counts its samples), more than the {max} a scene may have: every \
+                         one is one more light to evaluate and shadow ray to trace at every pixel \
+                         ({max} take about 10 s to ray-trace at 640 × 640 on two cores); use fewer \
+                         lights or samples"
                     ),
                 )
             }
