@@ -52,8 +52,8 @@ pub(crate) struct SceneSpec {
 pub(crate) struct ObjectSpec {
     pub name: String,
     pub geometry: Geometry,
-    /// `weld`: the tolerance, when the mesh is to be welded by position.
-    pub weld: Option<f32>,
+    /// `weld`: the tolerance, when the mesh is to be welded by position, and where it is.
+    pub weld: Option<(f32, At)>,
     pub normals: NormalSource,
     /// Where `normals` is (or the object, when it is left out).
     pub normals_at: At,
@@ -235,9 +235,16 @@ impl SceneSpec {
             };
             let (mesh, weld) = match spec.weld {
                 None => (mesh, None),
-                Some(tolerance) => {
+                Some((tolerance, at)) => {
                     let before = mesh.vertex_count();
+                    let faces = mesh.face_count();
                     let welded = mesh.weld_by_position(tolerance);
+                    // Nothing left to draw: an error, as an OBJ file without faces is.
+                    if faces > 0 && welded.mesh.face_count() == 0 {
+                        return Err(
+                            at.error(src, ErrorKind::WeldRemovesEveryFace { tolerance, faces })
+                        );
+                    }
                     let record = WeldRecord {
                         tolerance,
                         merged_vertices: before - welded.mesh.vertex_count(),
@@ -698,7 +705,7 @@ fn read_object(
         },
     };
     let texture = t.optional("texture", |v| read_texture(v, base))?;
-    let weld = t.optional("weld", read_weld)?.flatten();
+    let weld = t.optional("weld", read_weld)?.flatten().zip(t.get("weld").map(|v| v.at()));
     Ok(ObjectSpec { name, geometry, weld, normals, normals_at, material, transform, texture })
 }
 

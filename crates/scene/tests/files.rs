@@ -433,6 +433,12 @@ fn a_weld_that_removes_faces_of_a_built_in_shape_leaves_no_exact_surface() {
     let record = s.objects[0].weld.expect("welded");
     assert!(record.removed_faces > 0, "{record:?}");
     assert_eq!(s.objects[0].analytic, None);
+    // A distance that merges every face away: nothing left to draw, an error at `weld`.
+    let text = "format = 1\n[[objects]]\nname = \"ground\"\nshape = { kind = \"grid\", divisions = 10, size = 10.0 }\nweld = 100\n";
+    let e = cg_scene::parse(text, Path::new("scene.toml")).unwrap_err();
+    assert_eq!(e.position.map(|p| p.line), Some(5), "{e}");
+    assert_eq!(e.key.as_deref(), Some("objects[0].weld"), "{e}");
+    assert!(matches!(*e.kind, cg_scene::ErrorKind::WeldRemovesEveryFace { faces: 200, .. }), "{e}");
 }
 
 /// Writes an RGBA image, rows listed top to bottom as PNG stores them.

@@ -142,6 +142,14 @@ pub enum ErrorKind {
     NoGeometry,
     /// `render.specular` is given with `light_model = "opengl"`.
     SpecularNeedsLectureModel,
+    /// `weld = <distance>` merged every face of an object away (the distance is as long as its
+    /// edges): nothing would be drawn.
+    WeldRemovesEveryFace {
+        /// The weld distance.
+        tolerance: f32,
+        /// The faces before welding.
+        faces: usize,
+    },
     /// A spot light's `inner_deg` (the lecture's soft edge) with `light_model = "opengl"`, which
     /// has no inner cone.
     InnerConeNeedsLectureModel,

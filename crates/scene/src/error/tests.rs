@@ -12,7 +12,7 @@ use cg_core::transform::TransformError;
 use super::*;
 
 /// How many variants [`ErrorKind`] has; [`kind_index`] numbers them `0..KINDS`.
-const KINDS: usize = 43;
+const KINDS: usize = 44;
 
 /// A number for each variant of [`ErrorKind`] (the match is exhaustive, so a new variant does not
 /// compile until it is numbered here, and [`every_kind_has_a_sample`] fails until it has a
@@ -62,6 +62,7 @@ fn kind_index(kind: &ErrorKind) -> usize {
         ErrorKind::FileTooLarge { .. } => 40,
         ErrorKind::Limit(_) => 41,
         ErrorKind::InnerConeNeedsLectureModel => 42,
+        ErrorKind::WeldRemovesEveryFace { .. } => 43,
     }
 }
 
@@ -229,6 +230,7 @@ fn samples() -> Vec<ErrorKind> {
         ErrorKind::NoGeometry,
         ErrorKind::SpecularNeedsLectureModel,
         ErrorKind::InnerConeNeedsLectureModel,
+        ErrorKind::WeldRemovesEveryFace { tolerance: 10.0, faces: 6 },
         ErrorKind::TransformStep { found: vec![] },
         ErrorKind::TransformStep { found: vec!["translate".into(), "scale".into()] },
         ErrorKind::UnknownMaterial { name: "glas".into(), suggestion: Some("glass".into()) },

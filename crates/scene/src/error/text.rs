@@ -145,6 +145,14 @@ impl ErrorKind {
                 "`specular` は light_model = \"lecture\" でだけ選べます（OpenGL のモデルは常に Blinn の N·H）",
                 "`specular` applies only to light_model = \"lecture\" (OpenGL's model always uses Blinn's N·H)",
             ),
+            ErrorKind::WeldRemovesEveryFace { tolerance, faces } => Text::new(
+                format!(
+                    "weld = {tolerance} で頂点をまとめると、{faces} 個の面がすべてつぶれて消えます（この距離は面の辺と同じくらい長い）。座標が等しい頂点だけをまとめるなら weld = true、ずれを許すなら辺よりずっと短い距離（例: 1e-4）にしてください"
+                ),
+                format!(
+                    "weld = {tolerance} merges the vertices so far that all {faces} faces collapse and nothing is left (the distance is as long as the edges); use weld = true for bit-equal positions, or a distance much shorter than the edges (e.g. 1e-4)"
+                ),
+            ),
             ErrorKind::InnerConeNeedsLectureModel => t(
                 "`inner_deg`（スポットライトの内側の円錐）は light_model = \"lecture\" でだけ使えます（OpenGL のモデルには内側の円錐がなく、境目は exponent だけで決まります）。[render] に light_model = \"lecture\" を書くか、inner_deg を消してください",
                 "`inner_deg` (a spot light's inner cone) applies only to light_model = \"lecture\" (OpenGL's model has no inner cone: only the exponent softens the edge); set light_model = \"lecture\" in [render] or remove inner_deg",
