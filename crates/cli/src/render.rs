@@ -164,7 +164,26 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     );
     print!("{}", r.report);
     println!("{}: {}", t("出力", "wrote").get(lang), output.display());
+    if nothing_drawn(&scene, &r.image) {
+        eprintln!("{}", nothing_drawn_note().get(lang));
+    }
     Ok(())
+}
+
+/// Said when a scene with faces to draw gives a picture of the clear colour alone.
+fn nothing_drawn_note() -> Text {
+    t(
+        "注意: 絵は背景色だけで、物体はどれも写っていません。カメラが物体の方を向いていないか、前方・後方クリップ面（near・far）の外にあるか、物体が視野の外にあります。`cg inspect` でカメラと物体の位置を確かめてください",
+        "note: the picture is the clear colour alone: no object is in it. The camera may look away from the objects, the near and far planes may cut them off, or they lie outside the field of view; `cg inspect` shows the camera and where the objects are",
+    )
+}
+
+/// Whether `scene` has faces to draw and `image` is nothing but its clear colour (compared as
+/// the PNG stores it, 8 bits a channel, as the GPU's read-back gives it).
+fn nothing_drawn(scene: &Scene, image: &Image) -> bool {
+    let clear = Image::new(1, 1, scene.clear_color).to_rgba8()[0];
+    scene.objects.iter().any(|o| o.mesh.face_count() > 0)
+        && image.to_rgba8().iter().all(|&p| p == clear)
 }
 
 /// The shiny sphere of the main job's strip (the lecture's light model with a specular term).
@@ -442,6 +461,23 @@ pub fn shading_name(s: Shading) -> Text {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_picture_of_the_clear_colour_alone_is_noted_only_when_there_was_something_to_draw() {
+        let mut scene = cg_scene::load(&crate::kit_path(None, crate::COURSE_SAMPLE)).unwrap();
+        let clear = Image::new(4, 3, scene.clear_color);
+        assert!(nothing_drawn(&scene, &clear));
+        // As the GPU reads it back: the same colour in 8 bits.
+        let bytes = clear.to_rgba8();
+        assert!(nothing_drawn(&scene, &Image::from_rgba8(4, 3, &bytes).unwrap()));
+        // One pixel drawn: no note.
+        let mut drawn = clear.clone();
+        drawn.pixels[5] = cg_core::Rgb::new(1.0, 0.0, 0.0);
+        assert!(!nothing_drawn(&scene, &drawn));
+        // Nothing to draw: an empty scene's picture is what it should be.
+        scene.objects.clear();
+        assert!(!nothing_drawn(&scene, &clear));
+    }
 
     #[test]
     fn default_output_names_stay_inside_out() {
