@@ -128,6 +128,10 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
             ).get(lang)
         );
     }
+    let asked = args.shading.map(Shading::from).unwrap_or(scene.shading);
+    if args.renderer == Renderer::Trace && asked != Shading::Phong {
+        eprintln!("{}", trace_shading_note(asked).get(lang));
+    }
     let settings = TraceSettings {
         max_depth: args.max_depth,
         fresnel: args.fresnel,
@@ -168,6 +172,22 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         eprintln!("{}", nothing_drawn_note().get(lang));
     }
     Ok(())
+}
+
+/// Said when the ray tracer is asked for flat or Gouraud shading, which it draws its own way
+/// (`cg_trace::Options::shading`).
+fn trace_shading_note(asked: Shading) -> Text {
+    if asked == Shading::Gouraud {
+        t(
+            "注意: レイトレーサにはグローシェーディングがありません（補間する頂点の色を持たないため）。当たった点ごとに光源計算をするフォンシェーディングで描きます",
+            "note: the ray tracer has no Gouraud shading (it has no vertex colours to interpolate): it lights every point a ray hits, as Phong shading",
+        )
+    } else {
+        t(
+            "注意: レイトレーサのフラットシェーディングは三角形の面ごとに 1 回光源計算をします。正確な球と平面（sphere・grid）には面がないので、当たった点ごとに光源計算をします",
+            "note: the ray tracer's flat shading lights each triangle once; exact spheres and planes (sphere, grid shapes) have no faces and are lit at every point a ray hits",
+        )
+    }
 }
 
 /// Said when a scene with faces to draw gives a picture of the clear colour alone.

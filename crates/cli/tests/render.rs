@@ -102,6 +102,23 @@ fn the_ray_tracer_draws_through_the_same_command() {
     assert!(text.contains("Whitted ray tracer") && text.contains("reflection rays"), "{text}");
     assert!(!text.contains("shadow rays"), "--no-shadows casts none: {text}");
     assert!(text.contains("deepest ray 2"), "--max-depth 2: {text}");
+    // Shading modes the tracer draws its own way are named; Phong is its own.
+    for (shading, note) in [
+        ("gouraud", Some("no Gouraud shading")),
+        ("flat", Some("flat shading lights each triangle once")),
+        ("phong", None),
+    ] {
+        let args = ["render", "assets/scenes/glass-mirror.toml", "--renderer", "trace"];
+        let rest =
+            ["--width", "16", "--shading", shading, "-o", out.to_str().unwrap(), "--lang", "en"];
+        let o = cg_in(&root(), &[&args[..], &rest[..]].concat());
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(o.status.success(), "{shading}: {err}");
+        match note {
+            Some(note) => assert!(err.contains(note), "{shading}: {err}"),
+            None => assert!(!err.contains("note:"), "{shading}: {err}"),
+        }
+    }
 }
 
 #[test]
