@@ -349,15 +349,11 @@ fn light_lanes(stage: &Stage<'_>, points: &Points, out: &mut V3, counts: &mut Li
         light_lanes_plain(stage, points, out, counts);
         return;
     }
-    let Stage { lights, material, colored } = *stage;
+    let Stage { lights, material, .. } = *stage;
     let len = points.len;
     let lanes = len as u64;
     counts.evaluations += lanes;
-    let (ka, kd) = if colored {
-        (points.color, points.color)
-    } else {
-        (V3::splat(material.ka), V3::splat(material.kd))
-    };
+    let (ka, kd) = reflectances(stage, points);
     let n = &points.n;
     // V (LightModel::view_vector): towards the eye, or the camera's backward axis.
     let mut v = V3::splat(lights.backward);
@@ -369,13 +365,7 @@ fn light_lanes(stage: &Stage<'_>, points: &Points, out: &mut V3, counts: &mut Li
     }
 
     let ones = [1.0f32; LANES];
-    let a = lights.ambient;
-    let mut ambient = V3::default();
-    for i in 0..LANES {
-        ambient.x[i] = a.x * ka.x[i];
-        ambient.y[i] = a.y * ka.y[i];
-        ambient.z[i] = a.z * ka.z[i];
-    }
+    let mut ambient = times(lights.ambient, &ka);
     let mut diffuse = V3::default();
     let mut specular = V3::default();
     let with_specular = material.ks != Rgb::ZERO;
@@ -465,27 +455,40 @@ fn light_lanes(stage: &Stage<'_>, points: &Points, out: &mut V3, counts: &mut Li
     }
 }
 
+/// k_a and k_d at each point: the point's colour where the points have their own
+/// (`stage.colored`), else the material's.
+#[inline(always)]
+fn reflectances(stage: &Stage<'_>, points: &Points) -> (V3, V3) {
+    if stage.colored {
+        (points.color, points.color)
+    } else {
+        (V3::splat(stage.material.ka), V3::splat(stage.material.kd))
+    }
+}
+
+/// `c ⊙ k` lane by lane (the ambient term before any light's).
+#[inline(always)]
+fn times(c: Rgb, k: &V3) -> V3 {
+    let mut out = V3::default();
+    for i in 0..LANES {
+        out.x[i] = c.x * k.x[i];
+        out.y[i] = c.y * k.y[i];
+        out.z[i] = c.z * k.z[i];
+    }
+    out
+}
+
 /// [`light_lanes`] where every light's scale is 1 and there is no specular term
 /// ([`SpanLights::plain`], `k_s = 0`): the same arithmetic lane by lane, each light's terms in
 /// one pass over the lanes (no scale, no view vector, no specular sum to keep).
 #[inline(always)]
 fn light_lanes_plain(stage: &Stage<'_>, points: &Points, out: &mut V3, counts: &mut LightCounts) {
-    let Stage { lights, material, colored } = *stage;
+    let Stage { lights, material, .. } = *stage;
     let lanes = points.len as u64;
     counts.evaluations += lanes;
-    let (ka, kd) = if colored {
-        (points.color, points.color)
-    } else {
-        (V3::splat(material.ka), V3::splat(material.kd))
-    };
+    let (ka, kd) = reflectances(stage, points);
     let n = &points.n;
-    let a = lights.ambient;
-    let mut ambient = V3::default();
-    for i in 0..LANES {
-        ambient.x[i] = a.x * ka.x[i];
-        ambient.y[i] = a.y * ka.y[i];
-        ambient.z[i] = a.z * ka.z[i];
-    }
+    let mut ambient = times(lights.ambient, &ka);
     let mut diffuse = V3::default();
     let mut l = V3::default();
     let mut valid = [true; LANES];
