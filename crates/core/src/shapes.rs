@@ -196,9 +196,9 @@ pub fn grid(divisions: u32, size: f32) -> Result<Mesh, ShapeError> {
 // 0, 1, 0)), so the ring runs counter-clockwise seen from above.
 
 /// The largest grid `divisions`, and the largest `slices`, `stacks`, `sides` and segment counts.
-const MAX_SEGMENTS: u32 = 4096;
+pub const MAX_SEGMENTS: u32 = 4096;
 /// The largest icosphere subdivision level (20·4⁸ = 1 310 720 faces).
-const MAX_SUBDIVISIONS: u32 = 8;
+pub const MAX_SUBDIVISIONS: u32 = 8;
 
 /// `(cos, sin)` of the angle `turn · numerator / denominator` turns, in f64, exact at multiples
 /// of a quarter turn (so a square's corners have exact zeros, not 6e-17).

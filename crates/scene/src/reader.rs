@@ -255,10 +255,10 @@ impl<'a> Value<'a> {
         }
     }
 
-    /// An integer in `min..=max` that fits u32.
-    pub fn u32(&self, min: u32) -> Result<u32, SceneError> {
+    /// An integer in `min..=max`.
+    pub fn u32(&self, min: u32, max: u32) -> Result<u32, SceneError> {
         // Fits u32: the range says so.
-        self.integer(i64::from(min), i64::from(u32::MAX)).map(|n| n as u32)
+        self.integer(i64::from(min), i64::from(max)).map(|n| n as u32)
     }
 
     /// A string.

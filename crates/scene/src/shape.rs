@@ -176,7 +176,8 @@ impl ShapeSpec {
         allowed.extend_from_slice(params);
         table.only(&allowed)?;
         let length = |key: &str| table.require(key)?.f32(Rule::Positive);
-        let count = |key: &str, min: u32| table.require(key)?.u32(min);
+        // Counts in the constructors' ranges (`an integer in 3..=4096`), said at the value.
+        let count = |key: &str, min: u32| table.require(key)?.u32(min, shapes::MAX_SEGMENTS);
         let spec = match kind {
             "grid" => ShapeSpec::Grid { divisions: count("divisions", 1)?, size: length("size")? },
             "lecture_pyramid" => ShapeSpec::LecturePyramid,
@@ -199,7 +200,7 @@ impl ShapeSpec {
             "sphere" => ShapeSpec::Sphere { radius: length("radius")? },
             "icosphere" => ShapeSpec::Icosphere {
                 radius: length("radius")?,
-                subdivisions: count("subdivisions", 0)?,
+                subdivisions: table.require("subdivisions")?.u32(0, shapes::MAX_SUBDIVISIONS)?,
             },
             "cylinder" => ShapeSpec::Cylinder {
                 radius: length("radius")?,
@@ -487,10 +488,7 @@ mod tests {
         let e = read(text).unwrap_err();
         assert_eq!(
             *e.kind,
-            ErrorKind::BadValue {
-                rule: Rule::Integer { min: 3, max: u32::MAX.into() },
-                got: "2".into()
-            }
+            ErrorKind::BadValue { rule: Rule::Integer { min: 3, max: 4096 }, got: "2".into() }
         );
 
         let text = r#"{ kind = "grid", divisions = 10.0, size = 10 }"#;
@@ -547,6 +545,8 @@ mod tests {
         }
         // Counts beyond u64 saturate instead of wrapping round to a small number.
         let huge = ShapeSpec::Grid { divisions: u32::MAX, size: 1.0 };
+        assert_eq!(huge.face_count(), u64::MAX);
+        let huge = ShapeSpec::Icosphere { radius: 1.0, subdivisions: 40 };
         assert_eq!(huge.face_count(), u64::MAX);
     }
 
