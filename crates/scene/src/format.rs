@@ -92,11 +92,45 @@ pub(crate) fn read(src: &Source<'_>, base: &Path) -> Result<SceneSpec, SceneErro
 
 /// The TOML document of `src`, with the span of every key and value; a syntax error names the
 /// line and column.
+/// The key (a bare or quoted key, one segment of a dotted key, or a table's name) that starts
+/// at byte `start` of `text`, as the TOML parser's "duplicate key" error points at it.
+fn key_at(text: &str, start: usize) -> Option<&str> {
+    let rest = text.get(start..)?;
+    let end = if rest.starts_with('"') || rest.starts_with('\'') {
+        1 + rest[1..].find(&rest[..1])? + 1
+    } else {
+        rest.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_' || c == '-'))
+            .unwrap_or(rest.len())
+    };
+    Some(&rest[..end]).filter(|k| !k.is_empty())
+}
+
+/// The last line of `before` (1-based) where `key` is written as a key: after the line's start,
+/// a `[` or a `.`, and before an `=`, a `]` or a `.`.
+fn line_defining(before: &str, key: &str) -> Option<usize> {
+    let defines = |line: &str| {
+        line.match_indices(key).any(|(i, _)| {
+            let ahead = line[..i].trim_end();
+            let after = line[i + key.len()..].trim_start();
+            (ahead.is_empty() || ahead.ends_with(['[', '.'])) && after.starts_with(['=', ']', '.'])
+        })
+    };
+    before.lines().enumerate().filter(|(_, line)| defines(line)).map(|(i, _)| i + 1).last()
+}
+
 pub(crate) fn parse_document<'a>(
     src: &Source<'a>,
 ) -> Result<toml::Spanned<toml::de::DeTable<'a>>, SceneError> {
     toml::de::DeTable::parse(src.text).map_err(|e| {
         let span = e.span().unwrap_or(0..0);
+        // The parser names neither the key nor where it was first: both are said here.
+        if e.message() == "duplicate key"
+            && let Some(key) = key_at(src.text, span.start)
+        {
+            let first_line = line_defining(&src.text[..span.start], key);
+            let kind = ErrorKind::DuplicateKey { key: key.to_owned(), first_line };
+            return src.error(&span, "", kind);
+        }
         let mut message = e.message().to_owned();
         // A character that cannot be seen (a zero-width space pasted from a web page) is named,
         // or the student looks at a line that seems right.

@@ -58,10 +58,24 @@ pitch_deg = -30.0 x
     assert_eq!(e.position.map(|p| p.line), Some(2), "{e}");
     assert!(matches!(*e.kind, ErrorKind::Syntax { .. }), "{e}");
 
-    // A key given twice is a TOML error too.
-    let text = "format = 1\n[window]\nwidth = 640\nwidth = 320\n";
+    // A key given twice: which key, and where it was first (the TOML parser says neither).
+    let text = "format = 1\n[window]\nwidth = 640\n  height = 480\n  width = 320\n";
     let e = error(text);
-    assert_at(&e, text, 4, "width", None);
+    assert_at(&e, text, 5, "width", None);
+    let first = Some(3);
+    assert_eq!(*e.kind, ErrorKind::DuplicateKey { key: "width".into(), first_line: first });
+    assert!(e.to_string().contains("`width` is given twice (first on line 3)"), "{e}");
+    assert!(e.describe(Lang::Ja).contains("1 回目は 3 行目"), "{}", e.describe(Lang::Ja));
+    // A table given twice, a dotted key, a quoted key.
+    for (text, key, line) in [
+        ("format = 1\n[window]\nwidth = 640\n[window]\n", "window", 2),
+        ("format = 1\nwindow.width = 640\nwindow.width = 320\n", "width", 2),
+        ("format = 1\n[window]\n\"width\" = 640\n\"width\" = 320\n", "\"width\"", 3),
+    ] {
+        let e = error(text);
+        let kind = ErrorKind::DuplicateKey { key: key.into(), first_line: Some(line) };
+        assert_eq!(*e.kind, kind, "{text}");
+    }
 }
 
 #[test]

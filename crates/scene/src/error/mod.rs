@@ -65,10 +65,17 @@ pub enum ErrorKind {
         /// Why, and where (`cg_core::text`'s message, in both languages).
         why: cg_core::lang::Text,
     },
-    /// The text is not valid TOML (an unquoted string, a missing `=`, a duplicated key, …).
+    /// The text is not valid TOML (an unquoted string, a missing `=`, …).
     Syntax {
         /// The TOML parser's message.
         message: String,
+    },
+    /// A key (or a table) given twice in one table.
+    DuplicateKey {
+        /// The key as written.
+        key: String,
+        /// The line where it was given first, where it could be found.
+        first_line: Option<usize>,
     },
     /// `format` names a version of the scene format this kit does not know.
     UnsupportedFormat {

@@ -12,7 +12,7 @@ use cg_core::transform::TransformError;
 use super::*;
 
 /// How many variants [`ErrorKind`] has; [`kind_index`] numbers them `0..KINDS`.
-const KINDS: usize = 44;
+const KINDS: usize = 45;
 
 /// A number for each variant of [`ErrorKind`] (the match is exhaustive, so a new variant does not
 /// compile until it is numbered here, and [`every_kind_has_a_sample`] fails until it has a
@@ -63,6 +63,7 @@ fn kind_index(kind: &ErrorKind) -> usize {
         ErrorKind::Limit(_) => 41,
         ErrorKind::InnerConeNeedsLectureModel => 42,
         ErrorKind::WeldRemovesEveryFace { .. } => 43,
+        ErrorKind::DuplicateKey { .. } => 44,
     }
 }
 
@@ -209,6 +210,8 @@ fn samples() -> Vec<ErrorKind> {
             ),
         },
         ErrorKind::Syntax { message: "invalid string".into() },
+        ErrorKind::DuplicateKey { key: "width".into(), first_line: Some(3) },
+        ErrorKind::DuplicateKey { key: "width".into(), first_line: None },
         ErrorKind::UnsupportedFormat { found: "2".into() },
         ErrorKind::UnknownKey {
             key: "radiu".into(),

@@ -49,6 +49,16 @@ impl ErrorKind {
                 format!("TOML の書き方の誤りです（構文エラー）: {message}"),
                 format!("TOML syntax error: {message}"),
             ),
+            ErrorKind::DuplicateKey { key, first_line: Some(line) } => Text::new(
+                format!(
+                    "`{key}` が 2 回書かれています（1 回目は {line} 行目）。どちらかを消してください"
+                ),
+                format!("`{key}` is given twice (first on line {line}); remove one of them"),
+            ),
+            ErrorKind::DuplicateKey { key, first_line: None } => Text::new(
+                format!("`{key}` が 2 回書かれています。どちらかを消してください"),
+                format!("`{key}` is given twice; remove one of them"),
+            ),
             ErrorKind::UnsupportedFormat { found } => Text::new(
                 format!("format = {found} は読めません。このキットが読めるのは format = 1 です"),
                 format!("format = {found} is not a version this kit reads; use format = 1"),
