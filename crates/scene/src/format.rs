@@ -90,8 +90,6 @@ pub(crate) fn read(src: &Source<'_>, base: &Path) -> Result<SceneSpec, SceneErro
     read_root(src, &Table::root(src, &parse_document(src)?), base)
 }
 
-/// The TOML document of `src`, with the span of every key and value; a syntax error names the
-/// line and column.
 /// The key (a bare or quoted key, one segment of a dotted key, or a table's name) that starts
 /// at byte `start` of `text`, as the TOML parser's "duplicate key" error points at it.
 fn key_at(text: &str, start: usize) -> Option<&str> {
@@ -118,6 +116,8 @@ fn line_defining(before: &str, key: &str) -> Option<usize> {
     before.lines().enumerate().filter(|(_, line)| defines(line)).map(|(i, _)| i + 1).last()
 }
 
+/// The TOML document of `src`, with the span of every key and value; a syntax error names the
+/// line and column.
 pub(crate) fn parse_document<'a>(
     src: &Source<'a>,
 ) -> Result<toml::Spanned<toml::de::DeTable<'a>>, SceneError> {
