@@ -63,6 +63,25 @@ struct SpanLight {
     attenuates: bool,
 }
 
+impl SpanLight {
+    /// The unit vector L towards the light from each point `p`, whether it exists, and the
+    /// distances where `d` asks for them (a directional light: its own, the same everywhere).
+    #[inline(always)]
+    fn to_light(&self, p: &V3, l: &mut V3, d: Option<&mut Lanes>, valid: &mut [bool; LANES]) {
+        match (self.directional, self.position) {
+            (Some((dl, dd)), _) => {
+                *l = V3::splat(dl);
+                if let Some(d) = d {
+                    *d = [dd; LANES];
+                }
+                *valid = [!dl.is_nan(); LANES];
+            }
+            (_, Some(position)) => directions(position, p, l, d, valid),
+            (None, None) => *valid = [false; LANES],
+        }
+    }
+}
+
 /// The scene's lights and light model, made ready once per frame.
 pub(crate) struct SpanLights {
     lecture: bool,
@@ -74,7 +93,8 @@ pub(crate) struct SpanLights {
     local_viewer: bool,
     eye: DVec3,
     backward: Vec3,
-    /// No light attenuates and none is a spot light: every light's scale is 1 at every point
+    /// No light attenuates and none is a spot light (nor an area light: its samples are spot
+    /// lights): every light's scale is 1 at every point
     /// ([`light_lanes_plain`] when the material has no specular term either).
     plain: bool,
 }
@@ -376,18 +396,8 @@ fn light_lanes(stage: &Stage<'_>, points: &Points, out: &mut V3, counts: &mut Li
         let light = &span_light.light;
         counts.lights += lanes;
         // (L, d) per point; L = N and d = 0 where the light has no direction from the point.
-        match (span_light.directional, span_light.position) {
-            (Some((dl, dd)), _) => {
-                l = V3::splat(dl);
-                d = [dd; LANES];
-                valid = [!dl.is_nan(); LANES];
-            }
-            (_, Some(position)) => {
-                let distances = span_light.attenuates.then_some(&mut d);
-                directions(position, &points.p, &mut l, distances, &mut valid);
-            }
-            (None, None) => valid = [false; LANES],
-        }
+        let distances = span_light.attenuates.then_some(&mut d);
+        span_light.to_light(&points.p, &mut l, distances, &mut valid);
         // L = N, d = 0 where there is no direction.
         if !valid.iter().all(|&v| v) {
             let mut fallback = *n;
@@ -498,14 +508,7 @@ fn light_lanes_plain(stage: &Stage<'_>, points: &Points, out: &mut V3, counts: &
         counts.lights += lanes;
         counts.visibility_queries += lanes;
         counts.diffuse += lanes;
-        match (span_light.directional, span_light.position) {
-            (Some((dl, _)), _) => {
-                l = V3::splat(dl);
-                valid = [!dl.is_nan(); LANES];
-            }
-            (_, Some(position)) => directions(position, &points.p, &mut l, None, &mut valid),
-            (None, None) => valid = [false; LANES],
-        }
+        span_light.to_light(&points.p, &mut l, None, &mut valid);
         let (ca, cd, opengl) = (light.ambient, light.diffuse, !lights.lecture);
         for i in 0..LANES {
             // L = N where the light has no direction from the point.
