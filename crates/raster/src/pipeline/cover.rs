@@ -170,11 +170,14 @@ fn runs_of<E: Edge, const W: usize>(
             let n = (x1 - x + 1).min(W as u32);
             let e: [[E; W]; 3] =
                 std::array::from_fn(|i| std::array::from_fn(|k| e0[i] + lanes[i][k]));
+            // `&`, not `&&`: every lane's test at once, without a branch per lane.
             let mut covered: Mask = 0;
             for k in 0..W {
-                let inside =
-                    e[0][k].non_negative() && e[1][k].non_negative() && e[2][k].non_negative();
-                covered |= Mask::from(inside && (k as u32) < n) << k;
+                let inside = e[0][k].non_negative()
+                    & e[1][k].non_negative()
+                    & e[2][k].non_negative()
+                    & ((k as u32) < n);
+                covered |= Mask::from(inside) << k;
             }
             for i in 0..3 {
                 e0[i] = e0[i] + step_w[i];
@@ -276,19 +279,31 @@ fn channel(x: f32) -> f32 {
 /// without shading hidden fragments. Gives the pixels that passed.
 #[inline(always)]
 fn depth_test<const W: usize>(b: &V3N<W>, z: Vec3, covered: Mask, depth: &mut [f32]) -> Mask {
-    let n = depth.len().min(W);
-    let mut stored = [0.0f32; W];
-    stored[..n].copy_from_slice(&depth[..n]);
-    let mut passed: Mask = 0;
-    for k in 0..W {
-        // glam's dot: (x·x' + y·y') + z·z'.
-        let d = (b.x[k] * z.x + b.y[k] * z.y + b.z[k] * z.z).clamp(0.0, 1.0);
-        let pass = covered >> k & 1 != 0 && d < stored[k];
-        stored[k] = if pass { d } else { stored[k] };
-        passed |= Mask::from(pass) << k;
+    #[inline(always)]
+    fn lanes<const W: usize>(b: &V3N<W>, z: Vec3, covered: Mask, stored: &mut [f32; W]) -> Mask {
+        let mut passed: Mask = 0;
+        for k in 0..W {
+            // glam's dot: (x·x' + y·y') + z·z'.
+            let d = (b.x[k] * z.x + b.y[k] * z.y + b.z[k] * z.z).clamp(0.0, 1.0);
+            // `&`, not `&&`: a select per lane, not a branch.
+            let pass = (covered >> k & 1 != 0) & (d < stored[k]);
+            stored[k] = if pass { d } else { stored[k] };
+            passed |= Mask::from(pass) << k;
+        }
+        passed
     }
-    depth[..n].copy_from_slice(&stored[..n]);
-    passed
+    match depth.first_chunk_mut::<W>() {
+        // A whole run (all but a tile's last, short one): the buffer's own lanes.
+        Some(stored) => lanes(b, z, covered, stored),
+        None => {
+            let n = depth.len();
+            let mut stored = [0.0f32; W];
+            stored[..n].copy_from_slice(depth);
+            let passed = lanes(b, z, covered, &mut stored);
+            depth.copy_from_slice(&stored[..n]);
+            passed
+        }
+    }
 }
 
 #[cfg(test)]
