@@ -27,6 +27,22 @@ use super::tile::{Target, edge_setup};
 use super::{Edges, Rect};
 use crate::span::{self, V3N};
 
+#[cfg(target_arch = "x86_64")]
+mod v3;
+
+/// Which copy of the run loop a triangle takes: the same pixels and bits from each (the tests
+/// run both on any machine).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Kernels {
+    /// The best this CPU has: on x86-64 with AVX2 and FMA, the one written in AVX2 registers
+    /// (`cover/v3.rs`) for the f64 edge functions.
+    Best,
+    /// The compiler's (vectorised for AVX2 where the CPU has it): a CPU without AVX2, and the
+    /// tests.
+    #[cfg_attr(not(test), allow(dead_code))]
+    Compiled,
+}
+
 /// Pixels of a row rasterized at once where the colour is made here (flat, Gouraud).
 pub(super) const SIMPLE: usize = 8;
 /// Pixels of a row rasterized at once where the fragments go to the fragment stage (Phong's
@@ -75,6 +91,7 @@ pub(super) struct Run<const W: usize> {
 /// The fill rule and the edge functions are [`super::tile`]'s rasterizer's: the pixels whose
 /// biased edge functions are all ≥ 0, in rows from the top, left to right.
 #[multiversion(targets("x86_64+avx2+fma"))]
+#[allow(clippy::too_many_arguments)]
 pub(super) fn cover<'t, const W: usize>(
     edges: &Edges,
     rect: Rect,
@@ -82,6 +99,7 @@ pub(super) fn cover<'t, const W: usize>(
     simple: &Simple,
     target: &mut Target<'t>,
     runs: &mut Vec<Run<W>>,
+    #[cfg_attr(not(target_arch = "x86_64"), allow(unused_variables))] kernels: Kernels,
 ) -> (u64, u64) {
     let [bx0, by0, bx1, by1] = edges.bbox;
     let (x0, y0) = (bx0.max(rect.x0), by0.max(rect.y0));
@@ -99,10 +117,15 @@ pub(super) fn cover<'t, const W: usize>(
     let visited = (i64::from(x1.max(y1)) + W as i64 + 1) * super::ONE;
     let area = [x0, y0, x1, y1];
     if reach.max(visited) >= 1 << 24 {
-        runs_of::<i64, W>(edges, area, z, simple, target, runs)
-    } else {
-        runs_of::<f64, W>(edges, area, z, simple, target, runs)
+        return runs_of::<i64, W>(edges, area, z, simple, target, runs);
     }
+    #[cfg(target_arch = "x86_64")]
+    if kernels == Kernels::Best
+        && let Some(simd) = pulp::x86::V3::try_new()
+    {
+        return simd.vectorize(|| v3::runs_of(simd, edges, area, z, simple, target, runs));
+    }
+    runs_of::<f64, W>(edges, area, z, simple, target, runs)
 }
 
 /// An edge function's lane: the exact integer, as an f64 (below 2⁵³) or as itself.
@@ -385,6 +408,8 @@ mod tests {
             for (y, row) in depth.iter_mut().enumerate() {
                 for (x, d) in row.iter_mut().enumerate() {
                     *d = ((x * 7 + y * 13) % 17) as f32 / 16.0;
+                    // Colours the lanes that do not pass must keep.
+                    color[y][x] = Rgb::new(x as f32, y as f32, -1.0);
                 }
             }
             let before = depth.clone();
@@ -409,44 +434,63 @@ mod tests {
             });
             expected.1 = depth.iter().flatten().map(|d| d.to_bits()).collect();
 
-            // Runs of sixteen, handed back.
-            let (mut color16, mut depth16) = (color.clone(), before.clone());
-            let mut runs = Vec::new();
-            let counts = cover::<STAGED>(
-                &edges,
-                rect,
-                z,
-                &Simple::No,
-                &mut target(&mut color16, &mut depth16),
-                &mut runs,
-            );
-            let mut got: Vec<(u32, u32, [u32; 3], bool)> = Vec::new();
-            for run in &runs {
-                for k in (0..STAGED).filter(|k| run.passed >> k & 1 != 0) {
-                    got.push((run.x + k as u32, run.y, bits(run.b.get(k)), true));
-                }
-            }
             let passed: Vec<_> = expected.0.iter().filter(|p| p.3).copied().collect();
-            assert_eq!(got, passed, "round {round}: the pixels that passed, in order");
             let covered = expected.0.len() as u64;
-            assert_eq!(counts, (covered, passed.len() as u64), "round {round}: the counts");
-            let depths: Vec<u32> = depth16.iter().flatten().map(|d| d.to_bits()).collect();
-            assert_eq!(depths, expected.1, "round {round}: the depth buffer");
-
-            // Runs of eight, Gouraud's colour made here.
-            let (mut depth8, gouraud) =
-                (before.clone(), Simple::Gouraud(Gouraud::new(inv_w, colors)));
-            let mut none = Vec::new();
-            let mut t = target(&mut color, &mut depth8);
-            let counts = cover::<SIMPLE>(&edges, rect, z, &gouraud, &mut t, &mut none);
-            assert_eq!(counts, (covered, passed.len() as u64), "round {round}: the counts");
-            assert!(none.is_empty());
             let colors_bits = |c: &[Vec<Rgb>]| -> Vec<[u32; 3]> {
                 c.iter().flatten().map(|c| c.to_array().map(f32::to_bits)).collect()
             };
-            assert_eq!(colors_bits(&color), colors_bits(&expected_color), "round {round}: colours");
-            let depths: Vec<u32> = depth8.iter().flatten().map(|d| d.to_bits()).collect();
-            assert_eq!(depths, expected.1, "round {round}: the depth buffer");
+            let flat = Rgb::new(0.25, 0.5, 0.75);
+            let mut expected_flat = color.clone();
+            for &(x, y, _, _) in &passed {
+                expected_flat[y as usize][x as usize] = flat;
+            }
+            for kernels in [Kernels::Best, Kernels::Compiled] {
+                let round = format!("round {round}, {kernels:?}");
+                // Runs of sixteen, handed back.
+                let (mut color16, mut depth16) = (color.clone(), before.clone());
+                let mut runs = Vec::new();
+                let counts = cover::<STAGED>(
+                    &edges,
+                    rect,
+                    z,
+                    &Simple::No,
+                    &mut target(&mut color16, &mut depth16),
+                    &mut runs,
+                    kernels,
+                );
+                let mut got: Vec<(u32, u32, [u32; 3], bool)> = Vec::new();
+                for run in &runs {
+                    for k in (0..STAGED).filter(|k| run.passed >> k & 1 != 0) {
+                        got.push((run.x + k as u32, run.y, bits(run.b.get(k)), true));
+                    }
+                }
+                assert_eq!(got, passed, "{round}: the pixels that passed, in order");
+                assert_eq!(counts, (covered, passed.len() as u64), "{round}: the counts");
+                let depths: Vec<u32> = depth16.iter().flatten().map(|d| d.to_bits()).collect();
+                assert_eq!(depths, expected.1, "{round}: the depth buffer");
+                assert_eq!(colors_bits(&color16), colors_bits(&color), "{round}: no colour");
+
+                // Runs of eight, Gouraud's and flat colours made here.
+                for (simple, expected_color) in [
+                    (Simple::Gouraud(Gouraud::new(inv_w, colors)), &expected_color),
+                    (Simple::Flat(flat), &expected_flat),
+                ] {
+                    let (mut color8, mut depth8) = (color.clone(), before.clone());
+                    let mut none = Vec::new();
+                    let mut t = target(&mut color8, &mut depth8);
+                    let counts =
+                        cover::<SIMPLE>(&edges, rect, z, &simple, &mut t, &mut none, kernels);
+                    assert_eq!(counts, (covered, passed.len() as u64), "{round}: the counts");
+                    assert!(none.is_empty());
+                    assert_eq!(
+                        colors_bits(&color8),
+                        colors_bits(expected_color),
+                        "{round}: colours"
+                    );
+                    let depths: Vec<u32> = depth8.iter().flatten().map(|d| d.to_bits()).collect();
+                    assert_eq!(depths, expected.1, "{round}: the depth buffer");
+                }
+            }
         }
         assert!(tested > 2000 && wide > 100, "{tested} triangles, {wide} through i64 lanes");
     }

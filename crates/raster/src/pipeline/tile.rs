@@ -6,7 +6,7 @@ use cg_core::light::LightCounts;
 use cg_core::normals::interpolate_normal;
 use cg_core::scene::Shading;
 
-use super::cover::{Gouraud, SIMPLE, STAGED, Simple, cover};
+use super::cover::{Gouraud, Kernels, Run, SIMPLE, STAGED, Simple, cover};
 use super::*;
 
 /// The pixels of one tile: its part of each of its rows of the colour and depth buffers.
@@ -43,6 +43,14 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
     // Runs of sixteen pixels that passed the depth test and still need their fragment stage.
     let mut runs = Vec::new();
     let spans = frame.spans.as_ref().filter(|_| frame.shading == Shading::Phong);
+    // The face normal where the corners' normals cancel, from the face's own corners.
+    let face = |object: usize| {
+        let (draw, vertices) = (&draws[object], &buffers[object]);
+        move |face: u32| {
+            let face = draw.prepared.mesh.faces[face as usize];
+            world_face_normal(draw, face.map(|i| &vertices[i as usize]))
+        }
+    };
     let flush = |span: &mut PhongSpan,
                  target: &mut Target<'_>,
                  counts: &mut LightCounts,
@@ -50,19 +58,40 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
         // An empty span may name no object: a scene without any, or a tile none reaches.
         if let Some(lights) = spans.filter(|_| !span.is_empty()) {
             let draw = &draws[span.object];
-            let texture = draw.texture;
-            // The face normal where the corners' normals cancel, from the face's own corners.
-            let vertices = &buffers[span.object];
-            let face = |face: u32| {
-                let face = draw.prepared.mesh.faces[face as usize];
-                world_face_normal(draw, face.map(|i| &vertices[i as usize]))
-            };
             let (material, colored) = (&draw.material, draw.has_colors());
-            stats.texture_samples +=
-                span.flush(lights, material, colored, texture, counts, face, |row, column, c| {
-                    target.color[row as usize][column as usize] = c;
-                });
+            let face = face(span.object);
+            stats.texture_samples += span.flush(
+                lights,
+                material,
+                colored,
+                draw.texture,
+                counts,
+                face,
+                |row, column, c| target.color[row as usize][column as usize] = c,
+            );
         }
+    };
+    // A whole run of the current triangle, lit at once where the span holds no other
+    // triangle's fragments (`PhongSpan::light_run`); `false` where it was not.
+    let light_run = |span: &mut PhongSpan,
+                     target: &mut Target<'_>,
+                     counts: &mut LightCounts,
+                     stats: &mut Stats,
+                     run: &Run<STAGED>| {
+        let (row, column) = ((run.y - target.y0) as usize, (run.x - target.x0) as usize);
+        let whole = run.passed == u32::MAX >> (u32::BITS - STAGED as u32);
+        let (Some(lights), true, true) = (spans, whole, span.only_current()) else {
+            return false;
+        };
+        let Some(out) = target.color[row][column..].first_chunk_mut::<STAGED>() else {
+            return false;
+        };
+        let draw = &draws[span.object];
+        let (material, colored) = (&draw.material, draw.has_colors());
+        let face = face(span.object);
+        stats.texture_samples +=
+            span.light_run(lights, material, colored, draw.texture, counts, face, &run.b, out);
+        true
     };
     for &(c, t) in bin {
         let chunk = &chunks[c as usize];
@@ -148,12 +177,24 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
         };
         runs.clear();
         let (covered, passed) = match simple {
-            Simple::No => {
-                cover::<STAGED>(&triangle.edges, rect, triangle.z, &simple, target, &mut runs)
-            }
-            _ => {
-                cover::<SIMPLE>(&triangle.edges, rect, triangle.z, &simple, target, &mut Vec::new())
-            }
+            Simple::No => cover::<STAGED>(
+                &triangle.edges,
+                rect,
+                triangle.z,
+                &simple,
+                target,
+                &mut runs,
+                Kernels::Best,
+            ),
+            _ => cover::<SIMPLE>(
+                &triangle.edges,
+                rect,
+                triangle.z,
+                &simple,
+                target,
+                &mut Vec::new(),
+                Kernels::Best,
+            ),
         };
         stats.fragments += covered;
         stats.depth_rejects += covered - passed;
@@ -165,6 +206,9 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
                 // flushing each time the span fills (a whole run inside a large triangle is one
                 // span when it comes to an empty one).
                 register!();
+                if light_run(span, target, &mut counts, &mut stats, run) {
+                    continue;
+                }
                 let mut left = run.passed;
                 while left != 0 {
                     left = span.push_run((row as u32, column as u32), &run.b, left);

@@ -186,8 +186,7 @@ impl PhongSpan {
     /// the texture applied (when the object has one), clamped again, as the fragment stage does
     /// — through `write(row, column, colour)`, in order. `face(face)` is a face's normal.
     /// Empties the span; the triangle being drawn stays registered, as the next span's first.
-    /// Gives the texture samples
-    /// taken.
+    /// Gives the texture samples taken.
     #[allow(clippy::too_many_arguments)]
     pub(crate) fn flush(
         &mut self,
@@ -203,6 +202,85 @@ impl PhongSpan {
         if len == 0 {
             return 0;
         }
+        self.gather(colored);
+        let stage = Stage { lights, material, colored };
+        let (triangles, slot, at) = (&self.triangles, &self.slot, &self.at);
+        light(
+            &stage,
+            &self.b,
+            len,
+            &self.gathered,
+            &mut self.points,
+            counts,
+            texture,
+            |i| &triangles[usize::from(slot[i])],
+            &face,
+            |i, c| write(at[i].0, at[i].1, c),
+        );
+        self.len = 0;
+        // The triangle being drawn stays, as the next span's first: its fragments go on.
+        match self.current {
+            Some(k) => {
+                let k = usize::from(k);
+                self.triangles[0] = self.triangles[k];
+                self.count = 1;
+                self.current = Some(0);
+                if k != 0 {
+                    self.gathered_slot_0 = false;
+                }
+            }
+            None => self.count = 0,
+        }
+        if texture.is_some() { len as u64 } else { 0 }
+    }
+
+    /// Whether the span holds no other triangle's fragments than the current one's (then a
+    /// whole run of it may be lit at once, [`PhongSpan::light_run`]).
+    #[inline]
+    pub(crate) fn only_current(&self) -> bool {
+        self.count == 1 && self.current == Some(0)
+    }
+
+    /// Lights a whole run of [`LANES`] fragments of the current triangle at once, without
+    /// queueing it, when [`PhongSpan::only_current`] (the waiting fragments are then the same
+    /// triangle's, on other pixels, so the order of the writes does not matter): screen-space
+    /// barycentrics `b`, colours into `out` as [`PhongSpan::flush`] makes them. The waiting
+    /// fragments stay. Gives the texture samples taken.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn light_run(
+        &mut self,
+        lights: &SpanLights,
+        material: &Material,
+        colored: bool,
+        texture: Option<Texturing<'_>>,
+        counts: &mut LightCounts,
+        face: impl Fn(u32) -> Vec3,
+        b: &V3,
+        out: &mut [Rgb; LANES],
+    ) -> u64 {
+        debug_assert!(self.only_current());
+        self.gather(colored);
+        let stage = Stage { lights, material, colored };
+        let triangle = &self.triangles[0];
+        light(
+            &stage,
+            b,
+            LANES,
+            &self.gathered,
+            &mut self.points,
+            counts,
+            texture,
+            |_| triangle,
+            &face,
+            |i, c| out[i] = c,
+        );
+        if texture.is_some() { LANES as u64 } else { 0 }
+    }
+
+    /// The lanes' triangles' attributes into `gathered`: slot 0's in every lane where it is the
+    /// only triangle (kept from the last time while it stays so), else each lane's own.
+    #[inline(always)]
+    fn gather(&mut self, colored: bool) {
         let g = &mut self.gathered;
         if self.count == 1 {
             // One triangle (the common case for large ones): its attributes in every lane, as
@@ -237,46 +315,48 @@ impl PhongSpan {
                 g.certified[i] = t.unit.is_some();
             }
         }
-        let mut b = V3::default();
-        let points = &mut self.points;
-        points.len = len;
-        let mut lit = V3::default();
-        let (triangles, slot) = (&self.triangles, &self.slot);
-        let mut face = |i: usize| face(triangles[usize::from(slot[i])].face);
-        let stage = Stage { lights, material, colored };
-        shade_fragments(&stage, &self.b, g, &mut b, points, &mut face, &mut lit, counts);
-        // `lit` is clamped already (`shade_fragments`).
-        match texture {
-            None => {
-                for i in 0..len {
-                    write(self.at[i].0, self.at[i].1, lit.get(i));
-                }
-            }
-            Some(t) => {
-                for i in 0..len {
-                    // Shifted by the triangle's origin (an integer under repeat): small numbers.
-                    let uv = &self.triangles[usize::from(self.slot[i])].uv;
-                    let bi = b.get(i);
-                    let uv = bi.x * uv[0] + bi.y * uv[1] + bi.z * uv[2];
-                    let color = t.env.apply(lit.get(i), t.texture.sample(uv, t.sampler));
-                    write(self.at[i].0, self.at[i].1, saturate(color));
-                }
+    }
+}
+
+/// Lights the first `len` lanes at screen-space barycentrics `screen` (their triangles'
+/// attributes `gathered`, lane `i`'s triangle `triangle(i)`) and gives each its final colour
+/// through `write(lane, colour)`: the lit colour clamped, the texture applied (when there is
+/// one), clamped again, as the fragment stage does. `face(face)` is a face's normal.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn light<'t>(
+    stage: &Stage<'_>,
+    screen: &V3,
+    len: usize,
+    gathered: &Gathered,
+    points: &mut Points,
+    counts: &mut LightCounts,
+    texture: Option<Texturing<'_>>,
+    triangle: impl Fn(usize) -> &'t Triangle,
+    face: impl Fn(u32) -> Vec3,
+    mut write: impl FnMut(usize, Rgb),
+) {
+    let mut b = V3::default();
+    points.len = len;
+    let mut lit = V3::default();
+    let mut face = |i: usize| face(triangle(i).face);
+    shade_fragments(stage, screen, gathered, &mut b, points, &mut face, &mut lit, counts);
+    // `lit` is clamped already (`shade_fragments`).
+    match texture {
+        None => {
+            for i in 0..len {
+                write(i, lit.get(i));
             }
         }
-        self.len = 0;
-        // The triangle being drawn stays, as the next span's first: its fragments go on.
-        match self.current {
-            Some(k) => {
-                let k = usize::from(k);
-                self.triangles[0] = self.triangles[k];
-                self.count = 1;
-                self.current = Some(0);
-                if k != 0 {
-                    self.gathered_slot_0 = false;
-                }
+        Some(t) => {
+            for i in 0..len {
+                // Shifted by the triangle's origin (an integer under repeat): small numbers.
+                let uv = &triangle(i).uv;
+                let bi = b.get(i);
+                let uv = bi.x * uv[0] + bi.y * uv[1] + bi.z * uv[2];
+                let color = t.env.apply(lit.get(i), t.texture.sample(uv, t.sampler));
+                write(i, saturate(color));
             }
-            None => self.count = 0,
         }
-        if texture.is_some() { len as u64 } else { 0 }
     }
 }
