@@ -40,6 +40,8 @@ use cg_core::math::{DIRECT_UNIT_MIN, try_normalize, try_unit_and_length_f64};
 use multiversion::multiversion;
 
 mod queue;
+#[cfg(target_arch = "x86_64")]
+mod v3;
 #[cfg(test)]
 use queue::certified;
 pub(crate) use queue::{PhongSpan, Texturing, Triangle};
@@ -582,6 +584,15 @@ fn shade_fragments<'a>(
     lit: &mut V3,
     counts: &mut LightCounts,
 ) {
+    // The course scene's case (certified normals, plain lights, no specular term) in registers.
+    #[cfg(target_arch = "x86_64")]
+    if stage.lights.plain
+        && stage.material.ks == Rgb::ZERO
+        && let Some(simd) = pulp::x86::V3::try_new()
+        && simd.vectorize(|| v3::shade_plain(simd, stage, screen, g, points.len, b, lit, counts))
+    {
+        return;
+    }
     let keep = fragments(screen, g, stage.colored, b, points);
     for i in 0..points.len {
         if !keep[i] {

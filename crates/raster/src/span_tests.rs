@@ -21,7 +21,7 @@ impl Cases {
         (self.0 >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0
     }
 
-    fn vec(&mut self) -> Vec3 {
+    pub(crate) fn vec(&mut self) -> Vec3 {
         Vec3::new(self.next(), self.next(), self.next())
     }
 }

@@ -43,7 +43,7 @@ pub(super) fn runs_of<const W: usize>(
     target: &mut Target<'_>,
     runs: &mut Vec<Run<W>>,
 ) -> (u64, u64) {
-    const { assert!(W % G == 0 && W / G <= MAX_GROUPS) };
+    const { assert!(W.is_multiple_of(G) && W / G <= MAX_GROUPS) };
     let groups = W / G;
     let avx = simd.avx;
     let inv_area = avx._mm256_set1_ps(1.0 / edges.area2 as f32);
@@ -214,7 +214,9 @@ impl Depth {
     }
 }
 
-/// Where a run's fragments go once they passed.
+/// Where a run's fragments go once they passed (made once per triangle, on the stack: its
+/// size does not matter).
+#[allow(clippy::large_enum_variant)]
 enum Shader {
     /// Their colours, made here ([`Simple::Flat`], [`Simple::Gouraud`]).
     Colors(Colors),
@@ -246,7 +248,9 @@ impl Shader {
     }
 }
 
-/// Flat's or Gouraud's colours of eight lanes, channel by channel.
+/// Flat's or Gouraud's colours of eight lanes, channel by channel (in registers: its size
+/// does not matter).
+#[allow(clippy::large_enum_variant)]
 enum Colors {
     Flat([__m256; 3]),
     Gouraud { inv_w: [__m256; 3], colors: [[__m256; 3]; 3] },
