@@ -101,6 +101,8 @@ mod error;
 mod lighting;
 mod output;
 mod pipeline;
+#[cfg(target_arch = "x86_64")]
+mod simd;
 mod span;
 mod vertex_lanes;
 

@@ -571,7 +571,8 @@ pub(crate) struct Stage<'a> {
 /// The fragment stage of a span and its light model, compiled as one (the points stay where the
 /// light model reads them at the width they were written): [`fragments`], the face normal
 /// `face(lane)` where a lane's normals cancel, then [`light`] into `lit`, clamped to `[0, 1]` as
-/// [`saturate`] clamps.
+/// [`saturate`] clamps. Where `aos` is given for a whole span and the kernel in registers
+/// (`span/v3.rs`) lit it, the colours are in `aos` instead, interleaved, and this gives `true`.
 #[multiversion(targets("x86_64+avx2+fma"))]
 #[allow(clippy::too_many_arguments)]
 fn shade_fragments<'a>(
@@ -582,16 +583,22 @@ fn shade_fragments<'a>(
     points: &mut Points,
     face: &mut dyn FnMut(usize) -> Vec3,
     lit: &mut V3,
+    #[cfg_attr(not(target_arch = "x86_64"), allow(unused_variables))] aos: Option<
+        &mut [Rgb; LANES],
+    >,
     counts: &mut LightCounts,
-) {
+) -> bool {
     // The course scene's case (certified normals, plain lights, no specular term) in registers.
     #[cfg(target_arch = "x86_64")]
     if stage.lights.plain
         && stage.material.ks == Rgb::ZERO
         && let Some(simd) = pulp::x86::V3::try_new()
-        && simd.vectorize(|| v3::shade_plain(simd, stage, screen, g, points.len, b, lit, counts))
     {
-        return;
+        let aos = aos.filter(|_| points.len == LANES);
+        let interleaved = aos.is_some();
+        if v3::shade_plain_in(simd, stage, screen, g, points.len, b, lit, aos, counts) {
+            return interleaved;
+        }
     }
     let keep = fragments(screen, g, stage.colored, b, points);
     for i in 0..points.len {
@@ -604,6 +611,7 @@ fn shade_fragments<'a>(
     for channel in [&mut lit.x, &mut lit.y, &mut lit.z] {
         channel.iter_mut().for_each(|x| *x = clamp_channel(*x));
     }
+    false
 }
 
 /// The fragment stage before lighting, for each lane: perspective-correct barycentrics `b` from

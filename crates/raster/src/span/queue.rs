@@ -215,7 +215,7 @@ impl PhongSpan {
             texture,
             |i| &triangles[usize::from(slot[i])],
             &face,
-            |i, c| write(at[i].0, at[i].1, c),
+            Out::Lanes(|i, c| write(at[i].0, at[i].1, c)),
         );
         self.len = 0;
         // The triangle being drawn stays, as the next span's first: its fragments go on.
@@ -272,7 +272,7 @@ impl PhongSpan {
             texture,
             |_| triangle,
             &face,
-            |i, c| out[i] = c,
+            Out::<fn(usize, Rgb)>::Run(out),
         );
         if texture.is_some() { LANES as u64 } else { 0 }
     }
@@ -318,13 +318,21 @@ impl PhongSpan {
     }
 }
 
+/// Where [`light`] puts the colours.
+enum Out<'a, W: FnMut(usize, Rgb)> {
+    /// Lane by lane, `write(lane, colour)`.
+    Lanes(W),
+    /// A whole span's, in order.
+    Run(&'a mut [Rgb; LANES]),
+}
+
 /// Lights the first `len` lanes at screen-space barycentrics `screen` (their triangles'
 /// attributes `gathered`, lane `i`'s triangle `triangle(i)`) and gives each its final colour
-/// through `write(lane, colour)`: the lit colour clamped, the texture applied (when there is
-/// one), clamped again, as the fragment stage does. `face(face)` is a face's normal.
+/// through `out`: the lit colour clamped, the texture applied (when there is one), clamped
+/// again, as the fragment stage does. `face(face)` is a face's normal.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn light<'t>(
+fn light<'t, W: FnMut(usize, Rgb)>(
     stage: &Stage<'_>,
     screen: &V3,
     len: usize,
@@ -334,13 +342,24 @@ fn light<'t>(
     texture: Option<Texturing<'_>>,
     triangle: impl Fn(usize) -> &'t Triangle,
     face: impl Fn(u32) -> Vec3,
-    mut write: impl FnMut(usize, Rgb),
+    mut out: Out<'_, W>,
 ) {
     let mut b = V3::default();
     points.len = len;
     let mut lit = V3::default();
     let mut face = |i: usize| face(triangle(i).face);
-    shade_fragments(stage, screen, gathered, &mut b, points, &mut face, &mut lit, counts);
+    // Without a texture, a whole span's colours may come interleaved from the kernel.
+    let aos = match &mut out {
+        Out::Run(run) if texture.is_none() => Some(&mut **run),
+        _ => None,
+    };
+    if shade_fragments(stage, screen, gathered, &mut b, points, &mut face, &mut lit, aos, counts) {
+        return;
+    }
+    let mut write = |i: usize, c: Rgb| match &mut out {
+        Out::Lanes(write) => write(i, c),
+        Out::Run(run) => run[i] = c,
+    };
     // `lit` is clamped already (`shade_fragments`).
     match texture {
         None => {

@@ -15,11 +15,13 @@
 
 use std::arch::x86_64::{__m256, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ};
 
+use cg_core::Rgb;
 use cg_core::light::LightCounts;
 use cg_core::math::DIRECT_UNIT_MIN;
 use pulp::x86::V3;
 
 use super::{Gathered, LANES, Stage, V3 as Lanes3};
+use crate::simd::interleave;
 
 /// Lanes in a group: one AVX register of f32.
 const G: usize = 8;
@@ -43,10 +45,48 @@ fn channel(v: &Lanes3, c: usize) -> &[f32; LANES] {
     }
 }
 
+/// [`shade_plain`] in pulp's AVX2 context. Not a closure: a closure's call is not always
+/// inlined there, and the intrinsics in it would then be calls.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+pub(super) fn shade_plain_in(
+    simd: V3,
+    stage: &Stage<'_>,
+    screen: &Lanes3,
+    g: &Gathered,
+    len: usize,
+    b: &mut Lanes3,
+    lit: &mut Lanes3,
+    aos: Option<&mut [Rgb; LANES]>,
+    counts: &mut LightCounts,
+) -> bool {
+    struct Call<'a, 'b, 'c> {
+        simd: V3,
+        stage: &'a Stage<'c>,
+        screen: &'a Lanes3,
+        g: &'a Gathered,
+        len: usize,
+        b: &'b mut Lanes3,
+        lit: &'b mut Lanes3,
+        aos: Option<&'b mut [Rgb; LANES]>,
+        counts: &'b mut LightCounts,
+    }
+    impl pulp::NullaryFnOnce for Call<'_, '_, '_> {
+        type Output = bool;
+        #[inline(always)]
+        fn call(self) -> bool {
+            let Call { simd, stage, screen, g, len, b, lit, aos, counts } = self;
+            shade_plain(simd, stage, screen, g, len, b, lit, aos, counts)
+        }
+    }
+    simd.vectorize(Call { simd, stage, screen, g, len, b, lit, aos, counts })
+}
+
 /// [`super::shade_fragments`] for the span's first `len` lanes at screen-space barycentrics
 /// `screen` (their triangles' attributes `g`), where the stage's lights are plain and its
 /// material has no specular term: the perspective-correct barycentrics into `b`, the clamped
-/// colours into `lit`, the light model's counts into `counts`. `false`, with nothing written,
+/// colours into `aos` as `Rgb`s where it is given (a whole span, `len` = [`LANES`]) or else
+/// into `lit`, the light model's counts into `counts`. `false`, with nothing written,
 /// where a lane needs the compiler's copy.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
@@ -58,6 +98,7 @@ pub(super) fn shade_plain(
     len: usize,
     b: &mut Lanes3,
     lit: &mut Lanes3,
+    aos: Option<&mut [Rgb; LANES]>,
     counts: &mut LightCounts,
 ) -> bool {
     // No closure here calls an intrinsic: a closure is a function of its own, compiled without
@@ -256,9 +297,12 @@ pub(super) fn shade_plain(
             }
         }
     }
-    // `e + ambient + diffuse + 0.0`, clamped as `clamp_channel`.
+    // `e + ambient + diffuse + 0.0`, clamped as `clamp_channel`: into `aos` as interleaved
+    // colours where it is given, else into `lit`.
     let e = material.emission.to_array();
+    let mut aos = aos.map(bytemuck::cast_mut::<[Rgb; LANES], [[[f32; G]; 3]; GROUPS]>);
     for h in 0..GROUPS {
+        let mut rgb = [zero; 3];
         for c in 0..3 {
             let v = avx._mm256_add_ps(
                 avx._mm256_add_ps(
@@ -267,14 +311,16 @@ pub(super) fn shade_plain(
                 ),
                 zero,
             );
-            let v = avx
+            rgb[c] = avx
                 ._mm256_and_ps(avx._mm256_cmp_ps::<_CMP_GT_OQ>(v, zero), avx._mm256_min_ps(v, one));
-            let lanes = match c {
-                0 => &mut lit.x,
-                1 => &mut lit.y,
-                _ => &mut lit.z,
-            };
-            lanes.as_chunks_mut::<G>().0[h] = bytemuck::cast(v);
+        }
+        match &mut aos {
+            Some(aos) => aos[h] = bytemuck::cast(interleave(simd, rgb)),
+            None => {
+                for (lanes, c) in [(&mut lit.x, 0), (&mut lit.y, 1), (&mut lit.z, 2)] {
+                    lanes.as_chunks_mut::<G>().0[h] = bytemuck::cast(rgb[c]);
+                }
+            }
         }
         for (lanes, c) in [(&mut b.x, 0), (&mut b.y, 1), (&mut b.z, 2)] {
             lanes.as_chunks_mut::<G>().0[h] = bytemuck::cast(w[h][c]);
@@ -399,18 +445,32 @@ mod tests {
 
                         let (mut b, mut lit, mut counts) =
                             (Lanes3::default(), Lanes3::default(), LightCounts::default());
-                        let took = simd.vectorize(|| {
-                            shade_plain(
+                        let took = shade_plain_in(
+                            simd,
+                            &stage,
+                            &screen,
+                            &g,
+                            len,
+                            &mut b,
+                            &mut lit,
+                            None,
+                            &mut counts,
+                        );
+                        // A whole span, its colours interleaved.
+                        let mut aos = [Rgb::NAN; LANES];
+                        let (mut b_aos, mut unused) = (Lanes3::default(), Lanes3::default());
+                        let took_aos = len == LANES
+                            && shade_plain_in(
                                 simd,
                                 &stage,
                                 &screen,
                                 &g,
                                 len,
-                                &mut b,
-                                &mut lit,
-                                &mut counts,
-                            )
-                        });
+                                &mut b_aos,
+                                &mut unused,
+                                Some(&mut aos),
+                                &mut LightCounts::default(),
+                            );
                         let case = format!("{model:?}, colored {colored}, {len} lanes, {round}");
                         if !took {
                             refused += 1;
@@ -423,6 +483,13 @@ mod tests {
                         assert!(!must_refuse, "{case}: taken");
                         assert_eq!(bits(&b, len), bits(&expected_b, len), "{case}: b");
                         assert_eq!(bits(&lit, len), bits(&expected, len), "{case}: colours");
+                        assert_eq!(took_aos, len == LANES, "{case}: interleaved");
+                        if took_aos {
+                            let aos: Vec<_> =
+                                aos.iter().map(|c| c.to_array().map(f32::to_bits)).collect();
+                            assert_eq!(aos, bits(&expected, len), "{case}: interleaved colours");
+                            assert_eq!(bits(&unused, LANES), bits(&Lanes3::default(), LANES));
+                        }
                         assert_eq!(counts, expected_counts, "{case}: the counts");
                     }
                 }
