@@ -552,7 +552,6 @@ fn select(take: &[bool; LANES], from: &V3, into: &mut V3) {
 struct Gathered {
     inv_w: [Lanes; 3],
     p: [V3; 3],
-    n: [V3; 3],
     color: [V3; 3],
     /// Each lane's triangle's [`Triangle::unit`], where it has one.
     unit: V3,
@@ -569,8 +568,8 @@ pub(crate) struct Stage<'a> {
 }
 
 /// The fragment stage of a span and its light model, compiled as one (the points stay where the
-/// light model reads them at the width they were written): [`fragments`], the face normal
-/// `face(lane)` where a lane's normals cancel, then [`light`] into `lit`, clamped to `[0, 1]` as
+/// light model reads them at the width they were written): [`fragments`] (with the corners'
+/// normals from `normals`), the face normal `face(lane)` where a lane's normals cancel, then [`light`] into `lit`, clamped to `[0, 1]` as
 /// [`saturate`] clamps. Where `aos` is given for a whole span and the kernel in registers
 /// (`span/v3.rs`) lit it, the colours are in `aos` instead, interleaved, and this gives `true`.
 #[multiversion(targets("x86_64+avx2+fma"))]
@@ -582,6 +581,7 @@ fn shade_fragments<'a>(
     b: &mut V3,
     points: &mut Points,
     face: &mut dyn FnMut(usize) -> Vec3,
+    normals: &mut dyn FnMut(&mut [V3; 3]),
     lit: &mut V3,
     #[cfg_attr(not(target_arch = "x86_64"), allow(unused_variables))] aos: Option<
         &mut [Rgb; LANES],
@@ -600,7 +600,7 @@ fn shade_fragments<'a>(
             return interleaved;
         }
     }
-    let keep = fragments(screen, g, stage.colored, b, points);
+    let keep = fragments(screen, g, stage.colored, b, points, normals);
     for i in 0..points.len {
         if !keep[i] {
             points.n.set(i, face(i));
@@ -617,6 +617,8 @@ fn shade_fragments<'a>(
 /// The fragment stage before lighting, for each lane: perspective-correct barycentrics `b` from
 /// the screen-space `screen`, then the position, the colour (when `colored`) and the normal
 /// interpolated into `points`. Gives which normals are usable ([`interpolate_normals`]).
+/// `normals(n)` puts each lane's corners' normals into `n`, where they are needed (not for a
+/// span of certified triangles: gathering them is a good part of a mixed span's cost).
 #[inline(always)]
 fn fragments(
     screen: &V3,
@@ -624,6 +626,7 @@ fn fragments(
     colored: bool,
     b: &mut V3,
     points: &mut Points,
+    normals: &mut dyn FnMut(&mut [V3; 3]),
 ) -> [bool; LANES] {
     perspective(screen, &g.inv_w, b);
     interpolate(b, &g.p, &mut points.p);
@@ -645,11 +648,13 @@ fn fragments(
     }
     // `|nᵢ|` in f64 (`DVec3::length`), here rather than per triangle: a dense mesh's triangle
     // has one or two fragments, and sixteen lanes take the square roots four at a time.
+    let mut corners = [V3::default(); 3];
+    normals(&mut corners);
     let lengths: [Lanes64; 3] = std::array::from_fn(|k| {
-        let n = &g.n[k];
+        let n = &corners[k];
         std::array::from_fn(|i| length64(f64::from(n.x[i]), f64::from(n.y[i]), f64::from(n.z[i])))
     });
-    interpolate_normals(b, &g.n, &lengths, &mut points.n)
+    interpolate_normals(b, &corners, &lengths, &mut points.n)
 }
 
 /// Perspective-correct barycentrics from screen-space ones, as the fragment stage computes them:

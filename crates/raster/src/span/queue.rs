@@ -291,7 +291,6 @@ impl PhongSpan {
                 for k in 0..3 {
                     g.inv_w[k] = [t.inv_w[k]; LANES];
                     g.p[k] = V3::splat(t.p[k]);
-                    g.n[k] = V3::splat(t.n[k]);
                     if colored {
                         g.color[k] = V3::splat(t.color[k]);
                     }
@@ -306,7 +305,6 @@ impl PhongSpan {
                 for k in 0..3 {
                     g.inv_w[k][i] = t.inv_w[k];
                     g.p[k].set(i, t.p[k]);
-                    g.n[k].set(i, t.n[k]);
                     if colored {
                         g.color[k].set(i, t.color[k]);
                     }
@@ -348,12 +346,24 @@ fn light<'t, W: FnMut(usize, Rgb)>(
     points.len = len;
     let mut lit = V3::default();
     let mut face = |i: usize| face(triangle(i).face);
+    // Each lane's corners' normals, where the fragment stage needs them.
+    let mut normals = |n: &mut [V3; 3]| {
+        for i in 0..LANES {
+            let t = triangle(i);
+            for k in 0..3 {
+                n[k].set(i, t.n[k]);
+            }
+        }
+    };
     // Without a texture, a whole span's colours may come interleaved from the kernel.
     let aos = match &mut out {
         Out::Run(run) if texture.is_none() => Some(&mut **run),
         _ => None,
     };
-    if shade_fragments(stage, screen, gathered, &mut b, points, &mut face, &mut lit, aos, counts) {
+    let (face, normals) = (&mut face, &mut normals);
+    if shade_fragments(
+        stage, screen, gathered, &mut b, points, face, normals, &mut lit, aos, counts,
+    ) {
         return;
     }
     let mut write = |i: usize, c: Rgb| match &mut out {

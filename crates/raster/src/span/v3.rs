@@ -391,13 +391,14 @@ mod tests {
                 for len in [LANES, 5, 1] {
                     for round in 0..60 {
                         let mut g = Gathered::default();
+                        let mut normals = [Lanes3::default(); 3];
                         for i in 0..LANES {
                             let n = cases.vec() * 3.0;
                             let unit = certified(n);
                             for k in 0..3 {
                                 g.inv_w[k][i] = (cases.next() + 1.0) + 0.1;
                                 g.p[k].set(i, cases.vec() * 3.0);
-                                g.n[k].set(i, n);
+                                normals[k].set(i, n);
                                 g.color[k].set(i, cases.vec().abs());
                             }
                             g.unit.set(i, unit.unwrap_or_default());
@@ -430,7 +431,15 @@ mod tests {
                         // The compiler's copy.
                         let mut points = Points { len, ..Points::default() };
                         let mut expected_b = Lanes3::default();
-                        let keep = fragments(&screen, &g, colored, &mut expected_b, &mut points);
+                        let mut corners = |c: &mut [Lanes3; 3]| *c = normals;
+                        let keep = fragments(
+                            &screen,
+                            &g,
+                            colored,
+                            &mut expected_b,
+                            &mut points,
+                            &mut corners,
+                        );
                         for i in 0..len {
                             if !keep[i] {
                                 points.n.set(i, Vec3::Z);
