@@ -188,6 +188,7 @@ impl PhongSpan {
     /// Empties the span; the triangle being drawn stays registered, as the next span's first.
     /// Gives the texture samples taken.
     #[allow(clippy::too_many_arguments)]
+    #[inline]
     pub(crate) fn flush(
         &mut self,
         lights: &SpanLights,
