@@ -44,7 +44,12 @@
 //! spans of sixteen points — Gouraud's vertices, Phong's fragments in the order they pass the
 //! depth test — in structure-of-arrays form (`src/span.rs`, a copy compiled for AVX2 chosen at
 //! run time), operation for operation what [`cg_core::light::shade`] computes: the same bits
-//! (`tests/spans.rs` compares with the point-by-point path on every kind of light). A
+//! (`tests/spans.rs` compares with the point-by-point path on every kind of light). Where the
+//! CPU has AVX2, two loops are written out in its registers (with pulp, as cg-core's normals):
+//! rasterizing and depth-testing a run of eight or sixteen pixels with flat and Gouraud colours
+//! (`src/pipeline/cover/v3.rs`), and a span of certified triangles lit by plain lights, the
+//! course scene's case (`src/span/v3.rs`); each is tested bit for bit against the compiler's
+//! copy of the same loop. A
 //! [`Prepared`] scene keeps its working memory between frames, and
 //! [`Prepared::draw_into`] redraws into the last frame's buffers.
 //!
