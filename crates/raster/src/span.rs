@@ -596,7 +596,9 @@ fn shade_fragments<'a>(
     {
         let aos = aos.filter(|_| points.len == LANES);
         let interleaved = aos.is_some();
-        if v3::shade_plain_in(simd, stage, screen, g, points.len, b, lit, aos, counts) {
+        let len = points.len;
+        let plain = v3::Plain { stage, screen, g, len, b, lit, aos, counts };
+        if plain.shade(simd) {
             return interleaved;
         }
     }

@@ -51,24 +51,23 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
             world_face_normal(draw, face.map(|i| &vertices[i as usize]))
         }
     };
+    // What lights an object's spans, and its texture.
+    let stage = |lights, object: usize| {
+        let draw = &draws[object];
+        let stage = span::Stage { lights, material: &draw.material, colored: draw.has_colors() };
+        (stage, draw.texture)
+    };
     let flush = |span: &mut PhongSpan,
                  target: &mut Target<'_>,
                  counts: &mut LightCounts,
                  stats: &mut Stats| {
         // An empty span may name no object: a scene without any, or a tile none reaches.
         if let Some(lights) = spans.filter(|_| !span.is_empty()) {
-            let draw = &draws[span.object];
-            let (material, colored) = (&draw.material, draw.has_colors());
+            let (stage, texture) = stage(lights, span.object);
             let face = face(span.object);
-            stats.texture_samples += span.flush(
-                lights,
-                material,
-                colored,
-                draw.texture,
-                counts,
-                face,
-                |row, column, c| target.color[row as usize][column as usize] = c,
-            );
+            stats.texture_samples += span.flush(&stage, texture, counts, face, |row, column, c| {
+                target.color[row as usize][column as usize] = c;
+            });
         }
     };
     // A whole run of the current triangle, lit at once where the span holds no other
@@ -86,11 +85,9 @@ pub(super) fn draw_tile<L: Lighting + ?Sized>(
         let Some(out) = target.color[row][column..].first_chunk_mut::<STAGED>() else {
             return false;
         };
-        let draw = &draws[span.object];
-        let (material, colored) = (&draw.material, draw.has_colors());
+        let (stage, texture) = stage(lights, span.object);
         let face = face(span.object);
-        stats.texture_samples +=
-            span.light_run(lights, material, colored, draw.texture, counts, face, &run.b, out);
+        stats.texture_samples += span.light_run(&stage, texture, counts, face, &run.b, out);
         true
     };
     for &(c, t) in bin {

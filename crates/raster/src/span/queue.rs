@@ -187,13 +187,10 @@ impl PhongSpan {
     /// — through `write(row, column, colour)`, in order. `face(face)` is a face's normal.
     /// Empties the span; the triangle being drawn stays registered, as the next span's first.
     /// Gives the texture samples taken.
-    #[allow(clippy::too_many_arguments)]
     #[inline]
     pub(crate) fn flush(
         &mut self,
-        lights: &SpanLights,
-        material: &Material,
-        colored: bool,
+        stage: &Stage<'_>,
         texture: Option<Texturing<'_>>,
         counts: &mut LightCounts,
         face: impl Fn(u32) -> Vec3,
@@ -203,11 +200,10 @@ impl PhongSpan {
         if len == 0 {
             return 0;
         }
-        self.gather(colored);
-        let stage = Stage { lights, material, colored };
+        self.gather(stage.colored);
         let (triangles, slot, at) = (&self.triangles, &self.slot, &self.at);
         light(
-            &stage,
+            stage,
             &self.b,
             len,
             &self.gathered,
@@ -247,12 +243,9 @@ impl PhongSpan {
     /// triangle's, on other pixels, so the order of the writes does not matter): screen-space
     /// barycentrics `b`, colours into `out` as [`PhongSpan::flush`] makes them. The waiting
     /// fragments stay. Gives the texture samples taken.
-    #[allow(clippy::too_many_arguments)]
     pub(crate) fn light_run(
         &mut self,
-        lights: &SpanLights,
-        material: &Material,
-        colored: bool,
+        stage: &Stage<'_>,
         texture: Option<Texturing<'_>>,
         counts: &mut LightCounts,
         face: impl Fn(u32) -> Vec3,
@@ -260,11 +253,10 @@ impl PhongSpan {
         out: &mut [Rgb; LANES],
     ) -> u64 {
         debug_assert!(self.only_current());
-        self.gather(colored);
-        let stage = Stage { lights, material, colored };
+        self.gather(stage.colored);
         let triangle = &self.triangles[0];
         light(
-            &stage,
+            stage,
             b,
             LANES,
             &self.gathered,

@@ -45,62 +45,44 @@ fn channel(v: &Lanes3, c: usize) -> &[f32; LANES] {
     }
 }
 
-/// [`shade_plain`] in pulp's AVX2 context. Not a closure: a closure's call is not always
-/// inlined there, and the intrinsics in it would then be calls.
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-pub(super) fn shade_plain_in(
-    simd: V3,
-    stage: &Stage<'_>,
-    screen: &Lanes3,
-    g: &Gathered,
-    len: usize,
-    b: &mut Lanes3,
-    lit: &mut Lanes3,
-    aos: Option<&mut [Rgb; LANES]>,
-    counts: &mut LightCounts,
-) -> bool {
-    struct Call<'a, 'b, 'c> {
-        simd: V3,
-        stage: &'a Stage<'c>,
-        screen: &'a Lanes3,
-        g: &'a Gathered,
-        len: usize,
-        b: &'b mut Lanes3,
-        lit: &'b mut Lanes3,
-        aos: Option<&'b mut [Rgb; LANES]>,
-        counts: &'b mut LightCounts,
-    }
-    impl pulp::NullaryFnOnce for Call<'_, '_, '_> {
-        type Output = bool;
-        #[inline(always)]
-        fn call(self) -> bool {
-            let Call { simd, stage, screen, g, len, b, lit, aos, counts } = self;
-            shade_plain(simd, stage, screen, g, len, b, lit, aos, counts)
-        }
-    }
-    simd.vectorize(Call { simd, stage, screen, g, len, b, lit, aos, counts })
+/// A span for [`Plain::shade`]: [`super::shade_fragments`]'s first `len` lanes at screen-space
+/// barycentrics `screen` (their triangles' attributes `g`), where the stage's lights are plain
+/// and its material has no specular term. The perspective-correct barycentrics go into `b`, the
+/// clamped colours into `aos` as `Rgb`s where it is given (a whole span, `len` = [`LANES`]) or
+/// else into `lit`, the light model's counts into `counts`.
+pub(super) struct Plain<'a, 'b, 'c> {
+    pub(super) stage: &'a Stage<'c>,
+    pub(super) screen: &'a Lanes3,
+    pub(super) g: &'a Gathered,
+    pub(super) len: usize,
+    pub(super) b: &'b mut Lanes3,
+    pub(super) lit: &'b mut Lanes3,
+    pub(super) aos: Option<&'b mut [Rgb; LANES]>,
+    pub(super) counts: &'b mut LightCounts,
 }
 
-/// [`super::shade_fragments`] for the span's first `len` lanes at screen-space barycentrics
-/// `screen` (their triangles' attributes `g`), where the stage's lights are plain and its
-/// material has no specular term: the perspective-correct barycentrics into `b`, the clamped
-/// colours into `aos` as `Rgb`s where it is given (a whole span, `len` = [`LANES`]) or else
-/// into `lit`, the light model's counts into `counts`. `false`, with nothing written,
-/// where a lane needs the compiler's copy.
+impl Plain<'_, '_, '_> {
+    /// Lights the span in pulp's AVX2 context (not through a closure: a closure's call is not
+    /// always inlined there, and the intrinsics in it would then be calls). `false`, with
+    /// nothing written, where a lane needs the compiler's copy.
+    #[inline(always)]
+    pub(super) fn shade(self, simd: V3) -> bool {
+        struct Call<'a, 'b, 'c>(V3, Plain<'a, 'b, 'c>);
+        impl pulp::NullaryFnOnce for Call<'_, '_, '_> {
+            type Output = bool;
+            #[inline(always)]
+            fn call(self) -> bool {
+                shade_plain(self.0, self.1)
+            }
+        }
+        simd.vectorize(Call(simd, self))
+    }
+}
+
+/// [`Plain::shade`] in the AVX2 context.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
-pub(super) fn shade_plain(
-    simd: V3,
-    stage: &Stage<'_>,
-    screen: &Lanes3,
-    g: &Gathered,
-    len: usize,
-    b: &mut Lanes3,
-    lit: &mut Lanes3,
-    aos: Option<&mut [Rgb; LANES]>,
-    counts: &mut LightCounts,
-) -> bool {
+fn shade_plain(simd: V3, plain: Plain<'_, '_, '_>) -> bool {
+    let Plain { stage, screen, g, len, b, lit, aos, counts } = plain;
     // No closure here calls an intrinsic: a closure is a function of its own, compiled without
     // AVX, so the intrinsics in it would not be inlined.
     let avx = simd.avx;
@@ -454,32 +436,32 @@ mod tests {
 
                         let (mut b, mut lit, mut counts) =
                             (Lanes3::default(), Lanes3::default(), LightCounts::default());
-                        let took = shade_plain_in(
-                            simd,
-                            &stage,
-                            &screen,
-                            &g,
+                        let took = Plain {
+                            stage: &stage,
+                            screen: &screen,
+                            g: &g,
                             len,
-                            &mut b,
-                            &mut lit,
-                            None,
-                            &mut counts,
-                        );
+                            b: &mut b,
+                            lit: &mut lit,
+                            aos: None,
+                            counts: &mut counts,
+                        }
+                        .shade(simd);
                         // A whole span, its colours interleaved.
                         let mut aos = [Rgb::NAN; LANES];
                         let (mut b_aos, mut unused) = (Lanes3::default(), Lanes3::default());
                         let took_aos = len == LANES
-                            && shade_plain_in(
-                                simd,
-                                &stage,
-                                &screen,
-                                &g,
+                            && Plain {
+                                stage: &stage,
+                                screen: &screen,
+                                g: &g,
                                 len,
-                                &mut b_aos,
-                                &mut unused,
-                                Some(&mut aos),
-                                &mut LightCounts::default(),
-                            );
+                                b: &mut b_aos,
+                                lit: &mut unused,
+                                aos: Some(&mut aos),
+                                counts: &mut LightCounts::default(),
+                            }
+                            .shade(simd);
                         let case = format!("{model:?}, colored {colored}, {len} lanes, {round}");
                         if !took {
                             refused += 1;
