@@ -569,9 +569,10 @@ pub(crate) struct Stage<'a> {
 
 /// The fragment stage of a span and its light model, compiled as one (the points stay where the
 /// light model reads them at the width they were written): [`fragments`] (with the corners'
-/// normals from `normals`), the face normal `face(lane)` where a lane's normals cancel, then [`light`] into `lit`, clamped to `[0, 1]` as
-/// [`saturate`] clamps. Where `aos` is given for a whole span and the kernel in registers
-/// (`span/v3.rs`) lit it, the colours are in `aos` instead, interleaved, and this gives `true`.
+/// normals from `normals`), the face normal `face(lane)` where a lane's normals cancel, then
+/// [`light`] into `lit`, clamped to `[0, 1]` as [`saturate`] clamps. Where `aos` is given for a
+/// whole span and the kernel in registers (`span/v3.rs`) lit it, the colours are in `aos`
+/// instead, interleaved, and this gives `true`.
 #[multiversion(targets("x86_64+avx2+fma"))]
 #[allow(clippy::too_many_arguments)]
 fn shade_fragments<'a>(

@@ -123,7 +123,7 @@ pub(super) fn cover<'t, const W: usize>(
     if kernels == Kernels::Best
         && let Some(simd) = pulp::x86::V3::try_new()
     {
-        return simd.vectorize(|| v3::runs_of(simd, edges, area, z, simple, target, runs));
+        return v3::Runs { edges, area, z, simple, target, runs }.cover(simd);
     }
     runs_of::<f64, W>(edges, area, z, simple, target, runs)
 }

@@ -32,18 +32,40 @@ const MAX_GROUPS: usize = Mask::BITS as usize / G;
 /// A group's lanes in a [`Mask`].
 const GROUP: Mask = (1 << G) - 1;
 
-/// [`super::runs_of`] with f64 edge functions, `W` pixels at a time (a multiple of eight, at
-/// most 32) in groups of eight.
+/// A triangle's runs for [`Runs::cover`]: [`super::runs_of`]'s arguments, the f64 edge
+/// functions of `edges` over the pixels `area` (`[x0, y0, x1, y1]`, inclusive), `W` pixels at a
+/// time (a multiple of eight, at most 32) in groups of eight.
+pub(super) struct Runs<'a, 'b, 't, const W: usize> {
+    pub(super) edges: &'a Edges,
+    pub(super) area: [u32; 4],
+    pub(super) z: Vec3,
+    pub(super) simple: &'a Simple,
+    pub(super) target: &'b mut Target<'t>,
+    pub(super) runs: &'b mut Vec<Run<W>>,
+}
+
+impl<const W: usize> Runs<'_, '_, '_, W> {
+    /// Rasterizes, depth-tests and shades the runs in pulp's AVX2 context (not through a
+    /// closure: a closure's call is not always inlined there, and the intrinsics in it would
+    /// then be calls). Gives the covered and passed pixel counts.
+    #[inline(always)]
+    pub(super) fn cover(self, simd: V3) -> (u64, u64) {
+        struct Call<'a, 'b, 't, const W: usize>(V3, Runs<'a, 'b, 't, W>);
+        impl<const W: usize> pulp::NullaryFnOnce for Call<'_, '_, '_, W> {
+            type Output = (u64, u64);
+            #[inline(always)]
+            fn call(self) -> (u64, u64) {
+                runs_of(self.0, self.1)
+            }
+        }
+        simd.vectorize(Call(simd, self))
+    }
+}
+
+/// [`Runs::cover`] in the AVX2 context.
 #[inline(always)]
-pub(super) fn runs_of<const W: usize>(
-    simd: V3,
-    edges: &Edges,
-    [x0, y0, x1, y1]: [u32; 4],
-    z: Vec3,
-    simple: &Simple,
-    target: &mut Target<'_>,
-    runs: &mut Vec<Run<W>>,
-) -> (u64, u64) {
+fn runs_of<const W: usize>(simd: V3, runs: Runs<'_, '_, '_, W>) -> (u64, u64) {
+    let Runs { edges, area: [x0, y0, x1, y1], z, simple, target, runs } = runs;
     const { assert!(W.is_multiple_of(G) && W / G <= MAX_GROUPS) };
     let groups = W / G;
     let avx = simd.avx;
@@ -68,7 +90,7 @@ pub(super) fn runs_of<const W: usize>(
     let (step_y, bias, mut row) = (step_y_f, bias_v, row_f);
     let zero = avx._mm256_setzero_pd();
     let depth = Depth::new(simd, z);
-    let shader = Shader::new(simd, simple);
+    let shader = Shader::new(simple);
     let (mut covered_count, mut passed_count) = (0u64, 0u64);
     for py in y0..=y1 {
         let mut e0 = row;
@@ -227,8 +249,7 @@ enum Shader {
 
 impl Shader {
     #[inline(always)]
-    fn new(simd: V3, simple: &Simple) -> Shader {
-        let avx = simd.avx;
+    fn new(simple: &Simple) -> Shader {
         let splat3 =
             |c: [f32; 3]| -> [__m256; 3] { bytemuck::cast([[c[0]; G], [c[1]; G], [c[2]; G]]) };
         match simple {
@@ -241,10 +262,7 @@ impl Shader {
                     splat3(colors[2].to_array()),
                 ],
             }),
-            Simple::No => {
-                let _ = avx;
-                Shader::Staged
-            }
+            Simple::No => Shader::Staged,
         }
     }
 }
