@@ -49,6 +49,7 @@ pub use limits::{
     LimitError, MAX_COORDINATE, MAX_DEPTH_RATIO, MAX_FOVY_DEG, MAX_POINT_LIGHTS, MAX_SCENE_FACES,
     MIN_FOVY_DEG, MIN_NEAR, Matrix, WorldPoint,
 };
+pub use obj::polygon::{MAX_CONCAVE_CORNERS, PolygonProblem};
 pub use shape::{MAX_SHAPE_FACES, ShapeSpec};
 
 /// The version of the scene format this crate reads (`format = 1`).
@@ -103,7 +104,9 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
 }
 
 /// Reads a Wavefront OBJ model into one mesh: every group (`o`, `g`) merged, polygons split into
-/// triangles (fans), points and 2-point lines dropped. Vertex `Vi` is the file's `v` line `i + 1`
+/// triangles (the fan from the first corner where it covers the polygon exactly, as tobj and
+/// OpenGL split a convex one; ear clipping in the polygon's plane where the fan would fold a
+/// concave one), points and 2-point lines dropped. Vertex `Vi` is the file's `v` line `i + 1`
 /// when each position is used with one `vt`/`vn` pair and every `v` line is used (as in the
 /// course's models); otherwise vertices follow the file's `v` order, with a position used with
 /// several `vt`/`vn` pairs split into several vertices. Normals (unit length after loading) and
@@ -114,7 +117,9 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
 /// The file cannot be read; a line is malformed (a word that is not a number, too few
 /// coordinates, a face corner that is not `v`, `v/vt`, `v//vn` or `v/vt/vn`, a position at
 /// infinity); a face index is 0 or refers to an element not defined on the lines before the face
-/// — each of these naming the line and column; the file has no faces; some corners have `vn` or
+/// — each of these naming the line and column; a face of four or more corners that crosses itself,
+/// or is concave with more than [`MAX_CONCAVE_CORNERS`] corners (naming its line and column); the
+/// file has no faces; some corners have `vn` or
 /// `vt` and others do not; or a normal or texture coordinate is not usable (zero or non-finite).
 pub fn load_obj(path: &Path) -> Result<Mesh, SceneError> {
     parse_obj(&read_text(path, None, false)?, path)

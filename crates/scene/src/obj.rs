@@ -10,6 +10,8 @@ use cg_core::mesh::Mesh;
 
 use crate::error::{ErrorKind, Position, SceneError};
 
+pub(crate) mod polygon;
+
 /// Reads an OBJ model from text; `path` names it in errors. See [`crate::load_obj`].
 pub(crate) fn parse_obj(text: &str, path: &Path) -> Result<Mesh, SceneError> {
     let error = |position: Option<Position>, kind| SceneError {
@@ -22,7 +24,8 @@ pub(crate) fn parse_obj(text: &str, path: &Path) -> Result<Mesh, SceneError> {
     let file_order = scan(text).map_err(|(position, kind)| error(Some(position), kind))?;
 
     let options = tobj::LoadOptions {
-        triangulate: true,
+        // Polygons are split here (`polygon`): tobj's fan folds a concave one.
+        triangulate: false,
         single_index: true,
         ignore_points: true,
         ignore_lines: true,
@@ -49,6 +52,10 @@ pub(crate) fn parse_obj(text: &str, path: &Path) -> Result<Mesh, SceneError> {
     let mut normals = Attribute::new("vn");
     let mut uvs = Attribute::new("vt");
     let mut faces = Vec::new();
+    let mut splitter = polygon::Splitter::default();
+    // Faces of four or more corners so far, to find the line of one that cannot be split.
+    let mut polygons = 0;
+    let mut corners = Vec::new();
     for model in &models {
         let m = &model.mesh;
         let base = positions.len() as u32;
@@ -56,7 +63,31 @@ pub(crate) fn parse_obj(text: &str, path: &Path) -> Result<Mesh, SceneError> {
         positions.extend(m.positions.chunks_exact(3).map(|p| Vec3::new(p[0], p[1], p[2])));
         normals.add(count, m.normals.chunks_exact(3).map(|n| Vec3::new(n[0], n[1], n[2])));
         uvs.add(count, m.texcoords.chunks_exact(2).map(|t| Vec2::new(t[0], t[1])));
-        faces.extend(m.indices.chunks_exact(3).map(|f| [f[0] + base, f[1] + base, f[2] + base]));
+        if m.face_arities.is_empty() {
+            // Triangles only.
+            faces
+                .extend(m.indices.chunks_exact(3).map(|f| [f[0] + base, f[1] + base, f[2] + base]));
+            continue;
+        }
+        let mut start = 0;
+        for &arity in &m.face_arities {
+            let face = &m.indices[start..start + arity as usize];
+            start += arity as usize;
+            corners.clear();
+            corners.extend(face.iter().map(|&i| i + base));
+            match corners[..] {
+                // Points and lines are left out (`ignore_points`, `ignore_lines`).
+                [] | [_] | [_, _] => {}
+                [a, b, c] => faces.push([a, b, c]),
+                _ => {
+                    splitter.split(&corners, &positions, &mut faces).map_err(|problem| {
+                        let kind = ErrorKind::ObjPolygon { corners: corners.len(), problem };
+                        error(polygon_line(text, polygons), kind)
+                    })?;
+                    polygons += 1;
+                }
+            }
+        }
     }
     if faces.is_empty() {
         return Err(error(None, ErrorKind::ObjNoFaces));
@@ -128,6 +159,25 @@ fn in_file_order(mesh: Mesh, file_order: &[usize]) -> Mesh {
     out
 }
 
+/// Where the face of four or more corners number `index` (0-based, in file order) begins: its
+/// `f`. Looked for again only when such a face is an error.
+fn polygon_line(text: &str, index: usize) -> Option<Position> {
+    text.lines()
+        .enumerate()
+        .filter_map(|(line_index, line)| {
+            let mut words = line.split_whitespace();
+            let keyword = words.next().filter(|&k| k == "f")?;
+            (words.count() >= 4).then(|| place(line_index, line, keyword))
+        })
+        .nth(index)
+}
+
+/// The place of `word`, a slice of the line `line_index` (0-based) `line`.
+fn place(line_index: usize, line: &str, word: &str) -> Position {
+    let offset = word.as_ptr() as usize - line.as_ptr() as usize;
+    Position { line: line_index + 1, column: 1 + line[..offset].chars().count() }
+}
+
 /// The elements that face corners refer to, in the order `v/vt/vn`.
 const ELEMENTS: [&str; 3] = ["v", "vt", "vn"];
 
@@ -156,11 +206,7 @@ fn scan(text: &str) -> Result<Vec<usize>, ScanError> {
     let mut seen: HashSet<[usize; 3]> = HashSet::new();
     let mut group_has_faces = false;
     for (line_index, line) in text.lines().enumerate() {
-        // The place of `word`, a slice of `line`.
-        let at = |word: &str| {
-            let offset = word.as_ptr() as usize - line.as_ptr() as usize;
-            Position { line: line_index + 1, column: 1 + line[..offset].chars().count() }
-        };
+        let at = |word: &str| place(line_index, line, word);
         let mut words = line.split_whitespace();
         let Some(keyword) = words.next() else { continue };
         match keyword {

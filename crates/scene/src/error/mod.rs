@@ -246,6 +246,14 @@ pub enum ErrorKind {
         /// The homogeneous w (1 when not written).
         w: f32,
     },
+    /// A face of four or more corners of an OBJ file that cannot be split into triangles (its
+    /// first corner's fan would fold it, and it crosses itself, or has too many corners).
+    ObjPolygon {
+        /// How many corners the face has.
+        corners: usize,
+        /// What is wrong with it.
+        problem: crate::PolygonProblem,
+    },
     /// The OBJ file has no faces.
     ObjNoFaces,
     /// Some face corners of an OBJ file have normals (or texture coordinates) and others do not.

@@ -12,7 +12,7 @@ use cg_core::transform::TransformError;
 use super::*;
 
 /// How many variants [`ErrorKind`] has; [`kind_index`] numbers them `0..KINDS`.
-const KINDS: usize = 45;
+const KINDS: usize = 46;
 
 /// A number for each variant of [`ErrorKind`] (the match is exhaustive, so a new variant does not
 /// compile until it is numbered here, and [`every_kind_has_a_sample`] fails until it has a
@@ -64,6 +64,7 @@ fn kind_index(kind: &ErrorKind) -> usize {
         ErrorKind::InnerConeNeedsLectureModel => 42,
         ErrorKind::WeldRemovesEveryFace { .. } => 43,
         ErrorKind::DuplicateKey { .. } => 44,
+        ErrorKind::ObjPolygon { .. } => 45,
     }
 }
 
@@ -268,6 +269,12 @@ fn samples() -> Vec<ErrorKind> {
         ErrorKind::ObjCorner { corner: "1/2/3/4".into() },
         ErrorKind::ObjPosition { position: [f32::INFINITY; 3], w: 0.0 },
         ErrorKind::ObjPosition { position: [1.0, f32::NAN, 0.0], w: 1.0 },
+        ErrorKind::ObjPolygon { corners: 4, problem: crate::PolygonProblem::Crosses },
+        ErrorKind::ObjPolygon {
+            corners: 2000,
+            problem: crate::PolygonProblem::TooManyCorners { max: 1024 },
+        },
+        ErrorKind::ObjPolygon { corners: 7, problem: crate::PolygonProblem::NotCovered },
         ErrorKind::ObjNoFaces,
         ErrorKind::ObjPartial { element: "vn" },
         ErrorKind::ObjBadNormal { vertex: 4 },

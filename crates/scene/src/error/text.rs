@@ -304,6 +304,32 @@ impl ErrorKind {
                 format!("頂点の座標 ({x}, {y}, {z}) が有限ではありません（無限大または NaN）"),
                 format!("the vertex position ({x}, {y}, {z}) is not finite (infinite or NaN)"),
             ),
+            ErrorKind::ObjPolygon { corners, problem } => match problem {
+                crate::PolygonProblem::Crosses => Text::new(
+                    format!(
+                        "この面（角 {corners} 個）は辺どうしが交わるか接していて、内側が決まらないため三角形に分割できません。交わらない多角形か三角形に分けて書いてください"
+                    ),
+                    format!(
+                        "this face of {corners} corners crosses or touches itself, so it has no inside to split into triangles: write it as polygons that do not cross, or as triangles"
+                    ),
+                ),
+                crate::PolygonProblem::TooManyCorners { max } => Text::new(
+                    format!(
+                        "この面は角が {corners} 個の凹多角形です。凹多角形の面の角は {max} 個までです。小さな面に分けて書いてください"
+                    ),
+                    format!(
+                        "this face is concave with {corners} corners; a concave face may have at most {max}: split it into smaller faces"
+                    ),
+                ),
+                crate::PolygonProblem::NotCovered => Text::new(
+                    format!(
+                        "この面（角 {corners} 個）は、ぴったり覆う三角形に分割できませんでした（角や辺がほとんど重なっています）。三角形に分けて書いてください"
+                    ),
+                    format!(
+                        "this face of {corners} corners could not be split into triangles that cover it exactly (corners or edges almost on top of each other): write it as triangles"
+                    ),
+                ),
+            },
             ErrorKind::ObjNoFaces => {
                 t("OBJ ファイルに面（f 行）がありません", "the OBJ file has no faces (`f` lines)")
             }
