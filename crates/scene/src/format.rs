@@ -452,8 +452,16 @@ fn read_limits(t: &Table<'_>) -> Result<CameraLimits, SceneError> {
 fn read_projection(t: &Table<'_>, aspect: f32) -> Result<Projection, SceneError> {
     t.only(&["fovy_deg", "near", "far"])?;
     let d = COURSE_PROJECTION;
-    let fovy_deg =
-        t.or("fovy_deg", d.fovy_deg, |v| v.f32(Rule::Inside { min: 0.0, max: 180.0 }))?;
+    // One rule for every value, with its reason: the limit of every scene (gluPerspective
+    // itself takes (0, 180)).
+    let fovy_deg = t.or("fovy_deg", d.fovy_deg, |v| {
+        let fovy_deg = v.f32(Rule::Finite)?;
+        if (crate::MIN_FOVY_DEG..=crate::MAX_FOVY_DEG).contains(&fovy_deg) {
+            Ok(fovy_deg)
+        } else {
+            Err(v.error(ErrorKind::Limit(crate::LimitError::FieldOfView { fovy_deg })))
+        }
+    })?;
     let near = t.or("near", d.near, |v| v.f32(Rule::Positive))?;
     let far = t.or("far", d.far, |v| {
         let far = v.f32(Rule::Positive)?;
@@ -475,7 +483,7 @@ fn read_projection(t: &Table<'_>, aspect: f32) -> Result<Projection, SceneError>
             TransformError::NearPlane { .. } => "near",
             TransformError::FarPlane { .. } | TransformError::DepthRange { .. } => "far",
             // The field of view, or an aspect ratio that only an extreme field of view makes
-            // overflow.
+            // overflow (neither within [MIN_FOVY_DEG, MAX_FOVY_DEG], which is checked above).
             _ => "fovy_deg",
         };
         match t.get(key) {

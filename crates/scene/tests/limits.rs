@@ -9,7 +9,7 @@ use std::path::Path;
 use cg_core::lang::Lang;
 use cg_scene::{
     ErrorKind, LimitError, MAX_COORDINATE, MAX_DEPTH_RATIO, MAX_FOVY_DEG, MAX_POINT_LIGHTS,
-    MAX_SCENE_FACES, MIN_FOVY_DEG, MIN_NEAR, Matrix, SceneError, WorldPoint,
+    MAX_SCENE_FACES, MIN_FOVY_DEG, MIN_NEAR, Matrix, Rule, SceneError, WorldPoint,
 };
 
 const FILE: &str = "fixtures/limits.toml";
@@ -267,6 +267,19 @@ fn a_field_of_view_out_of_range_is_an_error_at_fovy() {
     }
     let text = "format = 1\n[projection]\nfovy_deg = 0.99\n";
     assert_at(&error(text), text, 3, "0.99", "projection.fovy_deg");
+    // One rule, whatever the value: those gluPerspective cannot take (0, 180, beyond) are told
+    // the same range as those no renderer draws alike, not a wider one first.
+    for fovy in ["0", "-3", "180", "200", "179.01"] {
+        let text = format!("format = 1\n[projection]\nfovy_deg = {fovy}\n");
+        let e = error(&text);
+        assert_at(&e, &text, 3, fovy, "projection.fovy_deg");
+        assert!(matches!(limit(&e), LimitError::FieldOfView { .. }), "{e}");
+        assert!(e.to_string().contains(&format!("fovy_deg = {fovy} must be in [1, 179]")), "{e}");
+        assert!(e.describe(Lang::Ja).contains("1 以上 179 以下"), "{e}");
+    }
+    // A value that is no number at all is told so.
+    let text = "format = 1\n[projection]\nfovy_deg = nan\n";
+    assert!(matches!(*error(text).kind, ErrorKind::BadValue { rule: Rule::Finite, .. }));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -159,8 +159,8 @@ fn check_camera(camera: &Camera, root: &Table<'_>) -> Result<(), SceneError> {
     Ok(())
 }
 
-/// The field of view, the near plane and the depth ratio within their limits, and the
-/// projection times the view invertible in f32.
+/// The near plane and the depth ratio within their limits, and the projection times the view
+/// invertible in f32 (the field of view is checked where it is read: `format::read_projection`).
 fn check_projection(scene: &Scene, root: &Table<'_>) -> Result<(), SceneError> {
     let t = table(root, "projection");
     let get = |key: &str| t.as_ref().and_then(|t| t.get(key));
@@ -168,9 +168,6 @@ fn check_projection(scene: &Scene, root: &Table<'_>) -> Result<(), SceneError> {
         error_at(root, keys.iter().map(|k| get(k)), t.as_ref(), ErrorKind::Limit(e))
     };
     let p = scene.projection;
-    if !(MIN_FOVY_DEG..=MAX_FOVY_DEG).contains(&p.fovy_deg) {
-        return Err(fail(&["fovy_deg"], LimitError::FieldOfView { fovy_deg: p.fovy_deg }));
-    }
     if p.near < MIN_NEAR {
         return Err(fail(&["near"], LimitError::Near { near: p.near }));
     }
