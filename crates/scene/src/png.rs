@@ -19,10 +19,16 @@ pub(crate) fn decode_png(bytes: &[u8], path: &Path) -> Result<Texture, SceneErro
         return Err(error(ErrorKind::NotPng));
     }
     // The size from the header, before anything is decoded or allocated.
-    if let Some((width, height)) = header_size(bytes)
-        && (width > crate::MAX_TEXTURE_SIDE || height > crate::MAX_TEXTURE_SIDE)
-    {
-        return Err(error(ErrorKind::PngTooLarge { width, height }));
+    if let Some((width, height)) = header_size(bytes) {
+        if width > crate::MAX_TEXTURE_SIDE || height > crate::MAX_TEXTURE_SIDE {
+            return Err(error(ErrorKind::PngTooLarge { width, height }));
+        }
+        // A side of 0 is not allowed by PNG itself (the decoder calls it a format error): said
+        // as what it is, an image without texels.
+        if width == 0 || height == 0 {
+            let e = cg_core::texture::TextureError::ZeroSize { width, height };
+            return Err(error(ErrorKind::Texture(e)));
+        }
     }
     let mut reader = image::ImageReader::with_format(Cursor::new(bytes), image::ImageFormat::Png);
     let mut limits = image::Limits::default();

@@ -613,6 +613,22 @@ fn a_png_too_large_to_decode_says_so_with_its_size() {
 }
 
 #[test]
+fn a_png_of_no_pixels_says_so_not_corrupt() {
+    use cg_core::texture::TextureError;
+    for (width, height) in [(0, 0), (0, 4), (4, 0)] {
+        let e =
+            cg_scene::decode_png(&png_claiming(width, height), Path::new("empty.png")).unwrap_err();
+        assert_eq!(*e.kind, ErrorKind::Texture(TextureError::ZeroSize { width, height }));
+        assert!(e.to_string().starts_with("empty.png: "), "{e}");
+        assert!(!e.to_string().contains("corrupt"), "{e}");
+        assert!(e.describe(Lang::Ja).contains(&format!("{width}×{height}")), "{e}");
+    }
+    // Premise: the decoder alone calls it a format error ("Invalid image dimensions").
+    let raw = image::load_from_memory_with_format(&png_claiming(0, 0), image::ImageFormat::Png);
+    assert!(matches!(raw, Err(image::ImageError::Decoding(_))), "{raw:?}");
+}
+
+#[test]
 fn rendered_images_are_saved_as_png_top_row_first() {
     use cg_core::image::Image;
     let dir = folder("save_png");
