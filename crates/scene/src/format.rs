@@ -170,7 +170,7 @@ pub(crate) fn read_root(
 
     let default_name =
         src.file.file_stem().map_or_else(String::new, |s| s.to_string_lossy().into());
-    let name = root.or("name", default_name, |v| v.str().map(str::to_owned))?;
+    let name = root.or("name", default_name, read_name)?;
 
     let (width, height, clear_color) = match root.get("window") {
         Some(v) => read_window(&v.table()?)?,
@@ -655,8 +655,28 @@ fn read_attenuation(v: &Value<'_>) -> Result<Attenuation, SceneError> {
 fn read_materials(t: &Table<'_>) -> Result<HashMap<String, Material>, SceneError> {
     t.entries()
         .into_iter()
-        .map(|(name, v)| Ok((name.to_owned(), read_material(&v.table()?)?)))
+        .map(|(name, v)| {
+            let chars = name.chars().count();
+            if chars > MAX_NAME_CHARS {
+                return Err(v.error(ErrorKind::NameTooLong { chars, max: MAX_NAME_CHARS }));
+            }
+            Ok((name.to_owned(), read_material(&v.table()?)?))
+        })
         .collect()
+}
+
+/// The most characters a name (the scene's, an object's, a material's) may have: names label
+/// tables, windows and messages.
+pub const MAX_NAME_CHARS: usize = 64;
+
+/// A name: a string of at most [`MAX_NAME_CHARS`] characters.
+fn read_name(v: &Value<'_>) -> Result<String, SceneError> {
+    let name = v.str()?;
+    let chars = name.chars().count();
+    if chars > MAX_NAME_CHARS {
+        return Err(v.error(ErrorKind::NameTooLong { chars, max: MAX_NAME_CHARS }));
+    }
+    Ok(name.to_owned())
 }
 
 /// A material table: `color`, or `ka`/`kd`, and the rest; [`Material::default`] elsewhere.
@@ -709,7 +729,7 @@ fn read_object(
     base: &Path,
 ) -> Result<ObjectSpec, SceneError> {
     t.only(&["name", "shape", "mesh", "weld", "normals", "material", "transform", "texture"])?;
-    let name = t.require("name")?.str()?.to_owned();
+    let name = read_name(&t.require("name")?)?;
     let geometry = match (t.get("shape"), t.get("mesh")) {
         (Some(_), Some(mesh)) => return Err(mesh.error(ErrorKind::ShapeAndMesh)),
         (None, None) => return Err(t.error(ErrorKind::NoGeometry)),

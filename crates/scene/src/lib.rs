@@ -45,6 +45,7 @@ use cg_core::scene::Scene;
 use cg_core::texture::Texture;
 
 pub use error::{ErrorKind, Expected, Found, Position, Rule, SceneError};
+pub use format::MAX_NAME_CHARS;
 pub use limits::{
     LimitError, MAX_COORDINATE, MAX_DEPTH_RATIO, MAX_FOVY_DEG, MAX_POINT_LIGHTS, MAX_SCENE_FACES,
     MIN_FOVY_DEG, MIN_NEAR, Matrix, WorldPoint,

@@ -723,3 +723,36 @@ fn a_huge_or_invisible_word_is_shown_short_and_visible() {
         assert!(ja.contains("<U+200B>") && !ja.contains('\u{200B}'), "{ja}");
     }
 }
+
+#[test]
+fn names_are_bounded_and_said_so_at_the_name() {
+    let max = cg_scene::MAX_NAME_CHARS;
+    let object = |name: &str| {
+        format!(
+            "format = 1\n[[objects]]\nname = \"{name}\"\nshape = {{ kind = \"lecture_pyramid\" }}\n"
+        )
+    };
+    // At the limit, in characters (not bytes): 64 kana are 192 bytes.
+    for name in ["a".repeat(max), "あ".repeat(max)] {
+        let scene = cg_scene::parse(&object(&name), Path::new(FILE)).unwrap();
+        assert_eq!(scene.objects[0].name, name);
+    }
+    let long = "b".repeat(max + 1);
+    let text = object(&long);
+    let e = error(&text);
+    assert_at(&e, &text, 3, "\"bbb", Some("objects[0].name"));
+    assert_eq!(*e.kind, ErrorKind::NameTooLong { chars: max + 1, max });
+    assert!(e.to_string().ends_with("a name of 65 characters is too long: a name has at most 64"));
+    // The scene's own name, and a material's (its key), however long: one short message.
+    let huge = "c".repeat(100_000);
+    let text = format!("format = 1\nname = \"{huge}\"\n");
+    let e = error(&text);
+    assert_at(&e, &text, 2, "\"ccc", Some("name"));
+    assert_eq!(*e.kind, ErrorKind::NameTooLong { chars: 100_000, max });
+    let text = format!("format = 1\n[materials.{huge}]\ncolor = [1, 1, 1]\n");
+    let e = error(&text);
+    assert_eq!(*e.kind, ErrorKind::NameTooLong { chars: 100_000, max });
+    assert_eq!(e.position.map(|p| p.line), Some(2), "{e}");
+    assert!(e.to_string().len() < 400, "{} bytes", e.to_string().len());
+    assert!(e.describe(Lang::Ja).len() < 600, "{} bytes", e.describe(Lang::Ja).len());
+}

@@ -172,6 +172,13 @@ pub enum ErrorKind {
         /// The closest defined name, when one is close.
         suggestion: Option<String>,
     },
+    /// A scene's, object's or material's name longer than [`crate::MAX_NAME_CHARS`].
+    NameTooLong {
+        /// How many characters it has.
+        chars: usize,
+        /// [`crate::MAX_NAME_CHARS`].
+        max: usize,
+    },
     /// Two objects have the same name.
     DuplicateName {
         /// The name.

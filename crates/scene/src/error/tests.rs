@@ -12,7 +12,7 @@ use cg_core::transform::TransformError;
 use super::*;
 
 /// How many variants [`ErrorKind`] has; [`kind_index`] numbers them `0..KINDS`.
-const KINDS: usize = 46;
+const KINDS: usize = 47;
 
 /// A number for each variant of [`ErrorKind`] (the match is exhaustive, so a new variant does not
 /// compile until it is numbered here, and [`every_kind_has_a_sample`] fails until it has a
@@ -65,6 +65,7 @@ fn kind_index(kind: &ErrorKind) -> usize {
         ErrorKind::WeldRemovesEveryFace { .. } => 43,
         ErrorKind::DuplicateKey { .. } => 44,
         ErrorKind::ObjPolygon { .. } => 45,
+        ErrorKind::NameTooLong { .. } => 46,
     }
 }
 
@@ -240,6 +241,7 @@ fn samples() -> Vec<ErrorKind> {
         ErrorKind::UnknownMaterial { name: "glas".into(), suggestion: Some("glass".into()) },
         ErrorKind::UnknownMaterial { name: "metal".into(), suggestion: None },
         ErrorKind::DuplicateName { name: "ball".into(), first_line: 12 },
+        ErrorKind::NameTooLong { chars: 100_000, max: 64 },
         ErrorKind::NeedsNormals,
         ErrorKind::NeedsUvs,
         ErrorKind::Shape(ShapeError {

@@ -330,6 +330,10 @@ impl ErrorKind {
                     ),
                 ),
             },
+            ErrorKind::NameTooLong { chars, max } => Text::new(
+                format!("名前が長すぎます（{chars} 文字）。名前は {max} 文字までです"),
+                format!("a name of {chars} characters is too long: a name has at most {max}"),
+            ),
             ErrorKind::ObjNoFaces => {
                 t("OBJ ファイルに面（f 行）がありません", "the OBJ file has no faces (`f` lines)")
             }
