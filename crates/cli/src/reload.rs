@@ -90,7 +90,13 @@ pub fn restart(program: &Path, args: &[String], resume: Resume, lang: Lang) -> R
     let mut command = Command::new(program);
     command.args(args).env(RESUME, resume.to_env());
     let failed = |e: std::io::Error| {
-        format!("{} {}: {e}", t("起動できません:", "cannot start").get(lang), program.display())
+        let why = cg_core::lang::Text::io(&e);
+        format!(
+            "{} {}: {}",
+            t("起動できません:", "cannot start").get(lang),
+            program.display(),
+            why.get(lang)
+        )
     };
     #[cfg(unix)]
     {

@@ -428,9 +428,10 @@ fn write(path: &Path, image: &Image, made_here: bool, lang: Lang) -> Result<(), 
         if made_here {
             std::fs::create_dir_all(dir).map_err(|e| {
                 format!(
-                    "{} {}: {e}",
+                    "{} {}: {}",
                     t("フォルダを作れません", "cannot create the folder").get(lang),
-                    dir.display()
+                    dir.display(),
+                    cg_core::lang::Text::io(&e).get(lang)
                 )
             })?;
         } else if !dir.is_dir() {

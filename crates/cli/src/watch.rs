@@ -183,8 +183,9 @@ fn check(args: &Args, lang: Lang, terminal: &Terminal) -> Vec<Check> {
         Ok(o) => o,
         Err(e) => {
             terminal.say(&format!(
-                "{}: {e}",
-                t("チェックを起動できません", "cannot start the checks").get(lang)
+                "{}: {}",
+                t("チェックを起動できません", "cannot start the checks").get(lang),
+                cg_core::lang::Text::io(&e).get(lang)
             ));
             return Vec::new();
         }

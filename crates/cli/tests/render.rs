@@ -193,6 +193,12 @@ fn mistakes_are_clear_errors() {
     assert_eq!(o.status.code(), Some(2));
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("taken.png") && !err.contains("panicked"), "{err}");
+    // In Japanese, the system's reason in Japanese too (not "Is a directory (os error 21)").
+    let taken = dir.join("taken.png");
+    let o =
+        cg_in(&root(), &["render", "-o", taken.to_str().unwrap(), "--width", "8", "--lang", "ja"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("フォルダです") && !err.contains("os error"), "{err}");
     // Only PNG is written: a .jpg name is refused, not filled with PNG bytes.
     let jpg = dir.join("picture.jpg");
     let o =
@@ -237,6 +243,10 @@ fn mistakes_are_clear_errors() {
     let o = cg_in(&root(), &["render", "no/such.toml", "--lang", "ja"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.starts_with("エラー") && err.contains("no/such.toml"), "{err}");
+    assert!(
+        err.contains("ファイルまたはフォルダがありません") && !err.contains("No such"),
+        "{err}"
+    );
     // The argument parser's own mistakes, in Japanese too (language from --lang or CG_LANG),
     // with clap's exit code; English stays clap's text.
     let o = cg_in(&root(), &["render", "--widht", "8", "--lang", "ja"]);

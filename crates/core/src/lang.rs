@@ -88,6 +88,35 @@ impl Text {
     pub fn is_empty(&self) -> bool {
         self.ja.is_empty() && self.en.is_empty()
     }
+
+    /// The operating system's reason for a failed file operation: in English its own words
+    /// (`No such file or directory (os error 2)`), in Japanese what happened, for the kinds a
+    /// student meets (no such file, no permission, a folder, a full disk, …); the system's words
+    /// follow only where the kind is none of those.
+    #[must_use]
+    pub fn io(e: &std::io::Error) -> Text {
+        use std::io::ErrorKind as K;
+        let ja = match e.kind() {
+            K::NotFound => "ファイルまたはフォルダがありません",
+            K::PermissionDenied => "権限がありません（読み書きが許可されていません）",
+            K::IsADirectory => "フォルダです（ファイルを指定してください）",
+            K::NotADirectory => "パスの途中にフォルダではないものがあります",
+            K::AlreadyExists => "同じ名前のものがすでにあります",
+            K::StorageFull | K::QuotaExceeded => "ディスクの空きがありません",
+            K::ReadOnlyFilesystem => "読み取り専用の場所です",
+            K::InvalidFilename => {
+                "ファイル名が正しくありません（長すぎるか、使えない文字があります）"
+            }
+            K::FileTooLarge => "ファイルが大きすぎます",
+            K::UnexpectedEof => "ファイルが途中で終わっています",
+            K::InvalidData => "中身を読み取れません",
+            K::ResourceBusy | K::ExecutableFileBusy => "ほかのプログラムが使用中です",
+            K::DirectoryNotEmpty => "フォルダが空ではありません",
+            K::CrossesDevices => "別のドライブへは移動できません",
+            _ => return Text::new(format!("OS のエラー: {e}"), e.to_string()),
+        };
+        Text::new(ja, e.to_string())
+    }
 }
 
 impl From<&str> for Text {

@@ -304,8 +304,8 @@ fn capitalized(s: &str) -> String {
 pub enum ReadError {
     /// The operating system refused (no such file, no permission, a folder).
     Io {
-        /// The operating system's reason.
-        reason: String,
+        /// The operating system's reason ([`Text::io`]).
+        reason: Text,
     },
     /// The file is larger than [`MAX_TEXT_BYTES`]; nothing past the limit was read.
     TooLarge {
@@ -342,9 +342,10 @@ impl ReadError {
     fn message(&self, option: bool) -> Text {
         const MIB: u64 = MAX_TEXT_BYTES >> 20;
         match self {
-            ReadError::Io { reason } => {
-                Text::new(format!("読めません ({reason})"), format!("cannot be read ({reason})"))
-            }
+            ReadError::Io { reason } => Text::new(
+                format!("読めません（{}）", reason.ja),
+                format!("cannot be read ({})", reason.en),
+            ),
             ReadError::TooLarge { size } => {
                 let (ja, en) = size.map_or_else(
                     || (String::new(), String::new()),
@@ -399,7 +400,7 @@ pub fn read(path: &Path, forced: Option<Encoding>) -> Result<(String, Encoding),
 /// # Errors
 /// The file cannot be opened or read ([`ReadError::Io`]), or is larger than `limit`.
 pub fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, ReadError> {
-    let io = |e: std::io::Error| ReadError::Io { reason: e.to_string() };
+    let io = |e: std::io::Error| ReadError::Io { reason: Text::io(&e) };
     let mut file = std::fs::File::open(path).map_err(io)?;
     let size = file.metadata().ok().filter(std::fs::Metadata::is_file).map(|m| m.len());
     if let Some(size) = size

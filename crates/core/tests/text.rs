@@ -58,7 +58,9 @@ fn a_missing_file_and_a_folder_are_io_errors() {
     let e = read(&dir.join("ない.md"), None).unwrap_err();
     assert!(matches!(e, ReadError::Io { .. }), "{e}");
     assert!(e.text().en.starts_with("cannot be read ("), "{e}");
-    assert!(e.text().ja.starts_with("読めません ("), "{}", e.text().ja);
+    assert!(e.text().ja.starts_with("読めません（"), "{}", e.text().ja);
+    // Said in Japanese, not in the system's English.
+    assert_eq!(e.text().ja, "読めません（ファイルまたはフォルダがありません）");
     assert!(matches!(read(&dir, None).unwrap_err(), ReadError::Io { .. }));
     let _ = std::fs::remove_dir_all(dir.parent().unwrap());
 }

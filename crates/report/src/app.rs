@@ -361,12 +361,29 @@ impl Written {
     }
 }
 
-fn write(folder: &Path, name: &str, bytes: &[u8], written: &mut Written) -> Result<(), String> {
+/// `folder` and the folders above it, made where missing; an error names it and says why in
+/// `lang`.
+fn make_folder(folder: &Path, lang: Lang) -> Result<(), String> {
+    std::fs::create_dir_all(folder).map_err(|e| io_error(folder, &e, lang))
+}
+
+/// A failed file operation on `path`, in `lang` ([`cg_core::lang::Text::io`]).
+fn io_error(path: &Path, e: &std::io::Error, lang: Lang) -> String {
+    format!("{}: {}", path.display(), cg_core::lang::Text::io(e).get(lang))
+}
+
+fn write(
+    folder: &Path,
+    name: &str,
+    bytes: &[u8],
+    written: &mut Written,
+    lang: Lang,
+) -> Result<(), String> {
     let path = folder.join(name);
     if let Some(dir) = path.parent() {
-        std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+        make_folder(dir, lang)?;
     }
-    std::fs::write(&path, bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+    std::fs::write(&path, bytes).map_err(|e| io_error(&path, &e, lang))?;
     written.files.push(name.to_owned());
     Ok(())
 }
@@ -407,7 +424,7 @@ fn render_all(
             .image;
         let name = files::render_png(id);
         let path = folder.join(&name);
-        std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
+        make_folder(folder, lang)?;
         cg_scene::save_png(&path, &image).map_err(|e| e.describe(lang))?;
         written.files.push(name);
         g.context.renders.push(id.to_owned());
@@ -436,12 +453,12 @@ fn write_derived(
     if let Some(p) = &g.derived.a1 {
         for view in VIEWS {
             let svg = figures::svg(&figures::layout(p, view), lang);
-            write(folder, files::view_svg(view), svg.as_bytes(), written)?;
+            write(folder, files::view_svg(view), svg.as_bytes(), written, lang)?;
         }
     }
     if let Some(tex) = &g.derived.a4 {
         let png = folder.join(files::TEXTURE_PNG);
-        std::fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
+        make_folder(folder, lang)?;
         let image = texture_image(&tex.image).ok_or_else(|| {
             t("用意された画像を書き出せません", "the prepared image cannot be written")
                 .get(lang)
@@ -450,7 +467,7 @@ fn write_derived(
         cg_scene::save_png(&png, &image).map_err(|e| e.describe(lang))?;
         written.files.push(files::TEXTURE_PNG.to_owned());
         let svg = figures::texture_svg(tex, files::TEXTURE_PNG, lang);
-        write(folder, files::TEXTURE_SVG, svg.as_bytes(), written)?;
+        write(folder, files::TEXTURE_SVG, svg.as_bytes(), written, lang)?;
     }
     let mut all = Values::new();
     for format in [Format::Markdown, Format::Latex] {
@@ -460,7 +477,7 @@ fn write_derived(
         };
         let values = fill::values(&g.derived, &g.context, lang, format);
         for (key, value) in &values {
-            write(folder, &format!("fragments/{key}.{ext}"), value.as_bytes(), written)?;
+            write(folder, &format!("fragments/{key}.{ext}"), value.as_bytes(), written, lang)?;
         }
         all.push((format, values));
     }
@@ -503,7 +520,7 @@ pub fn fill_to(args: &FillArgs, kit: &Kit, lang: Lang) -> Result<Written, String
         }
         let text =
             template::fill(template::template(lang, *format), values).map_err(|e| e.to_string())?;
-        write(&args.derive.output, name, text.as_bytes(), &mut written)?;
+        write(&args.derive.output, name, text.as_bytes(), &mut written, lang)?;
     }
     Ok(written)
 }

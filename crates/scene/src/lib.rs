@@ -151,7 +151,7 @@ pub fn load_texture(path: &Path) -> Result<Texture, SceneError> {
         cg_core::text::ReadError::Io { reason } => {
             SceneError::in_file(path, ErrorKind::Read { reason })
         }
-        e => SceneError::in_file(path, ErrorKind::Read { reason: e.to_string() }),
+        e => SceneError::in_file(path, ErrorKind::Read { reason: e.text() }),
     })?;
     decode_png(&bytes, path)
 }

@@ -55,18 +55,20 @@ pub(crate) fn decode_png(bytes: &[u8], path: &Path) -> Result<Texture, SceneErro
 
 /// The decoder's message as a sentence: the image crate writes a chunk's type as Rust's debug
 /// form (`ChunkType { type: IHDR, critical: true, private: false, reserved: false, safe: false }`),
-/// which becomes its four letters.
+/// which becomes its four letters. The type is the file's own four bytes, which may hold `}` or
+/// `,` themselves (`\u{1a}`): the form's end is found after its `critical` field.
 fn reason(e: &image::ImageError) -> String {
     let mut text = e.to_string();
-    while let Some(start) = text.find("ChunkType {") {
-        let end = text[start..].find('}').map_or(text.len(), |i| start + i + 1);
-        let name = text[start..end]
-            .split("type: ")
-            .nth(1)
-            .and_then(|rest| rest.split([',', ' ', '}']).next())
-            .unwrap_or("?")
-            .to_owned();
+    let mut from = 0;
+    while let Some(start) = text[from..].find("ChunkType { type: ").map(|i| from + i) {
+        let name_at = start + "ChunkType { type: ".len();
+        let Some(fields) = text[name_at..].find(", critical: ").map(|i| name_at + i) else {
+            break;
+        };
+        let end = text[fields..].find('}').map_or(text.len(), |i| fields + i + 1);
+        let name = text[name_at..fields].to_owned();
         text.replace_range(start..end, &name);
+        from = start + name.len();
     }
     cg_core::quote::visible(&text)
 }
@@ -100,7 +102,12 @@ pub(crate) fn save_png(path: &Path, image: &Image) -> Result<(), SceneError> {
         image.height,
         image::ExtendedColorType::Rgba8,
     )
-    .map_err(|e| SceneError::in_file(path, ErrorKind::Write { reason: e.to_string() }))?;
-    std::fs::write(path, &encoded)
-        .map_err(|e| SceneError::in_file(path, ErrorKind::Write { reason: e.to_string() }))
+    .map_err(|e| {
+        let reason =
+            cg_core::lang::Text::new(format!("PNG に変換できません（{e}）"), e.to_string());
+        SceneError::in_file(path, ErrorKind::Write { reason })
+    })?;
+    std::fs::write(path, &encoded).map_err(|e| {
+        SceneError::in_file(path, ErrorKind::Write { reason: cg_core::lang::Text::io(&e) })
+    })
 }

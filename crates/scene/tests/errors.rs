@@ -492,6 +492,10 @@ fn reading_a_missing_scene_file_names_it() {
         e.to_string().starts_with("fixtures/does-not-exist.toml: cannot read the file: "),
         "{e}"
     );
+    // In Japanese, what happened in Japanese, not the system's English words.
+    let ja = e.describe(Lang::Ja);
+    assert!(ja.ends_with("ファイルまたはフォルダがありません"), "{ja}");
+    assert!(!ja.contains("No such file"), "{ja}");
 }
 
 #[test]

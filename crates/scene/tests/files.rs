@@ -530,6 +530,18 @@ fn broken_images_say_so_and_name_the_file() {
     let message = e.to_string();
     assert!(matches!(*e.kind, ErrorKind::Png { .. }), "{message}");
     assert!(message.contains("IHDR") && !message.contains("ChunkType {"), "{message}");
+    // The decoder's words are English: the Japanese message says so.
+    let ja = e.describe(cg_core::lang::Lang::Ja);
+    assert!(ja.contains("画像デコーダの英語の説明: "), "{ja}");
+    // A chunk type of bytes that are no letters, one of them written `\u{1a}` with a `}` of its
+    // own (the signature where the first chunk belongs): still one name, the rest of the
+    // message kept.
+    let mut twice = bytes[..8].to_vec();
+    twice.extend(&bytes[..30]);
+    let e = cg_scene::decode_png(&twice, Path::new("twice.png")).unwrap_err();
+    let message = e.to_string();
+    assert!(!message.contains("critical") && !message.contains("ChunkType"), "{message}");
+    assert!(message.ends_with("chunk appeared before IHDR chunk"), "{message}");
 }
 
 #[test]

@@ -215,7 +215,7 @@ fn parses_the_command_line_names() {
 fn messages_are_one_line_in_each_language() {
     let at = Place { line: 3, column: 7, offset: 41 };
     let errors = [
-        ReadError::Io { reason: "No such file or directory (os error 2)".into() },
+        ReadError::Io { reason: Text::io(&std::io::Error::from(std::io::ErrorKind::NotFound)) },
         ReadError::TooLarge { size: Some(70_000_000) },
         ReadError::TooLarge { size: None },
         ReadError::Decode(DecodeError::Undetected { at, nearest: Encoding::Utf8 }),

@@ -13,7 +13,7 @@ mod tests;
 use std::fmt;
 use std::path::PathBuf;
 
-use cg_core::lang::Lang;
+use cg_core::lang::{Lang, Text};
 use cg_core::mesh::MeshError;
 use cg_core::shapes::ShapeError;
 use cg_core::texture::TextureError;
@@ -56,8 +56,8 @@ pub struct Position {
 pub enum ErrorKind {
     /// The file could not be read (missing, unreadable).
     Read {
-        /// The operating system's reason.
-        reason: String,
+        /// The operating system's reason ([`cg_core::lang::Text::io`]).
+        reason: Text,
     },
     /// The file is not text in an encoding the kit reads (UTF-8, UTF-16 with a BOM, Shift_JIS;
     /// see `cg_core::text`).
@@ -307,8 +307,8 @@ pub enum ErrorKind {
     Texture(TextureError),
     /// An image could not be written.
     Write {
-        /// The operating system's or the encoder's reason.
-        reason: String,
+        /// The operating system's ([`cg_core::lang::Text::io`]) or the encoder's reason.
+        reason: Text,
     },
 }
 

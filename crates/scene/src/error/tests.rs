@@ -204,7 +204,7 @@ fn all_obj_errors() -> Vec<tobj::LoadError> {
 /// ASCII, so that an English message has no Japanese at all.
 fn samples() -> Vec<ErrorKind> {
     let mut kinds = vec![
-        ErrorKind::Read { reason: "No such file or directory (os error 2)".into() },
+        ErrorKind::Read { reason: Text::io(&std::io::Error::from(std::io::ErrorKind::NotFound)) },
         ErrorKind::Encoding {
             why: cg_core::lang::Text::new(
                 "UTF-8 としても Shift_JIS としても読めません（1 行 3 列）",
@@ -304,7 +304,9 @@ fn samples() -> Vec<ErrorKind> {
         ErrorKind::Png { reason: "unexpected end of file".into() },
         ErrorKind::Texture(TextureError::ZeroSize { width: 0, height: 4 }),
         ErrorKind::Texture(TextureError::TexelCount { width: 2, height: 2, expected: 4, got: 3 }),
-        ErrorKind::Write { reason: "Permission denied (os error 13)".into() },
+        ErrorKind::Write {
+            reason: Text::io(&std::io::Error::from(std::io::ErrorKind::PermissionDenied)),
+        },
     ];
     kinds.extend(crate::limits::tests::samples().into_iter().map(ErrorKind::Limit));
     kinds

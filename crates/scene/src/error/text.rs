@@ -34,12 +34,12 @@ impl ErrorKind {
     pub fn text(&self) -> Text {
         match self {
             ErrorKind::Write { reason } => Text::new(
-                format!("ファイルに書き込めません: {reason}"),
-                format!("cannot write the file: {reason}"),
+                format!("ファイルに書き込めません: {}", reason.ja),
+                format!("cannot write the file: {}", reason.en),
             ),
             ErrorKind::Read { reason } => Text::new(
-                format!("ファイルを読めません: {reason}"),
-                format!("cannot read the file: {reason}"),
+                format!("ファイルを読めません: {}", reason.ja),
+                format!("cannot read the file: {}", reason.en),
             ),
             ErrorKind::Encoding { why } => Text::new(
                 format!("ファイルの文字コードを読み取れません: {}", why.ja),
@@ -390,7 +390,9 @@ impl ErrorKind {
                 )
             }
             ErrorKind::Png { reason } => Text::new(
-                format!("PNG 画像が壊れているか途中で切れています: {reason}"),
+                format!(
+                    "PNG 画像が壊れているか途中で切れています（画像デコーダの英語の説明: {reason}）"
+                ),
                 format!("corrupt or truncated PNG image: {reason}"),
             ),
             ErrorKind::Texture(e) => e.text(),
