@@ -476,7 +476,11 @@ fn run_checks(
     };
     let _ = std::fs::remove_dir_all(&slot.run);
     if let Err(e) = std::fs::create_dir_all(&slot.run) {
-        return died(Text::new(format!("作業フォルダ: {e}"), format!("work folder: {e}")));
+        let why = Text::io(&e);
+        return died(Text::new(
+            format!("作業フォルダ: {}", why.ja),
+            format!("work folder: {}", why.en),
+        ));
     }
     let job = Job {
         program: slot.target.join("release").join(WORKER_PACKAGE),
@@ -545,7 +549,9 @@ fn grade_one(
     }
     let student_toml = files.student_toml.clone().unwrap_or_default();
     let io_fail = |facts: &mut result::Facts, e: std::io::Error| {
-        facts.fatal = Some(Text::new(format!("作業用コピー: {e}"), format!("work copy: {e}")));
+        let why = Text::io(&e);
+        facts.fatal =
+            Some(Text::new(format!("作業用コピー: {}", why.ja), format!("work copy: {}", why.en)));
         facts.retry = true;
     };
     let student_path = slot.kit.join("exercises/student.toml");

@@ -49,8 +49,10 @@ fn too_big(name: &str, size: u64) -> Text {
 /// a zip) an entry with an absolute or `..` path, a symlink, too many or too big entries; a
 /// file that reaches outside itself at compile time ([`crate::screen`]).
 pub fn read(path: &Path) -> Result<Files, Text> {
-    let meta = std::fs::symlink_metadata(path)
-        .map_err(|e| Text::new(format!("読めません: {e}"), format!("cannot be read: {e}")))?;
+    let meta = std::fs::symlink_metadata(path).map_err(|e| {
+        let why = Text::io(&e);
+        Text::new(format!("読めません: {}", why.ja), format!("cannot be read: {}", why.en))
+    })?;
     if meta.file_type().is_symlink() {
         return Err(Text::new(
             "シンボリックリンクは受け付けません",
@@ -145,9 +147,10 @@ fn read_folder(dir: &Path) -> Result<Files, Text> {
             return Err(too_big(&relative, meta.len()));
         }
         let bytes = std::fs::read(&path).map_err(|e| {
+            let why = Text::io(&e);
             Text::new(
-                format!("{relative} を読めません: {e}"),
-                format!("cannot read {relative}: {e}"),
+                format!("{relative} を読めません: {}", why.ja),
+                format!("cannot read {relative}: {}", why.en),
             )
         })?;
         match module {
@@ -263,6 +266,13 @@ mod tests {
         let _ = std::fs::remove_dir_all(&d);
         std::fs::create_dir_all(&d).unwrap();
         d
+    }
+
+    #[test]
+    fn a_missing_submission_is_said_in_both_languages() {
+        let Err(why) = read(&folder_path("absent")) else { panic!("a missing path was read") };
+        assert!(why.en.starts_with("cannot be read: "), "{}", why.en);
+        assert_eq!(why.ja, "読めません: ファイルまたはフォルダがありません");
     }
 
     #[cfg(unix)]

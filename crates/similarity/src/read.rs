@@ -139,11 +139,16 @@ pub fn stubs(kit: &Path) -> Result<BTreeMap<String, String>, Text> {
 fn text_file(path: &Path) -> Result<String, Text> {
     let shown = path.display();
     let bytes = cg_core::text::read_bounded(path, MAX_FILE_BYTES).map_err(|e| {
-        Text::new(format!("{shown} を読めません: {e}"), format!("cannot read {shown}: {e}"))
+        let why = e.text_without_option();
+        Text::new(
+            format!("{shown} を読めません: {}", why.ja),
+            format!("cannot read {shown}: {}", why.en),
+        )
     })?;
-    cg_core::text::decode(&bytes, None)
-        .map(|(text, _)| text)
-        .map_err(|e| Text::new(format!("{shown}: {e}"), format!("{shown}: {e}")))
+    cg_core::text::decode(&bytes, None).map(|(text, _)| text).map_err(|e| {
+        let why = e.text_without_option();
+        Text::new(format!("{shown}: {}", why.ja), format!("{shown}: {}", why.en))
+    })
 }
 
 /// Attaches the reports in `dir` to this year's submissions: each file whose name holds a
@@ -156,7 +161,11 @@ fn text_file(path: &Path) -> Result<String, Text> {
 pub fn reports(dir: &Path, class: &mut [Submission]) -> Result<Vec<String>, Text> {
     let shown = dir.display();
     let list = std::fs::read_dir(dir).map_err(|e| {
-        Text::new(format!("{shown} を読めません: {e}"), format!("cannot read {shown}: {e}"))
+        let why = Text::io(&e);
+        Text::new(
+            format!("{shown} を読めません: {}", why.ja),
+            format!("cannot read {shown}: {}", why.en),
+        )
     })?;
     let mut names: Vec<_> = list.flatten().map(|e| e.path()).collect();
     names.sort();
