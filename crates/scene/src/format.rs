@@ -655,13 +655,7 @@ fn read_attenuation(v: &Value<'_>) -> Result<Attenuation, SceneError> {
 fn read_materials(t: &Table<'_>) -> Result<HashMap<String, Material>, SceneError> {
     t.entries()
         .into_iter()
-        .map(|(name, v)| {
-            let chars = name.chars().count();
-            if chars > MAX_NAME_CHARS {
-                return Err(v.error(ErrorKind::NameTooLong { chars, max: MAX_NAME_CHARS }));
-            }
-            Ok((name.to_owned(), read_material(&v.table()?)?))
-        })
+        .map(|(name, v)| Ok((checked_name(name, &v)?, read_material(&v.table()?)?)))
         .collect()
 }
 
@@ -671,7 +665,12 @@ pub const MAX_NAME_CHARS: usize = 64;
 
 /// A name: a string of at most [`MAX_NAME_CHARS`] characters.
 fn read_name(v: &Value<'_>) -> Result<String, SceneError> {
-    let name = v.str()?;
+    checked_name(v.str()?, v)
+}
+
+/// `name` (written at `v`: the value, or the table a key names) if it has at most
+/// [`MAX_NAME_CHARS`] characters.
+fn checked_name(name: &str, v: &Value<'_>) -> Result<String, SceneError> {
     let chars = name.chars().count();
     if chars > MAX_NAME_CHARS {
         return Err(v.error(ErrorKind::NameTooLong { chars, max: MAX_NAME_CHARS }));

@@ -45,6 +45,7 @@ pub(crate) struct Splitter {
     earcut: Earcut<f64>,
     points: Vec<DVec2>,
     kept: Vec<usize>,
+    ring: Vec<DVec2>,
     triangles: Vec<u32>,
 }
 
@@ -91,8 +92,10 @@ impl Splitter {
                 self.kept.push(i);
             }
         }
-        let ring: Vec<DVec2> = self.kept.iter().map(|&i| self.points[i]).collect();
-        if crosses(&ring) {
+        self.ring.clear();
+        self.ring.extend(self.kept.iter().map(|&i| self.points[i]));
+        let ring = &self.ring;
+        if crosses(ring) {
             return Err(PolygonProblem::Crosses);
         }
         self.earcut.earcut(ring.iter().map(|q| q.to_array()), &[] as &[u32], &mut self.triangles);
