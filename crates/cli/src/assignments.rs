@@ -387,9 +387,8 @@ fn view_in_worker(args: &ViewArgs, lang: Lang) -> Result<(), String> {
         match view_picture(args, &a, reference, &times, lang)? {
             Ok(Ok(image)) => {
                 if let Some(dir) = path.parent() {
-                    std::fs::create_dir_all(dir).map_err(|e| {
-                        format!("{}: {}", dir.display(), cg_core::lang::Text::io(&e).get(lang))
-                    })?;
+                    std::fs::create_dir_all(dir)
+                        .map_err(|e| cg_core::lang::Text::io_at(dir, &e).get(lang).to_owned())?;
                 }
                 cg_scene::save_png(&path, &image).map_err(|e| e.describe(lang))?;
                 println!("  {label}: {}", path.display());

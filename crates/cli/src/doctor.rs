@@ -630,7 +630,7 @@ enum Probe {
     /// It ended without an answer: its status and the end of its error output.
     Crashed(String, String),
     /// It could not be started.
-    NotStarted(String),
+    NotStarted(Text),
 }
 
 /// Reads all of `pipe` on a thread of its own; the text comes on the channel.
@@ -648,7 +648,7 @@ fn drain(mut pipe: impl Read + Send + 'static) -> mpsc::Receiver<String> {
 fn probe_gpu(limit: Duration) -> Probe {
     let exe = match std::env::current_exe() {
         Ok(exe) => exe,
-        Err(e) => return Probe::NotStarted(e.to_string()),
+        Err(e) => return Probe::NotStarted(Text::io(&e)),
     };
     let child = Command::new(exe)
         .args(["doctor", "--gpu-probe"])
@@ -658,7 +658,7 @@ fn probe_gpu(limit: Duration) -> Probe {
         .spawn();
     let mut child = match child {
         Ok(c) => c,
-        Err(e) => return Probe::NotStarted(e.to_string()),
+        Err(e) => return Probe::NotStarted(Text::io(&e)),
     };
     let stdout = child.stdout.take().map(drain);
     let stderr = child.stderr.take().map(drain);
@@ -914,9 +914,9 @@ fn gpu(r: &mut Report, limit: Duration, wsl: Option<Wsl>) {
             format!("GPU を開く途中で異常終了しました（{status}）{}", suffix(tail)),
             format!("opening the GPU crashed ({status}){}", suffix(tail)),
         ),
-        Probe::NotStarted(e) => Text::new(
-            format!("GPU を確かめるプロセスを起動できません: {e}"),
-            format!("cannot start the GPU probe: {e}"),
+        Probe::NotStarted(why) => Text::new(
+            format!("GPU を確かめるプロセスを起動できません: {}", why.ja),
+            format!("cannot start the GPU probe: {}", why.en),
         ),
     };
     let message = r.words(message);

@@ -67,9 +67,8 @@ impl Setup {
             .to_owned());
         }
         let config_text = match config {
-            Some(path) => {
-                std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?
-            }
+            Some(path) => std::fs::read_to_string(path)
+                .map_err(|e| cg_core::lang::Text::io_at(path, &e).get(lang).to_owned())?,
             None => String::new(),
         };
         let config = Config::parse(&config_text).map_err(|e| e.message(lang).to_owned())?;
@@ -126,7 +125,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let progress = crate::progress::Progress::new(lang);
     let graded = cg_grade::grade_with(&options, cg_sandbox::launch, &|e| progress.event(e), None);
     progress.finish();
-    let graded = graded.map_err(|e| e.to_string())?;
+    let graded = graded.map_err(|e| e.message(lang).to_owned())?;
     println!(
         "{} {} {}: {}",
         graded.len(),
@@ -157,8 +156,8 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         max_grade: args.moodle_max_grade,
         now,
     };
-    if let Some(w) =
-        cg_grade::moodle::output::write(&args.out, &graded, &settings).map_err(|e| e.to_string())?
+    if let Some(w) = cg_grade::moodle::output::write(&args.out, &graded, &settings)
+        .map_err(|e| e.message(lang).to_owned())?
     {
         println!(
             "Moodle: {}/moodle/grades.csv, feedback.zip ({} {}, {} {})",

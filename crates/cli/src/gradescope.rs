@@ -53,7 +53,7 @@ pub fn grade_one(args: &GradeOneArgs, lang: Lang) -> Result<(), String> {
         let written = std::fs::create_dir_all(&args.out)
             .and_then(|()| cg_grade::write_atomic(&path, text.as_bytes()));
         if let Err(e) = written {
-            eprintln!("{}: {e}", path.display());
+            eprintln!("{}", cg_core::lang::Text::io_at(&path, &e).get(lang));
         }
     }
     result
@@ -80,7 +80,7 @@ fn grade_one_inner(args: &GradeOneArgs, lang: Lang) -> Result<(), String> {
             progress.event(e)
         });
     progress.finish();
-    let one = one.map_err(|e| e.to_string())?;
+    let one = one.map_err(|e| e.message(lang).to_owned())?;
     // A slip of the kit's against the specification is the instructor's to see (stdout), not a
     // reason to take the student's score away.
     for p in gradescope::problems(&one.results) {
@@ -106,7 +106,8 @@ pub fn autograder(args: &AutograderArgs, lang: Lang) -> Result<(), String> {
         .get(lang)
         .to_owned());
     }
-    let count = gradescope::package::write_zip(&kit, &args.out, lang)?;
+    let count = gradescope::package::write_zip(&kit, &args.out, lang)
+        .map_err(|e| e.get(lang).to_owned())?;
     println!(
         "{} {} (setup.sh, run_autograder, {count} {})",
         t("オートグレーダーを書きました:", "wrote the autograder to").get(lang),

@@ -38,7 +38,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
             .get(lang)
         ));
     }
-    let count = write_handout(&root, &args.dir)?;
+    let count = write_handout(&root, &args.dir).map_err(|e| e.get(lang).to_owned())?;
     println!(
         "{} {} ({count} {})",
         t("学生用のコピーを書きました:", "wrote the student's copy to").get(lang),

@@ -117,6 +117,15 @@ impl Text {
         };
         Text::new(ja, e.to_string())
     }
+
+    /// [`Text::io`] after the path it happened to: `out/a.png: 権限がありません…` /
+    /// `out/a.png: Permission denied (os error 13)`.
+    #[must_use]
+    pub fn io_at(path: &std::path::Path, e: &std::io::Error) -> Text {
+        let why = Text::io(e);
+        let shown = path.display();
+        Text::new(format!("{shown}: {}", why.ja), format!("{shown}: {}", why.en))
+    }
 }
 
 impl From<&str> for Text {

@@ -6,7 +6,8 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use cg_harness::stubs::{generate, stub_from_solution};
+use cg_core::lang::Text;
+use cg_harness::stubs::{StubError, generate, stub_from_solution};
 
 /// Paths (relative to the kit) that never go into a handout.
 pub fn excluded(path: &Path) -> bool {
@@ -20,7 +21,7 @@ pub fn excluded(path: &Path) -> bool {
 ///
 /// # Errors
 /// A folder of the kit could not be read.
-pub fn kit_files(root: &Path) -> Result<Vec<PathBuf>, String> {
+pub fn kit_files(root: &Path) -> Result<Vec<PathBuf>, Text> {
     let git = Command::new("git")
         .arg("-C")
         .arg(root)
@@ -38,8 +39,8 @@ pub fn kit_files(root: &Path) -> Result<Vec<PathBuf>, String> {
     let mut files = Vec::new();
     let mut stack = vec![PathBuf::new()];
     while let Some(dir) = stack.pop() {
-        let entries = std::fs::read_dir(root.join(&dir))
-            .map_err(|e| format!("{}: {e}", root.join(&dir).display()))?;
+        let entries =
+            std::fs::read_dir(root.join(&dir)).map_err(|e| Text::io_at(&root.join(&dir), &e))?;
         for entry in entries.flatten() {
             let relative = dir.join(entry.file_name());
             if excluded(&relative) {
@@ -53,6 +54,15 @@ pub fn kit_files(root: &Path) -> Result<Vec<PathBuf>, String> {
         }
     }
     Ok(files)
+}
+
+/// A solution file whose markers do not pair up, or that could not be read: the kit's own
+/// problem, which its maintainer fixes (the marker's words stay in English).
+pub fn markers(e: &StubError) -> Text {
+    Text::new(
+        format!("解答から学生用のコピーを作れません: {e}"),
+        format!("the students' copy cannot be made from the solutions: {e}"),
+    )
 }
 
 /// `Cargo.lock` without the `cg-solutions` package and every mention of it.
@@ -78,7 +88,7 @@ pub fn lock_without_solutions(text: &str) -> String {
 ///
 /// # Errors
 /// A file could not be read or written, or a manifest's solution markers do not pair up.
-pub fn write_handout(root: &Path, dir: &Path) -> Result<usize, String> {
+pub fn write_handout(root: &Path, dir: &Path) -> Result<usize, Text> {
     write_handout_filtered(root, dir, &|_| false)
 }
 
@@ -91,10 +101,10 @@ pub fn write_handout_filtered(
     root: &Path,
     dir: &Path,
     skip: &dyn Fn(&Path) -> bool,
-) -> Result<usize, String> {
-    let err = |p: &Path, e: std::io::Error| format!("{}: {e}", p.display());
+) -> Result<usize, Text> {
+    let err = |p: &Path, e: std::io::Error| Text::io_at(p, &e);
     let mut count = 0;
-    let mut put = |relative: &Path, text: &[u8]| -> Result<(), String> {
+    let mut put = |relative: &Path, text: &[u8]| -> Result<(), Text> {
         let target = dir.join(relative);
         if let Some(parent) = target.parent() {
             std::fs::create_dir_all(parent).map_err(|e| err(parent, e))?;
@@ -113,7 +123,7 @@ pub fn write_handout_filtered(
             Some("Cargo.toml") => {
                 let text = std::fs::read_to_string(&source).map_err(|e| err(&source, e))?;
                 let stub = stub_from_solution(&text, &relative.display().to_string(), "#")
-                    .map_err(|e| e.to_string())?;
+                    .map_err(|e| markers(&e))?;
                 put(&relative, stub.as_bytes())?;
             }
             Some("Cargo.lock") if relative.parent() == Some(Path::new("")) => {
@@ -128,7 +138,7 @@ pub fn write_handout_filtered(
     }
     // The pristine stubs, generated from the solutions (never the maintainer's working copy),
     // and exercises/'s own files that are not generated (its README).
-    for (relative, text) in generate(&root.join("solutions")).map_err(|e| e.to_string())? {
+    for (relative, text) in generate(&root.join("solutions")).map_err(|e| markers(&e))? {
         put(&Path::new("exercises").join(relative), text.as_bytes())?;
     }
     let readme = root.join("exercises/README.md");

@@ -95,9 +95,26 @@ pub struct Graded {
 /// Why grading could not start (a single submission's problems go into its result instead).
 #[derive(Debug, thiserror::Error)]
 pub enum GradeError {
-    /// A folder could not be read or written.
+    /// A folder or file could not be read or written, or the kit itself cannot be graded with
+    /// (its stubs, its handout's build): in both languages (`Display` is the English).
     #[error("{0}")]
-    Io(String),
+    Io(Text),
+}
+
+impl GradeError {
+    /// The message in `lang`.
+    #[must_use]
+    pub fn message(&self, lang: Lang) -> &str {
+        match self {
+            GradeError::Io(text) => text.get(lang),
+        }
+    }
+
+    /// A failed file operation on `path`, with the system's reason ([`Text::io_at`]).
+    #[must_use]
+    pub fn at(path: &Path, e: &std::io::Error) -> GradeError {
+        GradeError::Io(Text::io_at(path, e))
+    }
 }
 
 /// A 64-bit FNV-1a hash, as 16 hex digits: the resume key (not a security measure: a
@@ -141,10 +158,7 @@ pub fn kit_version(kit: &Path, skip: &dyn Fn(&Path) -> bool) -> Result<String, G
     h.add(env!("CARGO_PKG_VERSION").as_bytes());
     for f in files {
         h.add(f.to_string_lossy().as_bytes());
-        h.add(
-            &std::fs::read(kit.join(&f))
-                .map_err(|e| GradeError::Io(format!("{}: {e}", f.display())))?,
-        );
+        h.add(&std::fs::read(kit.join(&f)).map_err(|e| GradeError::at(&f, &e))?);
     }
     Ok(h.hex())
 }
@@ -226,7 +240,7 @@ struct Pending {
 /// The entries of the submissions folder (or of a Moodle download: [`moodle::input`]), read
 /// and hashed, with their result names.
 fn collect(options: &Options, kit_hash: &str) -> Result<Vec<Pending>, GradeError> {
-    let entries = moodle::input::entries(&options.submissions).map_err(|e| GradeError::Io(e.en))?;
+    let entries = moodle::input::entries(&options.submissions).map_err(GradeError::Io)?;
     collect_from(options, kit_hash, entries)
 }
 
@@ -250,7 +264,7 @@ fn collect_from(
             let temp =
                 options.out.join(".work").join(format!("student-{}.toml", file_name(&entry)));
             let _ = std::fs::create_dir_all(options.out.join(".work"));
-            std::fs::write(&temp, &toml).map_err(|e| Text::new(format!("{e}"), format!("{e}")))?;
+            std::fs::write(&temp, &toml).map_err(|e| Text::io_at(&temp, &e))?;
             let student = cg_assign::read_student_file(&temp);
             let _ = std::fs::remove_file(&temp);
             let student = student.map_err(|e| {
@@ -383,29 +397,29 @@ fn prepare_first(
     stubs: &BTreeMap<String, String>,
     skip: &dyn Fn(&Path) -> bool,
 ) -> Result<(), GradeError> {
-    let io = |e: &dyn std::fmt::Display| GradeError::Io(format!("{}: {e}", slot.kit.display()));
     if !slot.is_current(kit_hash) {
         let _ = std::fs::remove_dir_all(&slot.kit);
         let _ = std::fs::remove_file(slot.marker());
-        std::fs::create_dir_all(&slot.kit).map_err(|e| io(&e))?;
-        handout::write_handout_filtered(&options.kit, &slot.kit, skip).map_err(|e| io(&e))?;
+        std::fs::create_dir_all(&slot.kit).map_err(|e| GradeError::at(&slot.kit, &e))?;
+        handout::write_handout_filtered(&options.kit, &slot.kit, skip).map_err(GradeError::Io)?;
     }
     for &m in submission::MODULES {
-        write_if_changed(&slot.kit.join(format!("exercises/src/{m}.rs")), stubs[m].as_bytes())
-            .map_err(|e| io(&e))?;
+        let path = slot.kit.join(format!("exercises/src/{m}.rs"));
+        write_if_changed(&path, stubs[m].as_bytes()).map_err(|e| GradeError::at(&path, &e))?;
     }
     let package = WORKER_PACKAGE;
     let b = build::cargo_build(&slot.kit, &slot.target, package, options.build_limit)
-        .map_err(|e| io(&e))?;
+        .map_err(|e| GradeError::Io(cannot_start_cargo(&e)))?;
     if !b.success {
-        return Err(GradeError::Io(format!(
-            "the kit's handout does not build ({}):\n{}\n{}",
-            slot.kit.display(),
-            b.other_errors.join("\n"),
-            b.stderr_tail
+        let shown = slot.kit.display();
+        let log = format!("{}\n{}", b.other_errors.join("\n"), b.stderr_tail);
+        return Err(GradeError::Io(Text::new(
+            format!("キットの配布用のコピーがビルドできません（{shown}）:\n{log}"),
+            format!("the kit's handout does not build ({shown}):\n{log}"),
         )));
     }
-    std::fs::write(slot.marker(), kit_hash).map_err(|e| io(&e))
+    let marker = slot.marker();
+    std::fs::write(&marker, kit_hash).map_err(|e| GradeError::at(&marker, &e))
 }
 
 /// Slot K > 0: a copy of slot 0's kit and build folder (`cp -a` keeps the times cargo compares,
@@ -536,8 +550,8 @@ fn grade_one(
         );
         let _ = std::fs::remove_dir_all(&slot.kit);
         let remade = std::fs::create_dir_all(&slot.kit)
-            .map_err(|e| e.to_string())
-            .and_then(|_| handout::write_handout_filtered(&options.kit, &slot.kit, skip));
+            .map_err(|e| Text::io(&e))
+            .and_then(|()| handout::write_handout_filtered(&options.kit, &slot.kit, skip));
         if remade.is_err() || slot_content(&slot.kit).ok().as_deref() != Some(pristine) {
             facts.fatal = Some(Text::new(
                 "作業用のキットのコピーを作り直せません",
@@ -580,10 +594,7 @@ fn grade_one(
         ) {
             Ok(b) => b,
             Err(e) => {
-                facts.fatal = Some(Text::new(
-                    format!("cargo を起動できません: {e}"),
-                    format!("cannot start cargo: {e}"),
-                ));
+                facts.fatal = Some(cannot_start_cargo(&e));
                 facts.retry = true;
                 break;
             }
@@ -682,6 +693,24 @@ pub fn grade(
 /// grade instead of the entries of `options.submissions` ([`gradescope::grade_one`]).
 ///
 /// # Errors
+/// A file of the kit's own (a result it wrote) that is not JSON.
+pub(crate) fn not_json(path: &Path, e: &serde_json::Error) -> GradeError {
+    let shown = path.display();
+    GradeError::Io(Text::new(
+        format!("{shown}: JSON として読めません: {e}"),
+        format!("{shown}: not JSON: {e}"),
+    ))
+}
+
+/// Why a build did not start: cargo not found, the sandbox not started.
+fn cannot_start_cargo(e: &std::io::Error) -> Text {
+    let why = Text::io(e);
+    Text::new(
+        format!("cargo を起動できません: {}", why.ja),
+        format!("cannot start cargo: {}", why.en),
+    )
+}
+
 /// As [`grade`].
 pub fn grade_with(
     options: &Options,
@@ -690,7 +719,7 @@ pub fn grade_with(
     single: Option<moodle::input::Entry>,
 ) -> Result<Vec<Graded>, GradeError> {
     let progress = |g: &Graded| on(progress::Event::Graded(g));
-    let io = |p: &Path, e: std::io::Error| GradeError::Io(format!("{}: {e}", p.display()));
+    let io = |p: &Path, e: std::io::Error| GradeError::at(p, &e);
     std::fs::create_dir_all(&options.out).map_err(|e| io(&options.out, e))?;
     let out = options.out.canonicalize().map_err(|e| io(&options.out, e))?;
     let subs = options.submissions.canonicalize().map_err(|e| io(&options.submissions, e))?;
@@ -703,7 +732,7 @@ pub fn grade_with(
     let kit_hash = kit_version(&options.kit, &skip)?;
     let stubs: BTreeMap<String, String> =
         cg_harness::stubs::generate(&options.kit.join("solutions"))
-            .map_err(|e| GradeError::Io(e.to_string()))?
+            .map_err(|e| GradeError::Io(handout::markers(&e)))?
             .into_iter()
             .filter_map(|(rel, text)| {
                 let name = rel.file_stem()?.to_string_lossy().into_owned();
@@ -711,7 +740,10 @@ pub fn grade_with(
             })
             .collect();
     if stubs.len() != submission::MODULES.len() {
-        return Err(GradeError::Io("the kit's stubs are incomplete".into()));
+        return Err(GradeError::Io(t(
+            "解答から作った学生用の関数が課題の一部しかありません",
+            "the stubs made from the solutions lack some of the assignments",
+        )));
     }
     let pending = match single {
         Some(entry) => collect_from(options, &kit_hash, vec![entry])?,
@@ -760,8 +792,7 @@ pub fn grade_with(
         pristine = slot_content(&first.kit).map_err(|e| io(&first.kit, e))?;
         // The copies are made before any slot starts building.
         for k in 1..slots {
-            prepare_copy(&Slot::at(&out, k), &first, &kit_hash)
-                .map_err(|m| GradeError::Io(m.en))?;
+            prepare_copy(&Slot::at(&out, k), &first, &kit_hash).map_err(GradeError::Io)?;
         }
         on(progress::Event::Built);
     }

@@ -166,3 +166,36 @@ fn hashes_are_stable_and_length_prefixed() {
     assert_ne!(a.hex(), b.hex());
     assert_eq!(Hasher::default().hex(), "cbf29ce484222325");
 }
+
+/// Grading that cannot start says why in the instructor's language: a missing submissions
+/// folder (through [`collect`] and through [`grade_with`], before anything is built), and a
+/// handout whose folder lies under a file. The Japanese has the system's reason translated, not
+/// its English words.
+#[test]
+fn grading_that_cannot_start_says_why_in_both_languages() {
+    let root = std::env::temp_dir().join(format!("cg-grade-start-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&root);
+    std::fs::create_dir_all(&root).unwrap();
+    let options = collect_options(&root, None);
+    let never = |_: progress::Event<'_>| {};
+    let errors = [
+        collect(&options, "kit").map(|_| ()).unwrap_err(),
+        grade_with(&options, cg_sandbox::launch, &never, None).map(|_| ()).unwrap_err(),
+    ];
+    for e in &errors {
+        let (ja, en) = (e.message(Lang::Ja), e.message(Lang::En));
+        assert!(
+            ja.contains("subs") && ja.contains("ありません") && !ja.contains("os error"),
+            "{ja}"
+        );
+        assert!(en.contains("subs") && !en.contains("ありません"), "{en}");
+        assert_eq!(e.to_string(), en);
+    }
+    // A handout into a folder whose parent is a file.
+    std::fs::write(root.join("a.txt"), "kit file").unwrap();
+    std::fs::write(root.join("blocker"), "a file").unwrap();
+    let why = handout::write_handout(&root, &root.join("blocker/copy")).unwrap_err();
+    assert!(why.ja.contains("blocker") && !why.ja.contains("os error"), "{}", why.ja);
+    assert!(why.en.contains("blocker"), "{}", why.en);
+    let _ = std::fs::remove_dir_all(&root);
+}

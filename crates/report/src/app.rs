@@ -369,7 +369,7 @@ fn make_folder(folder: &Path, lang: Lang) -> Result<(), String> {
 
 /// A failed file operation on `path`, in `lang` ([`cg_core::lang::Text::io`]).
 fn io_error(path: &Path, e: &std::io::Error, lang: Lang) -> String {
-    format!("{}: {}", path.display(), cg_core::lang::Text::io(e).get(lang))
+    cg_core::lang::Text::io_at(path, e).get(lang).to_owned()
 }
 
 fn write(

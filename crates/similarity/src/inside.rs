@@ -160,16 +160,27 @@ fn too_big(rel: &str, size: u64) -> Text {
 }
 
 fn unreadable(rel: &str, e: &dyn std::fmt::Display) -> Text {
+    skipped(rel, &Text::from(e.to_string()))
+}
+
+fn unreadable_io(rel: &str, e: &std::io::Error) -> Text {
+    skipped(rel, &Text::io(e))
+}
+
+fn skipped(rel: &str, why: &Text) -> Text {
     Text::new(
-        format!("{rel} を読めないので飛ばします: {e}"),
-        format!("{rel} cannot be read and was skipped: {e}"),
+        format!("{rel} を読めないので飛ばします: {}", why.ja),
+        format!("{rel} cannot be read and was skipped: {}", why.en),
     )
 }
 
 /// Reads `reader` up to one byte over the limit (the size a zip declares may lie).
 fn bounded(reader: impl Read, rel: &str) -> Result<Vec<u8>, Text> {
     let mut bytes = Vec::new();
-    reader.take(MAX_REPORT_BYTES + 1).read_to_end(&mut bytes).map_err(|e| unreadable(rel, &e))?;
+    reader
+        .take(MAX_REPORT_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| unreadable_io(rel, &e))?;
     if bytes.len() as u64 > MAX_REPORT_BYTES {
         return Err(too_big(rel, bytes.len() as u64));
     }
@@ -192,10 +203,10 @@ fn read(item: &Item) -> Result<Found, Text> {
     }
     let bytes = match &item.loc {
         Loc::File(path) => {
-            bounded(std::fs::File::open(path).map_err(|e| unreadable(rel, &e))?, rel)?
+            bounded(std::fs::File::open(path).map_err(|e| unreadable_io(rel, &e))?, rel)?
         }
         Loc::Zip(path, at) => {
-            let file = std::fs::File::open(path.as_path()).map_err(|e| unreadable(rel, &e))?;
+            let file = std::fs::File::open(path.as_path()).map_err(|e| unreadable_io(rel, &e))?;
             from_zip(zip::ZipArchive::new(file).map_err(|e| unreadable(rel, &e))?, *at, rel)?
         }
         Loc::Bytes(bytes, at) => {

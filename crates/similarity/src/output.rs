@@ -169,11 +169,12 @@ pub fn write(
     analysis: &Analysis,
     lang: Lang,
 ) -> Result<(), String> {
-    std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
+    let io = |p: &Path, e: std::io::Error| Text::io_at(p, &e).get(lang).to_owned();
+    std::fs::create_dir_all(out).map_err(|e| io(out, e))?;
     let csv = csv_text(class, analysis, lang)?;
     let path = out.join("similarity.csv");
-    std::fs::write(&path, csv).map_err(|e| format!("{}: {e}", path.display()))?;
+    std::fs::write(&path, csv).map_err(|e| io(&path, e))?;
     let html = crate::html::page(class, analysis, lang);
     let path = out.join("similarity.html");
-    std::fs::write(&path, html).map_err(|e| format!("{}: {e}", path.display()))
+    std::fs::write(&path, html).map_err(|e| io(&path, e))
 }

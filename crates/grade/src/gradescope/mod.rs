@@ -137,21 +137,19 @@ pub fn grade_one(
     on: &(dyn Fn(progress::Event<'_>) + Sync),
 ) -> Result<One, GradeError> {
     let started = Instant::now();
-    let io = |p: &Path, e: std::io::Error| GradeError::Io(format!("{}: {e}", p.display()));
+    let io = |p: &Path, e: std::io::Error| GradeError::at(p, &e);
     let mut options = options.clone();
     options.submissions = submission.to_path_buf();
     options.jobs = 1;
     let entry = moodle::input::Entry::single(submission);
     let graded = crate::grade_with(&options, launcher, on, Some(entry))?;
-    let graded = graded
-        .into_iter()
-        .next()
-        .ok_or_else(|| GradeError::Io("no result for the submission".to_owned()))?;
+    let graded = graded.into_iter().next().ok_or_else(|| {
+        GradeError::Io(crate::t("提出物の結果がありません", "no result for the submission"))
+    })?;
     let name = format!("{}.json", graded.name);
     let kit_result = options.out.join(&name);
     let text = std::fs::read_to_string(&kit_result).map_err(|e| io(&kit_result, e))?;
-    let value: Value = serde_json::from_str(&text)
-        .map_err(|e| GradeError::Io(format!("{}: {e}", kit_result.display())))?;
+    let value: Value = serde_json::from_str(&text).map_err(|e| crate::not_json(&kit_result, &e))?;
     std::fs::create_dir_all(results).map_err(|e| io(results, e))?;
     let same = |a: &Path, b: &Path| match (a.canonicalize(), b.canonicalize()) {
         (Ok(a), Ok(b)) => a == b,

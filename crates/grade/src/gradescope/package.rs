@@ -10,7 +10,7 @@
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
-use cg_core::lang::{Lang, t};
+use cg_core::lang::{Lang, Text, t};
 
 use crate::handout::{excluded, kit_files};
 
@@ -112,7 +112,7 @@ pub fn run_autograder(lang: Lang) -> String {
 ///
 /// # Errors
 /// A kit file could not be read, or the zip written.
-pub fn write_zip(kit: &Path, out: &Path, lang: Lang) -> Result<usize, String> {
+pub fn write_zip(kit: &Path, out: &Path, lang: Lang) -> Result<usize, Text> {
     let target = out.canonicalize().ok();
     let mut files = kit_files(kit)?;
     // Outside a git checkout the kit's listing leaves solutions/ out, as a handout does.
@@ -130,7 +130,9 @@ pub fn write_zip(kit: &Path, out: &Path, lang: Lang) -> Result<usize, String> {
         .compression_method(zip::CompressionMethod::Deflated)
         .unix_permissions(0o644);
     let executable = plain.unix_permissions(0o755);
-    let err = |e: &dyn std::fmt::Display| e.to_string();
+    let err = |e: &dyn std::fmt::Display| {
+        Text::new(format!("zip を作れません: {e}"), format!("cannot make the zip: {e}"))
+    };
     for (name, text) in
         [("setup.sh", SETUP_SH.to_owned()), ("run_autograder", run_autograder(lang))]
     {
@@ -138,13 +140,13 @@ pub fn write_zip(kit: &Path, out: &Path, lang: Lang) -> Result<usize, String> {
         z.write_all(text.as_bytes()).map_err(|e| err(&e))?;
     }
     for f in &files {
-        let bytes = std::fs::read(kit.join(f)).map_err(|e| format!("{}: {e}", f.display()))?;
+        let bytes = std::fs::read(kit.join(f)).map_err(|e| Text::io_at(f, &e))?;
         let name = f.to_string_lossy().replace('\\', "/");
         z.start_file(name, plain.unix_permissions(mode(&kit.join(f)))).map_err(|e| err(&e))?;
         z.write_all(&bytes).map_err(|e| err(&e))?;
     }
     let bytes = z.finish().map_err(|e| err(&e))?.into_inner();
-    crate::write_atomic(out, &bytes).map_err(|e| format!("{}: {e}", out.display()))?;
+    crate::write_atomic(out, &bytes).map_err(|e| Text::io_at(out, &e))?;
     Ok(files.len())
 }
 

@@ -133,8 +133,9 @@ fn text(ja: String, en: String) -> Text {
     Text::new(ja, en)
 }
 
-fn cannot_read(what: &str, e: &dyn std::fmt::Display) -> Text {
-    text(format!("{what} を読めません: {e}"), format!("cannot read {what}: {e}"))
+fn cannot_read(what: &str, e: &std::io::Error) -> Text {
+    let why = Text::io(e);
+    text(format!("{what} を読めません: {}", why.ja), format!("cannot read {what}: {}", why.en))
 }
 
 /// The entries of `submissions`: a folder (its entries; Moodle participants grouped), or the

@@ -383,6 +383,15 @@ fn feedback_files(out: &Path, name: &str, result: &Value) -> Vec<(String, Vec<u8
     files
 }
 
+/// A file of Moodle's that could not be made in memory (`grades.csv`, `feedback.zip`).
+fn not_made(dir: &Path, name: &str, e: &str) -> GradeError {
+    let shown = dir.display();
+    GradeError::Io(Text::new(
+        format!("{shown}: {name} を作れません: {e}"),
+        format!("{shown}: cannot make {name}: {e}"),
+    ))
+}
+
 /// Writes `<out>/moodle/grades.csv` and `<out>/moodle/feedback.zip` for the Moodle
 /// participants among `graded` (their results are read from `<out>`); `None` when there is
 /// none.
@@ -394,13 +403,13 @@ pub fn write(
     graded: &[Graded],
     settings: &Settings,
 ) -> Result<Option<Written>, GradeError> {
-    let io = |p: &Path, e: &dyn std::fmt::Display| GradeError::Io(format!("{}: {e}", p.display()));
+    let io = |p: &Path, e: &std::io::Error| GradeError::at(p, e);
     let mut found: Vec<(Name, &Graded, Value)> = Vec::new();
     for g in graded {
         let Some(name) = Name::parse(&g.entry) else { continue };
         let path = out.join(format!("{}.json", g.name));
         let text = std::fs::read_to_string(&path).map_err(|e| io(&path, &e))?;
-        let value: Value = serde_json::from_str(&text).map_err(|e| io(&path, &e))?;
+        let value: Value = serde_json::from_str(&text).map_err(|e| crate::not_json(&path, &e))?;
         found.push((name, g, value));
     }
     if found.is_empty() {
@@ -432,10 +441,11 @@ pub fn write(
     }
     let dir = out.join("moodle");
     std::fs::create_dir_all(&dir).map_err(|e| io(&dir, &e))?;
-    let csv = worksheet(&rows, settings).map_err(|e| io(&dir, &e))?;
+    let csv = worksheet(&rows, settings).map_err(|e| not_made(&dir, "grades.csv", &e))?;
     let path = dir.join("grades.csv");
     write_atomic(&path, csv.as_bytes()).map_err(|e| io(&path, &e))?;
-    let zip = feedback_zip(&folders, settings.now).map_err(|e| io(&dir, &e))?;
+    let zip =
+        feedback_zip(&folders, settings.now).map_err(|e| not_made(&dir, "feedback.zip", &e))?;
     let path = dir.join("feedback.zip");
     write_atomic(&path, &zip).map_err(|e| io(&path, &e))?;
     Ok(Some(Written {
