@@ -88,8 +88,9 @@ enum Command {
     Doctor(doctor::Args),
 }
 
-/// Ends quietly when the reader of our output goes away (`cg check | head`): printing to a closed
-/// pipe makes `println!` panic, which is no error of the user's. Other panics print as usual.
+/// Ends quietly when the reader of our output goes away (`cg check | head`, or
+/// `cg render 2>&1 | head`): printing to a closed pipe makes `println!` and `eprintln!` panic,
+/// which is no error of the user's. Other panics print as usual.
 fn quiet_on_closed_pipe() {
     let default = std::panic::take_hook();
     std::panic::set_hook(Box::new(move |info| {
@@ -99,7 +100,9 @@ fn quiet_on_closed_pipe() {
             .map(String::as_str)
             .or_else(|| info.payload().downcast_ref::<&str>().copied())
             .unwrap_or("");
-        if message.contains("failed printing to stdout") && message.contains("Broken pipe") {
+        let printing = message.contains("failed printing to stdout")
+            || message.contains("failed printing to stderr");
+        if printing && message.contains("Broken pipe") {
             std::process::exit(141);
         }
         default(info);

@@ -156,18 +156,26 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         )),
     };
     write(&output, &r.image, args.output.is_none(), lang)?;
-    println!(
-        "{} {} — {}, {}, {} × {}, {:.1} ms",
+    // With the picture on standard output (`-o /dev/stdout > a.png`) the words go to standard
+    // error, or they would land in the PNG.
+    let words = format!(
+        "{} {} — {}, {}, {} × {}, {:.1} ms\n{}{}: {}",
         t("描画しました", "rendered").get(lang),
         path.display(),
         renderer_label(args.renderer).get(lang),
         shading_name(r.shading).get(lang),
         r.image.width,
         r.image.height,
-        r.millis
+        r.millis,
+        r.report,
+        t("出力", "wrote").get(lang),
+        output.display()
     );
-    print!("{}", r.report);
-    println!("{}: {}", t("出力", "wrote").get(lang), output.display());
+    if is_device(&output) {
+        eprintln!("{words}");
+    } else {
+        println!("{words}");
+    }
     if nothing_drawn(&scene, &r.image) {
         eprintln!("{}", nothing_drawn_note().get(lang));
     }
@@ -297,13 +305,15 @@ pub fn main_job(lang: Lang) -> Result<(), String> {
     Ok(())
 }
 
-/// A file name made from the scene file's name: only letters, digits, `.`, `_` and `-` (anything
-/// else becomes `_`), so the default output stays inside `out/` whatever the scene is called.
+/// A file name made from the scene file's name: only letters and digits (kana and kanji too, so
+/// `赤 1.toml` and `青 1.toml` do not both become `__1`), `.`, `_` and `-`; anything else (a
+/// space, a separator, a character Windows forbids) becomes `_`, so the default output stays
+/// inside `out/` whatever the scene is called.
 fn file_stem(path: &Path) -> String {
     let stem = path.file_stem().map_or_else(String::new, |s| s.to_string_lossy().into_owned());
     let safe: String = stem
         .chars()
-        .map(|c| if c.is_ascii_alphanumeric() || matches!(c, '.' | '_' | '-') { c } else { '_' })
+        .map(|c| if c.is_alphanumeric() || matches!(c, '.' | '_' | '-') { c } else { '_' })
         .collect();
     let safe = safe.trim_start_matches('.').to_owned();
     if safe.is_empty() { "scene".to_owned() } else { safe }
@@ -435,23 +445,27 @@ fn write(path: &Path, image: &Image, made_here: bool, lang: Lang) -> Result<(), 
                 )
             })?;
         } else if !dir.is_dir() {
-            return Err(format!(
-                "{}: {}",
-                dir.display(),
+            let why = if dir.exists() {
+                t(
+                    "フォルダではありません（同じ名前のファイルがあります）",
+                    "not a folder (a file has this name)",
+                )
+            } else {
                 t(
                     "このフォルダはありません（-o のフォルダは先に作ってください）",
-                    "no such folder (make the folder of -o first)"
+                    "no such folder (make the folder of -o first)",
                 )
-                .get(lang)
-            ));
+            };
+            return Err(format!("{}: {}", dir.display(), why.get(lang)));
         }
     }
     cg_scene::save_png(path, image).map_err(|e| e.describe(lang))
 }
 
-/// A device such as `/dev/null` or `/dev/stdout` (no extension to ask for).
+/// A device such as `/dev/null`, `/dev/stdout` or `/dev/fd/1` (no extension to ask for): a path
+/// under `/dev` without an extension. A file named with one (`/dev/shm/a.jpg`) is a file.
 fn is_device(path: &Path) -> bool {
-    path.starts_with("/dev")
+    path.starts_with("/dev") && path.extension().is_none()
 }
 
 fn renderer_name(r: Renderer) -> &'static str {
@@ -504,7 +518,9 @@ mod tests {
     fn default_output_names_stay_inside_out() {
         assert_eq!(file_stem(Path::new("assets/scenes/course-sample.toml")), "course-sample");
         assert_eq!(file_stem(Path::new("../../x/../../escaped.toml")), "escaped");
-        assert_eq!(file_stem(Path::new("/tmp/シーン 1.toml")), "____1");
+        assert_eq!(file_stem(Path::new("/tmp/シーン 1.toml")), "シーン_1");
+        assert_ne!(file_stem(Path::new("赤 1.toml")), file_stem(Path::new("青 1.toml")));
+        assert_eq!(file_stem(Path::new("a<b>:c|d?e*f\"g.toml")), "a_b__c_d_e_f_g");
         assert_eq!(file_stem(Path::new("..toml")), "scene");
         assert_eq!(file_stem(Path::new("")), "scene");
     }

@@ -215,6 +215,21 @@ fn mistakes_are_clear_errors() {
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains("このフォルダはありません") && err.contains("such"), "{err}");
     assert!(!dir.join("no").exists(), "no folder was made");
+    // A file where -o's folder belongs is said to be one.
+    std::fs::write(dir.join("plain"), "a file").unwrap();
+    let under = dir.join("plain").join("x.png");
+    let o =
+        cg_in(&root(), &["render", "-o", under.to_str().unwrap(), "--width", "8", "--lang", "ja"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("フォルダではありません") && err.contains("plain"), "{err}");
+    // Under /dev, a name with an extension is a file like any other: not a .jpg of PNG bytes.
+    if Path::new("/dev/shm").is_dir() {
+        let shm = format!("/dev/shm/cg-render-{}.jpg", std::process::id());
+        let o = cg_in(&root(), &["render", "-o", &shm, "--width", "8", "--lang", "en"]);
+        assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
+        assert!(!Path::new(&shm).exists());
+    }
     // A failed write is an error, never "wrote:" with exit status 0.
     if Path::new("/dev/full").exists() {
         let o = cg_in(&root(), &["render", "-o", "/dev/full", "--width", "8", "--lang", "en"]);
@@ -317,4 +332,37 @@ fn without_the_gpu_feature_the_gpu_renderer_gives_the_command_that_builds_it() {
         assert!(err.contains(&command), "{command}\n{err}");
         assert!(!file.exists(), "{err}");
     }
+}
+
+/// `-o /dev/stdout > a.png` leaves a PNG and nothing else on standard output (the words go to
+/// standard error, or they would land inside the picture); and a standard error whose reader
+/// has gone (`2>&1 | head`) ends the command quietly, as a closed standard output does, not in
+/// a panic.
+#[cfg(unix)]
+#[test]
+fn a_picture_on_standard_output_is_only_the_png_and_a_closed_pipe_is_no_panic() {
+    let o = cg_in(&root(), &["render", "--width", "32", "-o", "/dev/stdout", "--lang", "en"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let iend = [0, 0, 0, 0, b'I', b'E', b'N', b'D', 0xAE, 0x42, 0x60, 0x82];
+    assert!(
+        o.stdout.starts_with(b"\x89PNG\r\n\x1a\n") && o.stdout.ends_with(&iend),
+        "standard output is not one PNG: {:?}",
+        String::from_utf8_lossy(&o.stdout[o.stdout.len().saturating_sub(200)..])
+    );
+    assert_eq!(image::load_from_memory(&o.stdout).unwrap().width(), 32);
+    let words = String::from_utf8_lossy(&o.stderr);
+    assert!(words.contains("rendered") && words.contains("wrote: /dev/stdout"), "{words}");
+
+    // The ray tracer's note on flat shading goes to standard error, here a pipe nobody reads.
+    let (reader, writer) = std::io::pipe().unwrap();
+    drop(reader);
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_cg"))
+        .args(["render", "--renderer", "trace", "--shading", "flat", "--width", "8"])
+        .args(["-o", "/dev/null", "--lang", "ja"])
+        .current_dir(root())
+        .stdout(std::process::Stdio::null())
+        .stderr(writer)
+        .status()
+        .unwrap();
+    assert_eq!(status.code(), Some(141), "{status}");
 }
