@@ -131,7 +131,7 @@ pub fn explain(error: &clap::Error, lang: Lang) -> Option<String> {
         }
         ErrorKind::NoEquals => format!("'{arg}' の値は '=' でつないでください"),
         ErrorKind::ValueValidation => {
-            let why = std::error::Error::source(error).map(ToString::to_string);
+            let why = std::error::Error::source(error).map(|w| reason_ja(&w.to_string()));
             let why = why.map(|w| format!(": {w}")).unwrap_or_default();
             format!("'{arg}' の値 '{value}' が正しくありません{why}")
         }
@@ -146,9 +146,10 @@ pub fn explain(error: &clap::Error, lang: Lang) -> Option<String> {
             get(ContextKind::ExpectedNumValues).unwrap_or_default(),
             get(ContextKind::ActualNumValues).unwrap_or_default()
         ),
+        // clap names the option itself as the prior one when it is given twice.
         ErrorKind::ArgumentConflict => match get(ContextKind::PriorArg) {
-            Some(prior) => format!("'{arg}' と '{prior}' は一緒には使えません"),
-            None => format!("'{arg}' は 1 回しか指定できません"),
+            Some(prior) if prior != arg => format!("'{arg}' と '{prior}' は一緒には使えません"),
+            _ => format!("'{arg}' は 1 回しか指定できません"),
         },
         ErrorKind::MissingRequiredArgument => format!("必要な引数が指定されていません: {arg}"),
         ErrorKind::MissingSubcommand => {
@@ -197,6 +198,28 @@ pub fn explain(error: &clap::Error, lang: Lang) -> Option<String> {
     Some(out)
 }
 
+/// A value parser's reason in Japanese, for the reasons of clap's and the standard library's
+/// number parsers (`0 is not in 1..=16384`, `invalid digit found in string`); any other reason
+/// (the kit's own parsers give ranges such as `-90 … 90`) as it is.
+fn reason_ja(why: &str) -> String {
+    if let Some((_, range)) = why.split_once(" is not in ") {
+        return match range.split_once("..=") {
+            Some((low, high)) => format!("{low} から {high} までの数にしてください"),
+            None => format!("{range} の範囲にしてください"),
+        };
+    }
+    match why {
+        "invalid digit found in string" => "数字でない文字があります".to_owned(),
+        "cannot parse integer from empty string" | "cannot parse float from empty string" => {
+            "空です".to_owned()
+        }
+        "number too large to fit in target type" => "大きすぎます".to_owned(),
+        "number too small to fit in target type" => "小さすぎます".to_owned(),
+        "invalid float literal" => "数として読めません".to_owned(),
+        _ => why.to_owned(),
+    }
+}
+
 /// A context value as plain text: lists joined with ", ", styled text without its styles.
 fn text(value: &ContextValue) -> String {
     match value {
@@ -232,6 +255,8 @@ mod tests {
         samples: Option<u16>,
         #[arg(long, conflicts_with = "samples")]
         exact: bool,
+        #[arg(long)]
+        count: Option<usize>,
         #[command(subcommand)]
         command: Option<Command>,
     }
@@ -277,14 +302,25 @@ mod tests {
     #[test]
     fn a_value_out_of_range_keeps_the_reason() {
         let text = ja(&["demo", "--samples", "1000"]);
-        assert!(text.contains("'--samples <SAMPLES>' の値 '1000' が正しくありません: "), "{text}");
-        assert!(text.contains("1..=256"), "{text}");
+        assert!(
+            text.contains("'--samples <SAMPLES>' の値 '1000' が正しくありません: 1 から 256 までの数にしてください"),
+            "{text}"
+        );
+        // The number parsers' English reasons, in Japanese.
+        let text = ja(&["demo", "--samples", "abc"]);
+        assert!(text.contains("'abc' が正しくありません: 数字でない文字があります"), "{text}");
+        let text = ja(&["demo", "--count", "99999999999999999999999"]);
+        assert!(text.contains("が正しくありません: 大きすぎます"), "{text}");
+        assert!(!text.contains("target type"), "{text}");
     }
 
     #[test]
     fn conflicts_missing_arguments_and_commands() {
         let text = ja(&["demo", "--samples", "4", "--exact"]);
         assert!(text.contains("は一緒には使えません"), "{text}");
+        // The same option twice is not a conflict with itself.
+        let text = ja(&["demo", "--shading", "flat", "--shading", "phong"]);
+        assert!(text.contains("'--shading <SHADING>' は 1 回しか指定できません"), "{text}");
         let text = ja(&["demo", "check"]);
         assert!(text.contains("必要な引数が指定されていません: --student <STUDENT>"), "{text}");
         let text = ja(&["demo", "chek"]);
