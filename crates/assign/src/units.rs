@@ -131,10 +131,15 @@ macro_rules! derive_from_list {
                 match which { $(Which::$id => <$unit as Unit>::describe(&self.$id, lang),)* }
             }
 
-            /// One assignment's spec as JSON.
+            /// One assignment's spec as JSON, its f32 numbers as written (`0.1`, not
+            /// `0.10000000149011612`; [`cg_harness::tidy_f32_numbers`]).
             #[must_use]
             pub fn spec_json(&self, which: Which) -> Json {
-                match which { $(Which::$id => <$unit as Unit>::spec_json(&self.$id),)* }
+                let mut value = match which {
+                    $(Which::$id => <$unit as Unit>::spec_json(&self.$id),)*
+                };
+                cg_harness::tidy_f32_numbers(&mut value);
+                value
             }
 
             /// One assignment's checks against the student's functions.
@@ -279,9 +284,7 @@ impl Variants {
         for &which in Which::ALL {
             map.insert(which.id().to_owned(), self.spec_json(which));
         }
-        let mut value = Json::Object(map);
-        cg_harness::tidy_f32_numbers(&mut value);
-        value
+        Json::Object(map)
     }
 
     /// One assignment's check report for the student's functions.

@@ -37,10 +37,14 @@ fn the_assignment_follows_from_the_number_and_is_recorded_once() {
         cg_harness::TableVersion::V1,
     );
     assert_eq!(json, expected.to_json());
-    let a1: serde_json::Value =
-        serde_json::from_slice(&cg(&dir, &["assignment", "--json", "--only", "a1"]).stdout)
-            .unwrap();
-    assert_eq!(a1, expected.to_json()["a1"]);
+    // Each assignment alone is the same JSON, its f32 numbers as written (`"kl": 0.1`).
+    for &which in cg_assign::Which::ALL {
+        let id = which.id();
+        let one: serde_json::Value =
+            serde_json::from_slice(&cg(&dir, &["assignment", "--json", "--only", id]).stdout)
+                .unwrap();
+        assert_eq!(one, expected.to_json()[id], "{id}");
+    }
 }
 
 #[test]
