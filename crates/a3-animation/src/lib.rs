@@ -44,7 +44,7 @@ pub use spec::{
     ShapeExt, SpecExt, WorldAxisExt, camera_product, new_object, variant, warmup_objects,
 };
 pub(crate) use spec::{gcd, lcm};
-pub use view::{record_frame, reference, replay, view, warmup_frame, warmup_view};
+pub use view::{VIEW_MAX_S, record_frame, reference, replay, view, warmup_frame, warmup_view};
 
 /// The assignment's ID, the prefix of its task IDs (`a3.t1`, …).
 pub const ID: &str = "a3";

@@ -52,8 +52,8 @@ pub fn replay(recorded: &cg_student::gl::Gl) -> Gl {
     Gl::replay(recorded, &|_| {})
 }
 
-/// The longest time [`view`] animates to (s): 10⁶ frames.
-const VIEW_MAX_S: f64 = DRIFT_FRAMES as f64 / FPS as f64;
+/// The longest time [`view`] animates to (s): 10⁶ frames. `cg view --time` is checked against it.
+pub const VIEW_MAX_S: f64 = DRIFT_FRAMES as f64 / FPS as f64;
 
 /// The scene that shows `imp`'s result at time `time_s` (seconds): `idle` called
 /// `round(60·time_s)` times from the start, but at least once, then `display` recorded and drawn

@@ -23,12 +23,21 @@ pub enum StudentFileError {
         /// Where it was looked for.
         path: String,
     },
+    /// It is there but cannot be read: a folder, no permission, too large, not text
+    /// ([`cg_core::text::ReadError`]; UTF-8, UTF-16 and Shift_JIS are read).
+    Unreadable {
+        /// The file.
+        path: String,
+        /// Why, in both languages.
+        why: Text,
+    },
     /// It is not valid, or lacks `student`.
     Invalid {
         /// The file.
         path: String,
-        /// What is wrong (the TOML parser's message, with the line).
-        reason: String,
+        /// What is wrong, in both languages (a syntax error with the TOML parser's message and
+        /// line, an unknown or missing key, a number without quotes).
+        reason: Text,
     },
     /// `student` is not an 8-digit number.
     Number {
@@ -65,9 +74,12 @@ impl StudentFileError {
                     "{path} does not exist. Record your student number once: cargo run --release -- assignment --student 12345678 --save (with your own number)"
                 ),
             ),
+            StudentFileError::Unreadable { path, why } => {
+                Text::new(format!("{path}: {}", why.ja), format!("{path}: {}", why.en))
+            }
             StudentFileError::Invalid { path, reason } => Text::new(
-                format!("{path} を読めません: {reason}（例: student = \"12345678\"）"),
-                format!("{path} cannot be read: {reason} (example: student = \"12345678\")"),
+                format!("{path} を読めません: {}（例: student = \"12345678\"）", reason.ja),
+                format!("{path} cannot be read: {} (example: student = \"12345678\")", reason.en),
             ),
             StudentFileError::Number { path, error } => {
                 let error = error.text();
@@ -81,39 +93,77 @@ impl StudentFileError {
     }
 }
 
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawStudentFile {
-    student: toml::Value,
-    table: Option<toml::Value>,
-}
+/// The largest `student.toml` read (a record is two short lines; anything larger is the wrong
+/// file).
+const MAX_STUDENT_FILE_BYTES: u64 = 64 << 10;
 
-/// Reads `exercises/student.toml` (or another path).
+/// Reads `exercises/student.toml` (or another path), in UTF-8, UTF-16 or Shift_JIS as an editor
+/// wrote it, at most 64 KiB.
 ///
 /// # Errors
-/// A missing or malformed file, a bad number, an unknown table — each with what to do.
+/// A missing, unreadable or malformed file, a bad number, an unknown table — each with what to
+/// do.
 pub fn read_student_file(path: &Path) -> Result<StudentFile, StudentFileError> {
+    use cg_core::text::ReadError;
     let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|_| StudentFileError::Missing { path: shown.clone() })?;
-    let raw: RawStudentFile = toml::from_str(&text)
-        .map_err(|e| StudentFileError::Invalid { path: shown.clone(), reason: e.to_string() })?;
-    let digits = match &raw.student {
-        toml::Value::String(s) => s.clone(),
-        // A number written without quotes loses leading zeros, so it is refused with the reason.
-        other => {
-            return Err(StudentFileError::Invalid {
-                path: shown,
-                reason: format!("student = {other} must be in quotes: student = \"{other}\""),
-            });
+    let unreadable = |why: Text| StudentFileError::Unreadable { path: shown.clone(), why };
+    let bytes = match cg_core::text::read_bounded(path, MAX_STUDENT_FILE_BYTES) {
+        Ok(bytes) => bytes,
+        Err(_) if !path.exists() => return Err(StudentFileError::Missing { path: shown }),
+        Err(ReadError::TooLarge { .. }) => {
+            return Err(unreadable(Text::new(
+                format!(
+                    "{} KiB を超えています。学生番号を記録するファイルにしては大きすぎます",
+                    MAX_STUDENT_FILE_BYTES >> 10
+                ),
+                format!(
+                    "it is larger than {} KiB, too large for the record of a student number",
+                    MAX_STUDENT_FILE_BYTES >> 10
+                ),
+            )));
         }
+        Err(e) => return Err(unreadable(e.text_without_option())),
+    };
+    let (text, _) = cg_core::text::decode(&bytes, None)
+        .map_err(|e| unreadable(ReadError::from(e).text_without_option()))?;
+    let invalid = |reason: Text| StudentFileError::Invalid { path: shown.clone(), reason };
+    // A number without quotes (`student = 01234567`) is refused before TOML reads it: TOML
+    // drops its leading zeros, or calls a leading zero an error.
+    if let Some(digits) = unquoted_number(&text) {
+        return Err(invalid(Text::new(
+            format!("student = {digits} は引用符で囲んでください: student = \"{digits}\""),
+            format!("student = {digits} must be in quotes: student = \"{digits}\""),
+        )));
+    }
+    let table: toml::Table = toml::from_str(&text).map_err(|e| {
+        invalid(Text::new(
+            format!("TOML の書き方の誤りです（構文エラー）: {e}"),
+            format!("TOML syntax error: {e}"),
+        ))
+    })?;
+    if let Some(key) = table.keys().find(|k| !matches!(k.as_str(), "student" | "table")) {
+        let key = shorten(key);
+        return Err(invalid(Text::new(
+            format!("`{key}` というキーはありません（書けるのは student と table）"),
+            format!("there is no key `{key}` (the keys are student and table)"),
+        )));
+    }
+    let digits = match table.get("student") {
+        Some(toml::Value::String(s)) => s.clone(),
+        Some(_) => {
+            return Err(invalid(Text::new(
+                "student は引用符で囲んだ 8 桁の数字にしてください",
+                "student must be 8 digits in quotes",
+            )));
+        }
+        None => return Err(invalid(Text::new("student がありません", "student is missing"))),
     };
     let student =
         digits.parse().map_err(|error| StudentFileError::Number { path: shown.clone(), error })?;
-    let table = match raw.table {
+    let table = match table.get("table") {
         None => TableVersion::LATEST,
         Some(v) => {
-            let given = v.to_string();
+            let given = shorten(&v.to_string());
             given
                 .trim_matches('"')
                 .parse()
@@ -123,18 +173,38 @@ pub fn read_student_file(path: &Path) -> Result<StudentFile, StudentFileError> {
     Ok(StudentFile { student, table })
 }
 
-/// Writes `exercises/student.toml` (or another path).
+/// The digits of a `student = 0123…` line without quotes, as written.
+fn unquoted_number(text: &str) -> Option<String> {
+    text.lines().find_map(|line| {
+        let (key, value) = line.split_once('=')?;
+        let value = value.split('#').next().unwrap_or_default().trim();
+        let digits = !value.is_empty() && value.bytes().all(|b| b.is_ascii_digit());
+        (key.trim() == "student" && digits).then(|| shorten(value))
+    })
+}
+
+/// `text` as it is, or its first 24 characters and "…": a message never echoes a whole file.
+fn shorten(text: &str) -> String {
+    if text.chars().count() > 24 {
+        format!("{}…", text.chars().take(24).collect::<String>())
+    } else {
+        text.to_owned()
+    }
+}
+
+/// Writes `exercises/student.toml` (or another path): to a file beside it, then renamed over
+/// it, so a full disk or a failed write never leaves the record empty.
 ///
 /// # Errors
-/// The file cannot be written; the message says which file and why.
-pub fn write_student_file(path: &Path, record: &StudentFile) -> Result<(), String> {
+/// The file cannot be written; the message says which file and why, in both languages.
+pub fn write_student_file(path: &Path, record: &StudentFile) -> Result<(), Text> {
     let text = format!(
         "# Your student number, recorded once (cargo run --release -- assignment --student N --save).\n\
          # 学生番号（最初に一度だけ記録します）。\n\
          student = \"{}\"\ntable = {}\n",
         record.student, record.table
     );
-    std::fs::write(path, text).map_err(|e| format!("{}: {e}", path.display()))
+    cg_core::fs::write_atomic(path, text.as_bytes()).map_err(|e| Text::io_at(path, &e))
 }
 
 /// The student a command is about: `given` (a `--student` option) when there is one, with
@@ -184,16 +254,55 @@ mod tests {
         let record = StudentFile { student: "01234567".parse().unwrap(), table: TableVersion::V1 };
         write_student_file(&path, &record).unwrap();
         assert_eq!(read_student_file(&path), Ok(record));
-        for (text, needle) in [
-            ("student = 1234567\n", "in quotes"),
-            ("student = \"1234567\"\n", "8 digits"),
-            ("studnet = \"12345678\"\n", "unknown field"),
-            ("student = \"12345678\"\ntable = 9\n", "no table 9"),
+        for (text, en, ja) in [
+            ("student = 1234567\n", "in quotes", "引用符で囲んで"),
+            // A leading zero: TOML would call it an error; the hint keeps the zero.
+            ("student = 01234567 # mine\n", "student = \"01234567\"", "student = \"01234567\""),
+            ("student = 12345678.0\n", "8 digits in quotes", "8 桁の数字"),
+            ("student = \"1234567\"\n", "8 digits", "8 桁"),
+            ("studnet = \"12345678\"\n", "no key `studnet`", "`studnet` というキーはありません"),
+            ("table = 1\n", "student is missing", "student がありません"),
+            ("student = \"12345678\"\ntable = 9\n", "no table 9", "table = 9"),
+            ("student = \"1\"\nstudent = \"2\"\n", "TOML syntax error", "構文エラー"),
         ] {
             std::fs::write(&path, text).unwrap();
             let e = read_student_file(&path).unwrap_err();
-            assert!(e.message(Lang::En).contains(needle), "{text:?}: {}", e.message(Lang::En));
+            assert!(e.message(Lang::En).contains(en), "{text:?}: {}", e.message(Lang::En));
+            assert!(e.message(Lang::Ja).contains(ja), "{text:?}: {}", e.message(Lang::Ja));
         }
+        std::fs::remove_dir_all(&d).ok();
+    }
+
+    /// The record as an editor writes it (UTF-16 with its BOM, Shift_JIS with a Japanese
+    /// comment) is read; a file that is there but cannot be read is not called missing, and a
+    /// large one is refused without reading it all.
+    #[test]
+    fn the_student_file_is_read_in_the_students_encodings_and_bounded() {
+        let d = dir("encodings");
+        let path = d.join("student.toml");
+        let text = "# 私の学生番号\r\nstudent = \"20260001\"\r\n";
+        let mut utf16 = vec![0xFF, 0xFE];
+        utf16.extend(text.encode_utf16().flat_map(u16::to_le_bytes));
+        // "# 私の学生番号" in Shift_JIS.
+        let mut sjis = b"# \x8e\x84\x82\xcc\x8aw\x90\xb6\x94\xd4\x8d\x86\r\n".to_vec();
+        sjis.extend_from_slice(b"student = \"20260001\"\r\n");
+        for bytes in [utf16, sjis] {
+            std::fs::write(&path, &bytes).unwrap();
+            let record = read_student_file(&path).unwrap_or_else(|e| panic!("{e}"));
+            assert_eq!(record.student.as_str(), "20260001");
+        }
+        std::fs::remove_file(&path).unwrap();
+        std::fs::create_dir(&path).unwrap();
+        let e = read_student_file(&path).unwrap_err();
+        assert!(matches!(e, StudentFileError::Unreadable { .. }), "{e}");
+        assert!(!e.message(Lang::Ja).contains("os error"), "{}", e.message(Lang::Ja));
+        std::fs::remove_dir(&path).unwrap();
+        let mut big = b"student = \"20260001\"\n#".to_vec();
+        big.resize(10 << 20, b'x');
+        std::fs::write(&path, &big).unwrap();
+        let e = read_student_file(&path).unwrap_err();
+        assert!(e.message(Lang::En).contains("too large"), "{e}");
+        assert!(e.message(Lang::En).len() < 300, "{e}");
         std::fs::remove_dir_all(&d).ok();
     }
 }

@@ -54,7 +54,7 @@ pub fn assignment(args: &AssignmentArgs, lang: Lang) -> Result<(), String> {
     let record = student(args.student.as_deref(), args.table, lang)?;
     if args.save {
         let path = exercises_dir().join("student.toml");
-        write_student_file(&path, &record)?;
+        write_student_file(&path, &record).map_err(|e| e.get(lang).to_owned())?;
         eprintln!("{} {}", t("記録しました:", "recorded in").get(lang), path.display());
     }
     let a = Variants::for_student(&record.student, record.table);
@@ -184,8 +184,8 @@ pub struct ViewArgs {
     /// The student number (default: exercises/student.toml) / 学生番号
     #[arg(long, value_name = "NUMBER", allow_hyphen_values = true)]
     student: Option<String>,
-    /// The time in seconds, for animations / 時刻（秒、アニメーション用）
-    #[arg(long, default_value_t = 0.0)]
+    /// The time in seconds, for animations, 0–16667 / 時刻（秒、アニメーション用、0〜16667）
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = seconds)]
     time: f64,
     /// a3 only: the in-class warm-up (three boxes) instead of your assignment / a3 のみ: 演習課題（3 つの直方体）を表示
     #[arg(long)]
@@ -224,6 +224,17 @@ fn degrees(min: f32, max: f32) -> impl Fn(&str) -> Result<f32, String> + Clone {
     move |s: &str| match s.parse::<f32>() {
         Ok(x) if x.is_finite() && (min..=max).contains(&x) => Ok(x),
         _ => Err(format!("{min} … {max}")),
+    }
+}
+
+/// `--time`: a finite number of seconds from 0 to the longest time an animation is drawn at
+/// ([`cg_assign::cg_a3::VIEW_MAX_S`]), so that both pictures are drawn at the time asked for
+/// (NaN or a time past it drew the reference at its first frame).
+fn seconds(s: &str) -> Result<f64, String> {
+    let max = cg_assign::cg_a3::VIEW_MAX_S;
+    match s.parse::<f64>() {
+        Ok(x) if x.is_finite() && (0.0..=max).contains(&x) => Ok(x),
+        _ => Err(format!("0 … {max:.0}")),
     }
 }
 
@@ -588,4 +599,28 @@ pub fn sync_stubs(lang: Lang) -> Result<(), String> {
         println!("{}", t("exercises/ は最新です", "exercises/ is up to date").get(lang));
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::Parser as _;
+
+    use crate::Cli;
+
+    /// `--time` is a finite number of seconds an animation is drawn at: NaN, an infinity, a
+    /// negative time or one past the last drawn frame is a usage error before anything runs
+    /// (they drew the reference at its first frame beside an error, and ended with 0).
+    #[test]
+    fn a_time_is_a_number_of_seconds_the_animation_is_drawn_at() {
+        let parse = |time: &str| Cli::try_parse_from(["cg", "view", "a3", "--time", time]);
+        for ok in ["0", "2.5", "16666"] {
+            assert!(parse(ok).is_ok(), "{ok}");
+        }
+        for bad in ["nan", "inf", "-inf", "-1", "-0.5", "1e9", "16668", "x"] {
+            let e = parse(bad).err().unwrap_or_else(|| panic!("{bad} was taken"));
+            assert_eq!(e.kind(), clap::error::ErrorKind::ValueValidation, "{bad}: {e}");
+        }
+        // The help's range is the limit's.
+        assert_eq!(cg_assign::cg_a3::VIEW_MAX_S.round(), 16667.0);
+    }
 }

@@ -52,6 +52,7 @@
 
 pub mod camera;
 pub mod features;
+pub mod fs;
 pub mod gl;
 pub mod image;
 pub mod lang;

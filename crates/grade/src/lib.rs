@@ -203,16 +203,7 @@ pub fn slot_content(kit: &Path) -> std::io::Result<String> {
     Ok(h.hex())
 }
 
-/// Writes `bytes` to `path` atomically: a temporary file beside it, then a rename.
-///
-/// # Errors
-/// The file could not be written or renamed.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let temp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
-    std::fs::write(&temp, bytes)?;
-    std::fs::rename(&temp, path)
-}
+pub use cg_core::fs::write_atomic;
 
 /// A name safe as a file name: letters, digits, `-`, `_` and `.` (not leading), others `_`.
 #[must_use]

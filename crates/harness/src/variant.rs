@@ -53,16 +53,33 @@ impl StudentNumberError {
     /// The message in both languages.
     #[must_use]
     pub fn text(&self) -> Text {
-        let (given, chars) = (&self.given, self.given.chars().count());
+        let chars = self.given.chars().count();
+        // A value pasted by mistake (a whole file) is not echoed whole.
+        let given = if chars > 24 {
+            format!("{}…", self.given.chars().take(24).collect::<String>())
+        } else {
+            self.given.clone()
+        };
         match self.given.chars().find(|c| !c.is_ascii_digit()) {
-            Some(c) => Text::new(
-                format!(
-                    "学生番号は 8 桁の数字です。\"{given}\" には数字でない文字 '{c}' があります"
-                ),
-                format!(
-                    "a student number is 8 digits; \"{given}\" has a character that is not a digit: '{c}'"
-                ),
-            ),
+            Some(c) => {
+                // An invisible character (a zero-width space pasted with the number) by its code.
+                let shown = if c.is_control()
+                    || c.is_whitespace()
+                    || matches!(c, '\u{200b}'..='\u{200f}' | '\u{2060}' | '\u{feff}')
+                {
+                    format!("U+{:04X}", u32::from(c))
+                } else {
+                    format!("'{c}'")
+                };
+                Text::new(
+                    format!(
+                        "学生番号は 8 桁の数字です。\"{given}\" には数字でない文字 {shown} があります"
+                    ),
+                    format!(
+                        "a student number is 8 digits; \"{given}\" has a character that is not a digit: {shown}"
+                    ),
+                )
+            }
             None => Text::new(
                 format!("学生番号は 8 桁の数字です。\"{given}\" は {chars} 桁です"),
                 format!("a student number is 8 digits; \"{given}\" has {chars}"),
@@ -73,11 +90,19 @@ impl StudentNumberError {
 
 impl FromStr for StudentNumber {
     type Err = StudentNumberError;
-    /// Accepts exactly 8 ASCII digits, after trimming surrounding white space.
+    /// Accepts exactly 8 digits after trimming surrounding white space: ASCII digits, or the
+    /// full-width ones a Japanese input method types (`１２３４５６７８` is `12345678`).
     fn from_str(s: &str) -> Result<StudentNumber, StudentNumberError> {
         let s = s.trim();
-        if s.len() == 8 && s.bytes().all(|b| b.is_ascii_digit()) {
-            Ok(StudentNumber(s.to_owned()))
+        let ascii: String = s
+            .chars()
+            .map(|c| match c {
+                '０'..='９' => char::from(b'0' + (u32::from(c) - u32::from('０')) as u8),
+                _ => c,
+            })
+            .collect();
+        if ascii.len() == 8 && ascii.bytes().all(|b| b.is_ascii_digit()) {
+            Ok(StudentNumber(ascii))
         } else {
             Err(StudentNumberError { given: s.to_owned() })
         }
@@ -220,8 +245,18 @@ mod tests {
     fn student_numbers_are_exactly_eight_digits() {
         assert_eq!("12345678".parse::<StudentNumber>().unwrap().as_str(), "12345678");
         assert_eq!(" 00000001\n".parse::<StudentNumber>().unwrap().as_str(), "00000001");
-        for bad in ["1234567", "123456789", "1234567a", "", "１２３４５６７８", "12 45678"]
-        {
+        // The full-width digits a Japanese input method types are the same number.
+        assert_eq!("１２３４５６７８".parse::<StudentNumber>().unwrap().as_str(), "12345678");
+        assert_eq!("　０１２３４５６7 ".parse::<StudentNumber>().unwrap().as_str(), "01234567");
+        for bad in [
+            "1234567",
+            "123456789",
+            "1234567a",
+            "",
+            "１２３４５６７",
+            "12 45678",
+            "１２３４５６７８９",
+        ] {
             let e = bad.parse::<StudentNumber>().unwrap_err();
             assert!(e.message(Lang::Ja).contains("8 桁"), "{bad}: {}", e.message(Lang::Ja));
             assert!(e.message(Lang::En).contains("8 digits"), "{bad}");
@@ -230,6 +265,14 @@ mod tests {
         assert!(e.message(Lang::En).contains("'a'"), "{e}");
         let e = "1234567".parse::<StudentNumber>().unwrap_err();
         assert!(e.message(Lang::En).contains("has 7"), "{e}");
+        // An invisible character by its code; a long value shortened, not echoed whole.
+        let e = "1234\u{200b}5678".parse::<StudentNumber>().unwrap_err();
+        assert!(e.message(Lang::Ja).contains("U+200B"), "{e}");
+        let e = "1".repeat(100_000).parse::<StudentNumber>().unwrap_err();
+        assert!(
+            e.message(Lang::Ja).len() < 200 && e.message(Lang::En).contains("has 100000"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -107,7 +107,8 @@ pub(crate) fn save_png(path: &Path, image: &Image) -> Result<(), SceneError> {
             cg_core::lang::Text::new(format!("PNG に変換できません（{e}）"), e.to_string());
         SceneError::in_file(path, ErrorKind::Write { reason })
     })?;
-    std::fs::write(path, &encoded).map_err(|e| {
+    // A failed write (a full disk) keeps the picture that was there.
+    cg_core::fs::write_atomic(path, &encoded).map_err(|e| {
         SceneError::in_file(path, ErrorKind::Write { reason: cg_core::lang::Text::io(&e) })
     })
 }
