@@ -198,10 +198,17 @@ pub fn explain(error: &clap::Error, lang: Lang) -> Option<String> {
     Some(out)
 }
 
-/// A value parser's reason in Japanese, for the reasons of clap's and the standard library's
-/// number parsers (`0 is not in 1..=16384`, `invalid digit found in string`); any other reason
-/// (the kit's own parsers give ranges such as `-90 … 90`) as it is.
+/// A value parser's reason in Japanese: the Japanese half of the kit's own two-language reasons
+/// (`unknown encoding … / 文字コード … は使えません…`), the reasons of clap's and the standard
+/// library's number parsers (`0 is not in 1..=16384`, `invalid digit found in string`) in
+/// Japanese; any other reason (ranges such as `-90 … 90`) as it is.
 fn reason_ja(why: &str) -> String {
+    // The kit's own parse errors are "English / 日本語": the Japanese half.
+    if let Some((_, ja)) = why.rsplit_once(" / ")
+        && !ja.is_ascii()
+    {
+        return ja.to_owned();
+    }
     if let Some((_, range)) = why.split_once(" is not in ") {
         return match range.split_once("..=") {
             Some((low, high)) => format!("{low} から {high} までの数にしてください"),
@@ -257,6 +264,8 @@ mod tests {
         exact: bool,
         #[arg(long)]
         count: Option<usize>,
+        #[arg(long)]
+        language: Option<Lang>,
         #[command(subcommand)]
         command: Option<Command>,
     }
@@ -312,6 +321,9 @@ mod tests {
         let text = ja(&["demo", "--count", "99999999999999999999999"]);
         assert!(text.contains("が正しくありません: 大きすぎます"), "{text}");
         assert!(!text.contains("target type"), "{text}");
+        // The kit's own "English / 日本語" reasons: the Japanese half alone.
+        let text = ja(&["demo", "--language", "fr"]);
+        assert!(text.contains("言語は \"ja\" か \"en\"") && !text.contains("unknown"), "{text}");
     }
 
     #[test]
