@@ -43,36 +43,97 @@ pub(crate) enum Tok {
     Other(String),
 }
 
+/// The most tokens kept after the last separator, line break or word `s`/`t`: more than an
+/// expression may have ([`MAX_TOKENS`]) with room for the `s(i, j) =` before it, so an
+/// expression that runs past it is too long whether or not the rest is kept.
+const RUN_LIMIT: usize = MAX_TOKENS + 16;
+/// The most tokens kept on one line; the rest of a longer line is left out.
+const LINE_LIMIT: usize = 8 * MAX_TOKENS;
+
+/// The tokens read so far, within [`RUN_LIMIT`] and [`LINE_LIMIT`]: what a formula of any length
+/// needs for its equations to read as they would in full (one running past the limit is too long
+/// either way), in memory that does not grow with the line.
+struct Kept {
+    out: Vec<(usize, Tok)>,
+    /// Tokens kept since the last separator, line break or `s`/`t`.
+    run: usize,
+    /// Tokens kept on this line.
+    on_line: usize,
+}
+
+impl Kept {
+    fn line_full(&self) -> bool {
+        self.on_line >= LINE_LIMIT
+    }
+
+    fn push(&mut self, line: usize, tok: Tok) {
+        let resets = match &tok {
+            Tok::Newline => {
+                self.on_line = 0;
+                true
+            }
+            Tok::Sep => true,
+            Tok::Word(w) => w == "s" || w == "t",
+            _ => false,
+        };
+        if self.line_full() {
+            return;
+        }
+        if resets {
+            self.run = 0;
+        } else if self.run >= RUN_LIMIT {
+            return;
+        } else {
+            self.run += 1;
+        }
+        if tok != Tok::Newline {
+            self.on_line += 1;
+        }
+        self.out.push((line, tok));
+    }
+}
+
 /// `text` as tokens, each with its line (`first_line` for the first); `$`, `&`, spaces and
-/// LaTeX's spacing and sizing commands are left out.
+/// LaTeX's spacing and sizing commands are left out. Bounded: past [`RUN_LIMIT`] tokens of one
+/// expression and [`LINE_LIMIT`] tokens of one line, the tokens are not kept (the expression is
+/// too long to read, [`MAX_TOKENS`], either way).
 pub(crate) fn tokens(text: &str, first_line: usize) -> Vec<(usize, Tok)> {
-    let chars: Vec<char> = text.chars().collect();
-    let mut out = Vec::new();
+    let bytes = text.as_bytes();
+    let digit_at = |k: usize| bytes.get(k).is_some_and(u8::is_ascii_digit);
+    let alpha_at = |k: usize| bytes.get(k).is_some_and(u8::is_ascii_alphabetic);
+    let mut kept = Kept { out: Vec::new(), run: 0, on_line: 0 };
     let mut line = first_line;
+    // The first `}` at or after a position, as last looked for (for `\begin{…}`): (from, where).
+    let mut next_close: Option<(usize, Option<usize>)> = None;
+    // `k` is a byte offset, always at a character's start.
     let mut k = 0;
-    while let Some(&c) = chars.get(k) {
-        k += 1;
+    'chars: while let Some(c) = text[k..].chars().next() {
+        k += c.len_utf8();
+        if c != '\n' && kept.line_full() {
+            k = text[k..].find('\n').map_or(text.len(), |n| k + n);
+            continue;
+        }
         let tok = match c {
             '\n' => {
-                out.push((line, Tok::Newline));
+                kept.push(line, Tok::Newline);
                 line += 1;
                 continue;
             }
             c if c.is_whitespace() || matches!(c, '$' | '&' | '~') => continue,
-            '0'..='9' | '.' if c != '.' || chars.get(k).is_some_and(char::is_ascii_digit) => {
+            '0'..='9' | '.' if c != '.' || digit_at(k) => {
                 let start = k - 1;
-                while chars.get(k).is_some_and(char::is_ascii_digit) {
+                while digit_at(k) {
                     k += 1;
                 }
-                if chars.get(k) == Some(&'.') && chars.get(k + 1).is_some_and(char::is_ascii_digit)
-                {
+                if bytes.get(k) == Some(&b'.') && digit_at(k + 1) {
                     k += 1;
-                    while chars.get(k).is_some_and(char::is_ascii_digit) {
+                    while digit_at(k) {
                         k += 1;
                     }
                 }
-                let digits: String = chars[start..k].iter().collect();
-                let digits = if digits.starts_with('.') { format!("0{digits}") } else { digits };
+                let digits = &text[start..k];
+                let digits =
+                    if digits.starts_with('.') { format!("0{digits}") } else { digits.to_owned() };
                 match digits.parse::<f64>() {
                     Ok(x) if x.is_finite() => Tok::Num(x),
                     _ => Tok::Other(digits),
@@ -80,30 +141,29 @@ pub(crate) fn tokens(text: &str, first_line: usize) -> Vec<(usize, Tok)> {
             }
             c if c.is_ascii_alphabetic() => {
                 let start = k - 1;
-                while chars.get(k).is_some_and(char::is_ascii_alphabetic) {
+                while alpha_at(k) {
                     k += 1;
                 }
-                let word: String = chars[start..k].iter().collect();
+                let word = &text[start..k];
                 if word == "mod" {
                     Tok::Op('%')
                 } else if word.chars().all(|c| matches!(c, 'i' | 'j')) {
                     // `ij` is i·j, as juxtaposition reads.
                     for c in word.chars() {
-                        out.push((line, Tok::Var(c)));
+                        kept.push(line, Tok::Var(c));
                     }
                     continue;
                 } else {
-                    Tok::Word(word)
+                    Tok::Word(word.to_owned())
                 }
             }
             '\\' => {
                 let start = k;
-                while chars.get(k).is_some_and(char::is_ascii_alphabetic) {
+                while alpha_at(k) {
                     k += 1;
                 }
-                let name: String = chars[start..k].iter().collect();
-                match name.as_str() {
-                    "" => match chars.get(k) {
+                match &text[start..k] {
+                    "" => match text[k..].chars().next() {
                         Some('\\') => {
                             k += 1;
                             Tok::Sep
@@ -113,8 +173,8 @@ pub(crate) fn tokens(text: &str, first_line: usize) -> Vec<(usize, Tok)> {
                             k += 1;
                             continue;
                         }
-                        Some(&c) => {
-                            k += 1;
+                        Some(c) => {
+                            k += c.len_utf8();
                             Tok::Other(format!("\\{c}"))
                         }
                         None => Tok::Other("\\".to_owned()),
@@ -127,22 +187,19 @@ pub(crate) fn tokens(text: &str, first_line: usize) -> Vec<(usize, Tok)> {
                     "left" | "right" | "big" | "Big" | "bigl" | "bigr" | "Bigl" | "Bigr" => {
                         continue;
                     }
-                    // `\operatorname{mod}`, `\mathrm{mod}`, `\text{mod}`: the word inside reads.
+                    // `\operatorname{mod}`, `\mathrm{mod}`, `\text{mod}`: the word inside reads
+                    // (when the braces hold it alone, spaces aside).
                     "operatorname" | "mathrm" | "text" | "textrm" | "mathit" => {
-                        if chars.get(k) == Some(&'{') {
-                            let close = chars[k..].iter().position(|&c| c == '}');
-                            if let Some(close) = close {
-                                let inner: String = chars[k + 1..k + close].iter().collect();
-                                let inner = inner.trim();
-                                if inner == "mod" {
-                                    k += close + 1;
-                                    out.push((line, Tok::Op('%')));
-                                    continue;
-                                }
-                                if matches!(inner, "i" | "j") {
-                                    k += close + 1;
-                                    out.push((line, Tok::Var(inner.chars().next().unwrap_or('i'))));
-                                    continue;
+                        if bytes.get(k) == Some(&b'{') {
+                            let inside = text[k + 1..].trim_start();
+                            for (word, tok) in
+                                [("mod", Tok::Op('%')), ("i", Tok::Var('i')), ("j", Tok::Var('j'))]
+                            {
+                                let rest = inside.strip_prefix(word).map(str::trim_start);
+                                if let Some(rest) = rest.filter(|r| r.starts_with('}')) {
+                                    k = text.len() - rest.len() + 1;
+                                    kept.push(line, tok);
+                                    continue 'chars;
                                 }
                             }
                         }
@@ -150,14 +207,23 @@ pub(crate) fn tokens(text: &str, first_line: usize) -> Vec<(usize, Tok)> {
                     }
                     "begin" | "end" => {
                         // `\begin{aligned}`: the environment's name is not part of the formula.
-                        if chars.get(k) == Some(&'{')
-                            && let Some(close) = chars[k..].iter().position(|&c| c == '}')
-                        {
-                            k += close + 1;
+                        if bytes.get(k) == Some(&b'{') {
+                            let close = match next_close {
+                                Some((from, found))
+                                    if from <= k && found.is_none_or(|f| f >= k) =>
+                                {
+                                    found
+                                }
+                                _ => text[k..].find('}').map(|c| k + c),
+                            };
+                            next_close = Some((k, close));
+                            if let Some(close) = close {
+                                k = close + 1;
+                            }
                         }
                         continue;
                     }
-                    _ => Tok::Other(format!("\\{name}")),
+                    name => Tok::Other(format!("\\{name}")),
                 }
             }
             '+' | '＋' => Tok::Op('+'),
@@ -173,9 +239,9 @@ pub(crate) fn tokens(text: &str, first_line: usize) -> Vec<(usize, Tok)> {
             ',' | ';' | '、' | '。' | '，' | '；' | '.' => Tok::Sep,
             c => Tok::Other(c.to_string()),
         };
-        out.push((line, tok));
+        kept.push(line, tok);
     }
-    out
+    kept.out
 }
 
 /// A variable of the formula.

@@ -290,3 +290,77 @@ fn the_words_leave_the_formula_in_i_and_j_to_the_tagged_one() {
         }
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Hostile sizes: a formula line of megabytes is read in memory that does not grow with it.
+
+fn too_long(e: &Equation) -> bool {
+    e.expr.as_ref().is_err_and(|why| why.en == "the expression is too long")
+}
+
+#[test]
+fn a_formula_of_megabytes_is_too_long_and_its_tokens_are_bounded() {
+    // `s = ------…` (5 MB): the tokens were all kept (a char and a token each, 2.3 GB for 30 MB).
+    let text = format!("s = {}\nt = 0.5 + j / 40", "-".repeat(5_000_000));
+    let toks = expr::tokens(&text, 3);
+    assert!(toks.len() < 2 * expr::MAX_TOKENS, "{} tokens kept", toks.len());
+    let eqs = equations(&text, 3);
+    assert_eq!(eqs.len(), 2, "{eqs:?}");
+    assert_eq!((eqs[0].name, eqs[0].line), ('s', 3));
+    assert!(too_long(&eqs[0]), "{:?}", eqs[0].expr);
+    assert!(eqs[0].text.ends_with('…') && eqs[0].text.chars().count() == 80);
+    assert_eq!((eqs[1].name, eqs[1].line), ('t', 4));
+    assert!(eqs[1].expr.is_ok(), "{:?}", eqs[1].expr);
+}
+
+#[test]
+fn an_expression_past_the_limit_ends_where_it_did() {
+    // A long expression, then the next equation on the same line, after a separator or not:
+    // what follows the expression reads as it did when every token was kept.
+    for sep in [", ", " ", "; "] {
+        let text = format!("s = 0.25{}{sep}t = 0.625 - j / 40", " + i".repeat(20_000));
+        let eqs = equations(&text, 1);
+        assert_eq!(eqs.len(), 2, "{sep:?}: {eqs:?}");
+        assert!(too_long(&eqs[0]), "{sep:?}");
+        assert_eq!(eqs[1].name, 't');
+        assert!(eqs[1].expr.is_ok(), "{sep:?}: {:?}", eqs[1].expr);
+    }
+    // Just within the limit: every token is there.
+    let text = format!("s = i{}", " + i".repeat((expr::MAX_TOKENS - 1) / 2));
+    let eqs = equations(&text, 1);
+    assert_eq!(eqs[0].expr.as_ref().map(|e| e.eval(1.0, 0.0)), Ok(vec![200.0]));
+    // A line that continues after an operator, past the limit: too long, then the next line.
+    let text = format!("s = 0.25 +\n{} +\n0.5\nt = j", "i + ".repeat(300));
+    let eqs = equations(&text, 1);
+    assert_eq!(eqs.len(), 2, "{eqs:?}");
+    assert!(too_long(&eqs[0]));
+    assert_eq!((eqs[1].name, eqs[1].line), ('t', 4));
+}
+
+#[test]
+fn unclosed_environments_and_words_read_in_one_pass() {
+    // `\begin{\begin{…` and `\text{ \text{ …` without their `}`: each looked to the end.
+    let text = format!("{}\ns = i / 40", "\\begin{".repeat(200_000));
+    let eqs = equations(&text, 1);
+    assert_eq!(eqs.len(), 1, "{eqs:?}");
+    assert_eq!(eqs[0].expr.as_ref().map(|e| e.eval(4.0, 0.0)), Ok(vec![0.1]));
+    let text = format!("s = i {}", "\\text{ ".repeat(200_000));
+    let toks = expr::tokens(&text, 1);
+    assert!(toks.len() < 2 * expr::MAX_TOKENS, "{} tokens kept", toks.len());
+    // The words inside the braces, spaces and line breaks aside, as before.
+    let text = "s = (i \\operatorname{ mod } 5) \\text{\n j \n} \\begin{aligned} \\end{aligned}";
+    let toks: Vec<Tok> = expr::tokens(text, 1).into_iter().map(|(_, t)| t).collect();
+    assert_eq!(
+        toks,
+        [
+            Tok::Word("s".to_owned()),
+            Tok::Eq,
+            Tok::Open('('),
+            Tok::Var('i'),
+            Tok::Op('%'),
+            Tok::Num(5.0),
+            Tok::Close(')'),
+            Tok::Var('j'),
+        ]
+    );
+}

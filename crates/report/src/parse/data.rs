@@ -1,6 +1,8 @@
 //! A polygon model from a vertex and face list alone ([`polygon_from_text`]): the rows the
 //! reader found, numbered without gaps, as the data of the report's checks.
 
+use std::collections::HashSet;
+
 use cg_core::glam::Vec3;
 use cg_harness::Text;
 
@@ -64,34 +66,33 @@ pub fn polygon_from_text(text: &str, name: Text) -> Result<PolygonData, Vec<Pars
     }
     let n = report.vertices.len();
     let m = report.faces.len();
-    let missing = |present: &dyn Fn(u32) -> bool, count: usize, letter: char| -> String {
+    // The numbers present, as sets: a face names three vertices and every row is looked up
+    // once, so the lookups stay O(1) however long the lists are.
+    let vertex_numbers: HashSet<u32> = report.vertices.iter().map(|v| v.index).collect();
+    let face_numbers: HashSet<u32> = report.faces.iter().map(|f| f.index).collect();
+    let has_vertex = |k: u32| vertex_numbers.contains(&k);
+    // The first gaps (at most 5) of `0..count`, computed once: the same for every row out of range.
+    let missing = |present: &HashSet<u32>, count: usize, letter: char| -> String {
         let gaps: Vec<String> = (0..count)
             .filter_map(|k| u32::try_from(k).ok())
-            .filter(|&k| !present(k))
+            .filter(|k| !present.contains(k))
             .take(5)
             .map(|k| format!("{letter}{k}"))
             .collect();
         gaps.join(", ")
     };
-    let has_vertex = |k: u32| report.vertices.iter().any(|v| v.index == k);
-    let has_face = |k: u32| report.faces.iter().any(|f| f.index == k);
+    let mut missing_vertices: Option<String> = None;
+    let mut missing_faces: Option<String> = None;
     let mut vertices = vec![Vec3::ZERO; n];
     for v in &report.vertices {
         if v.index as usize >= n {
+            let gaps = missing_vertices.get_or_insert_with(|| missing(&vertex_numbers, n, 'V'));
             push(
                 v.line,
                 vertex_text(v),
                 Text::new(
-                    format!(
-                        "V0 から V{} まで欠けのない頂点番号（{} がありません）",
-                        n - 1,
-                        missing(&has_vertex, n, 'V')
-                    ),
-                    format!(
-                        "vertex numbers V0 to V{} without gaps ({} is missing)",
-                        n - 1,
-                        missing(&has_vertex, n, 'V')
-                    ),
+                    format!("V0 から V{} まで欠けのない頂点番号（{} がありません）", n - 1, gaps),
+                    format!("vertex numbers V0 to V{} without gaps ({} is missing)", n - 1, gaps),
                 ),
             );
             continue;
@@ -105,20 +106,13 @@ pub fn polygon_from_text(text: &str, name: Text) -> Result<PolygonData, Vec<Pars
     let mut normals: Vec<Option<Vec3>> = vec![None; m];
     for f in &report.faces {
         if f.index as usize >= m {
+            let gaps = missing_faces.get_or_insert_with(|| missing(&face_numbers, m, 'F'));
             push(
                 f.line,
                 face_text(f),
                 Text::new(
-                    format!(
-                        "F0 から F{} まで欠けのない面番号（{} がありません）",
-                        m - 1,
-                        missing(&has_face, m, 'F')
-                    ),
-                    format!(
-                        "face numbers F0 to F{} without gaps ({} is missing)",
-                        m - 1,
-                        missing(&has_face, m, 'F')
-                    ),
+                    format!("F0 から F{} まで欠けのない面番号（{} がありません）", m - 1, gaps),
+                    format!("face numbers F0 to F{} without gaps ({} is missing)", m - 1, gaps),
                 ),
             );
             continue;

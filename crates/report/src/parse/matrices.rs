@@ -57,13 +57,24 @@ impl Reader {
             let n = k + 1;
             let base = line_starts[k];
             let mut from = 0;
+            // The first `-->` at or after a position, as last looked for: (from where, where).
+            // The tags of a line are read left to right, so each part of it is searched once.
+            let mut next_close: Option<(usize, Option<usize>)> = None;
             while let Some(p) = line[from..].find("<!--") {
                 let p = from + p;
                 let after = &line[p + 4..];
                 let body = after.trim_start();
                 from = p + 4;
                 let Some(rest) = body.strip_prefix("cg:") else { continue };
-                let Some(close) = rest.find("-->") else {
+                let rest_at = line.len() - rest.len();
+                let found = match next_close {
+                    Some((at, found)) if at <= rest_at && found.is_none_or(|f| f >= rest_at) => {
+                        found
+                    }
+                    _ => line[rest_at..].find("-->").map(|k| rest_at + k),
+                };
+                next_close = Some((rest_at, found));
+                let Some(close) = found.map(|f| f - rest_at) else {
                     self.problem(n, &line[p..], expected_tag(), RowKind::Matrix);
                     continue;
                 };
@@ -168,7 +179,9 @@ impl Reader {
         let line_of = |offset: usize| line_starts.partition_point(|&s| s <= offset);
         let body_start = begin + BEGIN.len();
         let begin_line = line_of(begin);
-        let begin_text = text[line_starts[begin_line - 1]..].split('\n').next().unwrap_or("");
+        // The line of the `\begin`, up to its line break (the next line's start, less the `\n`).
+        let begin_text = &text[line_starts[begin_line - 1]
+            ..line_starts.get(begin_line).map_or(text.len(), |&next| next - 1)];
         let Some(e) = text[body_start..region_end].find(END) else {
             let expected = Text::new(
                 "行列を閉じる `\\end{pmatrix}`（次のタグより前に）",

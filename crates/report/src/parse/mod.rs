@@ -221,7 +221,8 @@ pub fn parse_number(s: &str) -> Option<Written> {
 // ---------------------------------------------------------------------------------------------
 // Scanning a line
 
-/// Full-width punctuation read as ASCII (one char for one char, so the rest of the line stays).
+/// Full-width punctuation and digits read as ASCII (one char for one char, so the rest of the
+/// line stays).
 pub(crate) fn normalize(line: &str) -> String {
     // LaTeX's escaped braces `\{ … \}` read as braces (a `\\` row end stays as it is).
     let mut unescaped = String::with_capacity(line.len());
@@ -247,7 +248,10 @@ pub(crate) fn normalize(line: &str) -> String {
             '｜' => '|',
             '＝' => '=',
             '：' => ':',
+            '．' => '.',
             '\u{3000}' => ' ',
+            // Full-width digits (an input method's ０.４９) are the same digits.
+            '０'..='９' => char::from_digit(u32::from(c) - u32::from('０'), 10).unwrap_or(c),
             _ => c,
         })
         .collect()
@@ -255,14 +259,20 @@ pub(crate) fn normalize(line: &str) -> String {
 
 /// The text clipped to 80 characters (79 and `…`), trimmed.
 /// A row as a message quotes it: at most 80 characters, invisible characters named (`<U+200B>`).
+/// Reads only as far as it must (the first 80 characters, and past them only up to a character
+/// that is not whitespace), so quoting the rest of a long line costs no more than a short one.
 pub(crate) fn clip(s: &str) -> String {
-    let s = s.trim();
-    if s.chars().count() <= 80 {
-        cg_core::quote::visible(s)
-    } else {
-        let mut out = cg_core::quote::visible(&s.chars().take(79).collect::<String>());
-        out.push('…');
-        out
+    let s = s.trim_start();
+    match s.char_indices().nth(80) {
+        // Something other than whitespace after the 80th character: the trimmed text is longer.
+        Some((at, _)) if s[at..].contains(|c: char| !c.is_whitespace()) => {
+            let cut = s.char_indices().nth(79).map_or(s.len(), |(i, _)| i);
+            let mut out = cg_core::quote::visible(&s[..cut]);
+            out.push('…');
+            out
+        }
+        Some((at, _)) => cg_core::quote::visible(s[..at].trim_end()),
+        None => cg_core::quote::visible(s.trim_end()),
     }
 }
 
@@ -337,7 +347,13 @@ enum GroupError {
     NotNumber(String),
 }
 
+/// The most bytes a group's content may have: a closing bracket further on is not looked for,
+/// and the group reads as not closed (a row of three numbers is far shorter). This keeps a line
+/// of many unclosed groups (`V0 (V0 (V0 ( …`) linear to read.
+const MAX_GROUP: usize = 1024;
+
 /// The group that opens at `pos` (`(` or `{`): (its content's range, the position after it).
+/// A group whose closing bracket is not within [`MAX_GROUP`] bytes is not closed.
 fn group(line: &str, pos: usize) -> Option<Result<(usize, usize, usize), GroupError>> {
     let close = match line[pos..].chars().next()? {
         '(' => ')',
@@ -345,7 +361,11 @@ fn group(line: &str, pos: usize) -> Option<Result<(usize, usize, usize), GroupEr
         _ => return None,
     };
     let start = pos + 1;
-    Some(match line[start..].find(close) {
+    let mut end = line.len().min(start + MAX_GROUP + 1);
+    while !line.is_char_boundary(end) {
+        end -= 1;
+    }
+    Some(match line[start..end].find(close) {
         Some(k) => Ok((start, start + k, start + k + 1)),
         None => Err(GroupError::Unclosed),
     })
@@ -408,11 +428,11 @@ fn tuple_chain(
 }
 
 /// Whether the group at `pos` holds something like data (a digit or a comma), not words such
-/// as `V0 (the apex)`.
+/// as `V0 (the apex)`. Reads up to the first digit, comma or closing bracket.
 fn looks_like_data(line: &str, pos: usize) -> bool {
-    let rest = &line[pos..];
-    let content = rest.find([')', '}']).map_or(rest, |k| &rest[..k]);
-    content.contains(|c: char| c.is_ascii_digit() || c == ',')
+    line[pos..]
+        .find(|c: char| c.is_ascii_digit() || matches!(c, ',' | ')' | '}'))
+        .is_some_and(|k| !matches!(line.as_bytes()[pos + k], b')' | b'}'))
 }
 
 /// Three vertex numbers `V0, V3, V1`.
@@ -516,13 +536,27 @@ pub(super) fn expected_number_size() -> Text {
 struct Reader {
     report: ParsedReport,
     problems: Vec<ParseProblem>,
+    /// Problems not kept (past [`MAX_PROBLEMS_PER_LINE`] on a line or [`MAX_PROBLEMS`] in all).
+    dropped: usize,
     vertex_at: HashMap<u32, usize>,
     face_at: HashMap<u32, usize>,
     tex_at: HashMap<(u32, u32), usize>,
 }
 
+/// The most problems kept for one line: a line of a million `F0 {` is named a few times, not a
+/// million (each kept problem costs a quote and a message).
+const MAX_PROBLEMS_PER_LINE: usize = 20;
+
+/// The most problems kept in all; the rest are counted in one last problem.
+const MAX_PROBLEMS: usize = 1000;
+
 impl Reader {
     fn problem(&mut self, line: usize, found: &str, expected: Text, kind: RowKind) {
+        let on_line = self.problems.iter().rev().take_while(|p| p.line == line).count();
+        if on_line >= MAX_PROBLEMS_PER_LINE || self.problems.len() >= MAX_PROBLEMS {
+            self.dropped += 1;
+            return;
+        }
         self.problems.push(ParseProblem { line, found: clip(found), expected, kind });
     }
 
@@ -770,6 +804,7 @@ pub fn parse_report(text: &str) -> (ParsedReport, Vec<ParseProblem>) {
     let mut reader = Reader {
         report: ParsedReport::default(),
         problems: Vec::new(),
+        dropped: 0,
         vertex_at: HashMap::new(),
         face_at: HashMap::new(),
         tex_at: HashMap::new(),
@@ -785,6 +820,22 @@ pub fn parse_report(text: &str) -> (ParsedReport, Vec<ParseProblem>) {
     reader.report.formulas = crate::formula::parse_formulas(&lines);
     reader.problems.extend(problems);
     reader.problems.sort_by_key(|p| p.line);
+    if reader.dropped > 0 {
+        let n = reader.dropped;
+        reader.problems.push(ParseProblem {
+            line: 0,
+            found: String::new(),
+            expected: Text::new(
+                format!(
+                    "上の行を直すこと（読めない所はほかに {n} か所あります。1 行に {MAX_PROBLEMS_PER_LINE} か所、全部で {MAX_PROBLEMS} か所まで示しています）"
+                ),
+                format!(
+                    "the lines above fixed ({n} more places could not be read; at most {MAX_PROBLEMS_PER_LINE} a line and {MAX_PROBLEMS} in all are named)"
+                ),
+            ),
+            kind: RowKind::Data,
+        });
+    }
     (reader.report, reader.problems)
 }
 

@@ -397,3 +397,200 @@ proptest! {
         }
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Hostile sizes: each of these reads in linear time (a fraction of a second); the reader that
+// searched a list or the rest of a line once per row or token took minutes on them.
+
+/// `clip` as it was first written (count every character, then cut): the oracle for the
+/// `clip` that reads only as far as it must.
+fn clip_by_counting(s: &str) -> String {
+    let s = s.trim();
+    if s.chars().count() <= 80 {
+        cg_core::quote::visible(s)
+    } else {
+        let mut out = cg_core::quote::visible(&s.chars().take(79).collect::<String>());
+        out.push('…');
+        out
+    }
+}
+
+#[test]
+fn clip_reads_only_as_far_as_it_must() {
+    let long = format!("{}{}", "a".repeat(80), " ".repeat(1000));
+    let cases = [
+        String::new(),
+        "   ".to_owned(),
+        "  V0 (0.0, 1.0)  ".to_owned(),
+        "x".repeat(80),
+        "x".repeat(81),
+        format!("{}  ", "x".repeat(81)),
+        format!("  {}\t\n", "あ".repeat(80)),
+        format!("{}\u{3000}y", "あ".repeat(80)),
+        format!("{}\u{200B}{}", "b".repeat(60), "c".repeat(40)),
+        long.clone(),
+        format!("{long}z"),
+    ];
+    for s in &cases {
+        assert_eq!(clip(s), clip_by_counting(s), "{s:?}");
+    }
+    let line = "F0 { ".repeat(1_000_000);
+    assert_eq!(clip(&line), clip_by_counting(&line));
+}
+
+proptest! {
+    #![proptest_config(cg_testkit::prop::config(256, 0x5eed_0011))]
+
+    #[test]
+    fn clip_is_clip_by_counting(s in "[ a\u{3000}\u{200B}\t]{0,100}", n in 0usize..100) {
+        let s = format!("{s}{}", "あ ".repeat(n));
+        prop_assert_eq!(clip(&s), clip_by_counting(&s));
+    }
+}
+
+#[test]
+fn groups_of_a_few_hundred_characters_still_read() {
+    // `longdec`: a number with hundreds of decimals is a group like any other.
+    let zeros = "0".repeat(900);
+    let text = format!("V0 (0.{zeros}1, 1.0, 0.0)\n");
+    let (r, problems) = parse_report(&text);
+    assert!(problems.is_empty(), "{problems:?}");
+    assert_eq!(r.vertices[0].coords[0].decimals, 901);
+    // A group that does not close within its bound reads as not closed.
+    let text = format!("V0 (0.{}1, 1.0, 0.0)\n", "0".repeat(2000));
+    let (r, problems) = parse_report(&text);
+    assert!(r.vertices.is_empty());
+    assert_eq!(problems.len(), 1, "{problems:?}");
+    assert!(problems[0].expected.en.ends_with("(the bracket is not closed)"), "{problems:?}");
+}
+
+#[test]
+fn a_line_of_unclosed_vertex_groups_is_one_problem() {
+    // 5 MB: `V0 (V0 (V0 ( …`; each group was looked for up to the end of the line.
+    let text = "V0 (".repeat(1_250_000);
+    let (r, problems) = parse_report(&text);
+    assert!(r.is_empty());
+    assert_eq!(problems.len(), 1, "only the row the line starts with");
+    let p = &problems[0];
+    messages_name(p, 1);
+    assert_eq!(p.found, format!("{}…", &text[..79]));
+    assert!(p.expected.en.ends_with("(the bracket is not closed)"), "{p:?}");
+}
+
+#[test]
+fn a_line_of_unclosed_face_groups_names_each_with_its_text() {
+    // 1 MB: `F0 { F0 { …`; each problem quoted (and counted) the rest of the line.
+    let count = 200_000;
+    let text = "F0 { ".repeat(count);
+    let (_, problems) = parse_report(&text);
+    // The first few are named; the rest are counted in one last problem.
+    assert_eq!(problems.len(), MAX_PROBLEMS_PER_LINE + 1);
+    let last = &problems[MAX_PROBLEMS_PER_LINE];
+    let more = format!("{} more places", count - MAX_PROBLEMS_PER_LINE);
+    assert!(last.line == 0 && last.expected.en.contains(&more), "{last:?}");
+    for (k, p) in problems[..MAX_PROBLEMS_PER_LINE].iter().enumerate() {
+        assert_eq!(p.line, 1);
+        assert!(p.expected.en.ends_with("(the bracket is not closed)"), "{p:?}");
+        let rest = text[5 * k..].trim();
+        let expected =
+            if rest.len() <= 80 { rest.to_owned() } else { format!("{}…", &rest[..79]) };
+        assert_eq!(p.found, expected);
+    }
+}
+
+#[test]
+fn a_line_of_unclosed_tags_names_each_once() {
+    // 1 MB: `<!-- cg: <!-- cg: …`; each tag looked for its `-->` up to the end of the line.
+    let count = 110_000;
+    let text = format!("{}\n<!-- cg: a1.transform -->\n", "<!-- cg: ".repeat(count));
+    let (_, problems) = parse_report(&text);
+    let tags: Vec<_> = problems.iter().filter(|p| p.line == 1).collect();
+    assert_eq!(tags.len(), MAX_PROBLEMS_PER_LINE);
+    let first = text.lines().next().unwrap_or("");
+    for (k, p) in tags.iter().enumerate() {
+        assert_eq!(p.kind, RowKind::Matrix);
+        let rest = first[9 * k..].trim();
+        let expected =
+            if rest.len() <= 80 { rest.to_owned() } else { format!("{}…", &rest[..79]) };
+        assert_eq!(p.found, expected);
+    }
+    // The tag on the next line is read (and has no matrix after it).
+    assert!(problems.iter().any(|p| p.line == 2 && p.found == "<!-- cg: a1.transform -->"));
+    // A `-->` at the end: the first tag reads up to it, its ID holding all the others.
+    let text = format!("{}-->", "<!-- cg: ".repeat(count));
+    let (_, problems) = parse_report(&text);
+    assert_eq!(problems.len(), 1, "{:?}", problems.first());
+    assert_eq!(problems[0].found, format!("{}…", &text[..79]));
+}
+
+#[test]
+fn a_large_data_file_names_its_gap_and_its_missing_vertex() {
+    // 100 000 vertices and 100 000 faces naming the last vertices: every lookup once went
+    // through the whole vertex list.
+    let n = 100_000u32;
+    let gap = n - 10;
+    let mut text = String::new();
+    for k in 0..n {
+        let k = if k == gap { n + 5 } else { k };
+        text.push_str(&format!("V{k} (0.0, {k}.0, 1.0)\n"));
+    }
+    for k in 0..n {
+        let (a, b, c) = (n - 1, n - 2, n - 3);
+        if k == n - 1 {
+            text.push_str(&format!("F{k} {{ V{a}, V{gap}, V{c} }}\n"));
+        } else {
+            text.push_str(&format!("F{k} {{ V{a}, V{b}, V{c} }}\n"));
+        }
+    }
+    let errors = polygon_from_text(&text, Text::default()).unwrap_err();
+    let messages: Vec<String> = errors.iter().map(|p| p.message(Lang::En)).collect();
+    let (last, far, v_last, v_third) = (n - 1, n + 5, n - 1, n - 3);
+    assert_eq!(
+        messages,
+        [
+            format!(
+                "line {}: `V{far} (0.0, {far}.0, 1.0)` — expected vertex numbers V0 to V{last} \
+                 without gaps (V{gap} is missing)",
+                gap + 1
+            ),
+            format!(
+                "line {}: `F{last} {{ V{v_last}, V{gap}, V{v_third} }}` — expected vertex numbers \
+                 that have vertex rows (there is no V{gap})",
+                2 * n
+            ),
+        ]
+    );
+}
+
+#[test]
+fn many_vertices_out_of_range_name_the_same_first_gaps() {
+    // Rows numbered from V1000 up: every one of the last thousand rows is out of range, and
+    // each names the first five gaps.
+    let mut text = String::new();
+    for k in 1000..21_000 {
+        text.push_str(&format!("V{k} (0.0, 0.0, 0.0)\n"));
+    }
+    text.push_str("F0 { V0, V1001, V1002 }\n");
+    let errors = polygon_from_text(&text, Text::default()).unwrap_err();
+    assert_eq!(errors.len(), 1000 + 1, "1000 rows out of range, and the face naming V0");
+    for p in &errors[..1000] {
+        assert!(
+            p.expected.en.ends_with("V0 to V19999 without gaps (V0, V1, V2, V3, V4 is missing)"),
+            "{p:?}"
+        );
+        assert!(p.expected.ja.contains("（V0, V1, V2, V3, V4 がありません）"), "{p:?}");
+    }
+    assert_eq!(errors[1000].line, 20_001);
+    assert!(errors[1000].expected.en.ends_with("(there is no V0)"), "{:?}", errors[1000]);
+}
+
+#[test]
+fn problems_are_named_up_to_a_limit_and_the_rest_counted() {
+    // 5 000 lines that cannot be read: the first MAX_PROBLEMS are named, in order.
+    let text = "F0 { V0, V1 }\n".repeat(5_000);
+    let (_, problems) = parse_report(&text);
+    assert_eq!(problems.len(), MAX_PROBLEMS + 1);
+    assert!(problems[..MAX_PROBLEMS].iter().enumerate().all(|(k, p)| p.line == k + 1));
+    let last = &problems[MAX_PROBLEMS];
+    assert!(last.message(Lang::Ja).contains("ほかに 4000 か所"), "{last:?}");
+}
