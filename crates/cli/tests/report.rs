@@ -62,6 +62,23 @@ fn check_with_data_alone_names_the_slides_wrong_normals() {
     let out = cg(&dir, &["--lang", "en", "report", "check", "--data", "pyramid.md"]);
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "{stdout}");
+    // A report in which no number could be checked (empty, or its table in columns the checker
+    // does not read, with a wrong z) is no success: exit 1, and the summary says what to write.
+    std::fs::write(dir.join("empty.md"), "").unwrap();
+    std::fs::write(
+        dir.join("columns.md"),
+        "| | x | y | z |\n|---|---|---|---|\n| V0 | 0.0 | 1.0 | 0.0 |\n| V1 | 1.0 | -0.8 | 9.0 |\n",
+    )
+    .unwrap();
+    for (report, lang, words) in [
+        ("empty.md", "en", "no number was checked"),
+        ("columns.md", "ja", "確かめられた数値は 1 つもありません"),
+    ] {
+        let out = cg(&dir, &["--lang", lang, "report", "check", report, "--data", "pyramid.md"]);
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert_eq!(out.status.code(), Some(1), "{report}: {stdout}");
+        assert!(stdout.contains(words) && stdout.contains("V0 (0.0, 1.0, 0.0)"), "{stdout}");
+    }
 }
 
 #[test]

@@ -21,6 +21,7 @@ use cg_assign::Variants;
 use cg_core::lang::{Lang, t};
 use cg_core::text::Encoding;
 use cg_harness::check::{Outcome, guarded};
+use cg_harness::exit::Ending;
 use cg_harness::{TableVersion, Text};
 
 use crate::derive::{self, Missing};
@@ -140,11 +141,14 @@ impl Kit {
     }
 }
 
-/// Runs a report command; `Ok(false)` when a check found mistakes.
+/// Runs a report command: [`Ending::Mistakes`] when a check found mistakes,
+/// [`Ending::TimedOut`] when one of the student's functions ran out of its time (said on
+/// standard error; the parts it and the functions after it were for are missing, each call
+/// after it failing at once).
 ///
 /// # Errors
 /// What could not be read or written, as a message in `lang`.
-pub fn run(command: &Command, kit: &Kit, lang: Lang) -> Result<bool, String> {
+pub fn run(command: &Command, kit: &Kit, lang: Lang) -> Result<Ending, String> {
     let source = match command {
         Command::Derive(args) => &args.source,
         Command::Fill(args) => &args.derive.source,
@@ -154,9 +158,28 @@ pub fn run(command: &Command, kit: &Kit, lang: Lang) -> Result<bool, String> {
     match kit.worker.filter(|_| source.data.is_none()) {
         Some(start) => {
             let worker = start(lang)?;
-            cg_worker::proxy::with_worker(worker, TIME_LIMIT, || run_here(command, kit, lang)).0
+            let (passed, worker) =
+                cg_worker::proxy::with_worker(worker, TIME_LIMIT, || run_here(command, kit, lang));
+            let passed = passed?;
+            if worker.timeouts > 0 {
+                let seconds = TIME_LIMIT.as_secs();
+                eprintln!(
+                    "{}",
+                    Text::new(
+                        format!(
+                            "あなたの関数が {seconds} 秒たっても戻りませんでした。無限ループになっていないか確認してください（その関数の部分と、そのあとの関数の部分は導出していません）"
+                        ),
+                        format!(
+                            "one of your functions did not return within {seconds} s: does it loop forever? (its part, and the parts of the functions after it, were not derived)"
+                        ),
+                    )
+                    .get(lang)
+                );
+                return Ok(Ending::TimedOut);
+            }
+            Ok(Ending::passed(passed))
         }
-        None => run_here(command, kit, lang),
+        None => run_here(command, kit, lang).map(Ending::passed),
     }
 }
 
@@ -541,10 +564,14 @@ pub struct CheckOutcome {
 }
 
 impl CheckOutcome {
-    /// Whether the report is free of mistakes the checker can see.
+    /// Whether the report is free of mistakes the checker can see, and it saw something: a
+    /// report in which no number was checked (no table in a form the checker reads, or an
+    /// empty file) is not a success.
     #[must_use]
     pub fn ok(&self) -> bool {
-        self.problems.is_empty() && self.verification.findings.is_empty()
+        self.problems.is_empty()
+            && self.verification.findings.is_empty()
+            && self.verification.checked > 0
     }
 
     /// For the terminal.
@@ -575,7 +602,12 @@ impl CheckOutcome {
         }
         let wrong = self.problems.len() + self.verification.findings.len();
         let checked = self.verification.checked;
-        let summary = if wrong == 0 {
+        let summary = if wrong == 0 && checked == 0 {
+            Text::new(
+                "確かめられた数値は 1 つもありません。キットが読む書き方の表（`V0 (0.0, 1.0, 0.0)` の頂点の行、`F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 }` の面の行、`<!-- cg: s.light.p -->` のようなタグのついた表）が見つかりませんでした。`cargo run --release -- report fill` が書くひな形の書き方に合わせてください",
+                "no number was checked: the report has no table in a form the checker reads (vertex rows `V0 (0.0, 1.0, 0.0)`, face rows `F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 }`, tables after a tag such as `<!-- cg: s.light.p -->`); write them as the template `cargo run --release -- report fill` writes does",
+            )
+        } else if wrong == 0 {
             Text::new(
                 format!("数値 {checked} 個を確かめ、データから導かれない数値はありませんでした。"),
                 format!("{checked} numbers checked; every one follows from the data."),

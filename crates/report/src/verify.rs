@@ -48,6 +48,16 @@ fn show_tolerance(tol: f64) -> String {
     trim(format!("{tol:.digits$}"))
 }
 
+/// A written number as a message quotes it: at most 24 characters (a 400-digit number is not
+/// printed whole).
+fn short(text: &str) -> String {
+    if text.chars().count() > 24 {
+        format!("{}…", text.chars().take(23).collect::<String>())
+    } else {
+        text.to_owned()
+    }
+}
+
 /// Trailing zeros (and a bare point) removed: `0.0100` → `0.01`.
 fn trim(s: String) -> String {
     if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_owned() } else { s }
@@ -226,22 +236,25 @@ impl Checker {
             return;
         }
         let (open, close) = if curly { ("{", "}") } else { ("(", ")") };
-        let written_s: Vec<String> = written.iter().map(|w| w.text.clone()).collect();
+        let written_s: Vec<String> = written.iter().map(|w| short(&w.text)).collect();
         let derived_s: Vec<String> =
             written.iter().zip(derived).map(|(w, &d)| show(d, w.decimals)).collect();
         let tol = wrong.iter().map(|&k| tolerance(&written[k], derived[k])).fold(0.0, f64::max);
         let (mut ja, mut en) = (Vec::new(), Vec::new());
         for &k in &wrong {
             let name = names.get(k).copied().unwrap_or("");
-            let off = trim(format!("{:.4}", (written[k].value - derived[k]).abs()));
-            ja.push(format!(
-                "{name} は {} ですが導出値は {}（差 {off}）",
-                written[k].text, derived_s[k]
-            ));
-            en.push(format!(
-                "{name} is {} but follows as {} (off by {off})",
-                written[k].text, derived_s[k]
-            ));
+            // Names of a whole value in Japanese; `x`, `r`, … are the same in both.
+            let name_ja = match name {
+                "value" => "値",
+                "the entry" => "この成分",
+                other => other,
+            };
+            // As many decimals as the derived value shows, so a difference is never "0".
+            let digits = (written[k].decimals.saturating_add(1)).clamp(4, 12) as usize;
+            let off = trim(format!("{:.digits$}", (written[k].value - derived[k]).abs()));
+            let shown = short(&written[k].text);
+            ja.push(format!("{name_ja} は {shown} ですが導出値は {}（差 {off}）", derived_s[k]));
+            en.push(format!("{name} is {shown} but follows as {} (off by {off})", derived_s[k]));
         }
         let why = Text::new(
             format!(
@@ -298,9 +311,9 @@ impl Checker {
     }
 
     fn normal(&mut self, f: &ParsedFace, derived: Option<DVec3>) {
-        let Some(w) = &f.normal else { return };
-        match derived {
-            Some(n) => {
+        match (derived, &f.normal) {
+            (Some(_), None) => {}
+            (Some(n), Some(w)) => {
                 self.tuple(
                     f.line,
                     format!("F{} normal", f.index),
@@ -310,13 +323,27 @@ impl Checker {
                     true,
                 );
             }
-            None => self.note(
-                format!("F{}（{} 行目）: 面積 0 の面なので法線を導出できません", f.index, f.line),
-                format!(
-                    "F{} (line {}): the face has no area, so its normal cannot be derived",
-                    f.index, f.line
-                ),
-            ),
+            // A face with no area (a vertex twice, or three in a line) is no face of a
+            // polyhedron, and its normal is no number: a mistake, not a note, whether or not a
+            // normal is written.
+            (None, written) => {
+                let written = written.as_ref().map_or_else(
+                    || face_text(f.vertices),
+                    |w| bracket("{", &w.iter().map(|x| short(&x.text)).collect::<Vec<_>>(), "}"),
+                );
+                self.out.checked += 1;
+                self.out.findings.push(Finding {
+                    line: f.line,
+                    item: format!("F{} normal", f.index),
+                    written,
+                    derived: "—".to_owned(),
+                    tolerance: None,
+                    why: Text::new(
+                        "面積 0 の面です（同じ頂点が 2 回あるか、3 つの頂点が一直線上にあります）。法線は導出できません。多面体の面は面積のある三角形にしてください",
+                        "the face has no area (a vertex twice, or three vertices in a line), so it has no normal: a face of a polyhedron is a triangle with an area",
+                    ),
+                });
+            }
         }
     }
 

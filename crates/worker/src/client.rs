@@ -62,6 +62,8 @@ pub struct Worker {
     without: BTreeMap<String, Vec<String>>,
     /// What the student's functions printed on stdout, in order.
     pub printed: Vec<u8>,
+    /// How many calls ran out of their time (the worker was stopped each time).
+    pub timeouts: usize,
 }
 
 struct Running {
@@ -97,6 +99,7 @@ impl Worker {
             running: None,
             without: BTreeMap::new(),
             printed: Vec::new(),
+            timeouts: 0,
         }
     }
 
@@ -254,6 +257,7 @@ impl Worker {
             }
             Err(RecvTimeoutError::Timeout) => {
                 self.stop();
+                self.timeouts += 1;
                 return Err(CallError::TimedOut(budget));
             }
             Err(RecvTimeoutError::Disconnected) => return Err(self.crashed()),

@@ -15,7 +15,10 @@
 //!
 //! **Budgets.** A check's calls share one budget, [`Session::per_check`], from the moment the
 //! check starts ([`begin_check`], called by `check::run`); a call outside any check has the
-//! whole budget to itself.
+//! whole budget to itself, until one such call has run out of time: then every later call
+//! outside a check fails at once as timed out (the report calls the student's functions
+//! outside checks, and one that never returns would otherwise cost the budget for every part
+//! of the report). [`Worker::timeouts`] says afterwards that it happened.
 //!
 //! **Batches.** Where a check would call a function many times (a3's frames, s's pixels), it
 //! asks [`active`] and, when the functions are the worker's, uses one batch call instead
@@ -112,6 +115,7 @@ pub fn call<A: Serialize, R: DeserializeOwned>(function: &str, args: &A) -> R {
             return Err(CallError::Broken(format!("{function}: no worker is running")));
         };
         let budget = match session.deadline {
+            None if session.worker.timeouts > 0 => Duration::ZERO,
             None => session.per_check,
             Some(end) => end.saturating_duration_since(Instant::now()),
         };

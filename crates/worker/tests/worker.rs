@@ -117,3 +117,28 @@ fn a_module_left_out_is_answered_with_its_errors_and_the_others_still_run() {
     assert!(matches!(w.call::<_, i64>("a10.x", &(), BUDGET), Err(CallError::Broken(_))));
     assert_eq!(w.modules_left_out().len(), 1);
 }
+
+/// Outside a check (the report's calls), a call that ran out of time makes every later call
+/// outside a check fail at once as timed out, instead of each waiting for the whole budget; a
+/// check still gets its own budget and a fresh worker; the worker counts the timeout.
+#[test]
+fn after_a_timeout_outside_a_check_later_calls_outside_one_fail_at_once() {
+    use cg_worker::proxy;
+    let outcome = |f: &dyn Fn() -> i64| {
+        std::panic::catch_unwind(std::panic::AssertUnwindSafe(f))
+            .map_err(|e| e.downcast::<CallError>().map(|e| *e).ok())
+    };
+    let budget = Duration::from_millis(300);
+    let (results, w) = proxy::with_worker(worker(), budget, || {
+        let first = outcome(&|| proxy::call("loop", &()));
+        let later = outcome(&|| proxy::call("add", &(4, 5)));
+        proxy::begin_check();
+        let in_a_check = outcome(&|| proxy::call("add", &(4, 5)));
+        proxy::end_check();
+        (first, later, in_a_check)
+    });
+    assert_eq!(results.0, Err(Some(CallError::TimedOut(budget))));
+    assert_eq!(results.1, Err(Some(CallError::TimedOut(budget))), "would be Ok(9) without");
+    assert_eq!(results.2, Ok(9));
+    assert_eq!(w.timeouts, 1);
+}

@@ -6,12 +6,13 @@ use cg_assign::cg_shading::report::{
     Cell, LIGHT_Q, ShadingData, TABLE_IDS, Table, Value, highlight_factor, light_table_at,
 };
 use cg_core::glam::Vec3;
+use cg_core::lang::Lang;
 use cg_harness::Text;
 
 use super::fill::value_text;
 use super::{ParsedRow, ParsedTable, label_matches};
 use crate::model::Written;
-use crate::parse::{clip, parse_number};
+use crate::parse::{clip, normalize, parse_number};
 use crate::verify::{Checker, Finding};
 
 /// What a cell holds, as far as the checker is concerned.
@@ -42,10 +43,12 @@ fn without_unit(text: &str) -> &str {
     s
 }
 
-/// A cell's value: the text after the last `=` or `≈` (a working that ends in its value), without
-/// `$`, `\(`, `\)`, backticks and a trailing unit ([`without_unit`]); one plain number, or numbers in `( )`, `{ }` or
-/// `[ ]`.
+/// A cell's value: the text after the last `=`, `≈` or `≒` (a working that ends in its value),
+/// without `$`, `\(`, `\)`, backticks and a trailing unit ([`without_unit`]); one plain number,
+/// or numbers in `( )`, `{ }` or `[ ]`. Full-width digits and punctuation read as ASCII, as in
+/// every other row of the report ([`normalize`]).
 fn read_cell(text: &str) -> Written3 {
+    let text = normalize(text);
     if !text.chars().any(|c| c.is_ascii_digit()) {
         return Written3::Skip;
     }
@@ -54,7 +57,7 @@ fn read_cell(text: &str) -> Written3 {
         s = s.replace(x, "");
     }
     let s: String = s.chars().filter(|c| !matches!(c, '$' | '`' | '*')).collect();
-    let last = s.rsplit(['=', '≈']).next().unwrap_or("").trim();
+    let last = s.rsplit(['=', '≈', '≒']).next().unwrap_or("").trim();
     let last = without_unit(last);
     let inner = [('(', ')'), ('{', '}'), ('[', ']')]
         .iter()
@@ -197,25 +200,51 @@ pub(crate) fn check_table(c: &mut Checker, table: &ParsedTable, kit: &Table) {
     for row in &table.rows {
         let Some(kit_row) = kit.rows.iter().find(|r| label_matches(&row.label, &r.label)) else {
             if row.cells.iter().any(|t| matches!(read_cell(t), Written3::Numbers(_))) {
-                let known: Vec<&str> = kit.rows.iter().map(|r| r.label.en.as_str()).collect();
-                let known = known.join(", ");
+                let known = |lang: Lang| {
+                    kit.rows.iter().map(|r| r.label.get(lang)).collect::<Vec<_>>().join(", ")
+                };
                 c.note(
                     format!(
-                        "{} 行目: 表 {} に `{}` という行はないので確かめていません（あるのは {known}）",
+                        "{} 行目: 表 {} に `{}` という行はないので確かめていません（あるのは {}）",
                         row.line,
                         table.id,
-                        clip(&row.label)
+                        clip(&row.label),
+                        known(Lang::Ja)
                     ),
                     format!(
-                        "line {}: table {} has no row `{}`, so it was not checked (rows: {known})",
+                        "line {}: table {} has no row `{}`, so it was not checked (rows: {})",
                         row.line,
                         table.id,
-                        clip(&row.label)
+                        clip(&row.label),
+                        known(Lang::En)
                     ),
                 );
             }
             continue;
         };
+        // Cells are found by their place: a column taken out or put in moves every value after
+        // it under another heading, where it would be skipped or misjudged.
+        if row.cells.len() != kit_row.cells.len() && kit_row.cells.iter().any(|k| k.kit().is_some())
+        {
+            let (got, want) = (row.cells.len() + 1, kit_row.cells.len() + 1);
+            c.out.checked += 1;
+            c.out.findings.push(Finding {
+                line: row.line,
+                item: format!("{} {}", table.id, clip(&row.label)),
+                written: got.to_string(),
+                derived: want.to_string(),
+                tolerance: None,
+                why: Text::new(
+                    format!(
+                        "この行は {got} 列ですが、表は {want} 列です。値は列の位置で確かめるので、列を消したり足したりせず、書かない欄は空けておいてください"
+                    ),
+                    format!(
+                        "this row has {got} columns where the table has {want}: values are checked by their column, so keep every column and leave the ones you do not fill empty"
+                    ),
+                ),
+            });
+            continue;
+        }
         for (k, kit_cell) in kit_row.cells.iter().enumerate().take(row.cells.len()) {
             // The chosen point is read by `kit_for`; here only when it is not three numbers.
             if matches!(kit_cell, Cell::Chosen(_))

@@ -180,14 +180,23 @@ pub fn tex_label(text: &str) -> String {
 }
 
 /// A label as the checker compares it: read as the report reader reads a line, without spaces,
-/// `$`, `\(`, `\)`, backticks, asterisks and braces, `−` as `-`, in lower case.
+/// `$`, `\(`, `\)`, backticks, asterisks and braces, `−` as `-`, a Japanese middle dot (`N・L`,
+/// what a Shift_JIS file keeps of `N·L`) or a dot operator as `·`, `度` and `^\circ` as `°`, in
+/// lower case.
 fn canonical(label: &str) -> String {
     normalize(label)
         .replace("\\(", "")
         .replace("\\)", "")
+        .replace("^\\circ", "°")
+        .replace("\\circ", "°")
+        .replace('度', "°")
         .chars()
         .filter(|c| !c.is_whitespace() && !matches!(c, '$' | '`' | '*' | '{' | '}'))
-        .map(|c| if c == '−' { '-' } else { c })
+        .map(|c| match c {
+            '−' => '-',
+            '・' | '･' | '⋅' | '∙' => '·',
+            _ => c,
+        })
         .flat_map(char::to_lowercase)
         .collect()
 }

@@ -323,3 +323,60 @@ fn edited_tables_never_panic_and_every_finding_names_its_line() {
         }
     }
 }
+
+/// What a student's editor and keyboard write is read as the template writes it: full-width
+/// digits (`０.９３３`), `≒` before the value, `N・L` (what Shift_JIS keeps of `N·L`) and `15度`
+/// as labels; and what cannot be checked is said: a row with a column taken out (which moved
+/// every value after it under another heading) is a finding, in Japanese with Japanese words.
+#[test]
+fn students_ways_of_writing_are_read_and_a_missing_column_is_a_finding() {
+    let d = derived("12345678");
+    let data = d.s.as_ref().unwrap();
+    let worked = by_hand(&filled(&d, Lang::Ja, Format::Markdown), data, Format::Markdown);
+    let (parsed, _) = parse_report(&worked);
+    let clean = verify(&parsed, &d);
+    assert!(clean.findings.is_empty(), "{:#?}", clean.findings);
+    let checked = clean.checked;
+    let spot = "| α = 15° | 0.966 | 0.933 |";
+    assert!(worked.contains(spot), "{worked}");
+    // Right values in other forms: still clean, and every number still checked.
+    for (from, to) in [
+        (spot, "| α = 15度 | ０.９６６ | 0.966² ≒ 0.933 |"),
+        (spot, "| $\\alpha = 15^\\circ$ | 0.966 | ０．９３３ |"),
+    ] {
+        let (parsed, _) = parse_report(&worked.replacen(from, to, 1));
+        let v = verify(&parsed, &d);
+        assert!(v.findings.is_empty(), "{to}: {:#?}", v.findings);
+        assert_eq!(v.checked, checked, "{to}");
+    }
+    // Wrong values in those forms are found.
+    for to in ["| α = 15度 | 0.966 | ０.９６６ |", "| α = 15° | 0.966 | 1/1.03 ≒ 0.966 |"]
+    {
+        let (parsed, _) = parse_report(&worked.replacen(spot, to, 1));
+        let v = verify(&parsed, &d);
+        assert_eq!(v.findings.len(), 1, "{to}: {:#?}", v.findings);
+        let m = v.findings[0].message(Lang::Ja);
+        assert!(m.contains("値 は 0.966") && !m.contains("value"), "{m}");
+    }
+    // N・L is the row N·L: a wrong value there is found, not a note.
+    let nl = worked.lines().find(|l| l.starts_with("| N·L |")).expect("an N·L row").to_owned();
+    let cells = row_cells(&nl).unwrap();
+    let wrong_nl = format!("| N・L | {} |", vec!["0.123"; cells.len() - 1].join(" | "));
+    let (parsed, _) = parse_report(&worked.replacen(&nl, &wrong_nl, 1));
+    let v = verify(&parsed, &d);
+    assert!(!v.findings.is_empty() && v.findings.iter().all(|f| f.item.contains("N")), "{v:#?}");
+    // A column taken out of a row: one finding for the row, which says why.
+    let short = "| α = 15° | 0.933 |";
+    let (parsed, _) = parse_report(&worked.replacen(spot, short, 1));
+    let v = verify(&parsed, &d);
+    assert_eq!(v.findings.len(), 1, "{:#?}", v.findings);
+    let m = v.findings[0].message(Lang::Ja);
+    assert!(m.contains("3 列ですが、表は 4 列です"), "{m}");
+    // A row the table does not have is a note whose list of rows is in the reader's language.
+    let extra = format!("{nl}\n| 合計 | 0.5 |");
+    let (parsed, _) = parse_report(&worked.replacen(&nl, &extra, 1));
+    let v = verify(&parsed, &d);
+    let note = v.notes.iter().find(|n| n.ja.contains("合計")).expect("a note on the row");
+    assert!(note.ja.contains("環境光") && !note.ja.contains("ambient"), "{}", note.ja);
+    assert!(note.en.contains("ambient"), "{}", note.en);
+}

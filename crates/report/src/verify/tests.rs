@@ -477,3 +477,30 @@ proptest! {
         }
     }
 }
+
+/// A face with no area is a finding, with a normal written or without one; and a difference
+/// smaller than 0.0001 is shown with the digits it needs, never "off by 0", its written number
+/// shortened when it is long.
+#[test]
+fn a_face_with_no_area_is_a_mistake_and_small_differences_show() {
+    for face in ["F0 { V0, V0, V1 } { 0.0, 0.49, 0.87 }", "F0 { V0, V0, V0 }"] {
+        let text = format!("V0 (0,0,0)\nV1 (1,0,0)\nV2 (0,1,0)\n{face}\nF1 {{ V0, V1, V2 }}");
+        let v = data_alone(&text);
+        assert_eq!(items(&v), vec![(4, "F0 normal")], "{face}: {:#?}", v.findings);
+        let m = v.findings[0].message(Lang::Ja);
+        assert!(m.contains("面積 0 の面"), "{m}");
+    }
+    // F0's y is 0.48564 against 0.4856429…: the difference shows, to its digits.
+    let long = format!("0.48564{}", "0".repeat(400));
+    let text = slide_with_normals([
+        &format!("{{ 0.0, {long}, 0.8742 }}"),
+        "{ 0.0, 0.4856, -0.8742 }",
+        "{ 0.8742, 0.4856, 0.0 }",
+        "{ -0.8742, 0.4856, 0.0 }",
+    ]);
+    let v = data_alone(&text);
+    assert_eq!(v.findings.len(), 1, "{:#?}", v.findings);
+    let m = v.findings[0].message(Lang::En);
+    assert!(!m.contains("off by 0)") && !m.contains("off by 0,"), "{m}");
+    assert!(m.len() < 600, "{m}");
+}
