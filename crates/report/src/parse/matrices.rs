@@ -43,6 +43,17 @@ fn expected_tag() -> Text {
     )
 }
 
+/// The tables' tags, when `id` looks like one of them mistyped (the shading set's `s.…`, or
+/// with `period` in it): the list to say.
+fn table_like(id: &str) -> Option<String> {
+    let lower = id.to_ascii_lowercase();
+    (lower.starts_with("s.") || lower.contains("period")).then(|| {
+        let mut tags: Vec<&str> = cg_assign::cg_shading::report::TABLE_IDS.to_vec();
+        tags.push(crate::periods::TABLE_ID);
+        tags.join(", ")
+    })
+}
+
 fn expected_matrix_entry() -> Text {
     Text::new(
         "行列の要素として数そのもの（`\\cos 30°` ではなく `0.866`）",
@@ -65,7 +76,17 @@ impl Reader {
                 let after = &line[p + 4..];
                 let body = after.trim_start();
                 from = p + 4;
-                let Some(rest) = body.strip_prefix("cg:") else { continue };
+                let Some(rest) = body.strip_prefix("cg:") else {
+                    // `<!-- cg s.spot -->`, `<!-- CG: … -->`: a tag mistyped, not a comment of
+                    // the student's; its table or matrix would go unchecked without a word.
+                    let cg = body.get(..2).is_some_and(|s| s.eq_ignore_ascii_case("cg"));
+                    let next = body[2.min(body.len())..].chars().next();
+                    if cg && next.is_some_and(|c| c.is_whitespace() || c == ':') {
+                        let end = line[p..].find("-->").map_or(line.len(), |k| p + k + 3);
+                        self.problem(n, &line[p..end], expected_tag(), RowKind::Matrix);
+                    }
+                    continue;
+                };
                 let rest_at = line.len() - rest.len();
                 let found = match next_close {
                     Some((at, found)) if at <= rest_at && found.is_none_or(|f| f >= rest_at) => {
@@ -137,6 +158,12 @@ impl Reader {
                             Text::new(
                                 "タグのあとに、積の因子の 4×4 行列 `\\begin{pmatrix} … \\end{pmatrix}` を順に",
                                 "the product's 4×4 factors as `\\begin{pmatrix} … \\end{pmatrix}`, in order, after the tag",
+                            )
+                        } else if let Some(tables) = table_like(&tag.id) {
+                            // `s.spots`: a table's tag mistyped, not a matrix without its matrix.
+                            Text::new(
+                                format!("表のタグ（{tables}）のどれか"),
+                                format!("one of the tables' tags ({tables})"),
                             )
                         } else {
                             Text::new(

@@ -594,3 +594,18 @@ fn problems_are_named_up_to_a_limit_and_the_rest_counted() {
     let last = &problems[MAX_PROBLEMS];
     assert!(last.message(Lang::Ja).contains("ほかに 4000 か所"), "{last:?}");
 }
+
+/// A mistyped tag is a problem at its line, not a comment passed over (its table would go
+/// unchecked); a table's tag mistyped asks for the tables' tags, not for a matrix.
+#[test]
+fn mistyped_tags_are_named_with_what_they_should_be() {
+    let text = "<!-- cg s.spot -->\n| α = 15° | 0.5 |\n<!-- CG: a1.transform -->\n<!-- cg: s.spots -->\n| α = 15° | 0.5 |\n<!-- cgi: a comment -->\n<!-- any comment -->\n";
+    let (_, problems) = parse_report(text);
+    let lines: Vec<usize> = problems.iter().map(|p| p.line).collect();
+    assert_eq!(lines, [1, 3, 4], "{problems:#?}");
+    assert!(problems[0].expected.en.contains("<!-- cg: a1.transform -->"), "{:?}", problems[0]);
+    assert!(
+        problems[2].expected.en.contains("s.light.p")
+            && problems[2].expected.ja.contains("表のタグ")
+    );
+}
