@@ -41,6 +41,11 @@ pub fn polygon_from_text(text: &str, name: Text) -> Result<PolygonData, Vec<Pars
         .into_iter()
         .filter(|p| matches!(p.kind, RowKind::Vertex | RowKind::Face))
         .collect();
+    // A row that did not read is the mistake to name: the checks of the whole list below
+    // would blame the rows after it (`F5: F0 is missing` where F0 is written with a NaN).
+    if !errors.is_empty() {
+        return Err(errors);
+    }
     let mut push = |line: usize, found: String, expected: Text| {
         errors.push(ParseProblem { line, found: clip(&found), expected, kind: RowKind::Data });
     };

@@ -330,10 +330,17 @@ fn data_alone_names_what_is_missing() {
     assert_eq!(e.len(), 1);
     assert!(e[0].expected.en.contains("f32"), "{}", e[0].expected);
 
+    // A row that does not read is named alone: not also "no face rows", nor "F0 is missing"
+    // at the rows after it, nor "there is no V1" at the faces naming a vertex whose row failed.
     let e = err("V0 (0,0,0)\nV1 (1,0,0)\nV2 (0,1,0)\nF0 { V0, V1 }\n");
+    assert_eq!(e.iter().map(|p| (p.line, p.kind)).collect::<Vec<_>>(), vec![(4, RowKind::Face)]);
+    let e = err(
+        "V0 (0,0,0)\nV1 (1,0,0,5)\nV2 (0,1,0)\nF0 { V0, V1, V2 } { 0, 0 }\nF1 { V1, V2, V0 }\n",
+    );
     assert_eq!(
         e.iter().map(|p| (p.line, p.kind)).collect::<Vec<_>>(),
-        vec![(0, RowKind::Data), (4, RowKind::Face)]
+        vec![(2, RowKind::Vertex), (4, RowKind::Face)],
+        "{e:#?}"
     );
 }
 
