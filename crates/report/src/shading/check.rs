@@ -152,14 +152,23 @@ fn kit_for(c: &mut Checker, written: &ParsedTable, kit: &Table, data: &ShadingDa
             written: clip(&row.cells[k]),
             derived: "|Q| = 1".to_owned(),
             tolerance: Some(0.01),
-            why: Text::new(
-                format!(
-                    "Q は半径 1 の球の上の点です（|Q| = {length:.4}）。表はこの方向の球の上の点 Q/|Q| で確かめます"
-                ),
-                format!(
-                    "Q is a point on the sphere of radius 1 (|Q| = {length:.4}); the table is checked at Q/|Q|, the point of the sphere in its direction"
-                ),
-            ),
+            // A Q of no length has no direction: the table is checked where the kit's
+            // normalisation falls back to, (0, 1, 0) (`normalize_or(Vec3::Y)`).
+            why: if point.normalize_or_zero() == Vec3::ZERO {
+                Text::new(
+                    "Q は半径 1 の球の上の点です。長さ 0 の Q には方向がないので、表は球の上の点 (0, 1, 0) で確かめます",
+                    "Q is a point on the sphere of radius 1; a Q of length 0 has no direction, so the table is checked at (0, 1, 0), a point of the sphere",
+                )
+            } else {
+                Text::new(
+                    format!(
+                        "Q は半径 1 の球の上の点です（|Q| = {length:.4}）。表はこの方向の球の上の点 Q/|Q| で確かめます"
+                    ),
+                    format!(
+                        "Q is a point on the sphere of radius 1 (|Q| = {length:.4}); the table is checked at Q/|Q|, the point of the sphere in its direction"
+                    ),
+                )
+            },
         });
     }
     let factor = highlight_factor(&data.setup, point);

@@ -233,6 +233,12 @@ fn a_point_q_of_the_students_own_is_followed_and_must_lie_on_the_sphere() {
     let (parsed, _) = parse_report(&dark);
     let v = verify(&parsed, &d);
     assert!(v.notes.iter().any(|n| n.en.contains("not in the highlight")), "{:?}", v.notes);
+    // A Q of length 0 is named with the point it is checked at, not "Q/|Q|".
+    let zero = own_report.replacen(own_text, "(0.000, 0.000, 0.000)", 1);
+    let (parsed, _) = parse_report(&zero);
+    let v = verify(&parsed, &d);
+    let f = v.findings.iter().find(|f| f.item == "s.light.q Q (column 3)").expect("named");
+    assert!(f.why.en.contains("(0, 1, 0)") && !f.why.en.contains("Q/|Q|"), "{}", f.why.en);
 }
 
 /// The light table of `section` (Markdown, its tag first) with the by-hand cells written from
