@@ -86,8 +86,11 @@ impl StudentFileError {
                 Text::new(format!("{path}: {}", error.ja), format!("{path}: {}", error.en))
             }
             StudentFileError::Table { path, given } => Text::new(
-                format!("{path}: table = {given} という課題表はありません（1 を使ってください）"),
-                format!("{path}: there is no table {given} (use 1)"),
+                format!(
+                    "{path}: table = {} という課題表はありません（1 を使ってください）",
+                    quoted(given, Lang::Ja)
+                ),
+                format!("{path}: there is no table {} (use 1)", quoted(given, Lang::En)),
             ),
         }
     }
@@ -130,9 +133,10 @@ pub fn read_student_file(path: &Path) -> Result<StudentFile, StudentFileError> {
     // A number without quotes (`student = 01234567`) is refused before TOML reads it: TOML
     // drops its leading zeros, or calls a leading zero an error.
     if let Some(digits) = unquoted_number(&text) {
+        let (ja, en) = (quoted(&digits, Lang::Ja), quoted(&digits, Lang::En));
         return Err(invalid(Text::new(
-            format!("student = {digits} は引用符で囲んでください: student = \"{digits}\""),
-            format!("student = {digits} must be in quotes: student = \"{digits}\""),
+            format!("student = {ja} は引用符で囲んでください: student = \"{ja}\""),
+            format!("student = {en} must be in quotes: student = \"{en}\""),
         )));
     }
     let table: toml::Table = toml::from_str(&text).map_err(|e| {
@@ -142,10 +146,12 @@ pub fn read_student_file(path: &Path) -> Result<StudentFile, StudentFileError> {
         ))
     })?;
     if let Some(key) = table.keys().find(|k| !matches!(k.as_str(), "student" | "table")) {
-        let key = shorten(key);
         return Err(invalid(Text::new(
-            format!("`{key}` というキーはありません（書けるのは student と table）"),
-            format!("there is no key `{key}` (the keys are student and table)"),
+            format!(
+                "`{}` というキーはありません（書けるのは student と table）",
+                quoted(key, Lang::Ja)
+            ),
+            format!("there is no key `{}` (the keys are student and table)", quoted(key, Lang::En)),
         )));
     }
     let digits = match table.get("student") {
@@ -163,7 +169,7 @@ pub fn read_student_file(path: &Path) -> Result<StudentFile, StudentFileError> {
     let table = match table.get("table") {
         None => TableVersion::LATEST,
         Some(v) => {
-            let given = shorten(&v.to_string());
+            let given = v.to_string();
             given
                 .trim_matches('"')
                 .parse()
@@ -173,23 +179,19 @@ pub fn read_student_file(path: &Path) -> Result<StudentFile, StudentFileError> {
     Ok(StudentFile { student, table })
 }
 
+/// A value of the file as a message shows it: never the whole of a long one, nothing hidden.
+fn quoted(text: &str, lang: Lang) -> String {
+    cg_core::quote::shown(text, lang)
+}
+
 /// The digits of a `student = 0123…` line without quotes, as written.
 fn unquoted_number(text: &str) -> Option<String> {
     text.lines().find_map(|line| {
         let (key, value) = line.split_once('=')?;
         let value = value.split('#').next().unwrap_or_default().trim();
         let digits = !value.is_empty() && value.bytes().all(|b| b.is_ascii_digit());
-        (key.trim() == "student" && digits).then(|| shorten(value))
+        (key.trim() == "student" && digits).then(|| value.to_owned())
     })
-}
-
-/// `text` as it is, or its first 24 characters and "…": a message never echoes a whole file.
-fn shorten(text: &str) -> String {
-    if text.chars().count() > 24 {
-        format!("{}…", text.chars().take(24).collect::<String>())
-    } else {
-        text.to_owned()
-    }
 }
 
 /// Writes `exercises/student.toml` (or another path): to a file beside it, then renamed over

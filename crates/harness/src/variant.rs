@@ -53,36 +53,26 @@ impl StudentNumberError {
     /// The message in both languages.
     #[must_use]
     pub fn text(&self) -> Text {
+        use cg_core::quote::{shown, visible};
         let chars = self.given.chars().count();
-        // A value pasted by mistake (a whole file) is not echoed whole.
-        let given = if chars > 24 {
-            format!("{}…", self.given.chars().take(24).collect::<String>())
-        } else {
-            self.given.clone()
-        };
+        // A value pasted by mistake (a whole file) is shortened; an invisible character (a
+        // zero-width space pasted with the number) is named by its code.
+        let (ja, en) = (shown(&self.given, Lang::Ja), shown(&self.given, Lang::En));
         match self.given.chars().find(|c| !c.is_ascii_digit()) {
             Some(c) => {
-                // An invisible character (a zero-width space pasted with the number) by its code.
-                let shown = if c.is_control()
-                    || c.is_whitespace()
-                    || matches!(c, '\u{200b}'..='\u{200f}' | '\u{2060}' | '\u{feff}')
-                {
-                    format!("U+{:04X}", u32::from(c))
-                } else {
-                    format!("'{c}'")
-                };
+                let c = visible(&c.to_string());
                 Text::new(
                     format!(
-                        "学生番号は 8 桁の数字です。\"{given}\" には数字でない文字 {shown} があります"
+                        "学生番号は 8 桁の数字です。\"{ja}\" には数字でない文字 '{c}' があります"
                     ),
                     format!(
-                        "a student number is 8 digits; \"{given}\" has a character that is not a digit: {shown}"
+                        "a student number is 8 digits; \"{en}\" has a character that is not a digit: '{c}'"
                     ),
                 )
             }
             None => Text::new(
-                format!("学生番号は 8 桁の数字です。\"{given}\" は {chars} 桁です"),
-                format!("a student number is 8 digits; \"{given}\" has {chars}"),
+                format!("学生番号は 8 桁の数字です。\"{ja}\" は {chars} 桁です"),
+                format!("a student number is 8 digits; \"{en}\" has {chars}"),
             ),
         }
     }
