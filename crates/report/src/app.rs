@@ -159,7 +159,9 @@ pub fn run(command: &Command, kit: &Kit, lang: Lang) -> Result<Ending, String> {
         Some(start) => {
             let worker = start(lang)?;
             let (passed, worker) =
-                cg_worker::proxy::with_worker(worker, TIME_LIMIT, || run_here(command, kit, lang));
+                cg_worker::proxy::with_worker_until_timeout(worker, TIME_LIMIT, || {
+                    run_here(command, kit, lang)
+                });
             let passed = passed?;
             if worker.timeouts > 0 {
                 let seconds = TIME_LIMIT.as_secs();

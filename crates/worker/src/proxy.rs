@@ -15,10 +15,10 @@
 //!
 //! **Budgets.** A check's calls share one budget, [`Session::per_check`], from the moment the
 //! check starts ([`begin_check`], called by `check::run`); a call outside any check has the
-//! whole budget to itself, until one such call has run out of time: then every later call
-//! outside a check fails at once as timed out (the report calls the student's functions
-//! outside checks, and one that never returns would otherwise cost the budget for every part
-//! of the report). [`Worker::timeouts`] says afterwards that it happened.
+//! whole budget to itself. Under [`with_worker_until_timeout`] (the report, which calls the
+//! student's functions outside checks, part after part) a call outside a check that ran out of
+//! time makes every later one fail at once as timed out, instead of costing the budget again
+//! for every part; [`Worker::timeouts`] says afterwards that it happened.
 //!
 //! **Batches.** Where a check would call a function many times (a3's frames, s's pixels), it
 //! asks [`active`] and, when the functions are the worker's, uses one batch call instead
@@ -47,6 +47,8 @@ pub struct Session {
     pub per_check: Duration,
     /// When the running check's budget ends.
     deadline: Option<Instant>,
+    /// Whether calls outside a check fail at once after one has timed out.
+    until_timeout: bool,
 }
 
 thread_local! {
@@ -57,6 +59,20 @@ thread_local! {
 /// each check's calls sharing `per_check`; gives the worker back afterwards (with what the
 /// student's code printed in [`Worker::printed`]).
 pub fn with_worker<T>(worker: Worker, per_check: Duration, f: impl FnOnce() -> T) -> (T, Worker) {
+    session(Session { worker, per_check, deadline: None, until_timeout: false }, f)
+}
+
+/// [`with_worker`], where a call outside a check that runs out of time makes every later call
+/// outside a check fail at once (see the module's documentation): for the report.
+pub fn with_worker_until_timeout<T>(
+    worker: Worker,
+    per_check: Duration,
+    f: impl FnOnce() -> T,
+) -> (T, Worker) {
+    session(Session { worker, per_check, deadline: None, until_timeout: true }, f)
+}
+
+fn session<T>(session: Session, f: impl FnOnce() -> T) -> (T, Worker) {
     /// Puts the previous session back, also when `f` panics (the worker is then dropped,
     /// which stops it).
     struct Restore(Option<Option<Session>>);
@@ -67,7 +83,6 @@ pub fn with_worker<T>(worker: Worker, per_check: Duration, f: impl FnOnce() -> T
             }
         }
     }
-    let session = Session { worker, per_check, deadline: None };
     let restore = Restore(Some(CURRENT.with(|c| c.borrow_mut().replace(session))));
     let value = f();
     let session = CURRENT.with(|c| c.borrow_mut().take());
@@ -115,7 +130,7 @@ pub fn call<A: Serialize, R: DeserializeOwned>(function: &str, args: &A) -> R {
             return Err(CallError::Broken(format!("{function}: no worker is running")));
         };
         let budget = match session.deadline {
-            None if session.worker.timeouts > 0 => Duration::ZERO,
+            None if session.until_timeout && session.worker.timeouts > 0 => Duration::ZERO,
             None => session.per_check,
             Some(end) => end.saturating_duration_since(Instant::now()),
         };

@@ -118,9 +118,10 @@ fn a_module_left_out_is_answered_with_its_errors_and_the_others_still_run() {
     assert_eq!(w.modules_left_out().len(), 1);
 }
 
-/// Outside a check (the report's calls), a call that ran out of time makes every later call
-/// outside a check fail at once as timed out, instead of each waiting for the whole budget; a
-/// check still gets its own budget and a fresh worker; the worker counts the timeout.
+/// Under `with_worker_until_timeout` (the report's calls), a call outside a check that ran out of
+/// time makes every later call outside a check fail at once as timed out, instead of each
+/// waiting for the whole budget; a check still gets its own budget and a fresh worker; the
+/// worker counts the timeout. Under `with_worker` (a window's calls) the next call runs.
 #[test]
 fn after_a_timeout_outside_a_check_later_calls_outside_one_fail_at_once() {
     use cg_worker::proxy;
@@ -129,7 +130,7 @@ fn after_a_timeout_outside_a_check_later_calls_outside_one_fail_at_once() {
             .map_err(|e| e.downcast::<CallError>().map(|e| *e).ok())
     };
     let budget = Duration::from_millis(300);
-    let (results, w) = proxy::with_worker(worker(), budget, || {
+    let (results, w) = proxy::with_worker_until_timeout(worker(), budget, || {
         let first = outcome(&|| proxy::call("loop", &()));
         let later = outcome(&|| proxy::call("add", &(4, 5)));
         proxy::begin_check();
@@ -140,5 +141,11 @@ fn after_a_timeout_outside_a_check_later_calls_outside_one_fail_at_once() {
     assert_eq!(results.0, Err(Some(CallError::TimedOut(budget))));
     assert_eq!(results.1, Err(Some(CallError::TimedOut(budget))), "would be Ok(9) without");
     assert_eq!(results.2, Ok(9));
+    assert_eq!(w.timeouts, 1);
+    let (results, w) = proxy::with_worker(worker(), budget, || {
+        let first = outcome(&|| proxy::call("loop", &()));
+        (first, outcome(&|| proxy::call("add", &(4, 5))))
+    });
+    assert_eq!(results, (Err(Some(CallError::TimedOut(budget))), Ok(9)));
     assert_eq!(w.timeouts, 1);
 }
