@@ -94,33 +94,43 @@ pub fn tokens(source: &str) -> Vec<Token> {
     out
 }
 
+/// The tokens of `stream`, groups opened and closed in place. Iterative, with a stack of the
+/// groups being read: a file of 40 000 nested brackets (a hostile submission) would overflow
+/// the thread's stack if each group were a call, and abort the whole class's run.
 fn walk(stream: TokenStream, line_offset: usize, out: &mut Vec<Token>) {
-    let trees: Vec<TokenTree> = stream.into_iter().collect();
-    let mut i = 0;
-    while i < trees.len() {
-        let tt = &trees[i];
+    // Each open group: its trees, the next to read, and its closing token.
+    let mut stack: Vec<(Vec<TokenTree>, usize, Option<Token>)> =
+        vec![(stream.into_iter().collect(), 0, None)];
+    while let Some((trees, i, _)) = stack.last_mut() {
+        let Some(tt) = trees.get(*i) else {
+            if let Some((_, _, Some(close))) = stack.pop() {
+                out.push(close);
+            }
+            continue;
+        };
         let line = tt.span().start().line + line_offset;
         match tt {
-            TokenTree::Punct(p) if p.as_char() == '#' && doc_attribute(&trees[i + 1..]) => {
+            TokenTree::Punct(p) if p.as_char() == '#' && doc_attribute(&trees[*i + 1..]) => {
                 // `#[doc …]` or `#![doc …]`: a comment in disguise.
-                i += if matches!(trees.get(i + 1), Some(TokenTree::Punct(_))) { 3 } else { 2 };
+                *i += if matches!(trees.get(*i + 1), Some(TokenTree::Punct(_))) { 3 } else { 2 };
                 continue;
             }
             TokenTree::Group(g) => {
-                let (open, close) = match g.delimiter() {
-                    Delimiter::Parenthesis => ('(', ')'),
-                    Delimiter::Bracket => ('[', ']'),
-                    Delimiter::Brace => ('{', '}'),
-                    Delimiter::None => {
-                        walk(g.stream(), line_offset, out);
-                        i += 1;
-                        continue;
-                    }
+                let g = g.clone();
+                *i += 1;
+                let close = match g.delimiter() {
+                    Delimiter::Parenthesis => Some(('(', ')')),
+                    Delimiter::Bracket => Some(('[', ']')),
+                    Delimiter::Brace => Some(('{', '}')),
+                    Delimiter::None => None,
                 };
-                out.push(Token { kind: Kind::Open(open), line, number: None });
-                walk(g.stream(), line_offset, out);
-                let end = g.span_close().start().line + line_offset;
-                out.push(Token { kind: Kind::Close(close), line: end, number: None });
+                let close = close.map(|(open, close)| {
+                    out.push(Token { kind: Kind::Open(open), line, number: None });
+                    let end = g.span_close().start().line + line_offset;
+                    Token { kind: Kind::Close(close), line: end, number: None }
+                });
+                stack.push((g.stream().into_iter().collect(), 0, close));
+                continue;
             }
             TokenTree::Ident(ident) => {
                 let name = ident.to_string();
@@ -145,7 +155,7 @@ fn walk(stream: TokenStream, line_offset: usize, out: &mut Vec<Token>) {
                 out.push(Token { kind: Kind::Literal(kind), line, number });
             }
         }
-        i += 1;
+        *i += 1;
     }
 }
 
@@ -262,6 +272,17 @@ mod tests {
 
     fn kinds(source: &str) -> Vec<Kind> {
         tokens(source).into_iter().map(|t| t.kind).collect()
+    }
+
+    /// 40 000 nested brackets are read without overflowing the stack (which aborted the whole
+    /// run), each bracket a token.
+    #[test]
+    fn deeply_nested_brackets_are_read_without_overflowing_the_stack() {
+        let depth = 40_000;
+        let deep = format!("fn f() {{ let x = {}1{}; }}", "(".repeat(depth), ")".repeat(depth));
+        let tokens = tokens(&deep);
+        let opens = tokens.iter().filter(|t| t.kind == Kind::Open('(')).count();
+        assert_eq!(opens, depth + 1);
     }
 
     #[test]
