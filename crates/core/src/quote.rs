@@ -32,6 +32,26 @@ pub fn shown(word: &str, lang: Lang) -> String {
     out
 }
 
+/// A cell of a CSV file the instructor opens in a spreadsheet, from text a student controls (a
+/// submission's file name, a Moodle full name): one that begins with `=`, `+`, `-`, `@`, a tab
+/// or a carriage return would be read as a formula (`=HYPERLINK(…)`), so it gets a leading `'`,
+/// which spreadsheets take as "text" and do not show. Anything else is returned as it is.
+///
+/// ```
+/// use cg_core::quote::spreadsheet_cell;
+/// assert_eq!(spreadsheet_cell("=HYPERLINK(\"http://x\")"), "'=HYPERLINK(\"http://x\")");
+/// assert_eq!(spreadsheet_cell("+1+2"), "'+1+2");
+/// assert_eq!(spreadsheet_cell("Taro Yamada_777"), "Taro Yamada_777");
+/// ```
+#[must_use]
+pub fn spreadsheet_cell(text: &str) -> std::borrow::Cow<'_, str> {
+    if text.starts_with(['=', '+', '-', '@', '\t', '\r']) {
+        std::borrow::Cow::Owned(format!("'{text}"))
+    } else {
+        std::borrow::Cow::Borrowed(text)
+    }
+}
+
 /// `text` with each invisible or control character (but the tab) written as `<U+200B>`.
 #[must_use]
 pub fn visible(text: &str) -> String {

@@ -348,7 +348,8 @@ pub fn class_csv(results: &[Value], lang: Lang) -> String {
         let cg = &r["cg"];
         let mut row = vec![
             csv_field(cg["student"].as_str().unwrap_or("")),
-            csv_field(cg["submission"].as_str().unwrap_or("")),
+            // The entry's name is the student's (a zip's name, a Moodle full name).
+            csv_field(&cg_core::quote::spreadsheet_cell(cg["submission"].as_str().unwrap_or(""))),
         ];
         for &m in crate::submission::MODULES {
             row.push(
@@ -357,7 +358,10 @@ pub fn class_csv(results: &[Value], lang: Lang) -> String {
         }
         row.push(r["score"].as_f64().unwrap_or(0.0).to_string());
         row.push(r["max_score"].as_f64().map(|s| s.to_string()).unwrap_or_default());
-        row.push(csv_field(flag(r).as_ref().map_or("", |f| f.get(lang))));
+        let flag = flag(r);
+        row.push(csv_field(&cg_core::quote::spreadsheet_cell(
+            flag.as_ref().map_or("", |f| f.get(lang)),
+        )));
         out.push_str(&row.join(","));
         out.push('\n');
     }

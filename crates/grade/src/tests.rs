@@ -199,3 +199,17 @@ fn grading_that_cannot_start_says_why_in_both_languages() {
     assert!(why.en.contains("blocker"), "{}", why.en);
     let _ = std::fs::remove_dir_all(&root);
 }
+
+/// class.csv's entry names are the students' (a zip's name, a Moodle full name): one that
+/// begins like a spreadsheet formula is text (a leading `'`), never a formula.
+#[test]
+fn entry_names_that_look_like_formulas_are_text_in_class_csv() {
+    let result = serde_json::json!({
+        "score": 1.0,
+        "max_score": 2.0,
+        "cg": { "student": "20260001", "submission": "=HYPERLINK(\"http://evil\",\"x\")" },
+    });
+    let csv = result::class_csv(&[result], Lang::En);
+    let row = csv.lines().nth(1).unwrap();
+    assert!(row.starts_with("20260001,\"'=HYPERLINK("), "{row}");
+}

@@ -24,10 +24,16 @@ pub const COLUMNS: [&str; 12] = [
     "note",
 ];
 
+/// A student-controlled name as a spreadsheet cell ([`cg_core::quote::spreadsheet_cell`]).
+fn cell(name: &str) -> String {
+    cg_core::quote::spreadsheet_cell(name).into_owned()
+}
+
 /// `similarity.csv`: a `pair` row for each listed pair (best first), then a `cross-variant` row
 /// for each finding (`a` the submission, `b` the student whose variant it follows, `score` the
 /// evidence, `note` the numbers). `flags`: `reference` when one side is an earlier year's,
-/// `cross-variant` when a side is also flagged so.
+/// `cross-variant` when a side is also flagged so. The names are spreadsheet-safe: one that
+/// begins like a formula gets a leading `'`.
 ///
 /// # Errors
 /// The CSV writer's error (never for a `Vec`).
@@ -56,9 +62,9 @@ pub fn csv_text(class: &[Submission], analysis: &Analysis, lang: Lang) -> Result
             .collect();
         w.write_record([
             "pair".to_owned(),
-            a.name.clone(),
+            cell(&a.name),
             a.number(),
-            b.name.clone(),
+            cell(&b.name),
             b.number(),
             format!("{:.3}", p.score),
             p.shared.to_string(),
@@ -75,9 +81,9 @@ pub fn csv_text(class: &[Submission], analysis: &Analysis, lang: Lang) -> Result
         let f = &c.finding;
         w.write_record([
             "cross-variant".to_owned(),
-            s.name.clone(),
+            cell(&s.name),
             s.number(),
-            c.sources.iter().map(|i| class[*i].name.clone()).collect::<Vec<_>>().join(" "),
+            cell(&c.sources.iter().map(|i| class[*i].name.clone()).collect::<Vec<_>>().join(" ")),
             if f.ambiguous {
                 std::iter::once(&f.matches)
                     .chain(&f.also)

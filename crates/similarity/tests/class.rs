@@ -456,3 +456,25 @@ fn references_are_compared_with_this_year_but_not_with_each_other() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Names a student controls (a folder's or zip's name, a Moodle full name) that begin like a
+/// spreadsheet formula reach similarity.csv as text (a leading `'`), never as a formula the
+/// instructor's spreadsheet would run.
+#[test]
+fn names_that_look_like_formulas_are_text_in_the_csv() {
+    if !has_solutions() {
+        return;
+    }
+    let dir = temp("formulas");
+    std::fs::create_dir_all(&dir).unwrap();
+    folder(&dir, "=HYPERLINK(\"http:__evil\",\"x\")", "20260021", &all(solution));
+    folder(&dir, "+1+2", "20260022", &all(solution));
+    let class = read::class(&dir, false).unwrap();
+    let a = analyse(&class, &stubs(), Settings::default());
+    let csv = cg_similarity::output::csv_text(&class, &a, Lang::En).unwrap();
+    let pair = csv.lines().find(|l| l.starts_with("pair,")).expect("the pair is listed");
+    let cells: Vec<&str> = pair.split(',').collect();
+    assert_eq!(cells[1], "'+1+2", "{pair}");
+    assert!(cells[3].starts_with("\"'=HYPERLINK("), "{pair}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
