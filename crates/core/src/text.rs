@@ -311,6 +311,8 @@ pub enum ReadError {
     TooLarge {
         /// Its size in bytes, when the file system says (not for a pipe).
         size: Option<u64>,
+        /// The limit it is over, in bytes ([`MAX_TEXT_BYTES`] for [`read`]).
+        limit: u64,
     },
     /// The bytes are not text in an encoding the kit reads.
     Decode(DecodeError),
@@ -340,23 +342,32 @@ impl ReadError {
     }
 
     fn message(&self, option: bool) -> Text {
-        const MIB: u64 = MAX_TEXT_BYTES >> 20;
         match self {
             ReadError::Io { reason } => Text::new(
                 format!("読めません（{}）", reason.ja),
                 format!("cannot be read ({})", reason.en),
             ),
-            ReadError::TooLarge { size } => {
+            ReadError::TooLarge { size, limit } => {
                 let (ja, en) = size.map_or_else(
                     || (String::new(), String::new()),
                     |n| (format!("（{n} バイト）"), format!(" ({n} bytes)")),
                 );
+                // The limit it was read with: 64 MiB for a text file, less for a report.
+                let (max_ja, max_en) = match *limit {
+                    n if n % (1 << 20) == 0 => {
+                        (format!("{} MiB", n >> 20), format!("{} MiB", n >> 20))
+                    }
+                    n if n % (1 << 10) == 0 => {
+                        (format!("{} KiB", n >> 10), format!("{} KiB", n >> 10))
+                    }
+                    n => (format!("{n} バイト"), format!("{n} bytes")),
+                };
                 Text::new(
                     format!(
-                        "ファイルが {MIB} MiB を超えていて{ja}、テキストファイルとしては大きすぎます。指定したファイルが正しいか確かめてください"
+                        "ファイルが {max_ja} を超えていて{ja}、テキストファイルとしては大きすぎます。指定したファイルが正しいか確かめてください"
                     ),
                     format!(
-                        "the file is larger than {MIB} MiB{en}, too large for a text file: check that you named the right file"
+                        "the file is larger than {max_en}{en}, too large for a text file: check that you named the right file"
                     ),
                 )
             }
@@ -406,11 +417,11 @@ pub fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, ReadError> {
     if let Some(size) = size
         && size > limit
     {
-        return Err(ReadError::TooLarge { size: Some(size) });
+        return Err(ReadError::TooLarge { size: Some(size), limit });
     }
-    let limit = usize::try_from(limit).unwrap_or(usize::MAX);
+    let max = usize::try_from(limit).unwrap_or(usize::MAX);
     let expected = size.and_then(|n| usize::try_from(n).ok()).unwrap_or(0);
-    let mut bytes = Vec::with_capacity(expected.min(limit));
+    let mut bytes = Vec::with_capacity(expected.min(max));
     let mut chunk = vec![0u8; 64 << 10];
     loop {
         let n = match file.read(&mut chunk) {
@@ -419,11 +430,11 @@ pub fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, ReadError> {
             Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
             Err(e) => return Err(io(e)),
         };
-        if bytes.len() + n > limit {
-            return Err(ReadError::TooLarge { size });
+        if bytes.len() + n > max {
+            return Err(ReadError::TooLarge { size, limit });
         }
         if bytes.capacity() - bytes.len() < n {
-            let grown = bytes.capacity().saturating_mul(2).max(bytes.len() + n).min(limit);
+            let grown = bytes.capacity().saturating_mul(2).max(bytes.len() + n).min(max);
             bytes.reserve_exact(grown - bytes.len());
         }
         bytes.extend_from_slice(&chunk[..n]);

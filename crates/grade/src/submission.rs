@@ -61,7 +61,8 @@ pub fn read(path: &Path) -> Result<Files, Text> {
     }
     let files = if meta.is_dir() {
         read_folder(path)?
-    } else if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("zip")) {
+    } else if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("zip")) && meta.is_file() {
+        // Only a plain file: a FIFO named .zip would be waited on for ever.
         read_zip(path)?
     } else {
         return Err(Text::new(
@@ -273,6 +274,25 @@ mod tests {
         let Err(why) = read(&folder_path("absent")) else { panic!("a missing path was read") };
         assert!(why.en.starts_with("cannot be read: "), "{}", why.en);
         assert_eq!(why.ja, "読めません: ファイルまたはフォルダがありません");
+    }
+
+    /// A FIFO named `.zip` in the submissions is refused, not waited on for ever (which hung
+    /// the whole class's run). The read runs on a thread so that a hang fails the test.
+    #[cfg(unix)]
+    #[test]
+    fn a_fifo_named_zip_is_refused_not_waited_on() {
+        let dir = folder("fifo");
+        let fifo = dir.join("pipe.zip");
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+        if !made.is_ok_and(|s| s.success()) {
+            eprintln!("no mkfifo here: not tested");
+            return;
+        }
+        let (tx, rx) = std::sync::mpsc::channel();
+        std::thread::spawn(move || tx.send(read(&fifo).map(|_| ())));
+        let got = rx.recv_timeout(std::time::Duration::from_secs(30)).expect("read returned");
+        let why = got.expect_err("a FIFO is no submission");
+        assert!(why.en.contains("neither a folder nor a .zip"), "{}", why.en);
     }
 
     #[cfg(unix)]

@@ -144,10 +144,9 @@ pub fn parse_obj(text: &str, path: &Path) -> Result<Mesh, SceneError> {
 /// is corrupt or truncated ([`ErrorKind::Png`]).
 pub fn load_texture(path: &Path) -> Result<Texture, SceneError> {
     let bytes = cg_core::text::read_bounded(path, MAX_PNG_FILE_BYTES).map_err(|e| match e {
-        cg_core::text::ReadError::TooLarge { size } => SceneError::in_file(
-            path,
-            ErrorKind::FileTooLarge { size, limit_mib: MAX_PNG_FILE_BYTES >> 20 },
-        ),
+        cg_core::text::ReadError::TooLarge { size, limit } => {
+            SceneError::in_file(path, ErrorKind::FileTooLarge { size, limit_mib: limit >> 20 })
+        }
         cg_core::text::ReadError::Io { reason } => {
             SceneError::in_file(path, ErrorKind::Read { reason })
         }

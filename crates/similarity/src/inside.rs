@@ -202,6 +202,12 @@ fn read(item: &Item) -> Result<Found, Text> {
         return Err(too_big(rel, item.size));
     }
     let bytes = match &item.loc {
+        Loc::File(path) if !path.is_file() => {
+            return Err(skipped(
+                rel,
+                &Text::new("ふつうのファイルではありません", "not a plain file"),
+            ));
+        }
         Loc::File(path) => {
             bounded(std::fs::File::open(path).map_err(|e| unreadable_io(rel, &e))?, rel)?
         }
@@ -300,6 +306,10 @@ fn list_disk_zip(
     zips: bool,
     out: &mut Vec<Item>,
 ) {
+    // Only a plain file: a FIFO named .zip would be waited on for ever.
+    if !path.is_file() {
+        return;
+    }
     let Ok(file) = std::fs::File::open(path) else { return };
     let Ok(mut zip) = zip::ZipArchive::new(file) else { return };
     let shared = Arc::new(path.to_path_buf());

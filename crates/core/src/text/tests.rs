@@ -216,8 +216,8 @@ fn messages_are_one_line_in_each_language() {
     let at = Place { line: 3, column: 7, offset: 41 };
     let errors = [
         ReadError::Io { reason: Text::io(&std::io::Error::from(std::io::ErrorKind::NotFound)) },
-        ReadError::TooLarge { size: Some(70_000_000) },
-        ReadError::TooLarge { size: None },
+        ReadError::TooLarge { size: Some(70_000_000), limit: MAX_TEXT_BYTES },
+        ReadError::TooLarge { size: None, limit: MAX_TEXT_BYTES },
         ReadError::Decode(DecodeError::Undetected { at, nearest: Encoding::Utf8 }),
         ReadError::Decode(DecodeError::AfterBom { encoding: Encoding::Utf16Be, at }),
         ReadError::Decode(DecodeError::NotInNamed { encoding: Encoding::ShiftJis, at }),
@@ -236,4 +236,16 @@ fn messages_are_one_line_in_each_language() {
     }
     assert!(errors[1].text().en.contains("larger than 64 MiB (70000000 bytes)"));
     assert!(errors[1].text().ja.contains("70000000 バイト"), "{}", errors[1].text().ja);
+}
+
+/// A file over a smaller limit than a text file's is told that limit, not 64 MiB.
+#[test]
+fn the_limit_named_is_the_one_read_with() {
+    let path = std::env::temp_dir().join(format!("cg-text-limit-{}.md", std::process::id()));
+    std::fs::write(&path, vec![b'x'; 2048]).unwrap();
+    let e = read_bounded(&path, 1 << 10).unwrap_err();
+    assert!(matches!(e, ReadError::TooLarge { size: Some(2048), limit: 1024 }), "{e:?}");
+    assert!(e.text().en.contains("larger than 1 KiB (2048 bytes)"), "{}", e.text().en);
+    assert!(e.text().ja.contains("1 KiB を超えて"), "{}", e.text().ja);
+    let _ = std::fs::remove_file(&path);
 }
