@@ -75,7 +75,7 @@ fn a_file_over_64_mib_is_refused_by_its_size() {
     file.set_len(MAX_TEXT_BYTES + 1).unwrap();
     drop(file);
     let e = read(&path, None).unwrap_err();
-    assert_eq!(e, ReadError::TooLarge { size: Some(MAX_TEXT_BYTES + 1) });
+    assert_eq!(e, ReadError::TooLarge { size: Some(MAX_TEXT_BYTES + 1), limit: MAX_TEXT_BYTES });
     assert!(e.text().en.contains("larger than 64 MiB (67108865 bytes)"), "{e}");
 
     // Exactly the limit: zeros are valid UTF-8 (the parsers then say what is wrong).
