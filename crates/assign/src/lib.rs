@@ -26,7 +26,8 @@ mod student_file;
 mod units;
 
 pub use student_file::{
-    StudentFile, StudentFileError, read_student_file, resolve_student, write_student_file,
+    StudentFile, StudentFileError, parse_student_file, read_student_file, resolve_student,
+    write_student_file,
 };
 pub use units::{Derived, IDS, Impls, Variants, Which};
 

@@ -109,25 +109,46 @@ const MAX_STUDENT_FILE_BYTES: u64 = 64 << 10;
 pub fn read_student_file(path: &Path) -> Result<StudentFile, StudentFileError> {
     use cg_core::text::ReadError;
     let shown = path.display().to_string();
-    let unreadable = |why: Text| StudentFileError::Unreadable { path: shown.clone(), why };
     let bytes = match cg_core::text::read_bounded(path, MAX_STUDENT_FILE_BYTES) {
         Ok(bytes) => bytes,
         Err(_) if !path.exists() => return Err(StudentFileError::Missing { path: shown }),
-        Err(ReadError::TooLarge { .. }) => {
-            return Err(unreadable(Text::new(
-                format!(
-                    "{} KiB を超えています。学生番号を記録するファイルにしては大きすぎます",
-                    MAX_STUDENT_FILE_BYTES >> 10
-                ),
-                format!(
-                    "it is larger than {} KiB, too large for the record of a student number",
-                    MAX_STUDENT_FILE_BYTES >> 10
-                ),
-            )));
+        Err(ReadError::TooLarge { .. }) => return Err(too_large(shown)),
+        Err(e) => {
+            return Err(StudentFileError::Unreadable { path: shown, why: e.text_without_option() });
         }
-        Err(e) => return Err(unreadable(e.text_without_option())),
     };
-    let (text, _) = cg_core::text::decode(&bytes, None)
+    parse_student_file(&bytes, &shown)
+}
+
+fn too_large(path: String) -> StudentFileError {
+    StudentFileError::Unreadable {
+        path,
+        why: Text::new(
+            format!(
+                "{} KiB を超えています。学生番号を記録するファイルにしては大きすぎます",
+                MAX_STUDENT_FILE_BYTES >> 10
+            ),
+            format!(
+                "it is larger than {} KiB, too large for the record of a student number",
+                MAX_STUDENT_FILE_BYTES >> 10
+            ),
+        ),
+    }
+}
+
+/// [`read_student_file`] of a record's bytes (from a submission's zip), named `shown` in the
+/// errors: the same encodings, limit and mistakes.
+///
+/// # Errors
+/// As [`read_student_file`], but for a missing file.
+pub fn parse_student_file(bytes: &[u8], shown: &str) -> Result<StudentFile, StudentFileError> {
+    use cg_core::text::ReadError;
+    let shown = shown.to_owned();
+    if bytes.len() as u64 > MAX_STUDENT_FILE_BYTES {
+        return Err(too_large(shown));
+    }
+    let unreadable = |why: Text| StudentFileError::Unreadable { path: shown.clone(), why };
+    let (text, _) = cg_core::text::decode(bytes, None)
         .map_err(|e| unreadable(ReadError::from(e).text_without_option()))?;
     let invalid = |reason: Text| StudentFileError::Invalid { path: shown.clone(), reason };
     // A number without quotes (`student = 01234567`) is refused before TOML reads it: TOML

@@ -252,18 +252,8 @@ fn collect_from(
                     "exercises/student.toml is missing",
                 )
             })?;
-            let temp =
-                options.out.join(".work").join(format!("student-{}.toml", file_name(&entry)));
-            let _ = std::fs::create_dir_all(options.out.join(".work"));
-            std::fs::write(&temp, &toml).map_err(|e| Text::io_at(&temp, &e))?;
-            let student = cg_assign::read_student_file(&temp);
-            let _ = std::fs::remove_file(&temp);
-            let student = student.map_err(|e| {
-                Text::new(
-                    format!("exercises/student.toml: {}", e.message(Lang::Ja)),
-                    format!("exercises/student.toml: {}", e.message(Lang::En)),
-                )
-            })?;
+            let student = cg_assign::parse_student_file(&toml, "exercises/student.toml")
+                .map_err(|e| e.text())?;
             Ok((files, student))
         });
         // The roster binds the entry to its student: the number graded (and its variant) is

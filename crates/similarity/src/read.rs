@@ -8,7 +8,7 @@ use std::path::Path;
 
 use cg_core::lang::Text;
 use cg_grade::submission::{MAX_FILE_BYTES, MODULES};
-use cg_harness::{StudentNumber, TableVersion};
+use cg_harness::TableVersion;
 
 use crate::Submission;
 
@@ -91,34 +91,15 @@ pub fn bind(class: &mut [Submission], roster: &cg_grade::roster::Roster) -> Vec<
     notes
 }
 
-/// `exercises/student.toml` from its bytes: `student = "12345678"` and an optional `table`,
-/// as [`cg_assign::read_student_file`] reads it from a file.
+/// `exercises/student.toml` from its bytes, as the kit reads the student's own record
+/// ([`cg_assign::parse_student_file`]: UTF-8, UTF-16 or Shift_JIS, every mistake in both
+/// languages).
 ///
 /// # Errors
-/// Not TOML, no `student` in quotes, a malformed number or an unknown table.
+/// Not text or not TOML, no `student` in quotes, an unknown key, a malformed number or an
+/// unknown table.
 pub fn student_file(bytes: &[u8]) -> Result<cg_assign::StudentFile, Text> {
-    let bad = |e: String| {
-        Text::new(format!("exercises/student.toml: {e}"), format!("exercises/student.toml: {e}"))
-    };
-    let text = std::str::from_utf8(bytes).map_err(|e| bad(e.to_string()))?;
-    let value: toml::Table = toml::from_str(text).map_err(|e| bad(e.to_string()))?;
-    let Some(toml::Value::String(digits)) = value.get("student") else {
-        return Err(bad("student = \"12345678\"".to_owned()));
-    };
-    let student: StudentNumber =
-        digits.parse().map_err(|e: cg_harness::variant::StudentNumberError| {
-            Text::new(
-                format!("exercises/student.toml: {}", e.message(cg_core::lang::Lang::Ja)),
-                format!("exercises/student.toml: {}", e.message(cg_core::lang::Lang::En)),
-            )
-        })?;
-    let table = match value.get("table") {
-        None => TableVersion::LATEST,
-        Some(v) => {
-            v.to_string().trim_matches('"').parse().map_err(|_| bad(format!("table = {v}")))?
-        }
-    };
-    Ok(cg_assign::StudentFile { student, table })
+    cg_assign::parse_student_file(bytes, "exercises/student.toml").map_err(|e| e.text())
 }
 
 /// The stubs as handed out: `<kit>/exercises/src/<m>.rs` for every module (`cg sync-stubs`
@@ -248,6 +229,15 @@ mod tests {
         assert!(student_file(b"student = 20260001\n").is_err());
         assert!(student_file(b"student = \"2026\"\n").is_err());
         assert!(student_file(b"student = \"20260001\"\ntable = 99\n").is_err());
+        // As the kit reads the student's own record: UTF-16 (Notepad's "Unicode"), an unknown
+        // key refused, a number without quotes told how to write it, in Japanese too.
+        let mut utf16 = vec![0xFF, 0xFE];
+        utf16.extend("student = \"20260001\"\r\n".encode_utf16().flat_map(u16::to_le_bytes));
+        assert_eq!(student_file(&utf16).unwrap().student.as_str(), "20260001");
+        let e = student_file(b"student = \"20260001\"\nname = \"x\"\n").unwrap_err();
+        assert!(e.ja.contains("`name` というキーはありません"), "{}", e.ja);
+        let e = student_file(b"student = 20260001\n").unwrap_err();
+        assert!(e.ja.contains("student = \"20260001\"") && e.ja.contains("引用符"), "{}", e.ja);
         assert_eq!(eight_digits("report-20260001.md"), Some("20260001"));
         assert_eq!(eight_digits("2026000123.md"), None);
         assert_eq!(eight_digits("x1_20260002_v2.txt"), Some("20260002"));
