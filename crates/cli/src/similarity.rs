@@ -87,6 +87,23 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
             eprintln!("{}: {}", s.name, note.get(lang));
         }
     }
+    // Nothing of this year's to compare (an empty folder, a wrong one, every entry refused) is
+    // input that cannot be read, not "nothing found".
+    let readable = class.iter().filter(|s| !s.reference && s.refused.is_none()).count();
+    if readable == 0 {
+        let entries = class.iter().filter(|s| !s.reference).count();
+        let shown = args.submissions.display();
+        return Err(Text::new(
+            format!(
+                "{shown}: 比べられる提出物がありません（{entries} 件のうち読めたものは 0 件。理由は上に）。提出物のフォルダか Moodle のダウンロードを指定してください"
+            ),
+            format!(
+                "{shown}: no submission to compare ({entries} entries, none readable; the reasons are above): give the folder of submissions or Moodle's download"
+            ),
+        )
+        .get(lang)
+        .to_owned());
+    }
     let analysis = cg_similarity::analyse(&class, &stubs, settings);
     cg_similarity::output::write(&args.out, &class, &analysis, lang)?;
     let this_year = class.iter().filter(|s| !s.reference).count();

@@ -61,8 +61,10 @@ fn no_student_toml() -> Text {
 #[must_use]
 pub fn bind(class: &mut [Submission], roster: &cg_grade::roster::Roster) -> Vec<Text> {
     let mut notes = Vec::new();
+    let mut bound = 0;
     for s in class.iter_mut().filter(|s| !s.reference) {
         let Some(row) = roster.find(&s.name) else { continue };
+        bound += 1;
         match &mut s.student {
             Some(file) if file.student != row.student => {
                 notes.push(Text::new(
@@ -87,6 +89,14 @@ pub fn bind(class: &mut [Submission], roster: &cg_grade::roster::Roster) -> Vec<
             }
             None => {}
         }
+    }
+    // A roster that names none of the entries is the wrong file or the wrong column: said,
+    // not ignored.
+    if bound == 0 && class.iter().any(|s| !s.reference) {
+        notes.push(Text::new(
+            "名簿のどの行も提出物に結びつきませんでした。名簿の entry 列には、提出物のフォルダ名・zip の名前・Moodle の参加者 ID を書きます（名簿は使っていません）",
+            "no entry of the roster names a submission: its entry column holds the submissions' folder or zip names, or Moodle's participant IDs (the roster was not used)",
+        ));
     }
     notes
 }

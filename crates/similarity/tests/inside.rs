@@ -244,5 +244,12 @@ fn a_moodle_participant_without_student_toml_is_bound_by_the_roster() {
     assert_eq!(class[j].number(), "20260010");
     assert_eq!(notes.len(), 1, "{notes:?}");
     assert!(notes[0].en.contains(DAVE) && notes[0].en.contains("20260010"), "{notes:?}");
+    // A roster that names none of the entries (the wrong file, or names in its entry column)
+    // is said, not silently ignored.
+    let wrong =
+        cg_grade::roster::Roster::parse("student,name,entry\n20260009,山田 太郎,yamada\n").unwrap();
+    let notes = read::bind(&mut class, &wrong);
+    assert_eq!(notes.len(), 1, "{notes:?}");
+    assert!(notes[0].ja.contains("名簿のどの行も提出物に結びつきませんでした"), "{notes:?}");
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -1,0 +1,37 @@
+//! `cg similarity` on input it cannot compare: an empty folder, or one whose every entry is
+//! refused, is bad input (exit 2) with the reason, never "nothing found" (exit 0).
+#![cfg(feature = "instructor")]
+
+mod common;
+use common::{cg, root, scratch};
+
+#[test]
+fn nothing_to_compare_is_bad_input_not_nothing_found() {
+    let dir = scratch("similarity", "nothing");
+    let empty = dir.join("empty");
+    std::fs::create_dir_all(&empty).unwrap();
+    let refused = dir.join("refused");
+    std::fs::create_dir_all(&refused).unwrap();
+    std::fs::write(refused.join("notes.txt"), "not a submission").unwrap();
+    std::fs::write(refused.join("broken.zip"), "not a zip").unwrap();
+    for (folder, lang, words) in [
+        (&empty, "en", "no submission to compare"),
+        (&refused, "ja", "比べられる提出物がありません"),
+    ] {
+        let out = dir.join(format!("out-{lang}"));
+        let o = cg(
+            &root(),
+            &[
+                "similarity",
+                folder.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+                "--lang",
+                lang,
+            ],
+        );
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains(words), "{err}");
+    }
+}
