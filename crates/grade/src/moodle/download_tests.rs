@@ -172,6 +172,23 @@ fn what_is_not_a_participant_is_listed_and_a_hostile_download_refused() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// An upload of thousands of the exercises' files (a 4 MB zip of megabyte-sized `a1.rs`, which
+/// took 3 GB before its duplicates were seen) is refused at the limit, with the reason.
+#[test]
+fn an_upload_of_thousands_of_exercise_files_is_refused_at_the_limit() {
+    let dir = fake::scratch("many");
+    let mut items = fake::six("Ann_1_assignsubmission_file/exercises/", "src/", "20260001");
+    for k in 0..(super::input::MAX_CANDIDATES + 10) {
+        items.push((format!("Ann_1_assignsubmission_file/copy{k}/a1.rs"), b"fn f() {}".to_vec()));
+    }
+    std::fs::write(dir.join("d.zip"), fake::zip_of(&items)).unwrap();
+    let list = entries(&dir.join("d.zip")).unwrap();
+    let why = list[0].read().unwrap_err();
+    assert!(why.en.contains("too many of the exercises' files"), "{}", why.en);
+    assert!(why.ja.contains("多すぎます"), "{}", why.ja);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 fn options(root: &Path, submissions: &Path, roster: Option<roster::Roster>) -> Options {
     crate::test_options(root, submissions, roster)
 }

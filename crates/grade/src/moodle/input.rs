@@ -35,6 +35,43 @@ pub const MAX_DOWNLOAD_ENTRIES: usize = 200_000;
 /// How deep a participant's folder is looked into.
 const MAX_DEPTH: usize = 8;
 
+/// The most candidate files (the six files' names, anywhere in it) one upload may hold, and
+/// their most bytes together: a few copies of the exercises are a student's backups; thousands
+/// of `a1.rs` of a megabyte each (a 4 MB zip) would take gigabytes of memory before the
+/// duplicates are seen.
+pub const MAX_CANDIDATES: usize = 256;
+/// See [`MAX_CANDIDATES`].
+pub const MAX_CANDIDATE_BYTES: u64 = 32 << 20;
+
+/// What an upload's candidates have taken so far, against [`MAX_CANDIDATES`] and
+/// [`MAX_CANDIDATE_BYTES`].
+#[derive(Default)]
+struct Taken {
+    files: usize,
+    bytes: u64,
+}
+
+impl Taken {
+    /// `bytes` read for `rel`, or the upload refused when it is past the limits.
+    fn add(&mut self, rel: &str, bytes: Vec<u8>) -> Result<(String, Vec<u8>), Text> {
+        self.files += 1;
+        self.bytes += bytes.len() as u64;
+        if self.files > MAX_CANDIDATES || self.bytes > MAX_CANDIDATE_BYTES {
+            return Err(text(
+                format!(
+                    "提出物に課題のファイル（a1.rs などの名前のもの）が多すぎます（{rel} まで {} 個、{} バイト。上限 {MAX_CANDIDATES} 個、{MAX_CANDIDATE_BYTES} バイト）",
+                    self.files, self.bytes
+                ),
+                format!(
+                    "the upload holds too many of the exercises' files (files named a1.rs and the like: {} files, {} bytes up to {rel}; at most {MAX_CANDIDATES} files and {MAX_CANDIDATE_BYTES} bytes)",
+                    self.files, self.bytes
+                ),
+            ));
+        }
+        Ok((rel.to_owned(), bytes))
+    }
+}
+
 /// One entry to grade.
 #[derive(Clone, Debug)]
 pub struct Entry {
@@ -123,8 +160,8 @@ impl Entry {
         match &self.source {
             Source::Path(path) => submission::read(path),
             Source::Refused(why) => Err(why.clone()),
-            Source::Folder(roots) => resolve(from_folder(roots)?),
-            Source::Zip(zip, items) => resolve(from_zip(zip, items)?),
+            Source::Folder(roots) => resolve(from_folder(roots, &mut Taken::default())?),
+            Source::Zip(zip, items) => resolve(from_zip(zip, items, &mut Taken::default())?),
         }
     }
 }
@@ -399,7 +436,10 @@ fn bounded(reader: impl Read, limit: u64, rel: &str) -> Result<Vec<u8>, Text> {
     Ok(bytes)
 }
 
-fn from_folder(roots: &[(String, PathBuf)]) -> Result<Vec<(String, Vec<u8>)>, Text> {
+fn from_folder(
+    roots: &[(String, PathBuf)],
+    taken: &mut Taken,
+) -> Result<Vec<(String, Vec<u8>)>, Text> {
     let mut found = Vec::new();
     let mut seen = 0usize;
     let mut stack: Vec<(String, PathBuf, usize)> =
@@ -432,9 +472,9 @@ fn from_folder(roots: &[(String, PathBuf)]) -> Result<Vec<(String, Vec<u8>)>, Te
         } else if meta.is_file() && candidate(&rel) {
             let file = std::fs::File::open(&path).map_err(|e| cannot_read(&rel, &e))?;
             if is_zip(&rel) {
-                found.extend(inside(&rel, file)?);
+                found.extend(inside(&rel, file, taken)?);
             } else {
-                found.push((rel.clone(), bounded(file, MAX_FILE_BYTES, &rel)?));
+                found.push(taken.add(&rel, bounded(file, MAX_FILE_BYTES, &rel)?)?);
             }
         }
     }
@@ -442,7 +482,11 @@ fn from_folder(roots: &[(String, PathBuf)]) -> Result<Vec<(String, Vec<u8>)>, Te
     Ok(found)
 }
 
-fn from_zip(path: &Path, items: &[(usize, String)]) -> Result<Vec<(String, Vec<u8>)>, Text> {
+fn from_zip(
+    path: &Path,
+    items: &[(usize, String)],
+    taken: &mut Taken,
+) -> Result<Vec<(String, Vec<u8>)>, Text> {
     let file =
         std::fs::File::open(path).map_err(|e| cannot_read(&path.display().to_string(), &e))?;
     let mut zip = zip::ZipArchive::new(file).map_err(|e| bad_zip(&e))?;
@@ -456,7 +500,7 @@ fn from_zip(path: &Path, items: &[(usize, String)]) -> Result<Vec<(String, Vec<u
             continue;
         }
         if !is_zip(rel) {
-            found.push((rel.clone(), bounded(entry, MAX_FILE_BYTES, rel)?));
+            found.push(taken.add(rel, bounded(entry, MAX_FILE_BYTES, rel)?)?);
             continue;
         }
         if entry.size() > MAX_UPLOAD_ZIP_BYTES {
@@ -467,7 +511,7 @@ fn from_zip(path: &Path, items: &[(usize, String)]) -> Result<Vec<(String, Vec<u
         if bytes.len() as u64 > MAX_UPLOAD_ZIP_BYTES {
             return Err(too_big(rel, bytes.len() as u64, MAX_UPLOAD_ZIP_BYTES));
         }
-        found.extend(inside(rel, Cursor::new(bytes))?);
+        found.extend(inside(rel, Cursor::new(bytes), taken)?);
     }
     found.sort();
     Ok(found)
@@ -475,7 +519,11 @@ fn from_zip(path: &Path, items: &[(usize, String)]) -> Result<Vec<(String, Vec<u
 
 /// The six files' candidates inside a participant's zip, named `<zip>/<path>`. Every entry is
 /// looked at: one hostile entry (an unsafe path, a link) refuses the upload.
-fn inside(rel: &str, reader: impl Read + Seek) -> Result<Vec<(String, Vec<u8>)>, Text> {
+fn inside(
+    rel: &str,
+    reader: impl Read + Seek,
+    taken: &mut Taken,
+) -> Result<Vec<(String, Vec<u8>)>, Text> {
     let within = |t: Text| text(format!("{rel}: {}", t.ja), format!("{rel}: {}", t.en));
     let mut zip = zip::ZipArchive::new(reader).map_err(|e| within(bad_zip(&e)))?;
     if zip.len() > MAX_ZIP_ENTRIES {
@@ -498,7 +546,8 @@ fn inside(rel: &str, reader: impl Read + Seek) -> Result<Vec<(String, Vec<u8>)>,
             continue;
         }
         let name = format!("{rel}/{name}");
-        found.push((name.clone(), bounded(entry, MAX_FILE_BYTES, &name)?));
+        let bytes = bounded(entry, MAX_FILE_BYTES, &name)?;
+        found.push(taken.add(&name, bytes)?);
     }
     Ok(found)
 }
