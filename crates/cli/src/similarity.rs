@@ -56,6 +56,24 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
     let kit = src.ancestors().nth(2).unwrap_or(&src).to_path_buf();
     let stubs = read::stubs(&kit).map_err(|e| e.get(lang).to_owned())?;
     let mut class = read::class(&args.submissions, false).map_err(|e| e.get(lang).to_owned())?;
+    // This year's submissions given again as an earlier year's would pair each with itself.
+    let this_year = args.submissions.canonicalize().ok();
+    if let Some(same) =
+        args.reference.iter().find(|r| r.canonicalize().ok().is_some_and(|r| Some(r) == this_year))
+    {
+        return Err(Text::new(
+            format!(
+                "--reference {} は今年の提出物と同じフォルダです（過去の年度の提出物を指定してください）",
+                same.display()
+            ),
+            format!(
+                "--reference {} is this year's submissions again (give an earlier year's)",
+                same.display()
+            ),
+        )
+        .get(lang)
+        .to_owned());
+    }
     for reference in &args.reference {
         class.extend(read::class(reference, true).map_err(|e| e.get(lang).to_owned())?);
     }

@@ -34,4 +34,11 @@ fn nothing_to_compare_is_bad_input_not_nothing_found() {
         assert_eq!(o.status.code(), Some(2), "{err}");
         assert!(err.contains(words), "{err}");
     }
+    // This year's folder given again as an earlier year's: refused, not paired with itself.
+    let (folder, out) = (empty.to_str().unwrap(), dir.join("out-same"));
+    let o =
+        cg(&root(), &["similarity", folder, "--reference", folder, "--out", out.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("this year's submissions again"), "{err}");
 }

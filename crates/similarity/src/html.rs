@@ -146,12 +146,32 @@ pub fn page(class: &[Submission], analysis: &Analysis, lang: Lang) -> String {
         );
         pair_table(&mut h, class, &analysis.near, false, lang);
     }
-    for (n, p) in analysis.pairs.iter().enumerate() {
+    for (n, p) in analysis.pairs.iter().enumerate().take(MAX_DETAILED) {
         detail(&mut h, class, p, n + 1, lang);
+    }
+    if analysis.pairs.len() > MAX_DETAILED {
+        let more = analysis.pairs.len() - MAX_DETAILED;
+        let _ = writeln!(
+            h,
+            "<p class=\"note\">{}</p>",
+            Text::new(
+                format!(
+                    "ほかの {more} 組は、ファイルを並べた表示を省きました（上の表と similarity.csv にすべてあります）"
+                ),
+                format!(
+                    "the other {more} pairs are not shown side by side (the table above and similarity.csv list them all)"
+                ),
+            )
+            .get(lang)
+        );
     }
     h.push_str("</body></html>\n");
     h
 }
+
+/// The most pairs shown side by side, file by file: 200 copies of one submission list 19 900
+/// pairs, whose files side by side made a page of 5 GB.
+pub const MAX_DETAILED: usize = 200;
 
 fn pair_table(h: &mut String, class: &[Submission], pairs: &[Pair], linked: bool, lang: Lang) {
     let tr = |ja: &str, en: &str| t(ja, en).get(lang).to_owned();
@@ -164,7 +184,7 @@ fn pair_table(h: &mut String, class: &[Submission], pairs: &[Pair], linked: bool
         tr("クラスタ", "Cluster"),
     );
     for (n, p) in pairs.iter().enumerate() {
-        let number = if linked {
+        let number = if linked && n < MAX_DETAILED {
             format!("<a href=\"#pair-{}\">{}</a>", n + 1, n + 1)
         } else {
             (n + 1).to_string()

@@ -478,3 +478,27 @@ fn names_that_look_like_formulas_are_text_in_the_csv() {
     assert!(cells[3].starts_with("\"'=HYPERLINK("), "{pair}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A ring of 21 copies lists all 210 pairs, but shows only the first MAX_DETAILED side by side
+/// (200 copies once made a page of 5 GB), and says so.
+#[test]
+fn the_page_shows_at_most_its_limit_of_pairs_side_by_side() {
+    if !has_solutions() {
+        return;
+    }
+    let dir = temp("ring");
+    std::fs::create_dir_all(&dir).unwrap();
+    for k in 0..21 {
+        folder(&dir, &format!("s{k:02}"), &format!("202600{k:02}"), &all(solution));
+    }
+    let class = read::class(&dir, false).unwrap();
+    let settings = Settings { max_share: 100, ..Settings::default() };
+    let a = analyse(&class, &stubs(), settings);
+    assert_eq!(a.pairs.len(), 210);
+    let page = cg_similarity::html::page(&class, &a, Lang::En);
+    let shown = page.matches("<h3 id=\"pair-").count();
+    assert_eq!(shown, cg_similarity::html::MAX_DETAILED);
+    assert!(page.contains("the other 10 pairs are not shown side by side"), "the note");
+    assert!(!page.contains("href=\"#pair-201\""), "no link to a pair not shown");
+    let _ = std::fs::remove_dir_all(&dir);
+}
