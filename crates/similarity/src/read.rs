@@ -121,15 +121,15 @@ pub fn stubs(kit: &Path) -> Result<BTreeMap<String, String>, Text> {
     let mut out = BTreeMap::new();
     for m in MODULES {
         let path = kit.join("exercises/src").join(format!("{m}.rs"));
-        out.insert((*m).to_owned(), text_file(&path)?);
+        out.insert((*m).to_owned(), text_file(&path, MAX_FILE_BYTES)?);
     }
     Ok(out)
 }
 
-/// A text file of at most [`MAX_FILE_BYTES`], in any encoding the kit reads.
-fn text_file(path: &Path) -> Result<String, Text> {
+/// A text file of at most `limit` bytes, in any encoding the kit reads.
+fn text_file(path: &Path, limit: u64) -> Result<String, Text> {
     let shown = path.display();
-    let bytes = cg_core::text::read_bounded(path, MAX_FILE_BYTES).map_err(|e| {
+    let bytes = cg_core::text::read_bounded(path, limit).map_err(|e| {
         let why = e.text_without_option();
         Text::new(
             format!("{shown} を読めません: {}", why.ja),
@@ -147,8 +147,12 @@ fn text_file(path: &Path) -> Result<String, Text> {
 /// in place of a report found inside one (kept in `report_set_aside`: [`set_aside`]).
 /// Returns the files that matched no one.
 ///
+/// A report that cannot be read (over [`crate::inside::MAX_REPORT_BYTES`], not text: a PDF)
+/// is a note on its students' submissions, which are compared without it, as a report inside a
+/// submission is.
+///
 /// # Errors
-/// The folder or a report cannot be read (a report over [`MAX_FILE_BYTES`] included).
+/// The folder cannot be read.
 pub fn reports(dir: &Path, class: &mut [Submission]) -> Result<Vec<String>, Text> {
     let shown = dir.display();
     let list = std::fs::read_dir(dir).map_err(|e| {
@@ -181,7 +185,15 @@ pub fn reports(dir: &Path, class: &mut [Submission]) -> Result<Vec<String>, Text
             unmatched.push(name);
             continue;
         }
-        let text = text_file(&path)?;
+        let text = match text_file(&path, crate::inside::MAX_REPORT_BYTES) {
+            Ok(text) => text,
+            Err(why) => {
+                for s in owners {
+                    s.notes.push(why.clone());
+                }
+                continue;
+            }
+        };
         for s in owners {
             s.report = Some(text.clone());
             s.report_file = Some(path.display().to_string());

@@ -253,3 +253,27 @@ fn a_moodle_participant_without_student_toml_is_bound_by_the_roster() {
     assert!(notes[0].ja.contains("名簿のどの行も提出物に結びつきませんでした"), "{notes:?}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A file in --reports that cannot be read (a PDF) is a note on its student's submission, not
+/// the end of the whole run; a report of 2 MB is read (the limit is 4 MiB, as documented).
+#[test]
+fn a_report_that_cannot_be_read_is_a_note_not_the_end_of_the_run() {
+    let dir = temp("reports-bad");
+    folder(&dir, "carol", Some(CAROL), &[]);
+    folder(&dir, "dave", Some(DAVE), &[]);
+    let mut class = read::class(&dir, false).unwrap();
+    let reports = dir.with_extension("given");
+    std::fs::create_dir_all(&reports).unwrap();
+    std::fs::write(reports.join(format!("{CAROL}.pdf")), b"%PDF-1.7\n\x80\xa0\xfd\xfe\xff\x80")
+        .unwrap();
+    let long = format!("{}\n", report(DAVE)).repeat(2_000_000 / report(DAVE).len().max(1));
+    std::fs::write(reports.join(format!("{DAVE}.md")), &long).unwrap();
+    let unmatched = read::reports(&reports, &mut class).expect("the run goes on");
+    assert!(unmatched.is_empty(), "{unmatched:?}");
+    let (c, d) = (index(&class, "carol"), index(&class, "dave"));
+    assert!(class[c].report.is_none() && !class[c].notes.is_empty(), "{:?}", class[c].notes);
+    assert!(class[c].notes[0].en.contains(".pdf"), "{:?}", class[c].notes);
+    assert!(class[d].report.as_ref().is_some_and(|r| r.len() > 1_000_000), "the 2 MB report");
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&reports);
+}
