@@ -180,11 +180,34 @@ pub fn unsafe_name(name: &str) -> bool {
         || name.split('/').any(|part| part == "..")
 }
 
-fn read_zip(path: &Path) -> Result<Files, Text> {
-    let bad = |e: &dyn std::fmt::Display| {
-        Text::new(format!("zip として読めません: {e}"), format!("not a readable zip: {e}"))
+/// Why a zip cannot be read, in both languages: the zip crate's English words only in the
+/// English, and in the Japanese only where the kind is none a student meets (a damaged or cut
+/// zip, not a zip, encryption, an unknown compression).
+#[must_use]
+pub fn zip_reason(e: &zip::result::ZipError) -> Text {
+    use zip::result::ZipError as Z;
+    let ja = match e {
+        Z::Io(io) => return zip_text(&Text::io(io)),
+        Z::InvalidArchive(_) => "壊れているか途中で切れているか、zip ではありません",
+        Z::UnsupportedArchive(_) | Z::InvalidPassword => {
+            "この形式の zip（暗号化されたものなど）は読めません"
+        }
+        Z::CompressionMethodNotSupported(_) => "この圧縮方式の zip は読めません",
+        _ => return zip_text(&Text::new(format!("zip のエラー: {e}"), e.to_string())),
     };
-    let file = std::fs::File::open(path).map_err(|e| bad(&e))?;
+    zip_text(&Text::new(ja, e.to_string()))
+}
+
+fn zip_text(why: &Text) -> Text {
+    Text::new(
+        format!("zip として読めません: {}", why.ja),
+        format!("not a readable zip: {}", why.en),
+    )
+}
+
+fn read_zip(path: &Path) -> Result<Files, Text> {
+    let bad = |e: &zip::result::ZipError| zip_reason(e);
+    let file = std::fs::File::open(path).map_err(|e| zip_text(&Text::io(&e)))?;
     let mut zip = zip::ZipArchive::new(file).map_err(|e| bad(&e))?;
     if zip.len() > MAX_ZIP_ENTRIES {
         return Err(Text::new(
@@ -239,7 +262,10 @@ fn read_zip(path: &Path) -> Result<Files, Text> {
         }
         // The declared size may lie: read at most one byte more than allowed.
         let mut bytes = Vec::new();
-        entry.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes).map_err(|e| bad(&e))?;
+        entry
+            .take(MAX_FILE_BYTES + 1)
+            .read_to_end(&mut bytes)
+            .map_err(|e| zip_text(&Text::io(&e)))?;
         if bytes.len() as u64 > MAX_FILE_BYTES {
             return Err(too_big(relative, bytes.len() as u64));
         }
@@ -274,6 +300,19 @@ mod tests {
         let Err(why) = read(&folder_path("absent")) else { panic!("a missing path was read") };
         assert!(why.en.starts_with("cannot be read: "), "{}", why.en);
         assert_eq!(why.ja, "読めません: ファイルまたはフォルダがありません");
+    }
+
+    /// A file named .zip that is none is said in Japanese, the zip crate's English words only
+    /// in the English message.
+    #[test]
+    fn a_broken_zip_is_said_in_both_languages() {
+        let dir = folder("broken-zip");
+        let path = dir.join("notzip.zip");
+        std::fs::write(&path, b"this is no zip").unwrap();
+        let why = read(&path).map(|_| ()).unwrap_err();
+        assert!(why.ja.contains("壊れているか途中で切れているか"), "{}", why.ja);
+        assert!(!why.ja.contains("EOCD") && !why.ja.contains("archive"), "{}", why.ja);
+        assert!(why.en.starts_with("not a readable zip: "), "{}", why.en);
     }
 
     /// A FIFO named `.zip` in the submissions is refused, not waited on for ever (which hung

@@ -159,10 +159,6 @@ fn too_big(rel: &str, size: u64) -> Text {
     )
 }
 
-fn unreadable(rel: &str, e: &dyn std::fmt::Display) -> Text {
-    skipped(rel, &Text::from(e.to_string()))
-}
-
 fn unreadable_io(rel: &str, e: &std::io::Error) -> Text {
     skipped(rel, &Text::io(e))
 }
@@ -192,7 +188,8 @@ fn from_zip<R: Read + std::io::Seek>(
     at: usize,
     rel: &str,
 ) -> Result<Vec<u8>, Text> {
-    let entry = zip.by_index(at).map_err(|e| unreadable(rel, &e))?;
+    let entry =
+        zip.by_index(at).map_err(|e| skipped(rel, &cg_grade::submission::zip_reason(&e)))?;
     bounded(entry, rel)
 }
 
@@ -213,11 +210,16 @@ fn read(item: &Item) -> Result<Found, Text> {
         }
         Loc::Zip(path, at) => {
             let file = std::fs::File::open(path.as_path()).map_err(|e| unreadable_io(rel, &e))?;
-            from_zip(zip::ZipArchive::new(file).map_err(|e| unreadable(rel, &e))?, *at, rel)?
+            from_zip(
+                zip::ZipArchive::new(file)
+                    .map_err(|e| skipped(rel, &cg_grade::submission::zip_reason(&e)))?,
+                *at,
+                rel,
+            )?
         }
         Loc::Bytes(bytes, at) => {
             let zip = zip::ZipArchive::new(Cursor::new(bytes.as_slice()))
-                .map_err(|e| unreadable(rel, &e))?;
+                .map_err(|e| skipped(rel, &cg_grade::submission::zip_reason(&e)))?;
             from_zip(zip, *at, rel)?
         }
     };

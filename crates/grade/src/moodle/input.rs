@@ -295,8 +295,8 @@ fn entry_name<R: Read + ?Sized>(entry: &zip::read::ZipFile<'_, R>) -> Result<Str
     Ok(name.replace('\\', "/"))
 }
 
-fn bad_zip(e: &dyn std::fmt::Display) -> Text {
-    text(format!("zip として読めません: {e}"), format!("not a readable zip: {e}"))
+fn bad_zip(e: &zip::result::ZipError) -> Text {
+    submission::zip_reason(e)
 }
 
 fn unsafe_path(name: &str) -> Text {
