@@ -150,6 +150,24 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
     if let Some(note) = read::set_aside(&class) {
         println!("{}", note.get(lang));
     }
+    if !analysis.mostly_common.is_empty() {
+        let names: Vec<&str> =
+            analysis.mostly_common.iter().map(|&i| class[i].name.as_str()).collect();
+        let (n, share) = (names.len(), args.max_share.max(2));
+        println!(
+            "{}: {}",
+            Text::new(
+                format!(
+                    "注意: {n} 件の提出物は、コードの指紋の半分以上が {share} 件を超える提出物と共通なので、共通のコードとして比べていません（{share} 件を超えるコピーの輪かもしれません。--max-share を大きくして確かめてください）"
+                ),
+                format!(
+                    "note: {n} submissions share most of their code's fingerprints with more than {share} submissions, so it was taken as common code and not compared (a ring of more than {share} copies would look so: check with a larger --max-share)"
+                ),
+            )
+            .get(lang),
+            names.join(", ")
+        );
+    }
     for p in &analysis.pairs {
         println!(
             "  {:>3.0}%  {} ({}) — {} ({})",

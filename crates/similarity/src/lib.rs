@@ -144,6 +144,10 @@ pub struct Analysis {
     pub clusters: Vec<Vec<usize>>,
     /// The cross-variant findings.
     pub cross: Vec<Cross>,
+    /// This year's submissions that lost most of their fingerprints (at least half of 20 or
+    /// more) as common code, held by more than `max_share` submissions: what a ring of more
+    /// copies than `max_share` looks like, which no pair then shows. Said, for a look.
+    pub mostly_common: Vec<usize>,
 }
 
 impl Analysis {
@@ -165,7 +169,11 @@ pub fn analyse(
     let base = compare::base_hashes(stubs);
     let mut prints: Vec<compare::Prints> =
         class.iter().map(|s| compare::prints(&s.modules, &base)).collect();
+    let before: Vec<usize> = prints.iter().map(compare::Prints::len).collect();
     compare::drop_common(&mut prints, settings.max_share);
+    let mostly_common: Vec<usize> = (0..class.len())
+        .filter(|&i| !class[i].reference && before[i] >= 20 && prints[i].len() * 2 < before[i])
+        .collect();
     let reference: Vec<bool> = class.iter().map(|s| s.reference).collect();
     let counts = compare::shared_counts(&prints, &reference);
 
@@ -208,5 +216,6 @@ pub fn analyse(
         near,
         clusters,
         cross: cross::cross_variant(class, stubs),
+        mostly_common,
     }
 }

@@ -449,6 +449,7 @@ fn references_are_compared_with_this_year_but_not_with_each_other() {
     );
     // Joined through ivan, they are one cluster.
     assert_eq!(a.clusters, [vec![ivan, old1, old2]]);
+    assert!(a.mostly_common.is_empty(), "{:?}", a.mostly_common);
     let csv = cg_similarity::output::csv_text(&class, &a, Lang::En).unwrap();
     assert!(
         csv.lines().filter(|l| l.starts_with("pair,")).all(|l| l.contains("reference")),
@@ -500,5 +501,32 @@ fn the_page_shows_at_most_its_limit_of_pairs_side_by_side() {
     assert_eq!(shown, cg_similarity::html::MAX_DETAILED);
     assert!(page.contains("the other 10 pairs are not shown side by side"), "the note");
     assert!(!page.contains("href=\"#pair-201\""), "no link to a pair not shown");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Eleven copies of one submission share every fingerprint with more than --max-share (10)
+/// submissions, so no pair shows them: they are named as mostly common code instead of
+/// disappearing without a word; ten copies are pairs, and named so.
+#[test]
+fn a_ring_of_more_copies_than_max_share_is_named_not_lost() {
+    if !has_solutions() {
+        return;
+    }
+    let dir = temp("ring11");
+    std::fs::create_dir_all(&dir).unwrap();
+    for k in 0..11 {
+        folder(&dir, &format!("s{k:02}"), &format!("202601{k:02}"), &all(solution));
+    }
+    folder(&dir, "own", "20260199", &all(stub));
+    let class = read::class(&dir, false).unwrap();
+    let a = analyse(&class, &stubs(), Settings::default());
+    assert!(a.pairs.is_empty(), "{:?}", a.pairs.len());
+    let names: Vec<&str> = a.mostly_common.iter().map(|&i| class[i].name.as_str()).collect();
+    assert_eq!(names.len(), 11, "{names:?}");
+    assert!(!names.contains(&"own"));
+    // With a --max-share above the ring, they are pairs again and not "mostly common".
+    let a = analyse(&class, &stubs(), Settings { max_share: 20, ..Settings::default() });
+    assert_eq!(a.pairs.len(), 55);
+    assert!(a.mostly_common.is_empty());
     let _ = std::fs::remove_dir_all(&dir);
 }
