@@ -17,7 +17,10 @@ pub fn line(g: &Graded, lang: Lang) -> String {
     let note = if g.skipped { t("（前回の結果）", " (kept)") } else { Text::default() };
     let note = note.get(lang);
     let flag = g.flag.as_ref().map(|f| format!(" [{}]", f.get(lang))).unwrap_or_default();
-    format!("{} ({}): {}{max}{note}{flag}", g.name, g.entry, g.score)
+    // The entry's name is the student's (a zip's name, a Moodle full name): a control character
+    // in it (an escape sequence that would drive the instructor's terminal) is shown as its code.
+    let line = format!("{} ({}): {}{max}{note}{flag}", g.name, g.entry, g.score);
+    cg_core::quote::visible(&line)
 }
 
 /// The lines and the bar.
@@ -109,4 +112,26 @@ impl Progress {
 fn spinner() -> ProgressStyle {
     ProgressStyle::with_template("{spinner} {msg} · {elapsed}")
         .unwrap_or_else(|_| ProgressStyle::default_spinner())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An entry's name is the student's: an escape sequence in it (here OSC 52, which writes the
+    /// instructor's clipboard) reaches the terminal as its code, not as the sequence.
+    #[test]
+    fn a_control_character_in_an_entry_name_is_shown_as_its_code() {
+        let g = Graded {
+            entry: "\u{1b}]52;c;ZXZpbA==\u{7}Taro.zip".to_owned(),
+            name: "Taro.zip".to_owned(),
+            score: 3.0,
+            max_score: Some(5.0),
+            skipped: false,
+            flag: None,
+        };
+        let text = line(&g, Lang::En);
+        assert!(!text.contains('\u{1b}') && !text.contains('\u{7}'), "{text:?}");
+        assert!(text.contains("<U+001B>]52;c;ZXZpbA==<U+0007>Taro.zip"), "{text}");
+    }
 }

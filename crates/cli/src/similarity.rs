@@ -4,6 +4,9 @@
 use std::path::PathBuf;
 
 use cg_core::lang::{Lang, Text, t};
+// The names printed are the students' (zips, folders, Moodle full names): a control character
+// in one (an escape sequence for the instructor's terminal) is shown as its code.
+use cg_core::quote::visible;
 use cg_harness::exit::Ending;
 use cg_similarity::{Settings, read};
 
@@ -80,12 +83,13 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
     if let Some(path) = &args.roster {
         let roster = cg_grade::roster::Roster::read(path).map_err(|e| e.get(lang).to_owned())?;
         for note in read::bind(&mut class, &roster) {
-            eprintln!("{}", note.get(lang));
+            eprintln!("{}", visible(note.get(lang)));
         }
     }
     if let Some(dir) = &args.reports {
         let unmatched = read::reports(dir, &mut class).map_err(|e| e.get(lang).to_owned())?;
         for name in unmatched {
+            let name = visible(&name);
             eprintln!(
                 "{}: {name}",
                 t(
@@ -98,11 +102,11 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
     }
     for s in class.iter().filter(|s| s.refused.is_some()) {
         let why = s.refused.as_ref().map(|w| w.get(lang).to_owned()).unwrap_or_default();
-        eprintln!("{}: {why}", s.name);
+        eprintln!("{}: {why}", visible(&s.name));
     }
     for s in &class {
         for note in &s.notes {
-            eprintln!("{}: {}", s.name, note.get(lang));
+            eprintln!("{}: {}", visible(&s.name), note.get(lang));
         }
     }
     // Nothing of this year's to compare (an empty folder, a wrong one, every entry refused) is
@@ -165,11 +169,11 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
                 ),
             )
             .get(lang),
-            names.join(", ")
+            visible(&names.join(", "))
         );
     }
     for p in &analysis.pairs {
-        println!(
+        let line = format!(
             "  {:>3.0}%  {} ({}) — {} ({})",
             p.score * 100.0,
             class[p.a].name,
@@ -177,10 +181,12 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
             class[p.b].name,
             class[p.b].number()
         );
+        println!("{}", visible(&line));
     }
     for c in &analysis.cross {
         let s = &class[c.submission];
-        println!("  {}: {}", s.name, cg_similarity::output::cross_note(c, s, lang));
+        let line = format!("  {}: {}", s.name, cg_similarity::output::cross_note(c, s, lang));
+        println!("{}", visible(&line));
     }
     println!(
         "{}: {}",

@@ -14,6 +14,8 @@ fn nothing_to_compare_is_bad_input_not_nothing_found() {
     std::fs::create_dir_all(&refused).unwrap();
     std::fs::write(refused.join("notes.txt"), "not a submission").unwrap();
     std::fs::write(refused.join("broken.zip"), "not a zip").unwrap();
+    // A name that is an escape sequence for the instructor's terminal (clear the screen).
+    std::fs::write(refused.join("\u{1b}[2Jclear.txt"), "x").unwrap();
     for (folder, lang, words) in [
         (&empty, "en", "no submission to compare"),
         (&refused, "ja", "比べられる提出物がありません"),
@@ -33,7 +35,15 @@ fn nothing_to_compare_is_bad_input_not_nothing_found() {
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{err}");
         assert!(err.contains(words), "{err}");
+        assert!(!err.contains('\u{1b}'), "an escape reached the terminal: {err:?}");
     }
+    let out = dir.join("out-escape");
+    let o = cg(
+        &root(),
+        &["similarity", refused.to_str().unwrap(), "--out", out.to_str().unwrap(), "--lang", "en"],
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("<U+001B>[2Jclear.txt"), "{err}");
     // This year's folder given again as an earlier year's: refused, not paired with itself.
     let (folder, out) = (empty.to_str().unwrap(), dir.join("out-same"));
     let o =
