@@ -30,12 +30,12 @@ pub struct Args {
     /// The least share of the smaller submission's fingerprints two submissions must share to be listed (0 to 1) / 一覧に載せる類似度の下限（小さいほうの提出物の指紋のうち共有する割合、0〜1）
     #[arg(long, value_name = "SCORE", default_value_t = Settings::default().threshold)]
     threshold: f64,
-    /// The fewest shared fingerprints of a listed pair / 一覧に載せる組が共有する指紋の最小数
-    #[arg(long, value_name = "N", default_value_t = Settings::default().min_shared)]
-    min_shared: usize,
-    /// A fingerprint found in more submissions than this is common code, not a copy (MOSS's -m) / これを超える数の提出物にある指紋は共通のコードとみなす
-    #[arg(long, value_name = "N", default_value_t = Settings::default().max_share)]
-    max_share: usize,
+    /// The fewest shared fingerprints of a listed pair, at least 1 / 一覧に載せる組が共有する指紋の最小数（1 以上）
+    #[arg(long, value_name = "N", default_value_t = Settings::default().min_shared as u64, value_parser = clap::value_parser!(u64).range(1..))]
+    min_shared: u64,
+    /// A fingerprint found in more submissions than this is common code, not a copy (MOSS's -m), at least 2 / これを超える数の提出物にある指紋は共通のコードとみなす（2 以上）
+    #[arg(long, value_name = "N", default_value_t = Settings::default().max_share as u64, value_parser = clap::value_parser!(u64).range(2..))]
+    max_share: u64,
 }
 
 /// `cg similarity`: 0 when nothing is found, 1 when a pair or a cross-variant copy is (the
@@ -51,14 +51,21 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
     }
     let settings = Settings {
         threshold: args.threshold,
-        min_shared: args.min_shared.max(1),
-        max_share: args.max_share.max(2),
+        min_shared: usize::try_from(args.min_shared).unwrap_or(usize::MAX),
+        max_share: usize::try_from(args.max_share).unwrap_or(usize::MAX),
     };
     // The stubs as handed out: the kit's exercises/ (here, or the kit this binary was built in).
     let src = crate::kit_path(None, "exercises/src");
     let kit = src.ancestors().nth(2).unwrap_or(&src).to_path_buf();
     let stubs = read::stubs(&kit).map_err(|e| e.get(lang).to_owned())?;
     let mut class = read::class(&args.submissions, false).map_err(|e| e.get(lang).to_owned())?;
+    // --out inside the submissions folder: last run's output is no submission.
+    if let (Ok(out), Ok(subs)) = (args.out.canonicalize(), args.submissions.canonicalize())
+        && out.parent() == Some(subs.as_path())
+        && let Some(name) = out.file_name().map(|n| n.to_string_lossy().into_owned())
+    {
+        class.retain(|s| s.name != name);
+    }
     // This year's submissions given again as an earlier year's would pair each with itself.
     let this_year = args.submissions.canonicalize().ok();
     if let Some(same) =
@@ -157,7 +164,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
     if !analysis.mostly_common.is_empty() {
         let names: Vec<&str> =
             analysis.mostly_common.iter().map(|&i| class[i].name.as_str()).collect();
-        let (n, share) = (names.len(), args.max_share.max(2));
+        let (n, share) = (names.len(), args.max_share);
         println!(
             "{}: {}",
             Text::new(

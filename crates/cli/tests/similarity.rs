@@ -44,6 +44,20 @@ fn nothing_to_compare_is_bad_input_not_nothing_found() {
     );
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("<U+001B>[2Jclear.txt"), "{err}");
+    // The output written inside the submissions folder is no submission at the next run.
+    let inside = refused.join("similarity-out");
+    std::fs::create_dir_all(&inside).unwrap();
+    std::fs::write(inside.join("similarity.csv"), "kind\n").unwrap();
+    let o =
+        cg(&root(), &["similarity", refused.to_str().unwrap(), "--out", inside.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!err.contains("similarity-out:"), "the output was read as an entry: {err}");
+    // Settings that mean nothing are refused, not quietly changed.
+    for (option, value) in [("--min-shared", "0"), ("--max-share", "1")] {
+        let o = cg(&root(), &["similarity", empty.to_str().unwrap(), option, value]);
+        assert_eq!(o.status.code(), Some(2), "{option} {value}");
+        assert!(String::from_utf8_lossy(&o.stderr).contains(option));
+    }
     // This year's folder given again as an earlier year's: refused, not paired with itself.
     let (folder, out) = (empty.to_str().unwrap(), dir.join("out-same"));
     let o =

@@ -104,6 +104,22 @@ impl Roster {
                         ),
                     )
                 })?;
+            // Two columns for one key (`student` and `学籍番号`): which one is meant is not
+            // for the reader to guess.
+            let count =
+                header.iter().filter(|h| names.iter().any(|n| h.eq_ignore_ascii_case(n))).count();
+            if count > 1 {
+                return Err(Text::new(
+                    format!(
+                        "1: 見出しの行に列 `{key}`（{}）が {count} つあります。1 つにしてください",
+                        names.join("、")
+                    ),
+                    format!(
+                        "1: the header has {count} columns for `{key}` (one of: {}); keep one",
+                        names.join(", ")
+                    ),
+                ));
+            }
         }
         let mut rows: Vec<Row> = Vec::new();
         let mut by_student: BTreeMap<String, u64> = BTreeMap::new();
@@ -217,6 +233,10 @@ mod tests {
                 "3: student 20260001 is on line 2 too",
             ),
             ("student,name,entry\n20260001,a,e\n20260002,b,e\n", "3: entry \"e\" is on line 2 too"),
+            (
+                "student,学籍番号,name,entry\n20260001,20260009,a,e\n",
+                "1: the header has 2 columns for `student`",
+            ),
         ];
         for (text, expected) in cases {
             let e = Roster::parse(text).unwrap_err();

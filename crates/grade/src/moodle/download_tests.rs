@@ -86,6 +86,14 @@ fn a_moodle_download_is_read_as_a_folder_and_as_a_zip() {
     // The zip as Moodle gives it (UTF-8 names, flagged).
     std::fs::write(dir.join("download.zip"), fake::zip_of(&items)).unwrap();
     expect_class(&entries(&dir.join("download.zip")).unwrap());
+    // The instructor's own path given through a link (to the folder, to the zip): followed.
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::symlink(dir.join("unpacked"), dir.join("folder-link")).unwrap();
+        expect_class(&entries(&dir.join("folder-link")).unwrap());
+        std::os::unix::fs::symlink(dir.join("download.zip"), dir.join("zip-link.zip")).unwrap();
+        expect_class(&entries(&dir.join("zip-link.zip")).unwrap());
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }
 

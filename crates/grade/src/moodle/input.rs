@@ -183,6 +183,10 @@ fn cannot_read(what: &str, e: &std::io::Error) -> Text {
 /// (absolute or `..`) or too many items.
 pub fn entries(submissions: &Path) -> Result<Vec<Entry>, Text> {
     let shown = submissions.display().to_string();
+    // The instructor's own path may be a link (`~/Downloads` to another disk): followed here,
+    // once; the links inside a submission are still refused.
+    let real = submissions.canonicalize().map_err(|e| cannot_read(&shown, &e))?;
+    let submissions = real.as_path();
     let meta = std::fs::symlink_metadata(submissions).map_err(|e| cannot_read(&shown, &e))?;
     let mut list = if meta.is_dir() {
         from_download_folder(&descend(submissions))?
