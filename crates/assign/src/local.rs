@@ -29,7 +29,7 @@ pub const WORKER_PACKAGE: &str = "cg-check-runner";
 pub const LEFT_OUT_VARIABLE: &str = "CG_EXERCISES_LEFT_OUT";
 
 /// How many of a file's compiler errors are kept (the first one whole).
-const ERRORS_KEPT: usize = 8;
+pub const ERRORS_KEPT: usize = 8;
 
 /// One compiler error, from cargo's `--message-format=json`.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -38,7 +38,35 @@ pub fn parse_messages(stdout: &str) -> (BTreeMap<String, Vec<String>>, Vec<Strin
             None => other.push(d.short),
         }
     }
+    for list in by_module.values_mut().chain(std::iter::once(&mut other)) {
+        keep_first(list);
+    }
     (by_module, other)
+}
+
+/// How long one kept compiler error may be, in bytes (a `compile_error!` of a megabyte).
+const MAX_ERROR_BYTES: usize = 400;
+
+/// The first [`cg_assign::local::ERRORS_KEPT`] errors, each at most [`MAX_ERROR_BYTES`], and how
+/// many more there were: a submission of 30 000 errors (copied into every check's result and
+/// feedback) is read as its first few, as `cg check` shows them.
+fn keep_first(list: &mut Vec<String>) {
+    let kept = cg_assign::local::ERRORS_KEPT;
+    let more = list.len().saturating_sub(kept);
+    list.truncate(kept);
+    for e in list.iter_mut() {
+        if e.len() > MAX_ERROR_BYTES {
+            let mut end = MAX_ERROR_BYTES;
+            while !e.is_char_boundary(end) {
+                end -= 1;
+            }
+            e.truncate(end);
+            e.push('…');
+        }
+    }
+    if more > 0 {
+        list.push(format!("… (+{more})"));
+    }
 }
 
 /// Runs `cargo build --release --offline --locked -p <package> --message-format=json` in `kit`
@@ -215,5 +243,13 @@ mod tests {
         assert_eq!(by.len(), 1);
         assert_eq!(other, vec!["crates/cli/src/main.rs:7: mismatched types".to_owned()]);
         assert_eq!(cg_assign::local::module_of("src/s.rs"), Some("s"));
+        // 30 000 errors, one of them a megabyte long: the first few, each cut, and a count.
+        let mut many = vec![line("exercises/src/a1.rs", &"x".repeat(1 << 20))];
+        many.extend((0..30_000).map(|k| line("exercises/src/a1.rs", &format!("error {k}"))));
+        let (by, _) = parse_messages(&many.join("\n"));
+        let kept = cg_assign::local::ERRORS_KEPT;
+        assert_eq!(by["a1"].len(), kept + 1);
+        assert!(by["a1"][0].len() <= MAX_ERROR_BYTES + '…'.len_utf8(), "{}", by["a1"][0].len());
+        assert_eq!(by["a1"][kept], format!("… (+{})", 30_001 - kept));
     }
 }

@@ -212,4 +212,11 @@ fn entry_names_that_look_like_formulas_are_text_in_class_csv() {
     let csv = result::class_csv(&[result], Lang::En);
     let row = csv.lines().nth(1).unwrap();
     assert!(row.starts_with("20260001,\"'=HYPERLINK("), "{row}");
+    // A carriage return in the name would start a row (a formula first) to some readers.
+    let result = serde_json::json!({
+        "score": 1.0,
+        "cg": { "student": "20260001", "submission": "Taro.zip\r=WEBSERVICE(A1)" },
+    });
+    let csv = result::class_csv(&[result], Lang::En);
+    assert!(csv.contains("20260001,\"Taro.zip\r=WEBSERVICE(A1)\","), "{csv:?}");
 }

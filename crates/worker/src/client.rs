@@ -296,6 +296,23 @@ impl Worker {
 /// What a call's reply gives. The markers of a [`Reply::Stub`] are recorded on this thread
 /// (`cg_student::not_started`), as the function called here would have recorded them; its inner
 /// reply is read as any other.
+/// The most bytes of a panic's message (or another text of the worker's) kept.
+pub const MAX_MESSAGE_BYTES: usize = 4096;
+/// The most bytes of a panic's location kept.
+const MAX_LOCATION_BYTES: usize = 256;
+
+/// `text` as it is, or its first `max` bytes (at a character's boundary) and how long it was.
+fn cut(text: String, max: usize) -> String {
+    if text.len() <= max {
+        return text;
+    }
+    let mut end = max;
+    while !text.is_char_boundary(end) {
+        end -= 1;
+    }
+    format!("{}… ({} bytes)", &text[..end], text.len())
+}
+
 fn read_reply<R: serde::de::DeserializeOwned>(
     function: &str,
     reply: Reply,
@@ -304,9 +321,18 @@ fn read_reply<R: serde::de::DeserializeOwned>(
         Reply::Value(v) => from_value(&v).map_err(|e| {
             CallError::Broken(format!("{function} returned a value of another type: {e}"))
         }),
-        Reply::Panicked { message, location } => Err(CallError::Panicked { message, location }),
-        Reply::BadArguments(why) => Err(CallError::Broken(format!("{function}: {why}"))),
-        Reply::Unknown(name) => Err(CallError::Broken(format!("no function {name}"))),
+        // The student's own words, cut to a size a report can hold: a panic of 200 MB in every
+        // function once filled the grader's memory.
+        Reply::Panicked { message, location } => Err(CallError::Panicked {
+            message: cut(message, MAX_MESSAGE_BYTES),
+            location: location.map(|l| cut(l, MAX_LOCATION_BYTES)),
+        }),
+        Reply::BadArguments(why) => {
+            Err(CallError::Broken(format!("{function}: {}", cut(why, MAX_MESSAGE_BYTES))))
+        }
+        Reply::Unknown(name) => {
+            Err(CallError::Broken(format!("no function {}", cut(name, MAX_LOCATION_BYTES))))
+        }
         Reply::Stub { tasks, reply } => {
             if matches!(*reply, Reply::Stub { .. }) {
                 return Err(CallError::Broken(format!(

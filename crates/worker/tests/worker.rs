@@ -149,3 +149,21 @@ fn after_a_timeout_outside_a_check_later_calls_outside_one_fail_at_once() {
     assert_eq!(results, (Err(Some(CallError::TimedOut(budget))), Ok(9)));
     assert_eq!(w.timeouts, 1);
 }
+
+/// A panic's message is the student's: one of 20 MB comes back cut to MAX_MESSAGE_BYTES, with
+/// its length, so a report never holds it whole.
+#[test]
+fn a_huge_panic_message_is_cut() {
+    let mut w = worker();
+    match w.call::<_, i64>("shout", &(20usize << 20), BUDGET) {
+        Err(CallError::Panicked { message, .. }) => {
+            assert!(message.len() < cg_worker::client::MAX_MESSAGE_BYTES + 64, "{}", message.len());
+            assert!(
+                message.ends_with(&format!("… ({} bytes)", 20usize << 20)),
+                "{}",
+                &message[4000..]
+            );
+        }
+        other => panic!("{:?}", other.map(|_| ())),
+    }
+}

@@ -102,16 +102,18 @@ impl Name {
     /// The participant's folder as Moodle's feedback upload reads it: the download's own name
     /// for a folder; for the flat form, the 3.1–4.0 folder `<name>_<ID>_assignsubmission_<plugin>_`
     /// (every version reads it). A `_` in the name (never in Moodle's own) becomes a space, as
-    /// Moodle's importer splits on the first `_`.
+    /// Moodle's importer splits on the first `_`. So do `\`, `:` and control characters (never
+    /// in Moodle's own names): in a crafted folder's name, `a\..\..\x` would be a path to an
+    /// extractor on Windows, outside the feedback zip's folder.
     #[must_use]
     pub fn folder(&self) -> String {
         let tail = if self.rest.is_none() { "" } else { "_" };
-        format!(
-            "{}_{}_{SUBMISSION_PLUGINS}_{}{tail}",
-            self.full_name.replace('_', " "),
-            self.participant,
-            self.plugin
-        )
+        let name: String = self
+            .full_name
+            .chars()
+            .map(|c| if matches!(c, '_' | '\\' | ':') || c.is_control() { ' ' } else { c })
+            .collect();
+        format!("{}_{}_{SUBMISSION_PLUGINS}_{}{tail}", name, self.participant, self.plugin)
     }
 }
 
@@ -150,6 +152,9 @@ mod tests {
         let odd = Name::parse("a_b_9_assignsubmission_file").unwrap();
         assert_eq!((odd.full_name.as_str(), odd.participant.as_str()), ("a_b", "9"));
         assert_eq!(odd.folder(), "a b_9_assignsubmission_file");
+        // A crafted folder's name that would be a path on Windows stays one folder.
+        let crafted = Name::parse("a\\..\\..\\x:y_9_assignsubmission_file").unwrap();
+        assert_eq!(crafted.folder(), "a .. .. x y_9_assignsubmission_file");
         for not in [
             "20260001-taro",
             "x_assignsubmission_file",

@@ -270,7 +270,9 @@ pub fn worksheet(rows: &[Row], settings: &Settings) -> Result<String, String> {
     for r in rows {
         w.write_record([
             identifier(&r.participant, settings.lang).as_str(),
-            &r.full_name,
+            // Moodle matches the rows by their identifier; the name is for the instructor's
+            // spreadsheet, where one that begins like a formula must stay text.
+            &cg_core::quote::spreadsheet_cell(&r.full_name),
             "",
             status,
             &r.grade.map(grade).unwrap_or_default(),

@@ -217,3 +217,19 @@ fn the_identifier_is_what_moodles_upload_strips() {
     assert_eq!(output::identifier("1234567", Lang::En), "Participant 1234567");
     assert_eq!(output::identifier("1234567", Lang::Ja), "参加者1234567");
 }
+
+/// A Moodle full name that begins like a formula is text in the worksheet (Moodle matches the
+/// rows by their identifier, which is unchanged).
+#[test]
+fn a_full_name_like_a_formula_is_text_in_the_worksheet() {
+    let rows = [super::output::Row {
+        participant: "777".to_owned(),
+        full_name: "=HYPERLINK(\"http://evil\")".to_owned(),
+        grade: Some(5.0),
+        comment: String::new(),
+    }];
+    let settings = super::output::Settings { lang: Lang::En, max_grade: 10.0, now: 0 };
+    let csv = super::output::worksheet(&rows, &settings).unwrap();
+    let row = csv.lines().nth(1).unwrap();
+    assert!(row.starts_with("Participant 777,\"'=HYPERLINK("), "{row}");
+}

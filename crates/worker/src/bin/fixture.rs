@@ -43,6 +43,8 @@ fn main() -> std::io::Result<()> {
             }),
         ),
         ("abort", handler(|(): ()| -> i64 { std::process::abort() })),
+        // A panic whose message is `n` bytes (a hostile submission's, to fill the grader).
+        ("shout", handler(|n: usize| -> i64 { panic!("{}", "A".repeat(n)) })),
         (
             "print",
             handler(|x: i64| {
