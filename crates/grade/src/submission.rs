@@ -8,6 +8,7 @@ use std::io::Read;
 use std::path::{Path, PathBuf};
 
 use crate::Text;
+use cg_core::lang::Lang;
 
 /// The student's files, `exercises/src/<id>.rs`: one per assignment, from the kit's one list.
 pub const MODULES: &[&str] = cg_assign::IDS;
@@ -37,9 +38,17 @@ fn wanted() -> Vec<(String, Option<&'static str>)> {
 
 fn too_big(name: &str, size: u64) -> Text {
     Text::new(
-        format!("{name} が大きすぎます（{size} バイト、上限 {MAX_FILE_BYTES}）"),
-        format!("{name} is too big ({size} bytes, at most {MAX_FILE_BYTES})"),
+        format!("{} が大きすぎます（{size} バイト、上限 {MAX_FILE_BYTES}）", shown(name, Lang::Ja)),
+        format!("{} is too big ({size} bytes, at most {MAX_FILE_BYTES})", shown(name, Lang::En)),
     )
+}
+
+/// A name from a submission (a zip's entry, a file's) as a message quotes it: at most 64
+/// characters, nothing hidden ([`cg_core::quote::shown`]); messages go to the instructor's
+/// terminal, the feedback and Moodle's comment.
+#[must_use]
+pub fn shown(name: &str, lang: Lang) -> String {
+    cg_core::quote::shown(name, lang)
 }
 
 /// Reads the submission at `path` (a folder, or a file ending in `.zip`).
@@ -222,14 +231,20 @@ fn read_zip(path: &Path) -> Result<Files, Text> {
         let name = entry.name().map_err(|e| bad(&e))?.into_owned();
         if unsafe_name(&name) || entry.enclosed_name().is_none() {
             return Err(Text::new(
-                format!("zip の項目 {name} の場所が不正です（絶対パスまたは ..）"),
-                format!("zip entry {name} has an unsafe path (absolute or ..)"),
+                format!(
+                    "zip の項目 {} の場所が不正です（絶対パスまたは ..）",
+                    shown(&name, Lang::Ja)
+                ),
+                format!("zip entry {} has an unsafe path (absolute or ..)", shown(&name, Lang::En)),
             ));
         }
         if entry.is_symlink() {
             return Err(Text::new(
-                format!("zip の項目 {name} はシンボリックリンクです（受け付けません）"),
-                format!("zip entry {name} is a symbolic link (not accepted)"),
+                format!(
+                    "zip の項目 {} はシンボリックリンクです（受け付けません）",
+                    shown(&name, Lang::Ja)
+                ),
+                format!("zip entry {} is a symbolic link (not accepted)", shown(&name, Lang::En)),
             ));
         }
         if entry.size() > MAX_FILE_BYTES.saturating_mul(64) {

@@ -197,6 +197,25 @@ fn an_upload_of_thousands_of_exercise_files_is_refused_at_the_limit() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// The refusal of an upload with its files many times over names the first few, each shortened
+/// (it goes to the feedback, Moodle's comment and the instructor's terminal), and counts the rest.
+#[test]
+fn a_refusal_names_a_few_shortened_names() {
+    let dir = fake::scratch("dupes");
+    let long = "x".repeat(300);
+    let items: Vec<(String, Vec<u8>)> = (0..7)
+        .map(|k| {
+            (format!("Ann_1_assignsubmission_file/{long}{k}\u{1b}/a1.rs"), b"fn f() {}".to_vec())
+        })
+        .collect();
+    std::fs::write(dir.join("d.zip"), fake::zip_of(&items)).unwrap();
+    let list = entries(&dir.join("d.zip")).unwrap();
+    let why = list[0].read().unwrap_err();
+    assert!(why.en.contains("is there more than once") && why.en.contains("… (+2)"), "{}", why.en);
+    assert!(why.en.len() < 1000 && !why.en.contains('\u{1b}'), "{}", why.en);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 fn options(root: &Path, submissions: &Path, roster: Option<roster::Roster>) -> Options {
     crate::test_options(root, submissions, roster)
 }

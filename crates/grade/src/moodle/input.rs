@@ -23,7 +23,8 @@ use std::sync::Arc;
 
 use super::Name;
 use crate::Text;
-use crate::submission::{self, Files, MAX_FILE_BYTES, MAX_ZIP_ENTRIES};
+use crate::submission::{self, Files, MAX_FILE_BYTES, MAX_ZIP_ENTRIES, shown};
+use cg_core::lang::Lang;
 
 /// The largest zip a participant's upload may hold inside the download's zip (read into memory,
 /// never extracted; a zip in an unpacked download is read in place, whatever its size).
@@ -305,15 +306,15 @@ fn bad_zip(e: &zip::result::ZipError) -> Text {
 
 fn unsafe_path(name: &str) -> Text {
     text(
-        format!("zip の項目 {name} の場所が不正です（絶対パスまたは ..）"),
-        format!("zip entry {name} has an unsafe path (absolute or ..)"),
+        format!("zip の項目 {} の場所が不正です（絶対パスまたは ..）", shown(name, Lang::Ja)),
+        format!("zip entry {} has an unsafe path (absolute or ..)", shown(name, Lang::En)),
     )
 }
 
 fn link_refused(name: &str) -> Text {
     text(
-        format!("{name} はシンボリックリンクです（受け付けません）"),
-        format!("{name} is a symbolic link (not accepted)"),
+        format!("{} はシンボリックリンクです（受け付けません）", shown(name, Lang::Ja)),
+        format!("{} is a symbolic link (not accepted)", shown(name, Lang::En)),
     )
 }
 
@@ -428,8 +429,8 @@ fn wanted_name(name: &str) -> bool {
 
 fn too_big(name: &str, size: u64, limit: u64) -> Text {
     text(
-        format!("{name} が大きすぎます（{size} バイト、上限 {limit}）"),
-        format!("{name} is too big ({size} bytes, at most {limit})"),
+        format!("{} が大きすぎます（{size} バイト、上限 {limit}）", shown(name, Lang::Ja)),
+        format!("{} is too big ({size} bytes, at most {limit})", shown(name, Lang::En)),
     )
 }
 
@@ -586,17 +587,25 @@ fn resolve(files: Vec<(String, Vec<u8>)>) -> Result<Files, Text> {
                 [] => {}
                 [(rel, bytes)] => chosen.push((rel, *module, bytes)),
                 several => {
-                    let list: Vec<&str> = several.iter().map(|(r, _)| r.as_str()).collect();
+                    // The first few, each shortened: an upload may hold hundreds.
+                    let list = |lang: Lang, sep: &str| {
+                        let mut names: Vec<String> =
+                            several.iter().take(5).map(|(r, _)| shown(r, lang)).collect();
+                        if several.len() > 5 {
+                            names.push(format!("… (+{})", several.len() - 5));
+                        }
+                        names.join(sep)
+                    };
                     return Err(text(
                         format!(
                             "{} が複数あります（{}）。exercises/ フォルダごと提出してください",
                             basename(w),
-                            list.join("、")
+                            list(Lang::Ja, "、")
                         ),
                         format!(
                             "{} is there more than once ({}): hand in the exercises/ folder",
                             basename(w),
-                            list.join(", ")
+                            list(Lang::En, ", ")
                         ),
                     ));
                 }
