@@ -295,6 +295,20 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
     value
 }
 
+/// Text from a submission (an entry's name, a refusal that quotes one) as Markdown shows it:
+/// a code span, so that nothing in it is read as Markdown or HTML (`<img src=…>`, `![](…)`,
+/// a heading after a newline), its control characters by their code and a long one shortened
+/// ([`cg_core::quote::shown`]).
+#[must_use]
+pub fn md_code(text: &str, lang: Lang) -> String {
+    let text = cg_core::quote::shown(text, lang);
+    let longest = text.split(|c| c != '`').map(str::len).max().unwrap_or(0);
+    let fence = "`".repeat(longest + 1);
+    let pad =
+        if text.starts_with('`') || text.ends_with('`') || text.is_empty() { " " } else { "" };
+    format!("{fence}{pad}{text}{pad}{fence}")
+}
+
 fn csv_field(s: &str) -> String {
     // A lone carriage return ends a row to some readers: quoted too, or a name could start a
     // row of its own (and a formula in its first cell).
@@ -402,9 +416,9 @@ pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) ->
         if let Some(why) = cg["refused"].as_str().or(cg["error"].as_str()) {
             problems.push(format!(
                 "- {} ({}): {}",
-                cg["submission"].as_str().unwrap_or(""),
-                cg["student"].as_str().unwrap_or("?"),
-                why.lines().next().unwrap_or("")
+                md_code(cg["submission"].as_str().unwrap_or(""), lang),
+                md_code(cg["student"].as_str().unwrap_or("?"), lang),
+                md_code(why.lines().next().unwrap_or(""), lang)
             ));
         }
     }
@@ -434,8 +448,13 @@ pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) ->
         );
     }
     if !shared.is_empty() {
-        let list: Vec<String> =
-            shared.iter().map(|(n, entries)| format!("- {n}: {}", entries.join(", "))).collect();
+        let list: Vec<String> = shared
+            .iter()
+            .map(|(n, entries)| {
+                let entries: Vec<String> = entries.iter().map(|e| md_code(e, lang)).collect();
+                format!("- {}: {}", md_code(n, lang), entries.join(", "))
+            })
+            .collect();
         let _ = write!(
             out,
             "\n## {}\n\n{}\n\n{}\n",
@@ -470,11 +489,13 @@ fn roster_section(results: &[Value], absent: &[(String, String)], lang: Lang) ->
     let mut claims = Vec::new();
     for r in results {
         let cg = &r["cg"];
-        let entry = cg["submission"].as_str().unwrap_or("");
+        let entry = md_code(cg["submission"].as_str().unwrap_or(""), lang);
         if cg["roster"]["listed"] == false {
-            unlisted.push(format!("- {entry} ({})", cg["student"].as_str().unwrap_or("?")));
+            let student = md_code(cg["student"].as_str().unwrap_or("?"), lang);
+            unlisted.push(format!("- {entry} ({student})"));
         }
         if let Some(claimed) = cg["roster"]["claimed"].as_str() {
+            let claimed = md_code(claimed, lang);
             claims.push(format!(
                 "- {entry}: {} {claimed}, {} {} ({})",
                 t("student.toml は", "student.toml claims").get(lang),

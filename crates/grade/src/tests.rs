@@ -109,8 +109,8 @@ fn the_roster_binds_entries_and_flags_the_rest() {
     let md = result::summary_md(&results, &[("20260003".into(), "Absent".into())], Lang::En);
     for needle in [
         "## Against the roster",
-        "- c (20260004)",
-        "- a: student.toml claims 20260001, the roster says 20260009 (A)",
+        "- `c` (`20260004`)",
+        "- `a`: student.toml claims `20260001`, the roster says 20260009 (A)",
         "- 20260003 Absent",
     ] {
         assert!(md.contains(needle), "{needle:?} missing from:\n{md}");
@@ -219,4 +219,23 @@ fn entry_names_that_look_like_formulas_are_text_in_class_csv() {
     });
     let csv = result::class_csv(&[result], Lang::En);
     assert!(csv.contains("20260001,\"Taro.zip\r=WEBSERVICE(A1)\","), "{csv:?}");
+}
+
+/// Text from a submission reaches summary.md and the feedback as a code span: an image that
+/// would load when the summary is previewed, HTML, a heading after a newline and backticks of
+/// its own stay text.
+#[test]
+fn names_from_a_submission_are_code_in_markdown() {
+    assert_eq!(result::md_code("Taro.zip", Lang::En), "`Taro.zip`");
+    assert_eq!(result::md_code("<img src=x>", Lang::En), "`<img src=x>`");
+    assert_eq!(result::md_code("![](http://e/t.png)", Lang::En), "`![](http://e/t.png)`");
+    assert_eq!(result::md_code("a``b", Lang::En), "```a``b```");
+    assert_eq!(result::md_code("`x", Lang::En), "`` `x ``");
+    assert_eq!(result::md_code("a\n# heading", Lang::En), "`a<U+000A># heading`");
+    let result = serde_json::json!({
+        "score": 0.0,
+        "cg": { "student": "?", "submission": "![](http://evil/t.png)", "refused": "no" },
+    });
+    let md = result::summary_md(&[result], &[], Lang::En);
+    assert!(md.contains("- `![](http://evil/t.png)` (`?`): `no`"), "{md}");
 }

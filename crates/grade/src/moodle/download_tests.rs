@@ -277,7 +277,7 @@ fn the_roster_binds_participants_and_a_mismatch_is_flagged() {
     let md = result::summary_md(&results, &[("20260010".into(), "Absent".into())], Lang::En);
     assert!(
         md.contains(
-            "- 鈴木 花子_1006_assignsubmission_file: student.toml claims 20260099, the roster says 20260006 (鈴木 花子)"
+            "- `鈴木 花子_1006_assignsubmission_file`: student.toml claims `20260099`, the roster says 20260006 (鈴木 花子)"
         ),
         "{md}"
     );

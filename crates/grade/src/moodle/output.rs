@@ -162,7 +162,7 @@ pub fn feedback_md(result: &Value, lang: Lang) -> String {
         md,
         "- {}: {}",
         t("提出物", "submission").get(lang),
-        cg["submission"].as_str().unwrap_or("")
+        crate::result::md_code(cg["submission"].as_str().unwrap_or(""), lang)
     );
     let _ = writeln!(
         md,
