@@ -280,6 +280,9 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
             })),
             "refused": facts.refused.as_ref().map(|m| m.en.clone()),
             "error": facts.fatal.as_ref().map(|m| m.en.clone()),
+            // The same in Japanese, for the Japanese summary and Moodle's comment.
+            "refused_ja": facts.refused.as_ref().map(|m| m.ja.clone()),
+            "error_ja": facts.fatal.as_ref().map(|m| m.ja.clone()),
             "compile_errors": facts.compile_errors,
             "assignments": assignments,
             "timings": {
@@ -293,6 +296,18 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
         value["max_score"] = json!(round(max));
     }
     value
+}
+
+/// Why a result was not graded (its `refused` or `error`), in `lang` when the result has it
+/// (results written before the Japanese was kept have only the English).
+#[must_use]
+pub fn not_graded(cg: &Value, lang: Lang) -> Option<&str> {
+    let ja = || cg["refused_ja"].as_str().or(cg["error_ja"].as_str());
+    let en = || cg["refused"].as_str().or(cg["error"].as_str());
+    match lang {
+        Lang::Ja => ja().or_else(en),
+        Lang::En => en(),
+    }
 }
 
 /// Text from a submission (an entry's name, a refusal that quotes one) as Markdown shows it:
@@ -413,7 +428,7 @@ pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) ->
             }
         }
         let cg = &r["cg"];
-        if let Some(why) = cg["refused"].as_str().or(cg["error"].as_str()) {
+        if let Some(why) = not_graded(cg, lang) {
             problems.push(format!(
                 "- {} ({}): {}",
                 md_code(cg["submission"].as_str().unwrap_or(""), lang),

@@ -239,3 +239,33 @@ fn names_from_a_submission_are_code_in_markdown() {
     let md = result::summary_md(&[result], &[], Lang::En);
     assert!(md.contains("- `![](http://evil/t.png)` (`?`): `no`"), "{md}");
 }
+
+/// Why a submission was not graded is kept in both languages: the Japanese summary and
+/// Moodle's comment say it in Japanese (they gave the English), and a result written before
+/// the Japanese was kept still gives its English.
+#[test]
+fn why_a_submission_was_not_graded_is_said_in_the_readers_language() {
+    let facts = result::Facts {
+        refused: Some(Text::new(
+            "exercises/student.toml がありません",
+            "exercises/student.toml is missing",
+        )),
+        ..result::Facts::default()
+    };
+    let meta = result::Meta {
+        student: None,
+        entry: "a.zip",
+        hash: "",
+        isolation: Isolation::Bubblewrap,
+        same_number: &[],
+        roster: None,
+        total: std::time::Duration::ZERO,
+    };
+    let r = result::build(&meta, &facts, &Config::default(), Lang::Ja);
+    assert_eq!(result::not_graded(&r["cg"], Lang::Ja), Some("exercises/student.toml がありません"));
+    assert_eq!(result::not_graded(&r["cg"], Lang::En), Some("exercises/student.toml is missing"));
+    let md = result::summary_md(std::slice::from_ref(&r), &[], Lang::Ja);
+    assert!(md.contains("がありません") && !md.contains("is missing"), "{md}");
+    let old = serde_json::json!({ "refused": "exercises/student.toml is missing" });
+    assert_eq!(result::not_graded(&old, Lang::Ja), Some("exercises/student.toml is missing"));
+}

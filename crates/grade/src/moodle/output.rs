@@ -314,7 +314,7 @@ pub fn feedback_zip(folders: &[Folder], now: u64) -> Result<Vec<u8>, String> {
 fn comment(result: &Value, lang: Lang) -> String {
     let cg = &result["cg"];
     if result.get("max_score").is_none() {
-        let why = cg["refused"].as_str().or(cg["error"].as_str()).unwrap_or("");
+        let why = crate::result::not_graded(cg, lang).unwrap_or("");
         let why = why.lines().next().unwrap_or("");
         let file = feedback_file(lang);
         let text = Text::new(
