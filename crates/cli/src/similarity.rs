@@ -180,13 +180,22 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
         );
     }
     for p in &analysis.pairs {
+        let same = if cg_similarity::output::same_number(&class[p.a], &class[p.b]) {
+            t(
+                "（同じ学生番号: 再提出か、本人の過去の提出物）",
+                " (the same student number: a resubmission, or the student's own earlier work)",
+            )
+        } else {
+            Text::default()
+        };
         let line = format!(
-            "  {:>3.0}%  {} ({}) — {} ({})",
+            "  {:>3.0}%  {} ({}) — {} ({}){}",
             p.score * 100.0,
             class[p.a].name,
             class[p.a].number(),
             class[p.b].name,
-            class[p.b].number()
+            class[p.b].number(),
+            same.get(lang)
         );
         println!("{}", visible(&line));
     }

@@ -24,6 +24,12 @@ pub const COLUMNS: [&str; 12] = [
     "note",
 ];
 
+/// Whether two submissions give the same student number.
+#[must_use]
+pub fn same_number(a: &Submission, b: &Submission) -> bool {
+    a.student.is_some() && a.number() == b.number()
+}
+
 /// A student-controlled name as a spreadsheet cell ([`cg_core::quote::spreadsheet_cell`]).
 fn cell(name: &str) -> String {
     cg_core::quote::spreadsheet_cell(name).into_owned()
@@ -49,6 +55,11 @@ pub fn csv_text(class: &[Submission], analysis: &Analysis, lang: Lang) -> Result
         }
         if flagged(p.a) || flagged(p.b) {
             flags.push("cross-variant");
+        }
+        // A resubmission, or a student's own earlier year: listed (student.toml is the
+        // student's to write, so it hides nothing), and said.
+        if same_number(a, b) {
+            flags.push("same-number");
         }
         let regions: Vec<String> = p
             .regions

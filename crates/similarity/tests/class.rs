@@ -530,3 +530,24 @@ fn a_ring_of_more_copies_than_max_share_is_named_not_lost() {
     assert!(a.mostly_common.is_empty());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Two entries with one student number (a resubmission) are listed, and said to be so in the
+/// CSV's flags: student.toml is the student's to write, so skipping such pairs would hide a copy
+/// behind another's number.
+#[test]
+fn a_pair_with_one_student_number_is_listed_and_flagged() {
+    if !has_solutions() {
+        return;
+    }
+    let dir = temp("same-number");
+    std::fs::create_dir_all(&dir).unwrap();
+    folder(&dir, "first", "20260031", &all(solution));
+    folder(&dir, "again", "20260031", &all(solution));
+    folder(&dir, "other", "20260032", &all(stub));
+    let class = read::class(&dir, false).unwrap();
+    let a = analyse(&class, &stubs(), Settings::default());
+    let csv = cg_similarity::output::csv_text(&class, &a, Lang::En).unwrap();
+    let pair = csv.lines().find(|l| l.starts_with("pair,")).expect("the pair is listed");
+    assert!(pair.contains("same-number"), "{pair}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
