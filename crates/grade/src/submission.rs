@@ -265,12 +265,25 @@ fn read_zip(path: &Path) -> Result<Files, Text> {
         .map(str::to_owned)
         .ok_or_else(no_exercises)?;
     let mut files = Files::default();
+    let mut taken: Vec<&str> = Vec::new();
     for (i, name) in names.iter().enumerate() {
         let Some((relative, module)) =
             wanted.iter().find(|(w, _)| name.strip_prefix(base.as_str()) == Some(w.as_str()))
         else {
             continue;
         };
+        // A zip may hold one name twice; which copy an extractor keeps is its own choice, so
+        // the kit takes neither.
+        if taken.contains(&name.as_str()) {
+            return Err(Text::new(
+                format!(
+                    "zip の中に {} が 2 つあります。zip を作り直してください",
+                    shown(name, Lang::Ja)
+                ),
+                format!("the zip holds {} twice: make the zip again", shown(name, Lang::En)),
+            ));
+        }
+        taken.push(name);
         let entry = zip.by_index(i).map_err(|e| bad(&e))?;
         if entry.size() > MAX_FILE_BYTES {
             return Err(too_big(relative, entry.size()));
@@ -315,6 +328,29 @@ mod tests {
         let Err(why) = read(&folder_path("absent")) else { panic!("a missing path was read") };
         assert!(why.en.starts_with("cannot be read: "), "{}", why.en);
         assert_eq!(why.ja, "読めません: ファイルまたはフォルダがありません");
+    }
+
+    /// A zip that holds one of the exercises' files twice is refused: which copy counts is not
+    /// the kit's to guess (it took the last one, silently).
+    #[test]
+    fn a_zip_with_a_file_twice_is_refused() {
+        use std::io::Write as _;
+        let dir = folder("zip-twice");
+        let path = dir.join("twice.zip");
+        let mut z = zip::ZipWriter::new(std::fs::File::create(&path).unwrap());
+        let options = zip::write::SimpleFileOptions::default();
+        for (name, text) in [
+            ("exercises/student.toml", "student = \"20260001\"\n"),
+            ("exercises/src/a1.rs", "fn f() {}"),
+            // The same path to the kit, written with Windows' separators.
+            ("exercises\\student.toml", "student = \"20269999\"\n"),
+        ] {
+            z.start_file(name, options).unwrap();
+            z.write_all(text.as_bytes()).unwrap();
+        }
+        z.finish().unwrap();
+        let why = read(&path).map(|_| ()).unwrap_err();
+        assert!(why.en.contains("exercises/student.toml twice"), "{}", why.en);
     }
 
     /// A file named .zip that is none is said in Japanese, the zip crate's English words only
