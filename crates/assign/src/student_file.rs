@@ -3,6 +3,7 @@
 use std::path::Path;
 
 use cg_core::lang::{Lang, Text};
+use cg_core::quote::shown;
 use cg_harness::{StudentNumber, TableVersion};
 
 /// What `exercises/student.toml` records.
@@ -88,9 +89,9 @@ impl StudentFileError {
             StudentFileError::Table { path, given } => Text::new(
                 format!(
                     "{path}: table = {} という課題表はありません（1 を使ってください）",
-                    quoted(given, Lang::Ja)
+                    shown(given, Lang::Ja)
                 ),
-                format!("{path}: there is no table {} (use 1)", quoted(given, Lang::En)),
+                format!("{path}: there is no table {} (use 1)", shown(given, Lang::En)),
             ),
         }
     }
@@ -108,16 +109,16 @@ const MAX_STUDENT_FILE_BYTES: u64 = 64 << 10;
 /// do.
 pub fn read_student_file(path: &Path) -> Result<StudentFile, StudentFileError> {
     use cg_core::text::ReadError;
-    let shown = path.display().to_string();
+    let file = path.display().to_string();
     let bytes = match cg_core::text::read_bounded(path, MAX_STUDENT_FILE_BYTES) {
         Ok(bytes) => bytes,
-        Err(_) if !path.exists() => return Err(StudentFileError::Missing { path: shown }),
-        Err(ReadError::TooLarge { .. }) => return Err(too_large(shown)),
+        Err(_) if !path.exists() => return Err(StudentFileError::Missing { path: file }),
+        Err(ReadError::TooLarge { .. }) => return Err(too_large(file)),
         Err(e) => {
-            return Err(StudentFileError::Unreadable { path: shown, why: e.text_without_option() });
+            return Err(StudentFileError::Unreadable { path: file, why: e.text_without_option() });
         }
     };
-    parse_student_file(&bytes, &shown)
+    parse_student_file(&bytes, &file)
 }
 
 fn too_large(path: String) -> StudentFileError {
@@ -136,25 +137,25 @@ fn too_large(path: String) -> StudentFileError {
     }
 }
 
-/// [`read_student_file`] of a record's bytes (from a submission's zip), named `shown` in the
+/// [`read_student_file`] of a record's bytes (from a submission's zip), named `file` in the
 /// errors: the same encodings, limit and mistakes.
 ///
 /// # Errors
 /// As [`read_student_file`], but for a missing file.
-pub fn parse_student_file(bytes: &[u8], shown: &str) -> Result<StudentFile, StudentFileError> {
+pub fn parse_student_file(bytes: &[u8], file: &str) -> Result<StudentFile, StudentFileError> {
     use cg_core::text::ReadError;
-    let shown = shown.to_owned();
+    let file = file.to_owned();
     if bytes.len() as u64 > MAX_STUDENT_FILE_BYTES {
-        return Err(too_large(shown));
+        return Err(too_large(file));
     }
-    let unreadable = |why: Text| StudentFileError::Unreadable { path: shown.clone(), why };
+    let unreadable = |why: Text| StudentFileError::Unreadable { path: file.clone(), why };
     let (text, _) = cg_core::text::decode(bytes, None)
         .map_err(|e| unreadable(ReadError::from(e).text_without_option()))?;
-    let invalid = |reason: Text| StudentFileError::Invalid { path: shown.clone(), reason };
+    let invalid = |reason: Text| StudentFileError::Invalid { path: file.clone(), reason };
     // A number without quotes (`student = 01234567`) is refused before TOML reads it: TOML
     // drops its leading zeros, or calls a leading zero an error.
     if let Some(digits) = unquoted_number(&text) {
-        let (ja, en) = (quoted(&digits, Lang::Ja), quoted(&digits, Lang::En));
+        let (ja, en) = (shown(&digits, Lang::Ja), shown(&digits, Lang::En));
         return Err(invalid(Text::new(
             format!("student = {ja} は引用符で囲んでください: student = \"{ja}\""),
             format!("student = {en} must be in quotes: student = \"{en}\""),
@@ -170,9 +171,9 @@ pub fn parse_student_file(bytes: &[u8], shown: &str) -> Result<StudentFile, Stud
         return Err(invalid(Text::new(
             format!(
                 "`{}` というキーはありません（書けるのは student と table）",
-                quoted(key, Lang::Ja)
+                shown(key, Lang::Ja)
             ),
-            format!("there is no key `{}` (the keys are student and table)", quoted(key, Lang::En)),
+            format!("there is no key `{}` (the keys are student and table)", shown(key, Lang::En)),
         )));
     }
     let digits = match table.get("student") {
@@ -186,7 +187,7 @@ pub fn parse_student_file(bytes: &[u8], shown: &str) -> Result<StudentFile, Stud
         None => return Err(invalid(Text::new("student がありません", "student is missing"))),
     };
     let student =
-        digits.parse().map_err(|error| StudentFileError::Number { path: shown.clone(), error })?;
+        digits.parse().map_err(|error| StudentFileError::Number { path: file.clone(), error })?;
     let table = match table.get("table") {
         None => TableVersion::LATEST,
         Some(v) => {
@@ -194,15 +195,10 @@ pub fn parse_student_file(bytes: &[u8], shown: &str) -> Result<StudentFile, Stud
             given
                 .trim_matches('"')
                 .parse()
-                .map_err(|_| StudentFileError::Table { path: shown, given })?
+                .map_err(|_| StudentFileError::Table { path: file, given })?
         }
     };
     Ok(StudentFile { student, table })
-}
-
-/// A value of the file as a message shows it: never the whole of a long one, nothing hidden.
-fn quoted(text: &str, lang: Lang) -> String {
-    cg_core::quote::shown(text, lang)
 }
 
 /// The digits of a `student = 0123…` line without quotes, as written.

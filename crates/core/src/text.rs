@@ -382,6 +382,16 @@ impl From<DecodeError> for ReadError {
     }
 }
 
+/// `c` as an ASCII digit when it is a full-width one (`１` → `1`, what a Japanese input method
+/// types), else `c` itself.
+#[must_use]
+pub fn ascii_digit(c: char) -> char {
+    match c {
+        '０'..='９' => char::from_digit(u32::from(c) - u32::from('０'), 10).unwrap_or(c),
+        _ => c,
+    }
+}
+
 /// Decodes a text file's bytes: in `forced` when given (a BOM of that encoding is removed),
 /// else in the encoding detected as the module documentation says. Returns the text, without a
 /// BOM and with its line endings as they were, and the encoding it was read in

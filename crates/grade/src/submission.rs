@@ -9,6 +9,10 @@ use std::path::{Path, PathBuf};
 
 use crate::Text;
 use cg_core::lang::Lang;
+// A name from a submission (a zip's entry, a file's) as a message quotes it: at most 64
+// characters, nothing hidden; messages go to the instructor's terminal, the feedback and
+// Moodle's comment.
+use cg_core::quote::shown;
 
 /// The student's files, `exercises/src/<id>.rs`: one per assignment, from the kit's one list.
 pub const MODULES: &[&str] = cg_assign::IDS;
@@ -41,14 +45,6 @@ fn too_big(name: &str, size: u64) -> Text {
         format!("{} が大きすぎます（{size} バイト、上限 {MAX_FILE_BYTES}）", shown(name, Lang::Ja)),
         format!("{} is too big ({size} bytes, at most {MAX_FILE_BYTES})", shown(name, Lang::En)),
     )
-}
-
-/// A name from a submission (a zip's entry, a file's) as a message quotes it: at most 64
-/// characters, nothing hidden ([`cg_core::quote::shown`]); messages go to the instructor's
-/// terminal, the feedback and Moodle's comment.
-#[must_use]
-pub fn shown(name: &str, lang: Lang) -> String {
-    cg_core::quote::shown(name, lang)
 }
 
 /// Reads the submission at `path` (a folder, or a file ending in `.zip`).

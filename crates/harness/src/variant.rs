@@ -84,13 +84,7 @@ impl FromStr for StudentNumber {
     /// full-width ones a Japanese input method types (`１２３４５６７８` is `12345678`).
     fn from_str(s: &str) -> Result<StudentNumber, StudentNumberError> {
         let s = s.trim();
-        let ascii: String = s
-            .chars()
-            .map(|c| match c {
-                '０'..='９' => char::from(b'0' + (u32::from(c) - u32::from('０')) as u8),
-                _ => c,
-            })
-            .collect();
+        let ascii: String = s.chars().map(cg_core::text::ascii_digit).collect();
         if ascii.len() == 8 && ascii.bytes().all(|b| b.is_ascii_digit()) {
             Ok(StudentNumber(ascii))
         } else {

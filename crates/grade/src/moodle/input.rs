@@ -23,8 +23,9 @@ use std::sync::Arc;
 
 use super::Name;
 use crate::Text;
-use crate::submission::{self, Files, MAX_FILE_BYTES, MAX_ZIP_ENTRIES, shown};
+use crate::submission::{self, Files, MAX_FILE_BYTES, MAX_ZIP_ENTRIES};
 use cg_core::lang::Lang;
+use cg_core::quote::shown;
 
 /// The largest zip a participant's upload may hold inside the download's zip (read into memory,
 /// never extracted; a zip in an unpacked download is read in place, whatever its size).

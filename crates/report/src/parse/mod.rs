@@ -251,8 +251,7 @@ pub(crate) fn normalize(line: &str) -> String {
             '．' => '.',
             '\u{3000}' => ' ',
             // Full-width digits (an input method's ０.４９) are the same digits.
-            '０'..='９' => char::from_digit(u32::from(c) - u32::from('０'), 10).unwrap_or(c),
-            _ => c,
+            _ => cg_core::text::ascii_digit(c),
         })
         .collect()
 }
