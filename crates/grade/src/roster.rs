@@ -150,6 +150,22 @@ impl Roster {
             if record.iter().all(str::is_empty) {
                 continue;
             }
+            // A quote never closed takes the rest of the file as one field: said as such, not
+            // as whatever column then comes up empty.
+            let end = usize::try_from(reader.position().byte()).unwrap_or(0).min(text.len());
+            if end == text.len()
+                && record.iter().any(|f| f.contains(['\n', '\r']))
+                && text.as_bytes()[start..].iter().filter(|&&b| b == b'"').count() % 2 == 1
+            {
+                return Err(Text::new(
+                    format!(
+                        "{line}: この行で開いた引用符 \" が閉じていません（ファイルの終わりまでが 1 つの欄になります）"
+                    ),
+                    format!(
+                        "{line}: a quote \" opened on this line is never closed (the rest of the file would be one field)"
+                    ),
+                ));
+            }
             let field = |k: usize| record.get(at[k]).unwrap_or("").to_owned();
             let student: StudentNumber =
                 field(0).parse().map_err(|e: cg_harness::variant::StudentNumberError| {
@@ -220,6 +236,12 @@ mod tests {
         assert!(r.find("someone_999_assignsubmission_file_").is_none());
         assert_eq!(moodle_participant("a_b_assignsubmission_file_"), None);
         assert_eq!(moodle_participant("plain-folder"), None);
+        // A stray quote inside a last row's field, and a quoted name over two lines, are not an
+        // unclosed quote.
+        let r = Roster::parse("student,name,entry\n20260001,\"Roe,\nJane\",e\n20260002,J \"J,f")
+            .unwrap();
+        assert_eq!(r.rows.len(), 2, "{:?}", r.rows);
+        assert_eq!(r.rows[1].name, "J \"J");
     }
 
     #[test]
@@ -228,6 +250,10 @@ mod tests {
             ("number,name\n1,a\n", "1: the header has no column `student`"),
             ("student,name,entry\n2026000x,a,e\n", "2: student: a student number is 8 digits"),
             ("student,name,entry\n20260001,a,\n", "2: entry is empty for student 20260001"),
+            (
+                "student,name,entry\n20260001,a,e\n20260002,\"Roe, Jane,f\n20260003,c,g\n",
+                "3: a quote \" opened on this line is never closed",
+            ),
             (
                 "student,name,entry\n20260001,a,e\n20260001,b,f\n",
                 "3: student 20260001 is on line 2 too",

@@ -66,6 +66,9 @@ pub struct Submission {
     pub reference: bool,
     /// Why it could not be read, if it could not.
     pub refused: Option<Text>,
+    /// Whether `refused` is about `exercises/student.toml` alone (missing, not text, not the
+    /// kit's form): the roster can stand in for it ([`read::bind`]).
+    pub refused_student_toml: bool,
 }
 
 impl Submission {

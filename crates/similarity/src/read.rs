@@ -42,6 +42,7 @@ pub fn class(path: &Path, reference: bool) -> Result<Vec<Submission>, Text> {
                         Some(Err(why)) => s.refused = Some(why),
                         None => s.refused = Some(no_student_toml()),
                     }
+                    s.refused_student_toml = s.refused.is_some();
                 }
                 Err(why) => s.refused = Some(why),
             }
@@ -56,8 +57,9 @@ fn no_student_toml() -> Text {
 
 /// Binds this year's submissions to the roster's students, as `cg grade --roster` does: an
 /// entry on the roster is the roster's student, whatever its `student.toml` says; an entry
-/// without `student.toml` is the roster's student too (with the latest table), where `cg grade`
-/// would refuse it, since only the number is needed here. Returns a note for each number changed.
+/// without a usable `student.toml` (none, or one that does not read) is the roster's student
+/// too (with the latest table), where `cg grade` would refuse it, since only the number is
+/// needed here. Returns a note for each number changed and each `student.toml` set aside.
 #[must_use]
 pub fn bind(class: &mut [Submission], roster: &cg_grade::roster::Roster) -> Vec<Text> {
     let mut notes = Vec::new();
@@ -80,12 +82,22 @@ pub fn bind(class: &mut [Submission], roster: &cg_grade::roster::Roster) -> Vec<
                 file.student = row.student.clone();
             }
             Some(_) => {}
-            None if s.refused == Some(no_student_toml()) => {
+            None if s.refused_student_toml => {
+                if let Some(why) = s.refused.take().filter(|why| *why != no_student_toml()) {
+                    notes.push(Text::new(
+                        format!("{}: {}: 名簿の番号 {} を使います", s.name, why.ja, row.student),
+                        format!(
+                            "{}: {}: the roster's number {} is used",
+                            s.name, why.en, row.student
+                        ),
+                    ));
+                }
                 s.student = Some(cg_assign::StudentFile {
                     student: row.student.clone(),
                     table: TableVersion::LATEST,
                 });
                 s.refused = None;
+                s.refused_student_toml = false;
             }
             None => {}
         }

@@ -254,6 +254,38 @@ fn a_moodle_participant_without_student_toml_is_bound_by_the_roster() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A roster entry whose `student.toml` does not read (no quotes round the number, a stray key)
+/// is the roster's student, with a note that says why its file was set aside; it used to be
+/// compared as "-", its variant's numbers unchecked. Off the roster it stays refused.
+#[test]
+fn a_roster_entry_with_a_malformed_student_toml_is_the_rosters_student() {
+    let dir = temp("malformed");
+    folder(&dir, "carol", None, &[]);
+    std::fs::write(dir.join("carol/exercises/student.toml"), "student = 20260001\n").unwrap();
+    folder(&dir, "erin", None, &[]);
+    std::fs::write(dir.join("erin/exercises/student.toml"), "number = \"20260002\"\n").unwrap();
+    let mut class = read::class(&dir, false).unwrap();
+    let (c, e) = (index(&class, "carol"), index(&class, "erin"));
+    for i in [c, e] {
+        assert!(class[i].refused.is_some() && class[i].refused_student_toml, "{:?}", class[i]);
+    }
+    let roster = cg_grade::roster::Roster::parse("student,name,entry\n20260001,Carol,carol\n")
+        .unwrap();
+    let notes = read::bind(&mut class, &roster);
+    assert_eq!(class[c].refused, None);
+    assert_eq!(class[c].number(), CAROL);
+    assert_eq!(notes.len(), 1, "{notes:?}");
+    assert!(
+        notes[0].en.starts_with("carol: ") && notes[0].en.contains("roster's number 20260001"),
+        "{notes:?}"
+    );
+    assert!(notes[0].ja.contains("名簿の番号 20260001 を使います"), "{notes:?}");
+    // Not on the roster: refused as before, compared as "-".
+    assert!(class[e].refused.is_some(), "{:?}", class[e]);
+    assert_eq!(class[e].number(), "-");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// A file in --reports that cannot be read (a PDF) is a note on its student's submission, not
 /// the end of the whole run; a report of 2 MB is read (the limit is 4 MiB, as documented).
 #[test]
