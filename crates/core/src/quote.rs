@@ -32,6 +32,22 @@ pub fn shown(word: &str, lang: Lang) -> String {
     out
 }
 
+/// The bytes of a CSV file the instructor opens in a spreadsheet: its UTF-8 text after a
+/// byte-order mark. Without the mark, Excel on Japanese Windows reads a CSV file as Shift_JIS and
+/// garbles every Japanese name in it; CSV readers skip the mark (the `csv` crate, Python's
+/// `utf-8-sig`, LibreOffice).
+///
+/// ```
+/// assert_eq!(cg_core::quote::spreadsheet_file("a,b\n"), b"\xef\xbb\xbfa,b\n");
+/// ```
+#[must_use]
+pub fn spreadsheet_file(text: &str) -> Vec<u8> {
+    let mut bytes = Vec::with_capacity(text.len() + 3);
+    bytes.extend_from_slice("\u{feff}".as_bytes());
+    bytes.extend_from_slice(text.as_bytes());
+    bytes
+}
+
 /// A cell of a CSV file the instructor opens in a spreadsheet, from text a student controls (a
 /// submission's file name, a Moodle full name): one that begins with `=`, `+`, `-`, `@`, a tab
 /// or a carriage return would be read as a formula (`=HYPERLINK(…)`), so it gets a leading `'`,

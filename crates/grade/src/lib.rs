@@ -859,7 +859,10 @@ pub fn grade_with(
         .filter_map(|t| serde_json::from_str(&t).ok())
         .collect();
     let csv = result::class_csv(&all, options.lang);
-    write_atomic(&out.join("class.csv"), csv.as_bytes()).map_err(|e| io(&out, e))?;
+    // Opened in Excel on Japanese Windows, where a file without the byte-order mark garbles the
+    // flags' Japanese.
+    write_atomic(&out.join("class.csv"), &cg_core::quote::spreadsheet_file(&csv))
+        .map_err(|e| io(&out, e))?;
     let md = result::summary_md(&all, &absent, options.lang);
     write_atomic(&out.join("summary.md"), md.as_bytes()).map_err(|e| io(&out, e))?;
     Ok(done)

@@ -130,6 +130,7 @@ fn refused_submissions_say_why_and_are_kept() {
     assert!(!out.join(".work/slot-0").exists(), "nothing to build, no kit copy");
 
     let csv = std::fs::read_to_string(out.join("class.csv")).unwrap();
+    assert!(csv.starts_with("\u{feff}student,submission,"), "{csv}");
     assert_eq!(csv.lines().count(), 11, "{csv}");
     assert!(csv.contains("\n,slip.zip,,,,,,0,,\n"), "{csv}");
     let md = std::fs::read_to_string(out.join("summary.md")).unwrap();

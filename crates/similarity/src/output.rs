@@ -190,7 +190,9 @@ pub fn write(
     std::fs::create_dir_all(out).map_err(|e| io(out, e))?;
     let csv = csv_text(class, analysis, lang)?;
     let path = out.join("similarity.csv");
-    std::fs::write(&path, csv).map_err(|e| io(&path, e))?;
+    // Opened in Excel on Japanese Windows, where a file without the byte-order mark garbles
+    // Japanese names.
+    std::fs::write(&path, cg_core::quote::spreadsheet_file(&csv)).map_err(|e| io(&path, e))?;
     let html = crate::html::page(class, analysis, lang);
     let path = out.join("similarity.html");
     std::fs::write(&path, html).map_err(|e| io(&path, e))

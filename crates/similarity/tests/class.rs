@@ -361,7 +361,10 @@ fn a_renamed_and_reordered_copy_is_flagged_and_untouched_stubs_or_honest_work_ar
     // The files: the CSV read back, the page with both sides highlighted.
     let out = dir.with_extension("out");
     cg_similarity::output::write(&out, &class, &a, Lang::En).unwrap();
+    // UTF-8 after the byte-order mark that Excel on Japanese Windows needs; CSV readers skip it.
+    assert!(std::fs::read(out.join("similarity.csv")).unwrap().starts_with(b"\xef\xbb\xbfkind,"));
     let mut csv = csv::Reader::from_path(out.join("similarity.csv")).unwrap();
+    assert_eq!(&csv.headers().unwrap()[0], "kind");
     let rows: Vec<csv::StringRecord> = csv.records().map(Result::unwrap).collect();
     let pair_rows: Vec<&csv::StringRecord> = rows.iter().filter(|r| &r[0] == "pair").collect();
     assert_eq!(pair_rows.len(), 1);
