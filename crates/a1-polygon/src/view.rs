@@ -15,19 +15,6 @@ use crate::{Impl, Spec};
 /// pyramid.
 pub const MODEL_COLOR: Rgb = Rgb::new(1.0, 0.6, 0.2);
 
-/// The message for a student function that panicked while the view was being built.
-fn panicked(function: &str, outcome: &Outcome) -> Text {
-    let what = match outcome {
-        Outcome::Panicked { message, .. } => message.clone(),
-        Outcome::NotDone { message } => message.clone(),
-        _ => String::new(),
-    };
-    Text::new(
-        format!("{function} が異常終了しました（panic）: {what}"),
-        format!("{function} panicked: {what}"),
-    )
-}
-
 /// The scene that shows `imp`'s model (time plays no part): the course's window, camera, light
 /// and ground ([`cg_harness::course::ground_only`]) and the student's mesh, placed by their
 /// `model_transform`, coloured [`MODEL_COLOR`], every face drawn flat with **the student's own
@@ -53,12 +40,12 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
     let normals = match guarded(|| (imp.face_normals)(spec)) {
         Ok(n) => Some(n),
         Err(Outcome::NotDone { .. }) => None,
-        Err(other) => return Err(panicked("face_normals", &other)),
+        Err(other) => return Err(other.of_function("face_normals")),
     };
     let transform = match guarded(|| MatrixProduct::from((imp.model_transform)(spec))) {
         Ok(p) => p,
         Err(Outcome::NotDone { .. }) => MatrixProduct::identity(),
-        Err(other) => return Err(panicked("model_transform", &other)),
+        Err(other) => return Err(other.of_function("model_transform")),
     };
     if let Err(e) = transform.matrix() {
         return Err(Text::new(

@@ -64,29 +64,6 @@ pub fn ground_mesh(coords: &Coordinates) -> Mesh {
     mesh
 }
 
-/// The message for a student's function that panicked while the view called it.
-fn panicked(function: &str, outcome: Outcome) -> Text {
-    let (message, location) = match outcome {
-        Outcome::Panicked { message, location } => (message, location),
-        Outcome::NotDone { message } => (message, None),
-        other @ (Outcome::TimedOut { .. }
-        | Outcome::Crashed { .. }
-        | Outcome::DoesNotCompile { .. }) => {
-            let text = other.describe().unwrap_or_default();
-            return Text::new(
-                format!("{function}: {}", text.ja),
-                format!("{function}: {}", text.en),
-            );
-        }
-        Outcome::Pass | Outcome::Fail(_) => (String::new(), None),
-    };
-    let at = location.map(|l| format!(" ({l})")).unwrap_or_default();
-    Text::new(
-        format!("{function} が異常終了しました（panic）: {message}{at}"),
-        format!("{function} panicked: {message}{at}"),
-    )
-}
-
 /// The scene that shows `imp`'s result: the course's stage (window, camera, light) with the
 /// ground textured by the prepared image at the student's coordinates (white ground under
 /// GL_MODULATE, so the lighting shows as in the course program). `time_s` is not used.
@@ -102,12 +79,12 @@ pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
     let coords = match guarded(|| coordinates(spec, imp)) {
         Ok(c) => c,
         Err(Outcome::NotDone { .. }) => return Ok(cg_harness::course::ground_only()),
-        Err(other) => return Err(panicked("a4.t2 tex_coords", other)),
+        Err(other) => return Err(other.of_function("a4.t2 tex_coords")),
     };
     let sampler = match guarded(imp.sampler) {
         Ok(s) => crate::core_sampler(s),
         Err(Outcome::NotDone { .. }) => Sampler::default(),
-        Err(other) => return Err(panicked("a4.t3 sampler", other)),
+        Err(other) => return Err(other.of_function("a4.t3 sampler")),
     };
     Ok(textured_stage(&coords, sampler))
 }

@@ -9,6 +9,8 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::Duration;
 
+use cg_core::lang::Text;
+
 use crate::result::tail;
 
 /// How a build ended.
@@ -73,13 +75,13 @@ fn keep_first(list: &mut Vec<String>) {
 /// with `target` as its target folder, killing it (and the compilers it started) after `limit`.
 ///
 /// # Errors
-/// cargo could not be started.
+/// cargo could not be started: why, in both languages.
 pub fn cargo_build(
     kit: &Path,
     target: &Path,
     package: &str,
     limit: Duration,
-) -> std::io::Result<BuildOutput> {
+) -> Result<BuildOutput, Text> {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let mut command = Command::new(cargo);
     command
@@ -97,7 +99,8 @@ pub fn cargo_build(
     // runs on Linux, and elsewhere only cargo itself is killed).
     #[cfg(unix)]
     std::os::unix::process::CommandExt::process_group(&mut command, 0);
-    let ran = cg_assign::local::run_captured(&mut command, Some(limit), &|| {})?;
+    let ran = cg_assign::local::run_captured(&mut command, Some(limit), &|| {})
+        .map_err(|e| cannot_start_cargo(&Text::io(&e)))?;
     let (status, timed_out, stdout, stderr) = (ran.status, ran.timed_out, ran.stdout, ran.stderr);
     let (module_errors, other_errors) = parse_messages(&stdout);
     Ok(BuildOutput {
@@ -128,14 +131,28 @@ pub fn build_limits(limit: Duration) -> cg_sandbox::Limits {
 // platform: a path inside the bubblewrap sandbox, used only under Isolation::Bubblewrap (Linux).
 const SANDBOX_CARGO_HOME: &str = "/tmp/cargo-home";
 
+/// Why a build did not start: cargo not found, the sandbox not started.
+fn cannot_start_cargo(why: &Text) -> Text {
+    Text::new(
+        format!("cargo を起動できません: {}", why.ja),
+        format!("cannot start cargo: {}", why.en),
+    )
+}
+
 /// The toolchain's root (`rustc --print sysroot`): `bin/cargo` and `bin/rustc` are the real
 /// programs (not rustup's proxies, which need rustup's own folders).
-fn sysroot() -> std::io::Result<std::path::PathBuf> {
+fn sysroot() -> Result<std::path::PathBuf, Text> {
     let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
-    let out = Command::new(rustc).args(["--print", "sysroot"]).output()?;
+    let out = Command::new(rustc)
+        .args(["--print", "sysroot"])
+        .output()
+        .map_err(|e| cannot_start_cargo(&Text::io(&e)))?;
     let text = String::from_utf8_lossy(&out.stdout).trim().to_owned();
     if !out.status.success() || text.is_empty() {
-        return Err(std::io::Error::other("rustc --print sysroot gave nothing"));
+        return Err(cannot_start_cargo(&Text::new(
+            "rustc --print sysroot が何も返しません",
+            "rustc --print sysroot gave nothing",
+        )));
     }
     Ok(text.into())
 }
@@ -161,18 +178,21 @@ pub fn cargo_build_sandboxed(
     package: &str,
     limit: Duration,
     isolation: cg_sandbox::Isolation,
-) -> std::io::Result<BuildOutput> {
+) -> Result<BuildOutput, Text> {
     if isolation != cg_sandbox::Isolation::Bubblewrap {
         return cargo_build(kit, target, package, limit);
     }
     let sysroot = sysroot()?;
     let bin = sysroot.join("bin");
-    let registry = cargo_home()
-        .map(|h| h.join("registry"))
-        .filter(|r| r.is_dir())
-        .ok_or_else(|| std::io::Error::other("no cargo registry (CARGO_HOME/registry)"))?;
-    std::fs::create_dir_all(target)?;
-    let target = target.canonicalize()?;
+    let registry =
+        cargo_home().map(|h| h.join("registry")).filter(|r| r.is_dir()).ok_or_else(|| {
+            cannot_start_cargo(&Text::new(
+                "cargo のレジストリ（CARGO_HOME/registry）がありません",
+                "no cargo registry (CARGO_HOME/registry)",
+            ))
+        })?;
+    std::fs::create_dir_all(target).map_err(|e| Text::io_at(target, &e))?;
+    let target = target.canonicalize().map_err(|e| Text::io_at(target, &e))?;
     let path = format!("{}:/usr/bin:/bin", bin.display());
     let job = cg_sandbox::Job {
         program: bin.join("cargo"),
@@ -208,7 +228,7 @@ pub fn cargo_build_sandboxed(
         compiler: true,
     };
     let run = cg_sandbox::run(&job, &build_limits(limit), isolation)
-        .map_err(|e| std::io::Error::other(e.to_string()))?;
+        .map_err(|e| e.text())?;
     let (module_errors, other_errors) = parse_messages(&run.stdout);
     Ok(BuildOutput {
         success: run.ended == cg_sandbox::Ended::Exited(0),

@@ -390,7 +390,7 @@ fn prepare_first(
     }
     let package = WORKER_PACKAGE;
     let b = build::cargo_build(&slot.kit, &slot.target, package, options.build_limit)
-        .map_err(|e| GradeError::Io(cannot_start_cargo(&e)))?;
+        .map_err(GradeError::Io)?;
     if !b.success {
         let shown = slot.kit.display();
         let log = format!("{}\n{}", b.other_errors.join("\n"), b.stderr_tail);
@@ -488,12 +488,7 @@ fn run_checks(
     };
     let launch = match launcher(&job, &options.limits, options.isolation) {
         Ok(l) => l,
-        Err(e) => {
-            return died(Text::new(
-                format!("起動できません: {e}"),
-                format!("could not start: {e}"),
-            ));
-        }
+        Err(e) => return died(e.text()),
     };
     let mut worker =
         cg_worker::Worker::new(launch.program, launch.args).clear_env().current_dir(launch.workdir);
@@ -574,8 +569,8 @@ fn grade_one(
             options.isolation,
         ) {
             Ok(b) => b,
-            Err(e) => {
-                facts.fatal = Some(cannot_start_cargo(&e));
+            Err(why) => {
+                facts.fatal = Some(why);
                 facts.retry = true;
                 break;
             }
@@ -681,15 +676,6 @@ pub(crate) fn not_json(path: &Path, e: &serde_json::Error) -> GradeError {
         format!("{shown}: JSON として読めません: {e}"),
         format!("{shown}: not JSON: {e}"),
     ))
-}
-
-/// Why a build did not start: cargo not found, the sandbox not started.
-fn cannot_start_cargo(e: &std::io::Error) -> Text {
-    let why = Text::io(e);
-    Text::new(
-        format!("cargo を起動できません: {}", why.ja),
-        format!("cannot start cargo: {}", why.en),
-    )
 }
 
 /// As [`grade`].

@@ -125,6 +125,12 @@ fn explain(check: &Value, lang: Lang) -> String {
                 .get(lang),
             check["limit_ms"].as_u64().unwrap_or(0) as f64 / 1000.0
         ),
+        "broken" => format!(
+            "{}: {}",
+            t("関数の結果を受け取れませんでした", "no result came back from the function")
+                .get(lang),
+            field("why")
+        ),
         "crashed" => {
             let stderr = check["stderr"].as_str().unwrap_or("").trim_end();
             let mut s = format!(

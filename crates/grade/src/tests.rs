@@ -269,3 +269,37 @@ fn why_a_submission_was_not_graded_is_said_in_the_readers_language() {
     let old = serde_json::json!({ "refused": "exercises/student.toml is missing" });
     assert_eq!(result::not_graded(&old, Lang::Ja), Some("exercises/student.toml is missing"));
 }
+
+/// A check whose call gave no value for the kit's reasons (`status: broken`) is explained in
+/// the feedback's language from the outcome as the harness writes it; it had no case and was
+/// shown as "expected: (nothing) found: (nothing)".
+#[test]
+fn a_broken_call_is_explained_in_the_feedbacks_language() {
+    let outcome = cg_harness::check::Outcome::Broken {
+        why: Text::new("shade_pixel: light の 0 番目の呼び出し", "shade_pixel: light query 0 was"),
+    };
+    let mut check = serde_json::to_value(&outcome).unwrap();
+    check["id"] = "s.t9".into();
+    check["title"] = serde_json::json!({ "ja": "画素", "en": "pixel" });
+    let facts = result::Facts {
+        runs: [("s".to_owned(), AssignmentRun::Report(serde_json::json!({ "checks": [check] })))]
+            .into(),
+        ..result::Facts::default()
+    };
+    let meta = result::Meta {
+        student: Some("20260001"),
+        entry: "a.zip",
+        hash: "",
+        isolation: Isolation::Bubblewrap,
+        same_number: &[],
+        roster: None,
+        total: std::time::Duration::ZERO,
+    };
+    for (lang, said) in [
+        (Lang::Ja, "関数の結果を受け取れませんでした: shade_pixel: light の 0 番目の呼び出し"),
+        (Lang::En, "no result came back from the function: shade_pixel: light query 0 was"),
+    ] {
+        let r = result::build(&meta, &facts, &Config::default(), lang);
+        assert_eq!(r["tests"][0]["output"], said, "{r:#}");
+    }
+}

@@ -104,8 +104,15 @@ pub enum Outcome {
         /// The check's time limit, in milliseconds.
         limit_ms: u64,
     },
+    /// No value came back, and not for the function's running as such: the worker could not
+    /// start, its reply did not read, or a `shade_pixel` asked other questions the second time
+    /// (`CallError::Broken`).
+    Broken {
+        /// Why, in both languages.
+        why: Text,
+    },
     /// The worker running the student's function ended during the call: an abort, a stack
-    /// overflow, the memory limit, an `exit()`; or its reply did not read.
+    /// overflow, the memory limit, an `exit()`.
     Crashed {
         /// How it ended, as the system says it (`signal: 6 (SIGABRT)`, `exit status: 0`).
         how: String,
@@ -136,7 +143,9 @@ impl Outcome {
             CallError::Crashed { status, stderr } => {
                 Outcome::Crashed { how: status.clone(), stderr: stderr.clone() }
             }
-            CallError::Broken(why) => Outcome::Crashed { how: why.clone(), stderr: String::new() },
+            CallError::Broken(why) => {
+                Outcome::Broken { why: Text::new(why.ja.clone(), why.en.clone()) }
+            }
             CallError::DoesNotCompile { module, errors } => {
                 Outcome::DoesNotCompile { module: module.clone(), errors: errors.clone() }
             }
@@ -153,6 +162,36 @@ impl Outcome {
             Outcome::NotDone { message: rest.trim_start_matches(':').trim().to_owned() }
         } else {
             Outcome::Panicked { message, location }
+        }
+    }
+
+    /// Why a call of the student's `function` (`faces()`) gave no value, led by its name, in
+    /// both languages.
+    #[must_use]
+    pub fn of_function(&self, function: &str) -> Text {
+        match self {
+            Outcome::NotDone { message } => Text::new(
+                format!("{function} はまだ書かれていません（{}）", stub_message(message, Lang::Ja)),
+                format!("{function} is not written yet ({})", stub_message(message, Lang::En)),
+            ),
+            Outcome::Panicked { message, location } => {
+                let at = location.as_ref().map(|l| format!(" ({l})")).unwrap_or_default();
+                Text::new(
+                    format!("{function} が異常終了しました（panic）: {message}{at}"),
+                    format!("{function} panicked: {message}{at}"),
+                )
+            }
+            other @ (Outcome::TimedOut { .. }
+            | Outcome::Broken { .. }
+            | Outcome::Crashed { .. }
+            | Outcome::DoesNotCompile { .. }) => {
+                let text = other.describe().unwrap_or_default();
+                Text::new(format!("{function}: {}", text.ja), format!("{function}: {}", text.en))
+            }
+            Outcome::Pass | Outcome::Fail(_) => Text::new(
+                format!("{function} の結果が得られませんでした"),
+                format!("{function} gave no result"),
+            ),
         }
     }
 
@@ -184,6 +223,10 @@ impl Outcome {
                     ),
                 )
             }
+            Outcome::Broken { why } => Text::new(
+                format!("あなたの関数の結果を受け取れませんでした: {}", why.ja),
+                format!("no result came back from your function: {}", why.en),
+            ),
             Outcome::Crashed { how: status, .. } => Text::new(
                 format!(
                     "あなたの関数を実行していたプロセスが途中で終了しました（{status}）。exit() の呼び出し、スタックの溢れ（深すぎる再帰）、メモリの使いすぎを確認してください。"
@@ -577,6 +620,7 @@ impl Report {
                 Outcome::NotDone { .. } => ("…", None),
                 Outcome::Panicked { .. }
                 | Outcome::TimedOut { .. }
+                | Outcome::Broken { .. }
                 | Outcome::Crashed { .. }
                 | Outcome::DoesNotCompile { .. } => ("!", None),
             };
@@ -622,7 +666,7 @@ impl Report {
                         );
                     }
                 }
-                Outcome::TimedOut { .. } | Outcome::Crashed { .. } => {
+                Outcome::TimedOut { .. } | Outcome::Broken { .. } | Outcome::Crashed { .. } => {
                     if let Some(text) = c.outcome.describe() {
                         let _ = writeln!(out, "      {}", text.get(lang));
                     }

@@ -8,7 +8,7 @@ use cg_core::glam::Vec3;
 use cg_core::lang::Lang;
 use cg_core::product::{MatrixProduct, format_number};
 
-use crate::check::{Outcome, stub_message};
+use crate::check::Outcome;
 use crate::text::Text;
 
 /// A part of the report that could not be derived: the student's function is still a stub,
@@ -37,33 +37,7 @@ impl Missing {
     /// What a guarded call of `function` (`faces()`) ended with, as a missing part of `task`.
     #[must_use]
     pub fn from_outcome(task: &str, function: &str, outcome: Outcome) -> Missing {
-        let why = match outcome {
-            Outcome::NotDone { message } => Text::new(
-                format!(
-                    "{function} はまだ書かれていません（{}）",
-                    stub_message(&message, Lang::Ja)
-                ),
-                format!("{function} is not written yet ({})", stub_message(&message, Lang::En)),
-            ),
-            Outcome::Panicked { message, location } => {
-                let at = location.map(|l| format!(" ({l})")).unwrap_or_default();
-                Text::new(
-                    format!("{function} が異常終了しました（panic）: {message}{at}"),
-                    format!("{function} panicked: {message}{at}"),
-                )
-            }
-            other @ (Outcome::TimedOut { .. }
-            | Outcome::Crashed { .. }
-            | Outcome::DoesNotCompile { .. }) => {
-                let text = other.describe().unwrap_or_default();
-                Text::new(format!("{function}: {}", text.ja), format!("{function}: {}", text.en))
-            }
-            Outcome::Pass | Outcome::Fail(_) => Text::new(
-                format!("{function} の結果が得られませんでした"),
-                format!("{function} gave no result"),
-            ),
-        };
-        Missing::new(task, why)
+        Missing::new(task, outcome.of_function(function))
     }
 }
 

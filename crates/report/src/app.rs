@@ -436,7 +436,9 @@ fn render_all(
                         cg_harness::check::stub_message(&message, Lang::Ja),
                         cg_harness::check::stub_message(&message, Lang::En),
                     ),
-                    other => Text::new(format!("{other:?}"), format!("{other:?}")),
+                    other => other.describe().unwrap_or_else(|| {
+                        Text::new("結果が得られませんでした", "it gave no result")
+                    }),
                 };
                 if !g.context.missing.iter().any(|m| m.task.starts_with(id)) {
                     g.context.missing.push(Missing { task: id.to_owned(), why });

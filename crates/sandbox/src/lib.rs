@@ -77,7 +77,7 @@ use std::sync::OnceLock;
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
-use cg_core::lang::{Lang, t};
+use cg_core::lang::{Lang, Text, t};
 
 /// How strongly a run is isolated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -293,18 +293,31 @@ pub struct Run {
 #[derive(Debug, thiserror::Error)]
 pub enum SandboxError {
     /// The program or a helper tool could not be started.
-    #[error("cannot start {program}: {message}")]
+    #[error("cannot start {program}: {}", why.en)]
     Start {
         /// What was started.
         program: String,
-        /// Why it failed.
-        message: String,
+        /// Why it failed, in both languages.
+        why: Text,
     },
 }
 
+impl SandboxError {
+    /// The error in both languages (its `Display` is the English).
+    #[must_use]
+    pub fn text(&self) -> Text {
+        match self {
+            SandboxError::Start { program, why } => Text::new(
+                format!("{program} を起動できません: {}", why.ja),
+                format!("cannot start {program}: {}", why.en),
+            ),
+        }
+    }
+}
+
 /// A [`SandboxError::Start`] for `program`.
-fn start_error(program: &Path, message: impl Into<String>) -> SandboxError {
-    SandboxError::Start { program: program.display().to_string(), message: message.into() }
+fn start_error(program: &Path, why: Text) -> SandboxError {
+    SandboxError::Start { program: program.display().to_string(), why }
 }
 
 /// The folders of the dynamic loader and the system libraries, bound read-only under
@@ -318,19 +331,30 @@ const OUTPUT_GRACE: Duration = Duration::from_millis(500);
 
 /// The command line of `job` under `limits` with `isolation` (see [`run`]'s errors).
 fn prepare(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Prepared, SandboxError> {
-    let program = job
-        .program
-        .canonicalize()
-        .ok()
-        .filter(|p| p.is_file())
-        .ok_or_else(|| start_error(&job.program, "no such program file"))?;
+    let program = job.program.canonicalize().ok().filter(|p| p.is_file()).ok_or_else(|| {
+        start_error(&job.program, t("プログラムのファイルがありません", "no such program file"))
+    })?;
     let workdir = job.workdir.canonicalize().ok().filter(|p| p.is_dir()).ok_or_else(|| {
-        start_error(&job.program, format!("no work folder {}", job.workdir.display()))
+        let shown = job.workdir.display();
+        start_error(
+            &job.program,
+            Text::new(
+                format!("作業フォルダ {shown} がありません"),
+                format!("no work folder {shown}"),
+            ),
+        )
     })?;
     let mut read_only = Vec::new();
     for dir in &job.read_only {
         let canon = dir.canonicalize().map_err(|e| {
-            start_error(&job.program, format!("read-only folder {}: {e}", dir.display()))
+            let why = Text::io_at(dir, &e);
+            start_error(
+                &job.program,
+                Text::new(
+                    format!("読み取り専用のフォルダ {}", why.ja),
+                    format!("read-only folder {}", why.en),
+                ),
+            )
         })?;
         read_only.push(canon);
     }
@@ -354,10 +378,21 @@ fn prepare(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Prepared,
     }
     match isolation {
         Isolation::Bubblewrap => {
-            let bwrap = tool("bwrap")
-                .ok_or_else(|| start_error(&job.program, "bwrap (bubblewrap) is not installed"))?;
+            let bwrap = tool("bwrap").ok_or_else(|| {
+                start_error(
+                    &job.program,
+                    t("bwrap（bubblewrap）が入っていません", "bwrap (bubblewrap) is not installed"),
+                )
+            })?;
             let inputs = inputs(&workdir).map_err(|e| {
-                start_error(&job.program, format!("work folder {}: {e}", workdir.display()))
+                let why = Text::io_at(&workdir, &e);
+                start_error(
+                    &job.program,
+                    Text::new(
+                        format!("作業フォルダ {}", why.ja),
+                        format!("work folder {}", why.en),
+                    ),
+                )
             })?;
             argv.push(bwrap.into());
             let extra = extra_bwrap_args(job);
@@ -410,8 +445,7 @@ pub fn launch(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Launch
         return Ok(Launch { program, args: argv, env, workdir });
     };
     let file = workdir.with_extension("seccomp");
-    std::fs::write(&file, filter)
-        .map_err(|e| start_error(&job.program, format!("{}: {e}", file.display())))?;
+    std::fs::write(&file, filter).map_err(|e| start_error(&job.program, Text::io_at(&file, &e)))?;
     if let Some(i) = argv.windows(2).position(|w| w[0] == "--seccomp" && w[1] == "0") {
         argv[i + 1] = "3".into();
     }
@@ -458,9 +492,9 @@ pub fn run(job: &Job, limits: &Limits, isolation: Isolation) -> Result<Run, Sand
     #[cfg(unix)]
     command.process_group(0);
     let started = Instant::now();
-    let mut child = command.spawn().map_err(|e| {
-        start_error(&job.program, format!("{}: {e}", Path::new(&argv[0]).display()))
-    })?;
+    let mut child = command
+        .spawn()
+        .map_err(|e| start_error(&job.program, Text::io_at(Path::new(&argv[0]), &e)))?;
     if let (Some(filter), Some(mut stdin)) = (filter, child.stdin.take()) {
         // bwrap reads it whole (`--seccomp 0`) before it starts the program; a few hundred
         // bytes fit in the pipe, so this does not block.

@@ -291,7 +291,13 @@ fn what_cannot_be_started_is_an_error_not_a_run() {
         assert!(matches!(run(&j, &limits(), iso), Err(SandboxError::Start { .. })), "{iso:?}");
         let mut j = job("ok", None, &wd);
         j.read_only.push(wd.0.join("no-such-folder"));
-        assert!(matches!(run(&j, &limits(), iso), Err(SandboxError::Start { .. })), "{iso:?}");
+        let e = run(&j, &limits(), iso).unwrap_err();
+        // Said in both languages: the grader's Japanese feedback had this English.
+        let text = e.text();
+        assert!(text.ja.contains("を起動できません: 読み取り専用のフォルダ"), "{text:?}");
+        assert!(text.ja.contains("no-such-folder") && !text.ja.contains("read-only"), "{text:?}");
+        assert_eq!(text.en, e.to_string());
+        assert!(text.en.contains("cannot start") && text.en.contains("read-only folder"), "{text:?}");
     }
 }
 

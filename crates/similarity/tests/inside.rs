@@ -269,8 +269,8 @@ fn a_roster_entry_with_a_malformed_student_toml_is_the_rosters_student() {
     for i in [c, e] {
         assert!(class[i].refused.is_some() && class[i].refused_student_toml, "{:?}", class[i]);
     }
-    let roster = cg_grade::roster::Roster::parse("student,name,entry\n20260001,Carol,carol\n")
-        .unwrap();
+    let roster =
+        cg_grade::roster::Roster::parse("student,name,entry\n20260001,Carol,carol\n").unwrap();
     let notes = read::bind(&mut class, &roster);
     assert_eq!(class[c].refused, None);
     assert_eq!(class[c].number(), CAROL);

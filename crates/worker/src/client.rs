@@ -10,7 +10,7 @@ use std::sync::mpsc::{Receiver, RecvTimeoutError, channel};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
-use crate::{Call, Reply, decode, encode, frame, from_value, to_value};
+use crate::{Call, Reason, Reply, decode, encode, frame, from_value, to_value};
 
 /// How much of the end of a worker's stderr is kept.
 pub const STDERR_TAIL: usize = 2000;
@@ -36,8 +36,9 @@ pub enum CallError {
         stderr: String,
     },
     /// The worker could not be started, or its reply did not read (a mismatch of kit and
-    /// worker, or a student's program that wrote a frame of its own).
-    Broken(String),
+    /// worker, or a student's program that wrote a frame of its own), or a `shade_pixel` asked
+    /// other questions the second time: why, in both languages.
+    Broken(Reason),
     /// The function's module did not compile, so the worker was built without it
     /// ([`Worker::without_modules`]): the module (`a1`) and the compiler's errors in it, the
     /// first as the compiler shows it.
@@ -170,11 +171,21 @@ impl Worker {
                 .stdout(Stdio::piped())
                 .stderr(Stdio::piped())
                 .spawn()
-                .map_err(|e| CallError::Broken(format!("{}: {e}", self.program.display())))?;
+                .map_err(|e| {
+                    let program = self.program.display();
+                    CallError::Broken(Reason::with_detail(
+                        &format!("ワーカー {program} を起動できません"),
+                        &format!("cannot start the worker {program}"),
+                        &e.to_string(),
+                    ))
+                })?;
             let (Some(stdin), Some(stdout), Some(mut err)) =
                 (child.stdin.take(), child.stdout.take(), child.stderr.take())
             else {
-                return Err(CallError::Broken("no pipes to the worker".to_owned()));
+                return Err(CallError::Broken(Reason::new(
+                    "ワーカーとのパイプがありません",
+                    "no pipes to the worker",
+                )));
             };
             let stderr = Arc::new(Mutex::new(Vec::new()));
             let tail = Arc::clone(&stderr);
@@ -201,7 +212,12 @@ impl Worker {
             });
             self.running = Some(Running { child, stdin, stderr, replies });
         }
-        self.running.as_mut().ok_or_else(|| CallError::Broken("not started".to_owned()))
+        self.running.as_mut().ok_or_else(|| {
+            CallError::Broken(Reason::new(
+                "ワーカーが起動していません",
+                "the worker is not started",
+            ))
+        })
     }
 
     /// Stops the worker (the next call starts a fresh one).
@@ -231,11 +247,15 @@ impl Worker {
                 errors: errors.clone(),
             });
         }
-        let call = Call {
-            function: function.to_owned(),
-            args: to_value(args).map_err(CallError::Broken)?,
+        let unsent = |e: String| {
+            CallError::Broken(Reason::with_detail(
+                &format!("{function} の引数を送れません"),
+                &format!("cannot send {function}'s arguments"),
+                &e,
+            ))
         };
-        let bytes = encode(&call).map_err(CallError::Broken)?;
+        let call = Call { function: function.to_owned(), args: to_value(args).map_err(unsent)? };
+        let bytes = encode(&call).map_err(unsent)?;
         let running = self.start()?;
         let sent = frame::write(&mut running.stdin, &bytes);
         let answer = match sent {
@@ -253,7 +273,11 @@ impl Worker {
             }
             Ok(Err(e)) => {
                 self.stop();
-                return Err(CallError::Broken(format!("the worker's reply: {e}")));
+                return Err(CallError::Broken(Reason::with_detail(
+                    "ワーカーの返事を受け取れません",
+                    "cannot take the worker's reply",
+                    &e.to_string(),
+                )));
             }
             Err(RecvTimeoutError::Timeout) => {
                 self.stop();
@@ -266,7 +290,11 @@ impl Worker {
             Ok(reply) => read_reply(function, reply),
             Err(e) => {
                 self.stop();
-                Err(CallError::Broken(format!("the worker's reply does not read: {e}")))
+                Err(CallError::Broken(Reason::with_detail(
+                    "ワーカーの返事が読めません",
+                    "the worker's reply does not read",
+                    &e,
+                )))
             }
         }
     }
@@ -280,7 +308,10 @@ impl Worker {
     /// The worker ended during a call: how, with the end of its stderr.
     fn crashed(&mut self) -> CallError {
         let Some(mut r) = self.running.take() else {
-            return CallError::Broken("the worker is not running".to_owned());
+            return CallError::Broken(Reason::new(
+                "ワーカーが動いていません",
+                "the worker is not running",
+            ));
         };
         let status = r.child.wait().map_or_else(|e| e.to_string(), |s| s.to_string());
         // The reader thread ends with the pipe; give it a moment to take the last bytes.
@@ -319,7 +350,11 @@ fn read_reply<R: serde::de::DeserializeOwned>(
 ) -> Result<R, CallError> {
     match reply {
         Reply::Value(v) => from_value(&v).map_err(|e| {
-            CallError::Broken(format!("{function} returned a value of another type: {e}"))
+            CallError::Broken(Reason::with_detail(
+                &format!("{function} が別の型の値を返しました"),
+                &format!("{function} returned a value of another type"),
+                &e,
+            ))
         }),
         // The student's own words, cut to a size a report can hold: a panic of 200 MB in every
         // function once filled the grader's memory.
@@ -327,16 +362,23 @@ fn read_reply<R: serde::de::DeserializeOwned>(
             message: cut(message, MAX_MESSAGE_BYTES),
             location: location.map(|l| cut(l, MAX_LOCATION_BYTES)),
         }),
-        Reply::BadArguments(why) => {
-            Err(CallError::Broken(format!("{function}: {}", cut(why, MAX_MESSAGE_BYTES))))
-        }
+        Reply::BadArguments(why) => Err(CallError::Broken(Reason::with_detail(
+            &format!("{function} が引数を読めませんでした"),
+            &format!("{function} could not read its arguments"),
+            &cut(why, MAX_MESSAGE_BYTES),
+        ))),
         Reply::Unknown(name) => {
-            Err(CallError::Broken(format!("no function {}", cut(name, MAX_LOCATION_BYTES))))
+            let name = cut(name, MAX_LOCATION_BYTES);
+            Err(CallError::Broken(Reason::new(
+                format!("ワーカーに関数 {name} がありません"),
+                format!("the worker has no function {name}"),
+            )))
         }
         Reply::Stub { tasks, reply } => {
             if matches!(*reply, Reply::Stub { .. }) {
-                return Err(CallError::Broken(format!(
-                    "{function}: a stub's reply inside another"
+                return Err(CallError::Broken(Reason::new(
+                    format!("{function}: スタブの返事の中にスタブの返事があります"),
+                    format!("{function}: a stub's reply inside another"),
                 )));
             }
             for task in &tasks {

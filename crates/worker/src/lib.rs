@@ -69,6 +69,33 @@ pub use serve::{Handler, serve};
 
 use serde::{Deserialize, Serialize};
 
+/// Why a call gave no value when it is no fault of the function's own code as such (the worker
+/// could not start, a reply that did not read, a `shade_pixel` that asked other questions the
+/// second time), in Japanese and English: the worker links no kit code, so it has no `Text` of
+/// its own; the trusted side makes one of it.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Reason {
+    /// The reason in Japanese.
+    pub ja: String,
+    /// The reason in English.
+    pub en: String,
+}
+
+impl Reason {
+    /// A reason in both languages.
+    #[must_use]
+    pub fn new(ja: impl Into<String>, en: impl Into<String>) -> Reason {
+        Reason { ja: ja.into(), en: en.into() }
+    }
+
+    /// The same detail (a system's or a library's words, untranslated) after a sentence in each
+    /// language: `ja: detail`, `en: detail`.
+    #[must_use]
+    pub fn with_detail(ja: &str, en: &str, detail: &str) -> Reason {
+        Reason::new(format!("{ja}: {detail}"), format!("{en}: {detail}"))
+    }
+}
+
 /// A value on the pipe: CBOR, which carries what a student's function may return and JSON
 /// cannot (NaN, ±∞) bit for bit, and reads the kit's tagged enums as JSON does.
 pub type Value = ciborium::Value;

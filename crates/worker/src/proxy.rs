@@ -36,7 +36,7 @@ use serde::Serialize;
 use serde::de::DeserializeOwned;
 
 use crate::tables::{A3Spec, Queries};
-use crate::{CallError, Worker};
+use crate::{CallError, Reason, Worker};
 
 /// The worker the stand-ins call, and the time each check may spend in it.
 #[derive(Debug)]
@@ -127,7 +127,10 @@ pub fn call<A: Serialize, R: DeserializeOwned>(function: &str, args: &A) -> R {
     let result = CURRENT.with(|c| {
         let mut current = c.borrow_mut();
         let Some(session) = current.as_mut() else {
-            return Err(CallError::Broken(format!("{function}: no worker is running")));
+            return Err(CallError::Broken(Reason::new(
+                format!("{function}: ワーカーが動いていません"),
+                format!("{function}: no worker is running"),
+            )));
         };
         let budget = match session.deadline {
             None if session.until_timeout && session.worker.timeouts > 0 => Duration::ZERO,
@@ -218,10 +221,10 @@ pub fn s() -> s::Impl {
 pub fn a3_frames(spec: &a3::Spec, frames: &[u64]) -> Vec<(a3::State, Gl)> {
     let out: Vec<(a3::State, Gl)> = call("a3.frames", &(A3Spec(spec.clone()), frames));
     if out.len() != frames.len() {
-        std::panic::panic_any(CallError::Broken(format!(
-            "a3.frames: {} frames for {} asked",
-            out.len(),
-            frames.len()
+        let (got, asked) = (out.len(), frames.len());
+        std::panic::panic_any(CallError::Broken(Reason::new(
+            format!("a3.frames: {asked} フレームを頼んで {got} フレームが返りました"),
+            format!("a3.frames: {got} frames for {asked} asked"),
         )));
     }
     out
@@ -251,23 +254,25 @@ pub fn shade_pixels(
 ) -> Vec<Rgb> {
     let queries: Vec<Queries> = call("s.shade_pixels_queries", &(mode, pixels));
     if queries.len() != pixels.len() {
-        std::panic::panic_any(CallError::Broken(format!(
-            "s.shade_pixels_queries: {} lists for {} pixels",
-            queries.len(),
-            pixels.len()
+        let (got, asked) = (queries.len(), pixels.len());
+        std::panic::panic_any(CallError::Broken(Reason::new(
+            format!("s.shade_pixels_queries: 画素 {asked} 個に問い合わせの列が {got} 個返りました"),
+            format!("s.shade_pixels_queries: {got} lists for {asked} pixels"),
         )));
     }
     let answers: Vec<Vec<Rgb>> =
         queries.iter().map(|q| q.iter().map(|&(p, n)| light(p, n)).collect()).collect();
-    let colours: Result<Vec<Rgb>, String> =
+    let colours: Result<Vec<Rgb>, Reason> =
         call("s.shade_pixels", &(mode, pixels, &queries, &answers));
     match colours {
         Ok(c) if c.len() == pixels.len() => c,
-        Ok(c) => std::panic::panic_any(CallError::Broken(format!(
-            "s.shade_pixels: {} colours for {} pixels",
-            c.len(),
-            pixels.len()
+        Ok(c) => std::panic::panic_any(CallError::Broken(Reason::new(
+            format!("s.shade_pixels: 画素 {} 個に色が {} 個返りました", pixels.len(), c.len()),
+            format!("s.shade_pixels: {} colours for {} pixels", c.len(), pixels.len()),
         ))),
-        Err(why) => std::panic::panic_any(CallError::Broken(format!("shade_pixel: {why}"))),
+        Err(why) => std::panic::panic_any(CallError::Broken(Reason::new(
+            format!("shade_pixel: {}", why.ja),
+            format!("shade_pixel: {}", why.en),
+        ))),
     }
 }

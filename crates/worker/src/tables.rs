@@ -30,11 +30,11 @@
 //! | `s.spot_factor` | `(Vec3, Vec3, f32, f32)` → `f32` |
 //! | `s.vertex_normals` | `Mesh` → `Vec<Vec3>` |
 //! | `s.vertex_normals_area` | `Mesh` → `Vec<Vec3>` |
-//! | `s.shade_pixel` | `(Shading, Pixel, Queries, Vec<Rgb>)` → `Result<Rgb, String>`: one pixel of `s.shade_pixels` |
+//! | `s.shade_pixel` | `(Shading, Pixel, Queries, Vec<Rgb>)` → `Result<Rgb, Reason>`: one pixel of `s.shade_pixels` |
 //! | `s.reflect` | `(Vec3, Vec3)` → `Vec3` |
 //! | `s.refract` | `(Vec3, Vec3, f32, f32)` → `Option<Vec3>` |
 //! | `s.shade_pixels_queries` | `(Shading, Vec<Pixel>)` → `Vec<Queries>`: what each pixel asked `light` |
-//! | `s.shade_pixels` | `(Shading, Vec<Pixel>, Vec<Queries>, Vec<Vec<Rgb>>)` → `Result<Vec<Rgb>, String>` |
+//! | `s.shade_pixels` | `(Shading, Vec<Pixel>, Vec<Queries>, Vec<Vec<Rgb>>)` → `Result<Vec<Rgb>, Reason>` |
 //!
 //! **`shade_pixel`'s light.** `light(p, n)` is the kit's lighting stage, evaluated on the trusted
 //! side, so a pixel takes two calls for any number of pixels: `s.shade_pixels_queries` runs the
@@ -61,6 +61,7 @@ use cg_student::s::{Pixel, Shading};
 use cg_student::{Rgb, a1, a2, a3, a4, s};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
+use crate::Reason;
 use crate::serve::{Handler, handler};
 
 /// The fields of `a1::Impl`, by hand: [`a1()`] has one handler `a1.<field>` for each.
@@ -262,12 +263,11 @@ pub fn s(imp: s::Impl) -> Vec<(&'static str, Handler)> {
                     Vec<Queries>,
                     Vec<Vec<Rgb>>,
                 )| {
-                    if queries.len() != pixels.len() || answers.len() != pixels.len() {
-                        return Err(format!(
-                            "{} pixels, {} lists of queries and {} lists of answers",
-                            pixels.len(),
-                            queries.len(),
-                            answers.len()
+                    let (p, q, a) = (pixels.len(), queries.len(), answers.len());
+                    if q != p || a != p {
+                        return Err(Reason::new(
+                            format!("画素 {p} 個に、問い合わせの列が {q} 個、答えの列が {a} 個"),
+                            format!("{p} pixels, {q} lists of queries and {a} lists of answers"),
                         ));
                     }
                     pixels
@@ -275,8 +275,12 @@ pub fn s(imp: s::Impl) -> Vec<(&'static str, Handler)> {
                         .zip(queries.iter().zip(&answers))
                         .enumerate()
                         .map(|(i, (p, (q, a)))| {
-                            answered(shade_pixel, mode, p, q, a)
-                                .map_err(|why| format!("pixel {i}: {why}"))
+                            answered(shade_pixel, mode, p, q, a).map_err(|why| {
+                                Reason::new(
+                                    format!("画素 {i}: {}", why.ja),
+                                    format!("pixel {i}: {}", why.en),
+                                )
+                            })
                         })
                         .collect::<Result<Vec<_>, _>>()
                 },
@@ -305,6 +309,11 @@ fn asked(shade_pixel: ShadePixel, mode: Shading, pixel: &Pixel) -> Queries {
     queries.into_inner()
 }
 
+/// What a `shade_pixel` that asked other questions the second time is told: it ran twice on the
+/// same pixel (once to list what it asks `light`, once with the answers), so it must ask the same.
+const SAME_QUESTIONS_JA: &str = "（shade_pixel は同じ画素で 2 回実行されます。乱数や呼び出しをまたいで残る状態を使わず、同じ順に同じ light を呼んでください）";
+const SAME_QUESTIONS_EN: &str = " (shade_pixel runs twice on the same pixel: ask light the same questions in the same order, with no randomness and no state kept between calls)";
+
 /// Phase 2: the pixel's colour with a light that answers the `k`-th query with `answers[k]`,
 /// provided it is phase 1's `k`-th query bit for bit; any other query gets NaN and makes the
 /// result `Err`.
@@ -314,9 +323,13 @@ fn answered(
     pixel: &Pixel,
     queries: &[(Vec3, Vec3)],
     answers: &[Rgb],
-) -> Result<Rgb, String> {
-    if queries.len() != answers.len() {
-        return Err(format!("{} queries but {} answers", queries.len(), answers.len()));
+) -> Result<Rgb, Reason> {
+    let (q, a) = (queries.len(), answers.len());
+    if q != a {
+        return Err(Reason::new(
+            format!("問い合わせ {q} 個に答え {a} 個"),
+            format!("{q} queries but {a} answers"),
+        ));
     }
     let bits = |v: Vec3| v.to_array().map(f32::to_bits);
     let k = Cell::new(0);
@@ -329,15 +342,29 @@ fn answered(
             asked_before => {
                 if wrong.borrow().is_none() {
                     *wrong.borrow_mut() = Some(match asked_before {
-                        Some(&(qp, qn)) => format!(
-                            "light query {at} was light({p:?}, {n:?}), not light({qp:?}, {qn:?}) \
-                             as when its queries were listed"
+                        Some(&(qp, qn)) => Reason::new(
+                            format!(
+                                "light の {at} 番目の呼び出しが light({p:?}, {n:?}) でした。\
+                                 1 回目は light({qp:?}, {qn:?}) でした{SAME_QUESTIONS_JA}"
+                            ),
+                            format!(
+                                "light query {at} was light({p:?}, {n:?}), not light({qp:?}, \
+                                 {qn:?}) as the first time{SAME_QUESTIONS_EN}"
+                            ),
                         ),
-                        None => format!(
-                            "light was asked {} times or more, {} times when its queries were \
-                             listed",
-                            at + 1,
-                            queries.len()
+                        None => Reason::new(
+                            format!(
+                                "light が {} 回以上呼ばれました。1 回目は {} 回でした\
+                                 {SAME_QUESTIONS_JA}",
+                                at + 1,
+                                queries.len()
+                            ),
+                            format!(
+                                "light was asked {} times or more, {} times the first time\
+                                 {SAME_QUESTIONS_EN}",
+                                at + 1,
+                                queries.len()
+                            ),
                         ),
                     });
                 }
@@ -409,4 +436,42 @@ macro_rules! tables {
         .flatten()
         .collect::<::std::vec::Vec<_>>()
     };
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::atomic::{AtomicU32, Ordering};
+
+    use super::*;
+
+    /// A `shade_pixel` that asks `light` somewhere else on each run (a counter kept between
+    /// calls): its second run is refused, said in both languages with what to do.
+    #[test]
+    fn a_shade_pixel_that_asks_other_questions_the_second_time_is_told_why() {
+        static RUNS: AtomicU32 = AtomicU32::new(0);
+        fn moving(_: Shading, p: &Pixel, light: &dyn Fn(Vec3, Vec3) -> Rgb) -> Rgb {
+            let k = RUNS.fetch_add(1, Ordering::Relaxed) as f32;
+            light(p.positions[0] + Vec3::X * k, p.face_normal)
+        }
+        fn steady(_: Shading, p: &Pixel, light: &dyn Fn(Vec3, Vec3) -> Rgb) -> Rgb {
+            light(p.positions[0], p.face_normal)
+        }
+        let pixel = Pixel {
+            positions: [Vec3::ZERO, Vec3::X, Vec3::Y],
+            normals: [Vec3::Z; 3],
+            face_normal: Vec3::Z,
+            weights: [1.0, 0.0, 0.0],
+        };
+        let answer = vec![Vec3::splat(0.25)];
+        let queries = asked(steady, Shading::Phong, &pixel);
+        assert_eq!(answered(steady, Shading::Phong, &pixel, &queries, &answer), Ok(answer[0]));
+        let queries = asked(moving, Shading::Phong, &pixel);
+        let why = answered(moving, Shading::Phong, &pixel, &queries, &answer).unwrap_err();
+        assert!(why.ja.contains("light の 0 番目の呼び出し"), "{why:?}");
+        assert!(why.ja.contains("同じ画素で 2 回実行されます"), "{why:?}");
+        assert!(
+            why.en.contains("light query 0 was") && why.en.contains("no randomness"),
+            "{why:?}"
+        );
+    }
 }

@@ -18,10 +18,20 @@ fn values_and_changed_arguments_come_back() {
     let mut w = worker();
     assert_eq!(w.call::<_, i64>("add", &(2, 3), BUDGET), Ok(5));
     assert_eq!(w.call::<_, Vec<f32>>("grow", &vec![0.25f32], BUDGET), Ok(vec![0.25, 1.5]));
-    assert!(matches!(w.call::<_, i64>("nothing", &(), BUDGET), Err(CallError::Broken(_))));
-    assert!(matches!(w.call::<_, i64>("add", &"x", BUDGET), Err(CallError::Broken(_))));
+    // Each is said in both languages, for the Japanese feedback as for the English.
+    let broken = |r: Result<i64, CallError>, ja: &str, en: &str| match r {
+        Err(CallError::Broken(why)) => {
+            assert!(why.ja.contains(ja) && why.en.contains(en), "{why:?}");
+        }
+        other => panic!("{other:?}"),
+    };
+    broken(w.call("nothing", &(), BUDGET), "ワーカーに関数 nothing がありません", "no function");
+    broken(w.call("add", &"x", BUDGET), "add が引数を読めませんでした", "could not read");
     // A value of another type than the caller expects is no value.
-    assert!(matches!(w.call::<_, String>("add", &(1, 1), BUDGET), Err(CallError::Broken(_))));
+    match w.call::<_, String>("add", &(1, 1), BUDGET) {
+        Err(CallError::Broken(why)) => assert!(why.ja.contains("別の型の値"), "{why:?}"),
+        other => panic!("{other:?}"),
+    }
 }
 
 #[test]

@@ -220,3 +220,31 @@ fn a_file_that_does_not_compile_shows_its_errors_once_and_is_not_a_task_to_fix()
     assert_eq!(json["checks"][0]["module"], "a1");
     assert_eq!(json["checks"][0]["errors"][1], "exercises/src/a1.rs:20: mismatched types");
 }
+
+/// A call that gave no value for the kit's reasons (`CallError::Broken`) is said as such, in
+/// the reader's language: it used to be "the process ended (exit(), a stack overflow?)" with
+/// the reason in English only. And a view's function that ran out of time is said so with its
+/// name (a1's view used to say "face_normals panicked: " with nothing after it).
+#[test]
+fn a_call_that_gave_no_value_is_said_in_the_readers_language() {
+    let why = cg_worker::Reason::new(
+        "ワーカーに関数 a9.x がありません",
+        "the worker has no function a9.x",
+    );
+    let outcome = Outcome::of_call(&CallError::Broken(why));
+    let text = outcome.describe().unwrap();
+    assert_eq!(
+        text.ja,
+        "あなたの関数の結果を受け取れませんでした: ワーカーに関数 a9.x がありません"
+    );
+    assert_eq!(text.en, "no result came back from your function: the worker has no function a9.x");
+    assert_eq!(
+        serde_json::to_value(&outcome).unwrap()["why"]["ja"],
+        "ワーカーに関数 a9.x がありません"
+    );
+    let late = Outcome::TimedOut { limit_ms: 20_000 }.of_function("face_normals");
+    assert!(late.ja.starts_with("face_normals: 制限時間 20 秒を超えても"), "{}", late.ja);
+    assert!(!late.en.contains("panicked"), "{}", late.en);
+    let stub = Outcome::NotDone { message: "a1.t3".into() }.of_function("face_normals");
+    assert!(stub.en.starts_with("face_normals is not written yet"), "{}", stub.en);
+}
