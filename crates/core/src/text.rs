@@ -195,6 +195,12 @@ pub enum DecodeError {
         /// Where the text stops being valid.
         at: Place,
     },
+    /// The bytes decode, but to a NUL character: a binary file (a PDF, an image, a program)
+    /// that passed for text. No text file the students' editors write has one.
+    Binary {
+        /// Where the first NUL is.
+        at: Place,
+    },
 }
 
 impl DecodeError {
@@ -204,7 +210,8 @@ impl DecodeError {
         match self {
             DecodeError::Undetected { at, .. }
             | DecodeError::AfterBom { at, .. }
-            | DecodeError::NotInNamed { at, .. } => *at,
+            | DecodeError::NotInNamed { at, .. }
+            | DecodeError::Binary { at } => *at,
         }
     }
 
@@ -272,6 +279,19 @@ impl DecodeError {
                         "the file starts with a {encoding} byte-order mark, but {} is not valid {encoding}. {}",
                         at.en,
                         capitalized(&save.en)
+                    ),
+                )
+            }
+            DecodeError::Binary { at } => {
+                let at = at.text();
+                Text::new(
+                    format!(
+                        "テキストのファイルではありません: {}に NUL 文字（値が 0 のバイト）があります。PDF・画像・実行ファイルではなく、テキストのファイルを指定してください",
+                        at.ja
+                    ),
+                    format!(
+                        "not a text file: there is a NUL character (a zero byte) at {}. Give a text file, not a PDF, an image or a program",
+                        at.en
                     ),
                 )
             }
@@ -453,6 +473,27 @@ pub fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, ReadError> {
 }
 
 fn decode_cow(
+    bytes: Cow<'_, [u8]>,
+    forced: Option<Encoding>,
+) -> Result<(String, Encoding), DecodeError> {
+    // The first zero byte, before the bytes are taken: where a NUL is in UTF-8 or Shift_JIS
+    // (whose trail bytes are never zero).
+    let zero = bytes.iter().position(|&b| b == 0);
+    let utf16_bom =
+        bytes.starts_with(Encoding::Utf16Le.bom()) || bytes.starts_with(Encoding::Utf16Be.bom());
+    let (text, encoding) = decode_detected(bytes, forced)?;
+    let Some(i) = zero.and_then(|_| text.find('\0')) else {
+        return Ok((text, encoding));
+    };
+    let offset = if matches!(encoding, Encoding::Utf16Le | Encoding::Utf16Be) {
+        2 * text[..i].encode_utf16().count() + if utf16_bom { 2 } else { 0 }
+    } else {
+        zero.unwrap_or(i)
+    };
+    Err(DecodeError::Binary { at: Place::after(&text[..i], offset) })
+}
+
+fn decode_detected(
     bytes: Cow<'_, [u8]>,
     forced: Option<Encoding>,
 ) -> Result<(String, Encoding), DecodeError> {

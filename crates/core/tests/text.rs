@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use cg_core::text::{DecodeError, Encoding, MAX_TEXT_BYTES, ReadError, read};
+use cg_core::text::{DecodeError, Encoding, MAX_TEXT_BYTES, Place, ReadError, read};
 
 const REPORT: &str = "# レポート\r\n頂点 V0 (1, 0, 0)\r\n";
 
@@ -78,9 +78,10 @@ fn a_file_over_64_mib_is_refused_by_its_size() {
     assert_eq!(e, ReadError::TooLarge { size: Some(MAX_TEXT_BYTES + 1), limit: MAX_TEXT_BYTES });
     assert!(e.text().en.contains("larger than 64 MiB (67108865 bytes)"), "{e}");
 
-    // Exactly the limit: zeros are valid UTF-8 (the parsers then say what is wrong).
+    // Exactly the limit: read, and then refused as what it is, zeros (a binary file), from the
+    // first byte.
     std::fs::File::options().write(true).open(&path).unwrap().set_len(MAX_TEXT_BYTES).unwrap();
-    let (text, encoding) = read(&path, None).unwrap();
-    assert_eq!((text.len() as u64, encoding), (MAX_TEXT_BYTES, Encoding::Utf8));
+    let at = Place { line: 1, column: 1, offset: 0 };
+    assert_eq!(read(&path, None).unwrap_err(), ReadError::Decode(DecodeError::Binary { at }));
     let _ = std::fs::remove_dir_all(dir.parent().unwrap());
 }

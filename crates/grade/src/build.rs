@@ -227,8 +227,7 @@ pub fn cargo_build_sandboxed(
         ],
         compiler: true,
     };
-    let run = cg_sandbox::run(&job, &build_limits(limit), isolation)
-        .map_err(|e| e.text())?;
+    let run = cg_sandbox::run(&job, &build_limits(limit), isolation).map_err(|e| e.text())?;
     let (module_errors, other_errors) = parse_messages(&run.stdout);
     Ok(BuildOutput {
         success: run.ended == cg_sandbox::Ended::Exited(0),

@@ -297,7 +297,10 @@ fn what_cannot_be_started_is_an_error_not_a_run() {
         assert!(text.ja.contains("を起動できません: 読み取り専用のフォルダ"), "{text:?}");
         assert!(text.ja.contains("no-such-folder") && !text.ja.contains("read-only"), "{text:?}");
         assert_eq!(text.en, e.to_string());
-        assert!(text.en.contains("cannot start") && text.en.contains("read-only folder"), "{text:?}");
+        assert!(
+            text.en.contains("cannot start") && text.en.contains("read-only folder"),
+            "{text:?}"
+        );
     }
 }
 

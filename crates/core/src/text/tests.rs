@@ -221,6 +221,7 @@ fn messages_are_one_line_in_each_language() {
         ReadError::Decode(DecodeError::Undetected { at, nearest: Encoding::Utf8 }),
         ReadError::Decode(DecodeError::AfterBom { encoding: Encoding::Utf16Be, at }),
         ReadError::Decode(DecodeError::NotInNamed { encoding: Encoding::ShiftJis, at }),
+        ReadError::Decode(DecodeError::Binary { at }),
     ];
     let japanese = |c: char| matches!(c, '\u{3000}'..='\u{30ff}' | '\u{4e00}'..='\u{9fff}' | '\u{ff00}'..='\u{ffef}');
     for e in &errors {
@@ -248,4 +249,33 @@ fn the_limit_named_is_the_one_read_with() {
     assert!(e.text().en.contains("larger than 1 KiB (2048 bytes)"), "{}", e.text().en);
     assert!(e.text().ja.contains("1 KiB を超えて"), "{}", e.text().ja);
     let _ = std::fs::remove_file(&path);
+}
+
+/// Bytes that decode, but to a NUL: a binary file (a PDF with zero bytes, a program) that passed
+/// for UTF-8 or Shift_JIS, or a UTF-16 text with a U+0000 in it. Refused, with the place of the
+/// first NUL in the file's bytes; they used to be read as text.
+#[test]
+fn a_nul_character_is_a_binary_file_not_text() {
+    let pdf = b"%PDF-1.7\n%\x00\x00\x00\x01 obj\n";
+    let e = decode(pdf, None).unwrap_err();
+    assert_eq!(e, DecodeError::Binary { at: Place { line: 2, column: 2, offset: 10 } });
+    assert!(e.text().en.starts_with("not a text file: there is a NUL character"), "{e}");
+    assert!(e.text().ja.contains("2 行 2 文字目"), "{}", e.text().ja);
+    // Forced to an encoding, the same.
+    assert!(matches!(decode(pdf, Some(Encoding::Utf8)), Err(DecodeError::Binary { .. })));
+    // In Shift_JIS: the zero byte's own offset, after a two-byte character.
+    let mut sjis = shift_jis("頂点\r\n");
+    sjis.extend_from_slice(b"ab\x00c");
+    let e = decode(&sjis, None).unwrap_err();
+    assert_eq!(e, DecodeError::Binary { at: Place { line: 2, column: 3, offset: 8 } });
+    // UTF-16 with a BOM: the U+0000's two bytes, counted after the BOM.
+    let e = decode(&utf16("V0\nx\0", true), None).unwrap_err();
+    assert_eq!(e, DecodeError::Binary { at: Place { line: 2, column: 2, offset: 10 } });
+    // The owned path (files) says the same.
+    assert_eq!(
+        decode_cow(Cow::Owned(pdf.to_vec()), None).unwrap_err(),
+        decode(pdf, None).unwrap_err()
+    );
+    // UTF-16 text has zero bytes but no NUL character: still text.
+    assert_eq!(decode(&utf16(REPORT, true), None), Ok((REPORT.to_owned(), Encoding::Utf16Le)));
 }
