@@ -247,3 +247,32 @@ fn corners_are_bounded_for_concave_faces_only() {
     assert_eq!(mesh.faces.len(), n - 2);
     assert!(mesh.faces.iter().enumerate().all(|(i, f)| *f == [0, i as u32 + 1, i as u32 + 2]));
 }
+
+/// A five-pointed star whose inner corners are within 10⁻⁸ of its centre does not cross itself,
+/// but ear clipping (earcut) cannot cover it exactly: an error that names its line, not a face
+/// drawn with a hole or an overlap. With its inner corners 10⁻³ out it is split and covered.
+#[test]
+fn a_face_ear_clipping_cannot_cover_exactly_is_an_error() {
+    let star = |inner: f64| -> Vec<Vec3> {
+        (0..10)
+            .map(|k| {
+                let q = DVec2::from_angle(k as f64 * std::f64::consts::TAU / 10.0)
+                    * if k % 2 == 0 { 1.0 } else { inner };
+                Vec3::new(q.x as f32, q.y as f32, 0.0)
+            })
+            .collect()
+    };
+    let text = one_face("", &star(1e-8));
+    let e = error(&text);
+    let problem = PolygonProblem::NotCovered;
+    assert_eq!(*e.kind, ErrorKind::ObjPolygon { corners: 10, problem });
+    assert_eq!(e.position.map(|p| (p.line, p.column)), Some((11, 1)));
+    let en = e.to_string();
+    assert!(en.starts_with("model.obj:11:1: ") && en.contains("cover it exactly"), "{en}");
+    assert!(e.describe(Lang::Ja).contains("ぴったり覆う三角形に分割できませんでした"));
+    let points = star(1e-3);
+    let mesh = load(&one_face("", &points));
+    assert_eq!(mesh.faces.len(), 8);
+    let flat: Vec<DVec2> = points.iter().map(|p| DVec2::new(p.x.into(), p.y.into())).collect();
+    assert_covers_once(&flat, &mesh.faces, "the star").unwrap();
+}
