@@ -299,8 +299,16 @@ pub enum BenchError {
     Io {
         /// The file.
         path: PathBuf,
-        /// Why.
-        error: String,
+        /// Why, in both languages ([`Text::io`]).
+        reason: Text,
+    },
+    /// `--out` cannot take the report: a folder, or a name without an extension (whose SVG
+    /// folder would be the file itself). Said before anything runs.
+    Out {
+        /// The path given.
+        path: PathBuf,
+        /// Why, in both languages.
+        reason: Text,
     },
 }
 
@@ -312,14 +320,42 @@ impl BenchError {
             BenchError::Render(e) => {
                 format!("{}: {e}", t("描画に失敗しました", "rendering failed").get(lang))
             }
-            BenchError::Io { path, error } => Text::new(
-                format!("{} に書き込めません: {error}", path.display()),
-                format!("cannot write {}: {error}", path.display()),
+            BenchError::Io { path, reason } => Text::new(
+                format!("{} に書き込めません: {}", path.display(), reason.ja),
+                format!("cannot write {}: {}", path.display(), reason.en),
             )
             .get(lang)
             .to_owned(),
+            BenchError::Out { path, reason } => {
+                format!("--out {}: {}", path.display(), reason.get(lang))
+            }
         }
     }
+}
+
+/// Whether the report can be written to `markdown` (see [`Report::write`]): a file name with an
+/// extension (`report.md`; the SVGs go into the folder named without it), not a folder. Checked
+/// by `cg bench` before its experiments run, so a wrong `--out` does not cost the whole run.
+///
+/// # Errors
+/// [`BenchError::Out`] with why.
+pub fn check_out(markdown: &Path) -> Result<(), BenchError> {
+    let refuse = |ja: &str, en: &str| {
+        Err(BenchError::Out { path: markdown.to_path_buf(), reason: Text::new(ja, en) })
+    };
+    if markdown.is_dir() || markdown.as_os_str().to_string_lossy().ends_with(['/', '\\']) {
+        return refuse(
+            "フォルダです。Markdown のファイル名（report.md など）を指定してください",
+            "is a folder: give the Markdown file's name (report.md, say)",
+        );
+    }
+    if markdown.extension().is_none() {
+        return refuse(
+            "拡張子がありません（図は拡張子を除いた名前のフォルダに書くので、同じ名前になります）。report.md のように指定してください",
+            "has no extension (the plots go to the folder of its name without one, which would be the file itself): give report.md, say",
+        );
+    }
+    Ok(())
 }
 
 impl std::fmt::Display for BenchError {
@@ -440,9 +476,10 @@ impl Report {
             .file_stem()
             .map_or_else(|| "speed-vs-error".into(), |s| s.to_string_lossy().into_owned());
         let dir = markdown.with_file_name(&stem);
-        let io = |path: &Path, e: &dyn std::fmt::Display| BenchError::Io {
+        check_out(markdown)?;
+        let io = |path: &Path, e: &std::io::Error| BenchError::Io {
             path: path.to_path_buf(),
-            error: e.to_string(),
+            reason: Text::io(e),
         };
         std::fs::create_dir_all(&dir).map_err(|e| io(&dir, &e))?;
         let mut written = Vec::new();

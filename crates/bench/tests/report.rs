@@ -156,3 +156,25 @@ fn the_tiny_report_is_complete_finite_and_ordered_as_theory_says() {
     assert!(value(f, &["ray tracer", "shadows (tracer)"], "texture samples / rays") > 0.0);
     assert_eq!(value(f, &["ray tracer", base[1]], "texture samples / rays"), 0.0);
 }
+
+/// A `--out` the report cannot take is said before any experiment runs, in both languages: a
+/// folder (it failed after the whole run, leaving the SVGs in it), a name without an extension
+/// (whose SVG folder is the file itself, so it could never succeed).
+#[test]
+fn an_out_the_report_cannot_take_is_refused_before_it_runs() {
+    let dir = out_dir();
+    std::fs::create_dir_all(&dir).unwrap();
+    for (out, said) in [
+        (dir.clone(), "is a folder"),
+        (dir.join("plots/"), "is a folder"),
+        (dir.join("report"), "has no extension"),
+    ] {
+        let e = cg_bench::check_out(&out).unwrap_err();
+        let en = e.message(cg_core::lang::Lang::En);
+        assert!(en.starts_with("--out ") && en.contains(said), "{en}");
+        assert!(!e.message(cg_core::lang::Lang::Ja).contains(said));
+    }
+    cg_bench::check_out(&dir.join("report.md")).unwrap();
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0, "nothing written");
+    let _ = std::fs::remove_dir_all(&dir);
+}

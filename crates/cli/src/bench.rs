@@ -27,6 +27,7 @@ pub struct Args {
 /// A message in `lang` when a renderer refuses a scene or a file cannot be written.
 pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let out = args.out.clone().unwrap_or_else(|| super::kit_path(None, DEFAULT_OUT));
+    cg_bench::check_out(&out).map_err(|e| e.message(lang))?;
     let config = if args.quick { cg_bench::Config::quick() } else { cg_bench::Config::full() };
     let repo = out.parent().filter(|p| p.is_dir()).map(PathBuf::from);
     let machine = cg_bench::Machine::detect(repo.as_deref());

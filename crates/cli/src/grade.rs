@@ -22,10 +22,10 @@ pub struct Args {
     #[arg(long, value_name = "N")]
     jobs: Option<usize>,
     /// Seconds one check may spend in a submission's functions / 1 つのチェックが提出物の関数に使える時間（秒）
-    #[arg(long, value_name = "S", default_value_t = 20)]
+    #[arg(long, value_name = "S", default_value_t = 20, value_parser = clap::value_parser!(u64).range(crate::TIME_LIMIT_S))]
     time_limit: u64,
     /// Memory the worker running a submission's functions may use, in MB / 提出物の関数を動かすプロセスのメモリ上限（MB）
-    #[arg(long, value_name = "MB", default_value_t = 2048)]
+    #[arg(long, value_name = "MB", default_value_t = 2048, value_parser = clap::value_parser!(u64).range(crate::MEMORY_LIMIT_MIB))]
     memory_limit: u64,
     /// The class roster (CSV: student, name, entry = the entry's folder or zip name, or its Moodle participant ID): binds each entry to its student / 名簿（CSV: 学生番号・氏名・提出物のフォルダ名か Moodle の参加者 ID）
     #[arg(long, value_name = "CSV")]
@@ -57,18 +57,16 @@ impl Setup {
         unsafe_no_sandbox: bool,
         lang: Lang,
     ) -> Result<Setup, String> {
-        let kit = crate::kit_path(None, ".");
-        if !kit.join("solutions/Cargo.toml").exists() {
-            return Err(t(
-                "solutions/ がありません（採点は、キット本体のリポジトリで行います）",
-                "there is no solutions/ here: grading runs in the kit's own repository",
-            )
-            .get(lang)
-            .to_owned());
-        }
+        let kit = crate::instructor::kit_root(&t("採点は、", "grading runs in"), lang)?;
+        // Read as the kit reads a text file (UTF-8, UTF-16, Shift_JIS), at most 1 MiB: a
+        // FIFO or /dev/zero is an error, not a hang or the machine's memory.
         let config_text = match config {
-            Some(path) => std::fs::read_to_string(path)
-                .map_err(|e| cg_core::lang::Text::io_at(path, &e).get(lang).to_owned())?,
+            Some(path) => cg_core::text::read_bounded(path, 1 << 20)
+                .and_then(|bytes| Ok(cg_core::text::decode(&bytes, None)?.0))
+                .map_err(|e| {
+                    let why = e.text_without_option();
+                    format!("{}: {}", path.display(), why.get(lang))
+                })?,
             None => String::new(),
         };
         let config = Config::parse(&config_text).map_err(|e| e.message(lang).to_owned())?;
@@ -84,7 +82,7 @@ impl Setup {
 pub(crate) fn limits(time_limit: u64, memory_limit: u64) -> cg_sandbox::Limits {
     cg_sandbox::Limits {
         wall: Duration::from_secs(time_limit.max(1)),
-        memory_bytes: memory_limit.max(64) << 20,
+        memory_bytes: memory_limit.max(64).saturating_mul(1 << 20),
         ..cg_sandbox::Limits::default()
     }
 }

@@ -24,10 +24,10 @@ pub struct GradeOneArgs {
     #[arg(long, value_name = "TOML")]
     config: Option<PathBuf>,
     /// Seconds one check may spend in the submission's functions / 1 つのチェックが提出物の関数に使える時間（秒）
-    #[arg(long, value_name = "S", default_value_t = 20)]
+    #[arg(long, value_name = "S", default_value_t = 20, value_parser = clap::value_parser!(u64).range(crate::TIME_LIMIT_S))]
     time_limit: u64,
     /// Memory the worker running the submission's functions may use, in MB / 提出物の関数を動かすプロセスのメモリ上限（MB）
-    #[arg(long, value_name = "MB", default_value_t = 2048)]
+    #[arg(long, value_name = "MB", default_value_t = 2048, value_parser = clap::value_parser!(u64).range(crate::MEMORY_LIMIT_MIB))]
     memory_limit: u64,
     /// Grade even without bubblewrap: the student's code then runs unisolated (the result says so) / bubblewrap なしでも採点する（学生のコードが隔離されずに動きます）
     #[arg(long)]
@@ -97,17 +97,17 @@ fn grade_one_inner(args: &GradeOneArgs, lang: Lang) -> Result<(), String> {
 
 /// `cg autograder`.
 pub fn autograder(args: &AutograderArgs, lang: Lang) -> Result<(), String> {
-    let kit = crate::kit_path(None, ".");
-    if !kit.join("solutions/Cargo.toml").exists() {
-        return Err(t(
-            "solutions/ がありません（オートグレーダーは、キット本体のリポジトリから作ります）",
-            "there is no solutions/ here: the autograder is made from the kit's own repository",
-        )
-        .get(lang)
-        .to_owned());
-    }
+    let kit = crate::instructor::kit_root(
+        &t("オートグレーダーは、", "the autograder is made from"),
+        lang,
+    )?;
     let count = gradescope::package::write_zip(&kit, &args.out, lang)
         .map_err(|e| e.get(lang).to_owned())?;
+    if let Some(note) = cg_grade::handout::untracked_note(
+        &cg_grade::handout::kit_files(&kit).map_err(|e| e.get(lang).to_owned())?.untracked,
+    ) {
+        eprintln!("{}", note.get(lang));
+    }
     println!(
         "{} {} (setup.sh, run_autograder, {count} {})",
         t("オートグレーダーを書きました:", "wrote the autograder to").get(lang),

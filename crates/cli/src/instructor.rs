@@ -144,3 +144,34 @@ mod tests {
         assert!(text.ja.contains("教員用のコマンド"), "{}", text.ja);
     }
 }
+
+/// The kit's own repository: the folder at or above the current one that holds
+/// `solutions/Cargo.toml` (so an instructors' command runs from any folder of it, as git does),
+/// canonical. `why` says what needs it (`配布用のコピーは` / `a handout is made from`).
+///
+/// # Errors
+/// No such folder: said with where to run the command.
+#[cfg(feature = "instructor")]
+pub(crate) fn kit_root(
+    why: &cg_core::lang::Text,
+    lang: Lang,
+) -> Result<std::path::PathBuf, String> {
+    let here = std::env::current_dir().unwrap_or_default();
+    here.ancestors()
+        .find(|dir| dir.join("solutions/Cargo.toml").is_file())
+        .map(|dir| dir.canonicalize().unwrap_or_else(|_| dir.to_path_buf()))
+        .ok_or_else(|| {
+            cg_core::lang::Text::new(
+                format!(
+                    "このフォルダにも上のフォルダにも solutions/ がありません（{}キット本体のリポジトリで実行します）",
+                    why.ja
+                ),
+                format!(
+                    "there is no solutions/ in this folder or above it ({} the kit's own repository: run it there)",
+                    why.en
+                ),
+            )
+            .get(lang)
+            .to_owned()
+        })
+}

@@ -36,6 +36,14 @@ mod render;
 mod similarity;
 mod watch;
 
+/// The seconds `--time-limit` may give one check: from one to a day. A larger value overflowed
+/// the deadline's clock (a panic without a word).
+const TIME_LIMIT_S: std::ops::RangeInclusive<u64> = 1..=86_400;
+
+/// The MiB `--memory-limit` may give the worker: from 64 (less cannot start it) to 1 TiB. A
+/// larger value wrapped to 0 bytes when made bytes, and every check then failed.
+const MEMORY_LIMIT_MIB: std::ops::RangeInclusive<u64> = 64..=1 << 20;
+
 /// The course's sample scene, relative to the kit's root.
 const COURSE_SAMPLE: &str = "assets/scenes/course-sample.toml";
 

@@ -442,7 +442,7 @@ pub fn read(path: &Path, forced: Option<Encoding>) -> Result<(String, Encoding),
 /// The file cannot be opened or read ([`ReadError::Io`]), or is larger than `limit`.
 pub fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, ReadError> {
     let io = |e: std::io::Error| ReadError::Io { reason: Text::io(&e) };
-    let mut file = std::fs::File::open(path).map_err(io)?;
+    let mut file = open_waiting(path)?;
     let size = file.metadata().ok().filter(std::fs::Metadata::is_file).map(|m| m.len());
     if let Some(size) = size
         && size > limit
@@ -470,6 +470,45 @@ pub fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, ReadError> {
         bytes.extend_from_slice(&chunk[..n]);
     }
     Ok(bytes)
+}
+
+/// How long [`read_bounded`] waits for a named pipe to be opened for writing.
+pub const PIPE_WAIT: std::time::Duration = std::time::Duration::from_secs(5);
+
+/// `path` opened for reading. A named pipe (`mkfifo`) opens only once something opens it for
+/// writing, which may be never: it is opened on a thread of its own and given up after
+/// [`PIPE_WAIT`] (the thread stays blocked until the process ends). A pipe that is written
+/// (`<(command)`) opens at once.
+fn open_waiting(path: &Path) -> Result<std::fs::File, ReadError> {
+    let io = |e: std::io::Error| ReadError::Io { reason: Text::io(&e) };
+    #[cfg(unix)]
+    {
+        // platform: named pipes whose opening blocks are Unix's.
+        use std::os::unix::fs::FileTypeExt as _;
+        if std::fs::metadata(path).is_ok_and(|m| m.file_type().is_fifo()) {
+            let (send, receive) = std::sync::mpsc::channel();
+            let owned = path.to_path_buf();
+            std::thread::spawn(move || {
+                let _ = send.send(std::fs::File::open(owned));
+            });
+            return match receive.recv_timeout(PIPE_WAIT) {
+                Ok(opened) => opened.map_err(io),
+                Err(_) => Err(ReadError::Io {
+                    reason: Text::new(
+                        format!(
+                            "名前付きパイプで、{} 秒待っても書き込む側が開きません",
+                            PIPE_WAIT.as_secs()
+                        ),
+                        format!(
+                            "a named pipe that nothing opened for writing in {} s",
+                            PIPE_WAIT.as_secs()
+                        ),
+                    ),
+                }),
+            };
+        }
+    }
+    std::fs::File::open(path).map_err(io)
 }
 
 fn decode_cow(

@@ -85,3 +85,34 @@ fn a_file_over_64_mib_is_refused_by_its_size() {
     assert_eq!(read(&path, None).unwrap_err(), ReadError::Decode(DecodeError::Binary { at }));
     let _ = std::fs::remove_dir_all(dir.parent().unwrap());
 }
+
+/// A named pipe that nothing writes to: refused after the wait, not a hang (`cg check` with a
+/// FIFO as exercises/student.toml waited for ever). A pipe that is written is read.
+#[cfg(unix)]
+#[test]
+fn a_named_pipe_without_a_writer_is_an_error_not_a_hang() {
+    let dir = student_folder("fifo");
+    let fifo = dir.join("student.toml");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status().is_ok_and(|s| s.success());
+    if !made {
+        eprintln!("note: skipped: mkfifo is missing");
+        return;
+    }
+    let started = std::time::Instant::now();
+    let e = read(&fifo, None).unwrap_err();
+    assert!(started.elapsed() < cg_core::text::PIPE_WAIT * 3, "{:?}", started.elapsed());
+    assert!(e.text().en.contains("a named pipe that nothing opened for writing"), "{e}");
+    assert!(e.text().ja.contains("名前付きパイプ"), "{}", e.text().ja);
+    // With a writer, the pipe's text is read (another pipe: the first is still being opened
+    // by the thread that gave up).
+    let fifo = dir.join("written.toml");
+    assert!(std::process::Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    let writer = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::write(fifo, "student = \"12345678\"\n"))
+    };
+    let (text, _) = read(&fifo, None).unwrap();
+    assert_eq!(text, "student = \"12345678\"\n");
+    writer.join().unwrap().unwrap();
+    let _ = std::fs::remove_dir_all(dir.parent().unwrap());
+}

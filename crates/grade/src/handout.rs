@@ -16,26 +16,51 @@ pub fn excluded(path: &Path) -> bool {
         || path == Path::new("exercises/student.toml")
 }
 
-/// The kit's files: `git ls-files` when the kit is a git checkout (so ignored files stay out),
-/// otherwise every file under the kit except the excluded folders.
+/// The kit's files, relative to its root.
+#[derive(Clone, Debug, Default)]
+pub struct KitFiles {
+    /// The files a copy of the kit is made from.
+    pub files: Vec<PathBuf>,
+    /// Files in a git checkout that git does not track and does not ignore, left out: what a
+    /// session left in the kit (a grading's `results/`, an old `autograder.zip` with the
+    /// solutions in it, a folder of submissions) must not reach the students. The commands say
+    /// them, so that a new kit file not yet committed is not lost unseen.
+    pub untracked: Vec<PathBuf>,
+}
+
+/// The kit's files: in a git checkout, the files git tracks (`git ls-files`), as `git archive`
+/// takes them; otherwise (a copy without `.git`: the autograder's) every file under the kit
+/// except the excluded folders, what the kit's `.gitignore` names at its top and symbolic
+/// links.
 ///
 /// # Errors
 /// A folder of the kit could not be read.
-pub fn kit_files(root: &Path) -> Result<Vec<PathBuf>, Text> {
-    let git = Command::new("git")
-        .arg("-C")
-        .arg(root)
-        .args(["ls-files", "-z", "--cached", "--others", "--exclude-standard"])
-        .output();
-    if let Some(out) = git.ok().filter(|o| o.status.success()) {
-        return Ok(out
-            .stdout
-            .split(|&b| b == 0)
-            .filter(|s| !s.is_empty())
-            .map(|s| PathBuf::from(String::from_utf8_lossy(s).into_owned()))
-            .filter(|p| root.join(p).is_file())
-            .collect());
+pub fn kit_files(root: &Path) -> Result<KitFiles, Text> {
+    let listed = |which: &str| -> Option<Vec<PathBuf>> {
+        let out = Command::new("git")
+            .arg("-C")
+            .arg(root)
+            .args(["ls-files", "-z", which])
+            .args((which == "--others").then_some("--exclude-standard"))
+            .output()
+            .ok()
+            .filter(|o| o.status.success())?;
+        Some(
+            out.stdout
+                .split(|&b| b == 0)
+                .filter(|s| !s.is_empty())
+                .map(|s| PathBuf::from(String::from_utf8_lossy(s).into_owned()))
+                .filter(|p| std::fs::symlink_metadata(root.join(p)).is_ok_and(|m| m.is_file()))
+                .collect(),
+        )
+    };
+    if let Some(files) = listed("--cached") {
+        let mut untracked = listed("--others").unwrap_or_default();
+        untracked.retain(|p| !excluded(p));
+        untracked.sort();
+        return Ok(KitFiles { files, untracked });
     }
+    let ignored = top_level_ignored(root);
     let mut files = Vec::new();
     let mut stack = vec![PathBuf::new()];
     while let Some(dir) = stack.pop() {
@@ -43,17 +68,66 @@ pub fn kit_files(root: &Path) -> Result<Vec<PathBuf>, Text> {
             std::fs::read_dir(root.join(&dir)).map_err(|e| Text::io_at(&root.join(&dir), &e))?;
         for entry in entries.flatten() {
             let relative = dir.join(entry.file_name());
-            if excluded(&relative) {
+            let top = dir.as_os_str().is_empty();
+            if excluded(&relative) || (top && ignored.iter().any(|i| *i == entry.file_name())) {
                 continue;
             }
-            if entry.path().is_dir() {
-                stack.push(relative);
-            } else {
-                files.push(relative);
+            // A link is not followed: a link to `..` would copy the kit into itself for ever.
+            match entry.file_type() {
+                Ok(t) if t.is_dir() => stack.push(relative),
+                Ok(t) if t.is_file() => files.push(relative),
+                _ => {}
             }
         }
     }
-    Ok(files)
+    Ok(KitFiles { files, untracked: Vec::new() })
+}
+
+/// The names the kit's `.gitignore` leaves out at its top (`/target`, `/report/`): what a copy
+/// without `.git` leaves out too.
+fn top_level_ignored(root: &Path) -> Vec<std::ffi::OsString> {
+    let text = std::fs::read_to_string(root.join(".gitignore")).unwrap_or_default();
+    text.lines()
+        .filter_map(|l| l.trim().strip_prefix('/'))
+        .map(|l| l.trim_end_matches('/'))
+        .filter(|l| !l.is_empty() && !l.contains(['/', '*', '?', '[']))
+        .map(Into::into)
+        .collect()
+}
+
+/// The untracked files `kit_files` left out, said in one line (the first five by name), or
+/// nothing when there are none.
+#[must_use]
+pub fn untracked_note(untracked: &[PathBuf]) -> Option<Text> {
+    if untracked.is_empty() {
+        return None;
+    }
+    let list = |lang| {
+        let shown: Vec<String> = untracked
+            .iter()
+            .take(5)
+            .map(|p| cg_core::quote::shown(&p.display().to_string(), lang))
+            .collect();
+        shown.join(", ")
+    };
+    let more = untracked.len().saturating_sub(5);
+    let (more_ja, more_en) = if more > 0 {
+        (format!(" ほか {more} 個"), format!(" and {more} more"))
+    } else {
+        (String::new(), String::new())
+    };
+    Some(Text::new(
+        format!(
+            "git が追跡していないファイル {} 個は入れていません: {}{more_ja}。キットのファイルなら `git add` してから作り直してください",
+            untracked.len(),
+            list(cg_core::lang::Lang::Ja)
+        ),
+        format!(
+            "left out {} file(s) git does not track: {}{more_en}; if one is part of the kit, `git add` it and make this again",
+            untracked.len(),
+            list(cg_core::lang::Lang::En)
+        ),
+    ))
 }
 
 /// A solution file whose markers do not pair up, or that could not be read: the kit's own
@@ -113,7 +187,7 @@ pub fn write_handout_filtered(
         count += 1;
         Ok(())
     };
-    for relative in kit_files(root)? {
+    for relative in kit_files(root)?.files {
         if excluded(&relative) || relative.starts_with("exercises") || skip(&root.join(&relative)) {
             continue;
         }

@@ -150,7 +150,7 @@ impl Hasher {
 /// # Errors
 /// The kit's files could not be listed or read.
 pub fn kit_version(kit: &Path, skip: &dyn Fn(&Path) -> bool) -> Result<String, GradeError> {
-    let mut files = handout::kit_files(kit).map_err(GradeError::Io)?;
+    let mut files = handout::kit_files(kit).map_err(GradeError::Io)?.files;
     files.retain(|f| !handout::excluded(f) || f.starts_with("solutions"));
     files.retain(|f| !skip(&kit.join(f)));
     files.sort();
@@ -277,6 +277,9 @@ fn collect_from(
         h.add(options.config_text.as_bytes());
         h.add(&options.limits.wall.as_millis().to_le_bytes());
         h.add(&options.limits.memory_bytes.to_le_bytes());
+        // The results' words are in the run's language: another language grades again (a
+        // result kept from an English run was handed out under --lang ja).
+        h.add(options.lang.to_string().as_bytes());
         if let Some(m) = &mark {
             h.add(format!("{m:?}").as_bytes());
         }
@@ -687,8 +690,29 @@ pub fn grade_with(
 ) -> Result<Vec<Graded>, GradeError> {
     let progress = |g: &Graded| on(progress::Event::Graded(g));
     let io = |p: &Path, e: std::io::Error| GradeError::at(p, &e);
+    if std::fs::metadata(&options.out).is_ok_and(|m| !m.is_dir()) {
+        let shown = options.out.display();
+        return Err(GradeError::Io(Text::new(
+            format!("{shown} はフォルダではありません。結果を書くフォルダを指定してください"),
+            format!("{shown} is not a folder: give a folder for the results"),
+        )));
+    }
     std::fs::create_dir_all(&options.out).map_err(|e| io(&options.out, e))?;
     let out = options.out.canonicalize().map_err(|e| io(&options.out, e))?;
+    // The results (and the work copies under them) in the kit's own folder, or above it: the
+    // copies of the kit would leave out the whole kit as output, and grading's files would lie
+    // among the kit's.
+    if options.kit.canonicalize().is_ok_and(|kit| kit.starts_with(&out)) {
+        let shown = options.out.display();
+        return Err(GradeError::Io(Text::new(
+            format!(
+                "{shown} はキットのフォルダ（またはその上）です。結果には別のフォルダ（grades/ など）を指定してください"
+            ),
+            format!(
+                "{shown} is the kit's folder (or above it): give the results a folder of their own (grades/, say)"
+            ),
+        )));
+    }
     let subs = options.submissions.canonicalize().map_err(|e| io(&options.submissions, e))?;
     on(progress::Event::Reading);
     // Neither the results nor the submissions go into a handout or the kit's hash.

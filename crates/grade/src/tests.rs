@@ -115,6 +115,19 @@ fn the_roster_binds_entries_and_flags_the_rest() {
     ] {
         assert!(md.contains(needle), "{needle:?} missing from:\n{md}");
     }
+    // The results' words are in the run's language: another language is another result to
+    // keep (a result kept from an English run was handed out under --lang ja).
+    let mut japanese = collect_options(&root, None);
+    japanese.lang = Lang::Ja;
+    let mut english = collect_options(&root, None);
+    english.lang = Lang::En;
+    let hashes = |o: &Options| -> Vec<String> {
+        collect(o, "kit").unwrap().into_iter().map(|p| p.hash).collect()
+    };
+    let (ja, en) = (hashes(&japanese), hashes(&english));
+    assert_eq!(ja.len(), 3);
+    assert!(ja.iter().zip(&en).all(|(a, b)| a != b), "{ja:?} {en:?}");
+    assert_eq!(hashes(&japanese), ja, "stable");
     let _ = std::fs::remove_dir_all(&root);
 }
 
@@ -191,6 +204,18 @@ fn grading_that_cannot_start_says_why_in_both_languages() {
         assert!(en.contains("subs") && !en.contains("ありません"), "{en}");
         assert_eq!(e.to_string(), en);
     }
+    // Results in the kit's own folder, or in a file: refused before anything is read.
+    std::fs::create_dir_all(root.join("subs")).unwrap();
+    for out in [root.clone(), root.join("..").join(root.file_name().unwrap())] {
+        let options = Options { out, ..collect_options(&root, None) };
+        let e = grade_with(&options, cg_sandbox::launch, &never, None).map(|_| ()).unwrap_err();
+        assert!(e.message(Lang::En).contains("is the kit's folder (or above it)"), "{e}");
+        assert!(e.message(Lang::Ja).contains("キットのフォルダ"), "{e}");
+    }
+    std::fs::write(root.join("results.txt"), "").unwrap();
+    let options = Options { out: root.join("results.txt"), ..collect_options(&root, None) };
+    let e = grade_with(&options, cg_sandbox::launch, &never, None).map(|_| ()).unwrap_err();
+    assert!(e.message(Lang::En).ends_with("is not a folder: give a folder for the results"), "{e}");
     // A handout into a folder whose parent is a file.
     std::fs::write(root.join("a.txt"), "kit file").unwrap();
     std::fs::write(root.join("blocker"), "a file").unwrap();
@@ -240,6 +265,19 @@ fn names_from_a_submission_are_code_in_markdown() {
     assert!(md.contains("- `![](http://evil/t.png)` (`?`): `no`"), "{md}");
 }
 
+/// A result's facts about a submission `a.zip` of `student`, sandboxed, taking no time.
+fn meta(student: Option<&str>) -> result::Meta<'_> {
+    result::Meta {
+        student,
+        entry: "a.zip",
+        hash: "",
+        isolation: Isolation::Bubblewrap,
+        same_number: &[],
+        roster: None,
+        total: std::time::Duration::ZERO,
+    }
+}
+
 /// Why a submission was not graded is kept in both languages: the Japanese summary and
 /// Moodle's comment say it in Japanese (they gave the English), and a result written before
 /// the Japanese was kept still gives its English.
@@ -252,15 +290,7 @@ fn why_a_submission_was_not_graded_is_said_in_the_readers_language() {
         )),
         ..result::Facts::default()
     };
-    let meta = result::Meta {
-        student: None,
-        entry: "a.zip",
-        hash: "",
-        isolation: Isolation::Bubblewrap,
-        same_number: &[],
-        roster: None,
-        total: std::time::Duration::ZERO,
-    };
+    let meta = meta(None);
     let r = result::build(&meta, &facts, &Config::default(), Lang::Ja);
     assert_eq!(result::not_graded(&r["cg"], Lang::Ja), Some("exercises/student.toml がありません"));
     assert_eq!(result::not_graded(&r["cg"], Lang::En), Some("exercises/student.toml is missing"));
@@ -286,15 +316,7 @@ fn a_broken_call_is_explained_in_the_feedbacks_language() {
             .into(),
         ..result::Facts::default()
     };
-    let meta = result::Meta {
-        student: Some("20260001"),
-        entry: "a.zip",
-        hash: "",
-        isolation: Isolation::Bubblewrap,
-        same_number: &[],
-        roster: None,
-        total: std::time::Duration::ZERO,
-    };
+    let meta = meta(Some("20260001"));
     for (lang, said) in [
         (Lang::Ja, "関数の結果を受け取れませんでした: shade_pixel: light の 0 番目の呼び出し"),
         (Lang::En, "no result came back from the function: shade_pixel: light query 0 was"),

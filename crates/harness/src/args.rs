@@ -81,13 +81,19 @@ fn rerun_from(args: impl IntoIterator<Item = OsString>, features: &str) -> Strin
     command
 }
 
-/// `word` as a POSIX shell (and PowerShell) reads it back: as it is when it has only characters
-/// no shell treats specially, else in single quotes.
+/// `word` as a POSIX shell and PowerShell both read it back: as it is when it has only
+/// characters neither treats specially (not `,`, PowerShell's array, nor a leading `@`), else
+/// in single quotes; a word with a `'` in double quotes when it has nothing either shell expands
+/// there (`$`, `` ` ``, `"`, `\`, `!`), else (POSIX shells only) as `'it'\''s'`.
 #[must_use]
 pub fn shell_word(word: &str) -> String {
-    let plain = |c: char| c.is_ascii_alphanumeric() || "-_./:=,+@%".contains(c);
-    if !word.is_empty() && word.chars().all(plain) {
+    let plain = |c: char| c.is_ascii_alphanumeric() || "-_./:=+@%".contains(c);
+    if !word.is_empty() && word.chars().all(plain) && !word.starts_with('@') {
         word.to_owned()
+    } else if !word.contains('\'') {
+        format!("'{word}'")
+    } else if !word.contains(['$', '`', '"', '\\', '!']) {
+        format!("\"{word}\"")
     } else {
         format!("'{}'", word.replace('\'', "'\\''"))
     }
@@ -382,7 +388,11 @@ mod tests {
         assert_eq!(shell_word("assets/scenes/a-b_c.toml"), "assets/scenes/a-b_c.toml");
         assert_eq!(shell_word("--renderer=gpu"), "--renderer=gpu");
         assert_eq!(shell_word("my scene.toml"), "'my scene.toml'");
-        assert_eq!(shell_word("it's"), "'it'\\''s'");
+        assert_eq!(shell_word("it's"), "\"it's\"");
+        assert_eq!(shell_word("Tom's $HOME"), "'Tom'\\''s $HOME'");
+        assert_eq!(shell_word("a,b"), "'a,b'");
+        assert_eq!(shell_word("@x"), "'@x'");
+        assert_eq!(shell_word("x@y"), "x@y");
         assert_eq!(shell_word("$HOME"), "'$HOME'");
         assert_eq!(shell_word(""), "''");
         assert_eq!(shell_word("シーン.toml"), "'シーン.toml'");

@@ -90,8 +90,10 @@ cd "$ROOT/source" 2>/dev/null || cd "$ROOT"
 status=$?
 cat "$log"
 if [ ! -s "$RESULTS/results.json" ]; then
-  # cg could not even start: the end of its output, as a JSON string.
-  reason="$(tail -c 3000 "$log" | tr -d '\000-\011\013-\037' | sed -e 's/\\/\\\\/g' -e 's/"/\\"/g' | awk '{printf "%s\\n", $0}')"
+  # cg could not even start: the end of its output, as a JSON string. The cut may fall inside
+  # a character of Japanese output: its trailing bytes (0x80-0xBF) at the start are dropped,
+  # so that the JSON is UTF-8.
+  reason="$(tail -c 3000 "$log" | LC_ALL=C sed -e '1s/^[\x80-\xbf]*//' | tr -d '\000-\011\013-\037' | sed -e 's/\\/\\\\/g' -e 's/"/\\"/g' | awk '{printf "%s\\n", $0}')"
   printf '{"score": 0.0, "output": "grading failed (exit %s) / 採点できませんでした:\\n%s", "output_format": "text", "visibility": "visible", "stdout_visibility": "hidden", "tests": []}\n' \
     "$status" "$reason" >"$RESULTS/results.json"
 fi
@@ -113,8 +115,9 @@ pub fn run_autograder(lang: Lang) -> String {
 /// # Errors
 /// A kit file could not be read, or the zip written.
 pub fn write_zip(kit: &Path, out: &Path, lang: Lang) -> Result<usize, Text> {
+    refuse_out(out)?;
     let target = out.canonicalize().ok();
-    let mut files = kit_files(kit)?;
+    let mut files = kit_files(kit)?.files;
     // Outside a git checkout the kit's listing leaves solutions/ out, as a handout does.
     if !files.iter().any(|f| f.starts_with("solutions")) {
         files.extend(walk(kit, Path::new("solutions")));
@@ -148,6 +151,41 @@ pub fn write_zip(kit: &Path, out: &Path, lang: Lang) -> Result<usize, Text> {
     let bytes = z.finish().map_err(|e| err(&e))?.into_inner();
     crate::write_atomic(out, &bytes).map_err(|e| Text::io_at(out, &e))?;
     Ok(files.len())
+}
+
+/// Whether `out` may take the zip: not a folder (nor a name ending in `/`), and, when it is
+/// there, a zip (an old autograder) — never another file, which the zip would replace
+/// (`--out README.md` did).
+fn refuse_out(out: &Path) -> Result<(), Text> {
+    let shown = out.display();
+    let named_folder = out.as_os_str().to_string_lossy().ends_with(['/', '\\']);
+    if named_folder || out.is_dir() {
+        return Err(Text::new(
+            format!(
+                "{shown} はフォルダです。zip のファイル名（autograder.zip など）を指定してください"
+            ),
+            format!("{shown} is a folder: give the zip a file name (autograder.zip, say)"),
+        ));
+    }
+    let Ok(meta) = std::fs::metadata(out) else { return Ok(()) };
+    let mut head = [0u8; 4];
+    let is_zip = meta.is_file()
+        && std::fs::File::open(out)
+            .and_then(|mut f| std::io::Read::read_exact(&mut f, &mut head))
+            .is_ok()
+        && (head == *b"PK\x03\x04" || head == *b"PK\x05\x06");
+    if is_zip || !meta.is_file() {
+        // An old zip is replaced; a device (`/dev/null`) is written to.
+        return Ok(());
+    }
+    Err(Text::new(
+        format!(
+            "{shown} は zip ではないファイルで、上書きすると失われます。新しい名前を指定してください"
+        ),
+        format!(
+            "{shown} is a file that is not a zip, which the zip would replace: give a new name"
+        ),
+    ))
 }
 
 /// A kit file's mode in the zip: executable when it is (the kit's scripts), else 0644.

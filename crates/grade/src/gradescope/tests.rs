@@ -168,12 +168,28 @@ fn the_zip_holds_the_scripts_and_the_kit_with_solutions() {
         ("exercises/student.toml", "student = \"1\"\n"),
         ("target/release/cg", "binary"),
         ("scripts/test.sh", "#!/bin/sh\n"),
+        // What the kit's .gitignore names at its top stays out of a copy without git: a
+        // grading's results.
+        (".gitignore", "/target\n/results/\n"),
+        ("results/12345678.json", "{}"),
     ] {
         std::fs::create_dir_all(kit.join(f).parent().unwrap()).unwrap();
         std::fs::write(kit.join(f), text).unwrap();
     }
+    // A link back up is not followed (it copied the kit into itself until the names ran out).
+    std::os::unix::fs::symlink("..", kit.join("scripts/loop")).unwrap();
+    // An old autograder (an empty zip) is replaced; a file that is no zip, or a folder, is not.
     let out = kit.join("autograder.zip");
-    std::fs::write(&out, "old").unwrap();
+    std::fs::write(&out, b"PK\x05\x06\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0").unwrap();
+    for (not_zip, said) in [
+        (kit.join("scripts/test.sh"), "is a file that is not a zip"),
+        (kit.join("scripts"), "is a folder"),
+        (root.join("new/"), "is a folder"),
+    ] {
+        let e = package::write_zip(&kit, &not_zip, Lang::En).unwrap_err();
+        assert!(e.en.contains(said), "{}: {}", not_zip.display(), e.en);
+    }
+    assert_eq!(std::fs::read_to_string(kit.join("scripts/test.sh")).unwrap(), "#!/bin/sh\n");
     package::write_zip(&kit, &out, Lang::En).unwrap();
     let mut z = zip::ZipArchive::new(std::fs::File::open(&out).unwrap()).unwrap();
     let mut names: Vec<String> = z.file_names().map(|n| n.unwrap().into_owned()).collect();
@@ -181,6 +197,7 @@ fn the_zip_holds_the_scripts_and_the_kit_with_solutions() {
     assert_eq!(
         names,
         [
+            ".gitignore",
             "Cargo.toml",
             "exercises/src/a1.rs",
             "run_autograder",
@@ -265,6 +282,19 @@ fn run_autograder_writes_a_result_even_when_cg_cannot_start() {
     assert_eq!(r["score"], json!(0.0));
     let output = r["output"].as_str().unwrap();
     assert!(output.contains("exit 3") && output.contains("no \"kit\" here \\ 100%"), "{output}");
+    // Japanese output cut by its last 3000 bytes inside a character, at each of the three
+    // places a character of three bytes can be cut: still UTF-8, so still JSON.
+    for extra in 0..3 {
+        let line = "採点できません: 行\n";
+        let script = format!(
+            "#!/bin/sh\ni=0\nwhile [ $i -lt 300 ]; do printf '{line}'; i=$((i+1)); done\nprintf '{}'\nexit 101\n",
+            "x".repeat(extra)
+        );
+        std::fs::write(&cg, script).unwrap();
+        let r = run_autograder(&root, &cg);
+        let output = r["output"].as_str().unwrap();
+        assert!(output.contains("exit 101") && output.contains("採点できません: 行"), "{output}");
+    }
     // Not even a program.
     let r = run_autograder(&root, &root.join("missing"));
     assert_eq!(r["score"], json!(0.0));
