@@ -80,7 +80,9 @@ impl Reader {
                     // `<!-- cg s.spot -->`, `<!-- CG: … -->`: a tag mistyped, not a comment of
                     // the student's; its table or matrix would go unchecked without a word.
                     let cg = body.get(..2).is_some_and(|s| s.eq_ignore_ascii_case("cg"));
-                    let next = body[2.min(body.len())..].chars().next();
+                    // `get`: the comment may start with kana (`<!-- メモ -->`), whose byte 2
+                    // is inside a character.
+                    let next = body.get(2..).and_then(|s| s.chars().next());
                     if cg && next.is_some_and(|c| c.is_whitespace() || c == ':') {
                         let end = line[p..].find("-->").map_or(line.len(), |k| p + k + 3);
                         self.problem(n, &line[p..end], expected_tag(), RowKind::Matrix);

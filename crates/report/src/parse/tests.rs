@@ -615,4 +615,10 @@ fn mistyped_tags_are_named_with_what_they_should_be() {
         problems[2].expected.en.contains("s.light.p")
             && problems[2].expected.ja.contains("表のタグ")
     );
+    // The student's own comments in Japanese (and an emoji) are comments: no problem, and no
+    // panic (byte 2 of `メモ` is inside its first character; this ended `report check` with
+    // exit 101).
+    let text = "<!-- メモ -->\n<!--コメント-->\n<!-- aあ -->\n<!-- 🎨 -->\n<!--x-->\n<!-- c -->\n<!---->\n| V0 | 1.0 | 0.0 | 0.0 |\n";
+    let (_, problems) = parse_report(text);
+    assert!(problems.is_empty(), "{problems:#?}");
 }
