@@ -21,7 +21,7 @@ fn exercises_dir() -> PathBuf {
 }
 
 /// The student: `--student` when given, else `exercises/student.toml`.
-fn student(
+pub(crate) fn student(
     given: Option<&str>,
     table: Option<TableVersion>,
     lang: Lang,
@@ -78,8 +78,15 @@ pub struct Selection {
     only: Option<String>,
 }
 
+impl Selection {
+    /// The ID as given: `a1`, `a3.t1`, `a1.t2.winding`.
+    pub(crate) fn id(&self) -> String {
+        self.only.clone().unwrap_or_else(|| self.which.id().to_owned())
+    }
+}
+
 /// `a1`, `a3.t1` or `a1.t2.winding`: the assignment from the first part of the ID.
-fn selection(s: &str) -> Result<Selection, String> {
+pub(crate) fn selection(s: &str) -> Result<Selection, String> {
     let assignment = s.split('.').next().unwrap_or_default();
     let ids: Vec<&str> = Which::ALL.iter().map(|w| w.id()).collect();
     let which = Which::from_id(assignment)
@@ -130,16 +137,17 @@ pub fn check(args: &CheckArgs, lang: Lang) -> Result<Ending, String> {
         for r in &mut reports {
             let tasks = r.keep_only(only);
             if r.checks.is_empty() {
-                return Err(format!(
-                    "{}: {} {}",
-                    only,
-                    t(
-                        "という名前のタスクもチェックもありません。この課題のタスク:",
-                        "names no task or check; the tasks of this assignment are"
-                    )
-                    .get(lang),
-                    tasks.join(", ")
-                ));
+                let tasks = tasks.join(", ");
+                return Err(Text::new(
+                    format!(
+                        "{only} という名前のタスクもチェックもありません。この課題のタスク: {tasks}"
+                    ),
+                    format!(
+                        "there is no task or check {only}; the tasks of this assignment are {tasks}"
+                    ),
+                )
+                .get(lang)
+                .to_owned());
             }
         }
     }

@@ -22,8 +22,8 @@ use serde_json::Value;
 #[derive(clap::Args)]
 pub struct Args {
     /// An assignment (a1 … s) or a task (a3.t1) to check; default: all / 課題かタスク（省略するとすべて）
-    #[arg(value_name = "ID")]
-    which: Option<String>,
+    #[arg(value_name = "ID", value_parser = crate::assignments::selection)]
+    which: Option<crate::assignments::Selection>,
     /// The student number (default: exercises/student.toml) / 学生番号
     #[arg(long, value_name = "NUMBER", allow_hyphen_values = true)]
     student: Option<String>,
@@ -53,7 +53,14 @@ struct Check {
 }
 
 /// `cg watch`.
+///
+/// # Errors
+/// The folder to watch is missing, the student number (`--student` or exercises/student.toml)
+/// does not read, or the checks cannot be started at all (no cargo): each said before the first
+/// build, or as soon as it is known, rather than a board that waits for a save that cannot help.
 pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
+    // As `cg check` would refuse them, before a build.
+    crate::assignments::student(args.student.as_deref(), None, lang)?;
     let dir = args.dir.clone().unwrap_or_else(|| cg_harness::kit_path(None, "exercises"));
     if !dir.is_dir() {
         return Err(format!(
@@ -67,12 +74,11 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let terminal = Terminal::start();
     keys(tx, terminal.raw);
     let mut focus: Option<String> = None;
-    let mut checks = check(args, lang, &terminal);
+    let mut checks = check(args, lang, &terminal)?;
     loop {
         board(&checks, focus.as_deref(), lang, &terminal);
         match wait(&rx) {
-            Event::Changed => checks = check(args, lang, &terminal),
-            Event::Key(Some('r')) => checks = check(args, lang, &terminal),
+            Event::Changed | Event::Key(Some('r')) => checks = check(args, lang, &terminal)?,
             Event::Key(Some('n')) => focus = next_task(&checks, focus.as_deref()),
             Event::Key(Some('h')) => hint(&checks, focus.as_deref(), lang, &terminal),
             Event::Key(Some('q') | None) => break,
@@ -169,25 +175,29 @@ fn keys(tx: Sender<Event>, raw: bool) {
     });
 }
 
-/// The checks, from a new process built from the code as it is now. A build that fails prints
-/// the compiler's first error and gives no checks.
-fn check(args: &Args, lang: Lang, terminal: &Terminal) -> Vec<Check> {
+/// The checks, from a new process built from the code as it is now, in this run's language. A
+/// build that fails prints the compiler's first error and gives no checks.
+///
+/// # Errors
+/// The process cannot be started (no cargo): no save can mend that.
+fn check(args: &Args, lang: Lang, terminal: &Terminal) -> Result<Vec<Check>, String> {
     terminal.say(t("ビルドしてチェックしています…", "Building and checking…").get(lang));
-    let mut command = checker();
-    command.arg("check").arg("--json");
-    command.args(args.which.iter());
+    let mut checker = checker();
+    let program = checker.get_program().to_string_lossy().into_owned();
+    let command = checker.args(["check", "--json", "--lang", t("ja", "en").get(lang)]);
+    command.args(args.which.iter().map(crate::assignments::Selection::id));
     if let Some(s) = &args.student {
         command.args(["--student", s]);
     }
     let output = match command.output() {
         Ok(o) => o,
         Err(e) => {
-            terminal.say(&format!(
-                "{}: {}",
-                t("チェックを起動できません", "cannot start the checks").get(lang),
-                cg_core::lang::Text::io(&e).get(lang)
-            ));
-            return Vec::new();
+            return Err(Text::new(
+                format!("チェックを起動できません（{program}: {}）", Text::io(&e).ja),
+                format!("cannot start the checks ({program}: {})", Text::io(&e).en),
+            )
+            .get(lang)
+            .to_owned());
         }
     };
     let reports: Value = match serde_json::from_slice(&output.stdout) {
@@ -206,7 +216,7 @@ fn check(args: &Args, lang: Lang, terminal: &Terminal) -> Vec<Check> {
                 .get(lang),
                 text.join("\n")
             ));
-            return Vec::new();
+            return Ok(Vec::new());
         }
     };
     let mut checks = Vec::new();
@@ -220,7 +230,7 @@ fn check(args: &Args, lang: Lang, terminal: &Terminal) -> Vec<Check> {
             });
         }
     }
-    checks
+    Ok(checks)
 }
 
 /// The command that checks: `cargo run --release -q -- ` in the kit's root (with the features
@@ -347,7 +357,7 @@ fn board(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal)
         }
         Some(task) => {
             text.push_str(&format!("── {task} ──\n"));
-            let mut said = None;
+            let mut said = std::collections::BTreeSet::new();
             for c in checks.iter().filter(|c| c.task == task) {
                 let title = c.json["title"][t("ja", "en").get(lang)].as_str().unwrap_or_default();
                 text.push_str(&format!("  {} {:<24} {title}\n", mark(&c.status), c.id));
@@ -358,21 +368,23 @@ fn board(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal)
                         text.push_str(&format!("      {}: {v}\n", t(ja, en).get(lang)));
                     }
                 }
-                // A stub's message once, not under each of its checks.
-                if let Some(m) = c.json["message"].as_str()
-                    && said != Some(m)
+                // Why it gave no value (a stub not written yet, a panic, a timeout), in the
+                // board's language as `cg check` says it, once, not under each of its checks.
+                let why = serde_json::from_value::<cg_harness::check::CheckResult>(c.json.clone())
+                    .ok()
+                    .and_then(|r| r.outcome.describe());
+                if let Some(why) = why.as_ref().map(|w| w.get(lang))
+                    && said.insert(why.to_owned())
                 {
-                    text.push_str(&format!("      {m}\n"));
-                    said = Some(m);
+                    text.push_str(&format!("      {why}\n"));
                 }
                 // A file that does not compile: its first error, once.
                 if let Some(first) = compile_errors(c).first()
-                    && said != Some(*first)
+                    && said.insert((*first).to_owned())
                 {
                     for l in first.lines() {
                         text.push_str(&format!("      | {l}\n"));
                     }
-                    said = Some(*first);
                 }
             }
         }

@@ -130,3 +130,44 @@ fn a_failed_build_is_shown_and_watching_goes_on() {
     w.key("q");
     w.finish();
 }
+
+/// The board speaks the run's language: the checks run with `--lang`, and a stub's words are
+/// said as `cg check` says them (`まだです: …`), not the stub's English message.
+#[test]
+fn the_board_is_in_the_runs_language() {
+    let dir = scratch("cg-watch", "japanese");
+    std::fs::write(dir.join("a1.rs"), "// the student's file\n").unwrap();
+    let mut w = Watch::start(&dir, env!("CARGO_BIN_EXE_cg"), "ja");
+    w.until("[h] ヒント", 1);
+    assert!(w.seen.contains("まだです: "), "{}", w.seen);
+    assert!(!w.seen.contains("list the vertices"), "{}", w.seen);
+    w.key("q");
+    w.finish();
+}
+
+/// What no save can mend is said at once with exit 2, as `cg check` says it: an ID that is no
+/// assignment, a student number that does not read, checks that cannot start at all (no
+/// cargo). The board used to wait for a save ("fix it and save"), and end 0.
+#[test]
+fn what_no_save_can_mend_ends_the_watch_with_exit_2() {
+    let dir = scratch("cg-watch", "refused");
+    for (args, checker, said) in [
+        (vec!["watch", "a9"], env!("CARGO_BIN_EXE_cg"), "a1"),
+        (vec!["watch", "a1", "--student", "1"], env!("CARGO_BIN_EXE_cg"), "8"),
+        (vec!["watch", "a1", "--student", "12345678"], "/no/such/cargo", "cannot start the checks"),
+    ] {
+        let o = Command::new(env!("CARGO_BIN_EXE_cg"))
+            .args(&args)
+            .args(["--lang", "en", "--dir"])
+            .arg(&dir)
+            .current_dir(root())
+            .env("CG_WATCH_CHECKER", checker)
+            .stdin(Stdio::null())
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(said), "{args:?}: {err}");
+        assert!(!String::from_utf8_lossy(&o.stdout).contains("fix it and save"), "{args:?}");
+    }
+}

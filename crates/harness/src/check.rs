@@ -25,14 +25,14 @@ use std::sync::{Mutex, Once};
 use std::time::{Duration, Instant};
 
 use cg_core::lang::Lang;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::text::{Text, t};
 use cg_worker::CallError;
 
 /// Why a check failed, in the words a student needs — every part in Japanese and English
 /// (numbers and names convert from a plain string, the same in both languages).
-#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Failure {
     /// What the check expected (numbers, a list, a property).
     pub expected: Text,
@@ -77,7 +77,7 @@ impl Failure {
 }
 
 /// How a check ended.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(tag = "status", rename_all = "snake_case")]
 pub enum Outcome {
     /// It passed.
@@ -257,7 +257,7 @@ fn seconds(ms: u64) -> String {
 }
 
 /// One check's result.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct CheckResult {
     /// The check's ID, `<task>.<name>`: `a1.t2.closed`.
     pub id: String,
