@@ -205,13 +205,13 @@ pub struct ViewArgs {
     #[arg(long)]
     png: bool,
     /// Window: close after this many frames / ウィンドウ: このフレーム数で閉じる
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", conflicts_with_all = PNG_ONLY)]
     frames: Option<u64>,
     /// Window: save the last frame (and the s key's) here / ウィンドウ: 最後のフレーム（と s キー）の保存先
-    #[arg(long, value_name = "PNG")]
+    #[arg(long, value_name = "PNG", conflicts_with_all = PNG_ONLY)]
     screenshot: Option<PathBuf>,
     /// Window: start with the animation paused / ウィンドウ: アニメーションを止めて始める
-    #[arg(long)]
+    #[arg(long, conflicts_with_all = PNG_ONLY)]
     paused: bool,
     /// PNG: N frames over one period of the animation in one picture (a3), 2–16 / PNG: アニメーションの 1 周期を N 枚並べた図（a3、2〜16）
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(2..=16))]
@@ -226,6 +226,10 @@ pub struct ViewArgs {
     #[arg(long, value_name = "D", value_parser = degrees(0.1, 1000.0))]
     distance: Option<f32>,
 }
+
+/// The options that draw PNG files whatever the display: the window's options cannot go with
+/// them (`--png --screenshot x.png` wrote no screenshot, with exit 0).
+const PNG_ONLY: [&str; 5] = ["png", "strip", "yaw", "pitch", "distance"];
 
 /// A value parser for a number in `[min, max]` (an angle or a distance on the command line).
 fn degrees(min: f32, max: f32) -> impl Fn(&str) -> Result<f32, String> + Clone {
@@ -256,6 +260,19 @@ impl ViewArgs {
     /// strip).
     fn png_only(&self) -> bool {
         self.png || self.camera_moved() || self.strip.is_some()
+    }
+
+    /// The window's options given (`--frames`, `--screenshot`, `--paused`), by name: without a
+    /// window they would do nothing.
+    fn window_options(&self) -> Vec<&'static str> {
+        [
+            ("--frames", self.frames.is_some()),
+            ("--screenshot", self.screenshot.is_some()),
+            ("--paused", self.paused),
+        ]
+        .into_iter()
+        .filter_map(|(name, given)| given.then_some(name))
+        .collect()
     }
 
     /// The scene's orbit camera moved as `--yaw`, `--pitch` and `--distance` say (an option not
@@ -367,6 +384,26 @@ pub fn view(args: &ViewArgs, lang: Lang) -> Result<(), String> {
     cg_worker::proxy::with_worker(worker, local::CALL_LIMIT, || view_in_worker(args, lang)).0
 }
 
+/// Without a window, the window's options would be passed over (no screenshot written, with
+/// exit 0): an error that names them instead, before any PNG file is drawn.
+fn no_window_for(args: &ViewArgs, lang: Lang) -> Result<(), String> {
+    let options = args.window_options();
+    if options.is_empty() {
+        return Ok(());
+    }
+    let options = options.join(", ");
+    Err(cg_core::lang::Text::new(
+        format!(
+            "{options} はウィンドウのためのオプションですが、ウィンドウを開けません（画面がありません）。外すと PNG に描画します"
+        ),
+        format!(
+            "{options}: for the window, and no window can open (no display); leave them out to draw PNG files"
+        ),
+    )
+    .get(lang)
+    .to_owned())
+}
+
 fn view_in_worker(args: &ViewArgs, lang: Lang) -> Result<(), String> {
     let record = student(args.student.as_deref(), None, lang)?;
     let a = Variants::for_student(&record.student, record.table);
@@ -385,8 +422,13 @@ fn view_in_worker(args: &ViewArgs, lang: Lang) -> Result<(), String> {
         // A window that cannot open (a display named but dead): the same PNG files as --png.
         match view_window(args, &a, &sides, lang)? {
             None => return Ok(()),
-            Some(reason) => eprintln!("{}", cg_viewer::no_window(&reason, lang)),
+            Some(reason) => {
+                eprintln!("{}", cg_viewer::no_window(&reason, lang));
+                no_window_for(args, lang)?;
+            }
         }
+    } else if !args.png_only() {
+        no_window_for(args, lang)?;
     }
     println!(
         "{}",

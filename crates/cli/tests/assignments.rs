@@ -149,6 +149,37 @@ fn a_dead_display_falls_back_to_the_views_own_png_files() {
     assert!(stdout.contains("yours: not done yet"), "{stdout}");
 }
 
+/// The window's options where no window opens are an error that names them, before any PNG
+/// file: `--screenshot` wrote nothing with exit 0, with a dead display or none, and with
+/// `--png` (now the parser's error).
+#[test]
+fn the_windows_options_without_a_window_are_an_error() {
+    let out = scratch("view-window-options");
+    let shot = out.join("shot.png");
+    let base = ["view", "a1", "--student", "12345678", "--lang", "en", "-o"];
+    for (display, extra) in [
+        (Some(":99"), vec!["--screenshot", shot.to_str().unwrap()]),
+        (None, vec!["--frames", "3", "--paused"]),
+        (None, vec!["--png", "--screenshot", shot.to_str().unwrap()]),
+    ] {
+        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_cg"));
+        command.args(base).arg(out.join("png")).args(&extra).current_dir(root());
+        command.env_remove("WAYLAND_DISPLAY").env_remove("CG_NO_WINDOW").env_remove("DISPLAY");
+        if let Some(d) = display {
+            command.env("DISPLAY", d);
+        }
+        let o = command.output().unwrap();
+        let stderr = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{extra:?}: {stderr}");
+        let named = extra
+            .iter()
+            .filter(|a| a.starts_with("--") && **a != "--png")
+            .all(|a| stderr.contains(a));
+        assert!(named, "{extra:?}: {stderr}");
+        assert!(!out.join("png").exists() && !shot.exists(), "{extra:?}: nothing drawn");
+    }
+}
+
 #[test]
 fn one_task_or_one_check_is_checked_alone() {
     let ids = |args: &[&str]| -> Vec<String> {
