@@ -164,11 +164,13 @@ fn cargo_build(
         eprintln!("{}", building.get(lang));
     };
     let ran = run_captured(&mut command, None, &say).map_err(|e| {
-        t(
-            &format!(
-                "cargo を起動できません（{e}）。Rust が入っているか、`cargo --version` で確かめてください"
+        let why = cg_core::lang::Text::io(&e);
+        cg_core::lang::Text::new(
+            format!(
+                "cargo を起動できません（{}）。Rust が入っているか、`cargo --version` で確かめてください",
+                why.ja
             ),
-            &format!("cannot start cargo ({e}); is Rust installed? Try `cargo --version`"),
+            format!("cannot start cargo ({}); is Rust installed? Try `cargo --version`", why.en),
         )
         .get(lang)
         .to_owned()

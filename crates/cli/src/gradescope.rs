@@ -8,6 +8,7 @@ use std::time::{Duration, Instant};
 
 use cg_core::lang::{Lang, t};
 use cg_grade::{Options, gradescope};
+use cg_harness::exit::Ending;
 
 /// Options of `cg grade-one`.
 #[derive(clap::Args)]
@@ -43,7 +44,7 @@ pub struct AutograderArgs {
 }
 
 /// `cg grade-one`: on any failure still writes `results.json` (score 0, the reason).
-pub fn grade_one(args: &GradeOneArgs, lang: Lang) -> Result<(), String> {
+pub fn grade_one(args: &GradeOneArgs, lang: Lang) -> Result<Ending, String> {
     let started = Instant::now();
     let result = grade_one_inner(args, lang);
     if let Err(why) = &result {
@@ -59,7 +60,7 @@ pub fn grade_one(args: &GradeOneArgs, lang: Lang) -> Result<(), String> {
     result
 }
 
-fn grade_one_inner(args: &GradeOneArgs, lang: Lang) -> Result<(), String> {
+fn grade_one_inner(args: &GradeOneArgs, lang: Lang) -> Result<Ending, String> {
     let setup = crate::grade::Setup::new(args.config.as_deref(), args.unsafe_no_sandbox, lang)?;
     let options = Options {
         kit: setup.kit,
@@ -92,7 +93,14 @@ fn grade_one_inner(args: &GradeOneArgs, lang: Lang) -> Result<(), String> {
         one.results["score"],
         t("Gradescope の形式", "Gradescope's format").get(lang)
     );
-    Ok(())
+    // Not graded at all (no student.toml, not a zip, …): its results.json says why with score
+    // 0; the exit status says it too, so that a batch system's job tells "nothing could be
+    // graded" from "graded 0".
+    if let Some(why) = cg_grade::result::not_graded(&one.results["extra_data"]["cg"], lang) {
+        eprintln!("{}: {why}", t("採点できませんでした", "not graded").get(lang));
+        return Ok(Ending::BadInput);
+    }
+    Ok(Ending::Ok)
 }
 
 /// `cg autograder`.

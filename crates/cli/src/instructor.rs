@@ -40,7 +40,7 @@ pub fn run(command: &Command, lang: Lang) -> Result<Ending, String> {
     match command {
         Command::Handout(args) => ok(crate::handout::run(args, lang)),
         Command::Grade(args) => ok(crate::grade::run(args, lang)),
-        Command::GradeOne(args) => ok(crate::gradescope::grade_one(args, lang)),
+        Command::GradeOne(args) => crate::gradescope::grade_one(args, lang),
         Command::Autograder(args) => ok(crate::gradescope::autograder(args, lang)),
         Command::Similarity(args) => crate::similarity::run(args, lang),
     }

@@ -57,6 +57,17 @@ fn a_bad_or_missing_number_says_what_to_do() {
     let o = cg(&dir, &["assignment", "--student", "1234567x", "--lang", "en"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.code() == Some(2) && err.contains("8 digits") && err.contains("'x'"), "{err}");
+    // No cargo to build the student's functions with: said in Japanese, the system's reason
+    // too (it was "No such file or directory (os error 2)").
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_cg"))
+        .args(["check", "a1", "--student", "12345678", "--lang", "ja"])
+        .current_dir(root())
+        .env("CARGO", dir.join("no-such-cargo"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("cargo を起動できません（") && !err.contains("os error"), "{err}");
 }
 
 #[test]

@@ -86,3 +86,34 @@ fn limits_a_clock_or_a_byte_count_cannot_hold_are_refused() {
         assert!(err.contains("までの数にしてください"), "{args:?}: {err}");
     }
 }
+
+/// A submission that cannot be graded at all (an empty folder: no exercises/) gets its
+/// results.json with score 0 and why, and exit 2, so that a batch system's job tells "nothing
+/// could be graded" from "graded 0" (it ended 0).
+#[test]
+fn grade_one_of_a_submission_it_cannot_grade_ends_with_exit_2() {
+    let dir = scratch("instructor-paths", "grade-one");
+    std::fs::create_dir_all(dir.join("empty")).unwrap();
+    let out = dir.join("results");
+    let o = common::cg(
+        &root(),
+        &[
+            "grade-one",
+            dir.join("empty").to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--work",
+            dir.join("work").to_str().unwrap(),
+            "--unsafe-no-sandbox",
+            "--lang",
+            "en",
+        ],
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("not graded: "), "{err}");
+    let r: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    assert_eq!(r["score"].as_f64(), Some(0.0), "{r}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
