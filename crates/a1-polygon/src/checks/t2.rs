@@ -254,15 +254,16 @@ pub(super) fn manifold(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         k.sort_unstable();
         k
     };
-    let mut twice = None;
-    'outer: for j in 0..mesh.faces.len() {
-        for i in 0..j {
-            if key(&mesh.faces[i]) == key(&mesh.faces[j]) {
-                twice = Some((i, j));
-                break 'outer;
-            }
+    // The first face whose three vertices an earlier face has, with that face: by a map of the
+    // faces seen (comparing every pair took minutes on a list gone wrong).
+    let mut seen = std::collections::HashMap::new();
+    let twice = mesh.faces.iter().enumerate().find_map(|(j, f)| match seen.entry(key(f)) {
+        std::collections::hash_map::Entry::Occupied(first) => Some((*first.get(), j)),
+        std::collections::hash_map::Entry::Vacant(slot) => {
+            slot.insert(j);
+            None
         }
-    }
+    });
     let extra = twice.map(|(i, j)| {
         t(
             &format!("F{i} と F{j} は同じ 3 頂点の面です（同じ面を 2 回定義）。"),

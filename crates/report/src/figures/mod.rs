@@ -41,6 +41,14 @@ const COVER_EPS: f32 = 0.05;
 /// seen edge-on is not visible.
 const FACING_EPS: f32 = 1e-4;
 
+/// The most vertices a figure draws. The course's models have tens; a figure of more could not
+/// be read, and its labels and edges are laid out by comparing pairs (100 000 vertex rows in a
+/// `--data` file took `report fill` tens of minutes). A larger model's figure says so instead.
+pub const MAX_DRAWN_VERTICES: usize = 2_000;
+
+/// The most faces a figure draws (see [`MAX_DRAWN_VERTICES`]).
+pub const MAX_DRAWN_FACES: usize = 4_000;
+
 /// Which view of the model.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum View {
@@ -116,6 +124,9 @@ pub struct Figure {
     /// The model axes as the screen shows them: a unit direction in figure units and the axis
     /// name (`x`, `y`, `z`); axes seen end-on are left out.
     pub axes: Vec<(Vec2, String)>,
+    /// Why nothing is drawn, shown in the drawing's place: a model over [`MAX_DRAWN_VERTICES`]
+    /// or [`MAX_DRAWN_FACES`].
+    pub note: Option<Text>,
 }
 
 /// How one view projects: a point to the screen (y up, any scale) or `None` behind the eye,
@@ -194,6 +205,26 @@ fn in_triangle(p: Vec2, t: [Vec2; 3]) -> bool {
 /// are not finite and faces naming vertices that do not exist are left out; never panics.
 #[must_use]
 pub fn layout(p: &PolygonData, view: View) -> Figure {
+    let (vertices, faces) = (p.vertices.len(), p.faces.len());
+    if vertices > MAX_DRAWN_VERTICES || faces > MAX_DRAWN_FACES {
+        return Figure {
+            view,
+            width: SIZE,
+            height: SIZE,
+            edges: Vec::new(),
+            vertices: Vec::new(),
+            faces: Vec::new(),
+            axes: Vec::new(),
+            note: Some(Text::new(
+                format!(
+                    "頂点 {vertices} 個・面 {faces} 枚: 図にするには多すぎます（頂点 {MAX_DRAWN_VERTICES} 個・面 {MAX_DRAWN_FACES} 枚まで）"
+                ),
+                format!(
+                    "{vertices} vertices, {faces} faces: too many to draw (at most {MAX_DRAWN_VERTICES} vertices and {MAX_DRAWN_FACES} faces)"
+                ),
+            )),
+        };
+    }
     let finite: Vec<Vec3> = p.vertices.iter().copied().filter(|v| v.is_finite()).collect();
     let proj = Projector::new(view, &finite);
     let screen: Vec<Option<Vec2>> =
@@ -340,7 +371,16 @@ pub fn layout(p: &PolygonData, view: View) -> Figure {
         })
         .collect();
 
-    Figure { view, width: SIZE, height: SIZE, edges, vertices, faces: face_labels, axes }
+    Figure {
+        view,
+        width: SIZE,
+        height: SIZE,
+        edges,
+        vertices,
+        faces: face_labels,
+        axes,
+        note: None,
+    }
 }
 
 /// `1.50`: a coordinate with two decimals (never `-0.00`).
@@ -442,6 +482,15 @@ pub fn svg(fig: &Figure, lang: Lang) -> String {
         );
     }
     let _ = writeln!(s, "</g>");
+    if let Some(note) = &fig.note {
+        let _ = writeln!(
+            s,
+            r#"<text class="note" x="{}" y="{}" text-anchor="middle">{}</text>"#,
+            num(fig.width / 2.0),
+            num(fig.height / 2.0),
+            xml_escape(note.get(lang))
+        );
+    }
     let _ = writeln!(s, r#"<g class="points">"#);
     for l in &fig.vertices {
         let style = if l.hidden {
@@ -570,6 +619,16 @@ pub fn tikz(fig: &Figure, lang: Lang) -> String {
         num(fig.width),
         num(fig.height + CAPTION)
     );
+    if let Some(note) = &fig.note {
+        let _ = writeln!(
+            s,
+            "\\node[text width={}mm, align=center] at ({},{}) {{{}}};",
+            num(fig.width * TIKZ_UNIT_MM * 0.9),
+            num(fig.width / 2.0),
+            num(fig.height / 2.0),
+            latex_escape(note.get(lang))
+        );
+    }
     for (a, b, hidden) in &fig.edges {
         let style = if *hidden { "gray, dashed" } else { "black, thick" };
         let _ = writeln!(

@@ -362,3 +362,32 @@ fn tikz_and_tables_compile_with_lualatex() {
     assert!(dir.join("figures.pdf").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A model too large to draw (100 000 vertex rows in a `--data` file, a `vertices()` gone
+/// wrong): the figure says so in its place, at once; its labels and edges, laid out by
+/// comparing pairs, took `report fill` tens of minutes.
+#[test]
+fn a_model_too_large_to_draw_says_so_in_the_figure() {
+    let small = pyramid();
+    let v: Vec<Vec3> = (0..100_000).map(|i| Vec3::new(i as f32, (i % 7) as f32, 0.0)).collect();
+    let big = crate::derive::polygon_from_data(
+        Text::new("多すぎる", "too many"),
+        v,
+        small.faces.clone(),
+        None,
+    );
+    for view in [View::Front, View::Perspective] {
+        let fig = layout(&big, view);
+        assert!(fig.vertices.is_empty() && fig.edges.is_empty(), "{view:?}");
+        let svg = svg(&fig, Lang::En);
+        let note = texts(&svg, "note");
+        assert_eq!(note.len(), 1, "{svg}");
+        assert!(note[0].0.starts_with("100000 vertices, 6 faces: too many to draw"), "{note:?}");
+        let tikz = tikz(&fig, Lang::Ja);
+        assert!(tikz.contains("図にするには多すぎます"), "{tikz}");
+        assert_balanced(&tikz);
+    }
+    // The course's model is drawn, with no note.
+    let fig = layout(&small, View::Front);
+    assert!(fig.note.is_none() && !fig.vertices.is_empty());
+}
