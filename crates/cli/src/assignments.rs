@@ -437,6 +437,17 @@ fn view_in_worker(args: &ViewArgs, lang: Lang) -> Result<(), String> {
             "Drawing to PNG files (a window opens when there is a display (WAYLAND_DISPLAY or DISPLAY) and no --png):",
         ).get(lang)
     );
+    if std::fs::metadata(&args.output).is_ok_and(|m| !m.is_dir()) {
+        let shown = args.output.display();
+        return Err(cg_core::lang::Text::new(
+            format!(
+                "-o {shown} はフォルダではなくファイルです。PNG を書くフォルダを指定してください"
+            ),
+            format!("-o {shown} is a file, not a folder: give a folder for the PNG files"),
+        )
+        .get(lang)
+        .to_owned());
+    }
     let name = if args.warmup { format!("{}-warmup", args.which) } else { args.which.to_string() };
     let times = strip_times(args, &a, lang)?;
     let mut drawn = Vec::new();

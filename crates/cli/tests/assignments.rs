@@ -189,6 +189,12 @@ fn the_windows_options_without_a_window_are_an_error() {
         assert!(named, "{extra:?}: {stderr}");
         assert!(!out.join("png").exists() && !shot.exists(), "{extra:?}: nothing drawn");
     }
+    // -o naming a file: said as such (it was the system's "already exists").
+    std::fs::write(out.join("a-file"), "").unwrap();
+    let o = cg(&root(), &[&base[..], &[out.join("a-file").to_str().unwrap(), "--png"]].concat());
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("a-file is a file, not a folder"), "{stderr}");
 }
 
 #[test]

@@ -147,6 +147,13 @@ fn read_folder(dir: &Path) -> Result<Files, Text> {
         let path = base.join(&relative);
         let Ok(meta) = std::fs::symlink_metadata(&path) else { continue };
         if !meta.is_file() {
+            // student.toml that is a folder or a pipe: said as what it is, not "missing".
+            if module.is_none() {
+                return Err(Text::new(
+                    format!("{relative} は普通のファイルではありません（フォルダ・パイプなど）"),
+                    format!("{relative} is not a plain file (a folder, a pipe, …)"),
+                ));
+            }
             continue;
         }
         if meta.len() > MAX_FILE_BYTES {
@@ -421,7 +428,17 @@ mod tests {
         std::fs::write(sub.join("exercises/src/a1.rs"), "// mine").unwrap();
         let files = read(&sub).unwrap();
         assert_eq!(files.modules["a1"], b"// mine");
-        for d in ["target", "src-link", "exercises-link", "file-link", "plain"] {
+        // student.toml that is a folder: said as such (it was "exercises/student.toml is
+        // missing"); a module that is a folder is a module not written.
+        let sub = folder("toml-folder");
+        std::fs::create_dir_all(sub.join("exercises/student.toml")).unwrap();
+        std::fs::create_dir_all(sub.join("exercises/src/a2.rs")).unwrap();
+        let e = read(&sub).unwrap_err();
+        assert!(e.en.contains("exercises/student.toml is not a plain file"), "{e:?}");
+        assert!(e.ja.contains("普通のファイルではありません"), "{e:?}");
+        std::fs::remove_dir(sub.join("exercises/student.toml")).unwrap();
+        assert!(!read(&sub).unwrap().modules.contains_key("a2"));
+        for d in ["target", "src-link", "exercises-link", "file-link", "plain", "toml-folder"] {
             let _ = std::fs::remove_dir_all(folder_path(d));
         }
     }
