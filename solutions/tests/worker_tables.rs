@@ -663,14 +663,14 @@ fn shade_pixel_in_two_phases_is_the_direct_call_with_the_same_light() {
         assert!(queries.iter().all(|q| q.len() == asked), "{mode:?}");
         let answers: Vec<Vec<Rgb>> =
             queries.iter().map(|q| q.iter().map(|&(p, n)| lambert(p, n)).collect()).collect();
-        let piped: Result<Vec<Rgb>, String> =
+        let piped: Result<Vec<Rgb>, cg_worker::Reason> =
             pipe(&table, "s.shade_pixels", &(mode, &pixels, &queries, &answers));
         let direct: Vec<Rgb> =
             pixels.iter().map(|p| (imp.shade_pixel)(mode, p, &lambert)).collect();
         same(&format!("{mode:?}"), &Ok(direct.clone()), &piped);
         // One pixel at a time: the same.
         for (i, pixel) in pixels.iter().enumerate().take(20) {
-            let one: Result<Rgb, String> =
+            let one: Result<Rgb, cg_worker::Reason> =
                 pipe(&table, "s.shade_pixel", &(mode, pixel, &queries[i], &answers[i]));
             same(&format!("{mode:?} pixel {i}"), &Ok(direct[i]), &one);
         }
@@ -707,7 +707,7 @@ fn a_function_that_asks_the_light_otherwise_the_second_time_is_told_not_answered
         queries.iter().map(|q| q.iter().map(|&(p, n)| dark(p, n)).collect()).collect()
     };
     for (shade, wrong) in [
-        (asks_again as ShadePixel, Some("asked 2 times or more, 1 times")),
+        (asks_again as ShadePixel, Some("asked 2 times or more, 1 times the first time")),
         (asks_elsewhere, Some("light query 1 was light(")),
         (asks_less, None),
     ] {
@@ -716,12 +716,16 @@ fn a_function_that_asks_the_light_otherwise_the_second_time_is_told_not_answered
         let queries: Vec<Queries> =
             pipe(&table, "s.shade_pixels_queries", &(Shading::Phong, &pixels));
         let answers = answer(&queries);
-        let piped: Result<Vec<Rgb>, String> =
+        let piped: Result<Vec<Rgb>, cg_worker::Reason> =
             pipe(&table, "s.shade_pixels", &(Shading::Phong, &pixels, &queries, &answers));
         match wrong {
             Some(why) => {
                 let err = piped.expect_err("a different question is no answer");
-                assert!(err.starts_with("pixel 0: ") && err.contains(why), "{err}");
+                assert!(err.en.starts_with("pixel 0: ") && err.en.contains(why), "{err:?}");
+                assert!(
+                    err.ja.starts_with("画素 0: ") && err.ja.contains("同じ画素で 2 回"),
+                    "{err:?}"
+                );
             }
             // Fewer questions: each one asked was answered for what it asked.
             None => {
@@ -733,7 +737,7 @@ fn a_function_that_asks_the_light_otherwise_the_second_time_is_told_not_answered
     }
     // Answers that do not fit the pixels are refused, not guessed.
     let table = tables::s(cg_solutions::s::implementation());
-    let short: Result<Vec<Rgb>, String> = pipe(
+    let short: Result<Vec<Rgb>, cg_worker::Reason> = pipe(
         &table,
         "s.shade_pixels",
         &(Shading::Flat, &pixels, Vec::<Queries>::new(), Vec::<Vec<Rgb>>::new()),
