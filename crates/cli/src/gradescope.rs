@@ -97,7 +97,12 @@ fn grade_one_inner(args: &GradeOneArgs, lang: Lang) -> Result<Ending, String> {
     // 0; the exit status says it too, so that a batch system's job tells "nothing could be
     // graded" from "graded 0".
     if let Some(why) = cg_grade::result::not_graded(&one.results["extra_data"]["cg"], lang) {
-        eprintln!("{}: {why}", t("採点できませんでした", "not graded").get(lang));
+        // The reason may quote a name from the submission: no escape of its reaches the terminal.
+        eprintln!(
+            "{}: {}",
+            t("採点できませんでした", "not graded").get(lang),
+            cg_core::quote::visible(why)
+        );
         return Ok(Ending::BadInput);
     }
     Ok(Ending::Ok)

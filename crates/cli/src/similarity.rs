@@ -109,11 +109,13 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
     }
     for s in class.iter().filter(|s| s.refused.is_some()) {
         let why = s.refused.as_ref().map(|w| w.get(lang).to_owned()).unwrap_or_default();
-        eprintln!("{}: {why}", visible(&s.name));
+        // The reason and the notes quote names from inside the submission (a zip entry's): no
+        // escape of theirs reaches the terminal.
+        eprintln!("{}: {}", visible(&s.name), visible(&why));
     }
     for s in &class {
         for note in &s.notes {
-            eprintln!("{}: {}", visible(&s.name), note.get(lang));
+            eprintln!("{}: {}", visible(&s.name), visible(note.get(lang)));
         }
     }
     // Nothing of this year's to compare (an empty folder, a wrong one, every entry refused) is

@@ -205,14 +205,19 @@ pub fn slot_content(kit: &Path) -> std::io::Result<String> {
 
 pub use cg_core::fs::write_atomic;
 
-/// A name safe as a file name: letters, digits, `-`, `_` and `.` (not leading), others `_`.
+/// The most characters of an entry's name a result's file name keeps (a name of 237 bytes
+/// made the temporary file's name too long for the file system, and the run failed).
+const MAX_NAME_CHARS: usize = 80;
+
+/// A name safe as a file name: letters (kana and kanji too), digits, `-`, `_` and `.` (not
+/// leading), others `_`, at most [`MAX_NAME_CHARS`] characters.
 #[must_use]
 pub fn file_name(raw: &str) -> String {
     let s: String = raw
         .chars()
-        .map(|c| if c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.') { c } else { '_' })
+        .map(|c| if c.is_alphanumeric() || matches!(c, '-' | '_' | '.') { c } else { '_' })
         .collect();
-    let s = s.trim_start_matches('.').to_owned();
+    let s: String = s.trim_start_matches('.').chars().take(MAX_NAME_CHARS).collect();
     if s.is_empty() { "_".to_owned() } else { s }
 }
 
@@ -315,6 +320,20 @@ fn collect_from(
         if claims.len() > 1 {
             p.same_number = claims.iter().filter(|e| **e != p.entry).cloned().collect();
             p.name = format!("{}~{}", p.name, file_name(&p.entry));
+        }
+    }
+    // Two entries whose names are alike once made file names (`山田.zip` and `佐藤.zip` outside
+    // the letters kept, names cut at the same length, a number claimed with a name made alike on
+    // purpose) would write one result over the other: each such name gets its entry's hash.
+    let mut names: BTreeMap<String, usize> = BTreeMap::new();
+    for p in &pending {
+        *names.entry(p.name.to_lowercase()).or_default() += 1;
+    }
+    for p in &mut pending {
+        if names[&p.name.to_lowercase()] > 1 {
+            let mut h = Hasher::default();
+            h.add(p.entry.as_bytes());
+            p.name = format!("{}~{}", p.name, &h.hex()[..8]);
         }
     }
     Ok(pending)

@@ -31,18 +31,69 @@ pub struct Refused {
 const MACROS: [&str; 7] =
     ["include", "include_str", "include_bytes", "env", "option_env", "global_asm", "asm"];
 
-/// Attributes that reach outside the file.
-const ATTRIBUTES: [&str; 4] = ["path", "link", "link_name", "proc_macro"];
+/// Attributes that reach outside the file, wherever they stand in an attribute (also inside
+/// `#[cfg_attr(all(), path = …)]`, which applies them all the same).
+const ATTRIBUTES: [&str; 6] =
+    ["path", "link", "link_name", "proc_macro", "proc_macro_derive", "proc_macro_attribute"];
 
-/// Every refused use in `text`, the file `file` (empty when the file is not Rust the lexer
-/// reads: the compiler then reports it as the student's compile error).
+/// Every refused use in `text`, the file `file`. A first line `#!…` that is not an attribute
+/// is left out, as the compiler leaves it out. A file the lexer does not read (which the
+/// compiler may still read: a line `#!/x )` made the lexer fail, and everything after it went
+/// unscreened) is screened word by word instead ([`by_words`]).
 #[must_use]
 pub fn screen(file: &str, text: &str) -> Vec<Refused> {
-    let Ok(tokens) = text.parse::<TokenStream>() else { return Vec::new() };
+    let text = without_shebang(text);
     let mut found = Vec::new();
-    walk(file, tokens, &mut found);
+    match text.parse::<TokenStream>() {
+        Ok(tokens) => walk(file, tokens, &mut found),
+        Err(_) => by_words(file, text, &mut found),
+    }
     found.sort_by_key(|r| r.line);
     found
+}
+
+/// `text` without its first line when that line is a shebang (`#!` not followed by `[`, as the
+/// compiler reads it), the line kept empty so that lines keep their numbers.
+fn without_shebang(text: &str) -> &str {
+    let Some(rest) = text.strip_prefix("#!") else { return text };
+    if rest.trim_start().starts_with('[') {
+        return text;
+    }
+    text.find('\n').map_or("", |end| &text[end..])
+}
+
+/// The screen of a file the lexer does not read: each line's words, comments and strings
+/// included (stricter than the tokens: the file reads as no Rust the screen knows, so nothing in
+/// it is taken for harmless).
+fn by_words(file: &str, text: &str, found: &mut Vec<Refused>) {
+    let is_word = |c: char| c.is_alphanumeric() || c == '_';
+    for (n, line) in text.lines().enumerate() {
+        let attribute = line.contains("#[") || line.contains("#![");
+        let mut refuse = |what: String| {
+            found.push(Refused { file: file.to_owned(), line: n + 1, what });
+        };
+        let mut start = None;
+        // Word boundaries at characters' own boundaries (the line may hold Japanese).
+        for (i, c) in line.char_indices().chain(std::iter::once((line.len(), ' '))) {
+            match (start, is_word(c)) {
+                (None, true) => start = Some(i),
+                (Some(s), false) => {
+                    let (word, after) = (&line[s..i], line[i..].trim_start());
+                    if MACROS.contains(&word) && after.starts_with('!') {
+                        refuse(format!("{word}!"));
+                    }
+                    if word == "extern" && after.starts_with("crate") {
+                        refuse("extern crate".to_owned());
+                    }
+                    if attribute && ATTRIBUTES.contains(&word) {
+                        refuse(format!("#[{word}]"));
+                    }
+                    start = None;
+                }
+                _ => {}
+            }
+        }
+    }
 }
 
 /// Every group of `tokens`, each read as a flat list. Iterative, with a list of the groups
@@ -86,16 +137,33 @@ fn flat(file: &str, tokens: TokenStream, found: &mut Vec<Refused>, groups: &mut 
                     _ => None,
                 };
                 if let Some(g) = group.filter(|g| g.delimiter() == Delimiter::Bracket)
-                    && let Some(TokenTree::Ident(first)) = g.stream().into_iter().next()
-                    && ATTRIBUTES.contains(&first.to_string().as_str())
+                    && let Some(name) = attribute_reaching_out(g.stream())
                 {
-                    refuse(found, tt, format!("#[{first}]"));
+                    refuse(found, tt, format!("#[{name}]"));
                 }
             }
             TokenTree::Group(g) => groups.push(g.stream()),
             _ => {}
         }
     }
+}
+
+/// The first name of [`ATTRIBUTES`] anywhere in an attribute's tokens, its groups included
+/// (`cfg_attr(all(), path = …)`, `cfg_attr(x, cfg_attr(y, link(…)))`).
+fn attribute_reaching_out(tokens: TokenStream) -> Option<String> {
+    let mut groups = vec![tokens];
+    while let Some(tokens) = groups.pop() {
+        for tt in tokens {
+            match tt {
+                TokenTree::Ident(i) if ATTRIBUTES.contains(&i.to_string().as_str()) => {
+                    return Some(i.to_string());
+                }
+                TokenTree::Group(g) => groups.push(g.stream()),
+                _ => {}
+            }
+        }
+    }
+    None
 }
 
 /// The message for `refused` (at least one): each use with its file and line, and why.
@@ -152,6 +220,18 @@ mod tests {
             ("#[doc = include_str!(\"/etc/passwd\")]\nfn f() {}", (1, "include_str!")),
             ("#[link(name = \"c\")]\nunsafe extern \"C\" {}", (1, "#[link]")),
             ("fn f() { unsafe { core::arch::asm!(\"nop\") } }", (1, "asm!")),
+            // An attribute applied through cfg_attr is applied all the same.
+            ("#[cfg_attr(all(), path = \"/kit/solutions/src/a1.rs\")]\nmod r;", (1, "#[path]")),
+            ("#[cfg_attr(all(), cfg_attr(all(), link(name = \"c\")))]", (1, "#[link]")),
+            // A first line the compiler leaves out (a shebang) that the lexer cannot read: what
+            // follows is screened all the same.
+            ("#!/x )\nconst P: &str = include_str!(\"/etc/passwd\");", (2, "include_str!")),
+            // A file the lexer does not read, screened word by word.
+            (
+                "fn f( {\n// 頂点\nconst P: &str = include_str !(\"/etc/passwd\");",
+                (3, "include_str!"),
+            ),
+            ("fn f( {\n#[cfg_attr(all(), path = \"x\")] mod r;", (2, "#[path]")),
         ];
         for (text, (line, what)) in attacks {
             assert_eq!(whats(text), [(line, what.to_owned())], "{text}");
@@ -174,8 +254,10 @@ pub fn vertices(spec: &Spec) -> Vec<cg_student::glam::Vec3> {
 pub fn extern_name() -> &'static str { "extern crate" }
 "#;
         assert_eq!(whats(fine), []);
-        // Not Rust the lexer reads: left to the compiler.
-        assert_eq!(whats("fn f( {"), []);
+        // Not Rust the lexer reads, with nothing that reaches out: left to the compiler.
+        assert_eq!(whats("fn f( {\n// 頂点の path と環境\nlet x = 1;"), []);
+        // An inner attribute on the first line is no shebang, and harmless ones pass.
+        assert_eq!(whats("#![allow(dead_code)]\n#[cfg_attr(test, derive(Debug))]\nstruct S;"), []);
     }
 
     #[test]

@@ -166,6 +166,43 @@ fn entries_that_claim_one_number_are_all_flagged_and_none_takes_the_file() {
 fn entry_names_become_file_names() {
     assert_eq!(file_name("../a b.zip"), "_a_b.zip");
     assert_eq!(file_name(""), "_");
+    assert_eq!(file_name("山田 太郎.zip"), "山田_太郎.zip");
+    assert_eq!(file_name(&"x".repeat(300)).len(), 80);
+}
+
+/// Entries whose names are alike once made file names each get a result of their own: two
+/// refused entries with names of the same length in letters the file name does not keep, and
+/// one that claims a student's number with a name made alike on purpose. One result used to be
+/// written over the other.
+#[test]
+fn entries_alike_as_file_names_get_results_of_their_own() {
+    let root = std::env::temp_dir().join(format!("cg-grade-alike-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&root);
+    let subs = root.join("subs");
+    for (entry, toml) in [
+        ("a★b", None),
+        ("a☆b", None),
+        ("c", Some("student = \"12345678\"\n")),
+        ("x★", Some("student = \"12345678\"\n")),
+        ("x☆", Some("student = \"12345678\"\n")),
+    ] {
+        let ex = subs.join(entry).join("exercises");
+        std::fs::create_dir_all(ex.join("src")).unwrap();
+        if let Some(toml) = toml {
+            std::fs::write(ex.join("student.toml"), toml).unwrap();
+        }
+    }
+    let pending = collect(&collect_options(&root, None), "kit").unwrap();
+    let names: std::collections::BTreeSet<String> =
+        pending.iter().map(|p| p.name.to_lowercase()).collect();
+    assert_eq!(names.len(), 5, "{:?}", pending.iter().map(|p| &p.name).collect::<Vec<_>>());
+    // A name that is not alike keeps its plain form.
+    assert!(
+        pending.iter().any(|p| p.name == "12345678~c"),
+        "{:?}",
+        pending.iter().map(|p| &p.name).collect::<Vec<_>>()
+    );
+    let _ = std::fs::remove_dir_all(&root);
 }
 
 #[test]

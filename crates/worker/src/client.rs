@@ -6,7 +6,7 @@ use std::ffi::OsString;
 use std::io::{BufReader, Read, Write};
 use std::path::PathBuf;
 use std::process::{Child, ChildStdin, Command, Stdio};
-use std::sync::mpsc::{Receiver, RecvTimeoutError, channel};
+use std::sync::mpsc::{Receiver, RecvTimeoutError, sync_channel};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
@@ -199,7 +199,9 @@ impl Worker {
                     }
                 }
             });
-            let (send, replies) = channel();
+            // At most one reply waits: a worker that writes frames without being asked (a
+            // thread of the student's) blocks on its pipe, instead of filling this process.
+            let (send, replies) = sync_channel(1);
             std::thread::spawn(move || {
                 let mut out = BufReader::new(stdout);
                 loop {
@@ -287,7 +289,15 @@ impl Worker {
             Err(RecvTimeoutError::Disconnected) => return Err(self.crashed()),
         };
         match decode::<Reply>(&payload) {
-            Ok(reply) => read_reply(function, reply),
+            Ok(reply) => {
+                let read = read_reply(function, reply);
+                // A reply that is not the call's (another type, no such function): the worker
+                // is not in step with this side; the next call starts a fresh one.
+                if matches!(read, Err(CallError::Broken(_))) {
+                    self.stop();
+                }
+                read
+            }
             Err(e) => {
                 self.stop();
                 Err(CallError::Broken(Reason::with_detail(
@@ -313,6 +323,15 @@ impl Worker {
                 "the worker is not running",
             ));
         };
+        // Its output closed; it may still run (a worker that closed stdout and sleeps, where
+        // nothing else stops it): a moment to end, then it is stopped.
+        let until = std::time::Instant::now() + Duration::from_millis(500);
+        while matches!(r.child.try_wait(), Ok(None)) && std::time::Instant::now() < until {
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        if matches!(r.child.try_wait(), Ok(None)) {
+            let _ = r.child.kill();
+        }
         let status = r.child.wait().map_or_else(|e| e.to_string(), |s| s.to_string());
         // The reader thread ends with the pipe; give it a moment to take the last bytes.
         let until = std::time::Instant::now() + Duration::from_millis(200);

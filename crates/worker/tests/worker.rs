@@ -177,3 +177,28 @@ fn a_huge_panic_message_is_cut() {
         other => panic!("{:?}", other.map(|_| ())),
     }
 }
+
+/// A worker whose thread writes replies without end, unasked: the caller holds at most one
+/// waiting reply (the worker blocks on its pipe), and a reply not the call's stops the worker.
+/// The caller's memory grew by the pipe's speed, gigabytes in a second, until the system ended
+/// the whole grading.
+#[cfg(target_os = "linux")]
+#[test]
+fn replies_written_unasked_do_not_fill_the_callers_memory() {
+    let rss_mb = || -> u64 {
+        let status = std::fs::read_to_string("/proc/self/status").unwrap();
+        let line = status.lines().find(|l| l.starts_with("VmRSS:")).unwrap();
+        line.split_whitespace().nth(1).unwrap().parse::<u64>().unwrap() / 1024
+    };
+    let before = rss_mb();
+    let mut w = worker();
+    let _ = w.call::<_, i64>("flood", &(), BUDGET);
+    std::thread::sleep(Duration::from_millis(800));
+    let grown = rss_mb().saturating_sub(before);
+    // Two or three frames of 4 MiB at most, read and decoded; the unbounded queue held hundreds.
+    assert!(grown < 200, "the caller grew by {grown} MiB");
+    // The next reply read is one written unasked, not the call's: no value, and the worker is
+    // stopped; a fresh one answers the call after.
+    assert!(matches!(w.call::<_, i64>("add", &(2, 3), BUDGET), Err(CallError::Broken(_))));
+    assert_eq!(w.call::<_, i64>("add", &(2, 3), BUDGET), Ok(5));
+}

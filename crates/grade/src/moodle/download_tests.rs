@@ -296,3 +296,28 @@ fn the_roster_binds_participants_and_a_mismatch_is_flagged() {
     assert!(pending.iter().any(|p| p.name == "20260099"));
     let _ = std::fs::remove_dir_all(&root);
 }
+
+/// One exercises/ path twice in a participant's upload (`exercises/src/a1.rs` and
+/// `exercises\src\a1.rs`, one path once a zip's `\` is read as `/`): refused, as a submission
+/// read from a folder or a zip is; one copy was taken silently.
+#[test]
+fn one_path_twice_in_an_upload_is_refused() {
+    let dir = fake::scratch("twice");
+    let items: Vec<(String, Vec<u8>)> = [
+        ("Ann_1_assignsubmission_file/exercises/src/a1.rs", b"fn mine() {}".to_vec()),
+        ("Ann_1_assignsubmission_file/exercises\\src\\a1.rs", b"fn other() {}".to_vec()),
+    ]
+    .into_iter()
+    .map(|(name, bytes)| (name.to_owned(), bytes))
+    .chain(std::iter::once((
+        "Ann_1_assignsubmission_file/exercises/student.toml".to_owned(),
+        b"student = \"12345678\"\n".to_vec(),
+    )))
+    .collect();
+    std::fs::write(dir.join("d.zip"), fake::zip_of(&items)).unwrap();
+    let list = entries(&dir.join("d.zip")).unwrap();
+    let why = list[0].read().unwrap_err();
+    assert!(why.en.contains("exercises/src/a1.rs is there more than once"), "{}", why.en);
+    assert!(why.ja.contains("2 つ以上あります"), "{}", why.ja);
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -575,8 +575,20 @@ fn resolve(files: Vec<(String, Vec<u8>)>) -> Result<Files, Text> {
     let mut chosen: Vec<(&str, Option<&'static str>, &[u8])> = Vec::new();
     if let Some(base) = base {
         for (w, module) in &wanted {
-            if let Some((rel, bytes)) = files.iter().find(|(rel, _)| *rel == format!("{base}{w}")) {
-                chosen.push((rel, *module, bytes));
+            let path = format!("{base}{w}");
+            let same: Vec<&(String, Vec<u8>)> =
+                files.iter().filter(|(rel, _)| *rel == path).collect();
+            match same.as_slice() {
+                [] => {}
+                [(rel, bytes)] => chosen.push((rel, *module, bytes)),
+                // One path twice (a zip that holds it twice): which one is meant is not for the
+                // grader to guess, as for a submission read from a folder or a zip.
+                _ => {
+                    return Err(text(
+                        format!("{} が 2 つ以上あります", shown(&path, Lang::Ja)),
+                        format!("{} is there more than once", shown(&path, Lang::En)),
+                    ));
+                }
             }
         }
     } else {

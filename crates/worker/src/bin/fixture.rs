@@ -72,6 +72,22 @@ fn main() -> std::io::Result<()> {
                 v
             }),
         ),
+        (
+            // A thread that writes well-formed replies of 4 MiB without end, unasked (to fill
+            // the caller's memory), then the call's own value.
+            "flood",
+            handler(|(): ()| -> i64 {
+                std::thread::spawn(|| {
+                    let value =
+                        cg_worker::to_value(&vec![7u8; 4 << 20]).unwrap_or(cg_worker::Value::Null);
+                    let bytes =
+                        cg_worker::encode(&cg_worker::Reply::Value(value)).unwrap_or_default();
+                    while cg_worker::frame::write(&mut std::io::stdout().lock(), &bytes).is_ok() {}
+                });
+                std::thread::sleep(std::time::Duration::from_millis(50));
+                1
+            }),
+        ),
     ];
     serve(&handlers)
 }
