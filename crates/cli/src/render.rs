@@ -116,7 +116,7 @@ struct Rendered {
 pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let path = crate::kit_path(args.scene.as_deref(), crate::COURSE_SAMPLE);
     let scene = cg_scene::load_encoded(&path, args.encoding).map_err(|e| e.describe(lang))?;
-    let size = size(&scene, args.width, args.height);
+    let size = size(&scene, args.width, args.height).map_err(|e| e.get(lang).to_owned())?;
     if args.renderer == Renderer::Raster
         && (args.max_depth != 5 || args.fresnel != FresnelArg::Exact || args.no_shadows)
     {
@@ -320,18 +320,43 @@ fn file_stem(path: &Path) -> String {
 }
 
 /// The image size: the scene's, or the given width and/or height (one alone keeps the aspect).
-fn size(scene: &Scene, width: Option<u32>, height: Option<u32>) -> Option<(u32, u32)> {
-    let keep = |given: u32, this: u32, other: u32| {
-        // Rounded, at least 1 pixel; `this` ≥ 1 because the scene loader checks sizes.
-        ((u64::from(given) * u64::from(other) + u64::from(this) / 2) / u64::from(this.max(1)))
-            .clamp(1, u64::from(cg_core::image::MAX_SIDE)) as u32
+///
+/// # Errors
+/// The side that keeps the aspect rounds to 0 or exceeds [`cg_core::image::MAX_SIDE`] (a scene
+/// of an extreme aspect): it was clamped, which changed the field of view without a word.
+fn size(
+    scene: &Scene,
+    width: Option<u32>,
+    height: Option<u32>,
+) -> Result<Option<(u32, u32)>, Text> {
+    let max = u64::from(cg_core::image::MAX_SIDE);
+    let keep = |given: u32, this: u32, other: u32, (option, ja, en): (&str, &str, &str)| {
+        // Rounded; `this` ≥ 1 because the scene loader checks sizes.
+        let kept =
+            (u64::from(given) * u64::from(other) + u64::from(this) / 2) / u64::from(this.max(1));
+        if (1..=max).contains(&kept) {
+            return Ok(kept as u32);
+        }
+        let (w, h) = (scene.width, scene.height);
+        Err(Text::new(
+            format!(
+                "{option} {given} でシーンの縦横比（{w}×{h}）を保つと{ja}が {kept} になり、1〜{max} に収まりません。両方（--width と --height）を指定してください"
+            ),
+            format!(
+                "{option} {given} with the scene's aspect ({w}×{h}) makes the {en} {kept}, outside 1 to {max}: give both --width and --height"
+            ),
+        ))
     };
-    match (width, height) {
+    Ok(match (width, height) {
         (None, None) => None,
         (Some(w), Some(h)) => Some((w, h)),
-        (Some(w), None) => Some((w, keep(w, scene.width, scene.height))),
-        (None, Some(h)) => Some((keep(h, scene.height, scene.width), h)),
-    }
+        (Some(w), None) => {
+            Some((w, keep(w, scene.width, scene.height, ("--width", "高さ", "height"))?))
+        }
+        (None, Some(h)) => {
+            Some((keep(h, scene.height, scene.width, ("--height", "幅", "width"))?, h))
+        }
+    })
 }
 
 fn draw(

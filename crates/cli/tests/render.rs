@@ -130,6 +130,14 @@ fn a_width_alone_keeps_the_scenes_aspect() {
     // The course scene is 640 × 640, so 64 wide is 64 high.
     let (_, w, h) = png(&out);
     assert_eq!((w, h), (64, 64));
+    // A scene 1 wide and 4096 high: 8 wide keeps its aspect at 32 768 high, past the largest
+    // side. Said, with exit 2 (the height was clamped to 16 384, the picture squeezed).
+    let scene = dir.join("tall.toml");
+    std::fs::write(&scene, "format = 1\n[window]\nwidth = 1\nheight = 4096\n").unwrap();
+    let o = cg_in(&dir, &["render", scene.to_str().unwrap(), "--width", "8", "--lang", "en"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("makes the height 32768, outside 1 to 16384"), "{err}");
 }
 
 #[test]

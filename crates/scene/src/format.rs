@@ -279,6 +279,13 @@ impl SceneSpec {
                             at.error(src, ErrorKind::WeldRemovesEveryFace { tolerance, faces })
                         );
                     }
+                    // A seam's two vertices made one: the texture or the given normals would be
+                    // wrong there, drawn without a word.
+                    let textured = spec.texture.is_some();
+                    let given = spec.normals == NormalSource::Given;
+                    if let Some(kind) = seam_merged(&mesh, &welded.remap, textured, given) {
+                        return Err(at.error(src, kind));
+                    }
                     let record = WeldRecord {
                         tolerance,
                         merged_vertices: before - welded.mesh.vertex_count(),
@@ -598,7 +605,9 @@ fn read_light(t: &Table<'_>) -> Result<Light, SceneError> {
             let cutoff_deg = t.require("cutoff_deg")?.f32(Rule::SpotCutoff)?;
             let inner_deg = t.optional("inner_deg", |v| {
                 let inner = v.f32(Rule::NonNegative)?;
-                if inner <= cutoff_deg {
+                if cutoff_deg > 90.0 {
+                    Err(v.bad(Rule::InnerNeedsCone))
+                } else if inner <= cutoff_deg {
                     Ok(inner)
                 } else {
                     Err(v.bad(Rule::NotAbove { key: "cutoff_deg", value: f64::from(cutoff_deg) }))
@@ -880,3 +889,31 @@ fn read_texture(v: &Value<'_>, base: &Path) -> Result<TextureSpec, SceneError> {
 
 #[cfg(test)]
 mod tests;
+
+/// The first two vertices `remap` makes one whose texture coordinates (when `textured`) or
+/// normals (when `given`) differ, as the error that says so.
+fn seam_merged(
+    mesh: &cg_core::mesh::Mesh,
+    remap: &[u32],
+    textured: bool,
+    given: bool,
+) -> Option<ErrorKind> {
+    // The first old vertex of each new one: the one whose attributes the welded mesh keeps.
+    let mut first: Vec<Option<usize>> = vec![None; remap.len()];
+    for (old, &new) in remap.iter().enumerate() {
+        let kept = *first[new as usize].get_or_insert(old);
+        if kept == old {
+            continue;
+        }
+        let differs =
+            |a: Option<&[cg_core::glam::Vec2]>| a.is_some_and(|a| a.get(old) != a.get(kept));
+        if textured && differs(mesh.uvs.as_deref()) {
+            return Some(ErrorKind::WeldMergesSeam { uvs: true, kept, merged: old });
+        }
+        let normals_differ = mesh.normals.as_deref().is_some_and(|n| n.get(old) != n.get(kept));
+        if given && normals_differ {
+            return Some(ErrorKind::WeldMergesSeam { uvs: false, kept, merged: old });
+        }
+    }
+    None
+}

@@ -267,6 +267,14 @@ shape = { kind = "uv_sphere", radius = -1, slices = 16, stacks = 8 }
             Rule::NotAbove { key: "cutoff_deg", value: 30.0 },
         ),
         (
+            // No cone to be inside of: inner_deg was passed over without a word.
+            "format = 1\n[render]\nlight_model = \"lecture\"\n[[lights]]\nkind = \"spot\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0]\ncutoff_deg = 180\ninner_deg = 20\n",
+            9,
+            "20",
+            "lights[0].inner_deg",
+            Rule::InnerNeedsCone,
+        ),
+        (
             "format = 1\n[[lights]]\nkind = \"point\"\nposition = [0, 1, 0]\nattenuation = [0, 0, 0]\n",
             5,
             "[0, 0, 0]",

@@ -413,6 +413,48 @@ fn weld_merges_split_vertices_and_the_scene_records_it() {
     }
 }
 
+/// A weld that makes a texture seam's two vertices one (their `vt` differ) on a textured object,
+/// or a hard edge's (their `vn` differ) with `normals = "given"`: an error at `weld`; it kept the
+/// first vertex's coordinates and squeezed the texture into the seam's column, with exit 0.
+/// Without the texture (or with the kit's own normals) the seam is welded as before.
+#[test]
+fn a_weld_that_would_join_a_seam_is_an_error() {
+    let dir = folder("weld-seam");
+    std::fs::copy(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/textures/orientation.png"),
+        dir.join("t.png"),
+    )
+    .unwrap();
+    // Two triangles side by side whose shared edge is a seam: V1 and V2 at the same place as
+    // V3 and V5, with other texture coordinates and normals.
+    let obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 1 0 0\nv 2 0 0\nv 1 1 0\n\
+               vt 0 0\nvt 1 0\nvt 1 1\nvt 0 0\nvt 1 0\nvt 0 1\n\
+               vn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 1 0\nvn 0 0 1\nvn 0 0 1\n\
+               f 1/1/1 2/2/2 3/3/3\nf 4/4/4 5/5/5 6/6/6\n";
+    std::fs::write(dir.join("m.obj"), obj).unwrap();
+    let scene_with = |extra: &str| {
+        let path = dir.join("scene.toml");
+        let text = format!(
+            "format = 1\n[[objects]]\nname = \"m\"\nmesh = \"m.obj\"\nweld = true\n{extra}\n"
+        );
+        std::fs::write(&path, text).unwrap();
+        cg_scene::load(&path)
+    };
+    for (extra, said) in [
+        ("texture = { image = \"t.png\" }", "texture coordinates differ"),
+        ("normals = \"given\"", "normals (normals = \"given\") differ"),
+    ] {
+        let e = scene_with(extra).unwrap_err();
+        assert_eq!(e.key.as_deref(), Some("objects[0].weld"), "{extra}: {e}");
+        assert_eq!(e.position.map(|p| p.line), Some(5), "{extra}: {e}");
+        assert!(e.to_string().contains(said) && e.to_string().contains("V3 into V1"), "{e}");
+        assert!(e.describe(cg_core::lang::Lang::Ja).contains("1 つの頂点では保てません"));
+    }
+    // Neither: welded, as a seam is for smooth shading.
+    let s = scene_with("").unwrap();
+    assert_eq!(s.objects[0].weld.map(|w| w.merged_vertices), Some(2));
+}
+
 #[test]
 fn a_weld_that_removes_faces_of_a_built_in_shape_leaves_no_exact_surface() {
     let scene = |weld: &str| {

@@ -59,8 +59,18 @@ impl Mesh {
         if tolerance > 0.0 {
             let tol = f64::from(tolerance);
             // A little larger than the tolerance, so that rounding in p / cell cannot put two
-            // positions within tolerance more than one cell apart.
-            let cell = tol * (1.0 + 1e-9);
+            // positions within tolerance more than one cell apart; and at least the positions'
+            // largest magnitude over 2⁵⁰, so that p / cell stays far inside i64 (a tolerance of
+            // 1e-20 saturated every cell index, all vertices met in a few cells, and loading took
+            // hours). A larger cell only adds candidates; f32 positions that far apart in their
+            // last bits are never within such a tolerance anyway.
+            let largest = self
+                .positions
+                .iter()
+                .filter(|p| p.is_finite())
+                .map(|p| f64::from(p.abs().max_element()))
+                .fold(0.0, f64::max);
+            let cell = (tol * (1.0 + 1e-9)).max(largest * 2f64.powi(-50));
             let grid = Grid { origin: DVec3::ZERO, cell };
             let mut hash = SpatialHash::new(n);
             for (old, p) in self.positions.iter().enumerate() {

@@ -157,6 +157,17 @@ pub enum ErrorKind {
         /// The faces before welding.
         faces: usize,
     },
+    /// `weld` merged two vertices whose texture coordinates (the object has a texture) or whose
+    /// given normals (`normals = "given"`) differ: a UV seam or a hard edge, which one vertex
+    /// cannot keep (the texture would be squeezed into the seam's column, the edge smoothed).
+    WeldMergesSeam {
+        /// `true`: texture coordinates; `false`: normals.
+        uvs: bool,
+        /// The vertex kept and the one merged into it (0-based, in the mesh as loaded).
+        kept: usize,
+        /// The vertex merged into `kept`.
+        merged: usize,
+    },
     /// A spot light's `inner_deg` (the lecture's soft edge) with `light_model = "opengl"`, which
     /// has no inner cone.
     InnerConeNeedsLectureModel,
@@ -394,6 +405,9 @@ pub enum Rule {
     },
     /// In `(0, 90]` or exactly 180 (GL_SPOT_CUTOFF).
     SpotCutoff,
+    /// A spot's `inner_deg` with `cutoff_deg = 180`, which has no cone to be inside of: the
+    /// light shines everywhere alike, and `inner_deg` would change nothing.
+    InnerNeedsCone,
     /// An integer in `min..=max`.
     Integer {
         /// Smallest allowed.

@@ -12,7 +12,7 @@ use cg_core::transform::TransformError;
 use super::*;
 
 /// How many variants [`ErrorKind`] has; [`kind_index`] numbers them `0..KINDS`.
-const KINDS: usize = 47;
+const KINDS: usize = 48;
 
 /// A number for each variant of [`ErrorKind`] (the match is exhaustive, so a new variant does not
 /// compile until it is numbered here, and [`every_kind_has_a_sample`] fails until it has a
@@ -66,6 +66,7 @@ fn kind_index(kind: &ErrorKind) -> usize {
         ErrorKind::DuplicateKey { .. } => 44,
         ErrorKind::ObjPolygon { .. } => 45,
         ErrorKind::NameTooLong { .. } => 46,
+        ErrorKind::WeldMergesSeam { .. } => 47,
     }
 }
 
@@ -78,6 +79,7 @@ fn all_rules() -> Vec<Rule> {
         Rule::Between { min: 0.0, max: 1.0 },
         Rule::Inside { min: 0.0, max: 180.0 },
         Rule::SpotCutoff,
+        Rule::InnerNeedsCone,
         Rule::Integer { min: 1, max: 4096 },
         Rule::NonZeroVector,
         Rule::GreaterThan { key: "near", value: 0.5 },
@@ -95,6 +97,7 @@ fn all_rules() -> Vec<Rule> {
             | Rule::Between { .. }
             | Rule::Inside { .. }
             | Rule::SpotCutoff
+            | Rule::InnerNeedsCone
             | Rule::Integer { .. }
             | Rule::NonZeroVector
             | Rule::GreaterThan { .. }
@@ -236,6 +239,8 @@ fn samples() -> Vec<ErrorKind> {
         ErrorKind::SpecularNeedsLectureModel,
         ErrorKind::InnerConeNeedsLectureModel,
         ErrorKind::WeldRemovesEveryFace { tolerance: 10.0, faces: 6 },
+        ErrorKind::WeldMergesSeam { uvs: true, kept: 3, merged: 17 },
+        ErrorKind::WeldMergesSeam { uvs: false, kept: 0, merged: 1 },
         ErrorKind::TransformStep { found: vec![] },
         ErrorKind::TransformStep { found: vec!["translate".into(), "scale".into()] },
         ErrorKind::UnknownMaterial { name: "glas".into(), suggestion: Some("glass".into()) },

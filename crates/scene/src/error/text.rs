@@ -163,6 +163,21 @@ impl ErrorKind {
                     "weld = {tolerance} merges the vertices so far that all {faces} faces collapse and nothing is left (the distance is as long as the edges); use weld = true for bit-equal positions, or a distance much shorter than the edges (e.g. 1e-4)"
                 ),
             ),
+            ErrorKind::WeldMergesSeam { uvs, kept, merged } => {
+                let (ja, en) = if *uvs {
+                    ("テクスチャ座標", "texture coordinates")
+                } else {
+                    ("法線（normals = \"given\"）", "normals (normals = \"given\")")
+                };
+                Text::new(
+                    format!(
+                        "weld で頂点 V{merged} を V{kept} にまとめると、{ja}が違うのに 1 つになります（テクスチャの継ぎ目や稜線は 1 つの頂点では保てません）。weld を外すか、テクスチャ・与えた法線なしで使ってください"
+                    ),
+                    format!(
+                        "weld merges V{merged} into V{kept}, though their {en} differ (a texture seam or a hard edge, which one vertex cannot keep); leave weld out, or use it without the texture or the given normals"
+                    ),
+                )
+            }
             ErrorKind::InnerConeNeedsLectureModel => t(
                 "`inner_deg`（スポットライトの内側の円錐）は light_model = \"lecture\" でだけ使えます（OpenGL のモデルには内側の円錐がなく、境目は exponent だけで決まります）。[render] に light_model = \"lecture\" を書くか、inner_deg を消してください",
                 "`inner_deg` (a spot light's inner cone) applies only to light_model = \"lecture\" (OpenGL's model has no inner cone: only the exponent softens the edge); set light_model = \"lecture\" in [render] or remove inner_deg",
@@ -505,6 +520,10 @@ impl Rule {
             Rule::Inside { min, max } => Text::new(
                 format!("{min} より大きく {max} より小さくなければなりません"),
                 format!("must be strictly between {min} and {max}"),
+            ),
+            Rule::InnerNeedsCone => t(
+                "cutoff_deg = 180（円錐なし）のスポットには内側の円錐がありません。cutoff_deg を 90 以下にするか、inner_deg を消してください",
+                "a spot with cutoff_deg = 180 (no cone) has no inner cone: make cutoff_deg at most 90, or remove inner_deg",
             ),
             Rule::SpotCutoff => t(
                 "0 より大きく 90 以下、または 180（円錐なし）でなければなりません",
