@@ -132,6 +132,42 @@ impl Config {
         }
         best.map_or(self.default_points, |(_, p)| p)
     }
+
+    /// Whether every rule of `[points]` names a check of `ids` (the kit's check IDs) or a prefix
+    /// of one: a rule that names none (`a1.t9`, a typo) would give its points to nothing, and
+    /// every check it was meant for would get the default, without a word.
+    ///
+    /// # Errors
+    /// The rules that name no check (at most five, then a count), with the assignments' IDs.
+    pub fn check_names<'a>(
+        &self,
+        ids: impl IntoIterator<Item = &'a str> + Clone,
+    ) -> Result<(), ConfigError> {
+        let names = |prefix: &str| {
+            ids.clone().into_iter().any(|id| {
+                id == prefix || id.strip_prefix(prefix).is_some_and(|rest| rest.starts_with('.'))
+            })
+        };
+        let unknown: Vec<&str> =
+            self.points.keys().map(String::as_str).filter(|k| !names(k)).collect();
+        if unknown.is_empty() {
+            return Ok(());
+        }
+        let mut list: Vec<String> =
+            unknown.iter().take(5).map(|k| cg_core::quote::visible(k)).collect();
+        if unknown.len() > 5 {
+            list.push(format!("… (+{})", unknown.len() - 5));
+        }
+        let list = list.join(", ");
+        Err(ConfigError::new(
+            format!(
+                "採点設定の [points] に、どのチェックも指さない規則があります: {list}（課題・タスク・チェックの ID か、その先頭の部分を書きます。例: a1、\"a1.t3\"、\"a1.t3.unit\"。ID は cg check の表示にあります）"
+            ),
+            format!(
+                "the grading config's [points] has rules that name no check: {list} (name an assignment, a task or a check by its ID, or the start of one: a1, \"a1.t3\", \"a1.t3.unit\"; cg check shows the IDs)"
+            ),
+        ))
+    }
 }
 
 #[cfg(test)]
@@ -161,5 +197,21 @@ mod tests {
         assert!(Config::parse("[points]\na1 = \"two\"").is_err());
         assert!(Config::parse("weights = 3").unwrap_err().message(Lang::En).contains("weights"));
         assert!(!Config::parse("default = [").unwrap_err().message(Lang::Ja).is_empty());
+    }
+
+    /// A rule that names no check of the kit (a typo, a task that does not exist) is said with
+    /// the rule; it gave its points to nothing, and the checks it was meant for got the default.
+    #[test]
+    fn rules_that_name_no_check_are_said() {
+        let ids = crate::check_ids();
+        assert!(ids.contains("a1.t2.closed") && ids.len() > 40, "{ids:?}");
+        let ids = || ids.iter().map(String::as_str);
+        let fine =
+            Config::parse("[points]\na1 = 2\n\"a1.t2\" = 3\n\"a1.t2.closed\" = 5\ns = 1").unwrap();
+        assert_eq!(fine.check_names(ids()), Ok(()));
+        let typo = Config::parse("[points]\n\"a1.t9\" = 3\n\"a1.t2.close\" = 5\na10 = 1").unwrap();
+        let e = typo.check_names(ids()).unwrap_err();
+        assert!(e.message(Lang::En).contains("name no check: a1.t2.close, a1.t9, a10"), "{e}");
+        assert!(e.message(Lang::Ja).contains("どのチェックも指さない規則"), "{e}");
     }
 }
