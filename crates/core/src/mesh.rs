@@ -546,11 +546,16 @@ impl Mesh {
             lo = lo.min(at(v));
             hi = hi.max(at(v));
         }
-        let mean_length = boundary.iter().map(|([a, b], _)| at(*a).distance(at(*b))).sum::<f64>()
-            / boundary.len() as f64;
-        // Cells about one edge long, but at most 1024 along the longest side of the box, so
-        // a walk along any edge visits at most ~1800 cells.
-        let mut cell = mean_length.max((hi - lo).max_element() / 1024.0);
+        // Cells about as long as the middle edge (the median: a few far-off or long edges do
+        // not change it), but never so small that a cell's index leaves i64. Sized by the
+        // bounding box instead (1024 cells along it), a cluster of 100 000 small edges and one
+        // stray triangle far off shared a single cell, and every edge met every candidate:
+        // hours. An edge whose cells would outnumber the candidates tests the candidates.
+        let mut lengths: Vec<f64> =
+            boundary.iter().map(|([a, b], _)| at(*a).distance(at(*b))).collect();
+        let middle = lengths.len() / 2;
+        let median = *lengths.select_nth_unstable_by(middle, f64::total_cmp).1;
+        let mut cell = median.max((hi - lo).max_element() / 1e12);
         if !(cell > 0.0 && cell.is_finite()) {
             cell = 1.0;
         }

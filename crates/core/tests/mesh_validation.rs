@@ -193,6 +193,44 @@ fn row03_duplicated_vertex_leaves_boundary_edges_and_welding_fixes_it() {
     assert!(welded.mesh.validate().is_clean());
 }
 
+/// A soup of 40 000 small separate triangles in a unit square and one triangle 9 000 away: the
+/// T-junction search's cells follow the edges' median length, not the bounding box (1 024 cells
+/// along it put the whole cluster in one cell, and every boundary edge met every candidate:
+/// minutes, hours at 800 000 triangles). One triangle's corner placed inside another's edge is
+/// found among them.
+#[test]
+fn a_cluster_and_a_stray_triangle_are_searched_cell_by_cell() {
+    let mut positions = Vec::new();
+    let mut faces = Vec::new();
+    for i in 0..200 {
+        for j in 0..200 {
+            let o = Vec3::new(i as f32 * 0.005, j as f32 * 0.005, 0.0);
+            let k = positions.len() as u32;
+            positions.extend([o, o + Vec3::new(0.002, 0.0, 0.0), o + Vec3::new(0.0, 0.002, 0.0)]);
+            faces.push([k, k + 1, k + 2]);
+        }
+    }
+    // The stray triangle, and a corner on the middle of the first triangle's bottom edge.
+    let k = positions.len() as u32;
+    positions.extend([
+        Vec3::splat(9000.0),
+        Vec3::new(9001.0, 9000.0, 0.0),
+        Vec3::new(9000.0, 9001.0, 0.0),
+    ]);
+    faces.push([k, k + 1, k + 2]);
+    let k = positions.len() as u32;
+    positions.extend([
+        Vec3::new(0.001, 0.0, 0.0),
+        Vec3::new(0.001, -0.002, 0.0),
+        Vec3::new(0.003, -0.002, 0.0),
+    ]);
+    faces.push([k, k + 2, k + 1]);
+    let v = Mesh::new(positions, faces).validate();
+    let t: Vec<&Problem> =
+        v.problems().iter().filter(|p| matches!(p, Problem::TJunction { .. })).collect();
+    assert_eq!(t, [&Problem::TJunction { vertex: k, edge: [0, 1], face: 0 }]);
+}
+
 #[test]
 fn t_junction_names_vertex_edge_and_face() {
     let v = cube_with_t_junction().validate();
