@@ -270,6 +270,11 @@ fn check_values<'a>(
     if read.len() < needed {
         return Err(too_few_or_many());
     }
+    // A normal with no direction, said at its line (it was said later as the normal of a
+    // renumbered vertex, with no line).
+    if element == "vn" && try_normalize(Vec3::new(read[0], read[1], read[2])).is_none() {
+        return Err((values[0], ErrorKind::ObjZeroNormal));
+    }
     if element != "v" {
         return Ok(());
     }

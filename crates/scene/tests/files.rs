@@ -139,9 +139,12 @@ fn malformed_obj_files_say_what_is_wrong() {
     // Normals on some corners only.
     let e = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n");
     assert_eq!(*e.kind, ErrorKind::ObjPartial { element: "vn" });
-    // Values that parse but cannot be used.
+    // Values that parse but cannot be used: a normal with no direction, at its line and word
+    // (it was "vertex V0 has a zero normal", with no line).
     let e = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n");
-    assert_eq!(*e.kind, ErrorKind::ObjBadNormal { vertex: 0 });
+    assert_eq!(*e.kind, ErrorKind::ObjZeroNormal);
+    assert_eq!(e.position.map(|p| (p.line, p.column)), Some((4, 4)), "{e}");
+    assert!(e.to_string().starts_with("model.obj:4:4: "), "{e}");
 }
 
 /// What tobj alone makes of `text`: its error has no line (and sometimes names the wrong cause).

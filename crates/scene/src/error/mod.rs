@@ -279,6 +279,8 @@ pub enum ErrorKind {
         /// `vn` or `vt`.
         element: &'static str,
     },
+    /// A `vn` line of an OBJ file whose vector has no direction (`vn 0 0 0`), at its line.
+    ObjZeroNormal,
     /// A vertex normal of an OBJ file is zero or not finite.
     ObjBadNormal {
         /// The vertex (V-number in the loaded mesh).

@@ -12,7 +12,7 @@ use cg_core::transform::TransformError;
 use super::*;
 
 /// How many variants [`ErrorKind`] has; [`kind_index`] numbers them `0..KINDS`.
-const KINDS: usize = 48;
+const KINDS: usize = 49;
 
 /// A number for each variant of [`ErrorKind`] (the match is exhaustive, so a new variant does not
 /// compile until it is numbered here, and [`every_kind_has_a_sample`] fails until it has a
@@ -67,6 +67,7 @@ fn kind_index(kind: &ErrorKind) -> usize {
         ErrorKind::ObjPolygon { .. } => 45,
         ErrorKind::NameTooLong { .. } => 46,
         ErrorKind::WeldMergesSeam { .. } => 47,
+        ErrorKind::ObjZeroNormal => 48,
     }
 }
 
@@ -285,6 +286,7 @@ fn samples() -> Vec<ErrorKind> {
         ErrorKind::ObjNoFaces,
         ErrorKind::ObjPartial { element: "vn" },
         ErrorKind::ObjBadNormal { vertex: 4 },
+        ErrorKind::ObjZeroNormal,
         ErrorKind::ObjBadUv { vertex: 5 },
         ErrorKind::Mesh(MeshError::IndexOutOfRange {
             face: 6,

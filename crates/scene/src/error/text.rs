@@ -360,6 +360,10 @@ impl ErrorKind {
                     "some face corners have `{element}` and others do not; give it on every face or on none"
                 ),
             ),
+            ErrorKind::ObjZeroNormal => t(
+                "vn の法線が長さ 0 で、向きがありません",
+                "this vn normal has length 0: it has no direction",
+            ),
             ErrorKind::ObjBadNormal { vertex } => Text::new(
                 format!("頂点 V{vertex} の法線が 0 か有限でないベクトルです"),
                 format!("vertex V{vertex} has a zero or non-finite normal"),
