@@ -210,7 +210,7 @@ pub use cg_core::fs::write_atomic;
 const MAX_NAME_CHARS: usize = 80;
 
 /// A name safe as a file name: letters (kana and kanji too), digits, `-`, `_` and `.` (not
-/// leading), others `_`, at most [`MAX_NAME_CHARS`] characters.
+/// leading), others `_`, at most 80 characters.
 #[must_use]
 pub fn file_name(raw: &str) -> String {
     let s: String = raw

@@ -39,7 +39,7 @@ const ATTRIBUTES: [&str; 6] =
 /// Every refused use in `text`, the file `file`. A first line `#!…` that is not an attribute
 /// is left out, as the compiler leaves it out. A file the lexer does not read (which the
 /// compiler may still read: a line `#!/x )` made the lexer fail, and everything after it went
-/// unscreened) is screened word by word instead ([`by_words`]).
+/// unscreened) is screened word by word instead.
 #[must_use]
 pub fn screen(file: &str, text: &str) -> Vec<Refused> {
     let text = without_shebang(text);
