@@ -29,6 +29,7 @@ use cg_sandbox::{Isolation, Job, Launch, Limits, SandboxError};
 
 pub mod build;
 pub mod config;
+mod entries;
 pub mod gradescope;
 pub mod handout;
 pub mod moodle;
@@ -39,6 +40,8 @@ pub mod screen;
 pub mod submission;
 
 pub use config::Config;
+pub use entries::file_name;
+use entries::{Pending, collect, collect_from};
 
 pub use cg_core::lang::Text;
 
@@ -204,140 +207,6 @@ pub fn slot_content(kit: &Path) -> std::io::Result<String> {
 }
 
 pub use cg_core::fs::write_atomic;
-
-/// The most characters of an entry's name a result's file name keeps (a name of 237 bytes
-/// made the temporary file's name too long for the file system, and the run failed).
-const MAX_NAME_CHARS: usize = 80;
-
-/// A name safe as a file name: letters (kana and kanji too), digits, `-`, `_` and `.` (not
-/// leading), others `_`, at most 80 characters.
-#[must_use]
-pub fn file_name(raw: &str) -> String {
-    let s: String = raw
-        .chars()
-        .map(|c| if c.is_alphanumeric() || matches!(c, '-' | '_' | '.') { c } else { '_' })
-        .collect();
-    let s: String = s.trim_start_matches('.').chars().take(MAX_NAME_CHARS).collect();
-    if s.is_empty() { "_".to_owned() } else { s }
-}
-
-/// One submission waiting to be graded.
-struct Pending {
-    entry: String,
-    name: String,
-    /// The other entries that claim the same student number.
-    same_number: Vec<String>,
-    /// What the roster says of the entry (with `--roster`).
-    roster: Option<result::RosterMark>,
-    hash: String,
-    files: Result<(submission::Files, cg_assign::StudentFile), Text>,
-}
-
-/// The entries of the submissions folder (or of a Moodle download: [`moodle::input`]), read
-/// and hashed, with their result names.
-fn collect(options: &Options, kit_hash: &str) -> Result<Vec<Pending>, GradeError> {
-    let entries = moodle::input::entries(&options.submissions).map_err(GradeError::Io)?;
-    collect_from(options, kit_hash, entries)
-}
-
-/// [`collect`] of the given entries.
-fn collect_from(
-    options: &Options,
-    kit_hash: &str,
-    entries: Vec<moodle::input::Entry>,
-) -> Result<Vec<Pending>, GradeError> {
-    let mut used: BTreeMap<String, Vec<String>> = BTreeMap::new();
-    let mut pending = Vec::new();
-    for source in entries {
-        let entry = source.name.clone();
-        let files = source.read().and_then(|files| {
-            let toml = files.student_toml.clone().ok_or_else(|| {
-                Text::new(
-                    "exercises/student.toml がありません",
-                    "exercises/student.toml is missing",
-                )
-            })?;
-            let student = cg_assign::parse_student_file(&toml, "exercises/student.toml")
-                .map_err(|e| e.text())?;
-            Ok((files, student))
-        });
-        // The roster binds the entry to its student: the number graded (and its variant) is
-        // the roster's; a different number in student.toml is kept to be flagged.
-        let mut files = files;
-        let mark = options.roster.as_ref().map(|r| match r.find(&entry) {
-            None => result::RosterMark { listed: false, name: None, claimed: None },
-            Some(row) => {
-                let mut claimed = None;
-                if let Ok((_, student)) = &mut files
-                    && student.student != row.student
-                {
-                    claimed = Some(student.student.to_string());
-                    student.student = row.student.clone();
-                }
-                result::RosterMark { listed: true, name: Some(row.name.clone()), claimed }
-            }
-        });
-        let mut h = Hasher::default();
-        h.add(kit_hash.as_bytes());
-        h.add(options.config_text.as_bytes());
-        h.add(&options.limits.wall.as_millis().to_le_bytes());
-        h.add(&options.limits.memory_bytes.to_le_bytes());
-        // The results' words are in the run's language: another language grades again (a
-        // result kept from an English run was handed out under --lang ja).
-        h.add(options.lang.to_string().as_bytes());
-        if let Some(m) = &mark {
-            h.add(format!("{m:?}").as_bytes());
-        }
-        let base = match &files {
-            Ok((f, student)) => {
-                for (m, bytes) in &f.modules {
-                    h.add(m.as_bytes());
-                    h.add(bytes);
-                }
-                h.add(f.student_toml.as_deref().unwrap_or_default());
-                student.student.to_string()
-            }
-            Err(why) => {
-                h.add(b"refused");
-                h.add(why.en.as_bytes());
-                format!("_{}", file_name(&entry))
-            }
-        };
-        used.entry(base.clone()).or_default().push(entry.clone());
-        pending.push(Pending {
-            entry,
-            name: base,
-            same_number: Vec::new(),
-            roster: mark,
-            hash: h.hex(),
-            files,
-        });
-    }
-    // Entries that claim one student number: none takes the student's file; each is named
-    // after its entry too and flagged, whichever sorts first (an impostor could sort first).
-    for p in &mut pending {
-        let claims = &used[&p.name];
-        if claims.len() > 1 {
-            p.same_number = claims.iter().filter(|e| **e != p.entry).cloned().collect();
-            p.name = format!("{}~{}", p.name, file_name(&p.entry));
-        }
-    }
-    // Two entries whose names are alike once made file names (`山田.zip` and `佐藤.zip` outside
-    // the letters kept, names cut at the same length, a number claimed with a name made alike on
-    // purpose) would write one result over the other: each such name gets its entry's hash.
-    let mut names: BTreeMap<String, usize> = BTreeMap::new();
-    for p in &pending {
-        *names.entry(p.name.to_lowercase()).or_default() += 1;
-    }
-    for p in &mut pending {
-        if names[&p.name.to_lowercase()] > 1 {
-            let mut h = Hasher::default();
-            h.add(p.entry.as_bytes());
-            p.name = format!("{}~{}", p.name, &h.hex()[..8]);
-        }
-    }
-    Ok(pending)
-}
 
 /// Whether grading may run with `isolation`: under bubblewrap, or with limits only when the
 /// instructor says so (`--unsafe-no-sandbox`; every result and the summary then say it).
