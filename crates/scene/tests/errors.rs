@@ -289,6 +289,22 @@ shape = { kind = "uv_sphere", radius = -1, slices = 16, stacks = 8 }
             Rule::NonZeroArea,
         ),
         (
+            // An area the renderers' f32 cannot hold (the cross product underflows to 0): no
+            // axis, so the light shone both ways; and one that overflows to ∞.
+            "format = 1\n[[lights]]\nkind = \"area\"\ncorner = [0, 4, 0]\nedge_u = [1e-23, 0, 0]\nedge_v = [0, 0, 1e-23]\nsamples = [2, 2]\n",
+            6,
+            "[0, 0, 1e-23]",
+            "lights[0].edge_v",
+            Rule::NonZeroArea,
+        ),
+        (
+            "format = 1\n[[lights]]\nkind = \"area\"\ncorner = [0, 4, 0]\nedge_u = [2e19, 0, 0]\nedge_v = [0, 0, 2e19]\nsamples = [2, 2]\n",
+            6,
+            "[0, 0, 2e19]",
+            "lights[0].edge_v",
+            Rule::NonZeroArea,
+        ),
+        (
             "format = 1\n[[lights]]\nkind = \"area\"\ncorner = [0, 4, 0]\nedge_u = [1, 0, 0]\nedge_v = [0, 0, 1]\nsamples = [0, 2]\n",
             7,
             "0",

@@ -5,7 +5,7 @@ use std::collections::HashMap;
 
 use cg_core::Rgb;
 use cg_core::light::{Attenuation, Light, LightKind, Material};
-use cg_core::math::try_normalize_f64;
+use cg_core::math::{cross_f64, try_normalize};
 
 use crate::error::{ErrorKind, Expected, Rule, SceneError};
 use crate::reader::{Table, Value};
@@ -69,7 +69,10 @@ pub(super) fn read_light(t: &Table<'_>) -> Result<Light, SceneError> {
             let edge_u = t.require("edge_u")?.vec3()?;
             let edge_v_value = t.require("edge_v")?;
             let edge_v = edge_v_value.vec3()?;
-            if try_normalize_f64(edge_u.as_dvec3().cross(edge_v.as_dvec3())).is_none() {
+            // The renderers take the light's axis as this, in f32: edges whose cross product is
+            // 0 or ∞ there (1e-23 long, or 2e19) would have no axis, and the light would shine
+            // both ways without a word.
+            if try_normalize(cross_f64(edge_u, edge_v)).is_none() {
                 return Err(edge_v_value.bad(Rule::NonZeroArea));
             }
             let [nu, nv] = t.require("samples")?.array_of(Expected::Samples)?;
