@@ -116,9 +116,7 @@ pub fn autograder(args: &AutograderArgs, lang: Lang) -> Result<(), String> {
     )?;
     let count = gradescope::package::write_zip(&kit, &args.out, lang)
         .map_err(|e| e.get(lang).to_owned())?;
-    if let Some(note) = cg_grade::handout::untracked_note(
-        &cg_grade::handout::kit_files(&kit).map_err(|e| e.get(lang).to_owned())?.untracked,
-    ) {
+    if let Some(note) = cg_grade::handout::untracked_note(&kit) {
         eprintln!("{}", note.get(lang));
     }
     println!(

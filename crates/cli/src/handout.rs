@@ -67,8 +67,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         t("学生用のコピーを書きました:", "wrote the student's copy to").get(lang),
         t("ファイル", "files").get(lang)
     );
-    let untracked = cg_grade::handout::kit_files(&root).map_err(|e| e.get(lang).to_owned())?;
-    if let Some(note) = cg_grade::handout::untracked_note(&untracked.untracked) {
+    if let Some(note) = cg_grade::handout::untracked_note(&root) {
         eprintln!("{}", note.get(lang));
     }
     print!("{}", try_it(dir, lang));

@@ -16,18 +16,6 @@ pub fn excluded(path: &Path) -> bool {
         || path == Path::new("exercises/student.toml")
 }
 
-/// The kit's files, relative to its root.
-#[derive(Clone, Debug, Default)]
-pub struct KitFiles {
-    /// The files a copy of the kit is made from.
-    pub files: Vec<PathBuf>,
-    /// Files in a git checkout that git does not track and does not ignore, left out: what a
-    /// session left in the kit (a grading's `results/`, an old `autograder.zip` with the
-    /// solutions in it, a folder of submissions) must not reach the students. The commands say
-    /// them, so that a new kit file not yet committed is not lost unseen.
-    pub untracked: Vec<PathBuf>,
-}
-
 /// The kit's files: in a git checkout, the files git tracks (`git ls-files`), as `git archive`
 /// takes them; otherwise (a copy without `.git`: the autograder's) every file under the kit
 /// except the excluded folders, what the kit's `.gitignore` names at its top and symbolic
@@ -35,30 +23,9 @@ pub struct KitFiles {
 ///
 /// # Errors
 /// A folder of the kit could not be read.
-pub fn kit_files(root: &Path) -> Result<KitFiles, Text> {
-    let listed = |which: &str| -> Option<Vec<PathBuf>> {
-        let out = Command::new("git")
-            .arg("-C")
-            .arg(root)
-            .args(["ls-files", "-z", which])
-            .args((which == "--others").then_some("--exclude-standard"))
-            .output()
-            .ok()
-            .filter(|o| o.status.success())?;
-        Some(
-            out.stdout
-                .split(|&b| b == 0)
-                .filter(|s| !s.is_empty())
-                .map(|s| PathBuf::from(String::from_utf8_lossy(s).into_owned()))
-                .filter(|p| std::fs::symlink_metadata(root.join(p)).is_ok_and(|m| m.is_file()))
-                .collect(),
-        )
-    };
-    if let Some(files) = listed("--cached") {
-        let mut untracked = listed("--others").unwrap_or_default();
-        untracked.retain(|p| !excluded(p));
-        untracked.sort();
-        return Ok(KitFiles { files, untracked });
+pub fn kit_files(root: &Path) -> Result<Vec<PathBuf>, Text> {
+    if let Some(files) = git_listed(root, "--cached") {
+        return Ok(files);
     }
     let ignored = top_level_ignored(root);
     let mut files = Vec::new();
@@ -80,7 +47,29 @@ pub fn kit_files(root: &Path) -> Result<KitFiles, Text> {
             }
         }
     }
-    Ok(KitFiles { files, untracked: Vec::new() })
+    Ok(files)
+}
+
+/// The files of the git checkout `root` that `git ls-files <which>` lists (`--cached`: those it
+/// tracks; `--others`: those it neither tracks nor ignores), plain files only; `None` outside a
+/// checkout or without git.
+fn git_listed(root: &Path, which: &str) -> Option<Vec<PathBuf>> {
+    let out = Command::new("git")
+        .arg("-C")
+        .arg(root)
+        .args(["ls-files", "-z", which])
+        .args((which == "--others").then_some("--exclude-standard"))
+        .output()
+        .ok()
+        .filter(|o| o.status.success())?;
+    Some(
+        out.stdout
+            .split(|&b| b == 0)
+            .filter(|s| !s.is_empty())
+            .map(|s| PathBuf::from(String::from_utf8_lossy(s).into_owned()))
+            .filter(|p| std::fs::symlink_metadata(root.join(p)).is_ok_and(|m| m.is_file()))
+            .collect(),
+    )
 }
 
 /// The names the kit's `.gitignore` leaves out at its top (`/target`, `/report/`): what a copy
@@ -95,10 +84,16 @@ fn top_level_ignored(root: &Path) -> Vec<std::ffi::OsString> {
         .collect()
 }
 
-/// The untracked files `kit_files` left out, said in one line (the first five by name), or
-/// nothing when there are none.
+/// The files of the git checkout `root` that [`kit_files`] leaves out because git neither
+/// tracks nor ignores them, said in one line (the first five by name), or nothing when there are
+/// none: what a session left in the kit (a grading's `results/`, an old `autograder.zip` with
+/// the solutions in it) must not reach the students, and a new kit file not yet committed must
+/// not be lost unseen.
 #[must_use]
-pub fn untracked_note(untracked: &[PathBuf]) -> Option<Text> {
+pub fn untracked_note(root: &Path) -> Option<Text> {
+    let mut untracked = git_listed(root, "--others")?;
+    untracked.retain(|p| !excluded(p));
+    untracked.sort();
     if untracked.is_empty() {
         return None;
     }
@@ -187,7 +182,7 @@ pub fn write_handout_filtered(
         count += 1;
         Ok(())
     };
-    for relative in kit_files(root)?.files {
+    for relative in kit_files(root)? {
         if excluded(&relative) || relative.starts_with("exercises") || skip(&root.join(&relative)) {
             continue;
         }

@@ -153,7 +153,7 @@ impl Hasher {
 /// # Errors
 /// The kit's files could not be listed or read.
 pub fn kit_version(kit: &Path, skip: &dyn Fn(&Path) -> bool) -> Result<String, GradeError> {
-    let mut files = handout::kit_files(kit).map_err(GradeError::Io)?.files;
+    let mut files = handout::kit_files(kit).map_err(GradeError::Io)?;
     files.retain(|f| !handout::excluded(f) || f.starts_with("solutions"));
     files.retain(|f| !skip(&kit.join(f)));
     files.sort();

@@ -117,7 +117,7 @@ pub fn run_autograder(lang: Lang) -> String {
 pub fn write_zip(kit: &Path, out: &Path, lang: Lang) -> Result<usize, Text> {
     refuse_out(out)?;
     let target = out.canonicalize().ok();
-    let mut files = kit_files(kit)?.files;
+    let mut files = kit_files(kit)?;
     // Outside a git checkout the kit's listing leaves solutions/ out, as a handout does.
     if !files.iter().any(|f| f.starts_with("solutions")) {
         files.extend(walk(kit, Path::new("solutions")));
