@@ -128,11 +128,14 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         "pub fn vertices(spec: &Spec) -> Vec<Vec3> {\n    #[allow(clippy::empty_loop)]\n    loop {}\n",
     );
     folder(&subs.join("04-loop"), "20260004", &[("a1", looping)]);
-    // 5. a3 allocates without bound; s panics.
+    // 5. a3 allocates without bound; s panics. The blocks are zeroed (fresh pages, not
+    // written), so the hoard reaches the address-space limit in milliseconds: a hoard that
+    // wrote 2 GiB first could, on a loaded 2-core host, run past the 5 s budget below and be
+    // stopped by the time limit instead (one run in five did).
     let greedy = edit(
         &solution("a3"),
         "pub fn idle(spec: &Spec, state: &mut State) {",
-        "pub fn idle(spec: &Spec, state: &mut State) {\n    let mut hog: Vec<Vec<u8>> = Vec::new();\n    loop { hog.push(vec![1u8; 64 << 20]); if hog.len() == usize::MAX { break; } }\n",
+        "pub fn idle(spec: &Spec, state: &mut State) {\n    let mut hog: Vec<Vec<u8>> = Vec::new();\n    loop { hog.push(std::hint::black_box(vec![0u8; 64 << 20])); if hog.len() == usize::MAX { break; } }\n",
     );
     // The panic comes after trying to write outside its folder and to start a shell.
     let escape = base.join("escaped.txt");
