@@ -48,6 +48,9 @@ pub fn screen(file: &str, text: &str) -> Vec<Refused> {
         Ok(tokens) => walk(file, tokens, &mut found),
         Err(_) => by_words(file, text, &mut found),
     }
+    // The lexer keeps each text read in a map per thread for its spans; a class's files
+    // would stay there until grading ends (`walk` keeps lines, not spans).
+    proc_macro2::extra::invalidate_current_thread_spans();
     found.sort_by_key(|r| r.line);
     found
 }
@@ -192,6 +195,18 @@ mod tests {
 
     /// 40 000 nested brackets (a hostile file of 80 KB) are read without overflowing the
     /// stack (which aborted the whole class's grading), and what hides at the bottom is found.
+    #[test]
+    fn the_lexers_map_of_texts_is_emptied_after_each_file() {
+        // A span from before `screen` resolves only while the lexer's map still holds every
+        // text it read (see `cg_similarity::tokenize::tokens`).
+        let stream: TokenStream = "x".parse().unwrap();
+        let TokenTree::Ident(x) = stream.into_iter().next().unwrap() else { panic!() };
+        assert_eq!(x.span().start().line, 1);
+        assert!(screen("a.rs", "fn f() {}").is_empty());
+        let after = std::panic::catch_unwind(|| x.span().start());
+        assert!(after.is_err(), "the span still resolves: the texts read are still held");
+    }
+
     #[test]
     fn deeply_nested_brackets_are_read_without_overflowing_the_stack() {
         let depth = 40_000;

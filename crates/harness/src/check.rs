@@ -392,11 +392,12 @@ fn run_unmarked(id: &str, title: Text, body: impl FnOnce() -> Result<(), Failure
     if let Ok(mut current) = CURRENT.lock() {
         *current = Some((id.to_owned(), Instant::now()));
     }
-    let was_in_check = IN_CHECK.with(|c| c.replace(true));
     cg_worker::proxy::begin_check();
+    // Set only around `catch_unwind`: a panic the hook keeps quiet is always caught and reported.
+    let was_in_check = IN_CHECK.with(|c| c.replace(true));
     let result = panic::catch_unwind(AssertUnwindSafe(body));
-    cg_worker::proxy::end_check();
     IN_CHECK.with(|c| c.set(was_in_check));
+    cg_worker::proxy::end_check();
     if let Ok(mut current) = CURRENT.lock() {
         *current = None;
     }
