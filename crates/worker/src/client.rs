@@ -10,7 +10,7 @@ use std::sync::mpsc::{Receiver, RecvTimeoutError, sync_channel};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
-use crate::{Call, Reason, Reply, decode, encode, frame, from_value, to_value};
+use crate::{Call, Reason, Reply, cbor, decode, encode, frame, to_value};
 
 /// How much of the end of a worker's stderr is kept.
 pub const STDERR_TAIL: usize = 2000;
@@ -288,25 +288,14 @@ impl Worker {
             }
             Err(RecvTimeoutError::Disconnected) => return Err(self.crashed()),
         };
-        match decode::<Reply>(&payload) {
-            Ok(reply) => {
-                let read = read_reply(function, reply);
-                // A reply that is not the call's (another type, no such function): the worker
-                // is not in step with this side; the next call starts a fresh one.
-                if matches!(read, Err(CallError::Broken(_))) {
-                    self.stop();
-                }
-                read
-            }
-            Err(e) => {
-                self.stop();
-                Err(CallError::Broken(Reason::with_detail(
-                    "ワーカーの返事が読めません",
-                    "the worker's reply does not read",
-                    &e,
-                )))
-            }
+        let read = read_payload(function, &payload);
+        drop(payload);
+        // A reply that is not the call's (another type, no such function, too large): the
+        // worker is not in step with this side; the next call starts a fresh one.
+        if matches!(read, Err(CallError::Broken(_))) {
+            self.stop();
         }
+        read
     }
 
     /// Keeps what the student printed, up to [`frame::MAX_PRINTED`] bytes in all.
@@ -363,18 +352,40 @@ fn cut(text: String, max: usize) -> String {
     format!("{}… ({} bytes)", &text[..end], text.len())
 }
 
-fn read_reply<R: serde::de::DeserializeOwned>(
+/// A reply's bytes as `function`'s result: read straight into `R` (no [`Value`](crate::Value)
+/// per number), after its items are counted ([`cbor::items`]: at most [`cbor::MAX_ITEMS`]).
+fn read_payload<R: serde::de::DeserializeOwned>(
     function: &str,
-    reply: Reply,
+    payload: &[u8],
 ) -> Result<R, CallError> {
-    match reply {
-        Reply::Value(v) => from_value(&v).map_err(|e| {
-            CallError::Broken(Reason::with_detail(
+    if let Err(e) = cbor::items(payload, cbor::MAX_ITEMS) {
+        return Err(CallError::Broken(Reason::with_detail(
+            &format!("{function} の返事は読めません（大きすぎるか、壊れています）"),
+            &format!("{function}'s reply is not read (too large, or malformed)"),
+            &e,
+        )));
+    }
+    match decode::<Reply<R>>(payload) {
+        Ok(reply) => read_reply(function, reply),
+        // Well formed, but not of the function's type.
+        Err(e) if decode::<Reply<serde::de::IgnoredAny>>(payload).is_ok() => {
+            Err(CallError::Broken(Reason::with_detail(
                 &format!("{function} が別の型の値を返しました"),
                 &format!("{function} returned a value of another type"),
                 &e,
-            ))
-        }),
+            )))
+        }
+        Err(e) => Err(CallError::Broken(Reason::with_detail(
+            "ワーカーの返事が読めません",
+            "the worker's reply does not read",
+            &e,
+        ))),
+    }
+}
+
+fn read_reply<R>(function: &str, reply: Reply<R>) -> Result<R, CallError> {
+    match reply {
+        Reply::Value(v) => Ok(v),
         // The student's own words, cut to a size a report can hold: a panic of 200 MB in every
         // function once filled the grader's memory.
         Reply::Panicked { message, location } => Err(CallError::Panicked {

@@ -19,6 +19,7 @@
 //! only link to the course is the students' API (`cg-student`, types and recorders), for
 //! [`tables`](mod@tables): each assignment's functions as named handlers.
 
+pub mod cbor;
 pub mod client;
 pub mod frame;
 pub mod proxy;
@@ -143,11 +144,13 @@ pub fn decode<T: serde::de::DeserializeOwned>(bytes: &[u8]) -> Result<T, String>
     ciborium::from_reader(bytes).map_err(|e| e.to_string())
 }
 
-/// The worker's answer to a [`Call`].
+/// The worker's answer to a [`Call`]. The worker writes a `Reply` of pipe [`Value`]s; the
+/// caller reads it as `Reply<R>`, the function's own result type, so that a reply costs the
+/// caller what its result does, not a [`Value`] per number.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub enum Reply {
+pub enum Reply<V = Value> {
     /// What the function returned (and what it changed through `&mut` arguments).
-    Value(Value),
+    Value(V),
     /// The function panicked: a `todo!()` (`not yet implemented: …`) or any other panic.
     Panicked {
         /// The panic's message.
@@ -169,6 +172,6 @@ pub enum Reply {
         /// The tasks of the markers reached.
         tasks: Vec<String>,
         /// The reply without the markers.
-        reply: Box<Reply>,
+        reply: Box<Reply<V>>,
     },
 }

@@ -202,3 +202,33 @@ fn replies_written_unasked_do_not_fill_the_callers_memory() {
     assert!(matches!(w.call::<_, i64>("add", &(2, 3), BUDGET), Err(CallError::Broken(_))));
     assert_eq!(w.call::<_, i64>("add", &(2, 3), BUDGET), Ok(5));
 }
+
+/// A reply of more items than [`cg_worker::cbor::MAX_ITEMS`] is refused before it is decoded:
+/// decoded as values, each one-byte number on the pipe took the caller 32 bytes (a frame of
+/// 256 MiB, about 8 GiB); the worker is stopped, and a fresh one answers the next call.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_reply_of_too_many_items_is_refused_before_it_is_decoded() {
+    let rss_mb = || -> u64 {
+        let status = std::fs::read_to_string("/proc/self/status").unwrap();
+        let line = status.lines().find(|l| l.starts_with("VmRSS:")).unwrap();
+        line.split_whitespace().nth(1).unwrap().parse::<u64>().unwrap() / 1024
+    };
+    let mut w = worker();
+    let before = rss_mb();
+    // The reply is `{"Value": [n numbers]}`: a map, its key, the list and the numbers.
+    let too_many = cg_worker::cbor::MAX_ITEMS - 2;
+    match w.call::<_, Vec<u8>>("items", &too_many, Duration::from_secs(60)) {
+        Err(CallError::Broken(why)) => {
+            assert!(why.en.contains("too large") && why.en.contains("more than"), "{why:?}");
+            assert!(why.ja.contains("大きすぎる"), "{why:?}");
+        }
+        other => panic!("{:?}", other.map(|v| v.len())),
+    }
+    let grown = rss_mb().saturating_sub(before);
+    // The frame itself (16 MiB), not 32 bytes per item (512 MiB).
+    assert!(grown < 200, "the caller grew by {grown} MiB");
+    // One fewer is read, as a list of numbers (not a value per number).
+    let fits = w.call::<_, Vec<u8>>("items", &(too_many - 1), Duration::from_secs(60)).unwrap();
+    assert_eq!(fits.len(), too_many - 1);
+}

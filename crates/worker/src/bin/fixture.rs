@@ -72,6 +72,8 @@ fn main() -> std::io::Result<()> {
                 v
             }),
         ),
+        // A list of `n` one-byte numbers (a reply of `n` items).
+        ("items", handler(|n: usize| vec![0u8; n])),
         (
             // A thread that writes well-formed replies of 4 MiB without end, unasked (to fill
             // the caller's memory), then the call's own value.
