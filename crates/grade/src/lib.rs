@@ -38,6 +38,7 @@ pub mod result;
 pub mod roster;
 pub mod screen;
 pub mod submission;
+pub mod zipfile;
 
 pub use config::Config;
 pub use entries::file_name;

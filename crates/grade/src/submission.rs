@@ -220,13 +220,7 @@ fn zip_text(why: &Text) -> Text {
 fn read_zip(path: &Path) -> Result<Files, Text> {
     let bad = |e: &zip::result::ZipError| zip_reason(e);
     let file = std::fs::File::open(path).map_err(|e| zip_text(&Text::io(&e)))?;
-    let mut zip = zip::ZipArchive::new(file).map_err(|e| bad(&e))?;
-    if zip.len() > MAX_ZIP_ENTRIES {
-        return Err(Text::new(
-            format!("zip の項目が多すぎます（{}、上限 {MAX_ZIP_ENTRIES}）", zip.len()),
-            format!("too many entries in the zip ({}, at most {MAX_ZIP_ENTRIES})", zip.len()),
-        ));
-    }
+    let mut zip = crate::zipfile::open(file, MAX_ZIP_ENTRIES)?;
     // Every entry is looked at: one hostile entry refuses the whole submission.
     let mut names = Vec::with_capacity(zip.len());
     for i in 0..zip.len() {

@@ -61,6 +61,11 @@ fn refused_submissions_say_why_and_are_kept() {
         None,
     );
     zip(&subs.join("empty.zip"), &[("readme.txt", b"hi")], None);
+    // One entry over the limit: refused from the zip's end record, with the count.
+    let names: Vec<String> =
+        (0..=cg_grade::submission::MAX_ZIP_ENTRIES).map(|i| format!("x/{i}.txt")).collect();
+    let many: Vec<(&str, &[u8])> = names.iter().map(|n| (n.as_str(), &b""[..])).collect();
+    zip(&subs.join("many.zip"), &many, None);
     std::fs::write(subs.join("notzip.zip"), b"PK but not really").unwrap();
     std::fs::create_dir_all(subs.join("badnumber/exercises/src")).unwrap();
     std::fs::write(subs.join("badnumber/exercises/student.toml"), "student = 1234\n").unwrap();
@@ -103,7 +108,7 @@ fn refused_submissions_say_why_and_are_kept() {
         roster: None,
     };
     let graded = cg_grade::grade(&options, no_runs, &|_| {}).unwrap();
-    assert_eq!(graded.len(), 10);
+    assert_eq!(graded.len(), 11);
     let why = |name: &str| -> String {
         let v: Value = serde_json::from_str(
             &std::fs::read_to_string(out.join(format!("_{name}.json"))).unwrap(),
@@ -119,6 +124,7 @@ fn refused_submissions_say_why_and_are_kept() {
     assert!(why("link.zip").contains("symbolic link"), "{}", why("link.zip"));
     assert!(why("big.zip").contains("too big"), "{}", why("big.zip"));
     assert!(why("empty.zip").contains("no exercises/"), "{}", why("empty.zip"));
+    assert!(why("many.zip").contains("too many entries in the zip (10001, at most 10000)"));
     assert!(why("notzip.zip").contains("not a readable zip"), "{}", why("notzip.zip"));
     assert!(why("badnumber").contains("student.toml"), "{}", why("badnumber"));
     assert!(why("sneaky").contains("symbolic link"), "{}", why("sneaky"));
@@ -131,11 +137,11 @@ fn refused_submissions_say_why_and_are_kept() {
 
     let csv = std::fs::read_to_string(out.join("class.csv")).unwrap();
     assert!(csv.starts_with("\u{feff}student,submission,"), "{csv}");
-    assert_eq!(csv.lines().count(), 11, "{csv}");
+    assert_eq!(csv.lines().count(), 12, "{csv}");
     assert!(csv.contains("\n,slip.zip,,,,,,0,,\n"), "{csv}");
     let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
-    assert!(md.contains("submissions: 10") && md.contains("## Not graded"), "{md}");
-    assert_eq!(md.matches("\n- ").count(), 10, "{md}");
+    assert!(md.contains("submissions: 11") && md.contains("## Not graded"), "{md}");
+    assert_eq!(md.matches("\n- ").count(), 11, "{md}");
     // Graded with limits only: the summary says so.
     assert!(md.contains("## Graded without a sandbox"), "{md}");
 

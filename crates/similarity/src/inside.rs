@@ -16,8 +16,10 @@ use std::sync::Arc;
 
 use cg_core::lang::Text;
 use cg_core::text::Encoding;
+use cg_grade::moodle::input::MAX_DOWNLOAD_ENTRIES;
 use cg_grade::moodle::input::{Entry, MAX_UPLOAD_ZIP_BYTES, Origin};
 use cg_grade::submission::{MAX_ZIP_ENTRIES, MODULES, unsafe_name};
+use cg_grade::zipfile;
 
 /// The largest report read: 4 MiB (a report is some tens of KiB; its figures are other files).
 pub const MAX_REPORT_BYTES: u64 = 4 << 20;
@@ -210,16 +212,12 @@ fn read(item: &Item) -> Result<Found, Text> {
         }
         Loc::Zip(path, at) => {
             let file = std::fs::File::open(path.as_path()).map_err(|e| unreadable_io(rel, &e))?;
-            from_zip(
-                zip::ZipArchive::new(file)
-                    .map_err(|e| skipped(rel, &cg_grade::submission::zip_reason(&e)))?,
-                *at,
-                rel,
-            )?
+            let zip = zipfile::open(file, MAX_DOWNLOAD_ENTRIES).map_err(|t| skipped(rel, &t))?;
+            from_zip(zip, *at, rel)?
         }
         Loc::Bytes(bytes, at) => {
-            let zip = zip::ZipArchive::new(Cursor::new(bytes.as_slice()))
-                .map_err(|e| skipped(rel, &cg_grade::submission::zip_reason(&e)))?;
+            let zip = zipfile::open(Cursor::new(bytes.as_slice()), MAX_ZIP_ENTRIES)
+                .map_err(|t| skipped(rel, &t))?;
             from_zip(zip, *at, rel)?
         }
     };
@@ -313,11 +311,12 @@ fn list_disk_zip(
         return;
     }
     let Ok(file) = std::fs::File::open(path) else { return };
-    let Ok(mut zip) = zip::ZipArchive::new(file) else { return };
+    // A Moodle download (its participant's items chosen) may hold a whole class.
+    let most = if chosen.is_some() { MAX_DOWNLOAD_ENTRIES } else { MAX_ZIP_ENTRIES };
+    let Ok(mut zip) = zipfile::open(file, most) else { return };
     let shared = Arc::new(path.to_path_buf());
     let all: Vec<(usize, Option<String>)> = match chosen {
         Some(items) => items.iter().map(|(i, rel)| (*i, Some(rel.clone()))).collect(),
-        None if zip.len() > MAX_ZIP_ENTRIES => return,
         None => (0..zip.len()).map(|i| (i, None)).collect(),
     };
     // The inner zips kept in memory for their reports, together at most one upload's largest
@@ -356,10 +355,9 @@ fn list_disk_zip(
 
 /// The files that may matter in a zip inside an upload, each named `prefix/…`.
 fn list_bytes_zip(bytes: Arc<Vec<u8>>, prefix: &str, out: &mut Vec<Item>) {
-    let Ok(mut zip) = zip::ZipArchive::new(Cursor::new(bytes.as_slice())) else { return };
-    if zip.len() > MAX_ZIP_ENTRIES {
+    let Ok(mut zip) = zipfile::open(Cursor::new(bytes.as_slice()), MAX_ZIP_ENTRIES) else {
         return;
-    }
+    };
     for i in 0..zip.len() {
         let Ok(e) = zip.by_index_raw(i) else { continue };
         let name = entry_name(e.name_raw(), &e.name().unwrap_or_default());

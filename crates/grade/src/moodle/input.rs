@@ -328,13 +328,7 @@ fn from_download_zip(path: &Path) -> Result<Vec<Entry>, Text> {
         )
     };
     let file = std::fs::File::open(path).map_err(|e| cannot_read(&shown, &e))?;
-    let mut zip = zip::ZipArchive::new(file).map_err(|e| in_download(bad_zip(&e)))?;
-    if zip.len() > MAX_DOWNLOAD_ENTRIES {
-        return Err(in_download(text(
-            format!("項目が多すぎます（{}、上限 {MAX_DOWNLOAD_ENTRIES}）", zip.len()),
-            format!("too many entries ({}, at most {MAX_DOWNLOAD_ENTRIES})", zip.len()),
-        )));
-    }
+    let mut zip = crate::zipfile::open(file, MAX_DOWNLOAD_ENTRIES).map_err(in_download)?;
     let mut names = Vec::with_capacity(zip.len());
     for i in 0..zip.len() {
         let entry = zip.by_index_raw(i).map_err(|e| in_download(bad_zip(&e)))?;
@@ -495,7 +489,7 @@ fn from_zip(
 ) -> Result<Vec<(String, Vec<u8>)>, Text> {
     let file =
         std::fs::File::open(path).map_err(|e| cannot_read(&path.display().to_string(), &e))?;
-    let mut zip = zip::ZipArchive::new(file).map_err(|e| bad_zip(&e))?;
+    let mut zip = crate::zipfile::open(file, MAX_DOWNLOAD_ENTRIES)?;
     let mut found = Vec::new();
     for (i, rel) in items {
         let entry = zip.by_index(*i).map_err(|e| bad_zip(&e))?;
@@ -531,13 +525,7 @@ fn inside(
     taken: &mut Taken,
 ) -> Result<Vec<(String, Vec<u8>)>, Text> {
     let within = |t: Text| text(format!("{rel}: {}", t.ja), format!("{rel}: {}", t.en));
-    let mut zip = zip::ZipArchive::new(reader).map_err(|e| within(bad_zip(&e)))?;
-    if zip.len() > MAX_ZIP_ENTRIES {
-        return Err(within(text(
-            format!("zip の項目が多すぎます（{}、上限 {MAX_ZIP_ENTRIES}）", zip.len()),
-            format!("too many entries in the zip ({}, at most {MAX_ZIP_ENTRIES})", zip.len()),
-        )));
-    }
+    let mut zip = crate::zipfile::open(reader, MAX_ZIP_ENTRIES).map_err(within)?;
     let mut found = Vec::new();
     for i in 0..zip.len() {
         let entry = zip.by_index(i).map_err(|e| within(bad_zip(&e)))?;
