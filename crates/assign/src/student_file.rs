@@ -162,9 +162,10 @@ pub fn parse_student_file(bytes: &[u8], file: &str) -> Result<StudentFile, Stude
         )));
     }
     let table: toml::Table = toml::from_str(&text).map_err(|e| {
+        let said = cg_core::toml_syntax::at(&text, e.message(), e.span());
         invalid(Text::new(
-            format!("TOML の書き方の誤りです（構文エラー）: {e}"),
-            format!("TOML syntax error: {e}"),
+            format!("TOML の書き方の誤りです（構文エラー）: {}", said.ja),
+            format!("TOML syntax error: {}", said.en),
         ))
     })?;
     if let Some(key) = table.keys().find(|k| !matches!(k.as_str(), "student" | "table")) {
@@ -282,7 +283,16 @@ mod tests {
             ("studnet = \"12345678\"\n", "no key `studnet`", "`studnet` というキーはありません"),
             ("table = 1\n", "student is missing", "student がありません"),
             ("student = \"12345678\"\ntable = 9\n", "no table 9", "table = 9"),
-            ("student = \"1\"\nstudent = \"2\"\n", "TOML syntax error", "構文エラー"),
+            (
+                "student = \"1\"\nstudent = \"2\"\n",
+                "TOML syntax error: line 2, column 1: duplicate key",
+                "構文エラー）: 2 行 1 列: 同じキーが 2 回書かれています",
+            ),
+            (
+                "student = \"12345678\"\ntable 1\n",
+                "line 2, column 7: key with no value",
+                "2 行 7 列: キーの後に = と値がありません（ここに来るはずのもの: `=`）",
+            ),
         ] {
             std::fs::write(&path, text).unwrap();
             let e = read_student_file(&path).unwrap_err();

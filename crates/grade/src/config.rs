@@ -93,9 +93,10 @@ impl Config {
     /// negative or not a number.
     pub fn parse(text: &str) -> Result<Config, ConfigError> {
         let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
+            let said = cg_core::toml_syntax::at(text, e.message(), e.span());
             ConfigError::new(
-                format!("採点設定を読めません: {e}"),
-                format!("the grading config is not valid TOML: {e}"),
+                format!("採点設定を読めません（TOML の構文エラー）: {}", said.ja),
+                format!("the grading config is not valid TOML: {}", said.en),
             )
         })?;
         let mut config = Config::default();
@@ -196,7 +197,13 @@ mod tests {
         assert!(Config::parse("default = -1").is_err());
         assert!(Config::parse("[points]\na1 = \"two\"").is_err());
         assert!(Config::parse("weights = 3").unwrap_err().message(Lang::En).contains("weights"));
-        assert!(!Config::parse("default = [").unwrap_err().message(Lang::Ja).is_empty());
+        // The parser's English is said in Japanese too, with its line and column.
+        let e = Config::parse("default = 1\n[points\n").unwrap_err();
+        assert_eq!(
+            e.message(Lang::Ja),
+            "採点設定を読めません（TOML の構文エラー）: 2 行 8 列: [ ] が閉じていません（ここに来るはずのもの: `]`）"
+        );
+        assert!(e.message(Lang::En).contains("line 2, column 8: unclosed table"), "{e}");
     }
 
     /// A rule that names no check of the kit (a typo, a task that does not exist) is said with
