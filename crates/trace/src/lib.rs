@@ -148,3 +148,15 @@ use cg_core::scene::Scene;
 pub fn render(scene: &Scene, options: &Options) -> Result<Output, TraceError> {
     Ok(Tracer::new(scene, options)?.render())
 }
+
+/// [`render`], calling `row_done` as each row of the image is finished ([`Tracer::render_with`]).
+///
+/// # Errors
+/// As [`render`].
+pub fn render_with(
+    scene: &Scene,
+    options: &Options,
+    row_done: &(dyn Fn() + Sync),
+) -> Result<Output, TraceError> {
+    Ok(Tracer::new(scene, options)?.render_with(row_done))
+}

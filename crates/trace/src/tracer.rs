@@ -434,6 +434,13 @@ impl<'s> Tracer<'s> {
     /// [`Options::ray_budget`].
     #[must_use]
     pub fn render(&self) -> Output {
+        self.render_with(&|| {})
+    }
+
+    /// [`Tracer::render`], calling `row_done` (from the worker threads) as each row of the
+    /// image is finished: a caller's progress bar, for a scene that takes minutes.
+    #[must_use]
+    pub fn render_with(&self, row_done: &(dyn Fn() + Sync)) -> Output {
         let run = || {
             let (w, h) = (self.width as usize, self.height as usize);
             let mut pixels = vec![Rgb::ZERO; w * h];
@@ -448,6 +455,7 @@ impl<'s> Tracer<'s> {
                         let color = self.trace(&ray, 0, &mut stats);
                         *pixel = color.clamp(Rgb::ZERO, Rgb::ONE);
                     }
+                    row_done();
                     stats
                 })
                 .reduce(Stats::default, |mut a, b| {

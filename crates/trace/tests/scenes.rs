@@ -35,6 +35,21 @@ fn glass_mirror_renders_without_nan_and_casts_both_kinds_of_global_rays() {
     assert!(s.hits_per_depth[1..].iter().all(|&n| n > 0), "hits at every depth: {s:?}");
 }
 
+/// Each finished row is reported once (a progress bar's steps), from the worker threads, and
+/// the image is the one `render` draws.
+#[test]
+fn render_with_reports_each_row_once_and_draws_the_same_image() {
+    let scene = shipped("glass-mirror");
+    let rows = std::sync::atomic::AtomicUsize::new(0);
+    let options = Options { size: Some((40, 24)), threads: Some(2), ..Options::default() };
+    let out = cg_trace::render_with(&scene, &options, &|| {
+        rows.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    })
+    .unwrap();
+    assert_eq!(rows.into_inner(), 24);
+    assert_eq!(out.image, cg_trace::render(&scene, &options).unwrap().image);
+}
+
 #[test]
 fn the_mirror_sphere_shows_a_reflection() {
     // Pixels whose primary ray hits the mirror change when its k_r is set to 0.
