@@ -19,9 +19,9 @@ use cg_core::texture::{Filter, Sampler, TexEnv, Wrap};
 use cg_core::transform::{TransformError, look_at, perspective};
 
 use crate::error::{ErrorKind, Expected, Rule, SceneError};
+use crate::load_texture;
 use crate::reader::{At, Source, Table, Value};
 use crate::shape::{ShapeAt, ShapeSpec};
-use crate::{load_obj, load_texture};
 
 mod lights;
 use lights::{read_light, read_material, read_materials};
@@ -245,8 +245,9 @@ impl SceneSpec {
     /// however many objects use it.
     ///
     /// The faces of the built-in shapes are counted first, from their parameters, and each OBJ
-    /// model's are added as it loads: more than [`crate::MAX_SCENE_FACES`] in all is an error at
-    /// the shape or model that goes over, before anything more is built.
+    /// model's are added from its `f` lines, after its lines are checked and before it is loaded:
+    /// more than [`crate::MAX_SCENE_FACES`] in all is an error at the shape or model that goes
+    /// over, before anything more is built.
     pub(crate) fn build(self, src: &Source<'_>) -> Result<Scene, SceneError> {
         let mut faces = crate::limits::shape_faces(&self.objects, src)?;
         let mut scene = self.scene;
@@ -261,9 +262,16 @@ impl SceneSpec {
                     shape.mesh().map_err(|e| at.of(e.parameter).error(src, ErrorKind::Shape(e)))?
                 }
                 Geometry::Obj(path, at) => {
-                    let mesh =
-                        load_obj(path).map_err(|e| at.error(src, ErrorKind::File(Box::new(e))))?;
-                    crate::limits::add_model_faces(&mut faces, &mesh, at, src)?;
+                    let in_file = |e| at.error(src, ErrorKind::File(Box::new(e)));
+                    let text = crate::read_text(path, None, false).map_err(in_file)?;
+                    let model = crate::obj::check(&text, path).map_err(in_file)?;
+                    // Counted from its lines, before tobj loads it (a model of too many faces
+                    // took about 1 GB before it was refused); then as loaded.
+                    let counted = model.faces();
+                    crate::limits::add_model_faces(&mut faces, counted, at, src)?;
+                    let mesh = model.load().map_err(in_file)?;
+                    debug_assert!(mesh.face_count() as u64 <= counted, "the count is a bound");
+                    faces = faces - counted + mesh.face_count() as u64;
                     mesh
                 }
             };

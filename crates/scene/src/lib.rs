@@ -111,14 +111,16 @@ pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
 /// when each position is used with one `vt`/`vn` pair and every `v` line is used (as in the
 /// course's models); otherwise vertices follow the file's `v` order, with a position used with
 /// several `vt`/`vn` pairs split into several vertices. Normals (unit length after loading) and
-/// texture coordinates are kept when every face corner has them. The `.mtl` file is not read:
+/// texture coordinates are kept when every face corner has them; vertex colours
+/// (`v x y z r g b`, on some `v` lines or all) are read and ignored. The `.mtl` file is not read:
 /// materials come from the scene.
 ///
 /// # Errors
 /// The file cannot be read; a line is malformed (a word that is not a number, too few
 /// coordinates, a face corner that is not `v`, `v/vt`, `v//vn` or `v/vt/vn`, a position at
-/// infinity); a face index is 0 or refers to an element not defined on the lines before the face
-/// — each of these naming the line and column; a face of four or more corners that crosses itself,
+/// infinity); a face index is 0 or refers to an element not defined on the lines before the face;
+/// a face's corners are not written alike (`f 1//1 2//2 3`) or use one `v` twice
+/// (`f 1 2 3 4 1 2 3 4`) — each of these naming the line and column; a face of four or more corners that crosses itself,
 /// or is concave with more than [`MAX_CONCAVE_CORNERS`] corners (naming its line and column); the
 /// file has no faces; some corners have `vn` or
 /// `vt` and others do not; or a normal or texture coordinate is not usable (zero or non-finite).

@@ -1,5 +1,6 @@
 //! Wavefront OBJ models via tobj: positions, and normals and texture coordinates when every face
-//! corner has them; all groups merged into one mesh, in the file's vertex order.
+//! corner has them (vertex colours, `v x y z r g b`, are read and ignored); all groups merged into
+//! one mesh, in the file's vertex order.
 
 use std::collections::HashSet;
 use std::path::Path;
@@ -14,15 +15,50 @@ pub(crate) mod polygon;
 
 /// Reads an OBJ model from text; `path` names it in errors. See [`crate::load_obj`].
 pub(crate) fn parse_obj(text: &str, path: &Path) -> Result<Mesh, SceneError> {
+    check(text, path)?.load()
+}
+
+/// An OBJ file whose every line has been checked ([`check`]), and its faces counted, before
+/// tobj loads it.
+pub(crate) struct Checked<'a> {
+    text: &'a str,
+    path: &'a Path,
+    scan: Scan,
+}
+
+/// Checks every line of an OBJ file and counts its faces (see [`scan`]), without loading it; an
+/// error names the line and column.
+pub(crate) fn check<'a>(text: &'a str, path: &'a Path) -> Result<Checked<'a>, SceneError> {
+    // Before tobj sees the file: tobj's own errors name no line, and huge face indices make
+    // tobj 4.0.5's index arithmetic overflow (`vn * 3 + 2`, a panic in debug builds); here every
+    // line tobj would reject is an error that names the line and column.
+    let scan = scan(text).map_err(|(position, kind)| SceneError {
+        position: Some(position),
+        ..SceneError::in_file(path, kind)
+    })?;
+    Ok(Checked { text, path, scan })
+}
+
+impl Checked<'_> {
+    /// The faces (triangles) the model will have at most: each `f` line of n ≥ 3 corners counts
+    /// n − 2, as its fan has. Exact, except that ear clipping gives fewer for a concave face with
+    /// corners at one place, which it drops.
+    pub(crate) fn faces(&self) -> u64 {
+        self.scan.faces
+    }
+
+    /// Loads the checked file with tobj into one mesh.
+    pub(crate) fn load(self) -> Result<Mesh, SceneError> {
+        load(self.text, self.path, self.scan)
+    }
+}
+
+/// [`Checked::load`].
+fn load(text: &str, path: &Path, scan: Scan) -> Result<Mesh, SceneError> {
     let error = |position: Option<Position>, kind| SceneError {
         position,
         ..SceneError::in_file(path, kind)
     };
-    // Before tobj sees the file: tobj's own errors name no line, and huge face indices make
-    // tobj 4.0.5's index arithmetic overflow (`vn * 3 + 2`, a panic in debug builds); here every
-    // line tobj would reject is an error that names the line and column.
-    let file_order = scan(text).map_err(|(position, kind)| error(Some(position), kind))?;
-
     let options = tobj::LoadOptions {
         // Polygons are split here (`polygon`): tobj's fan folds a concave one.
         triangulate: false,
@@ -30,15 +66,10 @@ pub(crate) fn parse_obj(text: &str, path: &Path) -> Result<Mesh, SceneError> {
         ignore_points: true,
         ignore_lines: true,
     };
-    // Points and lines (`p`, `l`) are not surfaces: tobj's options drop a two-point line, but
-    // it would triangulate `l 1 2 3 4`, a wire outline, into a filled polygon. Their lines are
-    // blanked before tobj reads the file (`scan` has checked their indices).
-    let surfaces: std::borrow::Cow<'_, str> = if text.lines().any(wire) {
-        text.lines()
-            .map(|line| if wire(line) { "" } else { line })
-            .collect::<Vec<_>>()
-            .join("\n")
-            .into()
+    // Lines are given to tobj as `for_tobj` makes them, when that changes any (`scan` has
+    // checked them all first).
+    let surfaces: std::borrow::Cow<'_, str> = if scan.rewrite {
+        text.lines().map(for_tobj).collect::<Vec<_>>().join("\n").into()
     } else {
         text.into()
     };
@@ -47,6 +78,7 @@ pub(crate) fn parse_obj(text: &str, path: &Path) -> Result<Mesh, SceneError> {
     let (models, _) =
         tobj::load_obj_buf(&mut surfaces.as_bytes(), &options, |_| Ok(Default::default()))
             .map_err(|e| error(None, ErrorKind::Obj(e)))?;
+    let file_order = scan.file_order;
 
     let mut positions = Vec::new();
     let mut normals = Attribute::new("vn");
@@ -181,13 +213,35 @@ fn place(line_index: usize, line: &str, word: &str) -> Position {
 /// The elements that face corners refer to, in the order `v/vt/vn`.
 const ELEMENTS: [&str; 3] = ["v", "vt", "vn"];
 
-/// Whether an OBJ line is a point or a line element (`p`, `l`): no surface, left out.
-fn wire(line: &str) -> bool {
-    matches!(line.split_whitespace().next(), Some("p" | "l"))
+/// An OBJ line as tobj is given it: a point or line element (`p`, `l`) blanked — not surfaces:
+/// tobj's options drop a two-point line, but it would triangulate `l 1 2 3 4`, a wire outline,
+/// into a filled polygon — and a `v` line's colour (`r g b`) cut off. The kit does not use
+/// vertex colours, and tobj refuses a file where some `v` lines have one and others do not.
+fn for_tobj(line: &str) -> &str {
+    let mut words = line.split_whitespace();
+    match words.next() {
+        Some("p" | "l") => "",
+        Some("v") => match (words.nth(2), words.count()) {
+            // x y z r g b (`scan` has checked that there are 3, 4 or 6 values).
+            (Some(z), 3) => &line[..z.as_ptr() as usize - line.as_ptr() as usize + z.len()],
+            _ => line,
+        },
+        _ => line,
+    }
 }
 
 /// An error of [`scan`]: where, and what.
 type ScanError = (Position, ErrorKind);
+
+/// What [`scan`] learns of a file on the way.
+struct Scan {
+    /// For each vertex tobj will create, the 0-based `v` line it takes its position from.
+    file_order: Vec<usize>,
+    /// The faces (triangles) of the `f` lines of three or more corners: n − 2 for n corners.
+    faces: u64,
+    /// Whether [`for_tobj`] changes a line (a `p` or `l` line, a `v` line with a colour).
+    rewrite: bool,
+}
 
 /// Reads the file as tobj will, line by line, and reports with its line and column every line
 /// that tobj would reject (or mis-read) without saying where: `v`, `vt` and `vn` lines with too
@@ -195,16 +249,21 @@ type ScanError = (Position, ErrorKind);
 /// that is not finite), face corners that are not `v`, `v/vt`, `v//vn` or `v/vt/vn`, indices
 /// that are not numbers, and indices that refer to no element read so far (1-based; negative
 /// ones count back from the last element read; 0 does not exist; an element defined further
-/// down the file does not count, as in the OBJ specification).
+/// down the file does not count, as in the OBJ specification). A face of three or more corners
+/// must also write every corner alike (one corner `1//1` and another `3` left tobj with normals
+/// for some vertices only) and use each `v` once (`f 1 2 3 4 1 2 3 4` goes round twice).
 ///
-/// Returns, for each vertex tobj will create, the 0-based `v` line it takes its position from.
-/// tobj creates one vertex per distinct `v/vt/vn` triple of each group (`o`/`g`), in order of
-/// first use.
-fn scan(text: &str) -> Result<Vec<usize>, ScanError> {
+/// Counts the faces on the way, without keeping anything per face, so that a model with too many
+/// can be refused before tobj loads it. tobj creates one vertex per distinct `v/vt/vn` triple of
+/// each group (`o`/`g`), in order of first use: [`Scan::file_order`].
+fn scan(text: &str) -> Result<Scan, ScanError> {
     let mut read = [0usize; 3];
-    let mut file_order = Vec::new();
+    let mut out = Scan { file_order: Vec::new(), faces: 0, rewrite: false };
     let mut seen: HashSet<[usize; 3]> = HashSet::new();
     let mut group_has_faces = false;
+    // The corners of one face line, and their `v` indices sorted; kept from line to line.
+    let mut corners: Vec<([usize; 3], &str)> = Vec::new();
+    let mut sorted: Vec<(usize, usize)> = Vec::new();
     for (line_index, line) in text.lines().enumerate() {
         let at = |word: &str| place(line_index, line, word);
         let mut words = line.split_whitespace();
@@ -216,37 +275,83 @@ fn scan(text: &str) -> Result<Vec<usize>, ScanError> {
                 check_values(ELEMENTS[k], keyword, &values)
                     .map_err(|(word, kind)| (at(word), kind))?;
                 read[k] += 1;
+                out.rewrite |= keyword == "v" && values.len() == 6;
             }
             "o" | "g" if group_has_faces => {
                 seen.clear();
                 group_has_faces = false;
             }
+            "p" => out.rewrite = true,
             "f" | "l" => {
                 let element = if keyword == "f" { "f" } else { "l" };
-                let corners: Vec<&str> = words.collect();
+                out.rewrite |= keyword == "l";
+                corners.clear();
+                for corner in words {
+                    let triple =
+                        resolve(element, corner, &read).map_err(|(word, kind)| (at(word), kind))?;
+                    corners.push((triple, corner));
+                }
                 if corners.is_empty() {
                     return Err((at(keyword), ErrorKind::ObjValues { element, found: 0 }));
                 }
                 group_has_faces = true;
-                let mut triples = Vec::with_capacity(corners.len());
-                for corner in corners {
-                    let triple =
-                        resolve(element, corner, &read).map_err(|(word, kind)| (at(word), kind))?;
-                    triples.push(triple);
+                // Lines are left out (`for_tobj`), as are faces of fewer than three corners.
+                if keyword != "f" || corners.len() < 3 {
+                    continue;
                 }
-                // Lines are left out (`wire`), as are faces of fewer than three corners.
-                if keyword == "f" && triples.len() >= 3 {
-                    for triple in triples {
-                        if seen.insert(triple) {
-                            file_order.push(triple[0]);
-                        }
+                check_face(&corners, &mut sorted).map_err(|(word, kind)| (at(word), kind))?;
+                out.faces += corners.len() as u64 - 2;
+                for &(triple, _) in &corners {
+                    if seen.insert(triple) {
+                        out.file_order.push(triple[0]);
                     }
                 }
             }
             _ => {}
         }
     }
-    Ok(file_order)
+    Ok(out)
+}
+
+/// Checks that the corners of a face (each its `v/vt/vn` indices, as [`resolve`] gives them, and
+/// the word) are written alike, with or without `vt` and `vn` as the first one is, and that no
+/// `v` comes twice; an error names the word of the corner that differs or comes again.
+/// `sorted` is a buffer.
+fn check_face<'a>(
+    corners: &[([usize; 3], &'a str)],
+    sorted: &mut Vec<(usize, usize)>,
+) -> Result<(), (&'a str, ErrorKind)> {
+    let (first, first_word) = corners[0];
+    for &(triple, word) in &corners[1..] {
+        for k in 1..3 {
+            let has = triple[k] != usize::MAX;
+            if has != (first[k] != usize::MAX) {
+                let kind = ErrorKind::ObjCornerForm {
+                    corner: word.to_owned(),
+                    first: first_word.to_owned(),
+                    element: ELEMENTS[k],
+                    has,
+                };
+                return Err((word, kind));
+            }
+        }
+    }
+    // The first corner that repeats a `v` of an earlier one: sorted by `v`, then by corner, the
+    // second of each run of equal `v`.
+    sorted.clear();
+    sorted.extend(corners.iter().enumerate().map(|(i, (triple, _))| (triple[0], i)));
+    sorted.sort_unstable();
+    let repeat = sorted.windows(2).filter(|w| w[0].0 == w[1].0).min_by_key(|w| w[1].1);
+    if let Some(&[(v, first), (_, again)]) = repeat {
+        let word = corners[again].1;
+        let kind = ErrorKind::ObjRepeatedVertex {
+            corner: word.to_owned(),
+            vertex: v + 1,
+            first: first + 1,
+        };
+        return Err((word, kind));
+    }
+    Ok(())
 }
 
 /// Checks the values of a `v`, `vt` or `vn` line (`keyword` is the line's first word); an error

@@ -57,6 +57,11 @@ pitch_deg = -30.0 x
     let e = error(text);
     assert_eq!(e.position.map(|p| p.line), Some(2), "{e}");
     assert!(matches!(*e.kind, ErrorKind::Syntax { .. }), "{e}");
+    // The parser's English is said in Japanese too (cg_core::toml_syntax).
+    let ja = e.describe(Lang::Ja);
+    assert!(ja.contains("構文エラー）: 文字列（\"…\"）が正しくありません"), "{ja}");
+    assert!(!ja.contains("invalid basic string"), "{ja}");
+    assert!(e.describe(Lang::En).contains("invalid basic string"), "{e}");
 
     // A key given twice: which key, and where it was first (the TOML parser says neither).
     let text = "format = 1\n[window]\nwidth = 640\n  height = 480\n  width = 320\n";

@@ -321,6 +321,84 @@ fn lines_tobj_rejects_are_named_with_their_line_and_column() {
     );
 }
 
+/// Checks that `e` is `kind` at `line` and `column` of model.obj, and that both languages name
+/// the place and `word`.
+#[track_caller]
+fn assert_named(e: &SceneError, kind: &ErrorKind, line: usize, column: usize, word: &str) {
+    assert_eq!(*e.kind, *kind, "{e}");
+    assert_eq!(e.position.map(|p| (p.line, p.column)), Some((line, column)), "{e}");
+    for message in [e.describe(Lang::En), e.describe(Lang::Ja)] {
+        assert!(message.starts_with(&format!("model.obj:{line}:{column}: ")), "{message}");
+        assert!(message.contains(&format!("`{word}`")), "{message}");
+    }
+}
+
+#[test]
+fn face_corners_written_unlike_the_first_are_named() {
+    // Some corners with a normal or texture coordinate and others without, in one face: tobj
+    // loads it with normals for some vertices only, and the loader said "some face corners have
+    // vn and others do not", with no line.
+    const TRI: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n";
+    let cases = [
+        ("f 1//1 2//1 3", 13, "3", "1//1", "vn", false),
+        ("f 1/1 2/1 3", 11, "3", "1/1", "vt", false),
+        ("f 1 2//1 3//1", 5, "2//1", "1", "vn", true),
+        ("f 1/1/1 2/1/1 3//1", 15, "3//1", "1/1/1", "vt", false),
+    ];
+    for (face, column, corner, first, element, has) in cases {
+        let e = obj_error(&format!("{TRI}{face}\n"));
+        let kind =
+            ErrorKind::ObjCornerForm { corner: corner.into(), first: first.into(), element, has };
+        assert_named(&e, &kind, 6, column, corner);
+        assert!(e.to_string().contains(&format!("first corner `{first}`")), "{e}");
+    }
+    // The premise: tobj alone loads the first.
+    assert_eq!(tobj_alone(&format!("{TRI}f 1//1 2//1 3\n")), Ok(1));
+}
+
+#[test]
+fn a_face_that_uses_a_vertex_twice_is_named() {
+    const SQUARE: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 1\n";
+    // The corner that comes again, with the `v` it uses and the corner that used it first.
+    let cases = [
+        // A square gone round twice: it was accepted, each triangle drawn twice.
+        ("f 1 2 3 4 1 2 3 4", 11, "1", 1, 1),
+        ("f 1 2 3 -3", 9, "-3", 2, 2),
+        // The same `v` with another `vt` is still the same vertex.
+        ("f 1/1 2/1 3/1 4/1 2/2", 19, "2/2", 2, 2),
+        ("f 1 1 2", 5, "1", 1, 1),
+    ];
+    for (face, column, corner, vertex, first) in cases {
+        let e = obj_error(&format!("{SQUARE}{face}\n"));
+        let kind = ErrorKind::ObjRepeatedVertex { corner: corner.into(), vertex, first };
+        assert_named(&e, &kind, 7, column, corner);
+        assert!(e.to_string().contains(&format!("v number {vertex}")), "{e}");
+    }
+    // Two `v` lines at one place are two vertices: a corner on top of another is accepted, as
+    // before (its triangle has no area), and so is a face of fewer than three corners (dropped).
+    let text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 0 0\nf 1 2 3 4\nf 1 1\n";
+    assert_eq!(parse_obj(text, Path::new("model.obj")).unwrap().face_count(), 2);
+}
+
+#[test]
+fn vertex_colours_are_read_and_ignored() {
+    // `v x y z r g b` on some lines and `v x y z` (or `v x y z w`) on others: tobj refused the
+    // file ("face vertex color index out of bounds", no line). The kit uses no vertex colours.
+    let text = "v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 1 0\nv 0 0 2 2\nl 1 2\nf 1 2 3\nf 1 2 4\n";
+    assert_eq!(tobj_alone(text), Err(tobj::LoadError::FaceColorOutOfBounds));
+    let m = parse_obj(text, Path::new("model.obj")).unwrap();
+    assert_eq!(m.positions, [Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z]);
+    assert_eq!(m.faces, [[0, 1, 2], [0, 1, 3]]);
+    // Plain lines first, then coloured ones.
+    let text = "v 0 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nf 1 2 3\n";
+    assert_eq!(tobj_alone(text), Err(tobj::LoadError::FaceColorOutOfBounds));
+    let m = parse_obj(text, Path::new("model.obj")).unwrap();
+    assert_eq!(m.positions, [Vec3::ZERO, Vec3::X, Vec3::Y]);
+    // Every line coloured: loaded as before.
+    let text = "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nf 1 2 3\n";
+    assert_eq!(parse_obj(text, Path::new("model.obj")).unwrap().faces, [[0, 1, 2]]);
+}
+
 #[test]
 fn missing_obj_file_is_named() {
     let dir = folder("missing_obj");

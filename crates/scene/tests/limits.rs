@@ -318,6 +318,32 @@ fn too_many_faces_in_all_are_refused_before_any_is_built() {
 }
 
 #[test]
+fn an_obj_model_over_the_face_limit_is_refused_before_it_is_loaded() {
+    // A model's faces are counted from its `f` lines (n − 2 for n corners) while its lines are
+    // checked, and the limit is applied before tobj loads it: a 64 MiB model of too many faces
+    // took about 1 GB before it was refused. Nothing found only while loading (here a bow tie,
+    // a quad that crosses itself, on the last line) comes first: the model was never loaded.
+    let dir = cg_testkit::student_folder("cg-scene-limits", "faces-before-loading");
+    let mut obj = String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n");
+    obj.push_str(&"f 1 2 3\n".repeat(1000));
+    obj.push_str("f 1 2 3 4\n");
+    std::fs::write(dir.join("many.obj"), &obj).unwrap();
+    // Alone it is the bow tie's error, at its line, once loaded.
+    let e = cg_scene::parse_obj(&obj, Path::new("many.obj")).unwrap_err();
+    assert!(matches!(*e.kind, ErrorKind::ObjPolygon { corners: 4, .. }), "{e}");
+    assert_eq!(e.position.map(|p| p.line), Some(1005), "{e}");
+    // After shapes of 4 999 042 faces (counted, none built): the limit, at its `mesh` key.
+    let text = "format = 1\n[[objects]]\nname = \"m\"\nmesh = \"many.obj\"\n[[objects]]\nname = \"g\"\nshape = { kind = \"grid\", divisions = 1414, size = 10 }\n[[objects]]\nname = \"t\"\nshape = { kind = \"torus\", major = 2, minor = 1, major_segments = 4001, minor_segments = 125 }\n";
+    let e = cg_scene::parse(text, &dir.join("scene.toml")).unwrap_err();
+    assert_eq!(e.position.map(|p| p.line), Some(4), "{e}");
+    assert_eq!(e.key.as_deref(), Some("objects[0].mesh"), "{e}");
+    assert_eq!(*limit(&e), LimitError::SceneFaces { faces: 4_999_042 + 1000 + 2 });
+    assert!(e.to_string().contains("5000044 faces (triangles) in all"), "{e}");
+    assert!(e.describe(Lang::Ja).contains("合わせて 5000044 個"), "{}", e.describe(Lang::Ja));
+    cg_testkit::remove_student_folder(&dir);
+}
+
+#[test]
 fn too_many_point_lights_in_all_are_refused() {
     let light = |samples: &str| {
         format!(

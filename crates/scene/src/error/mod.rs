@@ -256,6 +256,28 @@ pub enum ErrorKind {
         /// The corner as written.
         corner: String,
     },
+    /// A face corner of an OBJ file written unlike the face's first corner: with a `vt` or `vn`
+    /// that the first does not have, or without one that it has (`f 1//1 2//2 3`).
+    ObjCornerForm {
+        /// The corner as written.
+        corner: String,
+        /// The face's first corner as written.
+        first: String,
+        /// `vt` or `vn`: what one has and the other has not (`vt` when both differ).
+        element: &'static str,
+        /// Whether `corner` has it (and `first` has not).
+        has: bool,
+    },
+    /// A face of an OBJ file that uses one `v` at two of its corners (`f 1 2 3 4 1 2 3 4`, a face
+    /// that goes round twice or touches itself; `f 1 1 2`).
+    ObjRepeatedVertex {
+        /// The corner that uses it again, as written.
+        corner: String,
+        /// The `v` (1-based, counted from the file's first `v` line, whatever was written).
+        vertex: usize,
+        /// Which corner of the face (1-based) used it first.
+        first: usize,
+    },
     /// A `v` line of an OBJ file has w = 0, or a coordinate that is not finite (after the
     /// division by w).
     ObjPosition {

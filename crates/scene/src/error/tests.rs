@@ -12,7 +12,7 @@ use cg_core::transform::TransformError;
 use super::*;
 
 /// How many variants [`ErrorKind`] has; [`kind_index`] numbers them `0..KINDS`.
-const KINDS: usize = 49;
+const KINDS: usize = 51;
 
 /// A number for each variant of [`ErrorKind`] (the match is exhaustive, so a new variant does not
 /// compile until it is numbered here, and [`every_kind_has_a_sample`] fails until it has a
@@ -68,6 +68,8 @@ fn kind_index(kind: &ErrorKind) -> usize {
         ErrorKind::NameTooLong { .. } => 46,
         ErrorKind::WeldMergesSeam { .. } => 47,
         ErrorKind::ObjZeroNormal => 48,
+        ErrorKind::ObjCornerForm { .. } => 49,
+        ErrorKind::ObjRepeatedVertex { .. } => 50,
     }
 }
 
@@ -275,6 +277,19 @@ fn samples() -> Vec<ErrorKind> {
         ErrorKind::ObjValues { element: "vt", found: 1 },
         ErrorKind::ObjValues { element: "vn", found: 2 },
         ErrorKind::ObjCorner { corner: "1/2/3/4".into() },
+        ErrorKind::ObjCornerForm {
+            corner: "3".into(),
+            first: "1//1".into(),
+            element: "vn",
+            has: false,
+        },
+        ErrorKind::ObjCornerForm {
+            corner: "2/2".into(),
+            first: "1".into(),
+            element: "vt",
+            has: true,
+        },
+        ErrorKind::ObjRepeatedVertex { corner: "1".into(), vertex: 1, first: 1 },
         ErrorKind::ObjPosition { position: [f32::INFINITY; 3], w: 0.0 },
         ErrorKind::ObjPosition { position: [1.0, f32::NAN, 0.0], w: 1.0 },
         ErrorKind::ObjPolygon { corners: 4, problem: crate::PolygonProblem::Crosses },

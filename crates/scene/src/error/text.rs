@@ -45,10 +45,14 @@ impl ErrorKind {
                 format!("ファイルの文字コードを読み取れません: {}", why.ja),
                 format!("cannot read the file's text: {}", why.en),
             ),
-            ErrorKind::Syntax { message } => Text::new(
-                format!("TOML の書き方の誤りです（構文エラー）: {message}"),
-                format!("TOML syntax error: {message}"),
-            ),
+            ErrorKind::Syntax { message } => {
+                // The parser's English, said in Japanese too.
+                let said = cg_core::toml_syntax::message(message);
+                Text::new(
+                    format!("TOML の書き方の誤りです（構文エラー）: {}", said.ja),
+                    format!("TOML syntax error: {}", said.en),
+                )
+            }
             ErrorKind::DuplicateKey { key, first_line: Some(line) } => Text::new(
                 format!(
                     "`{key}` が 2 回書かれています（1 回目は {line} 行目）。どちらかを消してください"
@@ -308,6 +312,47 @@ impl ErrorKind {
                 ),
                 format!(
                     "face corner `{corner}` is not one of v, v/vt, v//vn, v/vt/vn",
+                    corner = shown(corner, Lang::En)
+                ),
+            ),
+            ErrorKind::ObjCornerForm { corner, first, element, has } => {
+                let (corner_ja, first_ja) = (shown(corner, Lang::Ja), shown(first, Lang::Ja));
+                let (corner_en, first_en) = (shown(corner, Lang::En), shown(first, Lang::En));
+                let (ja, en) = if *has {
+                    (
+                        format!(
+                            "面の頂点 `{corner_ja}` には {element} がありますが、この面の最初の頂点 `{first_ja}` にはありません"
+                        ),
+                        format!(
+                            "face corner `{corner_en}` has a `{element}`, but the face's first corner `{first_en}` has none"
+                        ),
+                    )
+                } else {
+                    (
+                        format!(
+                            "面の頂点 `{corner_ja}` には {element} がありませんが、この面の最初の頂点 `{first_ja}` にはあります"
+                        ),
+                        format!(
+                            "face corner `{corner_en}` has no `{element}`, but the face's first corner `{first_en}` has one"
+                        ),
+                    )
+                };
+                Text::new(
+                    format!(
+                        "{ja}。1 つの面の頂点は同じ書き方（v、v/vt、v//vn、v/vt/vn のどれか）にそろえてください"
+                    ),
+                    format!(
+                        "{en}: write every corner of a face alike (one of v, v/vt, v//vn, v/vt/vn)"
+                    ),
+                )
+            }
+            ErrorKind::ObjRepeatedVertex { corner, vertex, first } => Text::new(
+                format!(
+                    "面の頂点 `{corner}` が使う v の {vertex} 番は、この面の {first} 番目の頂点ですでに使われています。1 つの面の頂点はすべて違う v にしてください（自分自身に接する面は 2 つの面に分けて書きます）",
+                    corner = shown(corner, Lang::Ja)
+                ),
+                format!(
+                    "face corner `{corner}` uses v number {vertex}, which corner {first} of this face already uses: every corner of a face is a different `v` (write a face that touches itself as two faces)",
                     corner = shown(corner, Lang::En)
                 ),
             ),

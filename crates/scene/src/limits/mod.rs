@@ -13,7 +13,6 @@ mod text;
 
 use cg_core::glam::{DVec3, Mat4, Vec3};
 use cg_core::light::{Light, LightKind};
-use cg_core::mesh::Mesh;
 use cg_core::normals::normal_matrix;
 use cg_core::product::MatrixProduct;
 use cg_core::scene::{Camera, Object, Scene};
@@ -120,15 +119,15 @@ pub(crate) fn shape_faces(objects: &[ObjectSpec], src: &Source<'_>) -> Result<u6
     Ok(total)
 }
 
-/// Adds the faces of an OBJ model just loaded (named at `at`, its `mesh` key) to `total`; more
-/// than [`MAX_SCENE_FACES`] is an error there.
+/// Adds the `faces` of an OBJ model (named at `at`, its `mesh` key), counted from its lines
+/// before it is loaded, to `total`; more than [`MAX_SCENE_FACES`] is an error there.
 pub(crate) fn add_model_faces(
     total: &mut u64,
-    mesh: &Mesh,
+    faces: u64,
     at: &At,
     src: &Source<'_>,
 ) -> Result<(), SceneError> {
-    *total = total.saturating_add(mesh.face_count() as u64);
+    *total = total.saturating_add(faces);
     if *total > MAX_SCENE_FACES {
         return Err(at.error(src, ErrorKind::Limit(LimitError::SceneFaces { faces: *total })));
     }
