@@ -264,6 +264,8 @@ fn scan(text: &str) -> Result<Scan, ScanError> {
     // The corners of one face line, and their `v` indices sorted; kept from line to line.
     let mut corners: Vec<([usize; 3], &str)> = Vec::new();
     let mut sorted: Vec<(usize, usize)> = Vec::new();
+    // Whether the first face's corners have `vt` and `vn`, and its line (1-based).
+    let mut first_face: Option<([bool; 2], usize)> = None;
     for (line_index, line) in text.lines().enumerate() {
         let at = |word: &str| place(line_index, line, word);
         let mut words = line.split_whitespace();
@@ -300,6 +302,18 @@ fn scan(text: &str) -> Result<Scan, ScanError> {
                     continue;
                 }
                 check_face(&corners, &mut sorted).map_err(|(word, kind)| (at(word), kind))?;
+                // Every face written as the first one is (its corners are alike by now).
+                let (triple, word) = corners[0];
+                let form = [triple[1] != usize::MAX, triple[2] != usize::MAX];
+                let (first, first_line) = *first_face.get_or_insert((form, line_index + 1));
+                if let Some(k) = (0..2).find(|&k| form[k] != first[k]) {
+                    let kind = ErrorKind::ObjFaceForm {
+                        element: ELEMENTS[k + 1],
+                        has: form[k],
+                        first_line,
+                    };
+                    return Err((at(word), kind));
+                }
                 out.faces += corners.len() as u64 - 2;
                 for &(triple, _) in &corners {
                     if seen.insert(triple) {

@@ -136,9 +136,15 @@ fn malformed_obj_files_say_what_is_wrong() {
     assert_eq!(*obj_error("v 0 0 0\nv 1 0 0\n").kind, ErrorKind::ObjNoFaces);
     assert_eq!(*obj_error("").kind, ErrorKind::ObjNoFaces);
     assert_eq!(*obj_error("v 0 0 0\nf 1 1\n").kind, ErrorKind::ObjNoFaces, "a line is not a face");
-    // Normals on some corners only.
+    // Normals on some faces only: at the first face written otherwise, with the first face's
+    // line (it was "some face corners have vn and others do not", with no line).
     let e = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n");
-    assert_eq!(*e.kind, ErrorKind::ObjPartial { element: "vn" });
+    assert_eq!(*e.kind, ErrorKind::ObjFaceForm { element: "vn", has: false, first_line: 6 });
+    assert_eq!(e.position.map(|p| (p.line, p.column)), Some((7, 3)), "{e}");
+    assert!(e.to_string().contains("but the first face (line 6) has one"), "{e}");
+    assert!(e.describe(Lang::Ja).contains("6 行目の（最初の）面にはあります"), "{e}");
+    let e = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1 2 3\nf 1/1 2/1 3/1\n");
+    assert_eq!(*e.kind, ErrorKind::ObjFaceForm { element: "vt", has: true, first_line: 5 });
     // Values that parse but cannot be used: a normal with no direction, at its line and word
     // (it was "vertex V0 has a zero normal", with no line).
     let e = obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n");

@@ -278,6 +278,16 @@ pub enum ErrorKind {
         /// Which corner of the face (1-based) used it first.
         first: usize,
     },
+    /// A face of an OBJ file written unlike the file's first face: with a `vt` or `vn` that the
+    /// first face's corners do not have, or without one they have (normals on some faces only).
+    ObjFaceForm {
+        /// `vt` or `vn`: what one face has and the other has not (`vt` when both differ).
+        element: &'static str,
+        /// Whether this face has it (and the first face has not).
+        has: bool,
+        /// The line of the file's first face.
+        first_line: usize,
+    },
     /// A `v` line of an OBJ file has w = 0, or a coordinate that is not finite (after the
     /// division by w).
     ObjPosition {

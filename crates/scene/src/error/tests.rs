@@ -12,7 +12,7 @@ use cg_core::transform::TransformError;
 use super::*;
 
 /// How many variants [`ErrorKind`] has; [`kind_index`] numbers them `0..KINDS`.
-const KINDS: usize = 51;
+const KINDS: usize = 52;
 
 /// A number for each variant of [`ErrorKind`] (the match is exhaustive, so a new variant does not
 /// compile until it is numbered here, and [`every_kind_has_a_sample`] fails until it has a
@@ -70,6 +70,7 @@ fn kind_index(kind: &ErrorKind) -> usize {
         ErrorKind::ObjZeroNormal => 48,
         ErrorKind::ObjCornerForm { .. } => 49,
         ErrorKind::ObjRepeatedVertex { .. } => 50,
+        ErrorKind::ObjFaceForm { .. } => 51,
     }
 }
 
@@ -290,6 +291,8 @@ fn samples() -> Vec<ErrorKind> {
             has: true,
         },
         ErrorKind::ObjRepeatedVertex { corner: "1".into(), vertex: 1, first: 1 },
+        ErrorKind::ObjFaceForm { element: "vn", has: false, first_line: 7 },
+        ErrorKind::ObjFaceForm { element: "vt", has: true, first_line: 3 },
         ErrorKind::ObjPosition { position: [f32::INFINITY; 3], w: 0.0 },
         ErrorKind::ObjPosition { position: [1.0, f32::NAN, 0.0], w: 1.0 },
         ErrorKind::ObjPolygon { corners: 4, problem: crate::PolygonProblem::Crosses },

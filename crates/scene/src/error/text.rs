@@ -315,6 +315,31 @@ impl ErrorKind {
                     corner = shown(corner, Lang::En)
                 ),
             ),
+            ErrorKind::ObjFaceForm { element, has, first_line } => {
+                let (ja, en) = if *has {
+                    (
+                        format!(
+                            "この面の頂点には {element} がありますが、{first_line} 行目の（最初の）面にはありません"
+                        ),
+                        format!(
+                            "this face's corners have a `{element}`, but the first face (line {first_line}) has none"
+                        ),
+                    )
+                } else {
+                    (
+                        format!(
+                            "この面の頂点には {element} がありませんが、{first_line} 行目の（最初の）面にはあります"
+                        ),
+                        format!(
+                            "this face's corners have no `{element}`, but the first face (line {first_line}) has one"
+                        ),
+                    )
+                };
+                Text::new(
+                    format!("{ja}。{element} はすべての面に付けるか、すべて外してください"),
+                    format!("{en}: give `{element}` on every face or on none"),
+                )
+            }
             ErrorKind::ObjCornerForm { corner, first, element, has } => {
                 let (corner_ja, first_ja) = (shown(corner, Lang::Ja), shown(first, Lang::Ja));
                 let (corner_en, first_en) = (shown(corner, Lang::En), shown(first, Lang::En));
