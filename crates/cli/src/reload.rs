@@ -51,8 +51,10 @@ impl Resume {
 }
 
 /// The arguments again, with the animation at `time` and paused or not as it was: `--time` and
-/// `--paused` replaced.
+/// `--paused` replaced. A time past the last one `--time` takes (a window open for over four
+/// and a half hours) is taken as that last one: the reload refused it as a usage error.
 pub fn arguments(args: &[String], time: f64, paused: bool) -> Vec<String> {
+    let time = time.clamp(0.0, cg_assign::cg_a3::VIEW_MAX_S);
     let mut out = Vec::with_capacity(args.len() + 3);
     let mut skip = false;
     for a in args {
@@ -137,5 +139,18 @@ mod tests {
             arguments(&["view".to_owned(), "a1".to_owned()], 0.0, true),
             ["view", "a1", "--time", "0", "--paused"]
         );
+    }
+
+    /// The arguments a reload passes are ones `cg view` takes: a window open past the last time
+    /// `--time` takes is reloaded at that last time (it was a usage error, and no window).
+    #[test]
+    fn a_time_past_the_last_one_is_reloaded_at_the_last_one() {
+        use clap::Parser as _;
+        let args: Vec<String> = ["view", "a3"].map(String::from).to_vec();
+        for time in [0.0, 2.5, cg_assign::cg_a3::VIEW_MAX_S, 20_000.0, 1e12] {
+            let again = arguments(&args, time, false);
+            let parsed = crate::Cli::try_parse_from(std::iter::once("cg".to_owned()).chain(again));
+            assert!(parsed.is_ok(), "{time}: {:?}", parsed.err());
+        }
     }
 }
