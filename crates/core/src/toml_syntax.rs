@@ -139,7 +139,8 @@ mod tests {
         assert_eq!(t.en, format!("line 2, column 7: {m}"));
         assert!(m.starts_with("key with no value"), "{m}");
         // Every Japanese text has no English word of the parser's left in it.
-        for text in ["a = [1 2]", "a = \"x", "a = 01", "[a\n", "a = 1\na = 2", "a = 1_", "a = +-1"] {
+        for text in ["a = [1 2]", "a = \"x", "a = 01", "[a\n", "a = 1\na = 2", "a = 1_", "a = +-1"]
+        {
             let (m, span) = parsed(text);
             let t = at(text, &m, span);
             assert!(
