@@ -582,10 +582,12 @@ fn progress_line(done: u32, rows: u32, seconds: f64, lang: Lang) -> String {
         format!("{:.0} {}", left.ceil(), t("秒", "s").get(lang))
     };
     let percent = u64::from(done) * 100 / u64::from(rows.max(1));
-    match lang {
-        Lang::Ja => format!("レイトレーシング: {done}/{rows} 行（{percent} %）、残り約 {left}  "),
-        Lang::En => format!("ray tracing: {done}/{rows} rows ({percent} %), about {left} left  "),
-    }
+    Text::new(
+        format!("レイトレーシング: {done}/{rows} 行（{percent} %）、残り約 {left}  "),
+        format!("ray tracing: {done}/{rows} rows ({percent} %), about {left} left  "),
+    )
+    .get(lang)
+    .to_owned()
 }
 
 #[cfg(test)]
