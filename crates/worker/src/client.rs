@@ -10,7 +10,7 @@ use std::sync::mpsc::{Receiver, RecvTimeoutError, sync_channel};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
-use crate::{Call, Reason, Reply, cbor, decode, encode, frame, to_value};
+use crate::{Call, Reason, Reply, cbor, decode, encode, frame};
 
 /// How much of the end of a worker's stderr is kept.
 pub const STDERR_TAIL: usize = 2000;
@@ -256,7 +256,7 @@ impl Worker {
                 &e,
             ))
         };
-        let call = Call { function: function.to_owned(), args: to_value(args).map_err(unsent)? };
+        let call = Call { function: function.to_owned(), args };
         let bytes = encode(&call).map_err(unsent)?;
         let running = self.start()?;
         let sent = frame::write(&mut running.stdin, &bytes);

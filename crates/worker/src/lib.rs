@@ -101,13 +101,15 @@ impl Reason {
 /// cannot (NaN, ±∞) bit for bit, and reads the kit's tagged enums as JSON does.
 pub type Value = ciborium::Value;
 
-/// One call: the function's name (`a1.vertices`) and its arguments.
+/// One call: the function's name (`a1.vertices`) and its arguments. The caller writes a
+/// `Call<&A>` of the arguments' own type (no [`Value`] per number of a large mesh); the worker
+/// reads a `Call` of pipe [`Value`]s, which each handler reads as its arguments.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Call {
+pub struct Call<A = Value> {
     /// The function, `<assignment>.<name>`.
     pub function: String,
     /// Its arguments, as the function's handler reads them.
-    pub args: Value,
+    pub args: A,
 }
 
 /// `value` as a pipe [`Value`].
