@@ -177,3 +177,33 @@ pub enum Reply<V = Value> {
         reply: Box<Reply<V>>,
     },
 }
+
+#[cfg(test)]
+mod tests {
+    use cg_student::glam::Vec3;
+
+    use super::*;
+
+    /// A call written in its arguments' own type is the same bytes as one written through a
+    /// pipe [`Value`] (as the caller wrote it before): floats, NaN, ±∞, integers, texts, options
+    /// and the kit's enums alike.
+    #[test]
+    fn a_call_in_its_own_type_is_the_same_bytes_as_through_a_value() {
+        #[derive(Serialize)]
+        enum Kind {
+            Unit,
+            Tuple(u32, f32),
+            Named { x: f64 },
+        }
+        let args = (
+            vec![Vec3::new(0.5, -1.0e-30, f32::NAN), Vec3::new(f32::INFINITY, 0.1, 65_504.0)],
+            vec![[0u32, 1, 2], [u32::MAX, 7, 300]],
+            ("text", Some(-3i64), None::<u8>),
+            [Kind::Unit, Kind::Tuple(9, 0.25), Kind::Named { x: std::f64::consts::PI }],
+        );
+        let direct = encode(&Call { function: "s.test".to_owned(), args: &args }).unwrap();
+        let value = to_value(&args).unwrap();
+        let through = encode(&Call { function: "s.test".to_owned(), args: value }).unwrap();
+        assert_eq!(direct, through);
+    }
+}
