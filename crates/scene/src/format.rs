@@ -589,11 +589,15 @@ fn read_name(v: &Value<'_>) -> Result<String, SceneError> {
 }
 
 /// `name` (written at `v`: the value, or the table a key names) if it has at most
-/// [`MAX_NAME_CHARS`] characters.
+/// [`MAX_NAME_CHARS`] characters and no control character (`cg inspect` printed an ESC in a
+/// name to the terminal as it was: an escape sequence).
 pub(super) fn checked_name(name: &str, v: &Value<'_>) -> Result<String, SceneError> {
     let chars = name.chars().count();
     if chars > MAX_NAME_CHARS {
         return Err(v.error(ErrorKind::NameTooLong { chars, max: MAX_NAME_CHARS }));
+    }
+    if let Some((i, c)) = name.chars().enumerate().find(|(_, c)| c.is_control()) {
+        return Err(v.error(ErrorKind::NameControl { code: u32::from(c), place: i + 1 }));
     }
     Ok(name.to_owned())
 }

@@ -788,4 +788,16 @@ fn names_are_bounded_and_said_so_at_the_name() {
     assert_eq!(e.position.map(|p| p.line), Some(2), "{e}");
     assert!(e.to_string().len() < 400, "{} bytes", e.to_string().len());
     assert!(e.describe(Lang::Ja).len() < 600, "{} bytes", e.describe(Lang::Ja).len());
+    // A control character (an escape sequence, which `cg inspect` printed to the terminal as
+    // it was), in an object's name, the scene's or a material's key: at the name, with its code.
+    let text = object("ab\\u001b]52;c;x\\u0007");
+    let e = error(&text);
+    assert_at(&e, &text, 3, "\"ab", Some("objects[0].name"));
+    assert_eq!(*e.kind, ErrorKind::NameControl { code: 0x1b, place: 3 });
+    assert!(e.to_string().contains("control character, U+001B, at character 3"), "{e}");
+    assert!(!e.to_string().contains('\u{1b}'), "{e}");
+    let e = error("format = 1\nname = \"a\\tb\"\n");
+    assert_eq!(*e.kind, ErrorKind::NameControl { code: 9, place: 2 });
+    let e = error("format = 1\n[materials.\"x\\u007f\"]\ncolor = [1, 1, 1]\n");
+    assert_eq!(*e.kind, ErrorKind::NameControl { code: 0x7f, place: 2 });
 }

@@ -190,6 +190,14 @@ pub enum ErrorKind {
         /// [`crate::MAX_NAME_CHARS`].
         max: usize,
     },
+    /// A name (the scene's, an object's, a material's) holds a control character (an escape
+    /// sequence would drive the terminal that prints the name).
+    NameControl {
+        /// The character's code point.
+        code: u32,
+        /// Its place in the name, 1-based, in characters.
+        place: usize,
+    },
     /// Two objects have the same name.
     DuplicateName {
         /// The name.

@@ -12,7 +12,7 @@ use cg_core::transform::TransformError;
 use super::*;
 
 /// How many variants [`ErrorKind`] has; [`kind_index`] numbers them `0..KINDS`.
-const KINDS: usize = 52;
+const KINDS: usize = 53;
 
 /// A number for each variant of [`ErrorKind`] (the match is exhaustive, so a new variant does not
 /// compile until it is numbered here, and [`every_kind_has_a_sample`] fails until it has a
@@ -71,6 +71,7 @@ fn kind_index(kind: &ErrorKind) -> usize {
         ErrorKind::ObjCornerForm { .. } => 49,
         ErrorKind::ObjRepeatedVertex { .. } => 50,
         ErrorKind::ObjFaceForm { .. } => 51,
+        ErrorKind::NameControl { .. } => 52,
     }
 }
 
@@ -251,6 +252,7 @@ fn samples() -> Vec<ErrorKind> {
         ErrorKind::UnknownMaterial { name: "metal".into(), suggestion: None },
         ErrorKind::DuplicateName { name: "ball".into(), first_line: 12 },
         ErrorKind::NameTooLong { chars: 100_000, max: 64 },
+        ErrorKind::NameControl { code: 0x1b, place: 3 },
         ErrorKind::NeedsNormals,
         ErrorKind::NeedsUvs,
         ErrorKind::Shape(ShapeError {

@@ -415,6 +415,14 @@ impl ErrorKind {
                     ),
                 ),
             },
+            ErrorKind::NameControl { code, place } => Text::new(
+                format!(
+                    "名前の {place} 文字目に制御文字 U+{code:04X} があります。名前には見える文字だけを書いてください"
+                ),
+                format!(
+                    "the name has a control character, U+{code:04X}, at character {place}: a name holds visible characters only"
+                ),
+            ),
             ErrorKind::NameTooLong { chars, max } => Text::new(
                 format!("名前が長すぎます（{chars} 文字）。名前は {max} 文字までです"),
                 format!("a name of {chars} characters is too long: a name has at most {max}"),
