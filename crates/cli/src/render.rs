@@ -416,7 +416,7 @@ fn draw(
                 t("アダプタ", "adapter").get(lang),
                 gpu.adapter_info(),
                 t("シェーダに含めたもの", "in the generated shader").get(lang),
-                out.enabled.join(", "),
+                out.enabled.iter().map(|n| n.get(lang)).collect::<Vec<_>>().join(", "),
                 t("デバイスの準備", "device set-up").get(lang),
             );
             Ok(Rendered { image: out.image, shading: out.shading, millis, report })
@@ -452,16 +452,21 @@ fn report(features: &Features, counts: Vec<(Text, u64)>, lang: Lang) -> String {
 /// `.png`, the only format the kit writes.
 fn write(path: &Path, image: &Image, made_here: bool, lang: Lang) -> Result<(), String> {
     let png = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    // `dir/.png` ends with .png, but is a name without a stem (the path has no extension).
+    let bare = path.file_name().is_some_and(|n| n.eq_ignore_ascii_case(".png"));
     if !png && !is_device(path) {
-        return Err(format!(
-            "{}: {}",
-            path.display(),
+        let why = if bare {
+            t(
+                "ファイル名が .png だけです。.png の前に名前を付けてください（例: out/picture.png）",
+                "the file name is only .png: put a name before it (out/picture.png)",
+            )
+        } else {
             t(
                 "書き出せるのは PNG だけです。ファイル名を .png で終えてください",
-                "the kit writes PNG files only: name the output file .png"
+                "the kit writes PNG files only: name the output file .png",
             )
-            .get(lang)
-        ));
+        };
+        return Err(format!("{}: {}", path.display(), why.get(lang)));
     }
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         if made_here {

@@ -215,6 +215,13 @@ fn mistakes_are_clear_errors() {
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains("picture.jpg") && err.contains("PNG files only"), "{err}");
     assert!(!jpg.exists(), "nothing is written under a .jpg name");
+    // `.png` alone ends with .png but has no name: said so (it was "name the file .png").
+    let bare = dir.join(".png");
+    let o =
+        cg_in(&root(), &["render", "-o", bare.to_str().unwrap(), "--width", "8", "--lang", "en"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("the file name is only .png: put a name before it"), "{err}");
     // A folder named in -o must exist: a typo does not make new folders.
     let nested = dir.join("no").join("such").join("x.png");
     let o =

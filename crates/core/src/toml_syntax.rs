@@ -88,6 +88,19 @@ pub fn message(message: &str) -> Text {
         Some((d, e)) => (d, Some(e)),
         None => (message, None),
     };
+    // An integer past i64 (`table = 99999999999999999999`) comes from the parser's serde side:
+    // "invalid type: integer `…` as i128, expected any valid TOML value".
+    if let Some(n) = message
+        .strip_prefix("invalid type: integer `")
+        .and_then(|rest| rest.split_once("` as i128"))
+        .map(|(n, _)| n)
+    {
+        let n = crate::quote::shown(n, crate::lang::Lang::Ja);
+        return Text::new(
+            format!("整数 {n} が大きすぎます（TOML の整数は ±9223372036854775807 まで）"),
+            message,
+        );
+    }
     let Some(&(_, ja)) = DESCRIPTIONS.iter().find(|(en, _)| *en == description) else {
         return Text::new(message, message);
     };
@@ -150,6 +163,16 @@ mod tests {
             );
             assert!(t.en.ends_with(&m), "{t:?}");
         }
+    }
+
+    #[test]
+    fn an_integer_past_i64_is_said_in_japanese() {
+        let text = "table = 99999999999999999999\n";
+        let e = text.parse::<toml::Table>().unwrap_err();
+        let t = at(text, e.message(), e.span());
+        assert!(t.ja.contains("整数 99999999999999999999 が大きすぎます"), "{t:?}");
+        assert!(!t.ja.contains("invalid type"), "{t:?}");
+        assert!(t.en.contains("invalid type: integer"), "{t:?}");
     }
 
     #[test]

@@ -91,7 +91,7 @@ pub struct Output {
     /// The shading mode drawn.
     pub shading: Shading,
     /// What the generated shader contains ([`enabled`]).
-    pub enabled: Vec<&'static str>,
+    pub enabled: Vec<cg_core::lang::Text>,
     /// The generated WGSL.
     pub shader: String,
 }

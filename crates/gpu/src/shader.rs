@@ -21,33 +21,32 @@
 //! (Phong `(R·V)ⁿ` or Blinn `(N·H)ⁿ`, zero where `N·L ≤ 0` or the cosine is ≤ 0).
 
 use cg_core::features::Features;
+use cg_core::lang::{Text, t};
 use cg_core::light::{LightModel, Specular};
 use cg_core::scene::Shading;
 
 /// Which parts of the light model and the pipeline a shader built for `features` contains, as
-/// short English names (for `cg render --gpu` to print). Reflection and transmission are never
-/// in it: they need rays.
+/// short names in both languages, worded as [`Features::list`] words them (for `cg render
+/// --renderer gpu` to print). Reflection and transmission are never in it: they need rays.
 #[must_use]
-pub fn enabled(features: &Features) -> Vec<&'static str> {
+pub fn enabled(features: &Features) -> Vec<Text> {
     let f = features;
-    let mut out = Vec::new();
-    let mut add = |on: bool, name: &'static str| {
-        if on {
-            out.push(name);
-        }
-    };
-    add(f.emission, "emission");
-    add(f.ambient, "ambient");
-    add(f.diffuse, "diffuse");
-    add(f.specular, "specular");
-    add(f.directional, "directional lights");
-    add(f.point, "point lights");
-    add(f.spot, "spot lights");
-    add(f.area, "area lights (as point-light samples)");
-    add(f.attenuation, "attenuation");
-    add(f.textures, "textures");
-    add(f.local_viewer && f.specular, "local viewer");
-    out
+    [
+        (f.emission, t("放射", "emission")),
+        (f.ambient, t("環境光", "ambient")),
+        (f.diffuse, t("拡散反射光", "diffuse")),
+        (f.specular, t("鏡面反射光", "specular")),
+        (f.directional, t("平行光源", "directional lights")),
+        (f.point, t("点光源", "point lights")),
+        (f.spot, t("スポットライト光源", "spot lights")),
+        (f.area, t("面光源（点光源の標本として）", "area lights (as point-light samples)")),
+        (f.attenuation, t("距離による減衰", "attenuation")),
+        (f.textures, t("テクスチャ", "textures")),
+        (f.local_viewer && f.specular, t("視点は有限の距離", "local viewer")),
+    ]
+    .into_iter()
+    .filter_map(|(on, name)| on.then_some(name))
+    .collect()
 }
 
 /// Whether the shader needs the spot-light code: spot lights, and area lights (whose samples
@@ -172,7 +171,7 @@ pub fn shader_source(features: &Features, shading: Shading, model: LightModel) -
         "// cg-gpu: generated for {:?} shading, {} light model; enabled: {}\n{}",
         shading,
         if lecture { "lecture" } else { "OpenGL" },
-        enabled(features).join(", "),
+        enabled(features).iter().map(|n| n.en.as_str()).collect::<Vec<_>>().join(", "),
         preprocess(TEMPLATE, &Flags::new(features, shading, model))
     )
 }

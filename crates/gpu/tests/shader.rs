@@ -45,9 +45,14 @@ fn a_scene_without_specular_spots_or_textures_gets_no_code_for_them() {
             validate(&src, "course-sample");
         }
     }
-    let names = enabled(&features);
+    let names: Vec<String> = enabled(&features).into_iter().map(|n| n.en).collect();
+    let names: Vec<&str> = names.iter().map(String::as_str).collect();
     assert!(names.contains(&"diffuse") && names.contains(&"point lights"), "{names:?}");
     assert!(!names.contains(&"specular") && !names.contains(&"textures"), "{names:?}");
+    // In Japanese, the words `cg render` prints for every renderer (it printed the English).
+    let ja: Vec<String> = enabled(&features).into_iter().map(|n| n.ja).collect();
+    assert!(ja.contains(&"拡散反射光".to_owned()) && ja.contains(&"点光源".to_owned()), "{ja:?}");
+    assert!(ja.iter().all(|n| !n.chars().any(|c| c.is_ascii_lowercase())), "{ja:?}");
 }
 
 #[test]

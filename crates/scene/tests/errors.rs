@@ -788,6 +788,10 @@ fn names_are_bounded_and_said_so_at_the_name() {
     assert_eq!(e.position.map(|p| p.line), Some(2), "{e}");
     assert!(e.to_string().len() < 400, "{} bytes", e.to_string().len());
     assert!(e.describe(Lang::Ja).len() < 600, "{} bytes", e.describe(Lang::Ja).len());
+    // A number finite in f64 but not in the renderers' f32 says how large a number may be.
+    let e = error("format = 1\n[camera]\nyaw_deg = 1e300\n");
+    assert!(e.to_string().contains("must be finite (at most 3.4e38 in absolute value)"), "{e}");
+    assert!(e.describe(Lang::Ja).contains("絶対値 3.4e38 まで"), "{}", e.describe(Lang::Ja));
     // A control character (an escape sequence, which `cg inspect` printed to the terminal as
     // it was), in an object's name, the scene's or a material's key: at the name, with its code.
     let text = object("ab\\u001b]52;c;x\\u0007");

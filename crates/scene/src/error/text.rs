@@ -588,7 +588,11 @@ impl Rule {
     #[must_use]
     pub fn text(self) -> Text {
         match self {
-            Rule::Finite => t("有限の数でなければなりません", "must be finite"),
+            // Numbers are f32 in the renderers: 1e300 is finite, but not there.
+            Rule::Finite => t(
+                "有限の数（絶対値 3.4e38 まで）でなければなりません",
+                "must be finite (at most 3.4e38 in absolute value)",
+            ),
             Rule::NonNegative => {
                 t("0 以上の有限の数でなければなりません", "must be finite and ≥ 0")
             }
