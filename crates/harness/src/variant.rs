@@ -58,7 +58,9 @@ impl StudentNumberError {
         // A value pasted by mistake (a whole file) is shortened; an invisible character (a
         // zero-width space pasted with the number) is named by its code.
         let (ja, en) = (shown(&self.given, Lang::Ja), shown(&self.given, Lang::En));
-        match self.given.chars().find(|c| !c.is_ascii_digit()) {
+        // Full-width digits are digits here, as `from_str` takes them.
+        let digit = |c: char| cg_core::text::ascii_digit(c).is_ascii_digit();
+        match self.given.chars().find(|&c| !digit(c)) {
             Some(c) => {
                 let c = visible(&c.to_string());
                 Text::new(
@@ -249,6 +251,9 @@ mod tests {
         assert!(e.message(Lang::En).contains("'a'"), "{e}");
         let e = "1234567".parse::<StudentNumber>().unwrap_err();
         assert!(e.message(Lang::En).contains("has 7"), "{e}");
+        // Nine full-width digits are nine digits (it said '１' is not a digit).
+        let e = "１２３４５６７８９".parse::<StudentNumber>().unwrap_err();
+        assert!(e.message(Lang::Ja).contains("は 9 桁です"), "{}", e.message(Lang::Ja));
         // An invisible character by its code; a long value shortened, not echoed whole.
         let e = "1234\u{200b}5678".parse::<StudentNumber>().unwrap_err();
         assert!(e.message(Lang::Ja).contains("U+200B"), "{e}");
