@@ -161,38 +161,60 @@ pub fn parse_student_file(bytes: &[u8], file: &str) -> Result<StudentFile, Stude
             format!("student = {en} must be in quotes: student = \"{en}\""),
         )));
     }
-    let table: toml::Table = toml::from_str(&text).map_err(|e| {
+    // Read with each key's and value's place, so that every mistake names its line.
+    let doc = toml::de::DeTable::parse(&text).map_err(|e| {
         let said = cg_core::toml_syntax::at(&text, e.message(), e.span());
         invalid(Text::new(
             format!("TOML の書き方の誤りです（構文エラー）: {}", said.ja),
             format!("TOML syntax error: {}", said.en),
         ))
     })?;
-    if let Some(key) = table.keys().find(|k| !matches!(k.as_str(), "student" | "table")) {
-        return Err(invalid(Text::new(
-            format!(
-                "`{}` というキーはありません（書けるのは student と table）",
-                shown(key, Lang::Ja)
+    let at =
+        |offset: usize, said: Text| invalid(cg_core::toml_syntax::located(&text, offset, &said));
+    let doc = doc.get_ref();
+    if let Some((key, _)) = doc
+        .iter()
+        .filter(|(k, _)| !matches!(k.get_ref().as_ref(), "student" | "table"))
+        .min_by_key(|(k, _)| k.span().start)
+    {
+        let start = key.span().start;
+        let key: &str = key.get_ref();
+        return Err(at(
+            start,
+            Text::new(
+                format!(
+                    "`{}` というキーはありません（書けるのは student と table）",
+                    shown(key, Lang::Ja)
+                ),
+                format!(
+                    "there is no key `{}` (the keys are student and table)",
+                    shown(key, Lang::En)
+                ),
             ),
-            format!("there is no key `{}` (the keys are student and table)", shown(key, Lang::En)),
-        )));
+        ));
     }
-    let digits = match table.get("student") {
-        Some(toml::Value::String(s)) => s.clone(),
-        Some(_) => {
-            return Err(invalid(Text::new(
-                "student は引用符で囲んだ 8 桁の数字にしてください",
-                "student must be 8 digits in quotes",
-            )));
-        }
+    let digits = match doc.get("student") {
+        Some(v) => match v.get_ref() {
+            toml::de::DeValue::String(s) => s.to_string(),
+            _ => {
+                return Err(at(
+                    v.span().start,
+                    Text::new(
+                        "student は引用符で囲んだ 8 桁の数字にしてください",
+                        "student must be 8 digits in quotes",
+                    ),
+                ));
+            }
+        },
         None => return Err(invalid(Text::new("student がありません", "student is missing"))),
     };
     let student =
         digits.parse().map_err(|error| StudentFileError::Number { path: file.clone(), error })?;
-    let table = match table.get("table") {
+    let table = match doc.get("table") {
         None => TableVersion::LATEST,
         Some(v) => {
-            let given = v.to_string();
+            // As written (`9`, `"1"`, `99999999999999999999`).
+            let given = text.get(v.span()).unwrap_or_default().to_owned();
             given
                 .trim_matches('"')
                 .parse()
@@ -280,7 +302,21 @@ mod tests {
             ("student = 01234567 # mine\n", "student = \"01234567\"", "student = \"01234567\""),
             ("student = 12345678.0\n", "8 digits in quotes", "8 桁の数字"),
             ("student = \"1234567\"\n", "8 digits", "8 桁"),
-            ("studnet = \"12345678\"\n", "no key `studnet`", "`studnet` というキーはありません"),
+            (
+                "# mine\nstudent = \"12345678\"\nstudnet = \"12345678\"\n",
+                "line 3, column 1: there is no key `studnet`",
+                "3 行 1 列: `studnet` というキーはありません",
+            ),
+            (
+                "table = 1\nstudent = [1, 2]\n",
+                "line 2, column 11: student must be 8 digits in quotes",
+                "2 行 11 列: student は引用符で囲んだ",
+            ),
+            (
+                "student = \"12345678\"\ntable = 99999999999999999999\n",
+                "99999999999999999999",
+                "99999999999999999999",
+            ),
             ("table = 1\n", "student is missing", "student がありません"),
             ("student = \"12345678\"\ntable = 9\n", "no table 9", "table = 9"),
             (

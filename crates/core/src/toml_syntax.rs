@@ -123,7 +123,17 @@ pub fn message(message: &str) -> Text {
 #[must_use]
 pub fn at(text: &str, message: &str, span: Option<Range<usize>>) -> Text {
     let said = self::message(message);
-    let Some(start) = span.map(|s| s.start.min(text.len())) else { return said };
+    match span {
+        Some(span) => located(text, span.start, &said),
+        None => said,
+    }
+}
+
+/// `said` about the place `offset` (a byte) of `text`, with its line and column (1-based; the
+/// column counts characters): `3 行 7 列: …` / `line 3, column 7: …`.
+#[must_use]
+pub fn located(text: &str, offset: usize, said: &Text) -> Text {
+    let start = offset.min(text.len());
     let start = (0..=start).rev().find(|&i| text.is_char_boundary(i)).unwrap_or(0);
     let before = &text[..start];
     let line = before.matches('\n').count() + 1;
