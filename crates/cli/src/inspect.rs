@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use cg_core::camera::OrbitCamera;
-use cg_core::lang::{Lang, t};
+use cg_core::lang::{Lang, Text, t};
 use cg_core::light::{LightKind, LightModel, Specular};
 use cg_core::mesh::{Orientation, Problem};
 use cg_core::normals::{Weighting, face_normal};
@@ -44,12 +44,14 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         && !scene.objects.iter().any(|o| &o.name == name)
     {
         let names: Vec<&str> = scene.objects.iter().map(|o| o.name.as_str()).collect();
-        return Err(format!(
-            "{} \"{name}\" ({}: {})",
-            t("オブジェクトがありません", "no object named").get(lang),
-            t("あるもの", "there are").get(lang),
-            names.join(", ")
-        ));
+        let names = names.join(", ");
+        let (ja, en) =
+            (cg_core::quote::shown(name, Lang::Ja), cg_core::quote::shown(name, Lang::En));
+        let why = Text::new(
+            format!("\"{ja}\" というオブジェクトはありません（あるもの: {names}）"),
+            format!("no object named \"{en}\" (there are: {names})"),
+        );
+        return Err(format!("{}: {}", path.display(), why.get(lang)));
     }
     let rows = if args.all || args.max_rows == 0 { usize::MAX } else { args.max_rows };
     let text = report(

@@ -124,6 +124,13 @@ fn an_unknown_object_lists_the_objects() {
     assert_eq!(o.status.code(), Some(2), "bad input: exit status 2");
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("teapot") && err.contains("pyramid"), "{err}");
+    // The scene it was looked for in is named, in either language, and the name shown safely.
+    assert!(err.contains("course-sample.toml: no object named \"teapot\""), "{err}");
+    let o = cg(&["inspect", "--object", "ポット\u{1b}[2J", "--lang", "ja"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("course-sample.toml: \"ポット"), "{err}");
+    assert!(err.contains("というオブジェクトはありません（あるもの: "), "{err}");
+    assert!(!err.contains('\u{1b}'), "an escape sequence reaches the terminal: {err}");
 }
 
 #[test]
