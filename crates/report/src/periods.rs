@@ -7,7 +7,9 @@
 //! The table is written and read in the notation of the shading section's tables
 //! ([`crate::shading`]): the tag `<!-- cg: a3.periods -->` (LaTeX `% cg: a3.periods`), rows found
 //! by their label (`object 2` or `物体2`), each number checked with the tolerance of every other
-//! number of the report; a period may carry its unit (`4 s`, `4秒`, `4\,\mathrm{s}`).
+//! number of the report; a period may carry its unit (`4 s`, `4秒`, `4\,\mathrm{s}`). Every row
+//! must be there (a missing row is a mistake), and a number in a `—` cell, a value the motion
+//! does not have, is a mistake too.
 //!
 //! ```text
 //! <!-- cg: a3.periods -->
@@ -24,7 +26,7 @@ use cg_core::lang::Lang;
 use cg_core::product::format_number;
 use cg_harness::Text;
 
-use crate::shading::{ParsedTable, check_table, tagged_table};
+use crate::shading::{ParsedTable, check_complete, check_table, tagged_table};
 use crate::template::Format;
 use crate::verify::Checker;
 
@@ -169,6 +171,25 @@ pub fn values(spec: &Spec, lang: Lang, format: Format) -> String {
     format!("{body}\n{ratio}\n")
 }
 
+/// Why the cell `k` of the kit's row `row` has no value: its motion has no such number.
+fn no_value(kit: &Table, row: &Row, k: usize) -> Text {
+    let motion = match row.cells.first() {
+        Some(Cell::Text(m)) => m.clone(),
+        _ => Text::default(),
+    };
+    let column = kit.columns.get(k + 1).cloned().unwrap_or_default();
+    Text::new(
+        format!(
+            "{} の運動（{}）には「{}」の値はありません。この欄は「—」のままにします",
+            row.label.ja, motion.ja, column.ja
+        ),
+        format!(
+            "the motion of {} ({}) has no {}: leave this cell as “—”",
+            row.label.en, motion.en, column.en
+        ),
+    )
+}
+
 /// Checks the written periods tables against the assignment's (`None`: the report was checked
 /// without one, so a written table is a note); a report without the table is a note.
 pub(crate) fn verify(c: &mut Checker, written: &[ParsedTable], assignment: Option<&Variants>) {
@@ -192,6 +213,7 @@ pub(crate) fn verify(c: &mut Checker, written: &[ParsedTable], assignment: Optio
     let kit = table(&a.a3);
     for t in tables {
         check_table(c, t, &kit);
+        check_complete(c, t, &kit, |row, k| no_value(&kit, row, k));
     }
 }
 

@@ -39,7 +39,7 @@ pub fn polygon_from_text(text: &str, name: Text) -> Result<PolygonData, Vec<Pars
     let (report, problems) = parse_report(text);
     let mut errors: Vec<ParseProblem> = problems
         .into_iter()
-        .filter(|p| matches!(p.kind, RowKind::Vertex | RowKind::Face))
+        .filter(|p| matches!(p.kind, RowKind::Vertex | RowKind::Face | RowKind::Data))
         .collect();
     // A row that did not read is the mistake to name: the checks of the whole list below
     // would blame the rows after it (`F5: F0 is missing` where F0 is written with a NaN).

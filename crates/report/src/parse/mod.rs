@@ -22,7 +22,11 @@
 //! does not parse; the problem names the line, the text and what was expected. Numbers are plain
 //! decimals (`-0.8`, `0.53`, `15`, with `−` or `+` allowed) and remember how many decimals were
 //! written, so the checker ([`crate::verify`]) can accept correct rounding and nothing else.
-//! Full-width `，（）｛｝` are read as their ASCII forms.
+//! Full-width `，（）｛｝` are read as their ASCII forms. A value after `=`, `≒` or `≈` is read
+//! (`F0 { V0, V3, V1 } ≒ { 0.0, 0.49, 0.87 }`); a face row holds one normal, right after its
+//! vertices (a second one, or one after words, is a problem); exponent notation (`4.9e-1`) is
+//! named as not read. What is inside an HTML comment `<!-- … -->` (other than a tag) or a code
+//! fence is not read, and line numbers stay those of the text.
 //!
 //! [`polygon_from_text`] turns a vertex and face list alone (a data file, or a hand-made table)
 //! into a [`crate::model::PolygonData`], so a student can check a table without the exercises.
@@ -55,8 +59,8 @@ pub enum RowKind {
     Texture,
     /// A tagged table of the shading section (`<!-- cg: s.spot -->` and the table after it).
     Table,
-    /// The data as a whole (no vertices, numbering with gaps, a face naming a missing vertex):
-    /// only from [`polygon_from_text`].
+    /// The data as a whole (no vertices, numbering with gaps, a face naming a missing vertex,
+    /// from [`polygon_from_text`]), or the text as a whole (a comment `<!--` never closed).
     Data,
 }
 
@@ -303,11 +307,12 @@ fn skip_markers(line: &str) -> usize {
     pos
 }
 
-/// Skips what may stand between a row's name and its group: spaces, `|`, `=`, `:`, `&`, `*`,
-/// `` ` ``, `$`.
+/// Skips what may stand between a row's name and its group: spaces, `|`, `=`, `≒`, `≈`, `:`,
+/// `&`, `*`, `` ` ``, `$`.
 fn skip_separators(line: &str, mut pos: usize) -> usize {
     while let Some(c) = line[pos..].chars().next() {
-        if c.is_whitespace() || matches!(c, '|' | '=' | ':' | '&' | '*' | '`' | '$') {
+        if c.is_whitespace() || matches!(c, '|' | '=' | '≒' | '≈' | ':' | '&' | '*' | '`' | '$')
+        {
             pos += c.len_utf8();
         } else {
             break;
@@ -388,7 +393,8 @@ fn tuple(content: &str, n: usize) -> Result<Vec<Written>, GroupError> {
 }
 
 /// The tuple of `n` numbers at `pos`, or, when that group is not one (a derivation such as
-/// `V1 = (cos 30°, 0, sin 30°) = (0.866, 0, 0.5)`), the first of the groups after `=` that is.
+/// `V1 = (cos 30°, 0, sin 30°) = (0.866, 0, 0.5)`), the first of the groups after `=` (or `≒`,
+/// `≈`) that is.
 /// `None` when there is no group at `pos`; otherwise the tuple or the first group's error, and
 /// the end of what was read.
 fn tuple_chain(
@@ -416,7 +422,7 @@ fn tuple_chain(
                     }
                 }
                 let next = after + (line[after..].len() - line[after..].trim_start().len());
-                if !line[next..].starts_with('=') {
+                if !line[next..].starts_with(['=', '≒', '≈']) {
                     break;
                 }
                 pos = skip_separators(line, next);
@@ -424,6 +430,45 @@ fn tuple_chain(
         }
     }
     first_error.map(|e| (Err(e), end))
+}
+
+/// A face row's normal: `first`, or when it is a working that goes on with `=`, `≒` or `≈`
+/// (`{ 0.0, 0.486, 0.874 } ≒ { 0.0, 0.49, 0.87 }`), the last group of three numbers of the
+/// chain, as a shading table's cell is read; and the end of what was read.
+fn last_in_chain(line: &str, first: Vec<Written>, end: usize) -> (Option<[Written; 3]>, usize) {
+    let (mut normal, mut end) = (first, end);
+    loop {
+        let next = end + (line[end..].len() - line[end..].trim_start().len());
+        if !line[next..].starts_with(['=', '≒', '≈']) {
+            break;
+        }
+        match group(line, skip_separators(line, next)) {
+            Some(Ok((a, b, after))) => match tuple(&line[a..b], 3) {
+                Ok(t) => (normal, end) = (t, after),
+                Err(_) => break,
+            },
+            _ => break,
+        }
+    }
+    (Some([normal[0].clone(), normal[1].clone(), normal[2].clone()]), end)
+}
+
+/// How many `{` after a face row's normal are looked at for a stray normal (a line of a million
+/// braces stays linear to read).
+const STRAY_GROUPS: usize = 4;
+
+/// A group of three numbers in braces in `line[from..until]` (after a face row's vertices and
+/// normal, before the next face): a second normal, or one behind words (`法線 { 1, 0, 0 }`),
+/// that the row would otherwise drop without a word.
+fn stray_normal(line: &str, from: usize, until: usize) -> Option<&str> {
+    line[from..until].match_indices('{').take(STRAY_GROUPS).find_map(|(k, _)| {
+        match group(line, from + k) {
+            Some(Ok((a, b, after))) if after <= until && tuple(&line[a..b], 3).is_ok() => {
+                Some(&line[from + k..after])
+            }
+            _ => None,
+        }
+    })
 }
 
 /// Whether the group at `pos` holds something like data (a digit or a comma), not words such
@@ -462,11 +507,34 @@ fn detail(e: &GroupError, what_ja: &str, what_en: &str) -> Text {
         GroupError::Count(k) => {
             Text::new(format!("（{what_ja}が {k} 個あります）"), format!(" (found {k} {what_en})"))
         }
+        GroupError::NotNumber(s) if is_exponent_notation(s) => Text::new(
+            format!(
+                "（`{}` は指数表記です。指数表記は読めないので、0.49 のようにふつうの小数で書きます）",
+                clip(s)
+            ),
+            format!(
+                " (`{}` is in exponent notation, which is not read: write a plain decimal such as 0.49)",
+                clip(s)
+            ),
+        ),
         GroupError::NotNumber(s) => Text::new(
             format!("（`{}` は{what_ja}ではありません）", clip(s)),
             format!(" (`{}` is not {what_en})", clip(s)),
         ),
     }
+}
+
+/// Whether `s` is a number in exponent notation (`4.9e-1`, `1E+3`, `-2e5`), which the notation
+/// does not read ([`parse_number`] takes plain decimals only).
+fn is_exponent_notation(s: &str) -> bool {
+    let Some((mantissa, exponent)) = s.trim().split_once(['e', 'E']) else { return false };
+    let mantissa = mantissa.strip_prefix(['-', '+', '−']).unwrap_or(mantissa);
+    let exponent = exponent.strip_prefix(['-', '+', '−']).unwrap_or(exponent);
+    !exponent.is_empty()
+        && exponent.chars().all(|c| c.is_ascii_digit())
+        && mantissa.chars().any(|c| c.is_ascii_digit())
+        && mantissa.chars().all(|c| c.is_ascii_digit() || c == '.')
+        && mantissa.matches('.').count() <= 1
 }
 
 fn join(a: Text, b: Text) -> Text {
@@ -673,7 +741,10 @@ impl Reader {
                 }
             }
         }
-        for (s, index, e) in tokens(line, 'F') {
+        let faces = tokens(line, 'F');
+        for (k, &(s, index, e)) in faces.iter().enumerate() {
+            // What belongs to this face: up to the next face's name on the line.
+            let until = faces.get(k + 1).map_or(line.len(), |f| f.0);
             let pos = skip_separators(line, e);
             let strict = (s == start && looks_like_data(line, pos)) || line[pos..].starts_with('{');
             let Some(g) = group(line, pos) else { continue };
@@ -706,7 +777,7 @@ impl Reader {
             let npos = skip_separators(line, after);
             let (normal, end) = match tuple_chain(line, npos, 3) {
                 None => (None, after),
-                Some((Ok(t), end)) => (Some([t[0].clone(), t[1].clone(), t[2].clone()]), end),
+                Some((Ok(t), end)) => last_in_chain(line, t, end),
                 Some((Err(err), end)) => {
                     if strict || line[npos..].starts_with('{') {
                         self.problem(n, &line[s..end], expected_normal(&err), RowKind::Face);
@@ -715,6 +786,33 @@ impl Reader {
                     (None, after)
                 }
             };
+            if let Some(extra) = stray_normal(line, end.min(until), until) {
+                let expected = if normal.is_some() {
+                    Text::new(
+                        format!(
+                            "面の行に法線は 1 つだけ（`{}` は 2 つ目の法線です）。途中の計算は別の行に書きます",
+                            clip(extra)
+                        ),
+                        format!(
+                            "one normal on a face row (`{}` is a second normal); write a working on a line of its own",
+                            clip(extra)
+                        ),
+                    )
+                } else {
+                    Text::new(
+                        format!(
+                            "法線は面の頂点のすぐあとに `F0 {{ V0, V3, V1 }} {{ 0.0, 0.49, 0.87 }}` のように（`{}` の前に語句があるので法線として読めません）",
+                            clip(extra)
+                        ),
+                        format!(
+                            "the normal right after the face's vertices, like `F0 {{ V0, V3, V1 }} {{ 0.0, 0.49, 0.87 }}` (there are words before `{}`, so it does not read as the normal)",
+                            clip(extra)
+                        ),
+                    )
+                };
+                self.problem(n, &line[s..until], expected, RowKind::Face);
+                continue;
+            }
             self.face(ParsedFace { line: n, index, vertices, normal }, &line[s..end]);
         }
     }
@@ -790,6 +888,81 @@ fn same_numbers(a: &[Written], b: &[Written]) -> bool {
     a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.value == y.value)
 }
 
+/// The lines of `text` as the reader sees them: what is inside an HTML comment `<!-- … -->`
+/// (other than a tag `<!-- cg: ID -->`, or one mistyped) or a code fence (```` ``` ```` or `~~~`, the fence lines
+/// too) is blanked, so an old table kept in a comment or an example in a fence is not read;
+/// every line stays, so line numbers stay right. Also the line and text of a `<!--` that is
+/// never closed (everything after it is blanked).
+fn without_comments(text: &str) -> (Vec<String>, Option<(usize, String)>) {
+    let mut out = Vec::new();
+    let mut open_comment: Option<(usize, String)> = None;
+    let mut fence: Option<(char, usize)> = None;
+    for (k, line) in text.lines().enumerate() {
+        let trimmed = line.trim_start();
+        if open_comment.is_none() {
+            if let Some((c, n)) = fence {
+                let run = trimmed.len() - trimmed.trim_start_matches(c).len();
+                if run >= n && trimmed[run..].trim().is_empty() {
+                    fence = None;
+                }
+                out.push(String::new());
+                continue;
+            }
+            if let Some(c) = ['`', '~'].into_iter().find(|&c| trimmed.starts_with([c; 3])) {
+                let run = trimmed.len() - trimmed.trim_start_matches(c).len();
+                fence = Some((c, run));
+                out.push(String::new());
+                continue;
+            }
+        }
+        let mut kept = String::new();
+        let mut rest = line;
+        loop {
+            if open_comment.is_some() {
+                match rest.find("-->") {
+                    Some(end) => {
+                        open_comment = None;
+                        rest = &rest[end + 3..];
+                    }
+                    None => break,
+                }
+            }
+            let Some(start) = rest.find("<!--") else {
+                kept.push_str(rest);
+                break;
+            };
+            kept.push_str(&rest[..start]);
+            // A tag, or a tag mistyped (`<!-- CG: … -->`, `<!-- cg s.spot`), stays for the
+            // tag readers, which name a mistyped one.
+            let tag = rest[start + 4..]
+                .trim_start()
+                .get(..2)
+                .is_some_and(|s| s.eq_ignore_ascii_case("cg"));
+            match rest[start + 4..].find("-->") {
+                Some(len) => {
+                    let end = start + 4 + len + 3;
+                    if tag {
+                        kept.push_str(&rest[start..end]);
+                    } else {
+                        kept.push(' ');
+                    }
+                    rest = &rest[end..];
+                }
+                None if tag => {
+                    kept.push_str(&rest[start..]);
+                    break;
+                }
+                None => {
+                    open_comment = Some((k + 1, rest[start..].to_owned()));
+                    rest = "";
+                }
+            }
+        }
+        out.push(kept);
+    }
+    (out, open_comment)
+}
+
 /// Reads every vertex row, face row, tagged matrix, texture row and tagged shading table
 /// ([`crate::shading`]) of a report (Markdown; LaTeX tags `% cg: ID` are read too). Lenient:
 /// prose is ignored; a line that clearly tries to be a row but does not parse, a vertex, face,
@@ -808,7 +981,15 @@ pub fn parse_report(text: &str) -> (ParsedReport, Vec<ParseProblem>) {
         face_at: HashMap::new(),
         tex_at: HashMap::new(),
     };
-    let lines: Vec<String> = text.lines().map(normalize).collect();
+    let (visible, unclosed) = without_comments(text);
+    if let Some((line, found)) = unclosed {
+        let expected = Text::new(
+            "`-->` で閉じたコメント `<!--`（閉じていないので、ここから後ろはすべてコメントとして読みません）",
+            "a comment `<!--` closed by `-->` (it is not closed, so everything after it is a comment and is not read)",
+        );
+        reader.problem(line, &found, expected, RowKind::Data);
+    }
+    let lines: Vec<String> = visible.iter().map(|l| normalize(l)).collect();
     for (k, line) in lines.iter().enumerate() {
         reader.rows(k + 1, line);
         reader.tex_row(k + 1, line);

@@ -622,3 +622,125 @@ fn mistyped_tags_are_named_with_what_they_should_be() {
     let (_, problems) = parse_report(text);
     assert!(problems.is_empty(), "{problems:#?}");
 }
+
+const PYRAMID_VERTICES: &str = "V0 (0.0, 1.0, 0.0)\nV1 (1.0, -0.8, 1.0)\nV2 (1.0, -0.8, -1.0)\nV3 (-1.0, -0.8, 1.0)\nV4 (-1.0, -0.8, -1.0)\n";
+
+/// The normal of the one face of `text` as read (no problem expected).
+fn normal_read(text: &str) -> Option<Vec<f64>> {
+    let (r, problems) = parse_report(text);
+    assert!(problems.is_empty(), "{text:?}: {problems:#?}");
+    r.faces.first().and_then(|f| f.normal.as_ref()).map(|n| values(n))
+}
+
+/// A value after `≒` (or `≈`) is read, as the student guide says: a wrong normal written that
+/// way was dropped without a word (exit 0, "no normals").
+#[test]
+fn a_value_after_approximately_equal_is_read() {
+    let want = Some(vec![1.0, 0.0, 0.0]);
+    for row in [
+        "F0 { V0, V3, V1 } ≒ { 1.0, 0.0, 0.0 }",
+        "| F0 { V0, V3, V1 } | ≒ { 1.0, 0.0, 0.0 } |",
+        "F0 { V0, V3, V1 } ≈ { 1.0, 0.0, 0.0 }",
+        // A working that ends in its value: the last group of the chain.
+        "F0 { V0, V3, V1 } { 0.0, 0.486, 0.874 } ≒ { 1.0, 0.0, 0.0 }",
+        "F0 { V0, V3, V1 } = { 0.0, 0.486, 0.874 } ≒ { 1.0, 0.0, 0.0 }",
+    ] {
+        assert_eq!(normal_read(&format!("{PYRAMID_VERTICES}{row}\n")), want, "{row}");
+    }
+    let (r, problems) = parse_report("V1 ≒ (1.0, -0.8, 1.0)\n");
+    assert!(problems.is_empty(), "{problems:?}");
+    assert_eq!(values(&r.vertices[0].coords), [1.0, -0.8, 1.0]);
+    // And checked: a wrong one is a finding.
+    let text = format!("{PYRAMID_VERTICES}F0 {{ V0, V3, V1 }} ≒ {{ 1.0, 0.0, 0.0 }}\n");
+    let polygon = polygon_from_text(&text, Text::default()).unwrap();
+    let v = crate::verify::verify_data(&polygon, &parse_report(&text).0);
+    assert_eq!(v.findings.len(), 1, "{:#?}", v.findings);
+    assert_eq!((v.findings[0].line, v.findings[0].item.as_str()), (6, "F0 normal"));
+}
+
+/// A second normal on a face row, or one behind words, was dropped without a word; now the
+/// row is a problem at its line.
+#[test]
+fn a_second_or_labelled_normal_is_a_problem() {
+    for (row, second) in [
+        ("F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 } { 1.0, 0.0, 0.0 }", true),
+        ("| F0 { V0, V3, V1 } | { 0.0, 0.49, 0.87 } | { 1.0, 0.0, 0.0 } |", true),
+        ("F0 { V0, V3, V1 } 法線 { 1.0, 0.0, 0.0 }", false),
+        ("F0 { V0, V3, V1 } normal: n = { 1.0, 0.0, 0.0 }", false),
+    ] {
+        let text = format!("{PYRAMID_VERTICES}{row}\n");
+        let (r, problems) = parse_report(&text);
+        assert!(r.faces.is_empty(), "{row}: {:?}", r.faces);
+        assert_eq!(problems.len(), 1, "{row}: {problems:#?}");
+        let p = &problems[0];
+        messages_name(p, 6);
+        assert_eq!(p.kind, RowKind::Face);
+        assert!(p.expected.en.contains("{ 1.0, 0.0, 0.0 }"), "{p:?}");
+        assert_eq!(p.expected.en.contains("second normal"), second, "{p:?}");
+        assert!(polygon_from_text(&text, Text::default()).is_err(), "{row}");
+    }
+    // Two faces on a line, each with its normal, still read.
+    let text = format!(
+        "{PYRAMID_VERTICES}F0 {{ V0, V3, V1 }} {{ 0.0, 0.49, 0.87 }} F1 {{ V0, V2, V4 }} {{ 0.0, 0.49, -0.87 }}\n"
+    );
+    let (r, problems) = parse_report(&text);
+    assert!(problems.is_empty(), "{problems:#?}");
+    assert_eq!(r.faces.len(), 2);
+}
+
+/// `4.9e-1` is named as exponent notation, which the notation does not read, not as "not a
+/// number".
+#[test]
+fn exponent_notation_is_named_as_not_read() {
+    for (row, bad) in [
+        ("F0 { V0, V3, V1 } { 0.0, 4.9e-1, 8.7e-1 }", "4.9e-1"),
+        ("V1 (1e-30, 0, 0)", "1e-30"),
+        ("V1 (1.0, -8E-1, 1.0)", "-8E-1"),
+    ] {
+        let (_, problems) = parse_report(&format!("{row}\n"));
+        assert_eq!(problems.len(), 1, "{row}: {problems:#?}");
+        let p = &problems[0];
+        messages_name(p, 1);
+        assert!(p.expected.en.contains(&format!("`{bad}` is in exponent notation")), "{p:?}");
+        assert!(p.expected.ja.contains("指数表記"), "{p:?}");
+    }
+    for not_exponent in ["e-1", "1e", "1.2.3e4", "abc", "1e1.5"] {
+        assert!(!is_exponent_notation(not_exponent), "{not_exponent}");
+    }
+}
+
+/// An old table kept in an HTML comment, or an example in a code fence, is not read (it was:
+/// an old V0 clashed with the new one, a wrong normal in a comment was a finding); lines keep
+/// their numbers, and tags stay.
+#[test]
+fn comments_and_code_fences_are_not_read() {
+    let text = format!(
+        "<!-- old version\nV0 (0.0, 2.0, 0.0)\nV1 (1.0, -0.8, 1.0)\n-->\n{PYRAMID_VERTICES}F0 {{ V0, V3, V1 }} {{ 0.0, 0.49, 0.87 }}\n<!--\nF1 {{ V0, V2, V4 }} {{ 1.0, 0.0, 0.0 }}\n-->\n```\nF2 {{ V0, V1, V2 }} {{ 1.0, 0.0, 0.0 }}\n```\n~~~~ text\nV7 (1, 1, 1)\n~~~~\nF1 {{ V0, V2, V4 }} <!-- {{ 1, 0, 0 }} --> {{ 0.0, 0.49, -0.87 }}\n"
+    );
+    let (r, problems) = parse_report(&text);
+    assert!(problems.is_empty(), "{problems:#?}");
+    assert_eq!(r.vertices.len(), 5);
+    assert_eq!(r.vertices[0].line, 5);
+    assert_eq!(values(&r.vertices[0].coords), [0.0, 1.0, 0.0]);
+    let faces: Vec<(u32, usize)> = r.faces.iter().map(|f| (f.index, f.line)).collect();
+    assert_eq!(faces, [(0, 10), (1, 20)]);
+    assert_eq!(values(r.faces[1].normal.as_ref().unwrap()), [0.0, 0.49, -0.87]);
+    // The same text without the comments and fences names the old rows.
+    let (_, problems) =
+        parse_report(&text.replace("<!--", "").replace("```", "").replace("~~~~", ""));
+    assert!(!problems.is_empty());
+    // A tag is no comment; a comment never closed is named at its line.
+    let (r, problems) =
+        parse_report("<!-- cg: s.spot -->\n| α = 15° | 0.5 |\n<!-- old\nV0 (1, 2, 3)\n");
+    assert_eq!(r.tables.len(), 1);
+    assert!(r.vertices.is_empty());
+    assert_eq!(problems.len(), 1, "{problems:#?}");
+    messages_name(&problems[0], 3);
+    assert!(problems[0].expected.en.contains("not closed"), "{:?}", problems[0]);
+    let err = polygon_from_text(
+        &format!("{PYRAMID_VERTICES}F0 {{ V0, V3, V1 }}\n<!--\n"),
+        Text::default(),
+    )
+    .unwrap_err();
+    assert!(err.iter().any(|p| p.line == 7 && p.kind == RowKind::Data), "{err:#?}");
+}

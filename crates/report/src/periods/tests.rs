@@ -195,10 +195,11 @@ fn without_the_assignment_or_without_the_table_it_is_a_note() {
         v.notes.iter().any(|n| n.en == "no tagged periods table found in the report: a3.periods")
     );
     assert!(v.notes.iter().any(|n| n.ja.contains("周期の表がありません")));
-    // A row the kit does not have: a note naming it.
+    // A row the kit does not have: a note naming it; and the row it replaced is missing.
     let (text, _) = edit_cell(&text, "object 1", 0, "object 9");
     let v = check(&text, &derived, &a);
-    assert!(v.findings.is_empty(), "{:#?}", v.findings);
+    let items: Vec<&str> = v.findings.iter().map(|f| f.item.as_str()).collect();
+    assert_eq!(items, ["a3.periods object 1"], "{:#?}", v.findings);
     let line = line_of(&text, "| object 9 |");
     assert!(
         v.notes
@@ -206,5 +207,99 @@ fn without_the_assignment_or_without_the_table_it_is_a_note() {
             .any(|n| n.en.starts_with(&format!("line {line}: table a3.periods has no row"))),
         "{:?}",
         v.notes
+    );
+}
+
+/// A number written in a "—" cell (a value the motion does not have) was passed over: it is
+/// named with the motion; so is a period written as `NaN`, `inf` or `∞`.
+#[test]
+fn a_number_where_the_motion_has_none_and_a_period_that_is_no_number_are_mistakes() {
+    let a = assignment(STUDENTS[0]);
+    let spin = a.a3.objects.iter().position(|o| matches!(o.motion, Motion::Spin { .. }));
+    for lang in [Lang::Ja, Lang::En] {
+        for format in [Format::Markdown, Format::Latex] {
+            let (text, derived) = filled(&a, lang, format);
+            // The whole animation has no amplitude (column 4), whatever the student.
+            let (wrong, line) = edit_cell(&text, t("全体", "all").get(lang), 3, "30");
+            let v = check(&wrong, &derived, &a);
+            let item = format!("a3.periods {} (column 4)", t("全体", "all").get(lang));
+            assert_eq!(findings(&v), [(line, item.as_str())], "{lang} {format:?}");
+            let f = &v.findings[0];
+            assert_eq!((f.written.as_str(), f.derived.as_str()), ("30", "—"));
+            assert!(f.why.en.contains("has no amplitude (°)"), "{:?}", f.why);
+            assert!(f.why.ja.contains("「振幅（°）」の値はありません"), "{:?}", f.why);
+            if let Some(k) = spin {
+                // A spin has no radius or height either.
+                let (wrong, line) = edit_cell(&text, &label(k + 1, lang), 4, "1.5");
+                let v = check(&wrong, &derived, &a);
+                assert_eq!(v.findings.len(), 1, "{:#?}", v.findings);
+                assert_eq!(v.findings[0].line, line);
+            }
+            for bad in ["NaN", "inf", "∞"] {
+                let (wrong, line) = edit_cell(&text, &label(1, lang), 2, bad);
+                let v = check(&wrong, &derived, &a);
+                assert_eq!(findings(&v).len(), 1, "{bad}: {:#?}", v.findings);
+                assert_eq!(v.findings[0].line, line);
+                assert!(v.findings[0].why.en.contains("not a finite number"));
+            }
+        }
+    }
+}
+
+/// A table cut short by a blank line (the rows after it are outside the table), or with a row
+/// deleted, passed without a word: each missing row is a mistake.
+#[test]
+fn rows_missing_from_the_table_are_mistakes() {
+    let a = assignment(STUDENTS[1]);
+    let objects = a.a3.objects.len();
+    for lang in [Lang::Ja, Lang::En] {
+        let (text, derived) = filled(&a, lang, Format::Markdown);
+        // A row deleted.
+        let row = format!("| {} |", label(2, lang));
+        let deleted: String =
+            text.lines().filter(|l| !l.starts_with(&row)).map(|l| format!("{l}\n")).collect();
+        let v = check(&deleted, &derived, &a);
+        let item = format!("a3.periods {}", label(2, lang));
+        let items: Vec<&str> = v.findings.iter().map(|f| f.item.as_str()).collect();
+        assert_eq!(items, [item.as_str()], "{lang}");
+        let f = &v.findings[0];
+        assert!(f.why.en.contains("no row `object 2`"), "{:?}", f.why);
+        assert!(f.why.ja.contains("「物体2」の行がありません"), "{:?}", f.why);
+        // A blank line after the header: no row is in the table.
+        let first = format!("| {} |", label(1, lang));
+        let blank = text.replacen(&first, &format!("\n{first}"), 1);
+        let v = check(&blank, &derived, &a);
+        assert_eq!(v.findings.len(), objects + 1, "{lang}: {:#?}", v.findings);
+        let header = line_of(&blank, "|---|");
+        assert!(v.findings.iter().all(|f| f.line == header - 1), "{:#?}", v.findings);
+    }
+}
+
+/// A table in an HTML comment or a code fence is not read (it was, and checked as if written).
+#[test]
+fn a_table_in_a_comment_or_a_fence_is_not_read() {
+    let a = assignment(STUDENTS[2]);
+    let (text, derived) = filled(&a, Lang::En, Format::Markdown);
+    let tag = "<!-- cg: a3.periods -->";
+    // Commented out after the tag: the tag has no table (a problem of the reader).
+    let commented = text.replacen(tag, &format!("{tag}\n<!--"), 1).replacen(
+        "Ratio of the periods",
+        "-->\nRatio of the periods",
+        1,
+    );
+    let (report, problems) = parse_report(&commented);
+    assert_eq!(problems.len(), 1, "{problems:#?}");
+    assert_eq!(problems[0].line, line_of(&commented, tag));
+    assert!(report.tables.iter().any(|t| t.id == TABLE_ID && t.rows.is_empty()));
+    // In a fence with its tag: no table (a note, as for a report without it).
+    let fenced = text.replacen(tag, &format!("```\n{tag}"), 1).replacen(
+        "Ratio of the periods",
+        "```\nRatio of the periods",
+        1,
+    );
+    let v = check(&fenced, &derived, &a);
+    assert!(v.findings.is_empty(), "{:#?}", v.findings);
+    assert!(
+        v.notes.iter().any(|n| n.en == "no tagged periods table found in the report: a3.periods")
     );
 }

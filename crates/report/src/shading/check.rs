@@ -3,14 +3,14 @@
 //! ([`crate::verify::tolerance`]).
 
 use cg_assign::cg_shading::report::{
-    Cell, LIGHT_Q, ShadingData, TABLE_IDS, Table, Value, highlight_factor, light_table_at,
+    Cell, LIGHT_Q, Row, ShadingData, TABLE_IDS, Table, Value, highlight_factor, light_table_at,
 };
 use cg_core::glam::Vec3;
 use cg_core::lang::Lang;
 use cg_harness::Text;
 
 use super::fill::value_text;
-use super::{ParsedRow, ParsedTable, label_matches};
+use super::{ParsedRow, ParsedTable, canonical, label_matches};
 use crate::model::Written;
 use crate::parse::{clip, normalize, parse_number};
 use crate::verify::{Checker, Finding};
@@ -22,6 +22,8 @@ enum Written3 {
     Skip,
     /// Digits that are not a plain number or a tuple of them.
     Bad,
+    /// A value that is no finite number: `NaN`, `inf`, `∞` (alone or in a tuple).
+    NotFinite,
     /// The numbers written: one, or the entries of a tuple.
     Numbers(Vec<Written>),
 }
@@ -49,7 +51,8 @@ fn without_unit(text: &str) -> &str {
 /// every other row of the report ([`normalize`]).
 fn read_cell(text: &str) -> Written3 {
     let text = normalize(text);
-    if !text.chars().any(|c| c.is_ascii_digit()) {
+    // `NaN`, `inf` and `∞` have no digits, but they are written values, and wrong ones.
+    if !text.chars().any(|c| c.is_ascii_digit()) && !not_finite(&text) {
         return Written3::Skip;
     }
     let mut s = text.replace("\\approx", "≈").replace("^\\circ", "°").replace("\\circ", "°");
@@ -66,10 +69,22 @@ fn read_cell(text: &str) -> Written3 {
         Some(inner) => inner.split(',').map(str::trim).collect(),
         None => vec![last],
     };
+    if parts.iter().any(|p| not_finite(p)) {
+        return Written3::NotFinite;
+    }
     match parts.iter().map(|p| parse_number(p)).collect::<Option<Vec<Written>>>() {
         Some(numbers) if !numbers.is_empty() => Written3::Numbers(numbers),
         _ => Written3::Bad,
     }
+}
+
+/// Whether `text` names a value that is no finite number: a word `NaN`, `inf`, `infinity`
+/// (any case, with a sign) or `∞`.
+fn not_finite(text: &str) -> bool {
+    text.contains('∞')
+        || text
+            .split(|c: char| !c.is_ascii_alphabetic())
+            .any(|w| ["nan", "inf", "infinity"].iter().any(|n| w.eq_ignore_ascii_case(n)))
 }
 
 /// The item of a finding: `s.spot α = 15° (column 3)` (column 1 is the label).
@@ -100,6 +115,14 @@ fn cell(c: &mut Checker, table: &str, row: &ParsedRow, k: usize, kit: &Value) {
             let why = Text::new(
                 "数として読めません: 数そのもの（`0.577`）か括弧で囲んだ 3 つの数（`(0.577, 0.577, 0.577)`）、途中の式を書くときは最後に `= 0.577` と値を書きます",
                 "this does not read as a number: write a plain number (`0.577`) or three numbers in parentheses (`(0.577, 0.577, 0.577)`); after a working, end with `= 0.577`",
+            );
+            wrong_kind(c, row, k, it, kit, why);
+            return;
+        }
+        Written3::NotFinite => {
+            let why = Text::new(
+                "書かれた値は有限の数ではありません（NaN・inf・∞）。計算を見直して、有限の数を書きます",
+                "the written value is not a finite number (NaN, inf, ∞): check the working and write a finite number",
             );
             wrong_kind(c, row, k, it, kit, why);
             return;
@@ -264,6 +287,77 @@ pub(crate) fn check_table(c: &mut Checker, table: &ParsedTable, kit: &Table) {
             if let Some(value) = kit_cell.kit() {
                 cell(c, &table.id, row, k, &value);
             }
+        }
+    }
+}
+
+/// For a table whose every row must be written (the periods of `a3`), after [`check_table`]:
+/// each row of the kit's that the written table lacks is a finding (a table cut short by a blank
+/// line, or with a row deleted, is wrong, not "not written yet"), and so is a number (or `NaN`)
+/// written in a cell where the kit's row has no value (`—`), `no_value(row, k)` saying why there
+/// is none. A table with no rows at all is a problem of the reader already.
+pub(crate) fn check_complete(
+    c: &mut Checker,
+    table: &ParsedTable,
+    kit: &Table,
+    no_value: impl Fn(&Row, usize) -> Text,
+) {
+    if table.rows.is_empty() {
+        return;
+    }
+    // The language the table is written in, for the item's label.
+    let ja = table
+        .rows
+        .iter()
+        .any(|r| kit.rows.iter().any(|k| canonical(&r.label) == canonical(&k.label.ja)));
+    let last_line = table.rows.last().map_or(table.line, |r| r.line);
+    for kit_row in &kit.rows {
+        let Some(row) = table.rows.iter().find(|r| label_matches(&r.label, &kit_row.label)) else {
+            let label = if ja { &kit_row.label.ja } else { &kit_row.label.en };
+            let values: Vec<String> = kit_row
+                .cells
+                .iter()
+                .filter(|k| !matches!(k, Cell::Text(_)))
+                .map(|k| k.kit().map_or_else(|| "—".to_owned(), |v| value_text(&v)))
+                .collect();
+            c.out.checked += 1;
+            c.out.findings.push(Finding {
+                line: last_line,
+                item: format!("{} {label}", table.id),
+                written: "—".to_owned(),
+                derived: values.join(" | "),
+                tolerance: None,
+                why: Text::new(
+                    format!(
+                        "表に「{}」の行がありません。すべての行を書きます（表は最初の空行までなので、表の途中に空行を入れないでください）",
+                        kit_row.label.ja
+                    ),
+                    format!(
+                        "the table has no row `{}`: write every row (a table ends at its first blank line, so keep blank lines out of it)",
+                        kit_row.label.en
+                    ),
+                ),
+            });
+            continue;
+        };
+        if row.cells.len() != kit_row.cells.len() {
+            continue; // named by `check_table`
+        }
+        for (k, kit_cell) in kit_row.cells.iter().enumerate() {
+            if !matches!(kit_cell, Cell::Empty)
+                || !matches!(read_cell(&row.cells[k]), Written3::Numbers(_) | Written3::NotFinite)
+            {
+                continue;
+            }
+            c.out.checked += 1;
+            c.out.findings.push(Finding {
+                line: row.line,
+                item: item(&table.id, row, k),
+                written: clip(&row.cells[k]),
+                derived: "—".to_owned(),
+                tolerance: None,
+                why: no_value(kit_row, k),
+            });
         }
     }
 }

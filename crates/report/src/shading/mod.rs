@@ -21,7 +21,8 @@
 //! row has a number there and the cell holds digits: a plain number (`0.933`), three numbers in
 //! parentheses (`(0.577, 0.577, 0.577)`), or a working that ends in one (`1/√3 = 0.577`, the
 //! value after the last `=` or `≈`; a trailing unit `°`, `s` or `秒` is allowed). A cell without
-//! digits (`✍`, `—`, `None`) is not checked. The point Q of `s.light.q` may be the student's own: the kit derives
+//! digits (`✍`, `—`, `None`) is not checked; `NaN`, `inf` and `∞` are values that are no finite
+//! number, a mistake. The point Q of `s.light.q` may be the student's own: the kit derives
 //! that table from the Q written in it.
 
 use cg_assign::cg_shading::report::TABLE_IDS;
@@ -33,7 +34,7 @@ use crate::tables::tex_text;
 mod check;
 mod fill;
 
-pub(crate) use check::{check_table, verify};
+pub(crate) use check::{check_complete, check_table, verify};
 pub(crate) use fill::tagged_table;
 pub use fill::{KEYS, values};
 

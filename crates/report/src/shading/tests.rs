@@ -193,6 +193,47 @@ fn a_wrong_number_is_named_with_its_line_item_and_derived_value() {
     }
 }
 
+/// `NaN`, `inf` and `∞` have no digits, and were skipped like `✍` (the count of checked numbers
+/// just dropped, exit 0): they are written values that are no finite number, a mistake.
+#[test]
+fn a_value_that_is_no_finite_number_is_a_mistake() {
+    let d = derived("12345678");
+    let data = d.s.as_ref().unwrap();
+    let worked = by_hand(&filled(&d, Lang::En, Format::Markdown), data, Format::Markdown);
+    let at = |text: &str, start: &str| {
+        text.lines().position(|l| l.starts_with(start)).map(|k| k + 1).unwrap()
+    };
+    let cell_of =
+        |text: &str, start: &str| row_cells(text.lines().nth(at(text, start) - 1).unwrap());
+    for (start, k, to) in [
+        ("| d = 1 |", 1, "NaN"),
+        ("| d = 1 |", 1, "inf"),
+        ("| d = 1 |", 1, "∞"),
+        ("| d = 1 |", 1, "1/0 = ∞"),
+        ("| d = 1 |", 1, "-Infinity"),
+        ("| N |", 2, "(NaN, NaN, NaN)"),
+        ("| N |", 2, "(NaN, 1, 0)"),
+        ("| N·L |", 2, "NaN"),
+    ] {
+        let line = at(&worked, start);
+        let mut cells = cell_of(&worked, start).unwrap();
+        cells[k] = to.to_owned();
+        let mut lines: Vec<String> = worked.lines().map(str::to_owned).collect();
+        let cells: Vec<String> = cells.iter().map(|c| c.replace('|', "\\|")).collect();
+        lines[line - 1] = format!("| {} |", cells.join(" | "));
+        let (parsed, problems) = parse_report(&lines.join("\n"));
+        assert!(problems.is_empty(), "{problems:?}");
+        let v = verify(&parsed, &d);
+        assert_eq!(v.findings.len(), 1, "{to}: {:#?}", v.findings);
+        let f = &v.findings[0];
+        assert_eq!(f.line, line, "{to}");
+        assert!(f.why.en.contains("not a finite number"), "{to}: {f:?}");
+        assert!(f.why.ja.contains("有限の数ではありません"), "{to}: {f:?}");
+    }
+    assert_eq!(read("NaN"), None);
+    assert_eq!(read("information"), None, "a word is no value");
+}
+
 #[test]
 fn a_point_q_of_the_students_own_is_followed_and_must_lie_on_the_sphere() {
     let d = derived("12345678");
