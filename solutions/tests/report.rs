@@ -539,3 +539,26 @@ fn the_filled_latex_report_fits_the_page_in_both_languages() {
         assert!(wide.is_empty(), "{lang}: wider than the page:\n{}", wide.join("\n"));
     }
 }
+
+/// With `--data`, the report is still the student's: the student number recorded in
+/// `exercises/student.toml` fills the `student` placeholder (it said "not set: cg assignment
+/// --save" beside a recorded number); with none recorded, it says so.
+#[test]
+fn a_data_files_report_keeps_the_recorded_student_number() {
+    fn recorded() -> PathBuf {
+        std::env::temp_dir().join(format!("cg-report-data-student-{}", std::process::id()))
+    }
+    let dir = recorded();
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("student.toml"), "student = \"20250017\"\ntable = 1\n").unwrap();
+    let kit =
+        Kit { impls: impls(), student_file: || recorded().join("student.toml"), worker: None };
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/report/lecture-pyramid.md");
+    let source = Source { student: None, table: None, data: Some(data), encoding: None };
+    let gathered = app::gather(&source, &kit, Lang::En).unwrap();
+    assert_eq!(gathered.context.student.as_deref(), Some("20250017"));
+    assert_eq!(gathered.context.table.as_deref(), Some("1"));
+    let gathered = app::gather(&source, &self::kit(), Lang::En).unwrap();
+    assert_eq!(gathered.context.student, None, "nothing recorded");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -294,9 +294,23 @@ fn polygon_from(path: &Path, text: &str, lang: Lang) -> Result<PolygonData, Stri
 pub fn gather(source: &Source, kit: &Kit, lang: Lang) -> Result<Gathered, String> {
     if let Some(path) = &source.data {
         let (polygon, encoding) = read_data_in(path, source.encoding, lang)?;
+        // The data is not the assignment's, but the report is still the student's: their
+        // number when it is recorded or given (it said "not set" beside a recorded one).
+        let record = cg_assign::resolve_student(
+            source.student.as_deref(),
+            source.table,
+            &(kit.student_file)(),
+            lang,
+        )
+        .ok();
+        let context = Context {
+            student: record.as_ref().map(|r| r.student.to_string()),
+            table: record.as_ref().map(|r| r.table.to_string()),
+            ..Context::default()
+        };
         return Ok(Gathered {
             derived: Derived { a1: Some(polygon), ..Derived::default() },
-            context: Context::default(),
+            context,
             assignment: None,
             read: vec![(path.clone(), encoding)],
         });
