@@ -5,7 +5,7 @@
 use cg_assign::cg_shading::report::{
     Cell, LIGHT_Q, Row, ShadingData, TABLE_IDS, Table, Value, highlight_factor, light_table_at,
 };
-use cg_core::glam::Vec3;
+use cg_core::glam::{DVec3, Vec3};
 use cg_core::lang::Lang;
 use cg_harness::Text;
 
@@ -164,8 +164,11 @@ fn kit_for(c: &mut Checker, written: &ParsedTable, kit: &Table, data: &ShadingDa
     if written.id != LIGHT_Q {
         return kit.clone();
     }
-    let Some((row, k, point)) = chosen_point(written, kit) else { return kit.clone() };
-    let length = f64::from(point.length());
+    let Some((row, k, written_point)) = chosen_point(written, kit) else { return kit.clone() };
+    // |Q| and its direction in f64: Q = (1e20, 0, 0) has a direction, though its length
+    // overflows f32 (it was called a Q of length 0, and 1e39 was replaced by the kit's Q).
+    let length = written_point.length();
+    let point = written_point.normalize_or_zero().as_vec3();
     let it = item(&written.id, row, k);
     c.out.checked += 3;
     if (length - 1.0).abs() > 0.01 {
@@ -211,7 +214,10 @@ fn kit_for(c: &mut Checker, written: &ParsedTable, kit: &Table, data: &ShadingDa
 }
 
 /// The written row of the chosen point, its cell and the point, when it reads as three numbers.
-fn chosen_point<'a>(written: &'a ParsedTable, kit: &Table) -> Option<(&'a ParsedRow, usize, Vec3)> {
+fn chosen_point<'a>(
+    written: &'a ParsedTable,
+    kit: &Table,
+) -> Option<(&'a ParsedRow, usize, DVec3)> {
     for kit_row in &kit.rows {
         let Some(k) = kit_row.cells.iter().position(|c| matches!(c, Cell::Chosen(_))) else {
             continue;
@@ -219,7 +225,7 @@ fn chosen_point<'a>(written: &'a ParsedTable, kit: &Table) -> Option<(&'a Parsed
         let row = written.rows.iter().find(|r| label_matches(&r.label, &kit_row.label))?;
         let Written3::Numbers(n) = read_cell(row.cells.get(k)?) else { return None };
         let [x, y, z] = n.as_slice() else { return None };
-        let p = Vec3::new(x.value as f32, y.value as f32, z.value as f32);
+        let p = DVec3::new(x.value, y.value, z.value);
         return p.is_finite().then_some((row, k, p));
     }
     None

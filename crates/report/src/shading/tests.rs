@@ -280,6 +280,18 @@ fn a_point_q_of_the_students_own_is_followed_and_must_lie_on_the_sphere() {
     let v = verify(&parsed, &d);
     let f = v.findings.iter().find(|f| f.item == "s.light.q Q (column 3)").expect("named");
     assert!(f.why.en.contains("(0, 1, 0)") && !f.why.en.contains("Q/|Q|"), "{}", f.why.en);
+    // A Q whose length overflows f32 still has its direction: named off the sphere with its
+    // length, and checked at Q/|Q| (1e20 was called a Q of length 0; 1e39 was replaced by the
+    // kit's Q without a word).
+    for far in
+        ["(100000000000000000000, 0, 0)", "(100000000000000000000000000000000000000000, 0, 0)"]
+    {
+        let far_report = own_report.replacen(own_text, far, 1);
+        let (parsed, _) = parse_report(&far_report);
+        let v = verify(&parsed, &d);
+        let f = v.findings.iter().find(|f| f.item == "s.light.q Q (column 3)").expect(far);
+        assert!(f.why.en.contains("Q/|Q|") && !f.why.en.contains("length 0"), "{}", f.why.en);
+    }
 }
 
 /// The light table of `section` (Markdown, its tag first) with the by-hand cells written from
