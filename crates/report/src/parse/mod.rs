@@ -254,6 +254,9 @@ pub(crate) fn normalize(line: &str) -> String {
             '：' => ':',
             '．' => '.',
             '\u{3000}' => ' ',
+            // Full-width row names (`Ｖ０`, `Ｆ１`): the row was passed over without a word.
+            'Ｖ' => 'V',
+            'Ｆ' => 'F',
             // Full-width digits (an input method's ０.４９) are the same digits.
             _ => cg_core::text::ascii_digit(c),
         })

@@ -658,6 +658,19 @@ fn a_value_after_approximately_equal_is_read() {
     assert_eq!((v.findings[0].line, v.findings[0].item.as_str()), (6, "F0 normal"));
 }
 
+/// Rows written with an input method's full-width letters and digits (`Ｖ０`, `Ｆ０ ｛ Ｖ０、…｝`)
+/// are read as the ASCII ones: a full-width `Ｖ０` row was passed over, and the error was blamed
+/// on the rows after it.
+#[test]
+fn full_width_row_names_are_read() {
+    let (r, problems) = parse_report("Ｖ０ （0.0, 1.0, 0.0）\nＶ１ (1.0, -0.8, 1.0)\n");
+    assert!(problems.is_empty(), "{problems:?}");
+    assert_eq!(r.vertices.len(), 2, "{:?}", r.vertices);
+    assert_eq!(values(&r.vertices[0].coords), [0.0, 1.0, 0.0]);
+    let text = format!("{PYRAMID_VERTICES}Ｆ０ ｛ Ｖ０、Ｖ３、Ｖ１ ｝ {{ 0.0, 0.49, 0.87 }}\n");
+    assert_eq!(normal_read(&text), Some(vec![0.0, 0.49, 0.87]));
+}
+
 /// A second normal on a face row, or one behind words, was dropped without a word; now the
 /// row is a problem at its line.
 #[test]
