@@ -505,7 +505,11 @@ fn face_vertices(content: &str) -> Result<[u32; 3], GroupError> {
 fn detail(e: &GroupError, what_ja: &str, what_en: &str) -> Text {
     match e {
         GroupError::Unclosed => {
-            Text::new("（括弧が閉じていません）", " (the bracket is not closed)")
+            // Not looked for further on (a face of 300 vertices was said to be not closed).
+            Text::new(
+                format!("（括弧が閉じていないか、{MAX_GROUP} 文字より先で閉じています）"),
+                format!(" (the bracket is not closed within {MAX_GROUP} characters)"),
+            )
         }
         GroupError::Count(k) => {
             Text::new(format!("（{what_ja}が {k} 個あります）"), format!(" (found {k} {what_en})"))

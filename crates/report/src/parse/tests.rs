@@ -468,7 +468,10 @@ fn groups_of_a_few_hundred_characters_still_read() {
     let (r, problems) = parse_report(&text);
     assert!(r.vertices.is_empty());
     assert_eq!(problems.len(), 1, "{problems:?}");
-    assert!(problems[0].expected.en.ends_with("(the bracket is not closed)"), "{problems:?}");
+    assert!(
+        problems[0].expected.en.ends_with("(the bracket is not closed within 1024 characters)"),
+        "{problems:?}"
+    );
 }
 
 #[test]
@@ -481,7 +484,7 @@ fn a_line_of_unclosed_vertex_groups_is_one_problem() {
     let p = &problems[0];
     messages_name(p, 1);
     assert_eq!(p.found, format!("{}…", &text[..79]));
-    assert!(p.expected.en.ends_with("(the bracket is not closed)"), "{p:?}");
+    assert!(p.expected.en.ends_with("(the bracket is not closed within 1024 characters)"), "{p:?}");
 }
 
 #[test]
@@ -497,7 +500,10 @@ fn a_line_of_unclosed_face_groups_names_each_with_its_text() {
     assert!(last.line == 0 && last.expected.en.contains(&more), "{last:?}");
     for (k, p) in problems[..MAX_PROBLEMS_PER_LINE].iter().enumerate() {
         assert_eq!(p.line, 1);
-        assert!(p.expected.en.ends_with("(the bracket is not closed)"), "{p:?}");
+        assert!(
+            p.expected.en.ends_with("(the bracket is not closed within 1024 characters)"),
+            "{p:?}"
+        );
         let rest = text[5 * k..].trim();
         let expected =
             if rest.len() <= 80 { rest.to_owned() } else { format!("{}…", &rest[..79]) };
