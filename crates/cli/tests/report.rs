@@ -93,6 +93,11 @@ fn bad_input_gets_a_clear_error_not_a_panic() {
     assert!(!stderr.contains("panicked"), "{stderr}");
     let out = cg(&dir, &["--lang", "ja", "report", "check", "missing.md", "--data", "broken.md"]);
     assert_eq!(out.status.code(), Some(2));
+    // With --json, the error is JSON on stdout too (it was plain text only).
+    let out = cg(&dir, &["--lang", "en", "report", "check", "--data", "broken.md", "--json"]);
+    assert_eq!(out.status.code(), Some(2));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON on stdout");
+    assert!(json["error"].as_str().unwrap().contains("line 1"), "{json}");
     // --student means nothing beside --data: refused, not silently ignored (even when malformed).
     let out =
         cg(&dir, &["--lang", "en", "report", "check", "--data", "broken.md", "--student", "12ab"]);

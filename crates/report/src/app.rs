@@ -199,7 +199,16 @@ fn run_here(command: &Command, kit: &Kit, lang: Lang) -> Result<bool, String> {
             Ok(true)
         }
         Command::Check(args) => {
-            let outcome = check(args, kit, lang)?;
+            let outcome = match check(args, kit, lang) {
+                Ok(outcome) => outcome,
+                // A tool reading --json gets JSON on stdout for an error too (the message is
+                // also said on stderr, with exit 2).
+                Err(e) if args.json => {
+                    println!("{}", serde_json::json!({ "error": e }));
+                    return Err(e);
+                }
+                Err(e) => return Err(e),
+            };
             if args.json {
                 println!(
                     "{}",
