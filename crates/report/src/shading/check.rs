@@ -384,6 +384,14 @@ pub(crate) fn verify(c: &mut Checker, written: &[ParsedTable], data: Option<&Sha
         let Some(kit) = data.table(&table.id) else { continue };
         let kit = kit_for(c, table, kit, data);
         check_table(c, table, &kit);
+        // Every row the fill wrote must stay: a deleted row (or a blank line that ends the table
+        // early) left its cells unchecked without a word.
+        check_complete(c, table, &kit, |_, _| {
+            Text::new(
+                "この欄に値はありません。「—」のままにします",
+                "this cell has no value: leave it as “—”",
+            )
+        });
     }
     let missing: Vec<&str> =
         TABLE_IDS.iter().copied().filter(|id| !written.iter().any(|t| t.id == *id)).collect();

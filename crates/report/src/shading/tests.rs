@@ -193,6 +193,26 @@ fn a_wrong_number_is_named_with_its_line_item_and_derived_value() {
     }
 }
 
+/// A row deleted from a shading table, or a table cut short by a blank line, is a mistake at
+/// the table (its cells went unchecked without a word), as in a3's periods table.
+#[test]
+fn a_row_missing_from_a_shading_table_is_a_mistake() {
+    let d = derived("12345678");
+    let data = d.s.as_ref().unwrap();
+    let worked = by_hand(&filled(&d, Lang::En, Format::Markdown), data, Format::Markdown);
+    let row = worked.lines().find(|l| l.starts_with("| α = 15° |")).unwrap().to_owned();
+    let deleted = worked.replacen(&format!("{row}\n"), "", 1);
+    let (parsed, _) = parse_report(&deleted);
+    let v = verify(&parsed, &d);
+    assert_eq!(v.findings.len(), 1, "{:#?}", v.findings);
+    assert!(v.findings[0].item.starts_with("s.spot"), "{:#?}", v.findings);
+    assert!(v.findings[0].why.en.contains("the table has no row `α = 15°`"), "{:#?}", v.findings);
+    let blank = worked.replacen(&format!("{row}\n"), &format!("\n{row}\n"), 1);
+    let (parsed, _) = parse_report(&blank);
+    let v = verify(&parsed, &d);
+    assert!(!v.findings.is_empty(), "a table cut short by a blank line");
+}
+
 /// `NaN`, `inf` and `∞` have no digits, and were skipped like `✍` (the count of checked numbers
 /// just dropped, exit 0): they are written values that are no finite number, a mistake.
 #[test]
