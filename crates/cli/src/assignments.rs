@@ -36,7 +36,7 @@ pub struct AssignmentArgs {
     #[arg(long, value_name = "NUMBER", allow_hyphen_values = true)]
     student: Option<String>,
     /// The variant table (default: the newest, or the one in exercises/student.toml) / 課題表の版
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
     table: Option<TableVersion>,
     /// Only this assignment / この課題だけ表示
     #[arg(long, value_enum)]
@@ -683,5 +683,20 @@ mod tests {
         }
         // The help's range is the limit's.
         assert_eq!(cg_assign::cg_a3::VIEW_MAX_S.round(), 16667.0);
+    }
+
+    /// A negative number for an option that takes a number is a bad value of that option, not
+    /// "there is no argument '-1'".
+    #[test]
+    fn a_negative_number_is_a_bad_value_not_an_unknown_argument() {
+        for args in [
+            &["cg", "assignment", "--table", "-1"][..],
+            &["cg", "inspect", "--max-rows", "-1"],
+            &["cg", "report", "check", "--table", "-1"],
+        ] {
+            let e = Cli::try_parse_from(args).err().unwrap_or_else(|| panic!("{args:?} was taken"));
+            assert_ne!(e.kind(), clap::error::ErrorKind::UnknownArgument, "{args:?}: {e}");
+            assert!(e.to_string().contains("-1"), "{args:?}: {e}");
+        }
     }
 }

@@ -23,7 +23,7 @@ pub struct Args {
     #[arg(long, value_name = "NAME")]
     object: Option<String>,
     /// Rows per table before "… more" (0 = all) / 表の最大行数（0 で全部）
-    #[arg(long, default_value_t = 24, value_name = "N")]
+    #[arg(long, default_value_t = 24, value_name = "N", allow_negative_numbers = true)]
     max_rows: usize,
     /// Print every row of every table / 全行を表示
     #[arg(long)]

@@ -51,7 +51,7 @@ pub struct Source {
     #[arg(long, value_name = "NUMBER", allow_hyphen_values = true, conflicts_with = "data")]
     pub student: Option<String>,
     /// The variant table (default: the one in exercises/student.toml) / 課題表の版
-    #[arg(long, value_name = "N", conflicts_with = "data")]
+    #[arg(long, value_name = "N", allow_negative_numbers = true, conflicts_with = "data")]
     pub table: Option<TableVersion>,
     /// A vertex and face list (the lecture's notation: `V0 (0.0, 1.0, 0.0)`, `F0 { V0, V3, V1 }`)
     /// instead of the exercises / 演習のプログラムの代わりに、頂点と面の一覧のファイルを使う
