@@ -93,6 +93,14 @@ fn bad_input_gets_a_clear_error_not_a_panic() {
     assert!(!stderr.contains("panicked"), "{stderr}");
     let out = cg(&dir, &["--lang", "ja", "report", "check", "missing.md", "--data", "broken.md"]);
     assert_eq!(out.status.code(), Some(2));
+    // A data file past the 8 MiB a report may have is refused before it is read (63 MiB of
+    // vertex lines took 1.9 GB).
+    let big = "V0 (0.0, 1.0, 0.0)\n".repeat((8 << 20) / 19 + 1);
+    std::fs::write(dir.join("big.md"), big).unwrap();
+    let out = cg(&dir, &["--lang", "en", "report", "check", "--data", "big.md"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("big.md") && stderr.contains("8 MiB"), "{stderr}");
     // With --json, the error is JSON on stdout too (it was plain text only).
     let out = cg(&dir, &["--lang", "en", "report", "check", "--data", "broken.md", "--json"]);
     assert_eq!(out.status.code(), Some(2));

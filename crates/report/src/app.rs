@@ -241,9 +241,15 @@ fn read_text(
     forced: Option<Encoding>,
     lang: Lang,
 ) -> Result<(String, Encoding), String> {
-    cg_core::text::read(path, forced)
-        .map_err(|e| format!("{}: {}", path.display(), e.text().get(lang)))
+    let said = |e: cg_core::text::ReadError| format!("{}: {}", path.display(), e.text().get(lang));
+    let bytes = cg_core::text::read_bounded(path, MAX_REPORT_BYTES).map_err(said)?;
+    cg_core::text::decode(&bytes, forced).map_err(|e| said(e.into()))
 }
+
+/// The most bytes of a report or a data file read: 8 MiB, far past any report (the course's are
+/// tens of kilobytes; a data file of 100 000 faces is about 5 MB). Reading one costs about 30
+/// times its size: 63 MiB of vertex lines (the 64 MiB every other text may have) took 1.9 GB.
+pub const MAX_REPORT_BYTES: u64 = 8 << 20;
 
 /// `  file: read as Shift_JIS` for each file not read as UTF-8, each line starting with
 /// `bullet`.
