@@ -185,11 +185,6 @@ fn a_huge_panic_message_is_cut() {
 #[cfg(target_os = "linux")]
 #[test]
 fn replies_written_unasked_do_not_fill_the_callers_memory() {
-    let rss_mb = || -> u64 {
-        let status = std::fs::read_to_string("/proc/self/status").unwrap();
-        let line = status.lines().find(|l| l.starts_with("VmRSS:")).unwrap();
-        line.split_whitespace().nth(1).unwrap().parse::<u64>().unwrap() / 1024
-    };
     let before = rss_mb();
     let mut w = worker();
     let _ = w.call::<_, i64>("flood", &(), BUDGET);
@@ -209,11 +204,6 @@ fn replies_written_unasked_do_not_fill_the_callers_memory() {
 #[cfg(target_os = "linux")]
 #[test]
 fn a_reply_of_too_many_items_is_refused_before_it_is_decoded() {
-    let rss_mb = || -> u64 {
-        let status = std::fs::read_to_string("/proc/self/status").unwrap();
-        let line = status.lines().find(|l| l.starts_with("VmRSS:")).unwrap();
-        line.split_whitespace().nth(1).unwrap().parse::<u64>().unwrap() / 1024
-    };
     let mut w = worker();
     let before = rss_mb();
     // The reply is `{"Value": [n numbers]}`: a map, its key, the list and the numbers.
@@ -231,4 +221,12 @@ fn a_reply_of_too_many_items_is_refused_before_it_is_decoded() {
     // One fewer is read, as a list of numbers (not a value per number).
     let fits = w.call::<_, Vec<u8>>("items", &(too_many - 1), Duration::from_secs(60)).unwrap();
     assert_eq!(fits.len(), too_many - 1);
+}
+
+/// This process's resident memory, in MiB.
+#[cfg(target_os = "linux")]
+fn rss_mb() -> u64 {
+    let status = std::fs::read_to_string("/proc/self/status").unwrap();
+    let line = status.lines().find(|l| l.starts_with("VmRSS:")).unwrap();
+    line.split_whitespace().nth(1).unwrap().parse::<u64>().unwrap() / 1024
 }
