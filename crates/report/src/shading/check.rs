@@ -312,14 +312,15 @@ pub(crate) fn check_complete(
         return;
     }
     // The language the table is written in, for the item's label.
-    let ja = table
+    let in_japanese = table
         .rows
         .iter()
         .any(|r| kit.rows.iter().any(|k| canonical(&r.label) == canonical(&k.label.ja)));
+    let written_in = if in_japanese { Lang::Ja } else { Lang::En };
     let last_line = table.rows.last().map_or(table.line, |r| r.line);
     for kit_row in &kit.rows {
         let Some(row) = table.rows.iter().find(|r| label_matches(&r.label, &kit_row.label)) else {
-            let label = if ja { &kit_row.label.ja } else { &kit_row.label.en };
+            let label = kit_row.label.get(written_in);
             let values: Vec<String> = kit_row
                 .cells
                 .iter()
