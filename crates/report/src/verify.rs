@@ -806,15 +806,27 @@ pub fn verify_data(polygon: &PolygonData, report: &ParsedReport) -> Verification
         c.normal(f, face_normal_f64(a, b, cc));
     }
     if !unjudged.is_empty() {
-        let list = unjudged.join(", ");
+        // The first few faces by name and the rest counted: a large open model named every
+        // face in one line (megabytes).
+        let list = unjudged.iter().take(UNJUDGED_NAMED).cloned().collect::<Vec<_>>().join(", ");
+        let more = unjudged.len().saturating_sub(UNJUDGED_NAMED);
+        let (more_ja, more_en) = if more > 0 {
+            (format!(" ほか {more} 面"), format!(" and {more} more"))
+        } else {
+            (String::new(), String::new())
+        };
         c.note(
-            format!("{list}: モデルが閉じていない（または面がつながっていない）ので、法線が外向きかどうかは判定できません"),
-            format!("{list}: the model is not closed (or the faces are not connected), so whether the normal points outward cannot be judged"),
+            format!("{list}{more_ja}: モデルが閉じていない（または面がつながっていない）ので、法線が外向きかどうかは判定できません"),
+            format!("{list}{more_en}: the model is not closed (or the faces are not connected), so whether the normal points outward cannot be judged"),
         );
     }
     tables_missing(&mut c, report);
     c.finish()
 }
+
+/// How many faces the note on faces whose outwardness cannot be judged names; the rest are
+/// counted.
+const UNJUDGED_NAMED: usize = 10;
 
 mod outward;
 

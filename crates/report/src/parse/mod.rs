@@ -348,8 +348,9 @@ fn tokens(line: &str, letter: char) -> Vec<(usize, Option<u32>, usize)> {
 enum GroupError {
     /// No closing `)` or `}` on the line.
     Unclosed,
-    /// Not the number of entries asked for (the count found).
-    Count(usize),
+    /// Not the number of entries asked for (the count found), and whether a comma stood between
+    /// two digits (`0,5`: a decimal comma, which splits one number in two).
+    Count(usize, bool),
     /// An entry that is not a plain number (or not a vertex number).
     NotNumber(String),
 }
@@ -383,11 +384,20 @@ fn entries(content: &str) -> Vec<&str> {
     if content.trim().is_empty() { Vec::new() } else { content.split(',').map(str::trim).collect() }
 }
 
+/// Whether a comma stands right between two digits (`0,5`), as a decimal comma is written; the
+/// kit's notation separates numbers with commas, so `(0,5, 1,0, 0)` reads as five numbers.
+fn has_decimal_comma(content: &str) -> bool {
+    content
+        .as_bytes()
+        .windows(3)
+        .any(|w| w[0].is_ascii_digit() && w[1] == b',' && w[2].is_ascii_digit())
+}
+
 /// `n` plain numbers, comma-separated.
 fn tuple(content: &str, n: usize) -> Result<Vec<Written>, GroupError> {
     let parts = entries(content);
     if parts.len() != n {
-        return Err(GroupError::Count(parts.len()));
+        return Err(GroupError::Count(parts.len(), parts.len() > n && has_decimal_comma(content)));
     }
     parts
         .iter()
@@ -486,7 +496,7 @@ fn looks_like_data(line: &str, pos: usize) -> bool {
 fn face_vertices(content: &str) -> Result<[u32; 3], GroupError> {
     let parts = entries(content);
     if parts.len() != 3 {
-        return Err(GroupError::Count(parts.len()));
+        return Err(GroupError::Count(parts.len(), false));
     }
     let mut out = [0u32; 3];
     for (slot, p) in out.iter_mut().zip(&parts) {
@@ -511,7 +521,15 @@ fn detail(e: &GroupError, what_ja: &str, what_en: &str) -> Text {
                 format!(" (the bracket is not closed within {MAX_GROUP} characters)"),
             )
         }
-        GroupError::Count(k) => {
+        GroupError::Count(k, true) => Text::new(
+            format!(
+                "（{what_ja}が {k} 個あります。小数点にカンマを使っていませんか。0.5 のようにピリオドで書きます）"
+            ),
+            format!(
+                " (found {k} {what_en}: is a comma used as the decimal point? Write decimals with a point, such as 0.5)"
+            ),
+        ),
+        GroupError::Count(k, false) => {
             Text::new(format!("（{what_ja}が {k} 個あります）"), format!(" (found {k} {what_en})"))
         }
         GroupError::NotNumber(s) if is_exponent_notation(s) => Text::new(

@@ -728,6 +728,27 @@ fn exponent_notation_is_named_as_not_read() {
     }
 }
 
+/// A decimal comma (`0,5`) splits each number in two; the count found is said with a hint about
+/// the comma (it was "found 5 numbers" and nothing more). Too few numbers, or too many without
+/// a comma between digits, get no hint.
+#[test]
+fn a_decimal_comma_is_named() {
+    for (row, hinted) in [
+        ("V1 (1,0, -0,8, 1,0)", true),
+        ("F0 { V0, V3, V1 } { 0,0, 0,49, 0,87 }", true),
+        ("V1 (1.0, -0.8)", false),
+        ("V1 (1.0, -0.8, 1.0, 2.0)", false),
+        ("V1 (1,0)", false),
+    ] {
+        let (_, problems) = parse_report(&format!("{row}\n"));
+        assert_eq!(problems.len(), 1, "{row}: {problems:#?}");
+        let p = &problems[0];
+        messages_name(p, 1);
+        assert_eq!(p.expected.en.contains("comma used as the decimal point"), hinted, "{p:?}");
+        assert_eq!(p.expected.ja.contains("小数点にカンマ"), hinted, "{p:?}");
+    }
+}
+
 /// An old table kept in an HTML comment, or an example in a code fence, is not read (it was:
 /// an old V0 clashed with the new one, a wrong normal in a comment was a finding); lines keep
 /// their numbers, and tags stay.

@@ -266,11 +266,13 @@ pub(crate) fn check_table(c: &mut Checker, table: &ParsedTable, kit: &Table) {
         {
             let (got, want) = (row.cells.len() + 1, kit_row.cells.len() + 1);
             c.out.checked += 1;
+            // The cells as written against the kit's row, not the two counts in the slots of
+            // values (it read "written 5, derived 4").
             c.out.findings.push(Finding {
                 line: row.line,
                 item: format!("{} {}", table.id, clip(&row.label)),
-                written: got.to_string(),
-                derived: want.to_string(),
+                written: clip(&row.cells.join(" | ")),
+                derived: kit_cells(kit_row, written_in(table, kit), true),
                 tolerance: None,
                 why: Text::new(
                     format!(
@@ -297,6 +299,30 @@ pub(crate) fn check_table(c: &mut Checker, table: &ParsedTable, kit: &Table) {
     }
 }
 
+/// The language a written table is in (a row label in the kit's Japanese), for the labels and
+/// text cells the kit shows back.
+fn written_in(table: &ParsedTable, kit: &Table) -> Lang {
+    let in_japanese = table
+        .rows
+        .iter()
+        .any(|r| kit.rows.iter().any(|k| canonical(&r.label) == canonical(&k.label.ja)));
+    if in_japanese { Lang::Ja } else { Lang::En }
+}
+
+/// The kit's row `kit_row` as cells joined by ` | `: each value, `—` where there is none, and,
+/// when `text` is set, its text cells in `lang` (so that each column has its place).
+fn kit_cells(kit_row: &Row, lang: Lang, text: bool) -> String {
+    kit_row
+        .cells
+        .iter()
+        .filter_map(|k| match k {
+            Cell::Text(t) => text.then(|| t.get(lang).to_owned()),
+            _ => Some(k.kit().map_or_else(|| "—".to_owned(), |v| value_text(&v))),
+        })
+        .collect::<Vec<_>>()
+        .join(" | ")
+}
+
 /// For a table whose every row must be written (the periods of `a3`), after [`check_table`]:
 /// each row of the kit's that the written table lacks is a finding (a table cut short by a blank
 /// line, or with a row deleted, is wrong, not "not written yet"), and so is a number (or `NaN`)
@@ -311,28 +337,17 @@ pub(crate) fn check_complete(
     if table.rows.is_empty() {
         return;
     }
-    // The language the table is written in, for the item's label.
-    let in_japanese = table
-        .rows
-        .iter()
-        .any(|r| kit.rows.iter().any(|k| canonical(&r.label) == canonical(&k.label.ja)));
-    let written_in = if in_japanese { Lang::Ja } else { Lang::En };
+    let written_in = written_in(table, kit);
     let last_line = table.rows.last().map_or(table.line, |r| r.line);
     for kit_row in &kit.rows {
         let Some(row) = table.rows.iter().find(|r| label_matches(&r.label, &kit_row.label)) else {
             let label = kit_row.label.get(written_in);
-            let values: Vec<String> = kit_row
-                .cells
-                .iter()
-                .filter(|k| !matches!(k, Cell::Text(_)))
-                .map(|k| k.kit().map_or_else(|| "—".to_owned(), |v| value_text(&v)))
-                .collect();
             c.out.checked += 1;
             c.out.findings.push(Finding {
                 line: last_line,
                 item: format!("{} {label}", table.id),
                 written: "—".to_owned(),
-                derived: values.join(" | "),
+                derived: kit_cells(kit_row, written_in, false),
                 tolerance: None,
                 why: Text::new(
                     format!(

@@ -451,6 +451,10 @@ fn students_ways_of_writing_are_read_and_a_missing_column_is_a_finding() {
     assert_eq!(v.findings.len(), 1, "{:#?}", v.findings);
     let m = v.findings[0].message(Lang::Ja);
     assert!(m.contains("3 列ですが、表は 4 列です"), "{m}");
+    // The slots of values hold the cells as written and the kit's row, not the two counts.
+    assert!(v.findings[0].written.starts_with("0.933 | "), "{:#?}", v.findings[0]);
+    assert_eq!(v.findings[0].derived.split(" | ").count(), 3, "{:#?}", v.findings[0]);
+    assert!(v.findings[0].derived.contains("0.966"), "{:#?}", v.findings[0]);
     // A row the table does not have is a note whose list of rows is in the reader's language.
     let extra = format!("{nl}\n| 合計 | 0.5 |");
     let (parsed, _) = parse_report(&worked.replacen(&nl, &extra, 1));

@@ -1,4 +1,5 @@
 use super::*;
+use std::fmt::Write as _;
 
 #[test]
 fn items_read_in_japanese() {
@@ -462,6 +463,28 @@ fn data_alone_on_an_open_model_says_why_order_is_not_judged() {
     assert!(v.is_clean(), "{:#?}", v.findings);
     assert_eq!(v.notes.len(), 1);
     assert!(v.notes[0].en.starts_with("F0: the model is not closed"), "{}", v.notes[0]);
+    // A large open model names its first faces and counts the rest (it named every face in
+    // one note: megabytes for the largest data file).
+    let mut text = String::new();
+    for k in 0..100 {
+        let x = k as f32;
+        writeln!(
+            text,
+            "V{} ({x}, 0, 0)\nV{} ({x}, 1, 0)\nV{} ({x}, 0, 1)",
+            3 * k,
+            3 * k + 1,
+            3 * k + 2
+        )
+        .unwrap();
+    }
+    for k in 0..100 {
+        writeln!(text, "F{k} {{ V{}, V{}, V{} }}", 3 * k, 3 * k + 1, 3 * k + 2).unwrap();
+    }
+    let v = data_alone(&text);
+    let note = v.notes.iter().find(|n| n.en.contains("not closed")).expect("the note");
+    assert!(note.en.starts_with("F0, F1, F2, F3, F4, F5, F6, F7, F8, F9 and 90 more: "), "{note}");
+    assert!(note.ja.starts_with("F0, F1, F2, F3, F4, F5, F6, F7, F8, F9 ほか 90 面: "), "{note}");
+    assert!(!note.en.contains("F10"), "{note}");
 }
 
 proptest! {
