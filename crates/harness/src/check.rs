@@ -114,8 +114,8 @@ pub enum Outcome {
     /// The worker running the student's function ended during the call: an abort, a stack
     /// overflow, the memory limit, an `exit()`.
     Crashed {
-        /// How it ended, as the system says it (`signal: 6 (SIGABRT)`, `exit status: 0`).
-        how: String,
+        /// How it ended, and what to look for (`cg_worker::how_it_ended`).
+        how: Text,
         /// The end of what it wrote on stderr.
         stderr: String,
     },
@@ -141,7 +141,8 @@ impl Outcome {
                 Outcome::TimedOut { limit_ms: u64::try_from(limit.as_millis()).unwrap_or(u64::MAX) }
             }
             CallError::Crashed { status, stderr } => {
-                Outcome::Crashed { how: status.clone(), stderr: stderr.clone() }
+                let how = Text::new(status.ja.clone(), status.en.clone());
+                Outcome::Crashed { how, stderr: stderr.clone() }
             }
             CallError::Broken(why) => {
                 Outcome::Broken { why: Text::new(why.ja.clone(), why.en.clone()) }
@@ -227,13 +228,9 @@ impl Outcome {
                 format!("あなたの関数の結果を受け取れませんでした: {}", why.ja),
                 format!("no result came back from your function: {}", why.en),
             ),
-            Outcome::Crashed { how: status, .. } => Text::new(
-                format!(
-                    "あなたの関数を実行していたプロセスが途中で終了しました（{status}）。exit() の呼び出し、スタックの溢れ（深すぎる再帰）、メモリの使いすぎを確認してください。"
-                ),
-                format!(
-                    "the process running your function ended during the call ({status}): look for a call of exit(), a stack overflow (recursion too deep) or too much memory"
-                ),
+            Outcome::Crashed { how, .. } => Text::new(
+                format!("あなたの関数を実行していたプロセスが途中で終了しました: {}。", how.ja),
+                format!("the process running your function ended during the call: {}", how.en),
             ),
             Outcome::DoesNotCompile { module, .. } => Text::new(
                 format!(

@@ -30,8 +30,8 @@ pub enum CallError {
     /// The worker ended during the call (an abort, a memory limit, a stack overflow): how, and
     /// the end of what it wrote on stderr.
     Crashed {
-        /// The exit status, as the system describes it.
-        status: String,
+        /// How it ended, in both languages ([`how_it_ended`]).
+        status: Reason,
         /// The end of its stderr.
         stderr: String,
     },
@@ -321,15 +321,87 @@ impl Worker {
         if matches!(r.child.try_wait(), Ok(None)) {
             let _ = r.child.kill();
         }
-        let status = r.child.wait().map_or_else(|e| e.to_string(), |s| s.to_string());
+        let status = r.child.wait();
         // The reader thread ends with the pipe; give it a moment to take the last bytes.
         let until = std::time::Instant::now() + Duration::from_millis(200);
         while Arc::strong_count(&r.stderr) > 1 && std::time::Instant::now() < until {
             std::thread::sleep(Duration::from_millis(5));
         }
         let bytes = r.stderr.lock().map(|t| t.clone()).unwrap_or_default();
-        CallError::Crashed { status, stderr: String::from_utf8_lossy(&bytes).into_owned() }
+        let stderr = String::from_utf8_lossy(&bytes).into_owned();
+        CallError::Crashed { status: how_it_ended(status.as_ref().ok(), &stderr), stderr }
     }
+}
+
+/// How a worker ended during a call, in both languages: the cause its stderr names (Rust's
+/// allocator failing under the memory limit, a stack overflow), else its exit code (a call of
+/// `exit()`) or the signal that ended it. The system's own words (`exit status: 0`,
+/// `signal: 6 (SIGABRT)`) stood in the Japanese sentence before.
+#[must_use]
+pub fn how_it_ended(status: Option<&std::process::ExitStatus>, stderr: &str) -> Reason {
+    if stderr.contains("memory allocation of ") {
+        return Reason::new(
+            "メモリの上限を超えました（メモリを確保できませんでした）。大きすぎる Vec や終わらない push がないか確認してください",
+            "it went over the memory limit (an allocation failed): look for a Vec too large or a push that never ends",
+        );
+    }
+    if stderr.contains("has overflowed its stack") {
+        return Reason::new(
+            "スタックが溢れました。再帰が深すぎないか（終わらない再帰）、大きな配列をローカル変数にしていないか確認してください",
+            "its stack overflowed: look for recursion too deep (or without end), or a very large local array",
+        );
+    }
+    let code = status.and_then(std::process::ExitStatus::code);
+    if let Some(code) = code {
+        return Reason::new(
+            format!("終了コード {code} で終了しました。exit() を呼んでいないか確認してください"),
+            format!("it exited with code {code}: look for a call of exit()"),
+        );
+    }
+    match status.and_then(signal) {
+        Some(n) => {
+            let ja = signal_name(n).map_or_else(|| format!("{n} "), |s| format!("{n}（{s}）"));
+            let name_en = signal_name(n).map(|s| format!(" ({s})")).unwrap_or_default();
+            Reason::new(
+                format!(
+                    "シグナル {ja}で終了しました。exit()・abort() の呼び出し、スタックの溢れ（深すぎる再帰）、メモリの使いすぎがないか確認してください"
+                ),
+                format!(
+                    "it was ended by signal {n}{name_en}: look for a call of exit() or abort(), a stack overflow (recursion too deep) or too much memory"
+                ),
+            )
+        }
+        None => Reason::new(
+            "終わり方がわかりません。exit()・abort() の呼び出し、スタックの溢れ、メモリの使いすぎがないか確認してください",
+            "how it ended is not known: look for a call of exit() or abort(), a stack overflow or too much memory",
+        ),
+    }
+}
+
+/// The signal that ended a process (Unix).
+#[cfg(unix)]
+fn signal(status: &std::process::ExitStatus) -> Option<i32> {
+    std::os::unix::process::ExitStatusExt::signal(status)
+}
+
+/// The signal that ended a process: none on this system.
+#[cfg(not(unix))]
+fn signal(_: &std::process::ExitStatus) -> Option<i32> {
+    None
+}
+
+/// The usual name of signal `n` on Linux and macOS, where they agree.
+fn signal_name(n: i32) -> Option<&'static str> {
+    Some(match n {
+        4 => "SIGILL",
+        6 => "SIGABRT",
+        8 => "SIGFPE",
+        9 => "SIGKILL",
+        11 => "SIGSEGV",
+        13 => "SIGPIPE",
+        15 => "SIGTERM",
+        _ => return None,
+    })
 }
 
 /// What a call's reply gives. The markers of a [`Reply::Stub`] are recorded on this thread

@@ -26,7 +26,7 @@ pub mod proxy;
 pub mod serve;
 pub mod tables;
 
-pub use client::{CallError, Worker};
+pub use client::{CallError, Worker, how_it_ended};
 
 /// Limits this process's memory to `mb` MiB, so that a student's function that allocates
 /// without end fails its call instead of taking the machine's memory: its address space on Unix

@@ -79,7 +79,44 @@ fn an_endless_loop_fails_its_own_call_only() {
 fn an_abort_is_a_crash_of_that_call_with_the_workers_stderr() {
     let mut w = worker();
     match w.call::<_, i64>("abort", &(), BUDGET) {
-        Err(CallError::Crashed { status, .. }) => assert!(!status.is_empty()),
+        // Said in each language, not as the system's English (`signal: 6 (SIGABRT)`).
+        #[cfg(unix)]
+        Err(CallError::Crashed { status, .. }) => {
+            assert!(status.ja.starts_with("シグナル 6（SIGABRT）で終了しました"), "{status:?}");
+            assert!(status.en.starts_with("it was ended by signal 6 (SIGABRT)"), "{status:?}");
+        }
+        #[cfg(not(unix))]
+        Err(CallError::Crashed { status, .. }) => assert!(!status.ja.is_empty(), "{status:?}"),
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(w.call::<_, i64>("add", &(1, 2), BUDGET), Ok(3));
+}
+
+/// A call of `exit()` is said with its code, and a stack overflow as one, in both languages.
+#[test]
+fn an_exit_and_a_stack_overflow_are_said_as_what_they_are() {
+    let mut w = worker();
+    for code in [0, 3] {
+        match w.call::<_, i64>("exit", &code, BUDGET) {
+            Err(CallError::Crashed { status, .. }) => {
+                assert!(
+                    status.ja.starts_with(&format!("終了コード {code} で終了しました")),
+                    "{status:?}"
+                );
+                assert!(
+                    status.en.starts_with(&format!("it exited with code {code}")),
+                    "{status:?}"
+                );
+                assert!(!status.ja.contains("exit status"), "{status:?}");
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+    match w.call::<_, u64>("recurse", &1u64, Duration::from_secs(30)) {
+        Err(CallError::Crashed { status, stderr }) => {
+            assert!(status.ja.starts_with("スタックが溢れました"), "{status:?} {stderr}");
+            assert!(status.en.starts_with("its stack overflowed"), "{status:?}");
+        }
         other => panic!("{other:?}"),
     }
     assert_eq!(w.call::<_, i64>("add", &(1, 2), BUDGET), Ok(3));
@@ -105,8 +142,10 @@ fn the_memory_limit_stops_a_hoarding_function() {
     // Within the limit it returns.
     assert_eq!(w.call::<_, usize>("hoard", &64u64, BUDGET), Ok(1));
     match w.call::<_, usize>("hoard", &4096u64, Duration::from_secs(60)) {
-        Err(CallError::Crashed { stderr, .. }) => {
+        Err(CallError::Crashed { stderr, status }) => {
             assert!(stderr.contains("memory allocation"), "{stderr}");
+            assert!(status.ja.starts_with("メモリの上限を超えました"), "{status:?}");
+            assert!(status.en.starts_with("it went over the memory limit"), "{status:?}");
         }
         other => panic!("4 GiB under a limit of 256 MiB: {other:?}"),
     }

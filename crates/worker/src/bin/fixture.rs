@@ -43,6 +43,8 @@ fn main() -> std::io::Result<()> {
             }),
         ),
         ("abort", handler(|(): ()| -> i64 { std::process::abort() })),
+        ("exit", handler(|code: i32| -> i64 { std::process::exit(code) })),
+        ("recurse", handler(|n: u64| -> u64 { recurse(n) })),
         // A panic whose message is `n` bytes (a hostile submission's, to fill the grader).
         ("shout", handler(|n: usize| -> i64 { panic!("{}", "A".repeat(n)) })),
         (
@@ -92,4 +94,10 @@ fn main() -> std::io::Result<()> {
         ),
     ];
     serve(&handlers)
+}
+
+/// Recursion without end in practice (each frame holds 4 KiB), to overflow the stack.
+fn recurse(n: u64) -> u64 {
+    let frame = std::hint::black_box([n; 512]);
+    if n == 0 { frame[0] } else { recurse(n + 1).wrapping_add(frame[7]) }
 }
