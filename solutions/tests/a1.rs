@@ -183,6 +183,12 @@ fn n_unnormalised(s: &Spec) -> Vec<Vec3> {
         })
         .collect()
 }
+fn n_one_nan(s: &Spec) -> Vec<Vec3> {
+    // Face 1's normal a NaN, as normalising a zero vector by hand gives.
+    let mut n = sol::face_normals(s);
+    n[1] = Vec3::ZERO / Vec3::ZERO.length();
+    n
+}
 fn n_b_minus_a_cross_c_minus_b(s: &Spec) -> Vec<Vec3> {
     // (b − a) × (c − b) = (b − a) × (c − a): the same vector, so this is *not* a mistake.
     let v = sol::vertices(s);
@@ -469,6 +475,17 @@ fn broken_answers() -> Vec<Broken> {
             must: &["a1.t3.unit", "a1.t3.normals"],
             may: &[],
             says: &[("a1.t3.unit", "not normalised"), ("a1.t3.normals", "not normalised")],
+        },
+        Broken {
+            // Said as a NaN, not as "not normalised".
+            name: "a normal of NaN",
+            imp: n(n_one_nan),
+            must: &["a1.t3.unit", "a1.t3.normals"],
+            may: &[],
+            says: &[
+                ("a1.t3.unit", "F1's normal has a NaN"),
+                ("a1.t3.normals", "F1's normal has a NaN"),
+            ],
         },
         Broken {
             name: "normals from position vectors (Va × Vb)",

@@ -79,7 +79,11 @@ pub(super) fn normal_unit(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         .collect();
     let names: Vec<String> = bad.iter().map(|f| format!("F{f}")).collect();
     let zero = bad.iter().any(|&f| normals[f] == Vec3::ZERO);
-    let cause = if zero {
+    let not_finite = bad.iter().find(|&&f| !normals[f].is_finite());
+    let cause = if let Some(&f) = not_finite {
+        // A NaN was said to be a normal not normalised.
+        NormalMistake::NotFinite.text(&[], f, normals[f])
+    } else if zero {
         t(
             "長さ 0 の法線があります（平行な 2 辺の外積か、値の入れ忘れ）。",
             "a normal is the zero vector (the cross product of parallel edges, or not filled in).",
