@@ -22,6 +22,7 @@
 //! ```
 
 pub mod local;
+pub mod screen;
 mod student_file;
 mod units;
 

@@ -91,19 +91,32 @@ pub fn diagnostics(stdout: &str) -> Vec<Diagnostic> {
 
 /// The errors of each module: the first as the compiler shows it, the others one line each, at
 /// most [`ERRORS_KEPT`].
-fn by_module(diagnostics: &[Diagnostic]) -> BTreeMap<String, Vec<String>> {
+fn by_module(diagnostics: &[Diagnostic], lang: Lang) -> BTreeMap<String, Vec<String>> {
     let mut out: BTreeMap<String, Vec<String>> = BTreeMap::new();
     for d in diagnostics {
         if let Some(m) = d.module {
             let errors = out.entry(m.to_owned()).or_default();
             if errors.is_empty() {
                 errors.push(d.rendered.clone());
+                // The compiler's hint for a crate it does not know leads to exercises/Cargo.toml,
+                // where an added crate passes here and scores 0 in grading.
+                if d.rendered.contains("cargo add") {
+                    errors.push(only_std_and_cg_student().get(lang).to_owned());
+                }
             } else if errors.len() < ERRORS_KEPT {
                 errors.push(d.short.clone());
             }
         }
     }
     out
+}
+
+/// What the kit adds to the compiler's `cargo add` hint.
+fn only_std_and_cg_student() -> cg_core::lang::Text {
+    t(
+        "（キットより）演習で使えるのは標準ライブラリと cg_student だけです。exercises/Cargo.toml にクレートを足さないでください（採点ではキットのままの Cargo.toml でビルドします）",
+        "(from the kit) the exercises can use the standard library and cg_student only: do not add crates to exercises/Cargo.toml (grading builds with the kit's own Cargo.toml)",
+    )
 }
 
 /// Where the worker is built: the profile's folder of the running program (`target/release`,
@@ -250,14 +263,17 @@ pub fn run_captured(
 /// out (an error elsewhere: in lib.rs, Cargo.toml or the kit), as a message in `lang`.
 pub fn worker(root: &Path, memory_mb: u64, lang: Lang) -> Result<Worker, String> {
     let (profile_dir, profile) = build_place(root);
-    let mut left_out: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    if let Some(why) = added_dependencies(root) {
+        return Err(why.get(lang).to_owned());
+    }
+    let mut left_out: BTreeMap<String, Vec<String>> = not_gradable(root, lang);
     loop {
         let names: Vec<String> = left_out.keys().cloned().collect();
         let build = cargo_build(root, &profile_dir, &profile, &names, lang)?;
         if build.success {
             break;
         }
-        let blamed: BTreeMap<String, Vec<String>> = by_module(&build.diagnostics)
+        let blamed: BTreeMap<String, Vec<String>> = by_module(&build.diagnostics, lang)
             .into_iter()
             .filter(|(m, _)| !left_out.contains_key(m))
             .collect();
@@ -291,6 +307,77 @@ pub fn worker(root: &Path, memory_mb: u64, lang: Lang) -> Result<Worker, String>
     let program = profile_dir.join(format!("{WORKER_PACKAGE}{}", std::env::consts::EXE_SUFFIX));
     Ok(Worker::new(program, ["--memory-mb".to_owned(), memory_mb.max(64).to_string()])
         .without_modules(left_out))
+}
+
+/// The dependencies `exercises/Cargo.toml` has as the kit gives it: the students' API alone
+/// (a test checks this against the kit's own file).
+pub const EXERCISE_DEPENDENCIES: [&str; 1] = ["cg-student"];
+
+/// Why the student's build would not be the grader's, when a crate has been added to
+/// `exercises/Cargo.toml` (`rand = "0.8"`, as the compiler's `cargo add` hint suggests): grading
+/// builds the submitted files with the kit's own manifest, so every file that uses the crate
+/// scores 0 there while `cg check` passed it. `None` when the manifest adds none (or does not
+/// read as TOML: cargo names that).
+#[must_use]
+pub fn added_dependencies(root: &Path) -> Option<cg_core::lang::Text> {
+    let path = root.join("exercises").join("Cargo.toml");
+    let text = std::fs::read_to_string(&path).ok()?;
+    let manifest: toml::Table = text.parse().ok()?;
+    // The manifest itself and each `[target.'cfg(…)']` table.
+    let targets = manifest.get("target").and_then(toml::Value::as_table);
+    let scopes = std::iter::once(&manifest)
+        .chain(targets.into_iter().flat_map(|t| t.values().filter_map(toml::Value::as_table)));
+    let tables: Vec<&toml::Table> = scopes
+        .flat_map(|t| {
+            ["dependencies", "build-dependencies"].into_iter().filter_map(|k| t.get(k)?.as_table())
+        })
+        .collect();
+    let mut added: Vec<&str> = tables
+        .iter()
+        .flat_map(|t| t.keys())
+        .map(String::as_str)
+        .filter(|name| !EXERCISE_DEPENDENCIES.contains(name))
+        .collect();
+    added.sort_unstable();
+    added.dedup();
+    if added.is_empty() {
+        return None;
+    }
+    let list = added.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ");
+    Some(cg_core::lang::Text::new(
+        format!(
+            "exercises/Cargo.toml にクレート {list} が足されています。採点では提出した exercises/src/ のファイルをキットのままの Cargo.toml でビルドするので、足したクレートは使えず、それを使うファイルは 0 点になります。使えるのは標準ライブラリと cg_student だけです。exercises/Cargo.toml から足した行を消してください"
+        ),
+        format!(
+            "exercises/Cargo.toml has the crate(s) {list} added. Grading builds the submitted files of exercises/src/ with the kit's own Cargo.toml, so an added crate cannot be used there and a file that uses it scores 0. Only the standard library and cg_student can be used: remove the added lines from exercises/Cargo.toml"
+        ),
+    ))
+}
+
+/// The assignments' files that grading would not build as they are, each with why in `lang`:
+/// a file grading refuses ([`crate::screen::screen`]: the whole submission scores 0 for it), or
+/// one with a module kept in a file of its own ([`crate::screen::other_files`]: grading reads
+/// only the assignments' files, so it does not compile there). `cg check` leaves them out as it
+/// leaves out a file that does not compile, so that the student hears of it before submitting;
+/// they passed here and scored 0 in grading.
+fn not_gradable(root: &Path, lang: Lang) -> BTreeMap<String, Vec<String>> {
+    let mut out = BTreeMap::new();
+    for module in IDS {
+        let file = format!("exercises/src/{module}.rs");
+        let Ok(text) = std::fs::read_to_string(root.join(&file)) else { continue };
+        let mut why = Vec::new();
+        let refused = crate::screen::screen(&file, &text);
+        if !refused.is_empty() {
+            why.push(crate::screen::refused_locally(&refused).get(lang).to_owned());
+        }
+        for r in crate::screen::other_files(&file, &text) {
+            why.push(crate::screen::other_file_message(&r, module).get(lang).to_owned());
+        }
+        if !why.is_empty() {
+            out.insert((*module).to_owned(), why);
+        }
+    }
+    out
 }
 
 /// The kit this program runs in: the folder above `exercises/` (the current folder's, or the
@@ -408,12 +495,89 @@ mod tests {
         let d = diagnostics(&out);
         assert_eq!(d.len(), 4, "{d:?}");
         assert_eq!(d[3].module, None);
-        let m = by_module(&d);
+        let m = by_module(&d, Lang::En);
         assert_eq!(m.keys().collect::<Vec<_>>(), ["a1", "s"]);
         assert!(m["a1"][0].starts_with("error: expected `;`\n --> exercises/src/a1.rs:12"));
         assert_eq!(m["a1"][1], "exercises/src/a1.rs:20: mismatched types");
         assert_eq!(module_of("C:\\kit\\exercises\\src\\a4.rs"), Some("a4"));
         assert_eq!(module_of("exercises/src/lib.rs"), None);
         assert_eq!(module_of("solutions/src/a1.rs"), None);
+    }
+
+    /// The compiler's `cargo add` hint for a crate it does not know gets the kit's word that
+    /// only std and cg_student can be used (it led students to exercises/Cargo.toml).
+    #[test]
+    fn the_cargo_add_hint_gets_the_kits_word() {
+        let hint = "unresolved import `rand`\nhelp: if you wanted to use a crate named `rand`, use `cargo add rand` to add it to your `Cargo.toml`";
+        let d = diagnostics(&message("exercises/src/a2.rs", 1, hint));
+        let m = by_module(&d, Lang::Ja);
+        assert_eq!(m["a2"].len(), 2, "{m:?}");
+        assert!(m["a2"][1].contains("標準ライブラリと cg_student だけ"), "{m:?}");
+        let d = diagnostics(&message("exercises/src/a2.rs", 1, "mismatched types"));
+        assert_eq!(by_module(&d, Lang::Ja)["a2"].len(), 1);
+    }
+
+    fn kit_with(manifest: &str, files: &[(&str, &str)]) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!(
+            "cg-local-{}-{}",
+            std::process::id(),
+            cg_core_hash(manifest, files)
+        ));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(dir.join("exercises/src")).unwrap();
+        std::fs::write(dir.join("exercises/Cargo.toml"), manifest).unwrap();
+        for (name, text) in files {
+            std::fs::write(dir.join("exercises/src").join(name), text).unwrap();
+        }
+        dir
+    }
+
+    fn cg_core_hash(manifest: &str, files: &[(&str, &str)]) -> u64 {
+        use std::hash::{Hash, Hasher};
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        (manifest, files).hash(&mut h);
+        h.finish()
+    }
+
+    /// The kit's own manifest adds nothing; a crate added under any dependency table is named.
+    #[test]
+    fn a_crate_added_to_the_exercises_manifest_is_named() {
+        let kit_root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        assert_eq!(added_dependencies(&kit_root), None, "the kit's own exercises/Cargo.toml");
+        let own = std::fs::read_to_string(kit_root.join("exercises/Cargo.toml")).unwrap();
+        let own: toml::Table = own.parse().unwrap();
+        let deps: Vec<&String> = own["dependencies"].as_table().unwrap().keys().collect();
+        assert_eq!(deps, EXERCISE_DEPENDENCIES, "EXERCISE_DEPENDENCIES follows the kit's file");
+        for (manifest, named) in [
+            ("[dependencies]\ncg-student.workspace = true\nrand = \"0.8\"\n", "`rand`"),
+            ("[build-dependencies]\ncc = \"1\"\n", "`cc`"),
+            ("[target.'cfg(unix)'.dependencies]\nlibc = \"0.2\"\n", "`libc`"),
+        ] {
+            let dir = kit_with(manifest, &[]);
+            let why = added_dependencies(&dir).expect(manifest);
+            assert!(why.en.contains(&format!("has the crate(s) {named} added")), "{}", why.en);
+            assert!(why.ja.contains(&format!("クレート {named} が足されています")), "{}", why.ja);
+            let _ = std::fs::remove_dir_all(&dir);
+        }
+    }
+
+    /// A file grading refuses, and one with a module in a file of its own, are left out here
+    /// with why; a file of neither is not (they passed `cg check` and scored 0 in grading).
+    #[test]
+    fn files_grading_would_not_build_are_left_out_with_why() {
+        let dir = kit_with(
+            "[dependencies]\ncg-student.workspace = true\n",
+            &[
+                ("a1.rs", "mod geom;\npub fn f() {}\n"),
+                ("a2.rs", "pub const P: &str = include_str!(\"/etc/passwd\");\n"),
+                ("a3.rs", "mod inline { pub fn f() {} }\n"),
+            ],
+        );
+        let left = not_gradable(&dir, Lang::En);
+        assert_eq!(left.keys().collect::<Vec<_>>(), ["a1", "a2"], "{left:?}");
+        assert!(left["a1"][0].starts_with("exercises/src/a1.rs:1: `mod geom;` reads another file"));
+        assert!(left["a2"][0].starts_with("grading refuses the whole submission (0 points)"));
+        assert!(left["a2"][0].contains("exercises/src/a2.rs:1: include_str!"), "{left:?}");
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

@@ -36,7 +36,7 @@ pub mod moodle;
 pub mod progress;
 pub mod result;
 pub mod roster;
-pub mod screen;
+pub use cg_assign::screen;
 pub mod submission;
 pub mod zipfile;
 

@@ -1,5 +1,8 @@
 //! The second line behind the build's sandbox: a submission's files may not reach outside
-//! themselves at compile time. Each file is read as Rust tokens (comments and string contents
+//! themselves at compile time. Grading refuses such a submission ([`screen`]); `cg check`
+//! leaves such a file out and says why (`crate::local`), so that a student hears of it before
+//! submitting. [`other_files`] finds the modules kept in files of their own (`mod geom;`),
+//! which grading does not read: such a file does not compile there. Each file is read as Rust tokens (comments and string contents
 //! are not tokens, so a word in them does not count) and refused, with its file, line and
 //! what, when it uses:
 //!
@@ -14,7 +17,7 @@
 
 use proc_macro2::{Delimiter, TokenStream, TokenTree};
 
-use crate::Text;
+use cg_harness::Text;
 
 /// One refused use: the file, the line (1-based) and what it is.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -99,19 +102,28 @@ fn by_words(file: &str, text: &str, found: &mut Vec<Refused>) {
     }
 }
 
-/// Every group of `tokens`, each read as a flat list. Iterative, with a list of the groups
-/// still to read: a file of 40 000 nested brackets would overflow the thread's stack if each
-/// group were a call, and abort the grading of the whole class.
-fn walk(file: &str, tokens: TokenStream, found: &mut Vec<Refused>) {
+/// Every group of `tokens`, each read as a flat list by `visit`. Iterative, with a list of the
+/// groups still to read: a file of 40 000 nested brackets would overflow the thread's stack if
+/// each group were a call, and abort the grading of the whole class.
+fn each_group(tokens: TokenStream, mut visit: impl FnMut(&[TokenTree])) {
     let mut groups = vec![tokens];
     while let Some(tokens) = groups.pop() {
-        flat(file, tokens, found, &mut groups);
+        let tokens: Vec<TokenTree> = tokens.into_iter().collect();
+        visit(&tokens);
+        groups.extend(tokens.iter().filter_map(|tt| match tt {
+            TokenTree::Group(g) => Some(g.stream()),
+            _ => None,
+        }));
     }
 }
 
-/// One group's own tokens; its groups go into `groups`, to be read next.
-fn flat(file: &str, tokens: TokenStream, found: &mut Vec<Refused>, groups: &mut Vec<TokenStream>) {
-    let tokens: Vec<TokenTree> = tokens.into_iter().collect();
+/// Every refused use in `tokens`, the file `file`.
+fn walk(file: &str, tokens: TokenStream, found: &mut Vec<Refused>) {
+    each_group(tokens, |tokens| flat(file, tokens, found));
+}
+
+/// One group's own tokens (its groups are read by [`each_group`]).
+fn flat(file: &str, tokens: &[TokenTree], found: &mut Vec<Refused>) {
     let refuse = |found: &mut Vec<Refused>, tt: &TokenTree, what: String| {
         found.push(Refused { file: file.to_owned(), line: tt.span().start().line, what });
     };
@@ -145,10 +157,38 @@ fn flat(file: &str, tokens: TokenStream, found: &mut Vec<Refused>, groups: &mut 
                     refuse(found, tt, format!("#[{name}]"));
                 }
             }
-            TokenTree::Group(g) => groups.push(g.stream()),
             _ => {}
         }
     }
+}
+
+/// The modules of `text` (the file `file`) kept in files of their own, `mod geom;`, each with
+/// its line and `mod geom;` as its `what`. Grading reads only the assignments' own files
+/// (`exercises/src/a1.rs`, …), so such a module does not compile there. A file the lexer does
+/// not read gives none (the compiler names its errors).
+#[must_use]
+pub fn other_files(file: &str, text: &str) -> Vec<Refused> {
+    let mut found = Vec::new();
+    if let Ok(tokens) = without_shebang(text).parse::<TokenStream>() {
+        each_group(tokens, |tokens| {
+            for w in tokens.windows(3) {
+                if let [TokenTree::Ident(m), TokenTree::Ident(name), TokenTree::Punct(semi)] = w
+                    && m == "mod"
+                    && semi.as_char() == ';'
+                {
+                    let line = m.span().start().line;
+                    found.push(Refused {
+                        file: file.to_owned(),
+                        line,
+                        what: format!("mod {name};"),
+                    });
+                }
+            }
+        });
+    }
+    proc_macro2::extra::invalidate_current_thread_spans();
+    found.sort_by_key(|r| r.line);
+    found
 }
 
 /// The first name of [`ATTRIBUTES`] anywhere in an attribute's tokens, its groups included
@@ -181,6 +221,34 @@ pub fn message(refused: &[Refused]) -> Text {
         ),
         format!(
             "the submission reaches outside its own files ({list}): include!, include_str!, include_bytes!, env!, option_env!, #[path] and extern crate are not accepted; what the exercises need comes from cg_student"
+        ),
+    )
+}
+
+/// What `cg check` says of a file that grading would refuse (`refused`, of one file): each use,
+/// and that grading refuses the whole submission for it.
+#[must_use]
+pub fn refused_locally(refused: &[Refused]) -> Text {
+    let m = message(refused);
+    Text::new(
+        format!("採点では、このファイルのために提出物全体が受け付けられません（0 点）: {}", m.ja),
+        format!("grading refuses the whole submission (0 points) for this file: {}", m.en),
+    )
+}
+
+/// What `cg check` says of a module kept in a file of its own (`r`, from [`other_files`]) in
+/// the file of assignment `module` (`a1`).
+#[must_use]
+pub fn other_file_message(r: &Refused, module: &str) -> Text {
+    let name = r.what.trim_start_matches("mod ").trim_end_matches(';');
+    Text::new(
+        format!(
+            "{}:{}: `{}` は別のファイル（exercises/src/{module}/{name}.rs など）を読みますが、採点で読むのは exercises/src/ の課題のファイル（a1.rs … s.rs）と student.toml だけなので、採点ではコンパイルできません。`mod {name} {{ … }}` のように {module}.rs の中に書いてください",
+            r.file, r.line, r.what
+        ),
+        format!(
+            "{}:{}: `{}` reads another file (exercises/src/{module}/{name}.rs or the like), but grading reads only the assignments' files in exercises/src/ (a1.rs … s.rs) and student.toml, so it does not compile there: write it inside {module}.rs as `mod {name} {{ … }}`",
+            r.file, r.line, r.what
         ),
     )
 }
@@ -273,6 +341,26 @@ pub fn extern_name() -> &'static str { "extern crate" }
         assert_eq!(whats("fn f( {\n// 頂点の path と環境\nlet x = 1;"), []);
         // An inner attribute on the first line is no shebang, and harmless ones pass.
         assert_eq!(whats("#![allow(dead_code)]\n#[cfg_attr(test, derive(Debug))]\nstruct S;"), []);
+    }
+
+    #[test]
+    fn modules_in_files_of_their_own_are_found_with_their_lines() {
+        let text = "//! mod in_a_comment;\nmod geom;\npub(crate) mod util;\nmod inline { pub fn f() {} }\nfn f() { let s = \"mod s;\"; }\nmod outer {\n    mod inner;\n}\n";
+        let found: Vec<(usize, String)> =
+            other_files("a1.rs", text).into_iter().map(|r| (r.line, r.what)).collect();
+        assert_eq!(
+            found,
+            [
+                (2, "mod geom;".to_owned()),
+                (3, "mod util;".to_owned()),
+                (7, "mod inner;".to_owned())
+            ]
+        );
+        // Not screened as a refusal: grading builds the file, and the compiler names it.
+        assert_eq!(whats(text), []);
+        let m = other_file_message(&other_files("exercises/src/a1.rs", "mod geom;")[0], "a1");
+        assert!(m.ja.starts_with("exercises/src/a1.rs:1: `mod geom;` は別のファイル"), "{}", m.ja);
+        assert!(m.en.contains("write it inside a1.rs as `mod geom { … }`"), "{}", m.en);
     }
 
     #[test]
