@@ -234,7 +234,16 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
                     }
                     (None, AssignmentRun::Report(_)) => String::new(),
                 };
-                let _ = writeln!(output, "{m}: {}", why.lines().next().unwrap_or(""));
+                // The first line that says something: for compile errors the heading and the
+                // first error (`a1: compile errors (a1.rs): exercises/src/a1.rs:3: …`), not the
+                // heading alone ending in a colon.
+                let mut lines = why.lines().filter(|l| !l.trim().is_empty());
+                let first = match (lines.next(), lines.next()) {
+                    (Some(head), Some(next)) if head.ends_with(':') => format!("{head} {next}"),
+                    (Some(head), _) => head.to_owned(),
+                    (None, _) => String::new(),
+                };
+                let _ = writeln!(output, "{m}: {first}");
                 if list.is_empty() {
                     // Not even the list of checks is known: one line for the assignment.
                     vec![(format!("{m}.run"), Text::new(m.clone(), m.clone()), false, why)]

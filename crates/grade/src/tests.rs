@@ -362,3 +362,32 @@ fn a_broken_call_is_explained_in_the_feedbacks_language() {
         assert_eq!(r["tests"][0]["output"], said, "{r:#}");
     }
 }
+
+/// The summary line of an assignment that does not compile carries its first error (it was the
+/// heading alone, ending in a colon: `a1: compile errors (a1.rs):`), in the output that
+/// Gradescope and Moodle's feedback show first.
+#[test]
+fn the_summary_line_of_a_compile_error_names_the_first_error() {
+    let check = serde_json::json!({
+        "id": "a1.t1.count", "title": { "ja": "頂点の数", "en": "vertex count" },
+        "status": "pass",
+    });
+    let facts = result::Facts {
+        runs: [("a1".to_owned(), AssignmentRun::Report(serde_json::json!({ "checks": [check] })))]
+            .into(),
+        compile_errors: [(
+            "a1".to_owned(),
+            vec!["exercises/src/a1.rs:379: this file contains an unclosed delimiter".to_owned()],
+        )]
+        .into(),
+        ..result::Facts::default()
+    };
+    let meta = meta(Some("20260001"));
+    let r = result::build(&meta, &facts, &Config::default(), Lang::En);
+    let output = r["output"].as_str().unwrap();
+    let line = output.lines().find(|l| l.starts_with("a1: compile errors")).expect(output);
+    assert_eq!(
+        line,
+        "a1: compile errors (a1.rs): exercises/src/a1.rs:379: this file contains an unclosed delimiter"
+    );
+}
