@@ -181,9 +181,10 @@ pub fn tex_label(text: &str) -> String {
 }
 
 /// A label as the checker compares it: read as the report reader reads a line, without spaces,
-/// `$`, `\(`, `\)`, backticks, asterisks and braces, `−` as `-`, a Japanese middle dot (`N・L`,
-/// what a Shift_JIS file keeps of `N·L`) or a dot operator as `·`, `度` and `^\circ` as `°`, in
-/// lower case.
+/// `$`, `\(`, `\)`, backticks, asterisks and braces, `−` (and the full-width `－` a Shift_JIS
+/// file keeps of it, or the other dashes) as `-`, a Japanese middle dot (`N・L`, what a Shift_JIS
+/// file keeps of `N·L`) or a dot operator as `·`, subscript digits (`θ₂`, which Shift_JIS cannot
+/// keep) as digits, `度` and `^\circ` as `°`, in lower case.
 fn canonical(label: &str) -> String {
     normalize(label)
         .replace("\\(", "")
@@ -194,8 +195,11 @@ fn canonical(label: &str) -> String {
         .chars()
         .filter(|c| !c.is_whitespace() && !matches!(c, '$' | '`' | '*' | '{' | '}'))
         .map(|c| match c {
-            '−' => '-',
+            // `−x 1` comes back from Shift_JIS as `－x 1` (U+FF0D), and an IME writes it so.
+            '−' | '－' | '﹣' | '\u{2010}'..='\u{2015}' => '-',
             '・' | '･' | '⋅' | '∙' => '·',
+            // `θ₂` cannot be kept in Shift_JIS: a student writes `θ2`.
+            '₀'..='₉' => char::from_digit(u32::from(c) - u32::from('₀'), 10).unwrap_or(c),
             _ => c,
         })
         .flat_map(char::to_lowercase)

@@ -463,3 +463,19 @@ fn students_ways_of_writing_are_read_and_a_missing_column_is_a_finding() {
     assert!(note.ja.contains("環境光") && !note.ja.contains("ambient"), "{}", note.ja);
     assert!(note.en.contains("ambient"), "{}", note.en);
 }
+
+/// Labels as a Shift_JIS round trip or a Japanese IME leaves them: `−x 1` comes back as `－x 1`
+/// (U+FF0D), and `θ₂` (which Shift_JIS cannot keep) is written `θ2`. Each was reported as a
+/// missing row (a false mistake) or as a row the table does not have.
+#[test]
+fn labels_read_after_a_shift_jis_round_trip() {
+    let minus = cg_harness::Text::new("−x 1", "−x 1");
+    let theta = cg_harness::Text::new("θ₂", "θ₂");
+    for written in ["−x 1", "－x 1", "-x 1", "‐x 1", "–x 1"] {
+        assert!(label_matches(written, &minus), "{written}");
+    }
+    for written in ["θ₂", "θ2", "$θ2$"] {
+        assert!(label_matches(written, &theta), "{written}");
+    }
+    assert!(!label_matches("θ1", &theta) && !label_matches("x 1", &minus));
+}
