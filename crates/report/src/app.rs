@@ -635,27 +635,56 @@ impl CheckOutcome {
         }
         let wrong = self.problems.len() + self.verification.findings.len();
         let checked = self.verification.checked;
+        let parts = self.missing.len();
+        // The parts not checked, said after the count of mistakes too (it was left out there).
+        let unchecked = Text::new(
+            format!("{parts} 個の部分は確かめられていません（上の「確かめられません」）。"),
+            format!(
+                "{parts} {} not checked (\"not checked\" above).",
+                if parts == 1 { "part was" } else { "parts were" }
+            ),
+        );
         let summary = if wrong == 0 && checked == 0 {
-            Text::new(
+            let none = Text::new(
                 "確かめられた数値は 1 つもありません。キットが読む書き方の表（`V0 (0.0, 1.0, 0.0)` の頂点の行、`F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 }` の面の行、`<!-- cg: s.light.p -->` のようなタグのついた表）が見つかりませんでした。`cargo run --release -- report fill` が書くひな形の書き方に合わせてください",
                 "no number was checked: the report has no table in a form the checker reads (vertex rows `V0 (0.0, 1.0, 0.0)`, face rows `F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 }`, tables after a tag such as `<!-- cg: s.light.p -->`); write them as the template `cargo run --release -- report fill` writes does",
-            )
-        } else if wrong == 0 && !self.missing.is_empty() {
+            );
+            if parts == 0 {
+                none
+            } else {
+                Text::new(
+                    format!("{}。{}", none.ja, unchecked.ja),
+                    format!("{}. {}", none.en, unchecked.en),
+                )
+            }
+        } else if wrong == 0 && parts > 0 {
             // Not a mistake (a part not done yet is no mistake), but not the whole report either.
-            let parts = self.missing.len();
             Text::new(
                 format!(
-                    "数値 {checked} 個を確かめ、データから導かれない数値はありませんでした。ただし {parts} 個の部分は確かめられていません（上の「確かめられません」）。"
+                    "数値 {checked} 個を確かめ、データから導かれない数値はありませんでした。ただし {}",
+                    unchecked.ja
                 ),
                 format!(
-                    "{checked} numbers checked; every one follows from the data. {parts} {} not checked (\"not checked\" above).",
-                    if parts == 1 { "part was" } else { "parts were" }
+                    "{checked} numbers checked; every one follows from the data. {}",
+                    unchecked.en
                 ),
             )
         } else if wrong == 0 {
             Text::new(
                 format!("数値 {checked} 個を確かめ、データから導かれない数値はありませんでした。"),
                 format!("{checked} numbers checked; every one follows from the data."),
+            )
+        } else if parts > 0 {
+            Text::new(
+                format!(
+                    "数値 {checked} 個を確かめ、{wrong} 件の誤りがありました。ほかに {}",
+                    unchecked.ja
+                ),
+                format!(
+                    "{checked} numbers checked; {wrong} {}. {}",
+                    if wrong == 1 { "mistake" } else { "mistakes" },
+                    unchecked.en
+                ),
             )
         } else {
             Text::new(

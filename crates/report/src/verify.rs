@@ -15,11 +15,10 @@
 
 use cg_core::glam::{DVec3, Mat4, Vec2, Vec3};
 use cg_core::lang::Lang;
-use cg_core::normals::face_normal_f64;
 use cg_core::product::MatrixProduct;
 use cg_harness::Text;
 
-use crate::model::{Derived, PolygonData, TexRow, TextureData, Written};
+use crate::model::{Derived, TexRow, TextureData, Written};
 use crate::parse::{FACTORS, ParsedFace, ParsedMatrix, ParsedReport, ParsedTex, ParsedVertex};
 
 /// A number in a report that does not follow from the data (or a face wound the wrong way).
@@ -394,7 +393,7 @@ impl Checker {
         );
     }
 
-    fn matrices(&mut self, written: &[ParsedMatrix], derived: &Derived) {
+    fn matrices(&mut self, written: &[ParsedMatrix], unread: &[String], derived: &Derived) {
         let known = known_matrices(derived);
         // ID → the derived matrix, for the products and (`ID.factors.k`) their factors.
         let mut by_id: Vec<(String, Option<Mat4>)> = Vec::new();
@@ -452,7 +451,8 @@ impl Checker {
         }
         let missing: Vec<&str> = known
             .iter()
-            .filter(|k| !written.iter().any(|m| m.id == k.id))
+            // A matrix written but not read is a problem at its line already.
+            .filter(|k| !written.iter().any(|m| m.id == k.id) && !unread.contains(&k.id))
             .map(|k| k.id.as_str())
             .collect();
         if !missing.is_empty() {
@@ -663,17 +663,6 @@ fn relation(written: [u32; 3], data: [u32; 3]) -> Relation {
     }
 }
 
-fn tables_missing(c: &mut Checker, report: &ParsedReport) {
-    if report.vertices.is_empty() {
-        c.note("レポートに頂点の表がありません", "no vertex table found in the report");
-    }
-    if report.faces.is_empty() {
-        c.note("レポートに面の表がありません", "no face table found in the report");
-    } else if report.faces.iter().all(|f| f.normal.is_none()) {
-        c.note("面の表に法線がありません", "the face table has no normals");
-    }
-}
-
 /// Checks a report against the data derived from the student's program: vertices by number
 /// against `polygon.vertices`; each face's vertex order against the data's face of that number
 /// (a rotation is fine, the reverse order is one `F4 order` finding, other vertices one
@@ -683,6 +672,7 @@ fn tables_missing(c: &mut Checker, report: &ParsedReport) {
 /// tagged shading tables ([`crate::shading`]); the texture formula of `a4`, evaluated at every
 /// ground vertex ([`crate::formula`]).
 /// Items the report leaves out are not findings; derived tables the report lacks altogether,
+/// the model's vertices and faces a table leaves out (the first ten named, the rest counted),
 /// rows for items the data does not have and unknown tags are `notes`.
 #[must_use]
 pub fn verify(report: &ParsedReport, derived: &Derived) -> Verification {
@@ -717,7 +707,8 @@ pub fn verify_with(
                 let n = p.derived_normals.get(f.index as usize).copied().flatten();
                 c.normal(f, n.map(Vec3::as_dvec3));
             }
-            tables_missing(&mut c, report);
+            missing::tables_missing(&mut c, report);
+            missing::rows_missing(&mut c, report, p);
         }
         None => {
             if !report.vertices.is_empty() || !report.faces.is_empty() {
@@ -728,7 +719,7 @@ pub fn verify_with(
             }
         }
     }
-    c.matrices(&report.matrices, derived);
+    c.matrices(&report.matrices, &report.unread_matrices, derived);
     crate::shading::verify(&mut c, &report.tables, derived.s.as_ref());
     crate::periods::verify(&mut c, &report.tables, assignment);
     crate::formula::verify(&mut c, &report.formulas, derived.a4.as_ref());
@@ -754,82 +745,11 @@ pub fn verify_with(
     c.finish()
 }
 
-/// Data-alone mode: checks the vertex and face rows of `report` against `polygon` (usually read
-/// from the same text by [`crate::parse::polygon_from_text`]). Vertices by number; each written
-/// face's normal against the normal of its written order (`(V_b − V_a) × (V_c − V_a)`); a face
-/// whose written order points its normal into the closed model ([`face_outwardness`]) is an
-/// `F4 order` finding with the outward order; a face whose vertices differ from the data's face
-/// of that number, or name a vertex that does not exist, is an `F4 vertices` finding. Where the
-/// model is not closed (so outward is undefined), a note says which faces could not be judged.
-#[must_use]
-pub fn verify_data(polygon: &PolygonData, report: &ParsedReport) -> Verification {
-    let mut c = Checker::default();
-    c.vertices(&report.vertices, &polygon.vertices);
-    let outward = face_outwardness(&polygon.vertices, &polygon.faces);
-    let mut unjudged = Vec::new();
-    let n = polygon.vertices.len();
-    for f in &report.faces {
-        if let Some(&bad) = f.vertices.iter().find(|&&k| k as usize >= n) {
-            c.out.findings.push(Finding {
-                line: f.line,
-                item: format!("F{} vertices", f.index),
-                written: face_text(f.vertices),
-                derived: format!("V0 … V{}", n.saturating_sub(1)),
-                tolerance: None,
-                why: Text::new(
-                    format!("V{bad} という頂点はありません（頂点は {n} 個）"),
-                    format!("there is no V{bad} (the data has {n} vertices)"),
-                ),
-            });
-            continue;
-        }
-        let out = match polygon.faces.get(f.index as usize) {
-            Some(&data) => match relation(f.vertices, data) {
-                Relation::Same => outward.get(f.index as usize).copied().flatten(),
-                Relation::Reversed => outward.get(f.index as usize).copied().flatten().map(|o| !o),
-                Relation::Different => {
-                    c.other_vertices(f, data);
-                    None
-                }
-            },
-            None => {
-                c.no_face(f, polygon.faces.len());
-                None
-            }
-        };
-        match out {
-            Some(false) => c.order(f),
-            Some(true) => {}
-            None => unjudged.push(format!("F{}", f.index)),
-        }
-        let [a, b, cc] = f.vertices.map(|k| polygon.vertices[k as usize]);
-        c.normal(f, face_normal_f64(a, b, cc));
-    }
-    if !unjudged.is_empty() {
-        // The first few faces by name and the rest counted: a large open model named every
-        // face in one line (megabytes).
-        let list = unjudged.iter().take(UNJUDGED_NAMED).cloned().collect::<Vec<_>>().join(", ");
-        let more = unjudged.len().saturating_sub(UNJUDGED_NAMED);
-        let (more_ja, more_en) = if more > 0 {
-            (format!(" ほか {more} 面"), format!(" and {more} more"))
-        } else {
-            (String::new(), String::new())
-        };
-        c.note(
-            format!("{list}{more_ja}: モデルが閉じていない（または面がつながっていない）ので、法線が外向きかどうかは判定できません"),
-            format!("{list}{more_en}: the model is not closed (or the faces are not connected), so whether the normal points outward cannot be judged"),
-        );
-    }
-    tables_missing(&mut c, report);
-    c.finish()
-}
-
-/// How many faces the note on faces whose outwardness cannot be judged names; the rest are
-/// counted.
-const UNJUDGED_NAMED: usize = 10;
-
+mod data;
+mod missing;
 mod outward;
 
+pub use data::verify_data;
 pub use outward::face_outwardness;
 
 #[cfg(test)]

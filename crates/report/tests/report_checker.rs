@@ -72,6 +72,54 @@ fn the_summary_counts_the_parts_not_checked() {
     );
     let ja = outcome.render(Lang::Ja);
     assert!(ja.lines().last().unwrap().contains("ただし 1 個の部分は確かめられていません"), "{ja}");
+    // With a mistake too, the last line still counts the parts not checked (it said only
+    // "1 mistake", and the guide promises the count on the last line).
+    let finding = cg_report::verify::Finding {
+        line: 7,
+        item: "V3".into(),
+        written: "(1.0, 0.0, 0.0)".into(),
+        derived: "(-1.0, 0.0, 0.0)".into(),
+        tolerance: Some(0.01),
+        why: Text::new("x が違います", "x is off"),
+    };
+    let two_missing = vec![outcome.missing[0].clone(), outcome.missing[0].clone()];
+    let wrong = cg_report::app::CheckOutcome {
+        verification: cg_report::verify::Verification {
+            checked: 12,
+            findings: vec![finding],
+            ..Default::default()
+        },
+        missing: two_missing,
+        ..outcome.clone()
+    };
+    assert!(!wrong.ok());
+    let en = wrong.render(Lang::En);
+    assert_eq!(
+        en.lines().last().unwrap(),
+        "12 numbers checked; 1 mistake. 2 parts were not checked (\"not checked\" above).",
+    );
+    let ja = wrong.render(Lang::Ja);
+    assert_eq!(
+        ja.lines().last().unwrap(),
+        "数値 12 個を確かめ、1 件の誤りがありました。ほかに 2 個の部分は確かめられていません（上の「確かめられません」）。",
+    );
+    // Nothing checked at all: the parts not checked are still counted.
+    let none = cg_report::app::CheckOutcome {
+        verification: cg_report::verify::Verification::default(),
+        ..outcome.clone()
+    };
+    let ja = none.render(Lang::Ja);
+    assert!(
+        ja.lines().last().unwrap().starts_with("確かめられた数値は 1 つもありません。")
+            && ja.ends_with("。1 個の部分は確かめられていません（上の「確かめられません」）。\n"),
+        "{ja}"
+    );
+    let en = none.render(Lang::En);
+    assert!(
+        en.lines().last().unwrap().starts_with("no number was checked: ")
+            && en.ends_with(". 1 part was not checked (\"not checked\" above).\n"),
+        "{en}"
+    );
     let all = cg_report::app::CheckOutcome { missing: Vec::new(), ..outcome };
     assert!(
         all.render(Lang::En).ends_with("12 numbers checked; every one follows from the data.\n")

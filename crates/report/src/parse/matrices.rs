@@ -1,6 +1,10 @@
 //! The tagged matrices of a report: `<!-- cg: ID -->` (or `% cg: ID`) and the first `pmatrix`
 //! after it; for an ID ending in `.factors`, every `pmatrix` up to the next tag, one per factor
-//! of the product, read as `ID.1`, `ID.2`, ….
+//! of the product, read as `ID.1`, `ID.2`, …. A `bmatrix`, `Bmatrix`, `matrix` or
+//! `smallmatrix` is the same matrix in other brackets and is read as a `pmatrix` is (a
+//! `vmatrix` is a determinant, not a matrix). A tag's matrix is looked for only up to the next
+//! tag or section (a heading, `\paragraph`, or a line in bold alone, as `report fill` titles
+//! each product): the next product's symbolic matrix is never taken for it.
 
 use std::collections::HashMap;
 
@@ -8,10 +12,30 @@ use cg_harness::Text;
 
 use super::{ParsedMatrix, Reader, RowKind, parse_number, same_numbers};
 
-const BEGIN: &str = "\\begin{pmatrix}";
-const END: &str = "\\end{pmatrix}";
+/// The matrix environments read as matrices: the same entries in other brackets.
+const ENVIRONMENTS: [&str; 5] = ["pmatrix", "bmatrix", "Bmatrix", "matrix", "smallmatrix"];
 /// The end of a factors tag's ID: `a2.view.start.factors`.
 pub const FACTORS: &str = ".factors";
+
+/// The first matrix environment ([`ENVIRONMENTS`]) that begins in `region`: where its
+/// `\begin{…}` starts and its name.
+fn first_matrix(region: &str) -> Option<(usize, &'static str)> {
+    region.match_indices("\\begin{").find_map(|(at, open)| {
+        let rest = &region[at + open.len()..];
+        let name = &rest[..rest.find('}')?];
+        ENVIRONMENTS.iter().find(|&&e| e == name).map(|&e| (at, e))
+    })
+}
+
+/// Whether a line starts a new section of the report: a heading (Markdown `#`, LaTeX
+/// `\section` and below), a LaTeX `\paragraph`, or a line in bold alone (`**視野変換行列…**`,
+/// the title `report fill` writes before each product).
+fn starts_section(line: &str) -> bool {
+    let t = line.trim();
+    crate::shading::is_heading(t)
+        || t.starts_with("\\paragraph")
+        || (t.len() > 4 && t.starts_with("**") && t.ends_with("**"))
+}
 
 /// A `pmatrix` read: where it ends, and its entries by rows with their lines when it is a 4×4
 /// matrix of plain numbers.
@@ -147,14 +171,21 @@ impl Reader {
             if crate::shading::is_table_tag(&tag.id) || tag.id == crate::formula::TAG {
                 continue;
             }
-            let region_end = tags.get(k + 1).map_or(text.len(), |t| t.start);
+            let next_tag = tags.get(k + 1).map_or(text.len(), |t| t.start);
+            // Up to the next tag or section, whichever comes first.
+            let region_end = line_starts
+                .iter()
+                .skip(tag.line)
+                .take_while(|&&s| s < next_tag)
+                .find(|&&s| starts_section(text[s..].split('\n').next().unwrap_or("")))
+                .map_or(next_tag, |&s| s);
             // `ID.factors`: every pmatrix up to the next tag, one per factor; else the first.
             let factors = tag.id.ends_with(FACTORS);
             let mut from = tag.end;
             let mut count = 0;
             loop {
-                let region = &text[from..region_end];
-                let Some(b) = region.find(BEGIN) else {
+                let region = &text[from..region_end.max(from)];
+                let Some((b, name)) = first_matrix(region) else {
                     if count == 0 {
                         let expected = if factors {
                             Text::new(
@@ -174,19 +205,23 @@ impl Reader {
                             )
                         };
                         self.problem(tag.line, &tag.text, expected, RowKind::Matrix);
+                        self.unread(tag, factors);
                     }
                     break;
                 };
                 count += 1;
                 let id = if factors { format!("{}.{count}", tag.id) } else { tag.id.clone() };
                 let begin = from + b;
-                let Some(next) = self.pmatrix(text, &line_starts, begin, region_end) else {
+                let Some(next) = self.pmatrix(text, &line_starts, (begin, name), region_end) else {
+                    self.unread(tag, factors);
                     break;
                 };
                 from = next.end;
                 if let Some((rows, entry_lines)) = next.entries {
                     let m = ParsedMatrix { line: tag.line, id, rows, entry_lines };
                     self.keep(m, tag, &mut seen);
+                } else {
+                    self.unread(tag, factors);
                 }
                 if !factors {
                     break;
@@ -195,31 +230,40 @@ impl Reader {
         }
     }
 
-    /// The `pmatrix` that begins at `begin`: where it ends and, when it is a 4×4 matrix of plain
-    /// numbers, its entries with their lines (each problem found is recorded). `None` when it
-    /// is not closed before `region_end`.
+    /// A product's tag whose matrix is there but could not be read (a problem names it): not
+    /// also "no tagged matrix" ([`super::ParsedReport::unread_matrices`]).
+    fn unread(&mut self, tag: &Tag, factors: bool) {
+        if !factors && !self.report.unread_matrices.contains(&tag.id) {
+            self.report.unread_matrices.push(tag.id.clone());
+        }
+    }
+
+    /// The matrix environment `name` that begins at `begin`: where it ends and, when it is a 4×4
+    /// matrix of plain numbers, its entries with their lines (each problem found is recorded).
+    /// `None` when it is not closed before `region_end`.
     fn pmatrix(
         &mut self,
         text: &str,
         line_starts: &[usize],
-        begin: usize,
+        (begin, name): (usize, &str),
         region_end: usize,
     ) -> Option<Pmatrix> {
         let line_of = |offset: usize| line_starts.partition_point(|&s| s <= offset);
-        let body_start = begin + BEGIN.len();
+        let end_tag = format!("\\end{{{name}}}");
+        let body_start = begin + "\\begin{".len() + name.len() + 1;
         let begin_line = line_of(begin);
         // The line of the `\begin`, up to its line break (the next line's start, less the `\n`).
         let begin_text = &text[line_starts[begin_line - 1]
             ..line_starts.get(begin_line).map_or(text.len(), |&next| next - 1)];
-        let Some(e) = text[body_start..region_end].find(END) else {
+        let Some(e) = text[body_start..region_end.max(body_start)].find(&end_tag) else {
             let expected = Text::new(
-                "行列を閉じる `\\end{pmatrix}`（次のタグより前に）",
-                "`\\end{pmatrix}` closing the matrix (before the next tag)",
+                format!("行列を閉じる `{end_tag}`（次のタグや節より前に）"),
+                format!("`{end_tag}` closing the matrix (before the next tag or section)"),
             );
             self.problem(begin_line, begin_text, expected, RowKind::Matrix);
             return None;
         };
-        let end = body_start + e + END.len();
+        let end = body_start + e + end_tag.len();
         let body = &text[body_start..body_start + e];
         let mut rows = Vec::new();
         let mut entry_lines = Vec::new();
@@ -311,3 +355,6 @@ impl Reader {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

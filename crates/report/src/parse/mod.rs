@@ -38,13 +38,21 @@ use cg_harness::Text;
 
 use crate::model::Written;
 
+mod comments;
 mod data;
+mod expected;
 mod matrices;
+mod texture;
 
 pub use data::polygon_from_text;
 #[cfg(test)]
 pub(crate) use data::{LECTURE_SLIDE, line_of};
 pub use matrices::FACTORS;
+
+use comments::without_comments;
+#[cfg(test)]
+use expected::is_exponent_notation;
+use expected::{expected_face, expected_normal, expected_number_size, expected_vertex};
 
 /// Which kind of row a [`ParseProblem`] is about.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -163,6 +171,10 @@ pub struct ParsedReport {
     pub faces: Vec<ParsedFace>,
     /// Tagged 4×4 matrices (each ID once).
     pub matrices: Vec<ParsedMatrix>,
+    /// The tags of products whose matrix is written but could not be read (entries that are
+    /// not plain numbers, not 4×4, not closed, or no matrix before the next tag or section):
+    /// each is a [`ParseProblem`], so the checker does not also say the matrix is missing.
+    pub unread_matrices: Vec<String>,
     /// Texture rows (each (i, j) once).
     pub tex: Vec<ParsedTex>,
     /// The tagged tables ([`crate::shading`], and the periods of `a3`, [`crate::periods`]), in
@@ -510,119 +522,6 @@ fn face_vertices(content: &str) -> Result<[u32; 3], GroupError> {
 }
 
 // ---------------------------------------------------------------------------------------------
-// What was expected
-
-fn detail(e: &GroupError, what_ja: &str, what_en: &str) -> Text {
-    match e {
-        GroupError::Unclosed => {
-            // Not looked for further on (a face of 300 vertices was said to be not closed).
-            Text::new(
-                format!("（括弧が閉じていないか、{MAX_GROUP} 文字より先で閉じています）"),
-                format!(" (the bracket is not closed within {MAX_GROUP} characters)"),
-            )
-        }
-        GroupError::Count(k, true) => Text::new(
-            format!(
-                "（{what_ja}が {k} 個あります。小数点にカンマを使っていませんか。0.5 のようにピリオドで書きます）"
-            ),
-            format!(
-                " (found {k} {what_en}: is a comma used as the decimal point? Write decimals with a point, such as 0.5)"
-            ),
-        ),
-        GroupError::Count(k, false) => {
-            Text::new(format!("（{what_ja}が {k} 個あります）"), format!(" (found {k} {what_en})"))
-        }
-        GroupError::NotNumber(s) if is_exponent_notation(s) => Text::new(
-            format!(
-                "（`{}` は指数表記です。指数表記は読めないので、0.49 のようにふつうの小数で書きます）",
-                clip(s)
-            ),
-            format!(
-                " (`{}` is in exponent notation, which is not read: write a plain decimal such as 0.49)",
-                clip(s)
-            ),
-        ),
-        GroupError::NotNumber(s) => Text::new(
-            format!("（`{}` は{what_ja}ではありません）", clip(s)),
-            format!(" (`{}` is not {what_en})", clip(s)),
-        ),
-    }
-}
-
-/// Whether `s` is a number in exponent notation (`4.9e-1`, `1E+3`, `-2e5`), which the notation
-/// does not read ([`parse_number`] takes plain decimals only).
-fn is_exponent_notation(s: &str) -> bool {
-    let Some((mantissa, exponent)) = s.trim().split_once(['e', 'E']) else { return false };
-    let mantissa = mantissa.strip_prefix(['-', '+', '−']).unwrap_or(mantissa);
-    let exponent = exponent.strip_prefix(['-', '+', '−']).unwrap_or(exponent);
-    !exponent.is_empty()
-        && exponent.chars().all(|c| c.is_ascii_digit())
-        && mantissa.chars().any(|c| c.is_ascii_digit())
-        && mantissa.chars().all(|c| c.is_ascii_digit() || c == '.')
-        && mantissa.matches('.').count() <= 1
-}
-
-fn join(a: Text, b: Text) -> Text {
-    Text::new(a.ja + &b.ja, a.en + &b.en)
-}
-
-fn expected_vertex(e: &GroupError) -> Text {
-    join(
-        Text::new(
-            "`V0 (0.0, 1.0, 0.0)` のように、頂点番号のあとに括弧で囲んだ 3 つの数（cos 30° ではなく 0.866 のような値）",
-            "three numbers in parentheses after the vertex number, like `V0 (0.0, 1.0, 0.0)` (values such as 0.866, not cos 30°)",
-        ),
-        match e {
-            GroupError::NotNumber(_) => detail(e, "数", "a plain number"),
-            _ => detail(e, "数", "numbers"),
-        },
-    )
-}
-
-fn expected_face(e: &GroupError) -> Text {
-    join(
-        Text::new(
-            "`F0 { V0, V3, V1 }` のように、面番号のあとに波括弧で囲んだ 3 つの頂点番号",
-            "three vertex numbers in braces after the face number, like `F0 { V0, V3, V1 }`",
-        ),
-        match e {
-            GroupError::NotNumber(_) => detail(e, "頂点番号", "a vertex number like V3"),
-            _ => detail(e, "頂点番号", "vertex numbers"),
-        },
-    )
-}
-
-fn expected_normal(e: &GroupError) -> Text {
-    join(
-        Text::new(
-            "面の頂点のあとに、法線を `{ 0.0, 0.49, 0.87 }` のように 3 つの数で",
-            "the face's normal after its vertices as three numbers, like `{ 0.0, 0.49, 0.87 }`",
-        ),
-        match e {
-            GroupError::NotNumber(_) => detail(e, "数", "a plain number"),
-            _ => detail(e, "数", "numbers"),
-        },
-    )
-}
-
-fn expected_tex(why: Text) -> Text {
-    join(
-        Text::new(
-            "テクスチャ座標の行 `| i | j | (x, y, z) | (s, t) / (s, t) |`: 格子点の位置を 3 つの数で、テクスチャ座標を ` / ` で区切った 2 つの数の組で",
-            "a texture row `| i | j | (x, y, z) | (s, t) / (s, t) |`: the grid vertex's position as three numbers and its texture coordinates as pairs separated by ` / `",
-        ),
-        why,
-    )
-}
-
-pub(super) fn expected_number_size() -> Text {
-    Text::new(
-        "有限で単精度（f32）の範囲に収まる数",
-        "a finite number within single precision (f32) range",
-    )
-}
-
-// ---------------------------------------------------------------------------------------------
 // The report
 
 struct Reader {
@@ -707,34 +606,6 @@ impl Reader {
                     );
                     let line = f.line;
                     self.problem(line, found, expected, RowKind::Face);
-                }
-            }
-        }
-    }
-
-    fn tex(&mut self, t: ParsedTex, found: &str) {
-        match self.tex_at.get(&(t.i, t.j)) {
-            None => {
-                self.tex_at.insert((t.i, t.j), self.report.tex.len());
-                self.report.tex.push(t);
-            }
-            Some(&k) => {
-                let first = &self.report.tex[k];
-                let same = same_numbers(&first.position, &t.position)
-                    && first.tex.len() == t.tex.len()
-                    && first.tex.iter().zip(&t.tex).all(|(a, b)| same_numbers(a, b));
-                if !same {
-                    let expected = Text::new(
-                        format!(
-                            "格子点 ({}, {}) は 1 回ずつ（{} 行目に別の値で書かれています）",
-                            t.i, t.j, first.line
-                        ),
-                        format!(
-                            "each grid vertex ({}, {}) once (it is already on line {} with other numbers)",
-                            t.i, t.j, first.line
-                        ),
-                    );
-                    self.problem(t.line, found, expected, RowKind::Texture);
                 }
             }
         }
@@ -841,151 +712,10 @@ impl Reader {
             self.face(ParsedFace { line: n, index, vertices, normal }, &line[s..end]);
         }
     }
-
-    /// A texture row, when the line is a table row whose cells start `| i | j | (`.
-    fn tex_row(&mut self, n: usize, line: &str) {
-        let trimmed = line.trim();
-        let Some(inner) = trimmed.strip_prefix('|') else { return };
-        let inner = inner.strip_suffix('|').unwrap_or(inner);
-        let cells: Vec<&str> = inner.split('|').map(str::trim).collect();
-        let int = |s: &str| {
-            if !s.is_empty() && s.chars().all(|c| c.is_ascii_digit()) {
-                s.parse::<u32>().ok()
-            } else {
-                None
-            }
-        };
-        let (Some(i), Some(j)) =
-            (cells.first().and_then(|c| int(c)), cells.get(1).and_then(|c| int(c)))
-        else {
-            return;
-        };
-        let Some(pos_cell) = cells.get(2).filter(|c| c.starts_with('(')) else { return };
-        let position = match whole_tuple(pos_cell, 3) {
-            Ok(t) => [t[0].clone(), t[1].clone(), t[2].clone()],
-            Err(err) => {
-                let why = match err {
-                    GroupError::NotNumber(_) => detail(&err, "数", "a plain number"),
-                    _ => detail(&err, "位置の数", "numbers in the position"),
-                };
-                self.problem(n, trimmed, expected_tex(why), RowKind::Texture);
-                return;
-            }
-        };
-        let Some(tex_cell) = cells.get(3).filter(|c| !c.is_empty()) else {
-            let why = Text::new(
-                "（テクスチャ座標がありません）",
-                " (the texture coordinates are missing)",
-            );
-            self.problem(n, trimmed, expected_tex(why), RowKind::Texture);
-            return;
-        };
-        let mut tex = Vec::new();
-        for part in tex_cell.split('/') {
-            match whole_tuple(part, 2) {
-                Ok(t) => tex.push([t[0].clone(), t[1].clone()]),
-                Err(err) => {
-                    let why = match err {
-                        GroupError::NotNumber(_) => detail(&err, "数", "a plain number"),
-                        _ => detail(&err, "座標の組の数", "numbers in a coordinate pair"),
-                    };
-                    self.problem(n, trimmed, expected_tex(why), RowKind::Texture);
-                    return;
-                }
-            }
-        }
-        self.tex(ParsedTex { line: n, i, j, position, tex }, trimmed);
-    }
-}
-
-/// A cell that is exactly one parenthesised tuple of `n` numbers.
-fn whole_tuple(cell: &str, n: usize) -> Result<Vec<Written>, GroupError> {
-    let cell = cell.trim();
-    match group(cell, 0) {
-        Some(Ok((a, b, after))) if cell[after..].trim().is_empty() => tuple(&cell[a..b], n),
-        Some(Ok(_)) => Err(GroupError::NotNumber(cell.to_owned())),
-        Some(Err(e)) => Err(e),
-        None => Err(GroupError::NotNumber(cell.to_owned())),
-    }
 }
 
 fn same_numbers(a: &[Written], b: &[Written]) -> bool {
     a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.value == y.value)
-}
-
-/// The lines of `text` as the reader sees them: what is inside an HTML comment `<!-- … -->`
-/// (other than a tag `<!-- cg: ID -->`, or one mistyped) or a code fence (```` ``` ```` or `~~~`, the fence lines
-/// too) is blanked, so an old table kept in a comment or an example in a fence is not read;
-/// every line stays, so line numbers stay right. Also the line and text of a `<!--` that is
-/// never closed (everything after it is blanked).
-fn without_comments(text: &str) -> (Vec<String>, Option<(usize, String)>) {
-    let mut out = Vec::new();
-    let mut open_comment: Option<(usize, String)> = None;
-    let mut fence: Option<(char, usize)> = None;
-    for (k, line) in text.lines().enumerate() {
-        let trimmed = line.trim_start();
-        if open_comment.is_none() {
-            if let Some((c, n)) = fence {
-                let run = trimmed.len() - trimmed.trim_start_matches(c).len();
-                if run >= n && trimmed[run..].trim().is_empty() {
-                    fence = None;
-                }
-                out.push(String::new());
-                continue;
-            }
-            if let Some(c) = ['`', '~'].into_iter().find(|&c| trimmed.starts_with([c; 3])) {
-                let run = trimmed.len() - trimmed.trim_start_matches(c).len();
-                fence = Some((c, run));
-                out.push(String::new());
-                continue;
-            }
-        }
-        let mut kept = String::new();
-        let mut rest = line;
-        loop {
-            if open_comment.is_some() {
-                match rest.find("-->") {
-                    Some(end) => {
-                        open_comment = None;
-                        rest = &rest[end + 3..];
-                    }
-                    None => break,
-                }
-            }
-            let Some(start) = rest.find("<!--") else {
-                kept.push_str(rest);
-                break;
-            };
-            kept.push_str(&rest[..start]);
-            // A tag, or a tag mistyped (`<!-- CG: … -->`, `<!-- cg s.spot`), stays for the
-            // tag readers, which name a mistyped one.
-            let tag = rest[start + 4..]
-                .trim_start()
-                .get(..2)
-                .is_some_and(|s| s.eq_ignore_ascii_case("cg"));
-            match rest[start + 4..].find("-->") {
-                Some(len) => {
-                    let end = start + 4 + len + 3;
-                    if tag {
-                        kept.push_str(&rest[start..end]);
-                    } else {
-                        kept.push(' ');
-                    }
-                    rest = &rest[end..];
-                }
-                None if tag => {
-                    kept.push_str(&rest[start..]);
-                    break;
-                }
-                None => {
-                    open_comment = Some((k + 1, rest[start..].to_owned()));
-                    rest = "";
-                }
-            }
-        }
-        out.push(kept);
-    }
-    (out, open_comment)
 }
 
 /// Reads every vertex row, face row, tagged matrix, texture row and tagged shading table

@@ -184,7 +184,8 @@ pub fn tex_label(text: &str) -> String {
 /// `$`, `\(`, `\)`, backticks, asterisks and braces, `−` (and the full-width `－` a Shift_JIS
 /// file keeps of it, or the other dashes) as `-`, a Japanese middle dot (`N・L`, what a Shift_JIS
 /// file keeps of `N·L`) or a dot operator as `·`, subscript digits (`θ₂`, which Shift_JIS cannot
-/// keep) as digits, `度` and `^\circ` as `°`, in lower case.
+/// keep) and superscript digits as digits, full-width letters and signs (`－ｘ　１`, as an IME
+/// writes them) as ASCII, `度` and `^\circ` as `°`, in lower case.
 fn canonical(label: &str) -> String {
     normalize(label)
         .replace("\\(", "")
@@ -193,6 +194,11 @@ fn canonical(label: &str) -> String {
         .replace("\\circ", "°")
         .replace('度', "°")
         .chars()
+        // Full-width ASCII (U+FF01–FF5E) is ASCII: `ｘ` is `x`, `＄` is `$`.
+        .map(|c| match c {
+            '\u{ff01}'..='\u{ff5e}' => char::from_u32(u32::from(c) - 0xfee0).unwrap_or(c),
+            _ => c,
+        })
         .filter(|c| !c.is_whitespace() && !matches!(c, '$' | '`' | '*' | '{' | '}'))
         .map(|c| match c {
             // `−x 1` comes back from Shift_JIS as `－x 1` (U+FF0D), and an IME writes it so.
@@ -200,6 +206,12 @@ fn canonical(label: &str) -> String {
             '・' | '･' | '⋅' | '∙' => '·',
             // `θ₂` cannot be kept in Shift_JIS: a student writes `θ2`.
             '₀'..='₉' => char::from_digit(u32::from(c) - u32::from('₀'), 10).unwrap_or(c),
+            '⁰' | '⁴'..='⁹' => {
+                char::from_digit(u32::from(c) - u32::from('⁰'), 10).unwrap_or(c)
+            }
+            '¹' => '1',
+            '²' => '2',
+            '³' => '3',
             _ => c,
         })
         .flat_map(char::to_lowercase)

@@ -471,11 +471,13 @@ fn students_ways_of_writing_are_read_and_a_missing_column_is_a_finding() {
 fn labels_read_after_a_shift_jis_round_trip() {
     let minus = cg_harness::Text::new("−x 1", "−x 1");
     let theta = cg_harness::Text::new("θ₂", "θ₂");
-    for written in ["−x 1", "－x 1", "-x 1", "‐x 1", "–x 1"] {
+    for written in ["−x 1", "－x 1", "-x 1", "‐x 1", "–x 1", "—x 1", "―x 1", "－ｘ　１", "－Ｘ 1"]
+    {
         assert!(label_matches(written, &minus), "{written}");
     }
-    for written in ["θ₂", "θ2", "$θ2$"] {
+    for written in ["θ₂", "θ2", "$θ2$", "θ²", "θ２"] {
         assert!(label_matches(written, &theta), "{written}");
     }
-    assert!(!label_matches("θ1", &theta) && !label_matches("x 1", &minus));
+    assert!(!label_matches("θ1", &theta) && !label_matches("θ₁", &theta));
+    assert!(!label_matches("x 1", &minus) && !label_matches("－ｙ　１", &minus));
 }

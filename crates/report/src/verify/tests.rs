@@ -221,6 +221,40 @@ fn each_factor_of_a_product_is_checked_and_a_wrong_one_is_named() {
     }
 }
 
+/// The texture-coordinate table as `report fill` writes it, in both formats and languages:
+/// every row reads back (Markdown `| 1 | 0 | (…) | (…) |`, LaTeX `1 & 0 & $(…)$ & $(…)$ \\`),
+/// checks clean, and a wrong pair is named at its line. The LaTeX rows were not read: the
+/// check said there was no table and passed a wrong value.
+#[test]
+fn the_filled_texture_table_reads_back_in_both_formats() {
+    use crate::template::Format;
+    let data = crate::tables::tests::texture_data();
+    let d = Derived { a4: Some(data.clone()), ..Derived::default() };
+    let pairs: usize = data.rows.iter().map(|r| r.tex.len()).sum();
+    for format in [Format::Markdown, Format::Latex] {
+        for lang in [Lang::Ja, Lang::En] {
+            let table = crate::tables::tex_table(&data, lang, format);
+            let (report, problems) = parse_report(&table);
+            assert!(problems.is_empty(), "{problems:?}");
+            assert_eq!(report.tex.len(), data.rows.len(), "{format:?} {lang}:\n{table}");
+            let v = verify(&report, &d);
+            assert!(v.findings.is_empty(), "{format:?} {lang}: {:#?}", v.findings);
+            assert_eq!(v.checked, 3 * data.rows.len() + 2 * pairs);
+            // Grid vertex (1, 0) has s = 0.25 + 0.05 = 0.3 and t = 0.5: written as 0.9.
+            let row = match format {
+                Format::Markdown => "| 1 | 0 | (-4.000, 0.000, -5.000) | (0.300, 0.500) |",
+                Format::Latex => "1 & 0 & $(-4.000, 0.000, -5.000)$ & $(0.300, 0.500)$ \\\\",
+            };
+            assert!(table.contains(row), "{table}");
+            let wrong = table.replace(row, &row.replace("(0.300, 0.500)", "(0.900, 0.500)"));
+            let (report, _) = parse_report(&wrong);
+            let v = verify(&report, &d);
+            assert_eq!(items(&v), [(line_of(&wrong, "(0.900, 0.500)"), "tex (1, 0)")]);
+            assert_eq!(v.findings[0].written, "(0.900, 0.500)");
+        }
+    }
+}
+
 #[test]
 fn factors_beyond_the_products_are_a_note_not_a_mistake() {
     let block = filled_view(crate::template::Format::Markdown);
@@ -278,6 +312,83 @@ fn planted_mistakes_are_named_and_nothing_else() {
     }
     assert!(f[0].message(Lang::En).contains("tolerance ±0.001"), "{}", f[0].message(Lang::En));
     assert!(f[0].message(Lang::Ja).contains("許容誤差 ±0.001"));
+}
+
+/// A product written as a `bmatrix`, followed by the next product's section with its symbolic
+/// matrix: the wrong entry (-15 for 2) is named in the bmatrix. It was skipped: the symbolic
+/// matrix was taken for it (a problem at the wrong line) and the note said the matrix was
+/// missing. A matrix of `\frac{\sqrt{3}}{2}` is named at its line and not also "missing".
+#[test]
+fn a_product_in_brackets_is_checked_and_one_not_read_is_not_also_missing() {
+    let a2 = r"$$ \begin{pmatrix} 0.866 & 0 & 0.5 & 1 \\ 0 & 1 & 0 & 2 \\";
+    assert!(CLEAN.contains(a2));
+    let next = "**View after the drag**\n\n$$ \\begin{pmatrix} \\cos(-\\mathit{yaw}) & 0 & 0 & 0 \\\\ 0 & 1 & 0 & 0 \\\\ 0 & 0 & 1 & 0 \\\\ 0 & 0 & 0 & 1 \\end{pmatrix} $$\n\n";
+    let text = CLEAN.replace(a2, &a2.replace("0 & 2 \\\\", "0 & -15 \\\\")).replace(
+        "\\end{pmatrix} $$\n\n<!-- cg: a3",
+        &format!("\\end{{pmatrix}} $$\n\n{next}<!-- cg: a3"),
+    );
+    let text = text.replacen("{pmatrix} 0.866", "{bmatrix} 0.866", 1).replacen(
+        "0 & 0 & 0 & 1 \\end{pmatrix} $$\n\n**",
+        "0 & 0 & 0 & 1 \\end{bmatrix} $$\n\n**",
+        1,
+    );
+    assert!(text.contains("\\begin{bmatrix}") && text.contains("\\end{bmatrix}"), "{text}");
+    let v = check(&text);
+    let line = line_of(&text, "-15");
+    assert_eq!(items(&v), [(line, "a2.view.start (row 2, column 4)")], "{:#?}", v.findings);
+    assert_eq!(only_the_formula_missing(&v), Vec::<&str>::new());
+
+    let text = CLEAN.replace(a2, &a2.replace("0.866", "\\frac{\\sqrt{3}}{2}"));
+    let (report, problems) = parse_report(&text);
+    let lines: Vec<usize> = problems.iter().map(|p| p.line).collect();
+    assert_eq!(lines, [line_of(&text, "\\sqrt{3}")], "{problems:?}");
+    let v = verify(&report, &derived());
+    assert!(v.findings.is_empty(), "{:#?}", v.findings);
+    assert_eq!(only_the_formula_missing(&v), Vec::<&str>::new(), "no 'no tagged matrix' note");
+}
+
+/// Rows of the derived model that the report's tables leave out are a note naming them (no
+/// finding: the report still passes); they passed without a word. The first ten are named and
+/// the rest counted; a report with no vertex or face table gets only the notes saying so.
+#[test]
+fn rows_the_tables_leave_out_are_a_note_naming_them() {
+    let text = CLEAN
+        .replace("| V4 | (-1.000, -0.800, -1.000) |\n", "")
+        .replace("| F2 | { V0, V1, V2 } | { 0.874, 0.486, 0.000 } |\n", "")
+        .replace("| F5 | { V4, V2, V3 } | { 0.000, -1.000, 0.000 } |\n", "");
+    assert_eq!(text.lines().count() + 3, CLEAN.lines().count());
+    let v = check(&text);
+    assert!(v.is_clean(), "{:#?}", v.findings);
+    let rows: Vec<&Text> = v.notes.iter().filter(|n| n.en.contains("leave out")).collect();
+    assert_eq!(rows.len(), 1, "{:?}", v.notes);
+    assert!(rows[0].en.starts_with("V4, F2, F5: the derived model has 3 rows "), "{}", rows[0].en);
+    assert!(rows[0].en.contains("not counted as mistakes"), "{}", rows[0].en);
+    assert!(
+        rows[0].ja.starts_with("V4, F2, F5: 導出したモデルにあるこの 3 行が"),
+        "{}",
+        rows[0].ja
+    );
+    assert_eq!(only_the_formula_missing(&check(CLEAN)), Vec::<&str>::new(), "every row: no note");
+
+    // 15 vertices, only V0 written: V1 … V10 named, 4 more counted; no face table, so its
+    // note and no face named.
+    let vertices: Vec<Vec3> = (0..15).map(|i| Vec3::new(i as f32, 0.0, 0.0)).collect();
+    let polygon = polygon_from_data(Text::new("点", "points"), vertices, Vec::new(), None);
+    let d = Derived { a1: Some(polygon), ..Derived::default() };
+    let (report, _) = parse_report("| V0 | (0.000, 0.000, 0.000) |");
+    let v = verify(&report, &d);
+    let notes: Vec<&str> = v.notes.iter().map(|n| n.en.as_str()).collect();
+    let names = (1..=10).map(|k| format!("V{k}")).collect::<Vec<_>>().join(", ");
+    let want = format!("{names} and 4 more: the derived model has 14 rows ");
+    assert!(notes.iter().any(|n| n.starts_with(&want)), "{notes:?}");
+    let ja = format!("{names} ほか 4 行: ");
+    assert!(v.notes.iter().any(|n| n.ja.starts_with(&ja)), "{:?}", v.notes);
+    assert!(notes.iter().any(|n| n.contains("no face table")), "{notes:?}");
+    assert!(!notes.iter().any(|n| n.contains("F0")), "{notes:?}");
+
+    // No vertex or face table at all: the notes saying so, and no list of rows.
+    let v = check("Nothing here.");
+    assert!(v.notes.iter().all(|n| !n.en.contains("leave out")), "{:?}", v.notes);
 }
 
 #[test]
