@@ -44,7 +44,7 @@ pub(super) fn detail(e: &GroupError, what_ja: &str, what_en: &str) -> Text {
 }
 
 /// Whether `s` is a number in exponent notation (`4.9e-1`, `1E+3`, `-2e5`), which the notation
-/// does not read ([`parse_number`] takes plain decimals only).
+/// does not read ([`super::parse_number`] takes plain decimals only).
 pub(super) fn is_exponent_notation(s: &str) -> bool {
     let Some((mantissa, exponent)) = s.trim().split_once(['e', 'E']) else { return false };
     let mantissa = mantissa.strip_prefix(['-', '+', '−']).unwrap_or(mantissa);
