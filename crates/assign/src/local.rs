@@ -521,7 +521,7 @@ mod tests {
         let dir = std::env::temp_dir().join(format!(
             "cg-local-{}-{}",
             std::process::id(),
-            cg_core_hash(manifest, files)
+            hash_of(manifest, files)
         ));
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(dir.join("exercises/src")).unwrap();
@@ -532,7 +532,7 @@ mod tests {
         dir
     }
 
-    fn cg_core_hash(manifest: &str, files: &[(&str, &str)]) -> u64 {
+    fn hash_of(manifest: &str, files: &[(&str, &str)]) -> u64 {
         use std::hash::{Hash, Hasher};
         let mut h = std::collections::hash_map::DefaultHasher::new();
         (manifest, files).hash(&mut h);

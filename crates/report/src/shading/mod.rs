@@ -201,8 +201,9 @@ fn canonical(label: &str) -> String {
         })
         .filter(|c| !c.is_whitespace() && !matches!(c, '$' | '`' | '*' | '{' | '}'))
         .map(|c| match c {
-            // `−x 1` comes back from Shift_JIS as `－x 1` (U+FF0D), and an IME writes it so.
-            '−' | '－' | '﹣' | '\u{2010}'..='\u{2015}' => '-',
+            // `−x 1` comes back from Shift_JIS as `－x 1` (U+FF0D, made `-` above with the other
+            // full-width signs), and an IME writes it so.
+            '−' | '﹣' | '\u{2010}'..='\u{2015}' => '-',
             '・' | '･' | '⋅' | '∙' => '·',
             // `θ₂` cannot be kept in Shift_JIS: a student writes `θ2`.
             '₀'..='₉' => char::from_digit(u32::from(c) - u32::from('₀'), 10).unwrap_or(c),
