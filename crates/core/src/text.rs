@@ -5,12 +5,12 @@
 //! UTF-8 without a BOM.
 //!
 //! Detection, when no encoding is named: a BOM decides (and is removed from the text); else
-//! UTF-16 without a BOM is recognised by its zero bytes ([`utf16_without_bom`]: some editors
-//! save "Unicode" without a BOM; text in UTF-8 or Shift_JIS has no zero bytes); else valid
-//! UTF-8 is UTF-8; else the text is Shift_JIS when it decodes as Shift_JIS without an error;
-//! else it is refused with a [`DecodeError`] that says where (line, column, byte offset)
-//! and what to do. Line endings are left as they are (`\r\n` included); the kit's parsers
-//! accept both.
+//! UTF-16 without a BOM is recognised by its zero bytes, when it reads as text in that byte
+//! order ([`utf16_without_bom`]: some editors save "Unicode" without a BOM; text in UTF-8 or
+//! Shift_JIS has no zero bytes); else valid UTF-8 is UTF-8; else the text is Shift_JIS when it
+//! decodes as Shift_JIS without an error; else it is refused with a [`DecodeError`] that says
+//! where (line, column, byte offset) and what to do. Line endings are left as they are (`\r\n`
+//! included); the kit's parsers accept both.
 //!
 //! The decoders are `encoding_rs`'s (the WHATWG Encoding Standard's): its Shift_JIS is
 //! Windows' CP932, NEC and IBM extensions included.
@@ -587,25 +587,56 @@ fn decode_detected(
     }
 }
 
-/// UTF-16 without a BOM, by its zero bytes: an even number of bytes, and among the first
-/// 4,096 pairs at least a quarter have a zero high byte (ASCII: digits, spaces, line ends)
-/// while no low byte is zero (little-endian), or the other way round (big-endian). Text that
-/// is UTF-8 or Shift_JIS has no zero bytes at all, so neither is taken for UTF-16; UTF-16 text
-/// with no ASCII character in it is not recognised (then `--encoding utf-16le` names it).
+/// UTF-16 without a BOM, by its zero bytes and by reading it: an even number of bytes, and,
+/// among the first 4,096 code units, at least a quarter with a zero high byte (ASCII and
+/// Latin-1: digits, spaces, line ends, Markdown) — the second byte of each pair for
+/// little-endian, the first for big-endian — and those units read in that byte order as text:
+/// no unpaired surrogate, no control character but the tab, the line ends and the form feed,
+/// no noncharacter U+FFFE or U+FFFF (a byte-swapped BOM), and no U+0A00 (a byte-swapped line
+/// end). Of the two byte orders, the one with more zero bytes in ASCII's place is tried first.
+///
+/// Characters whose code unit has a zero *low* byte — 一 (U+4E00), 最 (U+6700), 言 (U+8A00),
+/// the ideographic space U+3000 — put zero bytes in the other place too: they do not stop the
+/// detection, the reading decides. Text that is UTF-8 or Shift_JIS has no zero bytes at all, so
+/// neither is taken for UTF-16; a binary file's zero bytes read as control characters (`00 00`
+/// is U+0000) or broken surrogates. UTF-16 text with little ASCII in it (under a quarter of its
+/// characters) is not recognised (then `--encoding utf-16le` names it).
 #[must_use]
 pub fn utf16_without_bom(bytes: &[u8]) -> Option<Encoding> {
+    const SAMPLE: usize = 4096;
     if bytes.len() < 2 || !bytes.len().is_multiple_of(2) {
         return None;
     }
-    let pairs: Vec<[u8; 2]> = bytes.chunks_exact(2).take(4096).map(|c| [c[0], c[1]]).collect();
+    let pairs: Vec<[u8; 2]> = bytes.chunks_exact(2).take(SAMPLE).map(|c| [c[0], c[1]]).collect();
     let zeros = |k: usize| pairs.iter().filter(|p| p[k] == 0).count();
-    let (even, odd) = (zeros(0), zeros(1));
-    let enough = |n: usize| n * 4 >= pairs.len();
-    match (even, odd) {
-        (0, n) if enough(n) => Some(Encoding::Utf16Le),
-        (n, 0) if enough(n) => Some(Encoding::Utf16Be),
-        _ => None,
+    // ASCII's zero high byte is the second of a little-endian pair, the first of a big-endian.
+    let mut orders = [(Encoding::Utf16Le, zeros(1)), (Encoding::Utf16Be, zeros(0))];
+    orders.sort_by_key(|&(_, ascii)| std::cmp::Reverse(ascii));
+    let truncated = bytes.len() / 2 > pairs.len();
+    orders.into_iter().find_map(|(encoding, ascii)| {
+        (ascii * 4 >= pairs.len() && reads_as_text(&pairs, encoding, truncated)).then_some(encoding)
+    })
+}
+
+/// Whether the code units `pairs`, in `encoding`'s byte order, are text (see
+/// [`utf16_without_bom`]); when `truncated` (the sample of a longer file), a high surrogate at
+/// the end is the first half of a pair cut by the sample.
+fn reads_as_text(pairs: &[[u8; 2]], encoding: Encoding, truncated: bool) -> bool {
+    let unit = |p: &[u8; 2]| match encoding {
+        Encoding::Utf16Be => u16::from_be_bytes(*p),
+        _ => u16::from_le_bytes(*p),
+    };
+    let mut units: Vec<u16> = pairs.iter().map(unit).collect();
+    if truncated && units.last().is_some_and(|u| (0xD800..0xDC00).contains(u)) {
+        units.pop();
     }
+    char::decode_utf16(units).all(|c| match c {
+        Ok('\t' | '\n' | '\r' | '\u{c}') => true,
+        // A byte-swapped BOM, the other noncharacter, a byte-swapped line end; a surrogate
+        // without its pair.
+        Ok('\u{FFFE}' | '\u{FFFF}' | '\u{0A00}') | Err(_) => false,
+        Ok(c) => !c.is_control(),
+    })
 }
 
 /// `bytes[skip..]` decoded as `encoding`; the place of the first byte that is not.

@@ -119,14 +119,102 @@ pub fn message(message: &str) -> Text {
 }
 
 /// The parser's `message` about `text` at `span`, with its line and column (1-based; the
-/// column counts characters), in both languages: `3 行 7 列: …` / `line 3, column 7: …`.
+/// column counts characters), in both languages: `3 行 7 列: …` / `line 3, column 7: …`. When
+/// that line has a character a Japanese input method types in place of TOML's (see
+/// [`typed_by_an_input_method`]), it is named after the message, with what to type instead.
 #[must_use]
 pub fn at(text: &str, message: &str, span: Option<Range<usize>>) -> Text {
     let said = self::message(message);
-    match span {
-        Some(span) => located(text, span.start, &said),
+    let Some(span) = span else { return said };
+    let said = located(text, span.start, &said);
+    match typed_by_an_input_method(text, span.start) {
+        Some(hint) => Text::new(
+            format!("{}。{}", said.ja, hint.ja),
+            format!("{}. {}", said.en, capitalized(&hint.en)),
+        ),
         None => said,
     }
+}
+
+/// The first character on the line of `offset` (a byte of `text`) that a Japanese input method
+/// types in place of TOML's, outside strings and comments — a full-width space (U+3000) around
+/// `=`, a typographic quote (“ ” ‘ ’, U+201C, U+201D, U+2018, U+2019) around a string, a
+/// full-width digit (`１`, U+FF11) — or a typographic quote inside a string that the line does
+/// not close (`"12345678”`): named with its line, column and code point, and what to type
+/// instead. `None` when there is none (then the parser's message says it all).
+#[must_use]
+pub fn typed_by_an_input_method(text: &str, offset: usize) -> Option<Text> {
+    let start = offset.min(text.len());
+    let start = (0..=start).rev().find(|&i| text.is_char_boundary(i)).unwrap_or(0);
+    let line_start = text[..start].rfind('\n').map_or(0, |i| i + 1);
+    let line_end = text[start..].find('\n').map_or(text.len(), |i| start + i);
+    let line = &text[line_start..line_end];
+    let number = text[..line_start].matches('\n').count() + 1;
+    let typographic = |c: char| matches!(c, '\u{201C}' | '\u{201D}' | '\u{2018}' | '\u{2019}');
+    // The quote that opened the string the scan is in (`"` or `'`), and its column (0-based).
+    let mut string: Option<(char, usize)> = None;
+    let mut escaped = false;
+    let mut found = None;
+    for (column, (i, c)) in line.char_indices().enumerate() {
+        match string {
+            Some(('"', _)) if escaped => escaped = false,
+            Some(('"', _)) if c == '\\' => escaped = true,
+            Some((quote, _)) if c == quote => string = None,
+            Some(_) => {}
+            // A comment, or a multi-line string: what follows is not TOML's syntax.
+            None if c == '#' || line[i..].starts_with("\"\"\"") || line[i..].starts_with("'''") => {
+                break;
+            }
+            None if c == '"' || c == '\'' => string = Some((c, column)),
+            None if c == '\u{3000}' || typographic(c) || ('０'..='９').contains(&c) => {
+                found = Some((column, c));
+                break;
+            }
+            None => {}
+        }
+    }
+    // A string the line does not close: a typographic quote in it (`"12345678”`).
+    if found.is_none()
+        && let Some((_, opened)) = string
+    {
+        found = line.chars().enumerate().skip(opened + 1).find(|&(_, c)| typographic(c));
+    }
+    let (column, c) = found?;
+    let (line, column, code) = (number, column + 1, format!("U+{:04X}", u32::from(c)));
+    Some(match c {
+        '\u{3000}' => Text::new(
+            format!(
+                "{line} 行 {column} 列の「\u{3000}」は全角スペース（{code}）です。半角スペースにしてください"
+            ),
+            format!(
+                "the character at line {line}, column {column} is a full-width space ({code}): type a half-width space instead"
+            ),
+        ),
+        '０'..='９' => {
+            let digit = crate::text::ascii_digit(c);
+            Text::new(
+                format!(
+                    "{line} 行 {column} 列の「{c}」（{code}）は全角の数字です。半角の数字 {digit} にしてください"
+                ),
+                format!(
+                    "the character at line {line}, column {column}, `{c}` ({code}), is a full-width digit: type the half-width digit {digit} instead"
+                ),
+            )
+        }
+        _ => Text::new(
+            format!(
+                "{line} 行 {column} 列の「{c}」（{code}）は日本語入力の引用符で、TOML の引用符ではありません。半角の二重引用符 \" で囲んでください"
+            ),
+            format!(
+                "the character at line {line}, column {column}, `{c}` ({code}), is a typographic quote, not TOML's: type straight double quotes \" instead"
+            ),
+        ),
+    })
+}
+
+fn capitalized(s: &str) -> String {
+    let mut chars = s.chars();
+    chars.next().map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
 }
 
 /// `said` about the place `offset` (a byte) of `text`, with its line and column (1-based; the
@@ -183,6 +271,97 @@ mod tests {
         assert!(t.ja.contains("整数 99999999999999999999 が大きすぎます"), "{t:?}");
         assert!(!t.ja.contains("invalid type"), "{t:?}");
         assert!(t.en.contains("invalid type: integer"), "{t:?}");
+    }
+
+    /// `at` of each file's parse error names the character at `(line, column)`: `ja` and `en`
+    /// found in the two languages, with the place and what to type instead.
+    fn assert_named(cases: &[(&str, (usize, usize), &str, &str)], instead: (&str, &str)) {
+        for &(text, (line, column), ja, en) in cases {
+            let (m, span) = parsed(text);
+            let t = at(text, &m, span);
+            let (where_ja, where_en) =
+                (format!("{line} 行 {column} 列の"), format!("at line {line}, column {column}"));
+            assert!(t.ja.contains(&where_ja) && t.ja.contains(ja), "{text:?}: {}", t.ja);
+            assert!(t.en.contains(&where_en) && t.en.contains(en), "{text:?}: {}", t.en);
+            assert!(t.ja.contains(instead.0), "{text:?}: {}", t.ja);
+            assert!(t.en.contains(instead.1), "{text:?}: {}", t.en);
+            // The parser's own message is still said, in both languages.
+            assert!(t.en.contains(&m), "{text:?}: {}", t.en);
+            assert!(t.ja.starts_with(&at_without_hint(text, &m)), "{text:?}: {}", t.ja);
+        }
+    }
+
+    /// The parser's message at its place, as it was said before the hints.
+    fn at_without_hint(text: &str, m: &str) -> String {
+        let (_, span) = parsed(text);
+        located(text, span.map_or(0, |s| s.start), &message(m)).ja
+    }
+
+    /// A full-width space (U+3000) around `=` or after a value: `name　= "山田"`.
+    #[test]
+    fn a_full_width_space_is_named() {
+        let space = ("全角スペース（U+3000）", "a full-width space (U+3000)");
+        assert_named(
+            &[
+                ("name\u{3000}= \"山田\"\n", (1, 5), space.0, space.1),
+                ("student = \"12345678\"\ntable\u{3000}=\u{3000}3\n", (2, 6), space.0, space.1),
+                ("student = \"1\"\u{3000}\n", (1, 14), space.0, space.1),
+            ],
+            ("半角スペースにしてください", "type a half-width space instead"),
+        );
+    }
+
+    /// Typographic quotes around a string (“ ” U+201C U+201D, ‘ ’ U+2018 U+2019), or closing one
+    /// opened with `"`.
+    #[test]
+    fn typographic_quotes_are_named() {
+        assert_named(
+            &[
+                ("student = “12345678”\n", (1, 11), "「“」（U+201C）", "`“` (U+201C)"),
+                ("student = ‘12345678’\n", (1, 11), "「‘」（U+2018）", "`‘` (U+2018)"),
+                ("student = \"12345678”\n", (1, 20), "「”」（U+201D）", "`”` (U+201D)"),
+            ],
+            ("半角の二重引用符 \" で囲んでください", "type straight double quotes \" instead"),
+        );
+    }
+
+    /// Full-width digits (`table = １`, U+FF11), with the half-width digit to type.
+    #[test]
+    fn full_width_digits_are_named() {
+        assert_named(
+            &[
+                ("student = \"1\"\ntable = １\n", (2, 9), "「１」（U+FF11）", "`１` (U+FF11)"),
+                ("table = 1２\n", (1, 10), "「２」（U+FF12）", "`２` (U+FF12)"),
+            ],
+            ("全角の数字です。半角の数字", "is a full-width digit: type the half-width digit"),
+        );
+        let (m, span) = parsed("table = １\n");
+        let t = at("table = １\n", &m, span);
+        assert!(t.ja.contains("半角の数字 1 にしてください"), "{}", t.ja);
+        assert!(t.en.contains("half-width digit 1 instead"), "{}", t.en);
+    }
+
+    /// No hint where there is no such character, or where it is inside a string or a comment
+    /// (a name with a full-width space, a comment with typographic quotes).
+    #[test]
+    fn no_hint_for_a_correct_file_or_a_character_in_a_string_or_comment() {
+        for text in [
+            "student = \"12345678\"\ntable = 3\n",
+            "# 山田\u{3000}太郎の “student.toml” １\nstudent = \"12345678\" # ‘メモ’\u{3000}\ntable = 3\n",
+        ] {
+            assert!(text.parse::<toml::Table>().is_ok(), "{text:?}");
+            // Said at any place of the file: the message and its place, nothing more.
+            for (i, _) in text.char_indices() {
+                let said = at(text, "missing value", Some(i..i));
+                assert_eq!(said, located(text, i, &message("missing value")), "{text:?} at {i}");
+            }
+        }
+        // An error elsewhere: the full-width space inside a string is not named.
+        let text = "student = \"山田\u{3000}太郎\" x\n";
+        let (m, span) = parsed(text);
+        let t = at(text, &m, span.clone());
+        assert!(!t.ja.contains("U+3000") && !t.en.contains("U+3000"), "{t:?}");
+        assert_eq!(t, located(text, span.unwrap().start, &message(&m)));
     }
 
     #[test]

@@ -30,6 +30,83 @@ fn utf16_without_a_bom_is_recognised_by_its_zero_bytes() {
     assert_eq!(utf16_without_bom(b"a"), None);
 }
 
+/// The kit's own report template: Japanese with Markdown, and 最 (U+6700) and 言 (U+8A00),
+/// whose UTF-16 code units have a zero low byte.
+const TEMPLATE: &str = include_str!("../../../../report-template/ja/report.md");
+
+/// A filled-in report as Notepad writes it: CRLF, an ideographic space (U+3000) indenting a
+/// paragraph, 一 (U+4E00), 最 (U+6700) and 言 (U+8A00): characters with a zero low byte.
+const FILLED: &str = "# 課題 1 レポート\r\n\r\n| 頂点 | x | y | z |\r\n|---|---|---|---|\r\n\
+    | V0 | 1 | 0 | 0 |\r\n\r\n\u{3000}一番最初に言いたいのは、法線 N = (0, 1, 0) のことです。\r\n\
+    \u{3000}最後に一言: 面 F0 { V0, V3, V1 } は 反時計回り。\r\n";
+
+/// UTF-16 saved without a BOM, text with 一, 最, 言 or U+3000 in it: their zero low bytes are
+/// not a reason to refuse it (it was "neither UTF-8 nor Shift_JIS", exit 2), in either byte
+/// order.
+#[test]
+fn utf16_without_a_bom_is_read_with_characters_whose_low_byte_is_zero() {
+    let zero_low_byte = |s: &str| s.encode_utf16().any(|u| u > 0xFF && u & 0xFF == 0);
+    assert!(zero_low_byte(TEMPLATE), "premise: the template has such a character");
+    assert!(['\u{3000}', '一', '最', '言'].iter().all(|&c| FILLED.contains(c)));
+    let lf = TEMPLATE.replace("\r\n", "\n");
+    let crlf = lf.replace('\n', "\r\n");
+    for text in [TEMPLATE, lf.as_str(), crlf.as_str(), FILLED] {
+        for (little, encoding) in [(true, Encoding::Utf16Le), (false, Encoding::Utf16Be)] {
+            let bare = utf16(text, little)[2..].to_vec();
+            assert_eq!(
+                utf16_without_bom(&bare),
+                Some(encoding),
+                "{encoding}: {}",
+                text.lines().next().unwrap_or("")
+            );
+            assert_eq!(decode(&bare, None), Ok((text.to_owned(), encoding)), "{encoding}");
+            assert_eq!(decode_cow(Cow::Owned(bare), None), Ok((text.to_owned(), encoding)));
+        }
+    }
+    // The same text in UTF-8 or Shift_JIS is not taken for UTF-16.
+    for text in [TEMPLATE, FILLED] {
+        assert_eq!(utf16_without_bom(text.as_bytes()), None);
+        assert_eq!(decode(text.as_bytes(), None), Ok((text.to_owned(), Encoding::Utf8)));
+    }
+    let sjis = shift_jis(FILLED);
+    assert_eq!(utf16_without_bom(&sjis), None);
+    assert_eq!(decode(&sjis, None), Ok((FILLED.to_owned(), Encoding::ShiftJis)));
+}
+
+/// More characters with a zero low byte than ASCII ones: the byte order whose reading is text
+/// wins, not the one with more zero bytes in ASCII's place (read big-endian, little-endian
+/// `一　最\n` is `N0g` and U+0A00, the byte-swapped line end).
+#[test]
+fn utf16_without_a_bom_is_read_in_the_byte_order_that_gives_text() {
+    let text = "一\u{3000}最\n".repeat(50);
+    for (little, encoding) in [(true, Encoding::Utf16Le), (false, Encoding::Utf16Be)] {
+        let bare = utf16(&text, little)[2..].to_vec();
+        assert_eq!(decode(&bare, None), Ok((text.clone(), encoding)), "{encoding}");
+    }
+}
+
+/// Zero bytes that are not UTF-16 text: refused as before, never read as UTF-16.
+#[test]
+fn binary_with_zero_bytes_is_not_taken_for_utf16() {
+    // A table of small 16-bit numbers (control characters read as UTF-16).
+    let numbers: Vec<u8> = (1..=600u16).flat_map(u16::to_le_bytes).collect();
+    let big: Vec<u8> = (1..=600u16).flat_map(u16::to_be_bytes).collect();
+    // Zeros; ASCII text with a NUL in every other byte and a control character.
+    let zeros = vec![0u8; 64];
+    let control = utf16("V0 (1, 0, 0)\u{1}\r\n", true)[2..].to_vec();
+    // An unpaired surrogate; a byte-swapped BOM (U+FFFE) in the text.
+    let surrogate = [b"a\0b\0".as_slice(), b"\x00\xD8c\0\n\0"].concat();
+    let swapped = [b"a\0b\0".as_slice(), b"\xFE\xFF\n\0"].concat();
+    for bytes in [&numbers, &big, &zeros, &control, &surrogate, &swapped] {
+        assert_eq!(utf16_without_bom(bytes), None, "{bytes:?}");
+        assert!(decode(bytes, None).is_err(), "{bytes:?}");
+    }
+    // Odd length: never UTF-16.
+    let mut odd = utf16(FILLED, true)[2..].to_vec();
+    odd.pop();
+    assert_eq!(utf16_without_bom(&odd), None);
+}
+
 /// The same report in every encoding the kit reads: one text, its encoding named.
 #[test]
 fn every_encoding_decodes_to_the_same_text_and_names_itself() {
