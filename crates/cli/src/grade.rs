@@ -146,6 +146,17 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
             .get(lang)
         );
     }
+    let not_graded = graded.iter().filter(|g| g.problem.is_some()).count();
+    if not_graded > 0 {
+        println!(
+            "{not_graded} {}",
+            t(
+                "件は採点されていません（理由は各行と summary.md の「採点できなかった提出物」）",
+                "not graded (why: on each line and in summary.md's \"Not graded\")"
+            )
+            .get(lang)
+        );
+    }
     let now = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_secs());

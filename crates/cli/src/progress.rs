@@ -17,6 +17,11 @@ pub fn line(g: &Graded, lang: Lang) -> String {
     let note = if g.skipped { t("（前回の結果）", " (kept)") } else { Text::default() };
     let note = note.get(lang);
     let flag = g.flag.as_ref().map(|f| format!(" [{}]", f.get(lang))).unwrap_or_default();
+    // Not graded: said on the line, which read as a graded 0.
+    let flag = match &g.problem {
+        Some(why) => format!("{flag} — {}", why.get(lang)),
+        None => flag,
+    };
     // The entry's name is the student's (a zip's name, a Moodle full name): a control character
     // in it (an escape sequence that would drive the instructor's terminal) is shown as its code.
     let line = format!("{} ({}): {}{max}{note}{flag}", g.name, g.entry, g.score);
@@ -129,9 +134,35 @@ mod tests {
             max_score: Some(5.0),
             skipped: false,
             flag: None,
+            problem: None,
         };
         let text = line(&g, Lang::En);
         assert!(!text.contains('\u{1b}') && !text.contains('\u{7}'), "{text:?}");
         assert!(text.contains("<U+001B>]52;c;ZXZpbA==<U+0007>Taro.zip"), "{text}");
+    }
+
+    /// A refused entry's line says so: it read `_x.zip (x.zip): 0`, a graded 0.
+    #[test]
+    fn a_refused_entry_says_so_on_its_line() {
+        let value = serde_json::json!({
+            "score": 0.0,
+            "cg": { "refused": "no exercises/ found\nmore", "refused_ja": "exercises/ が見つかりません" },
+        });
+        let g = Graded {
+            entry: "x.zip".to_owned(),
+            name: "_x.zip".to_owned(),
+            score: 0.0,
+            max_score: None,
+            skipped: false,
+            flag: None,
+            problem: cg_grade::result::problem(&value),
+        };
+        assert_eq!(line(&g, Lang::En), "_x.zip (x.zip): 0 — refused: no exercises/ found");
+        assert_eq!(
+            line(&g, Lang::Ja),
+            "_x.zip (x.zip): 0 — 受け付けられません: exercises/ が見つかりません"
+        );
+        let graded = Graded { problem: None, ..g };
+        assert_eq!(line(&graded, Lang::En), "_x.zip (x.zip): 0");
     }
 }

@@ -21,6 +21,17 @@ pub fn file_name(raw: &str) -> String {
     if s.is_empty() { "_".to_owned() } else { s }
 }
 
+/// A submission without `student.toml`, said for both ways of handing in (the `exercises/`
+/// folder, or the files one by one), with how to make it (it said `exercises/student.toml is
+/// missing`, a path the loose files do not have, and no fix).
+#[must_use]
+pub(crate) fn no_student_file() -> Text {
+    Text::new(
+        "student.toml（学生番号の記録）が提出物にありません。exercises/ フォルダごと提出するか、a1.rs などと一緒に exercises/student.toml も提出してください。まだ作っていなければ: cargo run --release -- assignment --student 12345678 --save（12345678 を自分の学生番号に）",
+        "student.toml (the record of your student number) is not in the submission: hand in the whole exercises/ folder, or exercises/student.toml with a1.rs and the others. To make it first: cargo run --release -- assignment --student 12345678 --save (with your own number)",
+    )
+}
+
 /// One submission waiting to be graded.
 pub(crate) struct Pending {
     pub(crate) entry: String,
@@ -37,6 +48,19 @@ pub(crate) struct Pending {
 /// and hashed, with their result names.
 pub(crate) fn collect(options: &Options, kit_hash: &str) -> Result<Vec<Pending>, GradeError> {
     let entries = moodle::input::entries(&options.submissions).map_err(GradeError::Io)?;
+    // An empty folder is a wrong path, not a class with no work: said, not an empty table and
+    // exit 0.
+    if entries.is_empty() {
+        let shown = options.submissions.display();
+        return Err(GradeError::Io(Text::new(
+            format!(
+                "{shown} に提出物がありません（空のフォルダです）。Moodle の「すべての提出をダウンロード」の zip か、それを展開したフォルダ、または提出物（フォルダか .zip）を入れたフォルダを指定してください"
+            ),
+            format!(
+                "{shown} holds no submission (the folder is empty): give Moodle's \"Download all submissions\" zip or the folder it unpacks to, or a folder of submissions (folders or .zip files)"
+            ),
+        )));
+    }
     collect_from(options, kit_hash, entries)
 }
 
@@ -51,12 +75,7 @@ pub(crate) fn collect_from(
     for source in entries {
         let entry = source.name.clone();
         let files = source.read().and_then(|files| {
-            let toml = files.student_toml.clone().ok_or_else(|| {
-                Text::new(
-                    "exercises/student.toml がありません",
-                    "exercises/student.toml is missing",
-                )
-            })?;
+            let toml = files.student_toml.clone().ok_or_else(no_student_file)?;
             let student = cg_assign::parse_student_file(&toml, "exercises/student.toml")
                 .map_err(|e| e.text())?;
             Ok((files, student))
@@ -65,7 +84,7 @@ pub(crate) fn collect_from(
         // the roster's; a different number in student.toml is kept to be flagged.
         let mut files = files;
         let mark = options.roster.as_ref().map(|r| match r.find(&entry) {
-            None => result::RosterMark { listed: false, name: None, claimed: None },
+            None => result::RosterMark { listed: false, name: None, claimed: None, student: None },
             Some(row) => {
                 let mut claimed = None;
                 if let Ok((_, student)) = &mut files
@@ -74,7 +93,12 @@ pub(crate) fn collect_from(
                     claimed = Some(student.student.to_string());
                     student.student = row.student.clone();
                 }
-                result::RosterMark { listed: true, name: Some(row.name.clone()), claimed }
+                result::RosterMark {
+                    listed: true,
+                    name: Some(row.name.clone()),
+                    claimed,
+                    student: Some(row.student.to_string()),
+                }
             }
         });
         let mut h = Hasher::default();

@@ -36,6 +36,7 @@ pub mod moodle;
 pub mod progress;
 pub mod result;
 pub mod roster;
+mod slot;
 pub use cg_assign::screen;
 pub mod submission;
 pub mod zipfile;
@@ -43,6 +44,7 @@ pub mod zipfile;
 pub use config::Config;
 pub use entries::file_name;
 use entries::{Pending, collect, collect_from};
+use slot::{Slot, grade_one, prepare_copy, prepare_first};
 
 pub use cg_core::lang::Text;
 
@@ -94,6 +96,8 @@ pub struct Graded {
     /// What the instructor should look at ([`result::flag`]): a `student.toml` that claims
     /// another number than the roster's, an entry not on the roster, a number claimed twice.
     pub flag: Option<Text>,
+    /// Why it was not graded ([`result::problem`]): refused, or grading could not finish.
+    pub problem: Option<Text>,
 }
 
 /// Why grading could not start (a single submission's problems go into its result instead).
@@ -234,93 +238,6 @@ fn already_graded(out: &Path, name: &str, hash: &str) -> Option<serde_json::Valu
 /// The checks of each assignment, with their titles, as one run reported them.
 pub type Baseline = BTreeMap<String, Vec<(String, Text)>>;
 
-/// A parallel slot: a kit copy, its build folder, and the folder a run may write.
-struct Slot {
-    kit: PathBuf,
-    target: PathBuf,
-    run: PathBuf,
-}
-
-/// The package the grader builds in a kit copy from a submission's `exercises/`: the worker of
-/// the student's functions (`cg-check-runner`), which links the submission and nothing of the
-/// checks.
-const WORKER_PACKAGE: &str = "cg-check-runner";
-
-impl Slot {
-    fn at(out: &Path, k: usize) -> Slot {
-        let root = out.join(".work").join(format!("slot-{k}"));
-        Slot { kit: root.join("kit"), target: root.join("target"), run: root.join("run") }
-    }
-
-    fn marker(&self) -> PathBuf {
-        self.kit.with_file_name("kit-version")
-    }
-
-    fn is_current(&self, kit_hash: &str) -> bool {
-        std::fs::read_to_string(self.marker()).ok().as_deref() == Some(kit_hash)
-    }
-}
-
-/// Slot 0: the handout written afresh when the kit changed, and the worker built from the
-/// pristine stubs (the whole kit's first build, paid once).
-fn prepare_first(
-    slot: &Slot,
-    options: &Options,
-    kit_hash: &str,
-    stubs: &BTreeMap<String, String>,
-    skip: &dyn Fn(&Path) -> bool,
-) -> Result<(), GradeError> {
-    if !slot.is_current(kit_hash) {
-        let _ = std::fs::remove_dir_all(&slot.kit);
-        let _ = std::fs::remove_file(slot.marker());
-        std::fs::create_dir_all(&slot.kit).map_err(|e| GradeError::at(&slot.kit, &e))?;
-        handout::write_handout_filtered(&options.kit, &slot.kit, skip).map_err(GradeError::Io)?;
-    }
-    for &m in submission::MODULES {
-        let path = slot.kit.join(format!("exercises/src/{m}.rs"));
-        write_if_changed(&path, stubs[m].as_bytes()).map_err(|e| GradeError::at(&path, &e))?;
-    }
-    let package = WORKER_PACKAGE;
-    let b = build::cargo_build(&slot.kit, &slot.target, package, options.build_limit)
-        .map_err(GradeError::Io)?;
-    if !b.success {
-        let shown = slot.kit.display();
-        let log = format!("{}\n{}", b.other_errors.join("\n"), b.stderr_tail);
-        return Err(GradeError::Io(Text::new(
-            format!("キットの配布用のコピーがビルドできません（{shown}）:\n{log}"),
-            format!("the kit's handout does not build ({shown}):\n{log}"),
-        )));
-    }
-    let marker = slot.marker();
-    std::fs::write(&marker, kit_hash).map_err(|e| GradeError::at(&marker, &e))
-}
-
-/// Slot K > 0: a copy of slot 0's kit and build folder (`cp -a` keeps the times cargo compares,
-/// so only the student's crate rebuilds), unless it is already current.
-fn prepare_copy(slot: &Slot, first: &Slot, kit_hash: &str) -> Result<(), Text> {
-    if slot.is_current(kit_hash) {
-        return Ok(());
-    }
-    let fail = |e: String| Text::new(format!("作業用コピー: {e}"), format!("work copy: {e}"));
-    let _ = std::fs::remove_dir_all(&slot.kit);
-    let _ = std::fs::remove_dir_all(&slot.target);
-    if let Some(parent) = slot.kit.parent() {
-        std::fs::create_dir_all(parent).map_err(|e| fail(e.to_string()))?;
-    }
-    for (from, to) in [(&first.kit, &slot.kit), (&first.target, &slot.target)] {
-        let status = std::process::Command::new("cp")
-            .arg("-a")
-            .arg(from)
-            .arg(to)
-            .status()
-            .map_err(|e| fail(format!("cp: {e}")))?;
-        if !status.success() {
-            return Err(fail(format!("cp -a {} {}: {status}", from.display(), to.display())));
-        }
-    }
-    std::fs::write(slot.marker(), kit_hash).map_err(|e| fail(e.to_string()))
-}
-
 /// One assignment's run, as the result needs it.
 #[derive(Clone, Debug)]
 pub enum AssignmentRun {
@@ -333,201 +250,6 @@ pub enum AssignmentRun {
         /// The end of what it printed on stderr.
         stderr: String,
     },
-}
-
-/// Runs every assignment's checks for `student` in this process, the submission's functions in
-/// a worker (`cg-check-runner`, built in the slot) in the sandbox: each check's calls within
-/// [`Limits::wall`], the worker within the rest of `options.limits`. Nothing the worker prints
-/// is read as a result: the checks, their list and their outcomes are the kit's, here.
-fn run_checks(
-    slot: &Slot,
-    student: &cg_assign::StudentFile,
-    options: &Options,
-    launcher: Launcher,
-) -> (BTreeMap<String, AssignmentRun>, Baseline, Duration) {
-    let started = Instant::now();
-    let a = cg_assign::Variants::for_student(&student.student, student.table);
-    // The checks could not run: each assignment's list of checks still comes from the kit (its
-    // checks against functions that give nothing), so the maximum score is the same.
-    let died = |how: Text| {
-        let run = AssignmentRun::Died { how, stderr: String::new() };
-        let nothing = cg_assign::Impls::worker();
-        let mut runs = BTreeMap::new();
-        let mut baseline = Baseline::new();
-        for &w in cg_assign::Which::ALL {
-            let list = result::check_list(&a.report(w, &nothing).to_json());
-            baseline.insert(w.id().to_owned(), list);
-            runs.insert(w.id().to_owned(), run.clone());
-        }
-        (runs, baseline, started.elapsed())
-    };
-    let _ = std::fs::remove_dir_all(&slot.run);
-    if let Err(e) = std::fs::create_dir_all(&slot.run) {
-        let why = Text::io(&e);
-        return died(Text::new(
-            format!("作業フォルダ: {}", why.ja),
-            format!("work folder: {}", why.en),
-        ));
-    }
-    let job = Job {
-        program: slot.target.join("release").join(WORKER_PACKAGE),
-        args: Vec::new(),
-        workdir: slot.run.clone(),
-        // The worker reads nothing of the kit: its calls bring every input.
-        read_only: Vec::new(),
-        env: vec![("CG_LANG".into(), "en".into())],
-        ..Job::default()
-    };
-    let launch = match launcher(&job, &options.limits, options.isolation) {
-        Ok(l) => l,
-        Err(e) => return died(e.text()),
-    };
-    let mut worker =
-        cg_worker::Worker::new(launch.program, launch.args).clear_env().current_dir(launch.workdir);
-    for (k, v) in launch.env {
-        worker = worker.env(k, v);
-    }
-    let (reports, _) = a.reports_in_worker(cg_assign::Which::ALL, worker, options.limits.wall);
-    let runs = reports
-        .into_iter()
-        .map(|r| (r.assignment.clone(), AssignmentRun::Report(r.to_json())))
-        .collect();
-    (runs, Baseline::new(), started.elapsed())
-}
-
-/// Grades one submission in `slot`; returns the result JSON.
-fn grade_one(
-    slot: &mut Slot,
-    (files, student): (&submission::Files, &cg_assign::StudentFile),
-    stubs: &BTreeMap<String, String>,
-    pristine: (&str, &(dyn Fn(&Path) -> bool + Sync)),
-    options: &Options,
-    launcher: Launcher,
-) -> result::Facts {
-    let (pristine, skip) = pristine;
-    let mut facts = result::Facts::default();
-    // The copy of the kit as it was made, or made afresh (see `slot_content`).
-    if slot_content(&slot.kit).ok().as_deref() != Some(pristine) {
-        eprintln!(
-            "{}",
-            t(
-                "作業用のキットのコピーが変わっていたので作り直します",
-                "the work copy of the kit had changed: made afresh"
-            )
-            .get(options.lang)
-        );
-        let _ = std::fs::remove_dir_all(&slot.kit);
-        let remade = std::fs::create_dir_all(&slot.kit)
-            .map_err(|e| Text::io(&e))
-            .and_then(|()| handout::write_handout_filtered(&options.kit, &slot.kit, skip));
-        if remade.is_err() || slot_content(&slot.kit).ok().as_deref() != Some(pristine) {
-            facts.fatal = Some(Text::new(
-                "作業用のキットのコピーを作り直せません",
-                "the work copy of the kit cannot be made afresh",
-            ));
-            facts.retry = true;
-            return facts;
-        }
-    }
-    let student_toml = files.student_toml.clone().unwrap_or_default();
-    let io_fail = |facts: &mut result::Facts, e: std::io::Error| {
-        let why = Text::io(&e);
-        facts.fatal =
-            Some(Text::new(format!("作業用コピー: {}", why.ja), format!("work copy: {}", why.en)));
-        facts.retry = true;
-    };
-    let student_path = slot.kit.join("exercises/student.toml");
-    if let Err(e) = std::fs::write(&student_path, &student_toml) {
-        io_fail(&mut facts, e);
-        return facts;
-    }
-    let mut replaced: BTreeMap<String, Vec<String>> = BTreeMap::new();
-    for &m in submission::MODULES {
-        let text = files.modules.get(m).map_or_else(|| stubs[m].as_bytes().to_vec(), Clone::clone);
-        if let Err(e) = write_if_changed(&slot.kit.join(format!("exercises/src/{m}.rs")), &text) {
-            io_fail(&mut facts, e);
-            return facts;
-        }
-    }
-    let package = WORKER_PACKAGE;
-    let started = Instant::now();
-    // Build; replace the modules that do not compile by their stubs; build again.
-    loop {
-        let b = match build::cargo_build_sandboxed(
-            &slot.kit,
-            &slot.target,
-            package,
-            options.build_limit,
-            options.isolation,
-        ) {
-            Ok(b) => b,
-            Err(why) => {
-                facts.fatal = Some(why);
-                facts.retry = true;
-                break;
-            }
-        };
-        if b.success {
-            break;
-        }
-        let mut blamed: Vec<(String, Vec<String>)> =
-            b.module_errors.into_iter().filter(|(m, _)| !replaced.contains_key(m)).collect();
-        if blamed.is_empty() && !b.timed_out {
-            // Errors in the kit's files caused by a module (a changed signature): every module
-            // of the submission's own that is still in is taken out.
-            let mut others = b.other_errors.clone();
-            if others.is_empty() {
-                others.push(result::tail(&b.stderr_tail, 1500));
-            }
-            blamed = submission::MODULES
-                .iter()
-                .filter(|m| !replaced.contains_key(**m) && files.modules.contains_key(**m))
-                .map(|m| ((*m).to_owned(), others.clone()))
-                .collect();
-        }
-        if blamed.is_empty() {
-            let why = if b.timed_out {
-                Text::new(
-                    format!("ビルドが制限時間 {} 秒を超えました", options.build_limit.as_secs()),
-                    format!("the build ran over its limit of {} s", options.build_limit.as_secs()),
-                )
-            } else {
-                Text::new(
-                    format!("ビルドできません:\n{}", b.stderr_tail),
-                    format!("does not build:\n{}", b.stderr_tail),
-                )
-            };
-            facts.fatal = Some(why);
-            break;
-        }
-        for (m, errors) in blamed {
-            if let Err(e) = write_if_changed(
-                &slot.kit.join(format!("exercises/src/{m}.rs")),
-                stubs[&m].as_bytes(),
-            ) {
-                io_fail(&mut facts, e);
-                return facts;
-            }
-            replaced.insert(m, errors);
-        }
-    }
-    facts.build = Some(started.elapsed());
-    facts.compile_errors = replaced;
-    if facts.fatal.is_some() {
-        return facts;
-    }
-    let (runs, baseline, run_time) = run_checks(slot, student, options, launcher);
-    facts.runs = runs;
-    facts.baseline = baseline;
-    facts.run = Some(run_time);
-    facts
-}
-
-fn write_if_changed(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    if std::fs::read(path).ok().as_deref() == Some(bytes) {
-        return Ok(());
-    }
-    std::fs::write(path, bytes)
 }
 
 /// The next submission in the queue (the lock is held only while taking it).
@@ -668,6 +390,7 @@ pub fn grade_with(
                 max_score: v["max_score"].as_f64(),
                 skipped: true,
                 flag: result::flag(&v),
+                problem: result::problem(&v),
             };
             progress(&g);
             done.push(g);
@@ -717,7 +440,11 @@ pub fn grade_with(
                             launcher,
                         ),
                     };
-                    let student = p.files.as_ref().ok().map(|(_, s)| s.student.to_string());
+                    // A refused entry on the roster is still its student's.
+                    let student = p.files.as_ref().ok().map_or_else(
+                        || p.roster.as_ref().and_then(|m| m.student.clone()),
+                        |(_, s)| Some(s.student.to_string()),
+                    );
                     let meta = result::Meta {
                         entry: &p.entry,
                         student: student.as_deref(),
@@ -758,6 +485,7 @@ pub fn grade_with(
                         max_score: value["max_score"].as_f64(),
                         skipped: false,
                         flag: result::flag(&value),
+                        problem: result::problem(&value),
                     };
                     progress(&g);
                     if let Ok(mut r) = results.lock() {

@@ -25,6 +25,9 @@ pub struct Facts {
     pub retry: bool,
     /// Modules replaced by their stubs, with their compiler errors.
     pub compile_errors: BTreeMap<String, Vec<String>>,
+    /// Modules the submission did not hold (graded as their stubs: each check failed, said as
+    /// not handed in rather than as the stub's "delete the line `not_started`").
+    pub not_submitted: std::collections::BTreeSet<String>,
     /// Each assignment's run.
     pub runs: BTreeMap<String, AssignmentRun>,
     /// The checks of each assignment whose run died, as the kit lists them.
@@ -44,6 +47,9 @@ pub struct RosterMark {
     pub name: Option<String>,
     /// The number the submission's `student.toml` claimed, when it is not the roster's.
     pub claimed: Option<String>,
+    /// The roster's student number for the entry (a refused entry is still the roster's
+    /// student: its result, class.csv and summary.md name them).
+    pub student: Option<String>,
 }
 
 /// Who and how.
@@ -196,8 +202,9 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
     for (m, run) in &facts.runs {
         let entry = per.entry(m.clone()).or_insert((0.0, 0.0));
         let compile = facts.compile_errors.get(m);
+        let missing = facts.not_submitted.contains(m);
         let checks: Vec<(String, Text, bool, String)> = match (run, compile) {
-            (AssignmentRun::Report(r), None) => r["checks"]
+            (AssignmentRun::Report(r), None) if !missing => r["checks"]
                 .as_array()
                 .cloned()
                 .unwrap_or_default()
@@ -220,6 +227,12 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
                     }
                 };
                 let why = match (compile, run) {
+                    (_, _) if missing => Text::new(
+                        format!("{m}.rs は提出物にありません（exercises/src/{m}.rs）"),
+                        format!("{m}.rs is not in the submission (exercises/src/{m}.rs)"),
+                    )
+                    .get(lang)
+                    .to_owned(),
                     (Some(errors), _) => format!(
                         "{} ({m}.rs):\n{}",
                         t("コンパイルエラー", "compile errors").get(lang),
@@ -325,13 +338,40 @@ pub fn not_graded(cg: &Value, lang: Lang) -> Option<&str> {
     }
 }
 
+/// Why a result was not graded, in both languages, its first line after "refused" or "could
+/// not be graded": for the line `cg grade` prints of it (a refused entry's line read as a
+/// graded 0).
+#[must_use]
+pub fn problem(result: &Value) -> Option<Text> {
+    let cg = &result["cg"];
+    let head = if cg["refused"].is_string() {
+        t("受け付けられません", "refused")
+    } else {
+        t("採点できませんでした", "could not be graded")
+    };
+    let first = |lang| not_graded(cg, lang).map(|w| w.lines().next().unwrap_or("").to_owned());
+    Some(Text::new(
+        format!("{}: {}", head.ja, first(Lang::Ja)?),
+        format!("{}: {}", head.en, first(Lang::En)?),
+    ))
+}
+
 /// Text from a submission (an entry's name, a refusal that quotes one) as Markdown shows it:
 /// a code span, so that nothing in it is read as Markdown or HTML (`<img src=…>`, `![](…)`,
 /// a heading after a newline), its control characters by their code and a long one shortened
 /// ([`cg_core::quote::shown`]).
 #[must_use]
 pub fn md_code(text: &str, lang: Lang) -> String {
-    let text = cg_core::quote::shown(text, lang);
+    md_span(&cg_core::quote::shown(text, lang))
+}
+
+/// The kit's own words (a refusal's reason) as a code span, whole: the student's names in them
+/// are already shortened, and the reason was cut at 64 characters, often before it said why.
+fn md_words(text: &str) -> String {
+    md_span(&cg_core::quote::visible(text))
+}
+
+fn md_span(text: &str) -> String {
     let longest = text.split(|c| c != '`').map(str::len).max().unwrap_or(0);
     let fence = "`".repeat(longest + 1);
     let pad =
@@ -448,7 +488,7 @@ pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) ->
                 "- {} ({}): {}",
                 md_code(cg["submission"].as_str().unwrap_or(""), lang),
                 md_code(cg["student"].as_str().unwrap_or("?"), lang),
-                md_code(why.lines().next().unwrap_or(""), lang)
+                md_words(why.lines().next().unwrap_or(""))
             ));
         }
     }

@@ -7,7 +7,8 @@
 //! entry's folder or zip name in the submissions folder, or its Moodle participant ID (the
 //! digits of Moodle's `<name>_<ID>_assignsubmission_file_` folders). UTF-8 (with or without a
 //! BOM), UTF-16 with a BOM or Shift_JIS, as `cg_core::text` reads it: what Excel and Moodle
-//! write.
+//! write. Commas separate the columns, or tabs when the header has more tabs than commas
+//! (Excel's 「Unicode テキスト」 is tab-separated UTF-16).
 //!
 //! ```csv
 //! student,name,entry
@@ -85,7 +86,13 @@ impl Roster {
     /// No header, a column missing, a row with a bad student number or no entry, or a student
     /// number or an entry given twice.
     pub fn parse(text: &str) -> Result<Roster, Text> {
+        // Excel's 「Unicode テキスト」 (UTF-16, what keeps Japanese names whatever the system's
+        // code page) separates by tabs: the header's line says which.
+        let header_line = text.lines().find(|l| !l.trim().is_empty()).unwrap_or("");
+        let tabs = header_line.matches('\t').count();
+        let delimiter = if tabs > header_line.matches(',').count() { b'\t' } else { b',' };
         let mut reader = csv::ReaderBuilder::new()
+            .delimiter(delimiter)
             .flexible(true)
             .trim(csv::Trim::All)
             .from_reader(text.as_bytes());
@@ -242,6 +249,29 @@ mod tests {
             .unwrap();
         assert_eq!(r.rows.len(), 2, "{:?}", r.rows);
         assert_eq!(r.rows[1].name, "J \"J");
+    }
+
+    /// A roster Excel saved as 「Unicode テキスト」: UTF-16LE with a BOM, tab-separated, CRLF.
+    /// It was refused ("the header has no column `student`": tabs were no separator); a name
+    /// with a comma in it stays one cell.
+    #[test]
+    fn excel_unicode_text_is_read() {
+        let text =
+            "学生番号\t氏名\t提出物\r\n20260001\t山田 太郎\t123456\r\n20260002\tRoe, Jane\t777\r\n";
+        let mut bytes = vec![0xFF, 0xFE];
+        bytes.extend(text.encode_utf16().flat_map(u16::to_le_bytes));
+        let path = std::env::temp_dir().join(format!("cg-roster-utf16-{}.txt", std::process::id()));
+        std::fs::write(&path, bytes).unwrap();
+        let r = Roster::read(&path);
+        let _ = std::fs::remove_file(&path);
+        let r = r.unwrap();
+        assert_eq!(r.rows.len(), 2, "{:?}", r.rows);
+        assert_eq!(r.rows[0].name, "山田 太郎");
+        assert_eq!(r.rows[1].name, "Roe, Jane");
+        assert_eq!(r.find("777").map(|r| r.student.to_string()), Some("20260002".into()));
+        // A comma-separated roster with a tab in a cell stays comma-separated.
+        let r = Roster::parse("student,name,entry\n20260001,a\tb,e\n").unwrap();
+        assert_eq!(r.rows[0].name, "a\tb");
     }
 
     #[test]

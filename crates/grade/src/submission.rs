@@ -100,23 +100,91 @@ fn no_exercises() -> Text {
     )
 }
 
-/// The folder inside `dir` (itself, or a folder at most two levels down) that holds `exercises/`.
-fn find_base(dir: &Path, depth: usize) -> Option<PathBuf> {
-    let ex = dir.join("exercises");
-    if std::fs::symlink_metadata(&ex).is_ok_and(|m| m.is_dir()) {
-        return Some(dir.to_path_buf());
+/// The folders inside `dir` (itself, and folders at most `depth` levels down) that hold
+/// `exercises/`, sorted by path; looked for until more than [`MAX_TREES`] are found.
+fn find_bases(dir: &Path, depth: usize, out: &mut Vec<PathBuf>) {
+    if std::fs::symlink_metadata(dir.join("exercises")).is_ok_and(|m| m.is_dir()) {
+        out.push(dir.to_path_buf());
     }
-    if depth == 0 {
-        return None;
+    if depth == 0 || out.len() > MAX_TREES {
+        return;
     }
-    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
-        .ok()?
+    let Ok(read) = std::fs::read_dir(dir) else { return };
+    let mut entries: Vec<PathBuf> = read
         .flatten()
-        .filter(|e| e.file_type().is_ok_and(|t| t.is_dir()))
+        // `exercises/` itself is a tree, not a folder that holds one.
+        .filter(|e| e.file_type().is_ok_and(|t| t.is_dir()) && e.file_name() != "exercises")
         .map(|e| e.path())
         .collect();
     entries.sort();
-    entries.into_iter().find_map(|d| find_base(&d, depth - 1))
+    for d in entries {
+        find_bases(&d, depth - 1, out);
+    }
+}
+
+/// The most `exercises/` trees one submission may hold (each is read to be compared).
+pub const MAX_TREES: usize = 8;
+
+/// The prefixes (`""`, `"backup/"`) before `exercises/` of the exercises' files among `paths`,
+/// each once, shortest first.
+pub(crate) fn bases<'a>(paths: impl IntoIterator<Item = &'a str>) -> Vec<String> {
+    let wanted = wanted();
+    let mut out: Vec<String> = paths
+        .into_iter()
+        .filter_map(|n| {
+            wanted.iter().find_map(|(w, _)| {
+                n.strip_suffix(w.as_str()).filter(|p| p.is_empty() || p.ends_with('/'))
+            })
+        })
+        .map(str::to_owned)
+        .collect();
+    out.sort_by(|a, b| (a.len(), a).cmp(&(b.len(), b)));
+    out.dedup();
+    out
+}
+
+/// A submission with more than [`MAX_TREES`] `exercises/` trees.
+pub(crate) fn too_many_trees(count: usize) -> Text {
+    Text::new(
+        format!(
+            "exercises/ が {count} か所以上にあります（上限 {MAX_TREES}）。採点するものを 1 つだけ提出してください"
+        ),
+        format!(
+            "exercises/ is in {count} or more places (at most {MAX_TREES}): hand in only the one to be graded"
+        ),
+    )
+}
+
+/// The one tree to grade of the `exercises/` trees found (each its prefix and files, the
+/// shortest prefix first): the only one, or the first when all hold the same files (a folder
+/// handed in with its zip). Trees that differ are refused, naming two and a file that differs:
+/// which one the student meant is not the grader's to guess (it took the shortest path).
+///
+/// # Errors
+/// No tree, or trees that differ.
+pub(crate) fn one_tree(trees: Vec<(String, Files)>) -> Result<Files, Text> {
+    let mut trees = trees.into_iter();
+    let Some((base, first)) = trees.next() else { return Err(no_exercises()) };
+    let others: Vec<(String, Files)> = trees.collect();
+    let Some((other, files)) = others.iter().find(|(_, f)| *f != first) else { return Ok(first) };
+    let differs = MODULES
+        .iter()
+        .find(|m| first.modules.get(**m) != files.modules.get(**m))
+        .map_or_else(|| "student.toml".to_owned(), |m| format!("src/{m}.rs"));
+    let tree = |b: &str, lang| shown(&format!("{b}exercises/"), lang);
+    let count = others.len() + 1;
+    Err(Text::new(
+        format!(
+            "exercises/ が {count} か所にあり、中身が違います（{} と {}: {differs} が違います）。採点するものだけを残して提出し直してください",
+            tree(&base, Lang::Ja),
+            tree(other, Lang::Ja)
+        ),
+        format!(
+            "exercises/ is in {count} places with different files ({} and {}: {differs} differs): hand in only the one to be graded",
+            tree(&base, Lang::En),
+            tree(other, Lang::En)
+        ),
+    ))
 }
 
 /// The first component of `relative` under `base` that is a symbolic link, as written
@@ -138,10 +206,32 @@ fn read_folder(dir: &Path) -> Result<Files, Text> {
     if let Some(link) = ["exercises"].iter().find_map(|r| symlink_on_path(dir, r)) {
         return Err(symlink_refused(&link));
     }
-    let base = find_base(dir, 2).ok_or_else(no_exercises)?;
+    let mut found = Vec::new();
+    find_bases(dir, 2, &mut found);
+    if found.len() > MAX_TREES {
+        return Err(too_many_trees(found.len()));
+    }
+    let mut trees = Vec::new();
+    for base in found {
+        let shown = base.strip_prefix(dir).map_or_else(
+            |_| String::new(),
+            |p| {
+                let p = p.to_string_lossy().replace('\\', "/");
+                if p.is_empty() { p } else { format!("{p}/") }
+            },
+        );
+        trees.push((shown, read_tree(&base)?));
+    }
+    // The shortest path first, as in a zip.
+    trees.sort_by(|a, b| (a.0.len(), &a.0).cmp(&(b.0.len(), &b.0)));
+    one_tree(trees)
+}
+
+/// The six files of the `exercises/` tree in `base`.
+fn read_tree(base: &Path) -> Result<Files, Text> {
     let mut files = Files::default();
     for (relative, module) in wanted() {
-        if let Some(link) = symlink_on_path(&base, &relative) {
+        if let Some(link) = symlink_on_path(base, &relative) {
             return Err(symlink_refused(&link));
         }
         let path = base.join(&relative);
@@ -249,23 +339,32 @@ fn read_zip(path: &Path) -> Result<Files, Text> {
         }
         names.push(name.replace('\\', "/"));
     }
-    // The shortest prefix under which a wanted file lies is the submission's base.
+    // Each prefix under which a wanted file lies is a tree; trees that differ are refused.
+    let found = bases(names.iter().map(String::as_str));
+    if found.len() > MAX_TREES {
+        return Err(too_many_trees(found.len()));
+    }
+    let mut trees = Vec::new();
+    for base in found {
+        let files = zip_tree(&mut zip, &names, &base)?;
+        trees.push((base, files));
+    }
+    one_tree(trees)
+}
+
+/// The six files of the tree under `base` in a zip whose entries are `names`.
+fn zip_tree<R: Read + std::io::Seek>(
+    zip: &mut zip::ZipArchive<R>,
+    names: &[String],
+    base: &str,
+) -> Result<Files, Text> {
+    let bad = |e: &zip::result::ZipError| zip_reason(e);
     let wanted = wanted();
-    let base = names
-        .iter()
-        .filter_map(|n| {
-            wanted.iter().find_map(|(w, _)| {
-                n.strip_suffix(w.as_str()).filter(|p| p.is_empty() || p.ends_with('/'))
-            })
-        })
-        .min_by_key(|p| (p.len(), p.to_string()))
-        .map(str::to_owned)
-        .ok_or_else(no_exercises)?;
     let mut files = Files::default();
     let mut taken: Vec<&str> = Vec::new();
     for (i, name) in names.iter().enumerate() {
         let Some((relative, module)) =
-            wanted.iter().find(|(w, _)| name.strip_prefix(base.as_str()) == Some(w.as_str()))
+            wanted.iter().find(|(w, _)| name.strip_prefix(base) == Some(w.as_str()))
         else {
             continue;
         };
@@ -435,6 +534,53 @@ mod tests {
         for d in ["target", "src-link", "exercises-link", "file-link", "plain", "toml-folder"] {
             let _ = std::fs::remove_dir_all(folder_path(d));
         }
+    }
+
+    /// Two `exercises/` trees that differ (a backup beside the work, a folder beside an older
+    /// zip's) are refused, naming both and a file that differs: the shortest path was graded
+    /// without a word. Two copies of the same files are one submission.
+    #[test]
+    fn two_trees_that_differ_are_refused_and_two_copies_read() {
+        use std::io::Write as _;
+        let write = |dir: &Path, base: &str, a1: &str| {
+            let ex = dir.join(base).join("exercises");
+            std::fs::create_dir_all(ex.join("src")).unwrap();
+            std::fs::write(ex.join("student.toml"), "student = \"20260001\"\n").unwrap();
+            std::fs::write(ex.join("src/a1.rs"), a1).unwrap();
+        };
+        let dir = folder("two-trees");
+        write(&dir, "", "// new");
+        write(&dir, "backup", "// old");
+        let why = read(&dir).unwrap_err();
+        assert!(
+            why.en.contains("exercises/ is in 2 places with different files (exercises/ and backup/exercises/: src/a1.rs differs)"),
+            "{}",
+            why.en
+        );
+        assert!(why.ja.contains("backup/exercises/") && why.ja.contains("違います"), "{}", why.ja);
+        write(&dir, "backup", "// new");
+        assert_eq!(read(&dir).unwrap().modules["a1"], b"// new");
+        // The same in a zip: two versions side by side.
+        let path = dir.join("v.zip");
+        let mut z = zip::ZipWriter::new(std::fs::File::create(&path).unwrap());
+        let options = zip::write::SimpleFileOptions::default();
+        for (name, text) in [
+            ("v1/exercises/student.toml", "student = \"20260001\"\n"),
+            ("v1/exercises/src/a1.rs", "// v1"),
+            ("v2/exercises/student.toml", "student = \"20260001\"\n"),
+            ("v2/exercises/src/a1.rs", "// v2"),
+        ] {
+            z.start_file(name, options).unwrap();
+            z.write_all(text.as_bytes()).unwrap();
+        }
+        z.finish().unwrap();
+        let why = read(&path).unwrap_err();
+        assert!(
+            why.en.contains("(v1/exercises/ and v2/exercises/: src/a1.rs differs)"),
+            "{}",
+            why.en
+        );
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]

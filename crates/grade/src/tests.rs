@@ -68,11 +68,12 @@ fn the_roster_binds_entries_and_flags_the_rest() {
     let pending = collect(&options, "kit").unwrap();
     let got: Vec<(&str, &str, Option<result::RosterMark>)> =
         pending.iter().map(|p| (p.entry.as_str(), p.name.as_str(), p.roster.clone())).collect();
-    let mark = |listed, name: Option<&str>, claimed: Option<&str>| {
+    let mark = |listed, name: Option<&str>, claimed: Option<&str>, student: Option<&str>| {
         Some(result::RosterMark {
             listed,
             name: name.map(str::to_owned),
             claimed: claimed.map(str::to_owned),
+            student: student.map(str::to_owned),
         })
     };
     assert_eq!(
@@ -81,10 +82,10 @@ fn the_roster_binds_entries_and_flags_the_rest() {
             (
                 "Taro Yamada_777_assignsubmission_file_",
                 "20260002",
-                mark(true, Some("山田 太郎"), None)
+                mark(true, Some("山田 太郎"), None, Some("20260002"))
             ),
-            ("a", "20260009", mark(true, Some("A"), Some("20260001"))),
-            ("c", "20260004", mark(false, None, None)),
+            ("a", "20260009", mark(true, Some("A"), Some("20260001"), Some("20260009"))),
+            ("c", "20260004", mark(false, None, None, None)),
         ]
     );
     // The variant graded is the roster's student's.
@@ -300,6 +301,15 @@ fn names_from_a_submission_are_code_in_markdown() {
     });
     let md = result::summary_md(&[result], &[], Lang::En);
     assert!(md.contains("- `![](http://evil/t.png)` (`?`): `no`"), "{md}");
+    // The kit's own reason is given whole (it was cut at 64 characters, before its fix); a
+    // control character in it is still shown by its code.
+    let why = "a1.rs is both in exercises/ (exercises/src/a1.rs) and outside it (a1.rs), with different text: put the right one in exercises/\u{1b}";
+    let result = serde_json::json!({
+        "score": 0.0,
+        "cg": { "student": "20260001", "submission": "x.zip", "refused": why },
+    });
+    let md = result::summary_md(&[result], &[], Lang::En);
+    assert!(md.contains("put the right one in exercises/<U+001B>`"), "{md}");
 }
 
 /// A result's facts about a submission `a.zip` of `student`, sandboxed, taking no time.
@@ -390,4 +400,47 @@ fn the_summary_line_of_a_compile_error_names_the_first_error() {
         line,
         "a1: compile errors (a1.rs): exercises/src/a1.rs:379: this file contains an unclosed delimiter"
     );
+}
+
+/// A file the submission did not hold is graded as its stub, and each of its checks says the
+/// file was not handed in (they said "delete the line cg_student::not_started(…)", advice for
+/// a file the student wrote); a check that passed on the stub still scores nothing.
+#[test]
+fn a_file_not_handed_in_is_said_so() {
+    let not_done = serde_json::json!({
+        "id": "a2.t1.view", "title": { "ja": "ビュー", "en": "view" },
+        "status": "not_done",
+        "message": "a2.t1: delete the line cg_student::not_started(\"a2.t1\"); when you start writing it",
+    });
+    let passed = serde_json::json!({
+        "id": "a2.t2.eye", "title": { "ja": "視点", "en": "eye" }, "status": "pass",
+    });
+    let facts = result::Facts {
+        runs: [(
+            "a2".to_owned(),
+            AssignmentRun::Report(serde_json::json!({ "checks": [not_done, passed] })),
+        )]
+        .into(),
+        not_submitted: ["a2".to_owned()].into(),
+        ..result::Facts::default()
+    };
+    let meta = meta(Some("20260001"));
+    for (lang, said) in [
+        (Lang::En, "a2.rs is not in the submission (exercises/src/a2.rs)"),
+        (Lang::Ja, "a2.rs は提出物にありません（exercises/src/a2.rs）"),
+    ] {
+        let r = result::build(&meta, &facts, &Config::default(), lang);
+        assert_eq!(r["score"], 0.0, "{r:#}");
+        let tests = r["tests"].as_array().unwrap();
+        assert_eq!(tests.len(), 2, "{r:#}");
+        for t in tests {
+            assert_eq!(t["output"], said, "{r:#}");
+            assert_eq!(t["status"], "failed", "{r:#}");
+        }
+        assert!(r["output"].as_str().unwrap().contains(&format!("a2: {said}")), "{r:#}");
+    }
+    // Handed in, the same report is read as it is.
+    let facts = result::Facts { not_submitted: Default::default(), ..facts };
+    let r = result::build(&meta, &facts, &Config::default(), Lang::En);
+    assert_eq!(r["tests"][1]["status"], "passed", "{r:#}");
 }

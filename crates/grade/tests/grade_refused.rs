@@ -150,3 +150,60 @@ fn refused_submissions_say_why_and_are_kept() {
     assert!(again.iter().all(|g| g.skipped));
     assert_eq!(std::fs::read(out.join("_slip.zip.json")).unwrap(), before);
 }
+
+/// A refused entry on the roster is still the roster's student: its result, class.csv and
+/// summary.md name them (they said nothing, `"student": null`, and `?`); its line says it was
+/// refused; a submission without student.toml is told how to make one. An empty folder of
+/// submissions is an error, not empty results and exit 0.
+#[test]
+fn a_refused_entry_keeps_its_roster_student_and_an_empty_folder_is_said() {
+    if !root().join("solutions/src/a1.rs").exists() {
+        eprintln!("no solutions/ (a student handout): grading is tested in the kit's repository");
+        return;
+    }
+    let base = Path::new(env!("CARGO_TARGET_TMPDIR")).join("grade-refused-roster");
+    let _ = std::fs::remove_dir_all(&base);
+    let subs = base.join("submissions");
+    let out = base.join("out");
+    std::fs::create_dir_all(subs.join("nostudent/exercises/src")).unwrap();
+    std::fs::write(subs.join("nostudent/exercises/src/a1.rs"), "// mine\n").unwrap();
+    let roster =
+        cg_grade::roster::Roster::parse("student,name,entry\n20260001,山田 太郎,nostudent\n")
+            .unwrap();
+    let mut options = Options {
+        kit: root(),
+        submissions: subs.clone(),
+        out: out.clone(),
+        config: Config::default(),
+        config_text: String::new(),
+        jobs: 1,
+        limits: Limits::default(),
+        build_limit: Duration::from_secs(60),
+        isolation: Isolation::Limits,
+        lang: Lang::En,
+        roster: Some(roster),
+    };
+    let graded = cg_grade::grade(&options, no_runs, &|_| {}).unwrap();
+    assert_eq!(graded.len(), 1);
+    let problem = graded[0].problem.as_ref().expect("a refused entry has a problem");
+    assert!(problem.en.starts_with("refused: student.toml (the record"), "{}", problem.en);
+    assert!(problem.en.contains("cargo run --release -- assignment --student"), "{}", problem.en);
+    assert!(problem.ja.starts_with("受け付けられません: student.toml"), "{}", problem.ja);
+    let v: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("_nostudent.json")).unwrap())
+            .unwrap();
+    assert_eq!(v["cg"]["student"], "20260001", "{v:#}");
+    let csv = std::fs::read_to_string(out.join("class.csv")).unwrap();
+    assert!(csv.contains("\n20260001,nostudent,"), "{csv}");
+    let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
+    assert!(md.contains("- `nostudent` (`20260001`): `student.toml (the record"), "{md}");
+
+    let empty = base.join("empty");
+    std::fs::create_dir_all(&empty).unwrap();
+    std::fs::write(empty.join(".DS_Store"), b"").unwrap();
+    options.submissions = empty;
+    options.roster = None;
+    let e = cg_grade::grade(&options, no_runs, &|_| {}).unwrap_err();
+    assert!(e.message(Lang::En).contains("holds no submission"), "{}", e.message(Lang::En));
+    assert!(e.message(Lang::Ja).contains("提出物がありません"), "{}", e.message(Lang::Ja));
+}

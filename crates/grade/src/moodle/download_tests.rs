@@ -321,3 +321,97 @@ fn one_path_twice_in_an_upload_is_refused() {
     assert!(why.ja.contains("2 つ以上あります"), "{}", why.ja);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// What one participant's upload reads as, from a download of it alone.
+fn upload(name: &str, inside: Vec<(String, Vec<u8>)>) -> Outcome {
+    let dir = fake::scratch(name);
+    let items: Vec<(String, Vec<u8>)> =
+        inside.into_iter().map(|(n, b)| (format!("Ann_1_assignsubmission_file/{n}"), b)).collect();
+    std::fs::write(dir.join("d.zip"), fake::zip_of(&items)).unwrap();
+    let got = read_all(&entries(&dir.join("d.zip")).unwrap()).remove(0).1;
+    let _ = std::fs::remove_dir_all(&dir);
+    got
+}
+
+/// Two complete submissions from one participant (two zips of `exercises/`) that differ are
+/// refused naming both (the shorter path was graded without a word); a corrected `a1.rs`
+/// uploaded beside the zip is refused when it differs from the zip's (it was ignored), is
+/// nothing when it is the same text, and fills a file the zip lacks.
+#[test]
+fn two_versions_in_one_upload_are_refused_naming_both() {
+    let zip = |prefix: &str, a1: &str| {
+        let mut files = fake::six(prefix, "src/", "20260001");
+        files.retain(|(n, _)| !n.ends_with("a1.rs"));
+        files.push((format!("{prefix}src/a1.rs"), a1.as_bytes().to_vec()));
+        fake::zip_of(&files)
+    };
+    let why = upload(
+        "versions",
+        vec![
+            ("exercises-v1.zip".into(), zip("exercises/", "// v1")),
+            ("exercises-v2.zip".into(), zip("exercises/", "// v2")),
+        ],
+    )
+    .unwrap_err();
+    assert!(
+        why.contains("exercises/ is in 2 places with different files (exercises-v1.zip/exercises/ and exercises-v2.zip/exercises/: src/a1.rs differs)"),
+        "{why}"
+    );
+    // The same zip twice (uploaded again): one submission.
+    let same = upload(
+        "same",
+        vec![
+            ("exercises.zip".into(), zip("exercises/", "// v1")),
+            ("copy.zip".into(), zip("exercises/", "// v1")),
+        ],
+    );
+    assert_eq!(same.unwrap().1, "// v1");
+    // A loose a1.rs beside the zip.
+    let beside = |a1: &str| {
+        upload(
+            "beside",
+            vec![
+                ("exercises.zip".into(), zip("exercises/", "// in the zip")),
+                ("a1.rs".into(), a1.as_bytes().to_vec()),
+            ],
+        )
+    };
+    let why = beside("// corrected").unwrap_err();
+    assert!(
+        why.contains("a1.rs is both in exercises/ (exercises.zip/exercises/src/a1.rs) and outside it (a1.rs), with different text"),
+        "{why}"
+    );
+    assert_eq!(beside("// in the zip").unwrap().1, "// in the zip");
+    // The zip without student.toml, uploaded beside it: taken.
+    let mut files = fake::six("exercises/", "src/", "20260001");
+    files.retain(|(n, _)| !n.ends_with("student.toml"));
+    let got = upload(
+        "toml",
+        vec![
+            ("e.zip".into(), fake::zip_of(&files)),
+            ("student.toml".into(), fake::toml("20260001")),
+        ],
+    );
+    assert_eq!(got.unwrap().0, "20260001");
+}
+
+/// A download unpacked and zipped again on macOS (`download/…`, with `__MACOSX/download/._…`
+/// and a `.DS_Store` beside it) is read: those names made it "no participant's folder".
+#[test]
+fn a_download_zipped_again_on_macos_is_read() {
+    let dir = fake::scratch("macos");
+    let mut items: Vec<(String, Vec<u8>)> =
+        fake::six("download/Ann_1_assignsubmission_file/exercises/", "src/", "20260001");
+    items.push((
+        "__MACOSX/download/._Ann_1_assignsubmission_file".into(),
+        b"\0\x05\x16\x07".to_vec(),
+    ));
+    items.push((".DS_Store".into(), b"Bud1".to_vec()));
+    items.push(("download/.DS_Store".into(), b"Bud1".to_vec()));
+    std::fs::write(dir.join("d.zip"), fake::zip_of(&items)).unwrap();
+    let got = read_all(&entries(&dir.join("d.zip")).unwrap());
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert_eq!(got[0].0, "Ann_1_assignsubmission_file");
+    assert_eq!(got[0].1.as_ref().unwrap().0, "20260001");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -9,7 +9,10 @@
 //! extracted to disk, links and `..` paths are refused, every read is bounded. The six files
 //! are found, in this order of preference:
 //!
-//! 1. an `exercises/` tree, in the upload or in a zip of it (the shortest path wins);
+//! 1. an `exercises/` tree, in the upload or in a zip of it (several must hold the same
+//!    files: trees that differ are refused, naming two); a file of the six beside the tree
+//!    (a corrected `a1.rs` uploaded next to the zip) is taken when the tree lacks it, refused
+//!    when it differs from the tree's;
 //! 2. loose files `a1.rs` … `s.rs` and `student.toml`, in the upload or in a zip of it (each
 //!    name at most once).
 //!
@@ -338,16 +341,17 @@ fn from_download_zip(path: &Path) -> Result<Vec<Entry>, Text> {
         }
         names.push((name, entry.is_dir()));
     }
-    // A download zipped again inside a folder of its own: that folder is looked through.
+    // A download zipped again inside a folder of its own: that folder is looked through. What
+    // macOS adds when it zips (`__MACOSX/`, `.DS_Store`) is no folder of the download's.
     let top = |n: &str| n.split('/').next().unwrap_or("").to_owned();
-    let strip = match names.first() {
-        Some((first, _))
-            if names
-                .iter()
-                .all(|(n, _)| top(n) == top(first) && Name::parse(&top(n)).is_none()) =>
-        {
-            format!("{}/", top(first))
-        }
+    let system = |n: &str| {
+        let t = top(n);
+        t == "__MACOSX" || t.starts_with('.')
+    };
+    let mut tops = names.iter().map(|(n, _)| n).filter(|n| !system(n)).map(|n| top(n));
+    let strip = match tops.next() {
+        Some(first) if first.is_empty() || Name::parse(&first).is_some() => String::new(),
+        Some(first) if tops.all(|t| t == first) => format!("{first}/"),
         _ => String::new(),
     };
     let shared = Arc::new(path.to_path_buf());
@@ -550,86 +554,158 @@ fn inside(
 /// zips), as the module's documentation says, screened.
 fn resolve(files: Vec<(String, Vec<u8>)>) -> Result<Files, Text> {
     let wanted = wanted();
-    // 1. An exercises/ tree: the shortest path to one wins.
-    let base = files
-        .iter()
-        .filter_map(|(rel, _)| {
-            wanted.iter().find_map(|(w, _)| {
-                rel.strip_suffix(w.as_str()).filter(|p| p.is_empty() || p.ends_with('/'))
-            })
-        })
-        .min_by_key(|p| (p.len(), p.to_string()))
-        .map(str::to_owned);
-    let mut chosen: Vec<(&str, Option<&'static str>, &[u8])> = Vec::new();
-    if let Some(base) = base {
-        for (w, module) in &wanted {
-            let path = format!("{base}{w}");
-            let same: Vec<&(String, Vec<u8>)> =
-                files.iter().filter(|(rel, _)| *rel == path).collect();
-            match same.as_slice() {
-                [] => {}
-                [(rel, bytes)] => chosen.push((rel, *module, bytes)),
-                // One path twice (a zip that holds it twice): which one is meant is not for the
-                // grader to guess, as for a submission read from a folder or a zip.
-                _ => {
-                    return Err(text(
-                        format!("{} が 2 つ以上あります", shown(&path, Lang::Ja)),
-                        format!("{} is there more than once", shown(&path, Lang::En)),
-                    ));
-                }
-            }
-        }
-    } else {
-        // 2. Loose files, each name once.
-        for (w, module) in &wanted {
-            let same: Vec<&(String, Vec<u8>)> =
-                files.iter().filter(|(rel, _)| basename(rel) == basename(w)).collect();
-            match same.as_slice() {
-                [] => {}
-                [(rel, bytes)] => chosen.push((rel, *module, bytes)),
-                several => {
-                    // The first few, each shortened: an upload may hold hundreds.
-                    let list = |lang: Lang, sep: &str| {
-                        let mut names: Vec<String> =
-                            several.iter().take(5).map(|(r, _)| shown(r, lang)).collect();
-                        if several.len() > 5 {
-                            names.push(format!("… (+{})", several.len() - 5));
-                        }
-                        names.join(sep)
-                    };
-                    return Err(text(
-                        format!(
-                            "{} が複数あります（{}）。exercises/ フォルダごと提出してください",
-                            basename(w),
-                            list(Lang::Ja, "、")
-                        ),
-                        format!(
-                            "{} is there more than once ({}): hand in the exercises/ folder",
-                            basename(w),
-                            list(Lang::En, ", ")
-                        ),
-                    ));
-                }
-            }
-        }
+    // 1. An exercises/ tree; several must hold the same files.
+    let bases = submission::bases(files.iter().map(|(rel, _)| rel.as_str()));
+    if bases.len() > submission::MAX_TREES {
+        return Err(submission::too_many_trees(bases.len()));
     }
-    if chosen.is_empty() {
+    let mut out = if bases.is_empty() {
+        loose(&files, &wanted)?
+    } else {
+        let mut trees = Vec::new();
+        for base in &bases {
+            trees.push((base.clone(), tree(&files, &wanted, base)?));
+        }
+        let chosen = submission::one_tree(trees)?;
+        beside_tree(&files, &wanted, &bases, chosen)?
+    };
+    if out.modules.is_empty() && out.student_toml.is_none() {
         return Err(text(
             "exercises/ も a1.rs … s.rs・student.toml も見つかりません（exercises/ フォルダを zip にして提出してください）".into(),
             "neither exercises/ nor a1.rs … s.rs and student.toml found (hand in the exercises/ folder as a zip)".into(),
         ));
     }
-    let mut out = Files::default();
-    for (rel, module, bytes) in chosen {
-        if bytes.len() as u64 > MAX_FILE_BYTES {
-            return Err(too_big(rel, bytes.len() as u64, MAX_FILE_BYTES));
+    out = submission::screened(out)?;
+    Ok(out)
+}
+
+/// Puts `bytes` for `module` (`None`: `student.toml`) into `out`, unless too big.
+fn put(out: &mut Files, rel: &str, module: Option<&str>, bytes: &[u8]) -> Result<(), Text> {
+    if bytes.len() as u64 > MAX_FILE_BYTES {
+        return Err(too_big(rel, bytes.len() as u64, MAX_FILE_BYTES));
+    }
+    match module {
+        Some(m) => {
+            out.modules.insert(m.to_owned(), bytes.to_vec());
         }
-        match module {
-            Some(m) => {
-                out.modules.insert(m.to_owned(), bytes.to_vec());
+        None => out.student_toml = Some(bytes.to_vec()),
+    }
+    Ok(())
+}
+
+/// The files of the tree under `base`.
+fn tree(
+    files: &[(String, Vec<u8>)],
+    wanted: &[(String, Option<&'static str>)],
+    base: &str,
+) -> Result<Files, Text> {
+    let mut out = Files::default();
+    for (w, module) in wanted {
+        let path = format!("{base}{w}");
+        let same: Vec<&(String, Vec<u8>)> = files.iter().filter(|(rel, _)| *rel == path).collect();
+        match same.as_slice() {
+            [] => {}
+            [(rel, bytes)] => put(&mut out, rel, *module, bytes)?,
+            // One path twice (a zip that holds it twice): which one is meant is not for the
+            // grader to guess, as for a submission read from a folder or a zip.
+            _ => {
+                return Err(text(
+                    format!("{} が 2 つ以上あります", shown(&path, Lang::Ja)),
+                    format!("{} is there more than once", shown(&path, Lang::En)),
+                ));
             }
-            None => out.student_toml = Some(bytes.to_vec()),
         }
     }
-    submission::screened(out)
+    Ok(out)
+}
+
+/// `w`'s name found more than once (`several`), with the first few, each shortened (an upload
+/// may hold hundreds).
+fn more_than_once(w: &str, several: &[&(String, Vec<u8>)]) -> Text {
+    let few = |lang: Lang, sep: &str| {
+        let mut names: Vec<String> = several.iter().take(5).map(|(r, _)| shown(r, lang)).collect();
+        if several.len() > 5 {
+            names.push(format!("… (+{})", several.len() - 5));
+        }
+        names.join(sep)
+    };
+    text(
+        format!(
+            "{} が複数あります（{}）。exercises/ フォルダごと提出してください",
+            basename(w),
+            few(Lang::Ja, "、")
+        ),
+        format!(
+            "{} is there more than once ({}): hand in the exercises/ folder",
+            basename(w),
+            few(Lang::En, ", ")
+        ),
+    )
+}
+
+/// 2. Loose files, each name once.
+fn loose(
+    files: &[(String, Vec<u8>)],
+    wanted: &[(String, Option<&'static str>)],
+) -> Result<Files, Text> {
+    let mut out = Files::default();
+    for (w, module) in wanted {
+        let same: Vec<&(String, Vec<u8>)> =
+            files.iter().filter(|(rel, _)| basename(rel) == basename(w)).collect();
+        match same.as_slice() {
+            [] => {}
+            [(rel, bytes)] => put(&mut out, rel, *module, bytes)?,
+            several => return Err(more_than_once(w, several)),
+        }
+    }
+    Ok(out)
+}
+
+/// The tree's files with what the upload holds beside the trees (a corrected `a1.rs` uploaded
+/// next to the zip): a copy of the same text is nothing; a file the tree lacks is taken; one
+/// that differs from the tree's is refused, naming both (it was ignored without a word).
+fn beside_tree(
+    files: &[(String, Vec<u8>)],
+    wanted: &[(String, Option<&'static str>)],
+    bases: &[String],
+    mut chosen: Files,
+) -> Result<Files, Text> {
+    let in_tree = |rel: &str| bases.iter().any(|b| rel.starts_with(&format!("{b}exercises/")));
+    for (w, module) in wanted {
+        let outside: Vec<&(String, Vec<u8>)> =
+            files.iter().filter(|(rel, _)| basename(rel) == basename(w) && !in_tree(rel)).collect();
+        let Some((first, bytes)) = outside.first() else { continue };
+        let current = match module {
+            Some(m) => chosen.modules.get(*m),
+            None => chosen.student_toml.as_ref(),
+        };
+        match current {
+            Some(tree) => {
+                if let Some((rel, _)) = outside.iter().find(|(_, b)| b != tree) {
+                    let path = format!("{}{w}", bases[0]);
+                    return Err(text(
+                        format!(
+                            "{} が exercises/ の中（{}）と外（{}）にあり、中身が違います。どちらを採点するか決められないので、正しいほうだけを exercises/ に入れて提出し直してください",
+                            basename(w),
+                            shown(&path, Lang::Ja),
+                            shown(rel, Lang::Ja)
+                        ),
+                        format!(
+                            "{} is both in exercises/ ({}) and outside it ({}), with different text: which one to grade cannot be told, so put the right one in exercises/ and hand in again",
+                            basename(w),
+                            shown(&path, Lang::En),
+                            shown(rel, Lang::En)
+                        ),
+                    ));
+                }
+            }
+            None => {
+                if outside.iter().any(|(_, b)| b != bytes) {
+                    return Err(more_than_once(w, &outside));
+                }
+                put(&mut chosen, first, *module, bytes)?;
+            }
+        }
+    }
+    Ok(chosen)
 }

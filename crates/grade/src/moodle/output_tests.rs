@@ -50,6 +50,7 @@ fn graded(entry: &str, name: &str) -> Graded {
         max_score: None,
         skipped: false,
         flag: None,
+        problem: None,
     }
 }
 
