@@ -171,10 +171,11 @@ pub fn other_files(file: &str, text: &str) -> Vec<Refused> {
     let mut found = Vec::new();
     if let Ok(tokens) = without_shebang(text).parse::<TokenStream>() {
         each_group(tokens, |tokens| {
-            for w in tokens.windows(3) {
+            for (k, w) in tokens.windows(3).enumerate() {
                 if let [TokenTree::Ident(m), TokenTree::Ident(name), TokenTree::Punct(semi)] = w
                     && m == "mod"
                     && semi.as_char() == ';'
+                    && !test_only(&tokens[..k])
                 {
                     let line = m.span().start().line;
                     found.push(Refused {
@@ -189,6 +190,33 @@ pub fn other_files(file: &str, text: &str) -> Vec<Refused> {
     proc_macro2::extra::invalidate_current_thread_spans();
     found.sort_by_key(|r| r.line);
     found
+}
+
+/// Whether the item that `before` ends just before is `#[cfg(test)]`: its attributes and
+/// visibility (`pub`, `pub(crate)`) read backwards. Such a module (`#[cfg(test)] mod tests;`)
+/// is never built by grading, so its file is not needed there.
+fn test_only(before: &[TokenTree]) -> bool {
+    let mut k = before.len();
+    loop {
+        match before[..k] {
+            [.., TokenTree::Ident(ref i)] if i == "pub" => k -= 1,
+            [.., TokenTree::Ident(ref i), TokenTree::Group(ref g)]
+                if i == "pub" && g.delimiter() == Delimiter::Parenthesis =>
+            {
+                k -= 2;
+            }
+            [.., TokenTree::Punct(ref hash), TokenTree::Group(ref g)]
+                if hash.as_char() == '#' && g.delimiter() == Delimiter::Bracket =>
+            {
+                let attr: String = g.stream().to_string().split_whitespace().collect();
+                if attr == "cfg(test)" {
+                    return true;
+                }
+                k -= 2;
+            }
+            _ => return false,
+        }
+    }
 }
 
 /// The first name of [`ATTRIBUTES`] anywhere in an attribute's tokens, its groups included
@@ -358,6 +386,12 @@ pub fn extern_name() -> &'static str { "extern crate" }
         );
         // Not screened as a refusal: grading builds the file, and the compiler names it.
         assert_eq!(whats(text), []);
+        // A module for tests only is never built by grading: not named (it was, and `cg check`
+        // left the whole file out). Another `cfg` may be built: named.
+        let text = "#[cfg(test)]\nmod tests;\n#[cfg(test)]\n#[allow(unused)]\npub(crate) mod more;\n#[allow(unused)] #[cfg( test )] pub mod t2;\n#[cfg(feature = \"x\")]\nmod x;\n";
+        let found: Vec<(usize, String)> =
+            other_files("a1.rs", text).into_iter().map(|r| (r.line, r.what)).collect();
+        assert_eq!(found, [(8, "mod x;".to_owned())]);
         let m = other_file_message(&other_files("exercises/src/a1.rs", "mod geom;")[0], "a1");
         assert!(m.ja.starts_with("exercises/src/a1.rs:1: `mod geom;` は別のファイル"), "{}", m.ja);
         assert!(m.en.contains("write it inside a1.rs as `mod geom { … }`"), "{}", m.en);
