@@ -192,6 +192,19 @@ impl Reader {
                                 "タグのあとに、積の因子の 4×4 行列 `\\begin{pmatrix} … \\end{pmatrix}` を順に",
                                 "the product's 4×4 factors as `\\begin{pmatrix} … \\end{pmatrix}`, in order, after the tag",
                             )
+                        } else if let Some(env) = ["vmatrix", "Vmatrix"]
+                            .into_iter()
+                            .find(|e| region.contains(&format!("\\begin{{{e}}}")))
+                        {
+                            // Bars are a determinant's (or a norm's): no matrix is read from them.
+                            Text::new(
+                                format!(
+                                    "タグのあとに、積の結果の 4×4 行列 `\\begin{{pmatrix}} … \\end{{pmatrix}}`（`{env}` は行列式の記号なので行列としては読みません。`pmatrix` か `bmatrix` にしてください）"
+                                ),
+                                format!(
+                                    "the 4×4 result of the product as `\\begin{{pmatrix}} … \\end{{pmatrix}}` after the tag (a `{env}` is a determinant's bars, not read as a matrix: write `pmatrix` or `bmatrix`)"
+                                ),
+                            )
                         } else if let Some(tables) = table_like(&tag.id) {
                             // `s.spots`: a table's tag mistyped, not a matrix without its matrix.
                             Text::new(

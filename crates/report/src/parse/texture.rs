@@ -8,12 +8,22 @@ use super::expected::{detail, join};
 use super::{GroupError, ParsedTex, Reader, RowKind, group, same_numbers, tuple};
 use crate::model::Written;
 
-/// A texture row as the notation writes it, and why this one did not read.
-fn expected_tex(why: Text) -> Text {
+/// A texture row as the notation writes it (in the row's own form: a Markdown table's, or
+/// LaTeX's as `report fill` writes it), and why this one did not read.
+fn expected_tex(why: Text, latex: bool) -> Text {
+    let row = if latex {
+        "`i & j & $(x, y, z)$ & $(s, t)$ / $(s, t)$ \\\\`"
+    } else {
+        "`| i | j | (x, y, z) | (s, t) / (s, t) |`"
+    };
     join(
         Text::new(
-            "テクスチャ座標の行 `| i | j | (x, y, z) | (s, t) / (s, t) |`: 格子点の位置を 3 つの数で、テクスチャ座標を ` / ` で区切った 2 つの数の組で",
-            "a texture row `| i | j | (x, y, z) | (s, t) / (s, t) |`: the grid vertex's position as three numbers and its texture coordinates as pairs separated by ` / `",
+            format!(
+                "テクスチャ座標の行 {row}: 格子点の位置を 3 つの数で、テクスチャ座標を ` / ` で区切った 2 つの数の組で"
+            ),
+            format!(
+                "a texture row {row}: the grid vertex's position as three numbers and its texture coordinates as pairs separated by ` / `"
+            ),
         ),
         why,
     )
@@ -54,6 +64,7 @@ impl Reader {
     /// (math delimiters `$`, `\(`, `\)` are not part of a cell's numbers).
     pub(super) fn tex_row(&mut self, n: usize, line: &str) {
         let trimmed = line.trim();
+        let latex = !trimmed.starts_with('|');
         let Some(cells) = crate::shading::row_cells(trimmed) else { return };
         let cells: Vec<String> = cells
             .iter()
@@ -79,7 +90,7 @@ impl Reader {
                     GroupError::NotNumber(_) => detail(&err, "数", "a plain number"),
                     _ => detail(&err, "位置の数", "numbers in the position"),
                 };
-                self.problem(n, trimmed, expected_tex(why), RowKind::Texture);
+                self.problem(n, trimmed, expected_tex(why, latex), RowKind::Texture);
                 return;
             }
         };
@@ -88,7 +99,7 @@ impl Reader {
                 "（テクスチャ座標がありません）",
                 " (the texture coordinates are missing)",
             );
-            self.problem(n, trimmed, expected_tex(why), RowKind::Texture);
+            self.problem(n, trimmed, expected_tex(why, latex), RowKind::Texture);
             return;
         };
         let mut tex = Vec::new();
@@ -100,7 +111,7 @@ impl Reader {
                         GroupError::NotNumber(_) => detail(&err, "数", "a plain number"),
                         _ => detail(&err, "座標の組の数", "numbers in a coordinate pair"),
                     };
-                    self.problem(n, trimmed, expected_tex(why), RowKind::Texture);
+                    self.problem(n, trimmed, expected_tex(why, latex), RowKind::Texture);
                     return;
                 }
             }
@@ -117,5 +128,27 @@ fn whole_tuple(cell: &str, n: usize) -> Result<Vec<Written>, GroupError> {
         Some(Ok(_)) => Err(GroupError::NotNumber(cell.to_owned())),
         Some(Err(e)) => Err(e),
         None => Err(GroupError::NotNumber(cell.to_owned())),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::parse_report;
+
+    /// A texture row that does not read is shown the row's form in its own notation: LaTeX's
+    /// in a LaTeX report (it was the Markdown table's there too).
+    #[test]
+    fn a_texture_row_is_shown_in_its_own_notation() {
+        let latex = "3 & 0 & $(0.5, 0, x)$ & $(0.1, 0.2)$ \\\\\n";
+        let (_, problems) = parse_report(latex);
+        assert_eq!(problems.len(), 1, "{problems:?}");
+        let said = &problems[0].expected;
+        assert!(said.en.contains("`i & j & $(x, y, z)$ & $(s, t)$ / $(s, t)$ \\\\`"), "{said:?}");
+        assert!(said.ja.contains("`i & j & $(x, y, z)$"), "{said:?}");
+        assert!(!said.en.contains("| i | j |"), "{said:?}");
+        let markdown = "| 3 | 0 | (0.5, 0, x) | (0.1, 0.2) |\n";
+        let (_, problems) = parse_report(markdown);
+        assert_eq!(problems.len(), 1, "{problems:?}");
+        assert!(problems[0].expected.en.contains("`| i | j | (x, y, z) | (s, t) / (s, t) |`"));
     }
 }

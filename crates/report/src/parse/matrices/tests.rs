@@ -30,6 +30,14 @@ fn other_brackets_read_as_pmatrix_does() {
     let got: Vec<(usize, RowKind)> = problems.iter().map(|p| (p.line, p.kind)).collect();
     assert_eq!(got, [(1, RowKind::Matrix)], "{problems:?}");
     assert_eq!(r.unread_matrices, ["a2.view.start"]);
+    // … and says why the bars are not read (it said only "no matrix after the tag").
+    let said = &problems[0].expected;
+    assert!(
+        said.en.contains("a `vmatrix` is a determinant's bars")
+            && said.en.contains("write `pmatrix` or `bmatrix`"),
+        "{said:?}"
+    );
+    assert!(said.ja.contains("`vmatrix` は行列式の記号"), "{said:?}");
     // Each factor in brackets of its own kind, closed by its own `\end`.
     let text = format!(
         "<!-- cg: a2.view.start.factors -->\n$$ \\begin{{bmatrix}} {ROWS} \\end{{bmatrix}}\n\\begin{{matrix}} {ROWS} \\end{{matrix}} $$\n"
