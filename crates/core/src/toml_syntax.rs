@@ -150,7 +150,9 @@ pub fn typed_by_an_input_method(text: &str, offset: usize) -> Option<Text> {
     let line_end = text[start..].find('\n').map_or(text.len(), |i| start + i);
     let line = &text[line_start..line_end];
     let number = text[..line_start].matches('\n').count() + 1;
-    let typographic = |c: char| matches!(c, '\u{201C}' | '\u{201D}' | '\u{2018}' | '\u{2019}');
+    // The full-width quote `＂` (U+FF02) is typed for `"` as the typographic ones are.
+    let typographic =
+        |c: char| matches!(c, '\u{201C}' | '\u{201D}' | '\u{2018}' | '\u{2019}' | '\u{FF02}');
     // The quote that opened the string the scan is in (`"` or `'`), and its column (0-based).
     let mut string: Option<(char, usize)> = None;
     let mut escaped = false;
@@ -166,7 +168,11 @@ pub fn typed_by_an_input_method(text: &str, offset: usize) -> Option<Text> {
                 break;
             }
             None if c == '"' || c == '\'' => string = Some((c, column)),
-            None if c == '\u{3000}' || typographic(c) || ('０'..='９').contains(&c) => {
+            None if c == '\u{3000}'
+                || c == '＝'
+                || typographic(c)
+                || ('０'..='９').contains(&c) =>
+            {
                 found = Some((column, c));
                 break;
             }
@@ -188,6 +194,14 @@ pub fn typed_by_an_input_method(text: &str, offset: usize) -> Option<Text> {
             ),
             format!(
                 "the character at line {line}, column {column} is a full-width space ({code}): type a half-width space instead"
+            ),
+        ),
+        '＝' => Text::new(
+            format!(
+                "{line} 行 {column} 列の「＝」（{code}）は全角の等号です。半角の = にしてください"
+            ),
+            format!(
+                "the character at line {line}, column {column}, `＝` ({code}), is a full-width equals sign: type the half-width = instead"
             ),
         ),
         '０'..='９' => {
@@ -320,6 +334,7 @@ mod tests {
                 ("student = “12345678”\n", (1, 11), "「“」（U+201C）", "`“` (U+201C)"),
                 ("student = ‘12345678’\n", (1, 11), "「‘」（U+2018）", "`‘` (U+2018)"),
                 ("student = \"12345678”\n", (1, 20), "「”」（U+201D）", "`”` (U+201D)"),
+                ("student = ＂12345678＂\n", (1, 11), "「＂」（U+FF02）", "`＂` (U+FF02)"),
             ],
             ("半角の二重引用符 \" で囲んでください", "type straight double quotes \" instead"),
         );
@@ -339,6 +354,18 @@ mod tests {
         let t = at("table = １\n", &m, span);
         assert!(t.ja.contains("半角の数字 1 にしてください"), "{}", t.ja);
         assert!(t.en.contains("half-width digit 1 instead"), "{}", t.en);
+    }
+
+    /// A full-width equals sign (`student ＝ "…"`, U+FF1D), with the half-width one to type.
+    #[test]
+    fn a_full_width_equals_sign_is_named() {
+        assert_named(
+            &[("student ＝ \"12345678\"\n", (1, 9), "「＝」（U+FF1D）", "`＝` (U+FF1D)")],
+            (
+                "全角の等号です。半角の = にしてください",
+                "full-width equals sign: type the half-width = instead",
+            ),
+        );
     }
 
     /// No hint where there is no such character, or where it is inside a string or a comment
