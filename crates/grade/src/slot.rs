@@ -104,7 +104,7 @@ pub(crate) fn prepare_copy(slot: &Slot, first: &Slot, kit_hash: &str) -> Result<
 
 /// Runs every assignment's checks for `student` in this process, the submission's functions in
 /// a worker (`cg-check-runner`, built in the slot) in the sandbox: each check's calls within
-/// [`Limits::wall`], the worker within the rest of `options.limits`. Nothing the worker prints
+/// [`cg_sandbox::Limits::wall`], the worker within the rest of `options.limits`. Nothing the worker prints
 /// is read as a result: the checks, their list and their outcomes are the kit's, here.
 fn run_checks(
     slot: &Slot,
