@@ -187,7 +187,11 @@ fn a_refused_entry_keeps_its_roster_student_and_an_empty_folder_is_said() {
     assert_eq!(graded.len(), 1);
     let problem = graded[0].problem.as_ref().expect("a refused entry has a problem");
     assert!(problem.en.starts_with("refused: student.toml (the record"), "{}", problem.en);
-    assert!(problem.en.contains("cargo run --release -- assignment --student"), "{}", problem.en);
+    assert!(
+        problem.en.contains("cargo run --release -- assignment --student 12345678 --save"),
+        "{}",
+        problem.en
+    );
     assert!(problem.ja.starts_with("受け付けられません: student.toml"), "{}", problem.ja);
     let v: Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("_nostudent.json")).unwrap())
