@@ -10,8 +10,8 @@
 //!   the data, with the derived value and the tolerance used.
 //!
 //! The report and the data file are read in the encoding the student's editor wrote them in
-//! (UTF-8, UTF-16 with a BOM or Shift_JIS, detected; `--encoding` names it), and the summary says
-//! when it was not UTF-8 ("read as Shift_JIS"). Everything written is UTF-8.
+//! (UTF-8, UTF-16 with or without a BOM, or Shift_JIS, detected; `--encoding` names it), and
+//! the summary says when it was not UTF-8 ("read as Shift_JIS"). Everything written is UTF-8.
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -58,8 +58,8 @@ pub struct Source {
     #[arg(long, value_name = "FILE")]
     pub data: Option<PathBuf>,
     /// The encoding of the report and the data file: utf-8, utf-16le, utf-16be or shift_jis
-    /// (default: detected; UTF-8, UTF-16 with a BOM and Shift_JIS are told apart)
-    /// / レポートとデータファイルの文字コード（省略時は自動判別）
+    /// (default: detected; UTF-8, UTF-16 with or without a BOM and Shift_JIS are told apart)
+    /// / レポートとデータファイルの文字コード（省略時は UTF-8・UTF-16（BOM なしも）・Shift_JIS を自動判別）
     #[arg(long, value_name = "ENCODING")]
     pub encoding: Option<Encoding>,
 }
