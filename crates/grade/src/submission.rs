@@ -222,8 +222,13 @@ fn read_folder(dir: &Path) -> Result<Files, Text> {
         );
         trees.push((shown, read_tree(&base)?));
     }
-    // The shortest path first, as in a zip.
+    // The shortest path first, as in a zip. An `exercises/` without any of the six files is no
+    // tree (in a zip, trees are found by their files).
     trees.sort_by(|a, b| (a.0.len(), &a.0).cmp(&(b.0.len(), &b.0)));
+    let empty = |f: &Files| f.modules.is_empty() && f.student_toml.is_none();
+    if trees.iter().any(|(_, f)| !empty(f)) {
+        trees.retain(|(_, f)| !empty(f));
+    }
     one_tree(trees)
 }
 
@@ -559,6 +564,9 @@ mod tests {
         );
         assert!(why.ja.contains("backup/exercises/") && why.ja.contains("違います"), "{}", why.ja);
         write(&dir, "backup", "// new");
+        assert_eq!(read(&dir).unwrap().modules["a1"], b"// new");
+        // An empty `exercises/` beside the work is no second tree.
+        std::fs::create_dir_all(dir.join("empty/exercises/src")).unwrap();
         assert_eq!(read(&dir).unwrap().modules["a1"], b"// new");
         // The same in a zip: two versions side by side.
         let path = dir.join("v.zip");
