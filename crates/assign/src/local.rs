@@ -54,7 +54,7 @@ pub fn module_of(file: &str) -> Option<&'static str> {
 
 /// The errors in cargo's JSON messages (`stdout` of `cargo build --message-format=json`), in
 /// order; each goes to the module of its primary span, or else of any span in a student
-/// module.
+/// module, its notes' included.
 #[must_use]
 pub fn diagnostics(stdout: &str) -> Vec<Diagnostic> {
     let mut out = Vec::new();
@@ -75,10 +75,19 @@ pub fn diagnostics(stdout: &str) -> Vec<Diagnostic> {
                 s["line_start"].as_u64().unwrap_or(0),
             )
         });
+        // Else a note's span: a module file that cannot be read (saved as Shift_JIS) is an error
+        // at `pub mod a1;` in lib.rs, with a note at the byte of a1.rs that is not UTF-8; it
+        // stopped every assignment (in grading, all scored 0).
+        let children = v["message"]["children"].as_array().cloned().unwrap_or_default();
+        let child_spans =
+            children.iter().flat_map(|c| c["spans"].as_array().cloned().unwrap_or_default());
         let module = place
             .as_ref()
             .and_then(|(f, _)| module_of(f))
-            .or_else(|| spans.iter().find_map(|s| s["file_name"].as_str().and_then(module_of)));
+            .or_else(|| spans.iter().find_map(|s| s["file_name"].as_str().and_then(module_of)))
+            .or_else(|| {
+                child_spans.into_iter().find_map(|s| s["file_name"].as_str().and_then(module_of))
+            });
         let short = match &place {
             Some((file, line)) => format!("{file}:{line}: {text}"),
             None => text,
@@ -364,7 +373,19 @@ fn not_gradable(root: &Path, lang: Lang) -> BTreeMap<String, Vec<String>> {
     let mut out = BTreeMap::new();
     for module in IDS {
         let file = format!("exercises/src/{module}.rs");
-        let Ok(text) = std::fs::read_to_string(root.join(&file)) else { continue };
+        let Ok(bytes) = std::fs::read(root.join(&file)) else { continue };
+        let text = match String::from_utf8(bytes) {
+            Ok(text) => text,
+            Err(e) => {
+                // Saved as Shift_JIS or UTF-16: rustc reads only UTF-8 (its English error
+                // stopped every assignment); what a text the kit can read is said is named.
+                if let Ok((_, encoding)) = cg_core::text::decode(e.as_bytes(), None) {
+                    let why = not_utf8(&file, encoding.name()).get(lang).to_owned();
+                    out.insert((*module).to_owned(), vec![why]);
+                }
+                continue;
+            }
+        };
         let mut why = Vec::new();
         let refused = crate::screen::screen(&file, &text);
         if !refused.is_empty() {
@@ -378,6 +399,20 @@ fn not_gradable(root: &Path, lang: Lang) -> BTreeMap<String, Vec<String>> {
         }
     }
     out
+}
+
+/// What `cg check` says of an assignment's file saved in `encoding` (Shift_JIS, UTF-16): Rust
+/// reads only UTF-8, and how to save it so.
+#[must_use]
+pub fn not_utf8(file: &str, encoding: &str) -> cg_core::lang::Text {
+    cg_core::lang::Text::new(
+        format!(
+            "{file} は {encoding} で保存されています。Rust のソースファイルは UTF-8 でなければならないので、このままではビルドできません。エディタで文字コードを UTF-8 にして保存し直してください（VS Code: 右下の「{encoding}」の表示 →「エンコード付きで保存」→「UTF-8」。メモ帳: 「名前を付けて保存」の文字コードで「UTF-8」）。採点では UTF-8 に直して読みます"
+        ),
+        format!(
+            "{file} is saved as {encoding}. Rust source files must be UTF-8, so it cannot be built as it is: save it again as UTF-8 in your editor (VS Code: click \"{encoding}\" at the bottom right → \"Save with Encoding\" → \"UTF-8\"; Notepad: \"Save as\" with the encoding \"UTF-8\"). Grading reads it converted to UTF-8"
+        ),
+    )
 }
 
 /// The kit this program runs in: the folder above `exercises/` (the current folder's, or the
@@ -500,6 +535,21 @@ mod tests {
         assert!(m["a1"][0].starts_with("error: expected `;`\n --> exercises/src/a1.rs:12"));
         assert_eq!(m["a1"][1], "exercises/src/a1.rs:20: mismatched types");
         assert_eq!(module_of("C:\\kit\\exercises\\src\\a4.rs"), Some("a4"));
+        // A file saved as Shift_JIS: the error is at `pub mod a1;` in lib.rs, its note at
+        // a1.rs (cargo's JSON as it came). It stopped every assignment; it is a1's.
+        let unreadable = serde_json::json!({
+            "reason": "compiler-message",
+            "message": {
+                "level": "error",
+                "message": "couldn't read `exercises/src/a1.rs`: stream did not contain valid UTF-8",
+                "spans": [{"file_name": "exercises/src/lib.rs", "line_start": 47, "is_primary": true}],
+                "children": [{
+                    "message": "byte `137` is not valid utf-8",
+                    "spans": [{"file_name": "exercises/src/a1.rs", "line_start": 1, "is_primary": true}],
+                }],
+            }
+        });
+        assert_eq!(diagnostics(&unreadable.to_string())[0].module, Some("a1"));
         assert_eq!(module_of("exercises/src/lib.rs"), None);
         assert_eq!(module_of("solutions/src/a1.rs"), None);
     }
@@ -573,8 +623,20 @@ mod tests {
                 ("a3.rs", "mod inline { pub fn f() {} }\n"),
             ],
         );
+        // a4.rs saved as Shift_JIS (a Japanese Windows editor's "ANSI"): named with how to save
+        // it as UTF-8 (rustc's English error stopped every assignment).
+        // `// 課題4` in Shift_JIS: 課 is 89 DB, 題 91 E8.
+        let sjis = b"// \x89\xdb\x91\xe84\npub fn f() {}\n";
+        std::fs::write(dir.join("exercises/src/a4.rs"), sjis).unwrap();
         let left = not_gradable(&dir, Lang::En);
-        assert_eq!(left.keys().collect::<Vec<_>>(), ["a1", "a2"], "{left:?}");
+        assert_eq!(left.keys().collect::<Vec<_>>(), ["a1", "a2", "a4"], "{left:?}");
+        assert!(
+            left["a4"][0].starts_with(
+                "exercises/src/a4.rs is saved as Shift_JIS. Rust source files must be UTF-8"
+            ),
+            "{left:?}"
+        );
+        assert!(not_gradable(&dir, Lang::Ja)["a4"][0].contains("UTF-8 にして保存し直してください"));
         assert!(left["a1"][0].starts_with("exercises/src/a1.rs:1: `mod geom;` reads another file"));
         assert!(left["a2"][0].starts_with("grading refuses the whole submission (0 points)"));
         assert!(left["a2"][0].contains("exercises/src/a2.rs:1: include_str!"), "{left:?}");

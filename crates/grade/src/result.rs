@@ -28,6 +28,9 @@ pub struct Facts {
     /// Modules the submission did not hold (graded as their stubs: each check failed, said as
     /// not handed in rather than as the stub's "delete the line `not_started`").
     pub not_submitted: std::collections::BTreeSet<String>,
+    /// Modules saved in another encoding than UTF-8, with it, converted to be built
+    /// ([`crate::submission::Files::converted`]): said in the output.
+    pub converted: BTreeMap<String, String>,
     /// Each assignment's run.
     pub runs: BTreeMap<String, AssignmentRun>,
     /// The checks of each assignment whose run died, as the kit lists them.
@@ -199,6 +202,17 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
         };
         let _ = writeln!(output, "{}: {}", head.get(lang), why.get(lang));
     }
+    for (m, encoding) in &facts.converted {
+        let said = Text::new(
+            format!(
+                "{m}.rs は {encoding} で保存されていたので、UTF-8 に直して採点しました（Rust のソースファイルは UTF-8 で保存してください）"
+            ),
+            format!(
+                "{m}.rs was saved as {encoding}: graded converted to UTF-8 (save Rust source files as UTF-8)"
+            ),
+        );
+        let _ = writeln!(output, "{}", said.get(lang));
+    }
     for (m, run) in &facts.runs {
         let entry = per.entry(m.clone()).or_insert((0.0, 0.0));
         let compile = facts.compile_errors.get(m);
@@ -312,6 +326,7 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
             "refused_ja": facts.refused.as_ref().map(|m| m.ja.clone()),
             "error_ja": facts.fatal.as_ref().map(|m| m.ja.clone()),
             "compile_errors": facts.compile_errors,
+            "converted": facts.converted,
             "assignments": assignments,
             "timings": {
                 "build_s": secs(facts.build),

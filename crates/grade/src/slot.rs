@@ -216,6 +216,7 @@ pub(crate) fn grade_one(
             return facts;
         }
     }
+    facts.converted = files.converted.clone();
     facts.not_submitted = submission::MODULES
         .iter()
         .filter(|m| !files.modules.contains_key(**m))

@@ -30,6 +30,10 @@ pub struct Files {
     pub modules: BTreeMap<String, Vec<u8>>,
     /// `exercises/student.toml`, when present.
     pub student_toml: Option<Vec<u8>>,
+    /// The modules that were not UTF-8 (saved as Shift_JIS or UTF-16 by a Japanese editor),
+    /// each with the encoding they were read in: [`screened`] converts them, since rustc reads
+    /// only UTF-8 (a Shift_JIS `a1.rs` made every assignment score 0).
+    pub converted: BTreeMap<String, String>,
 }
 
 /// The relative paths (inside `exercises/`) of the files a submission contributes.
@@ -78,11 +82,21 @@ pub fn read(path: &Path) -> Result<Files, Text> {
     screened(files)
 }
 
-/// The files, unless one reaches outside itself at compile time ([`crate::screen`]).
+/// The files, each module in UTF-8 ([`Files::converted`]: one in Shift_JIS or UTF-16 is
+/// converted; one that is no text the kit reads is left for rustc to name), unless one reaches
+/// outside itself at compile time ([`crate::screen`]).
 ///
 /// # Errors
 /// The files and lines that do, with what.
-pub(crate) fn screened(files: Files) -> Result<Files, Text> {
+pub(crate) fn screened(mut files: Files) -> Result<Files, Text> {
+    for (m, bytes) in &mut files.modules {
+        if std::str::from_utf8(bytes).is_err()
+            && let Ok((text, encoding)) = cg_core::text::decode(bytes, None)
+        {
+            *bytes = text.into_bytes();
+            files.converted.insert(m.clone(), encoding.name().to_owned());
+        }
+    }
     let refused: Vec<crate::screen::Refused> = files
         .modules
         .iter()
@@ -588,6 +602,31 @@ mod tests {
             "{}",
             why.en
         );
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// A module saved as Shift_JIS or UTF-16 (a Japanese editor's "ANSI" or "Unicode") is read
+    /// converted to UTF-8, and named: rustc could not read it, and the error at `pub mod a1;`
+    /// made every assignment of the submission score 0. UTF-8 with a BOM is left as it is.
+    #[test]
+    fn a_module_in_shift_jis_or_utf16_is_converted_and_named() {
+        let dir = folder("encodings");
+        std::fs::create_dir_all(dir.join("exercises/src")).unwrap();
+        std::fs::write(dir.join("exercises/student.toml"), "student = \"20260001\"\n").unwrap();
+        // `// 課題1` in Shift_JIS: 課 is 89 DB, 題 91 E8.
+        std::fs::write(dir.join("exercises/src/a1.rs"), b"// \x89\xdb\x91\xe81\nfn f() {}\n")
+            .unwrap();
+        let mut utf16 = vec![0xFF, 0xFE];
+        utf16.extend("// 課題2\nfn g() {}\n".encode_utf16().flat_map(u16::to_le_bytes));
+        std::fs::write(dir.join("exercises/src/a2.rs"), utf16).unwrap();
+        std::fs::write(dir.join("exercises/src/a3.rs"), "\u{feff}// 課題3\n").unwrap();
+        let files = read(&dir).unwrap();
+        assert_eq!(files.modules["a1"], "// 課題1\nfn f() {}\n".as_bytes());
+        assert_eq!(files.modules["a2"], "// 課題2\nfn g() {}\n".as_bytes());
+        assert_eq!(files.modules["a3"], "\u{feff}// 課題3\n".as_bytes());
+        let converted: Vec<(&str, &str)> =
+            files.converted.iter().map(|(m, e)| (m.as_str(), e.as_str())).collect();
+        assert_eq!(converted, [("a1", "Shift_JIS"), ("a2", "UTF-16LE")]);
         let _ = std::fs::remove_dir_all(&dir);
     }
 

@@ -444,3 +444,19 @@ fn a_file_not_handed_in_is_said_so() {
     let r = result::build(&meta, &facts, &Config::default(), Lang::En);
     assert_eq!(r["tests"][1]["status"], "passed", "{r:#}");
 }
+
+/// A module converted from Shift_JIS is said in the output, in the reader's language.
+#[test]
+fn a_converted_module_is_said() {
+    let facts = result::Facts {
+        converted: [("a1".to_owned(), "Shift_JIS".to_owned())].into(),
+        ..result::Facts::default()
+    };
+    let meta = meta(Some("20260001"));
+    let r = result::build(&meta, &facts, &Config::default(), Lang::En);
+    let output = r["output"].as_str().unwrap();
+    assert!(output.contains("a1.rs was saved as Shift_JIS: graded converted to UTF-8"), "{output}");
+    assert_eq!(r["cg"]["converted"]["a1"], "Shift_JIS");
+    let r = result::build(&meta, &facts, &Config::default(), Lang::Ja);
+    assert!(r["output"].as_str().unwrap().contains("a1.rs は Shift_JIS で保存されていた"));
+}
