@@ -407,10 +407,10 @@ fn not_gradable(root: &Path, lang: Lang) -> BTreeMap<String, Vec<String>> {
 pub fn not_utf8(file: &str, encoding: &str) -> cg_core::lang::Text {
     cg_core::lang::Text::new(
         format!(
-            "{file} は {encoding} で保存されています。Rust のソースファイルは UTF-8 でなければならないので、このままではビルドできません。エディタで文字コードを UTF-8 にして保存し直してください（VS Code: 右下の「{encoding}」の表示 →「エンコード付きで保存」→「UTF-8」。メモ帳: 「名前を付けて保存」の文字コードで「UTF-8」）。採点では UTF-8 に直して読みます"
+            "{file} は {encoding} で保存されています。Rust のソースファイルは UTF-8 でなければならないので、このままではビルドできません。エディタで文字コードを UTF-8 にして保存し直してください（VS Code: 右下の文字コードの表示（「Shift JIS」など）→「エンコード付きで保存」→「UTF-8」。メモ帳: 「名前を付けて保存」の文字コードで「UTF-8」）。採点では UTF-8 に直して読みます"
         ),
         format!(
-            "{file} is saved as {encoding}. Rust source files must be UTF-8, so it cannot be built as it is: save it again as UTF-8 in your editor (VS Code: click \"{encoding}\" at the bottom right → \"Save with Encoding\" → \"UTF-8\"; Notepad: \"Save as\" with the encoding \"UTF-8\"). Grading reads it converted to UTF-8"
+            "{file} is saved as {encoding}. Rust source files must be UTF-8, so it cannot be built as it is: save it again as UTF-8 in your editor (VS Code: click the encoding at the bottom right, \"Shift JIS\" say → \"Save with Encoding\" → \"UTF-8\"; Notepad: \"Save as\" with the encoding \"UTF-8\"). Grading reads it converted to UTF-8"
         ),
     )
 }
