@@ -397,6 +397,19 @@ pub fn extern_name() -> &'static str { "extern crate" }
         assert!(m.en.contains("write it inside a1.rs as `mod geom { … }`"), "{}", m.en);
     }
 
+    /// A file with a byte-order mark (Notepad's "UTF-8 (BOM 付き)"; rustc skips it) is read as
+    /// the same file without: a comment naming `env!` is no use of it, and `mod geom;` is found.
+    #[test]
+    fn a_byte_order_mark_is_skipped_as_rustc_skips_it() {
+        assert_eq!(whats("\u{feff}// env! は使いません\nfn f() {}\n"), []);
+        assert_eq!(whats("\u{feff}const P: &str = env!(\"HOME\");\n"), [(1, "env!".to_owned())]);
+        let found: Vec<(usize, String)> = other_files("a1.rs", "\u{feff}mod geom;\n")
+            .into_iter()
+            .map(|r| (r.line, r.what))
+            .collect();
+        assert_eq!(found, [(1, "mod geom;".to_owned())]);
+    }
+
     #[test]
     fn the_message_names_each_use_in_both_languages() {
         let r = screen("exercises/src/a1.rs", "\n\nconst P: &str = include_str!(\"/etc/passwd\");");
