@@ -9,6 +9,11 @@
 //! a1 = 2
 //! "a1.t3" = 3
 //! "a1.t3.unit" = 5
+//!
+//! [totals]
+//! # What an assignment is worth in all, whatever the number of its checks in the student's
+//! # variant (a2 with panning has two checks more): its checks' points above are then weights.
+//! a2 = 20
 //! ```
 //!
 //! Prefixes match whole dot-separated parts: `a1` names `a1.t2.closed` but not `a10.t1.x`.
@@ -26,11 +31,15 @@ pub struct Config {
     pub default_points: f64,
     /// Points by check-ID prefix (`a1`, `a1.t3`, `a1.t3.unit`).
     pub points: BTreeMap<String, f64>,
+    /// What an assignment is worth in all (`a2` → 20): its checks share it in proportion to
+    /// their [`Config::points`], so every student's assignment weighs the same whatever the
+    /// number of checks in their variant.
+    pub totals: BTreeMap<String, f64>,
 }
 
 impl Default for Config {
     fn default() -> Config {
-        Config { default_points: 1.0, points: BTreeMap::new() }
+        Config { default_points: 1.0, points: BTreeMap::new(), totals: BTreeMap::new() }
     }
 }
 
@@ -89,8 +98,8 @@ impl Config {
     /// Reads a config from TOML text.
     ///
     /// # Errors
-    /// The text is not TOML, has keys other than `default` and `[points]`, or a number that is
-    /// negative or not a number.
+    /// The text is not TOML, has keys other than `default`, `[points]` and `[totals]`, a
+    /// `[totals]` key that is no assignment's ID, or a number that is negative or not a number.
     pub fn parse(text: &str) -> Result<Config, ConfigError> {
         let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
             let said = cg_core::toml_syntax::at(text, e.message(), e.span());
@@ -106,11 +115,31 @@ impl Config {
                 ("points", toml::Value::Table(points)) => {
                     flatten("", points, &mut config.points)?;
                 }
+                ("totals", toml::Value::Table(totals)) => {
+                    for (id, value) in totals {
+                        if !cg_assign::IDS.contains(&id.as_str()) {
+                            let ids = cg_assign::IDS.join(", ");
+                            return Err(ConfigError::new(
+                                format!(
+                                    "採点設定の [totals] の {} は課題の ID ではありません（{ids} のどれか）",
+                                    cg_core::quote::visible(id)
+                                ),
+                                format!(
+                                    "{} in the grading config's [totals] is no assignment's ID (one of {ids})",
+                                    cg_core::quote::visible(id)
+                                ),
+                            ));
+                        }
+                        config.totals.insert(id.clone(), number(&format!("totals.{id}"), value)?);
+                    }
+                }
                 _ => {
                     return Err(ConfigError::new(
-                        format!("採点設定の {key} は使えません（default と [points] のみ）"),
                         format!(
-                            "unknown key {key} in the grading config (only default and [points])"
+                            "採点設定の {key} は使えません（default、[points]、[totals] のみ）"
+                        ),
+                        format!(
+                            "unknown key {key} in the grading config (only default, [points] and [totals])"
                         ),
                     ));
                 }
@@ -132,6 +161,15 @@ impl Config {
             }
         }
         best.map_or(self.default_points, |(_, p)| p)
+    }
+
+    /// The factor that makes the checks `ids` of `assignment` (one student's run) sum to the
+    /// assignment's `[totals]` entry; 1 without one, or when the checks are worth nothing.
+    #[must_use]
+    pub fn scale<'a>(&self, assignment: &str, ids: impl IntoIterator<Item = &'a str>) -> f64 {
+        let Some(&total) = self.totals.get(assignment) else { return 1.0 };
+        let raw: f64 = ids.into_iter().map(|id| self.points(id)).sum();
+        if raw > 0.0 { total / raw } else { 1.0 }
     }
 
     /// Whether every rule of `[points]` names a check of `ids` (the kit's check IDs) or a prefix
@@ -190,6 +228,31 @@ mod tests {
         assert_eq!(c.points("a2.t1.x"), 0.5);
         assert_eq!(c.points("a4.t2.corners"), 4.0);
         assert_eq!(Config::default().points("a1.t1.count"), 1.0);
+    }
+
+    /// An assignment's total is shared by its checks in proportion to their points, so two
+    /// variants with 14 and 16 checks weigh the same (they weighed 14 and 16).
+    #[test]
+    fn totals_make_an_assignment_weigh_the_same_for_every_variant() {
+        let c = Config::parse("[points]\n\"a2.t1\" = 2\n[totals]\na2 = 20\n").unwrap();
+        let fourteen: Vec<String> = (0..14).map(|k| format!("a2.t2.c{k}")).collect();
+        let sixteen: Vec<String> = (0..16).map(|k| format!("a2.t2.c{k}")).collect();
+        let scale = |ids: &[String]| c.scale("a2", ids.iter().map(String::as_str));
+        assert!((scale(&fourteen) * 14.0 - 20.0).abs() < 1e-12);
+        assert!((scale(&sixteen) * 16.0 - 20.0).abs() < 1e-12);
+        // Points stay weights: a t1 check is worth twice a t2 one.
+        let mixed = ["a2.t1.x", "a2.t2.y"];
+        let s = c.scale("a2", mixed);
+        assert!((s * c.points("a2.t1.x") - 40.0 / 3.0).abs() < 1e-12);
+        // No total: the points as they are.
+        assert_eq!(c.scale("a1", ["a1.t1.count"]), 1.0);
+        let e = Config::parse("[totals]\na9 = 20\n").unwrap_err();
+        assert!(
+            e.message(Lang::En)
+                .contains("a9 in the grading config's [totals] is no assignment's ID"),
+            "{e}"
+        );
+        assert!(Config::parse("[totals]\na1 = -1\n").is_err());
     }
 
     #[test]

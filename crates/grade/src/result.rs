@@ -279,8 +279,10 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
                 }
             }
         };
+        // `[totals]`: the assignment weighs the same whatever the number of its checks.
+        let scale = config.scale(m, checks.iter().map(|c| c.0.as_str()));
         for (id, title, passed, text) in checks {
-            let max = config.points(&id);
+            let max = config.points(&id) * scale;
             let score = if passed { max } else { 0.0 };
             entry.0 += score;
             entry.1 += max;

@@ -460,3 +460,33 @@ fn a_converted_module_is_said() {
     let r = result::build(&meta, &facts, &Config::default(), Lang::Ja);
     assert!(r["output"].as_str().unwrap().contains("a1.rs は Shift_JIS で保存されていた"));
 }
+
+/// With `[totals]`, an assignment's checks share its total: a2 of 14 checks and of 16 are
+/// both worth 20 (they were worth 14 and 16, so one student's 100 % weighed more).
+#[test]
+fn totals_are_shared_by_the_checks_of_each_variant() {
+    let config = Config::parse("[totals]\na2 = 20\n").unwrap();
+    for n in [14, 16] {
+        let checks: Vec<serde_json::Value> = (0..n)
+            .map(|k| {
+                serde_json::json!({
+                    "id": format!("a2.t1.c{k}"), "title": { "ja": "x", "en": "x" },
+                    "status": if k == 0 { "pass" } else { "fail" }, "message": "",
+                })
+            })
+            .collect();
+        let facts = result::Facts {
+            runs: [(
+                "a2".to_owned(),
+                AssignmentRun::Report(serde_json::json!({ "checks": checks })),
+            )]
+            .into(),
+            ..result::Facts::default()
+        };
+        let r = result::build(&meta(Some("20260001")), &facts, &config, Lang::En);
+        assert_eq!(r["max_score"], 20.0, "{n}: {r:#}");
+        let one = (20.0 / f64::from(n) * 1000.0).round() / 1000.0;
+        assert_eq!(r["score"], one, "{n}: {r:#}");
+        assert_eq!(r["cg"]["assignments"]["a2"]["max_score"], 20.0, "{n}");
+    }
+}
