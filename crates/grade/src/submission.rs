@@ -31,7 +31,7 @@ pub struct Files {
     /// `exercises/student.toml`, when present.
     pub student_toml: Option<Vec<u8>>,
     /// The modules that were not UTF-8 (saved as Shift_JIS or UTF-16 by a Japanese editor),
-    /// each with the encoding they were read in: [`screened`] converts them, since rustc reads
+    /// each with the encoding they were read in: grading converts them, since rustc reads
     /// only UTF-8 (a Shift_JIS `a1.rs` made every assignment score 0).
     pub converted: BTreeMap<String, String>,
 }
