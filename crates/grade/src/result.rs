@@ -523,6 +523,20 @@ pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) ->
     for (_, (name, failed, of)) in &rows {
         let _ = writeln!(out, "| {} | {failed} | {of} |", name.replace('|', "\\|"));
     }
+    let uneven = uneven_maxima(results);
+    if !uneven.is_empty() {
+        let _ = write!(
+            out,
+            "\n## {}\n\n{}\n\n{}\n",
+            t("学生によって満点が違う課題", "Assignments worth more for some students").get(lang),
+            uneven.join("\n"),
+            t(
+                "課題の組み合わせによってチェックの数が違うためです。採点設定の [totals]（例: a2 = 20）で、その課題の点をどの学生でも同じにできます（docs/instructor-guide.md）。",
+                "Their number of checks depends on the variant. The grading config's [totals] (a2 = 20, say) makes such an assignment worth the same for every student (docs/instructor-guide.md).",
+            )
+            .get(lang)
+        );
+    }
     if unsandboxed > 0 {
         let _ = write!(
             out,
@@ -567,6 +581,26 @@ pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) ->
         );
     }
     out
+}
+
+/// The assignments whose maximum differs between the graded results, each as `- a2: 14–16`
+/// (the number of checks depends on the variant; `[totals]` evens it out).
+fn uneven_maxima(results: &[Value]) -> Vec<String> {
+    let mut range: BTreeMap<String, (f64, f64)> = BTreeMap::new();
+    for r in results {
+        let Some(per) = r["cg"]["assignments"].as_object() else { continue };
+        for (m, a) in per {
+            let Some(max) = a["max_score"].as_f64() else { continue };
+            let e = range.entry(m.clone()).or_insert((max, max));
+            e.0 = e.0.min(max);
+            e.1 = e.1.max(max);
+        }
+    }
+    range
+        .into_iter()
+        .filter(|(_, (lo, hi))| hi > lo)
+        .map(|(m, (lo, hi))| format!("- {m}: {lo}–{hi}"))
+        .collect()
 }
 
 /// The roster's findings: entries not on it, entries whose `student.toml` claims another

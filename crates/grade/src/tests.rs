@@ -490,3 +490,24 @@ fn totals_are_shared_by_the_checks_of_each_variant() {
         assert_eq!(r["cg"]["assignments"]["a2"]["max_score"], 20.0, "{n}");
     }
 }
+
+/// summary.md names an assignment whose maximum differs between students, and how to even it
+/// out; equal maxima (or `[totals]`) give no such section.
+#[test]
+fn the_summary_names_assignments_worth_more_for_some_students() {
+    let result = |a2: f64| {
+        serde_json::json!({
+            "score": 1.0, "max_score": 14.0 + a2,
+            "cg": { "student": "20260001", "submission": "x",
+                    "assignments": { "a1": { "score": 1.0, "max_score": 14.0 },
+                                     "a2": { "score": 0.0, "max_score": a2 } } },
+        })
+    };
+    let md = result::summary_md(&[result(14.0), result(16.0)], &[], Lang::En);
+    assert!(md.contains("## Assignments worth more for some students\n\n- a2: 14–16\n"), "{md}");
+    assert!(md.contains("[totals]") && !md.contains("- a1:"), "{md}");
+    let md = result::summary_md(&[result(14.0), result(16.0)], &[], Lang::Ja);
+    assert!(md.contains("## 学生によって満点が違う課題"), "{md}");
+    let md = result::summary_md(&[result(20.0), result(20.0)], &[], Lang::En);
+    assert!(!md.contains("worth more"), "{md}");
+}
