@@ -77,18 +77,20 @@ fn main() -> std::io::Result<()> {
         // A list of `n` one-byte numbers (a reply of `n` items).
         ("items", handler(|n: usize| vec![0u8; n])),
         (
-            // A thread that writes well-formed replies of 4 MiB without end, unasked (to fill
-            // the caller's memory), then the call's own value.
+            // The call's own value, then a thread that writes well-formed replies of 4 MiB
+            // without end, unasked (to fill the caller's memory). The thread starts writing a
+            // little after the value, so that the value is the call's reply even on a loaded
+            // machine (it wrote first there, and the test took the refusal one call early).
             "flood",
             handler(|(): ()| -> i64 {
                 std::thread::spawn(|| {
+                    std::thread::sleep(std::time::Duration::from_millis(200));
                     let value =
                         cg_worker::to_value(&vec![7u8; 4 << 20]).unwrap_or(cg_worker::Value::Null);
                     let bytes =
                         cg_worker::encode(&cg_worker::Reply::Value(value)).unwrap_or_default();
                     while cg_worker::frame::write(&mut std::io::stdout().lock(), &bytes).is_ok() {}
                 });
-                std::thread::sleep(std::time::Duration::from_millis(50));
                 1
             }),
         ),
