@@ -103,6 +103,9 @@ pub(crate) fn collect_from(
         });
         let mut h = Hasher::default();
         h.add(kit_hash.as_bytes());
+        // The entry's name is in the result (a kept result named the upload it was made from,
+        // not this one).
+        h.add(entry.as_bytes());
         h.add(options.config_text.as_bytes());
         h.add(&options.limits.wall.as_millis().to_le_bytes());
         h.add(&options.limits.memory_bytes.to_le_bytes());
@@ -124,7 +127,12 @@ pub(crate) fn collect_from(
             Err(why) => {
                 h.add(b"refused");
                 h.add(why.en.as_bytes());
-                format!("_{}", file_name(&entry))
+                // On the roster, a refused entry's result is its student's (an earlier graded
+                // `<student>.json` stood beside the refusal, and was what the guide says to read).
+                match mark.as_ref().and_then(|m| m.student.clone()) {
+                    Some(student) => student,
+                    None => format!("_{}", file_name(&entry)),
+                }
             }
         };
         used.entry(base.clone()).or_default().push(entry.clone());

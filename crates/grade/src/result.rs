@@ -461,7 +461,8 @@ pub fn class_csv(results: &[Value], lang: Lang) -> String {
         }
         row.push(r["score"].as_f64().unwrap_or(0.0).to_string());
         row.push(r["max_score"].as_f64().map(|s| s.to_string()).unwrap_or_default());
-        let flag = flag(r);
+        // A refused entry is marked too: its empty scores read as a graded 0 when sorted.
+        let flag = flag(r).or_else(|| problem(r));
         row.push(csv_field(&cg_core::quote::spreadsheet_cell(
             flag.as_ref().map_or("", |f| f.get(lang)),
         )));
@@ -618,8 +619,9 @@ fn roster_section(results: &[Value], absent: &[(String, String)], lang: Lang) ->
         if let Some(claimed) = cg["roster"]["claimed"].as_str() {
             let claimed = md_code(claimed, lang);
             claims.push(format!(
-                "- {entry}: {} {claimed}, {} {} ({})",
+                "- {entry}: {} {claimed}{} {} {} ({})",
                 t("student.toml は", "student.toml claims").get(lang),
+                t("、", ",").get(lang),
                 t("名簿では", "the roster says").get(lang),
                 cg["student"].as_str().unwrap_or("?"),
                 cg["roster"]["name"].as_str().unwrap_or("")

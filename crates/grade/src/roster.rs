@@ -46,8 +46,20 @@ pub struct Roster {
 const COLUMNS: [(&str, &[&str]); 3] = [
     ("student", &["student", "student number", "学生番号", "学籍番号"]),
     ("name", &["name", "氏名", "名前"]),
-    ("entry", &["entry", "submission", "participant", "提出物", "参加者"]),
+    ("entry", &["entry", "submission", "participant", "提出物", "参加者", "参加者 ID", "参加者ID"]),
 ];
+
+/// A roster's `entry` as Moodle's grading worksheet writes a participant in its ID column
+/// (`Participant 2004`, `参加者2004`): the participant ID; anything else as it is. The kit's own
+/// grades.csv writes that column, so a roster copied from it matched nobody.
+fn participant_id(entry: &str) -> &str {
+    let digits = ["Participant", "participant", "参加者"]
+        .iter()
+        .find_map(|p| entry.strip_prefix(p))
+        .map(str::trim_start)
+        .filter(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()));
+    digits.unwrap_or(entry)
+}
 
 /// Moodle's folder of one participant's files, `<name>_<ID>_assignsubmission_<plugin>_`:
 /// the participant ID.
@@ -181,14 +193,14 @@ impl Roster {
                         format!("{line}: student: {}", e.message(cg_core::lang::Lang::En)),
                     )
                 })?;
-            let entry = field(2);
+            let entry = participant_id(&field(2)).to_owned();
             if entry.is_empty() {
                 return Err(Text::new(
                     format!(
-                        "{line}: 学生 {student} の entry（提出物のフォルダ名か Moodle の参加者 ID）が空です"
+                        "{line}: 学生 {student} の entry（提出物のフォルダ名か Moodle の参加者 ID）が空です（提出していない学生も、Moodle の評定ワークシートの ID 列の値（参加者2004 など）を書けば「提出物のない学生」に並びます）"
                     ),
                     format!(
-                        "{line}: entry is empty for student {student} (the entry's folder name or Moodle participant ID)"
+                        "{line}: entry is empty for student {student} (the entry's folder name or Moodle participant ID; for a student who handed nothing in, write the ID column of Moodle's grading worksheet, Participant 2004 say, and they are listed among the students with no entry)"
                     ),
                 ));
             }
@@ -269,6 +281,14 @@ mod tests {
         assert_eq!(r.rows[0].name, "山田 太郎");
         assert_eq!(r.rows[1].name, "Roe, Jane");
         assert_eq!(r.find("777").map(|r| r.student.to_string()), Some("20260002".into()));
+        // The grading worksheet's ID column (`参加者2004`, `Participant 2001`) is the participant.
+        let r = Roster::parse(
+            "学生番号,氏名,参加者ID\n20260001,a,参加者2004\n20260002,b,Participant 2001\n",
+        )
+        .unwrap();
+        let moodle = |id: &str| format!("x_{id}_assignsubmission_file");
+        assert_eq!(r.find(&moodle("2004")).map(|r| r.student.to_string()), Some("20260001".into()));
+        assert_eq!(r.find(&moodle("2001")).map(|r| r.student.to_string()), Some("20260002".into()));
         // A comma-separated roster with a tab in a cell stays comma-separated.
         let r = Roster::parse("student,name,entry\n20260001,a\tb,e\n").unwrap();
         assert_eq!(r.rows[0].name, "a\tb");

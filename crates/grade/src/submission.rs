@@ -334,7 +334,8 @@ fn read_zip(path: &Path) -> Result<Files, Text> {
     let mut names = Vec::with_capacity(zip.len());
     for i in 0..zip.len() {
         let entry = zip.by_index_raw(i).map_err(|e| bad(&e))?;
-        let name = entry.name().map_err(|e| bad(&e))?.into_owned();
+        // Shift_JIS names (a Japanese Windows' zip) read as such, as in a Moodle download.
+        let name = crate::moodle::input::entry_name(&entry)?;
         if unsafe_name(&name) || entry.enclosed_name().is_none() {
             return Err(Text::new(
                 format!(
@@ -443,6 +444,31 @@ mod tests {
         let Err(why) = read(&folder_path("absent")) else { panic!("a missing path was read") };
         assert!(why.en.starts_with("cannot be read: "), "{}", why.en);
         assert_eq!(why.ja, "読めません: ファイルまたはフォルダがありません");
+    }
+
+    /// A zip with Shift_JIS names (a Japanese Windows' zip, no UTF-8 flag) names its folders
+    /// as written: they came out as CP437 (`ë█æΦ1/exercises/`) in a refusal.
+    #[test]
+    fn shift_jis_names_in_a_zip_are_read_as_such() {
+        let dir = folder("sjis-names");
+        // 課題1 in Shift_JIS: 89 DB 91 E8 31.
+        let folder_name = |tail: &str| {
+            let mut n = vec![0x89, 0xdb, 0x91, 0xe8, b'1'];
+            n.extend_from_slice(tail.as_bytes());
+            n
+        };
+        let zip = crate::moodle::fake::raw_zip(
+            &[
+                (folder_name("/exercises/src/a1.rs"), b"// v1".to_vec()),
+                (folder_name("b/exercises/src/a1.rs"), b"// v2".to_vec()),
+            ],
+            false,
+        );
+        let path = dir.join("sjis.zip");
+        std::fs::write(&path, zip).unwrap();
+        let why = read(&path).unwrap_err();
+        assert!(why.en.contains("(課題1/exercises/ and 課題1b/exercises/"), "{}", why.en);
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     /// A zip that holds one of the exercises' files twice is refused: which copy counts is not

@@ -138,7 +138,11 @@ fn refused_submissions_say_why_and_are_kept() {
     let csv = std::fs::read_to_string(out.join("class.csv")).unwrap();
     assert!(csv.starts_with("\u{feff}student,submission,"), "{csv}");
     assert_eq!(csv.lines().count(), 12, "{csv}");
-    assert!(csv.contains("\n,slip.zip,,,,,,0,,\n"), "{csv}");
+    // A refused entry's flag says so (its empty scores read as a graded 0 when sorted).
+    assert!(
+        csv.contains("\n,slip.zip,,,,,,0,,refused: zip entry /etc/cron.d/x has an unsafe path"),
+        "{csv}"
+    );
     let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
     assert!(md.contains("submissions: 11") && md.contains("## Not graded"), "{md}");
     assert_eq!(md.matches("\n- ").count(), 11, "{md}");
@@ -151,8 +155,9 @@ fn refused_submissions_say_why_and_are_kept() {
     assert_eq!(std::fs::read(out.join("_slip.zip.json")).unwrap(), before);
 }
 
-/// A refused entry on the roster is still the roster's student: its result, class.csv and
-/// summary.md name them (they said nothing, `"student": null`, and `?`); its line says it was
+/// A refused entry on the roster is still the roster's student: its result is
+/// `<student>.json` (an earlier graded one would stand beside `_<entry>.json`), and class.csv
+/// and summary.md name them (they said nothing, `"student": null`, and `?`); its line says it was
 /// refused; a submission without student.toml is told how to make one. An empty folder of
 /// submissions is an error, not empty results and exit 0.
 #[test]
@@ -194,8 +199,7 @@ fn a_refused_entry_keeps_its_roster_student_and_an_empty_folder_is_said() {
     );
     assert!(problem.ja.starts_with("受け付けられません: student.toml"), "{}", problem.ja);
     let v: Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("_nostudent.json")).unwrap())
-            .unwrap();
+        serde_json::from_str(&std::fs::read_to_string(out.join("20260001.json")).unwrap()).unwrap();
     assert_eq!(v["cg"]["student"], "20260001", "{v:#}");
     let csv = std::fs::read_to_string(out.join("class.csv")).unwrap();
     assert!(csv.contains("\n20260001,nostudent,"), "{csv}");

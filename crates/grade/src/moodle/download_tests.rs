@@ -234,10 +234,11 @@ fn the_roster_binds_participants_and_a_mismatch_is_flagged() {
         [
             ("Jane Roe_1002_assignsubmission_file_", "20260002"),
             ("John Smith_1003_assignsubmission_file_", "20260003"),
-            ("Mallory_1007_assignsubmission_file", "_Mallory_1007_assignsubmission_file"),
+            // Refused, and still the roster's student's result.
+            ("Mallory_1007_assignsubmission_file", "20260007"),
             ("Participant 1005_1005_assignsubmission_file_", "20260005"),
             ("Participant_1004_assignsubmission_file", "20260004"),
-            ("Twice Over_1008_assignsubmission_file", "_Twice_Over_1008_assignsubmission_file"),
+            ("Twice Over_1008_assignsubmission_file", "20260008"),
             ("山田 太郎_1001_assignsubmission_file", "20260001"),
             // Graded as the roster's student; the claim is kept.
             ("鈴木 花子_1006_assignsubmission_file", "20260006"),
@@ -382,6 +383,26 @@ fn two_versions_in_one_upload_are_refused_naming_both() {
         "{why}"
     );
     assert_eq!(beside("// in the zip").unwrap().1, "// in the zip");
+    // A whole kit uploaded: the kit's own crates/student/src/a1.rs is not beside the tree (it
+    // was refused as a second, different a1.rs); nor is a backup folder's.
+    let mut kit = fake::six("cg-kit/exercises/", "src/", "20260001");
+    kit.push(("cg-kit/crates/student/src/a1.rs".into(), b"// the kit's own".to_vec()));
+    let got = upload(
+        "kit",
+        vec![("cg-kit.zip".into(), fake::zip_of(&kit)), ("old/a1.rs".into(), b"// old".to_vec())],
+    );
+    assert_eq!(got.unwrap().1, "// a1 of 20260001");
+    // What macOS writes beside a zip on a USB stick (`._exercises.zip`, no zip) is no file of
+    // the upload's (it refused the upload as a broken zip).
+    let got = upload(
+        "appledouble",
+        vec![
+            ("exercises.zip".into(), zip("exercises/", "// mine")),
+            ("._exercises.zip".into(), b"\0\x05\x16\x07 not a zip".to_vec()),
+            ("__MACOSX/._a1.rs".into(), b"\0\x05\x16\x07".to_vec()),
+        ],
+    );
+    assert_eq!(got.unwrap().1, "// mine");
     // The zip without student.toml, uploaded beside it: taken.
     let mut files = fake::six("exercises/", "src/", "20260001");
     files.retain(|(n, _)| !n.ends_with("student.toml"));
@@ -413,5 +434,35 @@ fn a_download_zipped_again_on_macos_is_read() {
     assert_eq!(got.len(), 1, "{got:?}");
     assert_eq!(got[0].0, "Ann_1_assignsubmission_file");
     assert_eq!(got[0].1.as_ref().unwrap().0, "20260001");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A download unzipped on macOS (`download/` beside `__MACOSX/` and `.DS_Store`) is looked
+/// through; a folder that holds a download beside other things (the zip, a roster) refuses each
+/// download as no one student's: it was graded as the one participant whose `exercises/` lay
+/// two levels down, with full marks and exit 0.
+#[test]
+fn a_download_inside_a_folder_is_not_graded_as_one_student() {
+    let dir = fake::scratch("inside");
+    let items = fake::class();
+    fake::unpack(&items, &dir.join("mac/download"));
+    std::fs::create_dir_all(dir.join("mac/__MACOSX/download")).unwrap();
+    std::fs::write(dir.join("mac/__MACOSX/download/._x"), b"\0\x05").unwrap();
+    std::fs::write(dir.join("mac/.DS_Store"), b"Bud1").unwrap();
+    expect_class(&entries(&dir.join("mac")).unwrap());
+
+    fake::unpack(&items, &dir.join("beside/download"));
+    std::fs::write(dir.join("beside/download.zip"), fake::zip_of(&items)).unwrap();
+    std::fs::write(dir.join("beside/roster.csv"), fake::ROSTER).unwrap();
+    let got = read_all(&entries(&dir.join("beside")).unwrap());
+    let names: Vec<&str> = got.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(names, ["download", "download.zip", "roster.csv"]);
+    for (name, outcome) in &got[..2] {
+        let why = outcome.as_ref().unwrap_err();
+        assert!(
+            why.contains("is a Moodle download") && why.contains("give it itself"),
+            "{name}: {why}"
+        );
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }

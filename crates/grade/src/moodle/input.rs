@@ -212,9 +212,10 @@ pub fn entries(submissions: &Path) -> Result<Vec<Entry>, Text> {
 /// The folder itself, or its only subfolder when that holds a Moodle download and the folder
 /// holds nothing else (a download unpacked into a folder of its own).
 fn descend(dir: &Path) -> PathBuf {
+    // What macOS leaves beside a download it unzipped (`__MACOSX/`, `.DS_Store`) is not looked at.
     let visible = |d: &Path| -> Vec<std::fs::DirEntry> {
         std::fs::read_dir(d)
-            .map(|r| r.flatten().filter(|e| !e.file_name().to_string_lossy().starts_with('.')))
+            .map(|r| r.flatten().filter(|e| !hidden(&e.file_name().to_string_lossy())))
             .map(Iterator::collect)
             .unwrap_or_default()
     };
@@ -269,10 +270,26 @@ fn from_download_folder(dir: &Path) -> Result<Vec<Entry>, Text> {
     let mut groups: BTreeMap<String, Group> = BTreeMap::new();
     for e in std::fs::read_dir(dir).map_err(|e| cannot_read(&shown, &e))?.flatten() {
         let name = e.file_name().to_string_lossy().into_owned();
-        if name.starts_with('.') {
+        if hidden(&name) {
             continue;
         }
         match Name::parse(&name) {
+            // A Moodle download inside the folder (kept beside the unpacked one, or unzipped
+            // into a folder of its own next to `__MACOSX/`) is no one student's submission: it
+            // was graded as the one participant whose `exercises/` lay two levels down.
+            None if holds_a_download(&e.path()) => list.push(Entry {
+                source: Source::Refused(text(
+                    format!(
+                        "{name} は Moodle のダウンロード（参加者のフォルダ <氏名>_<参加者 ID>_assignsubmission_file を含む）で、1 人の提出物ではありません。cg grade にはそれ自体（{}）を渡してください",
+                        e.path().display()
+                    ),
+                    format!(
+                        "{name} is a Moodle download (it holds participants' folders, <name>_<participant ID>_assignsubmission_file), not one student's submission: give it itself to cg grade ({})",
+                        e.path().display()
+                    ),
+                )),
+                name,
+            }),
             None => list.push(Entry { name, source: Source::Path(e.path()) }),
             Some(n) => {
                 let g = groups.entry(n.participant.clone()).or_default();
@@ -289,10 +306,44 @@ fn from_download_folder(dir: &Path) -> Result<Vec<Entry>, Text> {
     Ok(list)
 }
 
+/// Whether `path` (an entry of a submissions folder) holds a Moodle download: a participant's
+/// folder or file at its top or one folder down (a folder, or a zip's entries).
+fn holds_a_download(path: &Path) -> bool {
+    let moodle = |name: &str| name.split('/').take(2).any(|part| Name::parse(part).is_some());
+    let Ok(meta) = std::fs::symlink_metadata(path) else { return false };
+    if meta.is_dir() {
+        let names = |d: &Path| -> Vec<(String, PathBuf)> {
+            std::fs::read_dir(d)
+                .map(|r| {
+                    r.flatten()
+                        .map(|e| (e.file_name().to_string_lossy().into_owned(), e.path()))
+                        .collect()
+                })
+                .unwrap_or_default()
+        };
+        return names(path).iter().any(|(name, sub)| {
+            moodle(name)
+                || (!hidden(name)
+                    && sub.is_dir()
+                    && names(sub).iter().any(|(inner, _)| moodle(inner)))
+        });
+    }
+    if !(meta.is_file() && is_zip(&path.to_string_lossy())) {
+        return false;
+    }
+    let Ok(file) = std::fs::File::open(path) else { return false };
+    let Ok(mut zip) = crate::zipfile::open(file, MAX_DOWNLOAD_ENTRIES) else { return false };
+    (0..zip.len()).any(|i| {
+        zip.by_index_raw(i).ok().and_then(|e| entry_name(&e).ok()).is_some_and(|n| moodle(&n))
+    })
+}
+
 /// A zip entry's name: its bytes as UTF-8 when they are UTF-8 (flagged or not), else as
 /// Shift_JIS (what a Japanese Windows writes without the flag), else as CP437 (the zip
 /// format's own); `\` as `/`.
-fn entry_name<R: Read + ?Sized>(entry: &zip::read::ZipFile<'_, R>) -> Result<String, Text> {
+pub(crate) fn entry_name<R: Read + ?Sized>(
+    entry: &zip::read::ZipFile<'_, R>,
+) -> Result<String, Text> {
     let raw = entry.name_raw();
     let name = match std::str::from_utf8(raw) {
         Ok(s) => s.to_owned(),
@@ -400,9 +451,16 @@ fn from_download_zip(path: &Path) -> Result<Vec<Entry>, Text> {
     Ok(list)
 }
 
-/// The files of an upload that may matter: the six files by name, and zips (looked into).
+/// The files of an upload that may matter: the six files by name, and zips (looked into);
+/// not what macOS adds (`._exercises.zip` beside a zip on a USB stick, `__MACOSX/`) or any
+/// other hidden file, which was read as a broken zip and refused the upload.
 fn candidate(rel: &str) -> bool {
-    is_zip(rel) || wanted_name(basename(rel))
+    !hidden(rel) && (is_zip(rel) || wanted_name(basename(rel)))
+}
+
+/// Whether a path has a hidden part (`.DS_Store`, `._a1.rs`, `.git/`) or is under `__MACOSX/`.
+fn hidden(rel: &str) -> bool {
+    rel.split('/').any(|part| part.starts_with('.') || part == "__MACOSX")
 }
 
 fn is_zip(rel: &str) -> bool {
@@ -540,7 +598,7 @@ fn inside(
         if entry.is_symlink() {
             return Err(within(link_refused(&name)));
         }
-        if entry.is_dir() || !wanted_name(basename(&name)) {
+        if entry.is_dir() || hidden(&name) || !wanted_name(basename(&name)) {
             continue;
         }
         let name = format!("{rel}/{name}");
@@ -661,19 +719,25 @@ fn loose(
     Ok(out)
 }
 
-/// The tree's files with what the upload holds beside the trees (a corrected `a1.rs` uploaded
-/// next to the zip): a copy of the same text is nothing; a file the tree lacks is taken; one
-/// that differs from the tree's is refused, naming both (it was ignored without a word).
+/// The tree's files with what the upload holds beside the trees — a file of the six at the top
+/// of the upload (a corrected `a1.rs` uploaded next to the zip) or in the folder that holds
+/// `exercises/` — : a copy of the same text is nothing; a file the tree lacks is taken; one that
+/// differs from the tree's is refused, naming both (it was ignored without a word). Files
+/// deeper down are not beside it: the kit's own `crates/student/src/a1.rs` in a whole kit
+/// uploaded, a backup folder.
 fn beside_tree(
     files: &[(String, Vec<u8>)],
     wanted: &[(String, Option<&'static str>)],
     bases: &[String],
     mut chosen: Files,
 ) -> Result<Files, Text> {
-    let in_tree = |rel: &str| bases.iter().any(|b| rel.starts_with(&format!("{b}exercises/")));
+    let beside = |rel: &str| {
+        let folder = &rel[..rel.len() - basename(rel).len()];
+        folder.is_empty() || bases.iter().any(|b| b == folder)
+    };
     for (w, module) in wanted {
         let outside: Vec<&(String, Vec<u8>)> =
-            files.iter().filter(|(rel, _)| basename(rel) == basename(w) && !in_tree(rel)).collect();
+            files.iter().filter(|(rel, _)| basename(rel) == basename(w) && beside(rel)).collect();
         let Some((first, bytes)) = outside.first() else { continue };
         let current = match module {
             Some(m) => chosen.modules.get(*m),

@@ -26,7 +26,7 @@ pub mod output;
 #[cfg(test)]
 mod download_tests;
 #[cfg(test)]
-mod fake;
+pub(crate) mod fake;
 #[cfg(test)]
 mod output_tests;
 
