@@ -36,6 +36,18 @@ pub struct Files {
     pub converted: BTreeMap<String, String>,
 }
 
+impl Files {
+    /// `bytes` as `module`'s file (`None`: `student.toml`).
+    pub(crate) fn put(&mut self, module: Option<&str>, bytes: Vec<u8>) {
+        match module {
+            Some(m) => {
+                self.modules.insert(m.to_owned(), bytes);
+            }
+            None => self.student_toml = Some(bytes),
+        }
+    }
+}
+
 /// The relative paths (inside `exercises/`) of the files a submission contributes.
 fn wanted() -> Vec<(String, Option<&'static str>)> {
     let mut w: Vec<(String, Option<&'static str>)> =
@@ -275,12 +287,7 @@ fn read_tree(base: &Path) -> Result<Files, Text> {
                 format!("cannot read {relative}: {}", why.en),
             )
         })?;
-        match module {
-            Some(m) => {
-                files.modules.insert(m.to_owned(), bytes);
-            }
-            None => files.student_toml = Some(bytes),
-        }
+        files.put(module, bytes);
     }
     Ok(files)
 }
@@ -413,12 +420,7 @@ fn zip_tree<R: Read + std::io::Seek>(
         if bytes.len() as u64 > MAX_FILE_BYTES {
             return Err(too_big(relative, bytes.len() as u64));
         }
-        match module {
-            Some(m) => {
-                files.modules.insert((*m).to_owned(), bytes);
-            }
-            None => files.student_toml = Some(bytes),
-        }
+        files.put(*module, bytes);
     }
     Ok(files)
 }

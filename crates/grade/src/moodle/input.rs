@@ -212,25 +212,29 @@ pub fn entries(submissions: &Path) -> Result<Vec<Entry>, Text> {
 /// The folder itself, or its only subfolder when that holds a Moodle download and the folder
 /// holds nothing else (a download unpacked into a folder of its own).
 fn descend(dir: &Path) -> PathBuf {
-    // What macOS leaves beside a download it unzipped (`__MACOSX/`, `.DS_Store`) is not looked at.
-    let visible = |d: &Path| -> Vec<std::fs::DirEntry> {
-        std::fs::read_dir(d)
-            .map(|r| r.flatten().filter(|e| !hidden(&e.file_name().to_string_lossy())))
-            .map(Iterator::collect)
-            .unwrap_or_default()
-    };
-    let moodle = |entries: &[std::fs::DirEntry]| {
-        entries.iter().any(|e| Name::parse(&e.file_name().to_string_lossy()).is_some())
-    };
     let top = visible(dir);
     if let [only] = top.as_slice()
-        && !moodle(&top)
+        && !participants(&top)
         && only.file_type().is_ok_and(|t| t.is_dir())
-        && moodle(&visible(&only.path()))
+        && participants(&visible(&only.path()))
     {
         return only.path();
     }
     dir.to_path_buf()
+}
+
+/// The entries of a folder, but what macOS leaves beside a download it unzipped (`__MACOSX/`,
+/// `.DS_Store`) and other hidden ones.
+fn visible(dir: &Path) -> Vec<std::fs::DirEntry> {
+    std::fs::read_dir(dir)
+        .map(|r| r.flatten().filter(|e| !hidden(&e.file_name().to_string_lossy())))
+        .map(Iterator::collect)
+        .unwrap_or_default()
+}
+
+/// Whether a folder's `entries` hold a Moodle participant's folder or file.
+fn participants(entries: &[std::fs::DirEntry]) -> bool {
+    entries.iter().any(|e| Name::parse(&e.file_name().to_string_lossy()).is_some())
 }
 
 /// A participant's items while the download is read.
@@ -309,30 +313,20 @@ fn from_download_folder(dir: &Path) -> Result<Vec<Entry>, Text> {
 /// Whether `path` (an entry of a submissions folder) holds a Moodle download: a participant's
 /// folder or file at its top or one folder down (a folder, or a zip's entries).
 fn holds_a_download(path: &Path) -> bool {
-    let moodle = |name: &str| name.split('/').take(2).any(|part| Name::parse(part).is_some());
     let Ok(meta) = std::fs::symlink_metadata(path) else { return false };
     if meta.is_dir() {
-        let names = |d: &Path| -> Vec<(String, PathBuf)> {
-            std::fs::read_dir(d)
-                .map(|r| {
-                    r.flatten()
-                        .map(|e| (e.file_name().to_string_lossy().into_owned(), e.path()))
-                        .collect()
-                })
-                .unwrap_or_default()
-        };
-        return names(path).iter().any(|(name, sub)| {
-            moodle(name)
-                || (!hidden(name)
-                    && sub.is_dir()
-                    && names(sub).iter().any(|(inner, _)| moodle(inner)))
-        });
+        let top = visible(path);
+        return participants(&top)
+            || top.iter().any(|e| {
+                e.file_type().is_ok_and(|t| t.is_dir()) && participants(&visible(&e.path()))
+            });
     }
     if !(meta.is_file() && is_zip(&path.to_string_lossy())) {
         return false;
     }
     let Ok(file) = std::fs::File::open(path) else { return false };
     let Ok(mut zip) = crate::zipfile::open(file, MAX_DOWNLOAD_ENTRIES) else { return false };
+    let moodle = |name: &str| name.split('/').take(2).any(|part| Name::parse(part).is_some());
     (0..zip.len()).any(|i| {
         zip.by_index_raw(i).ok().and_then(|e| entry_name(&e).ok()).is_some_and(|n| moodle(&n))
     })
@@ -617,7 +611,7 @@ fn resolve(files: Vec<(String, Vec<u8>)>) -> Result<Files, Text> {
     if bases.len() > submission::MAX_TREES {
         return Err(submission::too_many_trees(bases.len()));
     }
-    let mut out = if bases.is_empty() {
+    let out = if bases.is_empty() {
         loose(&files, &wanted)?
     } else {
         let mut trees = Vec::new();
@@ -633,8 +627,7 @@ fn resolve(files: Vec<(String, Vec<u8>)>) -> Result<Files, Text> {
             "neither exercises/ nor a1.rs … s.rs and student.toml found (hand in the exercises/ folder as a zip)".into(),
         ));
     }
-    out = submission::screened(out)?;
-    Ok(out)
+    submission::screened(out)
 }
 
 /// Puts `bytes` for `module` (`None`: `student.toml`) into `out`, unless too big.
@@ -642,12 +635,7 @@ fn put(out: &mut Files, rel: &str, module: Option<&str>, bytes: &[u8]) -> Result
     if bytes.len() as u64 > MAX_FILE_BYTES {
         return Err(too_big(rel, bytes.len() as u64, MAX_FILE_BYTES));
     }
-    match module {
-        Some(m) => {
-            out.modules.insert(m.to_owned(), bytes.to_vec());
-        }
-        None => out.student_toml = Some(bytes.to_vec()),
-    }
+    out.put(module, bytes.to_vec());
     Ok(())
 }
 
