@@ -1,11 +1,11 @@
 //! `cg grade <SUBMISSIONS>`: grades every submission with the kit's own checks in a sandbox
 //! (instructors); see `cg_grade` and docs/instructor-guide.md.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Duration;
 
-use cg_core::lang::{Lang, t};
-use cg_grade::{Config, Options};
+use cg_core::lang::{Lang, Text, t};
+use cg_grade::{Config, Graded, Options};
 
 /// Options of `cg grade`.
 #[derive(clap::Args)]
@@ -87,7 +87,32 @@ pub(crate) fn limits(time_limit: u64, memory_limit: u64) -> cg_sandbox::Limits {
     }
 }
 
+/// Why `cg grade` ends as bad input (exit 2) although it wrote every result: it saw entries in
+/// `submissions` and graded none of them (each refused, or not gradable: a wrong folder given,
+/// every upload a `.rar`). `None` when one was graded; an empty folder is an error before this.
+/// A class of which some were graded ends 0: the count line says how many were not.
+#[must_use]
+pub fn nothing_graded(graded: &[Graded], submissions: &Path) -> Option<Text> {
+    if graded.is_empty() || graded.iter().any(|g| g.problem.is_none()) {
+        return None;
+    }
+    let count = graded.len();
+    let shown = cg_core::quote::visible(&submissions.display().to_string());
+    Some(Text::new(
+        format!(
+            "{shown} の {count} 件はどれも採点されていません（理由は上の各行と summary.md の「採点できなかった提出物」）。{shown} が提出物のフォルダか Moodle の「すべての提出をダウンロードする」のものか確かめてください"
+        ),
+        format!(
+            "none of the {count} entries of {shown} was graded (why: on each line above and in summary.md's \"Not graded\"): check that {shown} is the folder of submissions or Moodle's \"Download all submissions\""
+        ),
+    ))
+}
+
 /// `cg grade`.
+///
+/// # Errors
+/// What stopped it (printed, exit 2); also when every entry it saw was refused
+/// ([`nothing_graded`]), after writing their results.
 pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     if !(args.moodle_max_grade.is_finite() && args.moodle_max_grade > 0.0) {
         return Err(t(
@@ -177,5 +202,54 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
             t("人に評点", "with a grade").get(lang)
         );
     }
-    Ok(())
+    // Results written, none graded: not exit 0, which read as a class graded.
+    match nothing_graded(&graded, &args.submissions) {
+        Some(why) => Err(why.get(lang).to_owned()),
+        None => Ok(()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn entry(name: &str, problem: Option<&str>) -> Graded {
+        Graded {
+            entry: name.to_owned(),
+            name: format!("_{name}"),
+            score: 0.0,
+            max_score: None,
+            skipped: false,
+            flag: None,
+            problem: problem
+                .map(|p| Text::new(format!("受け付けられません: {p}"), format!("refused: {p}"))),
+        }
+    }
+
+    /// Every entry refused (a wrong folder given, every upload a .rar) is not a class graded: it
+    /// ended 0, as a class all graded does. Some graded and some refused still ends 0.
+    #[test]
+    fn a_run_that_graded_none_of_its_entries_says_so() {
+        let folder = Path::new("Downloads/wrong");
+        let refused = [entry("a.rar", Some("not a zip")), entry("b.pdf", Some("no exercises/"))];
+        let why = nothing_graded(&refused, folder).expect("nothing graded");
+        assert_eq!(
+            why.en,
+            "none of the 2 entries of Downloads/wrong was graded (why: on each line above and in summary.md's \"Not graded\"): check that Downloads/wrong is the folder of submissions or Moodle's \"Download all submissions\""
+        );
+        assert!(
+            why.ja.starts_with("Downloads/wrong の 2 件はどれも採点されていません"),
+            "{}",
+            why.ja
+        );
+        // One graded: the count line says the rest.
+        let mut some = refused.to_vec();
+        some.push(entry("c.zip", None));
+        assert_eq!(nothing_graded(&some, folder), None);
+        // Kept from an earlier run, all refused: still nothing graded.
+        let kept: Vec<Graded> =
+            refused.iter().map(|g| Graded { skipped: true, ..g.clone() }).collect();
+        assert!(nothing_graded(&kept, folder).is_some());
+        assert_eq!(nothing_graded(&[], folder), None);
+    }
 }

@@ -42,6 +42,8 @@ pub(crate) struct Pending {
     pub(crate) roster: Option<result::RosterMark>,
     pub(crate) hash: String,
     pub(crate) files: Result<(submission::Files, cg_assign::StudentFile), Text>,
+    /// The report inside the submission ([`crate::inside`]), and why one found was not read.
+    pub(crate) report: (Option<crate::inside::Found>, Vec<Text>),
 }
 
 /// The entries of the submissions folder (or of a Moodle download: [`moodle::input`]), read
@@ -101,6 +103,9 @@ pub(crate) fn collect_from(
                 }
             }
         });
+        // The report of a submission that is graded: its numbers are checked against its functions.
+        let report =
+            if files.is_ok() { crate::inside::report(&source) } else { (None, Vec::new()) };
         let mut h = Hasher::default();
         h.add(kit_hash.as_bytes());
         // The entry's name is in the result (a kept result named the upload it was made from,
@@ -122,6 +127,14 @@ pub(crate) fn collect_from(
                     h.add(bytes);
                 }
                 h.add(f.student_toml.as_deref().unwrap_or_default());
+                // The report changed is checked again (a result kept had the old one's numbers).
+                if let Some(found) = &report.0 {
+                    h.add(found.path.as_bytes());
+                    h.add(found.text.as_bytes());
+                }
+                for note in &report.1 {
+                    h.add(note.en.as_bytes());
+                }
                 student.student.to_string()
             }
             Err(why) => {
@@ -143,6 +156,7 @@ pub(crate) fn collect_from(
             roster: mark,
             hash: h.hex(),
             files,
+            report,
         });
     }
     // Entries that claim one student number: none takes the student's file; each is named

@@ -32,13 +32,16 @@ pub mod config;
 mod entries;
 pub mod gradescope;
 pub mod handout;
+pub mod inside;
 pub mod moodle;
 pub mod progress;
+pub mod report;
 pub mod result;
 pub mod roster;
 mod slot;
 pub use cg_assign::screen;
 pub mod submission;
+mod unread;
 pub mod zipfile;
 
 pub use config::Config;
@@ -433,7 +436,7 @@ pub fn grade_with(
                         }
                         Ok((files, student)) => grade_one(
                             &mut slot,
-                            (files, student),
+                            (files, student, &p.report),
                             stubs,
                             (pristine, skip),
                             options,

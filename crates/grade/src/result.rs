@@ -39,6 +39,8 @@ pub struct Facts {
     pub build: Option<Duration>,
     /// The runs of its checks.
     pub run: Option<Duration>,
+    /// Its report, checked but not scored ([`crate::report`]).
+    pub report: crate::report::Facts,
 }
 
 /// What the roster (`cg grade --roster`) says of one entry.
@@ -301,6 +303,10 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
     for (m, (s, x)) in &per {
         let _ = writeln!(output, "{m}: {} / {}", round(*s), round(*x));
     }
+    let report = crate::report::to_json(&facts.report, lang);
+    if let Some(line) = crate::report::line(&report, lang) {
+        let _ = writeln!(output, "{line}");
+    }
     let secs = |d: Option<Duration>| d.map(|d| round(d.as_secs_f64()));
     let assignments: serde_json::Map<String, Value> = per
         .iter()
@@ -330,9 +336,11 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
             "compile_errors": facts.compile_errors,
             "converted": facts.converted,
             "assignments": assignments,
+            "report": report,
             "timings": {
                 "build_s": secs(facts.build),
                 "run_s": secs(facts.run),
+                "report_s": secs(facts.report.time),
                 "total_s": round(meta.total.as_secs_f64()),
             },
         },
@@ -384,7 +392,7 @@ pub fn md_code(text: &str, lang: Lang) -> String {
 
 /// The kit's own words (a refusal's reason) as a code span, whole: the student's names in them
 /// are already shortened, and the reason was cut at 64 characters, often before it said why.
-fn md_words(text: &str) -> String {
+pub(crate) fn md_words(text: &str) -> String {
     md_span(&cg_core::quote::visible(text))
 }
 
@@ -438,13 +446,14 @@ pub fn flag(result: &Value) -> Option<Text> {
 }
 
 /// `class.csv`: one row per result — student, submission, each assignment's score (a column
-/// per ID of the kit's list), score, max_score, and the result's [`flag`] (empty when none).
+/// per ID of the kit's list), score, max_score, the report's file, numbers checked and mistakes
+/// ([`crate::report::csv_cells`], not scored), and the result's [`flag`] (empty when none).
 #[must_use]
 pub fn class_csv(results: &[Value], lang: Lang) -> String {
     let columns: Vec<&str> = ["student", "submission"]
         .into_iter()
         .chain(crate::submission::MODULES.iter().copied())
-        .chain(["score", "max_score", "flag"])
+        .chain(["score", "max_score", "report", "report_checked", "report_mistakes", "flag"])
         .collect();
     let mut out = columns.join(",") + "\n";
     for r in results {
@@ -461,6 +470,9 @@ pub fn class_csv(results: &[Value], lang: Lang) -> String {
         }
         row.push(r["score"].as_f64().unwrap_or(0.0).to_string());
         row.push(r["max_score"].as_f64().map(|s| s.to_string()).unwrap_or_default());
+        let [file, checked, mistakes] = crate::report::csv_cells(r);
+        row.push(csv_field(&cg_core::quote::spreadsheet_cell(&file)));
+        row.extend([checked, mistakes]);
         // A refused entry is marked too: its empty scores read as a graded 0 when sorted.
         let flag = flag(r).or_else(|| problem(r));
         row.push(csv_field(&cg_core::quote::spreadsheet_cell(
@@ -524,6 +536,7 @@ pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) ->
     for (_, (name, failed, of)) in &rows {
         let _ = writeln!(out, "| {} | {failed} | {of} |", name.replace('|', "\\|"));
     }
+    out.push_str(&crate::report::summary_section(results, lang));
     let uneven = uneven_maxima(results);
     if !uneven.is_empty() {
         let _ = write!(

@@ -10,6 +10,7 @@ use std::time::{Duration, Instant};
 use cg_core::lang::t;
 use cg_sandbox::Job;
 
+use crate::inside::Found;
 use crate::{
     AssignmentRun, Baseline, GradeError, Launcher, Options, Text, build, handout, result,
     slot_content, submission,
@@ -102,21 +103,35 @@ pub(crate) fn prepare_copy(slot: &Slot, first: &Slot, kit_hash: &str) -> Result<
     std::fs::write(slot.marker(), kit_hash).map_err(|e| fail(e.to_string()))
 }
 
+/// What [`run_checks`] gives: each assignment's run, the checks of those that died, the checks'
+/// time, and the report's check.
+type Runs = (BTreeMap<String, AssignmentRun>, Baseline, Duration, crate::report::Facts);
+
 /// Runs every assignment's checks for `student` in this process, the submission's functions in
 /// a worker (`cg-check-runner`, built in the slot) in the sandbox: each check's calls within
 /// [`cg_sandbox::Limits::wall`], the worker within the rest of `options.limits`. Nothing the worker prints
-/// is read as a result: the checks, their list and their outcomes are the kit's, here.
+/// is read as a result: the checks, their list and their outcomes are the kit's, here. Then the
+/// `report`'s numbers, against the data the same worker's functions give ([`crate::report`]).
 fn run_checks(
     slot: &Slot,
-    student: &cg_assign::StudentFile,
+    (student, report): (&cg_assign::StudentFile, &(Option<Found>, Vec<Text>)),
     options: &Options,
     launcher: Launcher,
-) -> (BTreeMap<String, AssignmentRun>, Baseline, Duration) {
+) -> Runs {
     let started = Instant::now();
     let a = cg_assign::Variants::for_student(&student.student, student.table);
     // The checks could not run: each assignment's list of checks still comes from the kit (its
     // checks against functions that give nothing), so the maximum score is the same.
+    let (found, notes) = report;
     let died = |how: Text| {
+        // A report found is said not checked, with why.
+        let mut facts = crate::report::Facts { notes: notes.clone(), ..Default::default() };
+        if let Some(found) = found {
+            facts.notes.push(Text::new(
+                format!("{} は確かめられませんでした: {}", found.path, how.ja),
+                format!("{} was not checked: {}", found.path, how.en),
+            ));
+        }
         let run = AssignmentRun::Died { how, stderr: String::new() };
         let nothing = cg_assign::Impls::worker();
         let mut runs = BTreeMap::new();
@@ -126,7 +141,7 @@ fn run_checks(
             baseline.insert(w.id().to_owned(), list);
             runs.insert(w.id().to_owned(), run.clone());
         }
-        (runs, baseline, started.elapsed())
+        (runs, baseline, started.elapsed(), facts)
     };
     let _ = std::fs::remove_dir_all(&slot.run);
     if let Err(e) = std::fs::create_dir_all(&slot.run) {
@@ -154,18 +169,30 @@ fn run_checks(
     for (k, v) in launch.env {
         worker = worker.env(k, v);
     }
-    let (reports, _) = a.reports_in_worker(cg_assign::Which::ALL, worker, options.limits.wall);
+    let (reports, worker) = a.reports_in_worker(cg_assign::Which::ALL, worker, options.limits.wall);
     let runs = reports
         .into_iter()
         .map(|r| (r.assignment.clone(), AssignmentRun::Report(r.to_json())))
         .collect();
-    (runs, Baseline::new(), started.elapsed())
+    let checks_time = started.elapsed();
+    let mut checked = crate::report::Facts { notes: notes.clone(), ..Default::default() };
+    if let Some(found) = found {
+        let begun = Instant::now();
+        let (outcome, _) = crate::report::check(&a, found, worker, options.limits.wall);
+        checked.checked = Some(outcome);
+        checked.time = Some(begun.elapsed());
+    }
+    (runs, Baseline::new(), checks_time, checked)
 }
 
 /// Grades one submission in `slot`; returns the result JSON.
 pub(crate) fn grade_one(
     slot: &mut Slot,
-    (files, student): (&submission::Files, &cg_assign::StudentFile),
+    (files, student, report): (
+        &submission::Files,
+        &cg_assign::StudentFile,
+        &(Option<Found>, Vec<Text>),
+    ),
     stubs: &BTreeMap<String, String>,
     pristine: (&str, &(dyn Fn(&Path) -> bool + Sync)),
     options: &Options,
@@ -289,7 +316,8 @@ pub(crate) fn grade_one(
     if facts.fatal.is_some() {
         return facts;
     }
-    let (runs, baseline, run_time) = run_checks(slot, student, options, launcher);
+    let (runs, baseline, run_time, report) = run_checks(slot, (student, report), options, launcher);
+    facts.report = report;
     facts.runs = runs;
     facts.baseline = baseline;
     facts.run = Some(run_time);

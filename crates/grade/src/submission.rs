@@ -8,6 +8,7 @@ use std::io::Read;
 use std::path::{Path, PathBuf};
 
 use crate::Text;
+use crate::unread::{Unopened, files_in, nothing_to_grade, other_archive};
 use cg_core::lang::Lang;
 // A name from a submission (a zip's entry, a file's) as a message quotes it: at most 64
 // characters, nothing hidden; messages go to the instructor's terminal, the feedback and
@@ -86,10 +87,17 @@ pub fn read(path: &Path) -> Result<Files, Text> {
         // Only a plain file: a FIFO named .zip would be waited on for ever.
         read_zip(path)?
     } else {
-        return Err(Text::new(
-            "フォルダでも .zip でもありません",
-            "neither a folder nor a .zip file",
-        ));
+        let neither =
+            Text::new("フォルダでも .zip でもありません", "neither a folder nor a .zip file");
+        let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        // A .7z or .rar handed in for a zip: said as such.
+        return Err(match other_archive(&name) {
+            Some(why) => Text::new(
+                format!("{}。{}", neither.ja, why.ja),
+                format!("{}: {}", neither.en, why.en),
+            ),
+            None => neither,
+        });
     };
     screened(files)
 }
@@ -234,6 +242,11 @@ fn read_folder(dir: &Path) -> Result<Files, Text> {
     }
     let mut found = Vec::new();
     find_bases(dir, 2, &mut found);
+    if found.is_empty() {
+        return Err(nothing_to_grade(&no_exercises(), &files_in(dir), |_| {
+            Some(Unopened::InFolder)
+        }));
+    }
     if found.len() > MAX_TREES {
         return Err(too_many_trees(found.len()));
     }
@@ -339,6 +352,8 @@ fn read_zip(path: &Path) -> Result<Files, Text> {
     let mut zip = crate::zipfile::open(file, MAX_ZIP_ENTRIES)?;
     // Every entry is looked at: one hostile entry refuses the whole submission.
     let mut names = Vec::with_capacity(zip.len());
+    // Its files but hidden ones, for a refusal that names them.
+    let mut files = Vec::new();
     for i in 0..zip.len() {
         let entry = zip.by_index_raw(i).map_err(|e| bad(&e))?;
         // Shift_JIS names (a Japanese Windows' zip) read as such, as in a Moodle download.
@@ -364,10 +379,17 @@ fn read_zip(path: &Path) -> Result<Files, Text> {
         if entry.size() > MAX_FILE_BYTES.saturating_mul(64) {
             return Err(too_big(&name, entry.size()));
         }
-        names.push(name.replace('\\', "/"));
+        let name = name.replace('\\', "/");
+        if !entry.is_dir() && !crate::moodle::input::hidden(&name) {
+            files.push(name.clone());
+        }
+        names.push(name);
     }
     // Each prefix under which a wanted file lies is a tree; trees that differ are refused.
     let found = bases(names.iter().map(String::as_str));
+    if found.is_empty() {
+        return Err(nothing_to_grade(&no_exercises(), &files, |_| Some(Unopened::InZip)));
+    }
     if found.len() > MAX_TREES {
         return Err(too_many_trees(found.len()));
     }
@@ -655,6 +677,112 @@ mod tests {
         let converted: Vec<(&str, &str)> =
             files.converted.iter().map(|(m, e)| (m.as_str(), e.as_str())).collect();
         assert_eq!(converted, [("a1", "Shift_JIS"), ("a2", "UTF-16LE")]);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// A submission with no `exercises/` (a folder or a zip given per student), or a file that is
+    /// neither, is refused naming what it holds and, where it can be told, why it was not read:
+    /// as a Moodle upload is (`moodle::download_tests`). It said only "no exercises/ found".
+    #[test]
+    fn a_submission_without_exercises_is_refused_naming_what_it_holds() {
+        use std::io::Write as _;
+        let dir = folder("named");
+        let zip = |name: &str, files: &[(&str, &[u8])]| {
+            let path = dir.join(name);
+            let mut z = zip::ZipWriter::new(std::fs::File::create(&path).unwrap());
+            let options = zip::write::SimpleFileOptions::default();
+            for (n, bytes) in files {
+                z.start_file(*n, options).unwrap();
+                z.write_all(bytes).unwrap();
+            }
+            z.finish().unwrap();
+            path
+        };
+        let lead =
+            "no exercises/ found (it must hold exercises/src/a1.rs … and exercises/student.toml)";
+        let lead_ja = "exercises/ が見つかりません（exercises/src/a1.rs … と exercises/student.toml を入れてください）";
+
+        // A zip of the loose files: a1.rs is not in exercises/.
+        let path = zip("loose.zip", &[("a1.rs", b"fn f() {}"), ("student.toml", b"x")]);
+        let why = read(&path).unwrap_err();
+        assert_eq!(
+            why.en,
+            format!(
+                "{lead}; it holds a1.rs, student.toml: a1.rs is not in exercises/ (only exercises/src/a1.rs … s.rs and exercises/student.toml are read): hand in the whole exercises/ folder"
+            )
+        );
+        assert_eq!(
+            why.ja,
+            format!(
+                "{lead_ja}。中身: a1.rs、student.toml。a1.rs が exercises/ の中にありません（読むのは exercises/src/a1.rs … s.rs と exercises/student.toml だけです）。exercises/ フォルダごと提出してください"
+            )
+        );
+        // A zip in the zip is not opened.
+        let inner = std::fs::read(zip("inner.zip", &[("exercises/student.toml", b"x")])).unwrap();
+        let path = zip("outer.zip", &[("inner.zip", &inner)]);
+        let why = read(&path).unwrap_err();
+        assert!(
+            why.en.ends_with("; it holds inner.zip: inner.zip is a zip inside a zip, which is not opened: zip the exercises/ folder itself, once"),
+            "{}",
+            why.en
+        );
+        // An empty zip.
+        let why = read(&zip("empty.zip", &[])).unwrap_err();
+        assert_eq!(
+            why.en,
+            format!("{lead}; it holds no file: hand in the exercises/ folder as a zip")
+        );
+        assert_eq!(
+            why.ja,
+            format!(
+                "{lead_ja}。中身: ファイルがありません。exercises/ フォルダを zip にして提出してください"
+            )
+        );
+
+        // A folder: its files, all the way down; a zip in it is not opened; hidden files are
+        // none of them.
+        let sub = dir.join("taro");
+        std::fs::create_dir_all(sub.join("kadai/src")).unwrap();
+        for (n, text) in
+            [("kadai/src/main.rs", "fn main() {}"), ("a1.rs.txt", "// a1"), (".DS_Store", "")]
+        {
+            std::fs::write(sub.join(n), text).unwrap();
+        }
+        let why = read(&sub).unwrap_err();
+        assert!(
+            why.en.ends_with("; it holds a1.rs.txt, kadai/src/main.rs: a1.rs.txt is a text file whose name hides .txt: rename it a1.rs (Explorer shows the .txt once View → File name extensions is on)"),
+            "{}",
+            why.en
+        );
+        std::fs::write(sub.join("exercises.zip"), &inner).unwrap();
+        std::fs::remove_file(sub.join("a1.rs.txt")).unwrap();
+        let why = read(&sub).unwrap_err();
+        assert!(
+            why.en.ends_with("; it holds exercises.zip, kadai/src/main.rs: exercises.zip is a zip inside a folder, which is not opened: hand in the zip itself, or its exercises/ folder unpacked"),
+            "{}",
+            why.en
+        );
+        assert!(
+            why.ja.contains("exercises.zip はフォルダの中の zip なので開きません。"),
+            "{}",
+            why.ja
+        );
+
+        // A file that is neither a folder nor a zip: a .rar is said to be one.
+        let rar = dir.join("taro.rar");
+        std::fs::write(&rar, b"Rar!").unwrap();
+        let why = read(&rar).unwrap_err();
+        assert!(
+            why.en.starts_with("neither a folder nor a .zip file: taro.rar is a .rar archive, not a zip, and is not read: zip the exercises/ folder instead"),
+            "{}",
+            why.en
+        );
+        assert!(
+            why.ja
+                .starts_with("フォルダでも .zip でもありません。taro.rar は .rar の圧縮ファイルで"),
+            "{}",
+            why.ja
+        );
         let _ = std::fs::remove_dir_all(&dir);
     }
 

@@ -15,6 +15,7 @@ use std::time::{Duration, Instant};
 
 use cg_core::lang::Lang;
 use cg_grade::{Config, Options};
+use cg_harness::TableVersion;
 use cg_sandbox::{Isolation, Limits};
 use serde_json::Value;
 
@@ -59,6 +60,18 @@ fn zip(path: &Path, entries: &[(&str, String)]) {
         z.write_all(text.as_bytes()).unwrap();
     }
     z.finish().unwrap();
+}
+
+/// A report's vertex table for `student`'s variant, as the lecture writes it (`V0 (0.0, 1.0,
+/// 0.0)`, four decimals), from the kit's own vertices; with `wrong`, that vertex's x is 0.5 off.
+fn vertex_rows(student: &str, wrong: Option<usize>) -> String {
+    let variant = cg_assign::Variants::for_student(&student.parse().unwrap(), TableVersion::V1);
+    let mut md = String::from("# Report\n\n## Vertices\n\n");
+    for (k, v) in cg_assign::cg_a1::SpecExt::expected_vertices(&variant.a1).iter().enumerate() {
+        let x = if wrong == Some(k) { v.x + 0.5 } else { v.x };
+        md.push_str(&format!("V{k} ({x:.4}, {:.4}, {:.4})\n", v.y, v.z));
+    }
+    md
 }
 
 fn tests_of(result: &Value) -> Vec<(String, String, f64)> {
@@ -109,6 +122,8 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         .collect();
     entries.push(("handin/exercises/student.toml".into(), student_toml("20260001")));
     entries.push(("handin/notes.txt".into(), "hello".into()));
+    // Its report beside exercises/, every vertex right.
+    entries.push(("handin/report/report.md".into(), vertex_rows("20260001", None)));
     let refs: Vec<(&str, String)> = entries.iter().map(|(n, t)| (n.as_str(), t.clone())).collect();
     zip(&subs.join("01-correct.zip"), &refs);
     // 2. A classic mistake: the first face listed clockwise.
@@ -118,9 +133,20 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         "let mut v: Vec<[u32; 3]> = canonical_faces(&spec.shape).iter().map(|f| f.map(|c| map[c as usize])).collect(); v[0].swap(1, 2); v",
     );
     folder(&subs.join("02-reversed"), "20260002", &[("a1", reversed)]);
+    // Its report has V1 wrong.
+    let report_02 = subs.join("02-reversed/report/report.md");
+    std::fs::create_dir_all(report_02.parent().unwrap()).unwrap();
+    std::fs::write(&report_02, vertex_rows("20260002", Some(1))).unwrap();
     // 3. a2 does not compile.
     let broken = edit(&solution("a2"), "pub fn camera(", "pub fn camera(;");
     folder(&subs.join("03-a2-syntax"), "20260003", &[("a2", broken)]);
+    // A report in LaTeX without one number in the notation: nothing checked, said so.
+    std::fs::create_dir_all(subs.join("03-a2-syntax/report")).unwrap();
+    std::fs::write(
+        subs.join("03-a2-syntax/report/report.tex"),
+        "\\section{Polygon model}\nThe vertices are in the figure.\n",
+    )
+    .unwrap();
     // 4. a1 loops forever.
     let looping = edit(
         &solution("a1"),
@@ -128,6 +154,10 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         "pub fn vertices(spec: &Spec) -> Vec<Vec3> {\n    #[allow(clippy::empty_loop)]\n    loop {}\n",
     );
     folder(&subs.join("04-loop"), "20260004", &[("a1", looping)]);
+    // A report whose vertices cannot be derived (vertices() loops): not checked, and the
+    // grading goes on.
+    std::fs::create_dir_all(subs.join("04-loop/report")).unwrap();
+    std::fs::write(subs.join("04-loop/report/report.md"), vertex_rows("20260004", None)).unwrap();
     // 5. a3 allocates without bound; s panics. The blocks are zeroed (fresh pages, not
     // written), so the hoard reaches the address-space limit in milliseconds: a hoard that
     // wrote 2 GiB first could, on a loaded 2-core host, run past the 5 s budget below and be
@@ -318,12 +348,65 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
     assert!(slip["cg"]["refused"].as_str().unwrap().contains("../../evil.rs"), "{slip:#}");
     assert!(!base.join("evil.rs").exists() && !subs.join("../evil.rs").exists());
 
+    // The reports (not scored: every score above is the checks' alone). The correct one: every
+    // vertex's three numbers checked and right.
+    let n = cg_assign::cg_a1::SpecExt::expected_vertices(
+        &cg_assign::Variants::for_student(&"20260001".parse().unwrap(), TableVersion::V1).a1,
+    )
+    .len() as u64;
+    let report = |r: &Value| r["cg"]["report"].clone();
+    let correct = report(&results[0]);
+    assert_eq!(correct["report"], "handin/report/report.md", "{correct:#}");
+    assert_eq!(correct["checked"].as_u64(), Some(3 * n), "{correct:#}");
+    assert_eq!((correct["mistakes"].as_u64(), &correct["ok"]), (Some(0), &Value::Bool(true)));
+    assert_eq!(correct["scored"], false);
+    let output = results[0]["output"].as_str().unwrap();
+    assert!(
+        output.contains(&format!(
+            "report (not scored): handin/report/report.md: {} numbers checked; every one follows from the data.",
+            3 * n
+        )),
+        "{output}"
+    );
+    // V1 wrong: one finding, on V1, at its line (the table's second row, line 6).
+    let wrong = report(&results[1]);
+    assert_eq!(wrong["mistakes"].as_u64(), Some(1), "{wrong:#}");
+    assert_eq!(
+        (&wrong["findings"][0]["item"], &wrong["findings"][0]["line"]),
+        (&"V1".into(), &6.into())
+    );
+    assert_eq!(wrong["ok"], false);
+    // Nothing in the notation: nothing checked, said so; nothing derived for it.
+    let empty = report(&results[2]);
+    assert_eq!(
+        (empty["report"].as_str(), empty["checked"].as_u64()),
+        (Some("report/report.tex"), Some(0))
+    );
+    assert!(empty["summary"].as_str().unwrap().contains("no number was checked"), "{empty:#}");
+    // vertices() loops: the vertex table is not checked, its part named; the grade is as above.
+    let looped = report(&results[3]);
+    assert_eq!(looped["checked"].as_u64(), Some(0), "{looped:#}");
+    let not_checked = looped["not_checked"].as_array().unwrap();
+    assert!(not_checked.iter().any(|m| m.as_str().unwrap().starts_with("a1.t1")), "{looped:#}");
+    let summary = looped["summary"].as_str().unwrap();
+    assert!(summary.contains("were read, but their parts could not be derived"), "{summary}");
+    // No report: null, and the feedback says where one would be found.
+    assert!(results[4]["cg"]["report"].is_null() && results[5]["cg"]["report"].is_null());
+    let feedback = std::fs::read_to_string(out.join("feedback/20260005/feedback-en.md")).unwrap();
+    assert!(feedback.contains("the submission holds no report (report/report.md"), "{feedback}");
+    let feedback = std::fs::read_to_string(out.join("feedback/20260002/feedback-ja.md")).unwrap();
+    assert!(feedback.contains("## レポートの数値（点数には入りません）"), "{feedback}");
+    assert!(feedback.contains("6 行目: V1:"), "{feedback}");
+
     // The class table and the summary.
     let csv = std::fs::read_to_string(out.join("class.csv")).unwrap();
     // UTF-8 after the byte-order mark that Excel on Japanese Windows needs.
     let csv = csv.strip_prefix('\u{feff}').expect("class.csv begins with a byte-order mark");
     let lines: Vec<&str> = csv.lines().collect();
-    assert_eq!(lines[0], "student,submission,a1,a2,a3,a4,s,score,max_score,flag");
+    assert_eq!(
+        lines[0],
+        "student,submission,a1,a2,a3,a4,s,score,max_score,report,report_checked,report_mistakes,flag"
+    );
     assert_eq!(lines.len(), 8, "{csv}");
     for r in &results {
         let a = &r["cg"]["assignments"];
@@ -340,12 +423,23 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
             r["max_score"]
         )
         .replace(".0,", ",");
+        let rep = &r["cg"]["report"];
+        let count = |k: &str| rep[k].as_u64().map(|n| n.to_string()).unwrap_or_default();
         // Nobody here is flagged: the flag column is empty.
-        let row = format!("{},", row.trim_end_matches(".0"));
+        let row = format!(
+            "{},{},{},{},",
+            row.trim_end_matches(".0"),
+            rep["report"].as_str().unwrap_or(""),
+            count("checked"),
+            count("mistakes")
+        );
         assert!(lines.contains(&row.as_str()), "{row} not in\n{csv}");
     }
-    assert!(lines.contains(&"20260003,03-a2-syntax,31,0,13,9,22,75,89,"), "{csv}");
-    assert!(lines.iter().any(|l| l.starts_with(",06-slip.zip,,,,,,0,")), "{csv}");
+    assert!(
+        lines.contains(&"20260003,03-a2-syntax,31,0,13,9,22,75,89,report/report.tex,0,0,"),
+        "{csv}"
+    );
+    assert!(lines.iter().any(|l| l.starts_with(",06-slip.zip,,,,,,0,,,,,")), "{csv}");
     let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
     // Most failed first: a1.t2.outward and a1.t2.winding (the loop and the reversed face),
     // then the checks one submission failed; the refused zip is listed.
@@ -356,6 +450,12 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
     assert!(rows[2].ends_with("| 1 | 6 |"), "{md}");
     assert!(rows.last().unwrap().ends_with("| 0 | 6 |"), "{md}");
     assert!(md.contains("06-slip.zip"), "{md}");
+    // The reports: four of the six graded hold one, one right; V1 the item most often wrong.
+    assert!(
+        md.contains("4 of the 6 graded submissions hold a report; 4 were read, and in 1 every number checked follows"),
+        "{md}"
+    );
+    assert!(md.contains("| `V1` | 1 |"), "{md}");
     // Each student's feedback, in both languages: the reversed face's failed checks.
     for (lang, head) in [("ja", "# 採点結果"), ("en", "# Grading results")] {
         let path = out.join(format!("feedback/20260002/feedback-{lang}.md"));
@@ -375,4 +475,14 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
     for (name, bytes) in before {
         assert_eq!(std::fs::read(out.join(&name)).unwrap(), bytes, "{name} changed");
     }
+
+    // A report corrected is checked again; the other results are kept.
+    std::fs::write(&report_02, vertex_rows("20260002", None)).unwrap();
+    let again = cg_grade::grade(&options, cg_sandbox::launch, &|_| {}).unwrap();
+    let regraded: Vec<&str> =
+        again.iter().filter(|g| !g.skipped).map(|g| g.name.as_str()).collect();
+    assert_eq!(regraded, ["20260002"]);
+    let fixed = read(&out.join("20260002.json"));
+    assert_eq!(fixed["cg"]["report"]["mistakes"].as_u64(), Some(0), "{fixed:#}");
+    assert_eq!(fixed["score"], results[1]["score"]);
 }

@@ -1,8 +1,8 @@
 //! Submissions refused before any build — a zip slip, a symlink in a zip, an oversized entry, no
-//! `exercises/`, a bad student number, a submission that is a symlink, a link inside a folder,
-//! `#[path]` or `option_env!` reaching outside the files — each get a result that
-//! says why, a row in the class table and a line in the summary, and a second run keeps them.
-//! No kit build is needed, so this runs in seconds.
+//! `exercises/` (naming what there is), a `.7z`, a bad student number, a submission that is a
+//! symlink, a link inside a folder, `#[path]` or `option_env!` reaching outside the files — each
+//! get a result that says why, a row in the class table and a line in the summary, and a second
+//! run keeps them. No kit build is needed, so this runs in seconds.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -61,6 +61,8 @@ fn refused_submissions_say_why_and_are_kept() {
         None,
     );
     zip(&subs.join("empty.zip"), &[("readme.txt", b"hi")], None);
+    // A 7-Zip archive handed in for a zip: said to be one.
+    std::fs::write(subs.join("taro.7z"), b"7z\xbc\xaf\x27\x1c").unwrap();
     // One entry over the limit: refused from the zip's end record, with the count.
     let names: Vec<String> =
         (0..=cg_grade::submission::MAX_ZIP_ENTRIES).map(|i| format!("x/{i}.txt")).collect();
@@ -108,7 +110,7 @@ fn refused_submissions_say_why_and_are_kept() {
         roster: None,
     };
     let graded = cg_grade::grade(&options, no_runs, &|_| {}).unwrap();
-    assert_eq!(graded.len(), 11);
+    assert_eq!(graded.len(), 12);
     let why = |name: &str| -> String {
         let v: Value = serde_json::from_str(
             &std::fs::read_to_string(out.join(format!("_{name}.json"))).unwrap(),
@@ -124,6 +126,9 @@ fn refused_submissions_say_why_and_are_kept() {
     assert!(why("link.zip").contains("symbolic link"), "{}", why("link.zip"));
     assert!(why("big.zip").contains("too big"), "{}", why("big.zip"));
     assert!(why("empty.zip").contains("no exercises/"), "{}", why("empty.zip"));
+    // What it holds is named.
+    assert!(why("empty.zip").contains("; it holds readme.txt: "), "{}", why("empty.zip"));
+    assert!(why("taro.7z").contains("taro.7z is a .7z archive, not a zip"), "{}", why("taro.7z"));
     assert!(why("many.zip").contains("too many entries in the zip (10001, at most 10000)"));
     assert!(why("notzip.zip").contains("not a readable zip"), "{}", why("notzip.zip"));
     assert!(why("badnumber").contains("student.toml"), "{}", why("badnumber"));
@@ -137,15 +142,15 @@ fn refused_submissions_say_why_and_are_kept() {
 
     let csv = std::fs::read_to_string(out.join("class.csv")).unwrap();
     assert!(csv.starts_with("\u{feff}student,submission,"), "{csv}");
-    assert_eq!(csv.lines().count(), 12, "{csv}");
+    assert_eq!(csv.lines().count(), 13, "{csv}");
     // A refused entry's flag says so (its empty scores read as a graded 0 when sorted).
     assert!(
-        csv.contains("\n,slip.zip,,,,,,0,,refused: zip entry /etc/cron.d/x has an unsafe path"),
+        csv.contains("\n,slip.zip,,,,,,0,,,,,refused: zip entry /etc/cron.d/x has an unsafe path"),
         "{csv}"
     );
     let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
-    assert!(md.contains("submissions: 11") && md.contains("## Not graded"), "{md}");
-    assert_eq!(md.matches("\n- ").count(), 11, "{md}");
+    assert!(md.contains("submissions: 12") && md.contains("## Not graded"), "{md}");
+    assert_eq!(md.matches("\n- ").count(), 12, "{md}");
     // Graded with limits only: the summary says so.
     assert!(md.contains("## Graded without a sandbox"), "{md}");
 

@@ -594,6 +594,10 @@ pub struct CheckOutcome {
     pub missing: Vec<Missing>,
     /// The files read (the report, the data file), each with the encoding it was read in.
     pub read: Vec<(PathBuf, Encoding)>,
+    /// The rows, matrices, tables and formulas read in the notation
+    /// ([`parse::ParsedReport::items`]): with none checked, whether the report had none to read
+    /// or its parts could not be derived.
+    pub items: usize,
 }
 
 impl CheckOutcome {
@@ -633,7 +637,15 @@ impl CheckOutcome {
                 m.message(lang)
             );
         }
-        let wrong = self.problems.len() + self.verification.findings.len();
+        let _ = writeln!(out, "{}", self.summary().get(lang));
+        out
+    }
+
+    /// The mistakes found against the numbers checked, and the parts not checked: the last line
+    /// of [`CheckOutcome::render`] (and `cg grade`'s line of a report).
+    #[must_use]
+    pub fn summary(&self) -> Text {
+        let wrong = self.mistakes();
         let checked = self.verification.checked;
         let parts = self.missing.len();
         // The parts not checked, said after the count of mistakes too (it was left out there).
@@ -644,7 +656,32 @@ impl CheckOutcome {
                 if parts == 1 { "part was" } else { "parts were" }
             ),
         );
-        let summary = if wrong == 0 && checked == 0 {
+        let items = self.items;
+        if wrong == 0 && checked == 0 && items > 0 {
+            // Rows were read, but nothing to compare them with: their parts not derived (a
+            // function that does not return), or rows of nothing the data has (the notes).
+            if parts > 0 {
+                Text::new(
+                    format!(
+                        "確かめられた数値は 1 つもありません。行・行列・表を {items} 個読みましたが、その部分のデータが導出できませんでした。{}",
+                        unchecked.ja
+                    ),
+                    format!(
+                        "no number was checked: {items} rows, matrices or tables were read, but their parts could not be derived. {}",
+                        unchecked.en
+                    ),
+                )
+            } else {
+                Text::new(
+                    format!(
+                        "確かめられた数値は 1 つもありません。行・行列・表を {items} 個読みましたが、データにあるものはありませんでした（上の注を見てください）。"
+                    ),
+                    format!(
+                        "no number was checked: {items} rows, matrices or tables were read, but none is of the data (see the notes above)."
+                    ),
+                )
+            }
+        } else if wrong == 0 && checked == 0 {
             let none = Text::new(
                 "確かめられた数値は 1 つもありません。キットが読む書き方の表（`V0 (0.0, 1.0, 0.0)` の頂点の行、`F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 }` の面の行、`<!-- cg: s.light.p -->` のようなタグのついた表）が見つかりませんでした。`cargo run --release -- report fill` が書くひな形の書き方に合わせてください",
                 "no number was checked: the report has no table in a form the checker reads (vertex rows `V0 (0.0, 1.0, 0.0)`, face rows `F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 }`, tables after a tag such as `<!-- cg: s.light.p -->`); write them as the template `cargo run --release -- report fill` writes does",
@@ -694,9 +731,13 @@ impl CheckOutcome {
                     if wrong == 1 { "mistake" } else { "mistakes" }
                 ),
             )
-        };
-        let _ = writeln!(out, "{}", summary.get(lang));
-        out
+        }
+    }
+
+    /// The lines that do not read and the numbers that do not follow, together.
+    #[must_use]
+    pub fn mistakes(&self) -> usize {
+        self.problems.len() + self.verification.findings.len()
     }
 
     /// For tools.
@@ -706,6 +747,8 @@ impl CheckOutcome {
             "report": self.report.display().to_string(),
             "ok": self.ok(),
             "checked": self.verification.checked,
+            "mistakes": self.mistakes(),
+            "summary": self.summary().get(lang),
             "problems": self.problems.iter().map(|p| serde_json::json!({
                 "line": p.line, "found": p.found, "message": p.message(lang),
             })).collect::<Vec<_>>(),
@@ -739,6 +782,7 @@ pub fn check(args: &CheckArgs, kit: &Kit, lang: Lang) -> Result<CheckOutcome, St
             verification,
             missing: Vec::new(),
             read: vec![(data.clone(), encoding)],
+            items: parsed.items(),
         });
     }
     let report = args.report.clone().unwrap_or_else(|| PathBuf::from("report").join("report.md"));
@@ -749,9 +793,18 @@ pub fn check(args: &CheckArgs, kit: &Kit, lang: Lang) -> Result<CheckOutcome, St
         let (polygon, encoding) = read_data_in(data, forced, lang)?;
         read.push((data.clone(), encoding));
         let verification = verify::verify_data(&polygon, &parsed);
-        return Ok(CheckOutcome { report, problems, verification, missing: Vec::new(), read });
+        let items = parsed.items();
+        return Ok(CheckOutcome {
+            report,
+            problems,
+            verification,
+            missing: Vec::new(),
+            read,
+            items,
+        });
     }
     let g = gather(&args.source, kit, lang)?;
     let verification = verify::verify_with(&parsed, &g.derived, g.assignment.as_ref());
-    Ok(CheckOutcome { report, problems, verification, missing: g.context.missing, read })
+    let items = parsed.items();
+    Ok(CheckOutcome { report, problems, verification, missing: g.context.missing, read, items })
 }

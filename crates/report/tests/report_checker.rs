@@ -62,6 +62,7 @@ fn the_summary_counts_the_parts_not_checked() {
             Text::new("a3.t1 はまだ書かれていません", "a3.t1 is not written yet"),
         )],
         read: Vec::new(),
+        items: 0,
     };
     assert!(outcome.ok());
     let en = outcome.render(Lang::En);
@@ -120,6 +121,22 @@ fn the_summary_counts_the_parts_not_checked() {
             && en.ends_with(". 1 part was not checked (\"not checked\" above).\n"),
         "{en}"
     );
+    // Rows read, but their part not derived: said so, not "the report has no table" (it said
+    // that of a vertex table whose vertices() never returned).
+    let underived = cg_report::app::CheckOutcome { items: 9, ..none.clone() };
+    let en = underived.render(Lang::En);
+    assert_eq!(
+        en.lines().last().unwrap(),
+        "no number was checked: 9 rows, matrices or tables were read, but their parts could not be derived. 1 part was not checked (\"not checked\" above).",
+    );
+    let ja = underived.render(Lang::Ja);
+    assert!(
+        ja.contains("行・行列・表を 9 個読みましたが、その部分のデータが導出できませんでした。"),
+        "{ja}"
+    );
+    let of_nothing = cg_report::app::CheckOutcome { missing: Vec::new(), ..underived };
+    let en = of_nothing.render(Lang::En);
+    assert!(en.ends_with("but none is of the data (see the notes above).\n"), "{en}");
     let all = cg_report::app::CheckOutcome { missing: Vec::new(), ..outcome };
     assert!(
         all.render(Lang::En).ends_with("12 numbers checked; every one follows from the data.\n")

@@ -271,7 +271,12 @@ fn the_roster_binds_participants_and_a_mismatch_is_flagged() {
     let csv_ja = result::class_csv(&results, Lang::Ja);
     assert!(csv_ja.contains(",student.toml は 20260099、名簿では 20260006\n"), "{csv_ja}");
     let csv = result::class_csv(&results, Lang::En);
-    assert!(csv.starts_with("student,submission,a1,a2,a3,a4,s,score,max_score,flag\n"), "{csv}");
+    assert!(
+        csv.starts_with(
+            "student,submission,a1,a2,a3,a4,s,score,max_score,report,report_checked,report_mistakes,flag\n"
+        ),
+        "{csv}"
+    );
     let row = csv.lines().find(|l| l.contains("鈴木")).unwrap();
     assert!(row.starts_with("20260006,鈴木 花子_1006_assignsubmission_file,"), "{row}");
     assert!(row.ends_with(&format!(",\"{expected}\"")), "{row}");
@@ -465,4 +470,137 @@ fn a_download_inside_a_folder_is_not_graded_as_one_student() {
         );
     }
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// An upload with none of the six files is refused naming what it holds (the first five, then
+/// how many more) and, where it can be told, why it was not read: another kind of archive, a
+/// name that hides `.txt`, a zip inside a zip, an empty zip, `.rs` files of other names. Every
+/// such upload was refused with the same sentence, which named nothing.
+#[test]
+fn an_upload_without_the_six_files_is_refused_naming_what_it_holds() {
+    let refused = |name: &str, items: Vec<(String, Vec<u8>)>| -> Text {
+        let dir = fake::scratch(name);
+        let items: Vec<(String, Vec<u8>)> = items
+            .into_iter()
+            .map(|(n, b)| (format!("Ann_1_assignsubmission_file/{n}"), b))
+            .collect();
+        std::fs::write(dir.join("d.zip"), fake::zip_of(&items)).unwrap();
+        let from_zip = entries(&dir.join("d.zip")).unwrap()[0].read().unwrap_err();
+        // The unpacked download says the same.
+        fake::unpack(&items, &dir.join("unpacked"));
+        let from_folder = entries(&dir.join("unpacked")).unwrap()[0].read().unwrap_err();
+        assert_eq!(from_zip, from_folder, "{name}");
+        let _ = std::fs::remove_dir_all(&dir);
+        assert!(!from_zip.en.contains('\n') && !from_zip.ja.contains('\n'), "{from_zip:?}");
+        from_zip
+    };
+    let file = |n: &str| (n.to_owned(), b"x".to_vec());
+    let lead = "neither exercises/ nor a1.rs … s.rs and student.toml found";
+
+    // 7-Zip, WinRAR, a tar: no zip.
+    for (upload, kind) in [("exercises.7z", ".7z"), ("kadai.RAR", ".rar"), ("ex.tar.gz", ".tar.gz")]
+    {
+        let why = refused("seven", vec![file(upload)]);
+        assert!(
+            why.en.starts_with(&format!(
+                "{lead}; it holds {upload}: {upload} is a {kind} archive, not a zip, and is not read: zip the exercises/ folder instead (in Windows' Explorer, right-click it → Send to → Compressed (zipped) folder; on macOS, Compress)"
+            )),
+            "{}",
+            why.en
+        );
+        assert!(
+            why.ja.starts_with(&format!(
+                "exercises/ も a1.rs … s.rs・student.toml も見つかりません。中身: {upload}。{upload} は {kind} の圧縮ファイルで、zip ではないので読めません。"
+            )),
+            "{}",
+            why.ja
+        );
+        assert!(why.ja.contains("［送る］→［圧縮 (zip 形式) フォルダー］"), "{}", why.ja);
+    }
+
+    // A PDF only: named, with the usual advice.
+    let why = refused("pdf", vec![file("report.pdf")]);
+    assert_eq!(
+        why.en,
+        format!("{lead}; it holds report.pdf: hand in the exercises/ folder as a zip")
+    );
+    assert_eq!(
+        why.ja,
+        "exercises/ も a1.rs … s.rs・student.toml も見つかりません。中身: report.pdf。exercises/ フォルダを zip にして提出してください"
+    );
+
+    // Windows hid `.txt`: a1.rs.txt is no a1.rs.
+    let why = refused("txt", vec![file("a1.rs.txt"), file("student.toml.txt")]);
+    assert!(
+        why.en.ends_with("; it holds a1.rs.txt, student.toml.txt: a1.rs.txt is a text file whose name hides .txt (and 1 more like it): rename it a1.rs (Explorer shows the .txt once View → File name extensions is on)"),
+        "{}",
+        why.en
+    );
+    assert!(
+        why.ja.ends_with("中身: a1.rs.txt、student.toml.txt。a1.rs.txt は名前の最後の .txt が隠れたテキストファイルです（ほか 1 個も同じです）。名前を a1.rs に変えてください（エクスプローラーの［表示］で［ファイル名拡張子］を入れると .txt が見えます）"),
+        "{}",
+        why.ja
+    );
+
+    // A zip inside the zip is not opened (a zip in the upload is).
+    let inner = fake::zip_of(&fake::six("exercises/", "src/", "20260001"));
+    let why =
+        refused("nested", vec![("outer.zip".into(), fake::zip_of(&[("inner.zip".into(), inner)]))]);
+    assert!(
+        why.en.ends_with("; it holds outer.zip, outer.zip/inner.zip: outer.zip/inner.zip is a zip inside a zip, which is not opened: zip the exercises/ folder itself, once"),
+        "{}",
+        why.en
+    );
+    assert!(
+        why.ja.ends_with("outer.zip/inner.zip は zip の中の zip なので開きません。exercises/ フォルダそのものを 1 回だけ zip にしてください"),
+        "{}",
+        why.ja
+    );
+
+    // An empty zip.
+    let why = refused("empty", vec![("exercises.zip".into(), fake::zip_of(&[]))]);
+    assert!(
+        why.en.ends_with(
+            "; it holds exercises.zip: exercises.zip holds no file: zip the exercises/ folder again"
+        ),
+        "{}",
+        why.en
+    );
+    assert!(why.ja.ends_with("exercises.zip にはファイルが入っていません。exercises/ フォルダを zip にし直してください"), "{}", why.ja);
+
+    // A project of the student's own, its .rs files named otherwise.
+    let why = refused(
+        "other",
+        vec![file("kadai/src/main.rs"), file("kadai/src/lib.rs"), file("kadai/Cargo.toml")],
+    );
+    assert!(
+        why.en.ends_with("; it holds kadai/Cargo.toml, kadai/src/lib.rs, kadai/src/main.rs: no .rs file in it is named a1.rs … s.rs (only those, in exercises/src/, are graded)"),
+        "{}",
+        why.en
+    );
+    assert!(
+        why.ja.contains("中身: kadai/Cargo.toml、kadai/src/lib.rs、kadai/src/main.rs。"),
+        "{}",
+        why.ja
+    );
+
+    // Many files: the first five, and how many more; hidden ones are none of them.
+    let mut many: Vec<(String, Vec<u8>)> =
+        (1..=8).map(|k| file(&format!("photo{k}.jpg"))).collect();
+    many.push(file(".DS_Store"));
+    let why = refused("many", many);
+    assert!(
+        why.en.contains(
+            "; it holds photo1.jpg, photo2.jpg, photo3.jpg, photo4.jpg, photo5.jpg and 3 more: "
+        ),
+        "{}",
+        why.en
+    );
+    assert!(
+        why.ja.contains(
+            "中身: photo1.jpg、photo2.jpg、photo3.jpg、photo4.jpg、photo5.jpg ほか 3 個。"
+        ),
+        "{}",
+        why.ja
+    );
 }

@@ -49,14 +49,27 @@ pub const MAX_CANDIDATES: usize = 256;
 pub const MAX_CANDIDATE_BYTES: u64 = 32 << 20;
 
 /// What an upload's candidates have taken so far, against [`MAX_CANDIDATES`] and
-/// [`MAX_CANDIDATE_BYTES`].
+/// [`MAX_CANDIDATE_BYTES`]; and what the upload holds, for a refusal that names it when none of
+/// the six files is there ([`crate::unread::nothing_to_grade`]).
 #[derive(Default)]
 struct Taken {
     files: usize,
     bytes: u64,
+    /// The upload's files but hidden ones (paths inside it; a zip's as `<zip>/<path>`), the
+    /// first [`MAX_ZIP_ENTRIES`] seen.
+    held: Vec<String>,
+    /// The zips looked into (every zip of the upload is; a zip inside one is not).
+    opened: Vec<String>,
 }
 
 impl Taken {
+    /// `rel`, a file of the upload, seen.
+    fn saw(&mut self, rel: &str) {
+        if self.held.len() < MAX_ZIP_ENTRIES && !hidden(rel) {
+            self.held.push(rel.to_owned());
+        }
+    }
+
     /// `bytes` read for `rel`, or the upload refused when it is past the limits.
     fn add(&mut self, rel: &str, bytes: Vec<u8>) -> Result<(String, Vec<u8>), Text> {
         self.files += 1;
@@ -165,8 +178,16 @@ impl Entry {
         match &self.source {
             Source::Path(path) => submission::read(path),
             Source::Refused(why) => Err(why.clone()),
-            Source::Folder(roots) => resolve(from_folder(roots, &mut Taken::default())?),
-            Source::Zip(zip, items) => resolve(from_zip(zip, items, &mut Taken::default())?),
+            Source::Folder(roots) => {
+                let mut taken = Taken::default();
+                let found = from_folder(roots, &mut taken)?;
+                resolve(found, &taken)
+            }
+            Source::Zip(zip, items) => {
+                let mut taken = Taken::default();
+                let found = from_zip(zip, items, &mut taken)?;
+                resolve(found, &taken)
+            }
         }
     }
 }
@@ -453,15 +474,17 @@ fn candidate(rel: &str) -> bool {
 }
 
 /// Whether a path has a hidden part (`.DS_Store`, `._a1.rs`, `.git/`) or is under `__MACOSX/`.
-fn hidden(rel: &str) -> bool {
+pub(crate) fn hidden(rel: &str) -> bool {
     rel.split('/').any(|part| part.starts_with('.') || part == "__MACOSX")
 }
 
-fn is_zip(rel: &str) -> bool {
+/// Whether a path's name ends in `.zip` (any case).
+pub(crate) fn is_zip(rel: &str) -> bool {
     basename(rel).rsplit_once('.').is_some_and(|(_, e)| e.eq_ignore_ascii_case("zip"))
 }
 
-fn basename(rel: &str) -> &str {
+/// A path's last part.
+pub(crate) fn basename(rel: &str) -> &str {
     rel.rsplit('/').next().unwrap_or(rel)
 }
 
@@ -474,7 +497,8 @@ fn wanted() -> Vec<(String, Option<&'static str>)> {
     w
 }
 
-fn wanted_name(name: &str) -> bool {
+/// Whether `name` is one of the six files' names (`a1.rs` … `s.rs`, `student.toml`).
+pub(crate) fn wanted_name(name: &str) -> bool {
     wanted().iter().any(|(w, _)| basename(w) == name)
 }
 
@@ -525,7 +549,11 @@ fn from_folder(
                 let name = e.file_name().to_string_lossy().into_owned();
                 stack.push((join(&rel, &name), e.path(), depth + 1));
             }
-        } else if meta.is_file() && candidate(&rel) {
+        } else if meta.is_file() {
+            taken.saw(&rel);
+            if !candidate(&rel) {
+                continue;
+            }
             let file = std::fs::File::open(&path).map_err(|e| cannot_read(&rel, &e))?;
             if is_zip(&rel) {
                 found.extend(inside(&rel, file, taken)?);
@@ -552,7 +580,11 @@ fn from_zip(
         if entry.is_symlink() {
             return Err(link_refused(rel));
         }
-        if entry.is_dir() || !candidate(rel) {
+        if entry.is_dir() {
+            continue;
+        }
+        taken.saw(rel);
+        if !candidate(rel) {
             continue;
         }
         if !is_zip(rel) {
@@ -582,6 +614,7 @@ fn inside(
 ) -> Result<Vec<(String, Vec<u8>)>, Text> {
     let within = |t: Text| text(format!("{rel}: {}", t.ja), format!("{rel}: {}", t.en));
     let mut zip = crate::zipfile::open(reader, MAX_ZIP_ENTRIES).map_err(within)?;
+    taken.opened.push(rel.to_owned());
     let mut found = Vec::new();
     for i in 0..zip.len() {
         let entry = zip.by_index(i).map_err(|e| within(bad_zip(&e)))?;
@@ -592,10 +625,14 @@ fn inside(
         if entry.is_symlink() {
             return Err(within(link_refused(&name)));
         }
-        if entry.is_dir() || hidden(&name) || !wanted_name(basename(&name)) {
+        if entry.is_dir() || hidden(&name) {
             continue;
         }
         let name = format!("{rel}/{name}");
+        taken.saw(&name);
+        if !wanted_name(basename(&name)) {
+            continue;
+        }
         let bytes = bounded(entry, MAX_FILE_BYTES, &name)?;
         found.push(taken.add(&name, bytes)?);
     }
@@ -603,8 +640,10 @@ fn inside(
 }
 
 /// The six files among an upload's candidates (its files of those names, and those in its
-/// zips), as the module's documentation says, screened.
-fn resolve(files: Vec<(String, Vec<u8>)>) -> Result<Files, Text> {
+/// zips), as the module's documentation says, screened. An upload with none of them is refused
+/// naming what it holds (`taken`), and why it was not read where that can be told (a `.7z`, an
+/// `a1.rs.txt`, a zip inside a zip: [`crate::unread::nothing_to_grade`]).
+fn resolve(files: Vec<(String, Vec<u8>)>, taken: &Taken) -> Result<Files, Text> {
     let wanted = wanted();
     // 1. An exercises/ tree; several must hold the same files.
     let bases = submission::bases(files.iter().map(|(rel, _)| rel.as_str()));
@@ -622,10 +661,15 @@ fn resolve(files: Vec<(String, Vec<u8>)>) -> Result<Files, Text> {
         beside_tree(&files, &wanted, &bases, chosen)?
     };
     if out.modules.is_empty() && out.student_toml.is_none() {
-        return Err(text(
-            "exercises/ も a1.rs … s.rs・student.toml も見つかりません（exercises/ フォルダを zip にして提出してください）".into(),
-            "neither exercises/ nor a1.rs … s.rs and student.toml found (hand in the exercises/ folder as a zip)".into(),
-        ));
+        let lead = text(
+            "exercises/ も a1.rs … s.rs・student.toml も見つかりません".into(),
+            "neither exercises/ nor a1.rs … s.rs and student.toml found".into(),
+        );
+        // Every zip of the upload is opened: one that was not lies inside another.
+        let unopened = |zip: &str| {
+            (!taken.opened.iter().any(|o| o == zip)).then_some(crate::unread::Unopened::InZip)
+        };
+        return Err(crate::unread::nothing_to_grade(&lead, &taken.held, unopened));
     }
     submission::screened(out)
 }

@@ -164,13 +164,27 @@ pub fn feedback_md(result: &Value, lang: Lang) -> String {
         t("提出物", "submission").get(lang),
         crate::result::md_code(cg["submission"].as_str().unwrap_or(""), lang)
     );
-    let _ = writeln!(
-        md,
-        "- {}: {} / {}\n",
-        t("点数", "score").get(lang),
-        number(&result["score"]),
-        number(&result["max_score"])
-    );
+    if result.get("max_score").is_some() {
+        let _ = writeln!(
+            md,
+            "- {}: {} / {}\n",
+            t("点数", "score").get(lang),
+            number(&result["score"]),
+            number(&result["max_score"])
+        );
+    } else {
+        // Not `0 / -`: a refused or unfinished grading has no score to read.
+        let _ = writeln!(
+            md,
+            "- {}: {}\n",
+            t("点数", "score").get(lang),
+            t(
+                "なし（採点されていません。理由は下の概要にあります）",
+                "none (not graded: the summary below says why)"
+            )
+            .get(lang)
+        );
+    }
     if let Some(per) = cg["assignments"].as_object().filter(|p| !p.is_empty()) {
         let _ = writeln!(
             md,
@@ -222,6 +236,10 @@ pub fn feedback_md(result: &Value, lang: Lang) -> String {
         for test in passed {
             let _ = writeln!(md, "- {}", test["name"].as_str().unwrap_or("?"));
         }
+        md.push('\n');
+    }
+    if result.get("max_score").is_some() {
+        md.push_str(&crate::report::feedback_section(&cg["report"], lang));
     }
     md
 }
@@ -277,6 +295,9 @@ pub fn worksheet(rows: &[Row], settings: &Settings) -> Result<String, String> {
             status,
             &r.grade.map(grade).unwrap_or_default(),
             &grade(settings.max_grade),
+            // "Grade can be changed": not read by the upload (assignfeedback_offline's importer
+            // reads the identifier, the grade, its last-modified time and the feedback columns
+            // only), so the same word in both languages.
             "Yes",
             "-",
             &modified,
@@ -311,18 +332,32 @@ pub fn feedback_zip(folders: &[Folder], now: u64) -> Result<Vec<u8>, String> {
 }
 
 /// The feedback comment of a result: the score, each assignment's, and where the details are.
-fn comment(result: &Value, lang: Lang) -> String {
+pub(crate) fn comment(result: &Value, lang: Lang) -> String {
     let cg = &result["cg"];
     if result.get("max_score").is_none() {
         let why = crate::result::not_graded(cg, lang).unwrap_or("");
         let why = why.lines().next().unwrap_or("");
         let file = feedback_file(lang);
-        let text = Text::new(
-            format!(
-                "採点できませんでした（理由: {why}）。詳しくはフィードバックファイル {file} を見てください。"
-            ),
-            format!("Could not be graded ({why}). The details are in the feedback file {file}."),
-        );
+        // A refusal is the submission's (what was handed in), not a grading that failed.
+        let text = if cg["refused"].is_string() {
+            Text::new(
+                format!(
+                    "提出物を受け付けられませんでした（理由: {why}）。詳しくはフィードバックファイル {file} を見てください。"
+                ),
+                format!(
+                    "The submission was refused ({why}). The details are in the feedback file {file}."
+                ),
+            )
+        } else {
+            Text::new(
+                format!(
+                    "採点できませんでした（理由: {why}）。詳しくはフィードバックファイル {file} を見てください。"
+                ),
+                format!(
+                    "Could not be graded ({why}). The details are in the feedback file {file}."
+                ),
+            )
+        };
         return html(text.get(lang));
     }
     let per: Vec<String> = cg["assignments"]
@@ -345,7 +380,12 @@ fn comment(result: &Value, lang: Lang) -> String {
             per.join(", ")
         ),
     );
-    html(text.get(lang))
+    let mut comment = text.get(lang).to_owned();
+    if let Some(line) = crate::report::line(&cg["report"], lang) {
+        comment.push(' ');
+        comment.push_str(&line);
+    }
+    html(&comment)
 }
 
 /// What [`write()`] wrote.

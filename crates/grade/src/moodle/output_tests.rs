@@ -234,3 +234,61 @@ fn a_full_name_like_a_formula_is_text_in_the_worksheet() {
     let row = csv.lines().nth(1).unwrap();
     assert!(row.starts_with("Participant 777,\"'=HYPERLINK("), "{row}");
 }
+
+/// A result's report as `cg grade` writes it (`cg.report`): 12 numbers checked, V1 wrong.
+fn with_report(mut result: Value) -> Value {
+    result["cg"]["report"] = json!({
+        "report": "report/report.md",
+        "ok": false,
+        "checked": 12,
+        "mistakes": 1,
+        "summary": "12 numbers checked; 1 mistake.",
+        "findings": [{"line": 6, "item": "V1", "message": "line 6: V1: …"}],
+        "text": "checking the report report/report.md\n  ✗ line 6: V1: written `(1.5, 0.0, 0.0)`\n12 numbers checked; 1 mistake.\n",
+        "scored": false,
+    });
+    result
+}
+
+#[test]
+fn a_refusal_a_failed_grading_and_a_report_are_each_said_as_what_they_are() {
+    // A refusal is the submission's: said so, in both languages (both said "could not be
+    // graded", as a grading that failed on the machine says).
+    let no = refused("evil.zip");
+    let en = output::comment(&no, Lang::En);
+    assert!(en.starts_with("The submission was refused (evil.zip: zip entry ../../x.rs"), "{en}");
+    let ja = output::comment(&no, Lang::Ja);
+    assert!(ja.starts_with("提出物を受け付けられませんでした（理由: evil.zip"), "{ja}");
+    let mut failed = refused("slow.zip");
+    failed["cg"]["refused"] = Value::Null;
+    failed["cg"]["error"] = json!("the build ran over its limit of 600 s");
+    let en = output::comment(&failed, Lang::En);
+    assert!(en.starts_with("Could not be graded (the build ran over its limit"), "{en}");
+    // Its feedback has no score to read (it said `0 / -`), and no report section.
+    for lang in [Lang::En, Lang::Ja] {
+        let md = output::feedback_md(&no, lang);
+        assert!(!md.contains("0 / -"), "{md}");
+        let none = t("- 点数: なし（採点されていません", "- score: none (not graded");
+        assert!(md.contains(none.get(lang)), "{md}");
+        assert!(!md.contains("report/report.md"), "{md}");
+    }
+
+    // A graded result's report: the comment's last sentence, the feedback's last section (the
+    // account in a fence, and the command that checks it at home).
+    let graded = with_report(result("x", "20260001", None, Lang::En));
+    let en = output::comment(&graded, Lang::En);
+    assert!(
+        en.ends_with("report (not scored): report/report.md: 12 numbers checked; 1 mistake."),
+        "{en}"
+    );
+    let md = output::feedback_md(&graded, Lang::En);
+    let section = md.split("## The report's numbers (not scored)\n\n").nth(1).expect("a section");
+    assert!(section.starts_with("```text\nchecking the report report/report.md\n"), "{md}");
+    assert!(section.contains("cargo run --release -- report check"), "{md}");
+    // Without a report, where one would be found.
+    let md = output::feedback_md(&result("x", "20260001", None, Lang::Ja), Lang::Ja);
+    assert!(
+        md.contains("提出物にレポート（report/report.md か report/report.tex）はありませんでした"),
+        "{md}"
+    );
+}

@@ -188,12 +188,18 @@ impl ParsedReport {
     /// Whether nothing was found.
     #[must_use]
     pub fn is_empty(&self) -> bool {
-        self.vertices.is_empty()
-            && self.faces.is_empty()
-            && self.matrices.is_empty()
-            && self.tex.is_empty()
-            && self.tables.is_empty()
-            && self.formulas.is_empty()
+        self.items() == 0
+    }
+
+    /// The rows, matrices, tables and formulas found.
+    #[must_use]
+    pub fn items(&self) -> usize {
+        self.vertices.len()
+            + self.faces.len()
+            + self.matrices.len()
+            + self.tex.len()
+            + self.tables.len()
+            + self.formulas.len()
     }
 }
 

@@ -1,6 +1,7 @@
 //! The report a student hands in with the code: `report/report.md` or `report/report.tex`, where
 //! `cg report fill` writes it, next to `exercises/` in the submission (a folder, a zip, a Moodle
 //! participant's upload and the zips in it), or loose at the top of an upload or of a zip in it.
+//! `cg grade` checks its numbers ([`crate::report`]); `cg similarity` compares them.
 //!
 //! The submission is read as `cg grade` reads it: only listed, never extracted; links, `..`
 //! paths and folders named `target` or starting with `.` are not followed; a participant's zip
@@ -14,12 +15,12 @@ use std::io::{Cursor, Read};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+use crate::moodle::input::MAX_DOWNLOAD_ENTRIES;
+use crate::moodle::input::{Entry, MAX_UPLOAD_ZIP_BYTES, Origin};
+use crate::submission::{MAX_ZIP_ENTRIES, MODULES, unsafe_name};
+use crate::zipfile;
 use cg_core::lang::Text;
 use cg_core::text::Encoding;
-use cg_grade::moodle::input::MAX_DOWNLOAD_ENTRIES;
-use cg_grade::moodle::input::{Entry, MAX_UPLOAD_ZIP_BYTES, Origin};
-use cg_grade::submission::{MAX_ZIP_ENTRIES, MODULES, unsafe_name};
-use cg_grade::zipfile;
 
 /// The largest report read: 4 MiB (a report is some tens of KiB; its figures are other files).
 pub const MAX_REPORT_BYTES: u64 = 4 << 20;
@@ -190,8 +191,7 @@ fn from_zip<R: Read + std::io::Seek>(
     at: usize,
     rel: &str,
 ) -> Result<Vec<u8>, Text> {
-    let entry =
-        zip.by_index(at).map_err(|e| skipped(rel, &cg_grade::submission::zip_reason(&e)))?;
+    let entry = zip.by_index(at).map_err(|e| skipped(rel, &crate::submission::zip_reason(&e)))?;
     bounded(entry, rel)
 }
 
