@@ -30,6 +30,9 @@ pub struct Args {
     /// The class roster (CSV: student, name, entry = the entry's folder or zip name, or its Moodle participant ID): binds each entry to its student / 名簿（CSV: 学生番号・氏名・提出物のフォルダ名か Moodle の参加者 ID）
     #[arg(long, value_name = "CSV")]
     roster: Option<PathBuf>,
+    /// A folder of reports handed in on their own, each file named with its student number (20260001.md, report-20260001.tex): its numbers checked (not scored) instead of the report inside that student's submission / 別に提出されたレポートのフォルダ（ファイル名に学生番号を含める）。提出物の中のレポートの代わりに、その数値を確かめます（点数には入りません）
+    #[arg(long, value_name = "DIR")]
+    reports: Option<PathBuf>,
     /// The language of the course's Moodle, for moodle/grades.csv's column names: ja or en (default: the output's) / Moodle の言語（moodle/grades.csv の列名。既定: 出力の言語）
     #[arg(long, value_name = "ja|en")]
     moodle_lang: Option<Lang>,
@@ -143,6 +146,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         isolation: setup.isolation,
         lang,
         roster,
+        reports: args.reports.clone(),
     };
     // A line per submission (logs), and a bar on a terminal: building, N of M, time left.
     let progress = crate::progress::Progress::new(lang);

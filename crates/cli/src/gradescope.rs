@@ -74,6 +74,7 @@ fn grade_one_inner(args: &GradeOneArgs, lang: Lang) -> Result<Ending, String> {
         isolation: setup.isolation,
         lang,
         roster: None,
+        reports: None,
     };
     let progress = crate::progress::Progress::new(lang);
     let one =

@@ -48,7 +48,11 @@ pub(crate) struct Pending {
 
 /// The entries of the submissions folder (or of a Moodle download: [`moodle::input`]), read
 /// and hashed, with their result names.
-pub(crate) fn collect(options: &Options, kit_hash: &str) -> Result<Vec<Pending>, GradeError> {
+pub(crate) fn collect(
+    options: &Options,
+    kit_hash: &str,
+    folder: Option<&crate::inside::Folder>,
+) -> Result<Vec<Pending>, GradeError> {
     let entries = moodle::input::entries(&options.submissions).map_err(GradeError::Io)?;
     // An empty folder is a wrong path, not a class with no work: said, not an empty table and
     // exit 0.
@@ -63,14 +67,16 @@ pub(crate) fn collect(options: &Options, kit_hash: &str) -> Result<Vec<Pending>,
             ),
         )));
     }
-    collect_from(options, kit_hash, entries)
+    collect_from(options, kit_hash, entries, folder)
 }
 
-/// [`collect`] of the given entries.
+/// [`collect`] of the given entries; each one's report from `folder` (`--reports`) when it has
+/// the student's, else from inside the submission.
 pub(crate) fn collect_from(
     options: &Options,
     kit_hash: &str,
     entries: Vec<moodle::input::Entry>,
+    folder: Option<&crate::inside::Folder>,
 ) -> Result<Vec<Pending>, GradeError> {
     let mut used: BTreeMap<String, Vec<String>> = BTreeMap::new();
     let mut pending = Vec::new();
@@ -103,9 +109,18 @@ pub(crate) fn collect_from(
                 }
             }
         });
-        // The report of a submission that is graded: its numbers are checked against its functions.
-        let report =
-            if files.is_ok() { crate::inside::report(&source) } else { (None, Vec::new()) };
+        // The report of a submission that is graded (its numbers are checked against its
+        // functions): the student's in `--reports`, else the one inside the submission.
+        let report = match &files {
+            Err(_) => (None, Vec::new()),
+            Ok((_, student)) => {
+                match folder.and_then(|f| f.by_student.get(student.student.as_str())) {
+                    Some((_, Ok(found))) => (Some(found.clone()), Vec::new()),
+                    Some((_, Err(why))) => (None, vec![why.clone()]),
+                    None => crate::inside::report(&source),
+                }
+            }
+        };
         let mut h = Hasher::default();
         h.add(kit_hash.as_bytes());
         // The entry's name is in the result (a kept result named the upload it was made from,

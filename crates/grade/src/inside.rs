@@ -231,6 +231,93 @@ fn read(item: &Item) -> Result<Found, Text> {
     Ok(Found { path: rel.to_owned(), text, encoding })
 }
 
+/// The reports of a folder of their own (`--reports` of `cg grade` and `cg similarity`), by
+/// student number.
+#[derive(Clone, Debug, Default)]
+pub struct Folder {
+    /// Each student number's report file, read, or why it could not be (too big, not text: a
+    /// PDF).
+    pub by_student: std::collections::BTreeMap<String, (PathBuf, Result<Found, Text>)>,
+    /// The files whose names hold no student number.
+    pub unnamed: Vec<String>,
+}
+
+/// The reports in `dir`: each plain file whose name holds a student number (`20260001.md`,
+/// `report-20260001.txt`: [`eight_digits`]) is that student's, read as a report inside a
+/// submission is (at most [`MAX_REPORT_BYTES`], in the encoding detected). Of two for one
+/// number, the one changed last, `.md` at a tie (as inside a submission). Hidden files, links
+/// and folders are not read.
+///
+/// # Errors
+/// The folder cannot be read.
+pub fn folder(dir: &Path) -> Result<Folder, Text> {
+    let shown = dir.display();
+    let list = std::fs::read_dir(dir).map_err(|e| {
+        let why = Text::io(&e);
+        Text::new(
+            format!("{shown} を読めません: {}", why.ja),
+            format!("cannot read {shown}: {}", why.en),
+        )
+    })?;
+    let mut names: Vec<PathBuf> = list.flatten().map(|e| e.path()).collect();
+    names.sort();
+    let mut out = Folder::default();
+    let mut chosen: std::collections::BTreeMap<String, Item> = std::collections::BTreeMap::new();
+    for path in names.into_iter().take(MAX_ZIP_ENTRIES) {
+        let Ok(meta) = std::fs::symlink_metadata(&path) else { continue };
+        let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        if !meta.is_file() || name.starts_with('.') {
+            continue;
+        }
+        let Some(number) = eight_digits(&name) else {
+            out.unnamed.push(name);
+            continue;
+        };
+        // Named by its file name alone (the student's feedback shows it; the instructor's
+        // folder is none of theirs).
+        let rel = name.clone();
+        let item =
+            Item { rel, top: true, size: meta.len(), time: seconds(&meta), loc: Loc::File(path) };
+        let later = |a: &Item| {
+            let md = basename(&a.rel).to_ascii_lowercase().ends_with(".md");
+            (a.time, md)
+        };
+        match chosen.get(number) {
+            Some(kept) if later(kept) >= later(&item) => {}
+            _ => {
+                chosen.insert(number.to_owned(), item);
+            }
+        }
+    }
+    for (number, item) in chosen {
+        let Loc::File(path) = &item.loc else { continue };
+        out.by_student.insert(number, (path.clone(), read(&item)));
+    }
+    Ok(out)
+}
+
+/// The first run of exactly eight digits in `name`: the student number a report's file name
+/// holds.
+#[must_use]
+pub fn eight_digits(name: &str) -> Option<&str> {
+    let bytes = name.as_bytes();
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i].is_ascii_digit() {
+            let start = i;
+            while i < bytes.len() && bytes[i].is_ascii_digit() {
+                i += 1;
+            }
+            if i - start == 8 {
+                return Some(&name[start..i]);
+            }
+        } else {
+            i += 1;
+        }
+    }
+    None
+}
+
 fn seconds(meta: &std::fs::Metadata) -> i64 {
     meta.modified()
         .ok()
@@ -387,6 +474,44 @@ mod tests {
             time,
             loc: Loc::File(rel.into()),
         }
+    }
+
+    /// A folder of reports (`--reports`): each by the student number in its name, the one
+    /// changed last of two, `.md` at a tie; a name without a number is unnamed; a hidden file is
+    /// not read; one that is not text is that student's, with why.
+    #[test]
+    fn a_folder_of_reports_is_read_by_student_number() {
+        let dir = std::env::temp_dir().join(format!("cg-inside-folder-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        let write = |name: &str, bytes: &[u8], age_s: u64| {
+            let path = dir.join(name);
+            std::fs::write(&path, bytes).unwrap();
+            let when = std::time::SystemTime::now() - std::time::Duration::from_secs(age_s);
+            std::fs::File::options().write(true).open(&path).unwrap().set_modified(when).unwrap();
+        };
+        write("20260001.md", b"V0 (1.0, 0.0, 0.0)\n", 100);
+        // Two for 20260002: the newer .tex, not the older .md.
+        write("report-20260002.md", b"old", 100);
+        write("report-20260002.tex", b"new", 10);
+        // Two for 20260003 changed at once: the .md.
+        write("20260003.tex", b"tex", 50);
+        write("20260003.md", b"md", 50);
+        write("notes.txt", b"x", 0);
+        write(".20260004.md", b"hidden", 0);
+        write("20260005.pdf", b"%PDF-1.4\x00\x01\x02\xff\xfe\x00", 0);
+        std::fs::create_dir_all(dir.join("20260006")).unwrap();
+        let f = folder(&dir).unwrap();
+        let text = |n: &str| f.by_student[n].1.as_ref().map(|r| r.text.clone());
+        assert_eq!(text("20260001").unwrap(), "V0 (1.0, 0.0, 0.0)\n");
+        assert_eq!(text("20260002").unwrap(), "new");
+        assert_eq!(text("20260003").unwrap(), "md");
+        assert!(text("20260005").unwrap_err().en.contains("not text"), "{:?}", f.by_student);
+        let numbers: Vec<&str> = f.by_student.keys().map(String::as_str).collect();
+        assert_eq!(numbers, ["20260001", "20260002", "20260003", "20260005"]);
+        assert_eq!(f.unnamed, ["notes.txt"]);
+        assert!(folder(&dir.join("missing")).unwrap_err().en.starts_with("cannot read"));
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]

@@ -81,6 +81,10 @@ pub struct Options {
     /// The class roster (`--roster`): who each entry is. Without one, the number in each
     /// submission's `student.toml`.
     pub roster: Option<roster::Roster>,
+    /// A folder of reports handed in on their own (`--reports`), each file named with its
+    /// student number ([`inside::folder`]): checked instead of the report inside that student's
+    /// submission.
+    pub reports: Option<PathBuf>,
 }
 
 /// How grading one submission went, for the progress lines.
@@ -370,10 +374,28 @@ pub fn grade_with(
             "the stubs made from the solutions lack some of the assignments",
         )));
     }
-    let pending = match single {
-        Some(entry) => collect_from(options, &kit_hash, vec![entry])?,
-        None => collect(options, &kit_hash)?,
+    let folder = match &options.reports {
+        Some(dir) => Some(inside::folder(dir).map_err(GradeError::Io)?),
+        None => None,
     };
+    let pending = match single {
+        Some(entry) => collect_from(options, &kit_hash, vec![entry], folder.as_ref())?,
+        None => collect(options, &kit_hash, folder.as_ref())?,
+    };
+    // The reports of the folder that no entry took: said in the summary.
+    let unused: Vec<String> = folder.as_ref().map_or_else(Vec::new, |f| {
+        let taken = |number: &str| {
+            pending
+                .iter()
+                .any(|p| p.files.as_ref().is_ok_and(|(_, s)| s.student.as_str() == number))
+        };
+        let mut names: Vec<String> = f.unnamed.clone();
+        names.extend(f.by_student.iter().filter(|(n, _)| !taken(n)).map(|(_, (path, _))| {
+            path.file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned())
+        }));
+        names.sort();
+        names
+    });
     // The roster's students no entry is bound to: listed in the summary.
     let absent: Vec<(String, String)> = options.roster.as_ref().map_or_else(Vec::new, |r| {
         r.rows
@@ -513,7 +535,8 @@ pub fn grade_with(
     // flags' Japanese.
     write_atomic(&out.join("class.csv"), &cg_core::quote::spreadsheet_file(&csv))
         .map_err(|e| io(&out, e))?;
-    let md = result::summary_md(&all, &absent, options.lang);
+    let mut md = result::summary_md(&all, &absent, options.lang);
+    md.push_str(&report::unused_section(&unused, options.lang));
     write_atomic(&out.join("summary.md"), md.as_bytes()).map_err(|e| io(&out, e))?;
     Ok(done)
 }
@@ -537,6 +560,7 @@ pub(crate) fn test_options(
         isolation: Isolation::Bubblewrap,
         lang: Lang::En,
         roster,
+        reports: None,
     }
 }
 

@@ -246,6 +246,26 @@ pub fn summary_section(results: &[Value], lang: Lang) -> String {
     out
 }
 
+/// The summary's note on the files of `--reports` that no graded entry took (a number no one
+/// handed in under, a name without a number): empty when there is none.
+#[must_use]
+pub fn unused_section(names: &[String], lang: Lang) -> String {
+    if names.is_empty() {
+        return String::new();
+    }
+    let list: Vec<String> = names.iter().map(|n| format!("- {}", md_code(n, lang))).collect();
+    format!(
+        "\n## {}\n\n{}\n\n{}\n",
+        t("使われなかった --reports のファイル", "Files of --reports not used").get(lang),
+        t(
+            "ファイル名に採点した学生の番号（8 桁）がないので、どの提出物のレポートとしても確かめていません。",
+            "Their names hold no graded student's number (8 digits): they were checked as no one's report.",
+        )
+        .get(lang),
+        list.join("\n")
+    )
+}
+
 /// The most items the summary's table of reports' mistakes lists.
 const MOST_COMMON: usize = 20;
 

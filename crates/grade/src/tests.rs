@@ -65,7 +65,7 @@ fn the_roster_binds_entries_and_flags_the_rest() {
     )
     .unwrap();
     let options = collect_options(&root, Some(roster));
-    let pending = collect(&options, "kit").unwrap();
+    let pending = collect(&options, "kit", None).unwrap();
     let got: Vec<(&str, &str, Option<result::RosterMark>)> =
         pending.iter().map(|p| (p.entry.as_str(), p.name.as_str(), p.roster.clone())).collect();
     let mark = |listed, name: Option<&str>, claimed: Option<&str>, student: Option<&str>| {
@@ -123,7 +123,7 @@ fn the_roster_binds_entries_and_flags_the_rest() {
     let mut english = collect_options(&root, None);
     english.lang = Lang::En;
     let hashes = |o: &Options| -> Vec<String> {
-        collect(o, "kit").unwrap().into_iter().map(|p| p.hash).collect()
+        collect(o, "kit", None).unwrap().into_iter().map(|p| p.hash).collect()
     };
     let (ja, en) = (hashes(&japanese), hashes(&english));
     assert_eq!(ja.len(), 3);
@@ -147,7 +147,7 @@ fn entries_that_claim_one_number_are_all_flagged_and_none_takes_the_file() {
         std::fs::write(ex.join("src/a1.rs"), format!("// {entry}")).unwrap();
     }
     let options = collect_options(&root, None);
-    let pending = collect(&options, "kit").unwrap();
+    let pending = collect(&options, "kit", None).unwrap();
     let names: Vec<(&str, &str, Vec<String>)> = pending
         .iter()
         .map(|p| (p.entry.as_str(), p.name.as_str(), p.same_number.clone()))
@@ -193,7 +193,7 @@ fn entries_alike_as_file_names_get_results_of_their_own() {
             std::fs::write(ex.join("student.toml"), toml).unwrap();
         }
     }
-    let pending = collect(&collect_options(&root, None), "kit").unwrap();
+    let pending = collect(&collect_options(&root, None), "kit", None).unwrap();
     let names: std::collections::BTreeSet<String> =
         pending.iter().map(|p| p.name.to_lowercase()).collect();
     assert_eq!(names.len(), 5, "{:?}", pending.iter().map(|p| &p.name).collect::<Vec<_>>());
@@ -230,7 +230,7 @@ fn grading_that_cannot_start_says_why_in_both_languages() {
     let options = collect_options(&root, None);
     let never = |_: progress::Event<'_>| {};
     let errors = [
-        collect(&options, "kit").map(|_| ()).unwrap_err(),
+        collect(&options, "kit", None).map(|_| ()).unwrap_err(),
         grade_with(&options, cg_sandbox::launch, &never, None).map(|_| ()).unwrap_err(),
     ];
     for e in &errors {

@@ -197,6 +197,14 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         &[("exercises/student.toml", student_toml("20260006")), ("../../evil.rs", "x".into())],
     );
 
+    // A folder of reports handed in on their own: 20260005's (no report inside its submission)
+    // with V0 wrong; one under a number no one has, and one without a number, are not used.
+    let reports = base.join("reports");
+    let _ = std::fs::remove_dir_all(&reports);
+    std::fs::create_dir_all(&reports).unwrap();
+    std::fs::write(reports.join("report-20260005.md"), vertex_rows("20260005", Some(0))).unwrap();
+    std::fs::write(reports.join("20269999.md"), vertex_rows("20260001", None)).unwrap();
+    std::fs::write(reports.join("notes.txt"), "x").unwrap();
     let options = Options {
         kit: root(),
         submissions: subs.clone(),
@@ -216,6 +224,7 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         isolation: cg_sandbox::detect(),
         lang: Lang::En,
         roster: None,
+        reports: Some(reports.clone()),
     };
     let isolated = options.isolation == Isolation::Bubblewrap;
     assert!(
@@ -390,9 +399,13 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
     assert!(not_checked.iter().any(|m| m.as_str().unwrap().starts_with("a1.t1")), "{looped:#}");
     let summary = looped["summary"].as_str().unwrap();
     assert!(summary.contains("were read, but their parts could not be derived"), "{summary}");
+    // From --reports: checked as one inside would be, V0 wrong.
+    let given = report(&results[4]);
+    assert_eq!(given["report"], "report-20260005.md", "{given:#}");
+    assert_eq!(given["findings"][0]["item"], "V0", "{given:#}");
     // No report: null, and the feedback says where one would be found.
-    assert!(results[4]["cg"]["report"].is_null() && results[5]["cg"]["report"].is_null());
-    let feedback = std::fs::read_to_string(out.join("feedback/20260005/feedback-en.md")).unwrap();
+    assert!(results[5]["cg"]["report"].is_null());
+    let feedback = std::fs::read_to_string(out.join("feedback/20260007/feedback-en.md")).unwrap();
     assert!(feedback.contains("the submission holds no report (report/report.md"), "{feedback}");
     let feedback = std::fs::read_to_string(out.join("feedback/20260002/feedback-ja.md")).unwrap();
     assert!(feedback.contains("## レポートの数値（点数には入りません）"), "{feedback}");
@@ -452,10 +465,13 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
     assert!(md.contains("06-slip.zip"), "{md}");
     // The reports: four of the six graded hold one, one right; V1 the item most often wrong.
     assert!(
-        md.contains("4 of the 6 graded submissions hold a report; 4 were read, and in 1 every number checked follows"),
+        md.contains("5 of the 6 graded submissions hold a report; 5 were read, and in 1 every number checked follows"),
         "{md}"
     );
-    assert!(md.contains("| `V1` | 1 |"), "{md}");
+    assert!(md.contains("| `V0` | 1 |\n| `V1` | 1 |"), "{md}");
+    // The files of --reports that no one's report was.
+    assert!(md.contains("## Files of --reports not used"), "{md}");
+    assert!(md.contains("- `20269999.md`\n- `notes.txt`"), "{md}");
     // Each student's feedback, in both languages: the reversed face's failed checks.
     for (lang, head) in [("ja", "# 採点結果"), ("en", "# Grading results")] {
         let path = out.join(format!("feedback/20260002/feedback-{lang}.md"));

@@ -108,6 +108,7 @@ fn refused_submissions_say_why_and_are_kept() {
         isolation: Isolation::Limits,
         lang: Lang::En,
         roster: None,
+        reports: None,
     };
     let graded = cg_grade::grade(&options, no_runs, &|_| {}).unwrap();
     assert_eq!(graded.len(), 12);
@@ -192,6 +193,7 @@ fn a_refused_entry_keeps_its_roster_student_and_an_empty_folder_is_said() {
         isolation: Isolation::Limits,
         lang: Lang::En,
         roster: Some(roster),
+        reports: None,
     };
     let graded = cg_grade::grade(&options, no_runs, &|_| {}).unwrap();
     assert_eq!(graded.len(), 1);

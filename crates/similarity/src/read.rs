@@ -166,27 +166,9 @@ fn text_file(path: &Path, limit: u64) -> Result<String, Text> {
 /// # Errors
 /// The folder cannot be read.
 pub fn reports(dir: &Path, class: &mut [Submission]) -> Result<Vec<String>, Text> {
-    let shown = dir.display();
-    let list = std::fs::read_dir(dir).map_err(|e| {
-        let why = Text::io(&e);
-        Text::new(
-            format!("{shown} を読めません: {}", why.ja),
-            format!("cannot read {shown}: {}", why.en),
-        )
-    })?;
-    let mut names: Vec<_> = list.flatten().map(|e| e.path()).collect();
-    names.sort();
-    let mut unmatched = Vec::new();
-    for path in names {
-        let is_file = std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file());
-        let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        if !is_file || name.starts_with('.') {
-            continue;
-        }
-        let Some(number) = eight_digits(&name) else {
-            unmatched.push(name);
-            continue;
-        };
+    let folder = crate::inside::folder(dir)?;
+    let mut unmatched = folder.unnamed;
+    for (number, (path, found)) in folder.by_student {
         let mut owners = class
             .iter_mut()
             .filter(|s| {
@@ -194,24 +176,22 @@ pub fn reports(dir: &Path, class: &mut [Submission]) -> Result<Vec<String>, Text
             })
             .peekable();
         if owners.peek().is_none() {
-            unmatched.push(name);
+            unmatched
+                .push(path.file_name().map_or_else(String::new, |n| n.to_string_lossy().into()));
             continue;
         }
-        let text = match text_file(&path, crate::inside::MAX_REPORT_BYTES) {
-            Ok(text) => text,
-            Err(why) => {
-                for s in owners {
-                    s.notes.push(why.clone());
-                }
-                continue;
-            }
-        };
         for s in owners {
-            s.report = Some(text.clone());
-            s.report_file = Some(path.display().to_string());
-            s.report_set_aside = s.report_inside.take().or(s.report_set_aside.take());
+            match &found {
+                Ok(found) => {
+                    s.report = Some(found.text.clone());
+                    s.report_file = Some(path.display().to_string());
+                    s.report_set_aside = s.report_inside.take().or(s.report_set_aside.take());
+                }
+                Err(why) => s.notes.push(why.clone()),
+            }
         }
     }
+    unmatched.sort();
     Ok(unmatched)
 }
 
@@ -230,26 +210,6 @@ pub fn set_aside(class: &[Submission]) -> Option<Text> {
             ),
         )
     })
-}
-
-/// The first run of exactly eight digits in `name`.
-fn eight_digits(name: &str) -> Option<&str> {
-    let bytes = name.as_bytes();
-    let mut i = 0;
-    while i < bytes.len() {
-        if bytes[i].is_ascii_digit() {
-            let start = i;
-            while i < bytes.len() && bytes[i].is_ascii_digit() {
-                i += 1;
-            }
-            if i - start == 8 {
-                return Some(&name[start..i]);
-            }
-        } else {
-            i += 1;
-        }
-    }
-    None
 }
 
 #[cfg(test)]
@@ -272,8 +232,8 @@ mod tests {
         assert!(e.ja.contains("`name` というキーはありません"), "{}", e.ja);
         let e = student_file(b"student = 20260001\n").unwrap_err();
         assert!(e.ja.contains("student = \"20260001\"") && e.ja.contains("引用符"), "{}", e.ja);
-        assert_eq!(eight_digits("report-20260001.md"), Some("20260001"));
-        assert_eq!(eight_digits("2026000123.md"), None);
-        assert_eq!(eight_digits("x1_20260002_v2.txt"), Some("20260002"));
+        assert_eq!(crate::inside::eight_digits("report-20260001.md"), Some("20260001"));
+        assert_eq!(crate::inside::eight_digits("2026000123.md"), None);
+        assert_eq!(crate::inside::eight_digits("x1_20260002_v2.txt"), Some("20260002"));
     }
 }

@@ -226,7 +226,7 @@ fn the_roster_binds_participants_and_a_mismatch_is_flagged() {
     std::fs::write(root.join("download.zip"), fake::zip_of(&fake::class())).unwrap();
     let roster = roster::Roster::parse(fake::ROSTER).unwrap();
     let opts = options(&root, &root.join("download.zip"), Some(roster));
-    let pending = crate::collect(&opts, "kit").unwrap();
+    let pending = crate::collect(&opts, "kit", None).unwrap();
     let got: Vec<(&str, &str)> =
         pending.iter().map(|p| (p.entry.as_str(), p.name.as_str())).collect();
     assert_eq!(
@@ -292,13 +292,13 @@ fn the_roster_binds_participants_and_a_mismatch_is_flagged() {
     let hashes = |list: &[crate::Pending]| -> Vec<(String, String)> {
         list.iter().map(|p| (p.entry.clone(), p.hash.clone())).collect()
     };
-    assert_eq!(hashes(&crate::collect(&opts, "kit").unwrap()), hashes(&pending));
+    assert_eq!(hashes(&crate::collect(&opts, "kit", None).unwrap()), hashes(&pending));
     fake::unpack(&fake::class(), &root.join("unpacked"));
     let unpacked = Options { submissions: root.join("unpacked"), ..opts.clone() };
-    assert_eq!(hashes(&crate::collect(&unpacked, "kit").unwrap()), hashes(&pending));
+    assert_eq!(hashes(&crate::collect(&unpacked, "kit", None).unwrap()), hashes(&pending));
     // Without a roster the participant is who its student.toml says.
     let opts = options(&root, &root.join("download.zip"), None);
-    let pending = crate::collect(&opts, "kit").unwrap();
+    let pending = crate::collect(&opts, "kit", None).unwrap();
     assert!(pending.iter().any(|p| p.name == "20260099"));
     let _ = std::fs::remove_dir_all(&root);
 }
