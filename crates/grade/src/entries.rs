@@ -117,7 +117,7 @@ pub(crate) fn collect_from(
                 match folder.and_then(|f| f.by_student.get(student.student.as_str())) {
                     Some((_, Ok(found))) => (Some(found.clone()), Vec::new()),
                     Some((_, Err(why))) => (None, vec![why.clone()]),
-                    None => crate::inside::report(&source),
+                    None => crate::inside::report(&source, crate::report::MAX_BYTES),
                 }
             }
         };

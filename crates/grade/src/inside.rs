@@ -7,9 +7,10 @@
 //! paths and folders named `target` or starting with `.` are not followed; a participant's zip
 //! is read into memory only up to [`MAX_UPLOAD_ZIP_BYTES`]. The report is read in the encoding
 //! the student's editor wrote it in (UTF-8, UTF-16 or Shift_JIS, detected as `cg report` does:
-//! [`cg_core::text::decode`]), and skipped, with a note, when over [`MAX_REPORT_BYTES`] or not
+//! [`cg_core::text::decode`]), and skipped, with a note, when over the caller's limit or not
 //! text. When both `report.md` and `report.tex` are there (the fill writes both), the one changed
-//! last is the one the student wrote in; `report.md` when they were changed at once.
+//! last is the one the student wrote in; `report.md` when they were changed at once; a note names
+//! the others found. A PDF of the report, where no text one is, is named in a note.
 
 use std::io::{Cursor, Read};
 use std::path::{Path, PathBuf};
@@ -22,7 +23,9 @@ use crate::zipfile;
 use cg_core::lang::Text;
 use cg_core::text::Encoding;
 
-/// The largest report read: 4 MiB (a report is some tens of KiB; its figures are other files).
+/// The largest report `cg similarity` reads: 4 MiB (a report is some tens of KiB; its figures
+/// are other files; the class's reports are held together). `cg grade` reads one at a time, up
+/// to the student's own check's limit ([`crate::report::MAX_BYTES`]).
 pub const MAX_REPORT_BYTES: u64 = 4 << 20;
 
 /// The report's names, in the order preferred when both were changed at once.
@@ -81,7 +84,7 @@ fn exercise_paths() -> Vec<String> {
 }
 
 fn wanted(rel: &str) -> bool {
-    is_report(rel) || exercise_paths().iter().any(|w| basename(w) == basename(rel))
+    is_report(rel) || is_pdf(rel) || exercise_paths().iter().any(|w| basename(w) == basename(rel))
 }
 
 fn is_zip(rel: &str) -> bool {
@@ -96,9 +99,11 @@ fn join(a: &str, b: &str) -> String {
     }
 }
 
-/// The report in `entry`, if one is there, and notes on a report found but skipped.
+/// The report in `entry`, if one is there (at most `limit` bytes), and notes: on a report found
+/// but skipped (too big, not text), on the other reports found and not read (of `report.md`
+/// and `report.tex` only one is), and on a PDF of the report found where no text one is.
 #[must_use]
-pub fn report(entry: &Entry) -> (Option<Found>, Vec<Text>) {
+pub fn report(entry: &Entry, limit: u64) -> (Option<Found>, Vec<Text>) {
     let mut items = Vec::new();
     match entry.origin() {
         Origin::Path(path) => {
@@ -117,14 +122,55 @@ pub fn report(entry: &Entry) -> (Option<Found>, Vec<Text>) {
         Origin::Refused => {}
     }
     let mut notes = Vec::new();
-    let found = choose(&items).and_then(|item| match read(item) {
+    let chosen = choose(&items);
+    let found = chosen.and_then(|item| match read(item, limit) {
         Ok(found) => Some(found),
         Err(why) => {
             notes.push(why);
             None
         }
     });
+    if let Some(chosen) = chosen {
+        // The others a student may have meant (two uploads, a `.tex` edited beside the `.md`).
+        for other in items.iter().filter(|i| candidate(i) && i.rel != chosen.rel) {
+            let (it, that) = (&other.rel, &chosen.rel);
+            notes.push(Text::new(
+                format!(
+                    "{it} もありますが、読んだのは {that} だけです（exercises/ の隣の report/ のもの、同じ場所なら後で変更したほう、同時なら report.md）。書いたほうだけを提出してください"
+                ),
+                format!(
+                    "{it} is there too, but only {that} was read (the one in the report/ beside exercises/; of two in one place, the one changed last, report.md at a tie): hand in only the one you wrote in"
+                ),
+            ));
+        }
+    } else if let Some(pdf) = items.iter().find(|i| is_pdf(&i.rel) && in_place(i)) {
+        let it = &pdf.rel;
+        notes.push(Text::new(
+            format!(
+                "{it} は PDF なので数値を確かめられません。report/report.md（または report.tex）も提出してください"
+            ),
+            format!(
+                "{it} is a PDF, whose numbers cannot be checked: hand in report/report.md (or report.tex) too"
+            ),
+        ));
+    }
     (found, notes)
+}
+
+/// A PDF (of the report, when [`in_place`]).
+fn is_pdf(rel: &str) -> bool {
+    basename(rel).to_ascii_lowercase().ends_with(".pdf")
+}
+
+/// Where a report is looked for: in a `report/` folder, or at the top of an upload or a zip.
+fn in_place(item: &Item) -> bool {
+    let folder = item.rel.rsplit_once('/').map_or("", |(d, _)| d);
+    item.top || basename(folder).eq_ignore_ascii_case("report")
+}
+
+/// A report [`choose`] may take: `report.md` or `report.tex` where reports are looked for.
+fn candidate(item: &Item) -> bool {
+    is_report(&item.rel) && in_place(item)
 }
 
 /// The report to read: in the folder holding `exercises/` (its `report/`), else in the
@@ -142,8 +188,7 @@ fn choose(items: &[Item]) -> Option<&Item> {
         .min_by_key(|p| (p.len(), p.to_string()));
     let folder = |rel: &str| rel.rsplit_once('/').map_or("", |(d, _)| d).to_owned();
     let in_report = |rel: &str| basename(&folder(rel)).eq_ignore_ascii_case("report");
-    let reports: Vec<&Item> =
-        items.iter().filter(|i| is_report(&i.rel) && (in_report(&i.rel) || i.top)).collect();
+    let reports: Vec<&Item> = items.iter().filter(|i| candidate(i)).collect();
     let rank = |i: &Item| {
         let here = base.is_some_and(|b| folder(&i.rel) == format!("{b}report"));
         (!here, !in_report(&i.rel), i.rel.matches('/').count(), folder(&i.rel))
@@ -155,10 +200,10 @@ fn choose(items: &[Item]) -> Option<&Item> {
     })
 }
 
-fn too_big(rel: &str, size: u64) -> Text {
+fn too_big(rel: &str, size: u64, limit: u64) -> Text {
     Text::new(
-        format!("{rel} が大きすぎるので読みません（{size} バイト、上限 {MAX_REPORT_BYTES}）"),
-        format!("{rel} is too big and was skipped ({size} bytes, at most {MAX_REPORT_BYTES})"),
+        format!("{rel} が大きすぎるので読みません（{size} バイト、上限 {limit}）"),
+        format!("{rel} is too big and was skipped ({size} bytes, at most {limit})"),
     )
 }
 
@@ -174,14 +219,11 @@ fn skipped(rel: &str, why: &Text) -> Text {
 }
 
 /// Reads `reader` up to one byte over the limit (the size a zip declares may lie).
-fn bounded(reader: impl Read, rel: &str) -> Result<Vec<u8>, Text> {
+fn bounded(reader: impl Read, rel: &str, limit: u64) -> Result<Vec<u8>, Text> {
     let mut bytes = Vec::new();
-    reader
-        .take(MAX_REPORT_BYTES + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| unreadable_io(rel, &e))?;
-    if bytes.len() as u64 > MAX_REPORT_BYTES {
-        return Err(too_big(rel, bytes.len() as u64));
+    reader.take(limit + 1).read_to_end(&mut bytes).map_err(|e| unreadable_io(rel, &e))?;
+    if bytes.len() as u64 > limit {
+        return Err(too_big(rel, bytes.len() as u64, limit));
     }
     Ok(bytes)
 }
@@ -190,15 +232,16 @@ fn from_zip<R: Read + std::io::Seek>(
     mut zip: zip::ZipArchive<R>,
     at: usize,
     rel: &str,
+    limit: u64,
 ) -> Result<Vec<u8>, Text> {
     let entry = zip.by_index(at).map_err(|e| skipped(rel, &crate::submission::zip_reason(&e)))?;
-    bounded(entry, rel)
+    bounded(entry, rel, limit)
 }
 
-fn read(item: &Item) -> Result<Found, Text> {
+fn read(item: &Item, limit: u64) -> Result<Found, Text> {
     let rel = item.rel.as_str();
-    if item.size > MAX_REPORT_BYTES {
-        return Err(too_big(rel, item.size));
+    if item.size > limit {
+        return Err(too_big(rel, item.size, limit));
     }
     let bytes = match &item.loc {
         Loc::File(path) if !path.is_file() => {
@@ -208,21 +251,22 @@ fn read(item: &Item) -> Result<Found, Text> {
             ));
         }
         Loc::File(path) => {
-            bounded(std::fs::File::open(path).map_err(|e| unreadable_io(rel, &e))?, rel)?
+            bounded(std::fs::File::open(path).map_err(|e| unreadable_io(rel, &e))?, rel, limit)?
         }
         Loc::Zip(path, at) => {
             let file = std::fs::File::open(path.as_path()).map_err(|e| unreadable_io(rel, &e))?;
             let zip = zipfile::open(file, MAX_DOWNLOAD_ENTRIES).map_err(|t| skipped(rel, &t))?;
-            from_zip(zip, *at, rel)?
+            from_zip(zip, *at, rel, limit)?
         }
         Loc::Bytes(bytes, at) => {
             let zip = zipfile::open(Cursor::new(bytes.as_slice()), MAX_ZIP_ENTRIES)
                 .map_err(|t| skipped(rel, &t))?;
-            from_zip(zip, *at, rel)?
+            from_zip(zip, *at, rel, limit)?
         }
     };
     let (text, encoding) = cg_core::text::decode(&bytes, None).map_err(|e| {
-        let t = e.text();
+        // Not `--encoding`'s advice: the student's file is what is read, not a command's.
+        let t = e.text_without_option();
         Text::new(
             format!("{rel} を文字として読めないので飛ばします: {}", t.ja),
             format!("{rel} is not text and was skipped: {}", t.en),
@@ -244,13 +288,13 @@ pub struct Folder {
 
 /// The reports in `dir`: each plain file whose name holds a student number (`20260001.md`,
 /// `report-20260001.txt`: [`eight_digits`]) is that student's, read as a report inside a
-/// submission is (at most [`MAX_REPORT_BYTES`], in the encoding detected). Of two for one
+/// submission is (at most `limit` bytes, in the encoding detected). Of two for one
 /// number, the one changed last, `.md` at a tie (as inside a submission). Hidden files, links
 /// and folders are not read.
 ///
 /// # Errors
 /// The folder cannot be read.
-pub fn folder(dir: &Path) -> Result<Folder, Text> {
+pub fn folder(dir: &Path, limit: u64) -> Result<Folder, Text> {
     let shown = dir.display();
     let list = std::fs::read_dir(dir).map_err(|e| {
         let why = Text::io(&e);
@@ -291,7 +335,7 @@ pub fn folder(dir: &Path) -> Result<Folder, Text> {
     }
     for (number, item) in chosen {
         let Loc::File(path) = &item.loc else { continue };
-        out.by_student.insert(number, (path.clone(), read(&item)));
+        out.by_student.insert(number, (path.clone(), read(&item, limit)));
     }
     Ok(out)
 }
@@ -501,7 +545,7 @@ mod tests {
         write(".20260004.md", b"hidden", 0);
         write("20260005.pdf", b"%PDF-1.4\x00\x01\x02\xff\xfe\x00", 0);
         std::fs::create_dir_all(dir.join("20260006")).unwrap();
-        let f = folder(&dir).unwrap();
+        let f = folder(&dir, MAX_REPORT_BYTES).unwrap();
         let text = |n: &str| f.by_student[n].1.as_ref().map(|r| r.text.clone());
         assert_eq!(text("20260001").unwrap(), "V0 (1.0, 0.0, 0.0)\n");
         assert_eq!(text("20260002").unwrap(), "new");
@@ -510,7 +554,59 @@ mod tests {
         let numbers: Vec<&str> = f.by_student.keys().map(String::as_str).collect();
         assert_eq!(numbers, ["20260001", "20260002", "20260003", "20260005"]);
         assert_eq!(f.unnamed, ["notes.txt"]);
-        assert!(folder(&dir.join("missing")).unwrap_err().en.starts_with("cannot read"));
+        assert!(
+            folder(&dir.join("missing"), MAX_REPORT_BYTES)
+                .unwrap_err()
+                .en
+                .starts_with("cannot read")
+        );
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// Of report.md and report.tex changed at once, report.md is read and report.tex named as
+    /// not checked (a student who edited the .tex heard nothing); a PDF alone is named as one
+    /// (it was "no report").
+    #[test]
+    fn the_reports_not_read_are_named() {
+        let dir = std::env::temp_dir().join(format!("cg-inside-others-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(dir.join("exercises/src")).unwrap();
+        std::fs::create_dir_all(dir.join("report")).unwrap();
+        std::fs::write(dir.join("exercises/student.toml"), "student = \"20260001\"\n").unwrap();
+        let when = std::time::SystemTime::now() - std::time::Duration::from_secs(60);
+        for name in ["report/report.md", "report/report.tex"] {
+            std::fs::write(dir.join(name), name).unwrap();
+            std::fs::File::options()
+                .write(true)
+                .open(dir.join(name))
+                .unwrap()
+                .set_modified(when)
+                .unwrap();
+        }
+        let entry = Entry::single(&dir);
+        let (found, notes) = report(&entry, MAX_REPORT_BYTES);
+        assert_eq!(found.unwrap().path, "report/report.md");
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert!(
+            notes[0]
+                .en
+                .starts_with("report/report.tex is there too, but only report/report.md was read"),
+            "{}",
+            notes[0].en
+        );
+        // A PDF alone.
+        std::fs::remove_file(dir.join("report/report.md")).unwrap();
+        std::fs::remove_file(dir.join("report/report.tex")).unwrap();
+        std::fs::write(dir.join("report/report.pdf"), b"%PDF-1.4").unwrap();
+        let (found, notes) = report(&entry, MAX_REPORT_BYTES);
+        assert!(found.is_none());
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert!(
+            notes[0].en.starts_with("report/report.pdf is a PDF, whose numbers cannot be checked"),
+            "{}",
+            notes[0].en
+        );
+        assert!(notes[0].ja.contains("PDF なので数値を確かめられません"), "{}", notes[0].ja);
         let _ = std::fs::remove_dir_all(&dir);
     }
 

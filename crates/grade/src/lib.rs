@@ -375,7 +375,7 @@ pub fn grade_with(
         )));
     }
     let folder = match &options.reports {
-        Some(dir) => Some(inside::folder(dir).map_err(GradeError::Io)?),
+        Some(dir) => Some(inside::folder(dir, report::MAX_BYTES).map_err(GradeError::Io)?),
         None => None,
     };
     let pending = match single {

@@ -20,16 +20,49 @@ use crate::Text;
 use crate::inside::Found;
 use crate::result::{md_code, md_words};
 
+/// The largest report read: the student's own `cg report check`'s limit, so that grading reads
+/// every report the student saw checked.
+pub const MAX_BYTES: u64 = cg_report::app::MAX_REPORT_BYTES;
+
 /// What grading found of the report in a submission.
 #[derive(Clone, Debug, Default)]
 pub struct Facts {
     /// The report's check, when one was found and read.
     pub checked: Option<CheckOutcome>,
-    /// A report found but not read (too big, not text), or not checked (the functions could not
-    /// run): why.
+    /// What the instructor and the student should know besides the check: a report found but
+    /// not read (too big, not text) or not checked (the functions could not run), the other
+    /// reports found and not read, a PDF where no text report is, the template not filled, a
+    /// report filled for another student number.
     pub notes: Vec<Text>,
+    /// The student number the report says it is for, when it is not the graded student's (its
+    /// template line `- Student ID: …`, `\author{学生番号 …}`): a flag.
+    pub claims: Option<String>,
     /// The time its check took (deriving the data in the worker, and verifying).
     pub time: Option<Duration>,
+}
+
+/// What the report's text says of itself for `student`: the number it was filled for when
+/// that is another ([`Facts::claims`]), and a note when it is the template not filled (its
+/// `{{student}}` still there).
+pub(crate) fn about(text: &str, student: &str) -> (Option<String>, Option<Text>) {
+    if text.contains("{{student}}") {
+        let note = t(
+            "レポートは cg report fill を実行する前のひな形のままです。cargo run --release -- report fill で表・行列・図を埋めてから書いてください",
+            "The report is the template before cg report fill: run cargo run --release -- report fill to fill in its tables, matrices and figures, then write in it.",
+        );
+        return (None, Some(note));
+    }
+    let line = text.lines().take(60).find(|l| l.contains("Student ID") || l.contains("学生番号"));
+    let number = line.and_then(crate::inside::eight_digits).filter(|n| *n != student);
+    let note = number.map(|n| {
+        Text::new(
+            format!("レポートの学生番号は {n} で、採点した学生（{student}）のものではありません。"),
+            format!(
+                "The report says it is for student {n}, not for the student graded ({student})."
+            ),
+        )
+    });
+    (number.map(str::to_owned), note)
 }
 
 /// Checks `found` against the data `assignment`'s functions give in `worker` (each call within
@@ -75,10 +108,19 @@ pub fn to_json(facts: &Facts, lang: Lang) -> Value {
             v["text"] = json!(outcome.render(lang));
             v["scored"] = json!(false);
             v["notes_grading"] = json!(notes);
+            v["claims"] = json!(facts.claims);
+            // Every part checked and every number right, nothing else to say: what the summary
+            // counts (`ok` alone leaves out the parts not derived and the tables missing).
+            v["whole"] = json!(
+                outcome.ok()
+                    && outcome.missing.is_empty()
+                    && outcome.verification.notes.is_empty()
+                    && notes.is_empty()
+            );
             v
         }
         None if notes.is_empty() => Value::Null,
-        None => json!({ "scored": false, "notes_grading": notes }),
+        None => json!({ "scored": false, "notes_grading": notes, "claims": facts.claims }),
     }
 }
 
@@ -86,7 +128,7 @@ pub fn to_json(facts: &Facts, lang: Lang) -> Value {
 /// checked; …`, or why it was not read; `None` without a report.
 #[must_use]
 pub fn line(report: &Value, lang: Lang) -> Option<String> {
-    let head = t("レポート（点数には入りません）", "report (not scored)");
+    let head = t("レポート（点数には入りません）", "Report (not scored)");
     let head = head.get(lang);
     if let Some(summary) = report["summary"].as_str() {
         let file = report["report"].as_str().unwrap_or("");
@@ -100,8 +142,8 @@ pub fn line(report: &Value, lang: Lang) -> Option<String> {
 /// Where the report is looked for, said where none was found.
 fn where_looked() -> Text {
     t(
-        "提出物にレポート（report/report.md か report/report.tex）はありませんでした。レポートの数値も確かめてほしいときは、report フォルダを exercises フォルダと一緒に zip にするか、report.md（または report.tex）を zip と並べて提出してください",
-        "the submission holds no report (report/report.md or report/report.tex). To have its numbers checked too, zip the report folder together with the exercises folder, or upload report.md (or report.tex) beside the zip",
+        "提出物にレポート（report/report.md か report/report.tex）はありませんでした。レポートの数値も確かめてほしいときは、report フォルダを exercises フォルダと一緒に zip にするか、report.md（または report.tex）を zip と並べて提出してください。",
+        "The submission holds no report (report/report.md or report/report.tex). To have its numbers checked too, zip the report folder together with the exercises folder, or upload report.md (or report.tex) beside the zip.",
     )
 }
 
@@ -113,41 +155,59 @@ pub fn feedback_section(report: &Value, lang: Lang) -> String {
         "## {}\n\n",
         t("レポートの数値（点数には入りません）", "The report's numbers (not scored)").get(lang)
     );
+    let notes: Vec<&str> = report["notes_grading"]
+        .as_array()
+        .map(|n| n.iter().filter_map(Value::as_str).collect())
+        .unwrap_or_default();
+    for n in &notes {
+        let _ = writeln!(md, "- {}", md_words(n));
+    }
+    if !notes.is_empty() {
+        md.push('\n');
+    }
     if let Some(text) = report["text"].as_str() {
         md.push_str(&crate::result::code_block(text));
         md.push_str("\n\n");
+        // The file checked, as the student's kit has it (`report check` alone reads report.md).
+        let file = report["report"].as_str().unwrap_or("");
+        let name = file.rsplit('/').next().unwrap_or(file);
+        let local = if name.eq_ignore_ascii_case("report.tex") {
+            "report check report/report.tex"
+        } else {
+            "report check"
+        };
         let _ = writeln!(
             md,
-            "{}\n",
-            t(
-                "手元でも同じように確かめられます: cargo run --release -- report check",
-                "The same check on your own machine: cargo run --release -- report check"
-            )
-            .get(lang)
+            "{} `cargo run --release -- {local}`\n",
+            t("手元でも同じように確かめられます:", "The same check on your own machine:").get(lang)
         );
-    } else if let Some(notes) = report["notes_grading"].as_array() {
-        for n in notes.iter().filter_map(Value::as_str) {
-            let _ = writeln!(md, "- {}", md_words(n));
-        }
-        md.push('\n');
-    } else {
+    } else if notes.is_empty() {
         let _ = writeln!(md, "{}\n", where_looked().get(lang));
     }
     md
 }
 
-/// The class.csv cells of a result's report: its file, the numbers checked and the mistakes
-/// (all empty without a report read).
+/// The class.csv columns of a result's report ([`csv_cells`]).
+pub const CSV_COLUMNS: [&str; 4] =
+    ["report", "report_checked", "report_mistakes", "report_not_checked"];
+
+/// The class.csv cells of a result's report: its file (or, for one found but not read, why),
+/// the numbers checked, the mistakes and the parts not checked (all empty without a report).
 #[must_use]
-pub fn csv_cells(result: &Value) -> [String; 3] {
+pub fn csv_cells(result: &Value) -> [String; 4] {
     let r = &result["cg"]["report"];
     let count = |k: &str| r[k].as_u64().map(|n| n.to_string()).unwrap_or_default();
-    [r["report"].as_str().unwrap_or("").to_owned(), count("checked"), count("mistakes")]
+    let file = r["report"]
+        .as_str()
+        .map_or_else(|| r["notes_grading"][0].as_str().unwrap_or("").to_owned(), str::to_owned);
+    let not_checked = r["not_checked"].as_array().map(|a| a.len().to_string()).unwrap_or_default();
+    [file, count("checked"), count("mistakes"), not_checked]
 }
 
-/// The summary's section on the reports: how many submissions held one, how many of those
-/// had every number checked follow from the data, the students with mistakes (most first),
-/// and the items the class got wrong most often. Empty when no graded result has one.
+/// The summary's section on the reports: how many submissions held one, how many of those were
+/// whole (every part checked, every number right, nothing noted), the others with what is
+/// wrong or missing (most mistakes first; one not read with why), and the items the class got
+/// wrong most often. Empty when no graded result has one.
 #[must_use]
 pub fn summary_section(results: &[Value], lang: Lang) -> String {
     let graded: Vec<&Value> = results.iter().filter(|r| r.get("max_score").is_some()).collect();
@@ -158,7 +218,8 @@ pub fn summary_section(results: &[Value], lang: Lang) -> String {
     }
     let read: Vec<&Value> =
         with.iter().copied().filter(|r| r["cg"]["report"]["checked"].is_u64()).collect();
-    let clean = read.iter().filter(|r| r["cg"]["report"]["ok"] == true).count();
+    let whole = |r: &Value| r["cg"]["report"]["whole"] == true;
+    let clean = read.iter().filter(|r| whole(r)).count();
     let mut out = format!(
         "\n## {}\n\n",
         t("レポートの数値（点数には入りません）", "Reports' numbers (not scored)").get(lang)
@@ -169,25 +230,37 @@ pub fn summary_section(results: &[Value], lang: Lang) -> String {
         "{}\n",
         Text::new(
             format!(
-                "採点した {of} 件のうち {n} 件にレポートがあり、{r} 件を読んで、{clean} 件は確かめた数値がすべてデータから導かれました（数値が 1 つもないものは含みません）。"
+                "採点した {of} 件のうち {n} 件にレポートがあり、{r} 件を読みました。そのうち {clean} 件は、すべての部分を確かめられ、数値がすべてデータから導かれ、注もありませんでした。"
             ),
             format!(
-                "{n} of the {of} graded submissions hold a report; {r} were read, and in {clean} every number checked follows from the data (one with no number checked is not counted)."
+                "{n} of the {of} graded submissions hold a report; {r} were read. In {clean}, every part was checked, every number follows from the data and nothing is noted."
             ),
         )
         .get(lang)
     );
-    let mut wrong: Vec<(u64, String)> = read
+    // Every report that is not whole, read or not: what its check said, and how many notes.
+    let mut wrong: Vec<(u64, String)> = with
         .iter()
-        .filter(|r| r["cg"]["report"]["ok"] != true)
+        .filter(|r| !whole(r))
         .map(|r| {
             let rep = &r["cg"]["report"];
             let mistakes = rep["mistakes"].as_u64().unwrap_or(0);
+            let notes = rep["notes"].as_array().map_or(0, Vec::len)
+                + rep["notes_grading"].as_array().map_or(0, Vec::len);
+            let said = match rep["summary"].as_str() {
+                Some(summary) if notes > 0 => format!(
+                    "{summary} {}",
+                    Text::new(format!("（注 {notes} 件）"), format!("({notes} notes)")).get(lang)
+                ),
+                Some(summary) => summary.to_owned(),
+                // Not read: why.
+                None => rep["notes_grading"][0].as_str().unwrap_or("").to_owned(),
+            };
             let line = format!(
                 "- {} ({}): {}",
                 md_code(r["cg"]["submission"].as_str().unwrap_or(""), lang),
                 md_code(r["cg"]["student"].as_str().unwrap_or("?"), lang),
-                md_words(rep["summary"].as_str().unwrap_or(""))
+                md_words(&said)
             );
             (mistakes, line)
         })
@@ -198,8 +271,8 @@ pub fn summary_section(results: &[Value], lang: Lang) -> String {
             out,
             "{}\n\n{}\n",
             t(
-                "誤りのある（または確かめられなかった）レポート:",
-                "Reports with mistakes (or nothing checked):"
+                "誤り・確かめられなかった部分・注のあるレポート（読めなかったものも）:",
+                "Reports with mistakes, parts not checked or notes (and those not read):"
             )
             .get(lang),
             wrong.into_iter().map(|(_, l)| l).collect::<Vec<_>>().join("\n")
@@ -278,58 +351,87 @@ mod tests {
         json!({"score": 1.0, "max_score": 2.0, "cg": {"student": entry, "submission": entry, "report": report}})
     }
 
-    fn read(checked: u64, items: &[&str]) -> Value {
+    /// A report read: `checked` numbers, a finding per item, `parts` parts not checked.
+    fn read(checked: u64, items: &[&str], parts: usize) -> Value {
         let findings: Vec<Value> = items.iter().map(|i| json!({"item": i})).collect();
+        let ok = checked > 0 && items.is_empty();
         json!({
             "report": "report/report.md",
-            "ok": checked > 0 && items.is_empty(),
+            "ok": ok,
+            "whole": ok && parts == 0,
             "checked": checked,
             "mistakes": items.len(),
             "summary": format!("{checked} numbers checked; {} mistakes.", items.len()),
             "findings": findings,
+            "not_checked": vec!["a1.t1: not written yet"; parts],
+            "notes": [],
+            "notes_grading": [],
         })
     }
 
     #[test]
-    fn the_summary_counts_the_reports_and_lists_the_mistakes_most_first() {
+    fn the_summary_counts_the_whole_reports_and_lists_the_others_most_mistakes_first() {
         let class = [
-            graded("clean", read(24, &[])),
-            graded("one", read(24, &["V1"])),
-            graded("three", read(24, &["V1", "F0 normal", "V1"])),
-            graded("nothing", read(0, &[])),
+            graded("clean", read(24, &[], 0)),
+            graded("one", read(24, &["V1"], 0)),
+            graded("three", read(24, &["V1", "F0 normal", "V1"], 0)),
+            graded("nothing", read(0, &[], 0)),
+            // Every number right, but a part not checked (its function loops): not whole.
+            graded("part", read(24, &[], 1)),
             graded("unread", json!({"scored": false, "notes_grading": ["report.md is too big"]})),
             graded("none", Value::Null),
             // Refused: not among the graded, whatever it holds.
-            json!({"score": 0.0, "cg": {"submission": "refused", "report": read(24, &[])}}),
+            json!({"score": 0.0, "cg": {"submission": "refused", "report": read(24, &[], 0)}}),
         ];
         let md = summary_section(&class, Lang::En);
         assert!(
             md.contains(
-                "5 of the 6 graded submissions hold a report; 4 were read, and in 1 every number checked follows"
+                "6 of the 7 graded submissions hold a report; 5 were read. In 1, every part was checked"
             ),
             "{md}"
         );
-        // Most mistakes first; the clean one not listed; nothing checked listed.
+        // Most mistakes first; the whole one not listed; the rest listed, the unread with why.
         let listed: Vec<&str> = md.lines().filter(|l| l.starts_with("- ")).collect();
-        assert_eq!(listed.len(), 3, "{md}");
+        assert_eq!(listed.len(), 5, "{md}");
         assert!(listed[0].starts_with("- `three`") && listed[1].starts_with("- `one`"), "{md}");
-        assert!(listed[2].starts_with("- `nothing`"), "{md}");
+        let rest = &listed[2..];
+        assert!(rest.iter().any(|l| l.starts_with("- `nothing`")), "{md}");
+        assert!(rest.iter().any(|l| l.starts_with("- `part`")), "{md}");
+        assert!(rest.iter().any(|l| l.contains("`report.md is too big`")), "{md}");
         // Each student counted once per item.
         assert!(md.contains("| `V1` | 2 |\n| `F0 normal` | 1 |"), "{md}");
-        assert!(summary_section(&class[5..], Lang::Ja).is_empty());
+        assert!(summary_section(&class[6..], Lang::Ja).is_empty());
         let ja = summary_section(&class, Lang::Ja);
-        assert!(ja.contains("採点した 6 件のうち 5 件にレポートがあり"), "{ja}");
+        assert!(ja.contains("採点した 7 件のうち 6 件にレポートがあり"), "{ja}");
     }
 
     #[test]
     fn a_report_not_read_is_said_with_why_and_none_is_null() {
         let notes = Facts { notes: vec![t("大きすぎます", "too big")], ..Facts::default() };
         let v = to_json(&notes, Lang::En);
-        assert_eq!(line(&v, Lang::En).as_deref(), Some("report (not scored): too big"));
-        assert_eq!(csv_cells(&graded("x", v)), [String::new(), String::new(), String::new()]);
+        assert_eq!(line(&v, Lang::En).as_deref(), Some("Report (not scored): too big"));
+        // class.csv says why in the report's column (it was as empty as for no report).
+        let cells = csv_cells(&graded("x", v));
+        assert_eq!(cells, ["too big".to_owned(), String::new(), String::new(), String::new()]);
         let none = to_json(&Facts::default(), Lang::En);
         assert!(none.is_null() && line(&none, Lang::En).is_none());
-        let cells = csv_cells(&graded("x", read(24, &["V1"])));
-        assert_eq!(cells, ["report/report.md".to_owned(), "24".into(), "1".into()]);
+        let cells = csv_cells(&graded("x", read(24, &["V1"], 2)));
+        assert_eq!(cells, ["report/report.md".to_owned(), "24".into(), "1".into(), "2".into()]);
+    }
+
+    /// A report filled for another number is said (a copy's plainest sign), the template not
+    /// filled is told what to run, and a report of the student's own number says nothing.
+    #[test]
+    fn what_a_report_says_of_itself_is_noted() {
+        let other = "# Report\n\n- Student ID: 20260011\n";
+        let (claims, note) = about(other, "20260010");
+        assert_eq!(claims.as_deref(), Some("20260011"));
+        assert!(note.unwrap().en.contains("for student 20260011, not for the student graded"));
+        let latex = "\\author{学生番号 20260011\\quad 氏名}";
+        assert_eq!(about(latex, "20260010").0.as_deref(), Some("20260011"));
+        assert_eq!(about(other, "20260011"), (None, None));
+        let (claims, note) = about("- Student ID: {{student}}\n", "20260010");
+        assert!(claims.is_none());
+        assert!(note.unwrap().ja.contains("cargo run --release -- report fill"));
     }
 }

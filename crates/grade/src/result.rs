@@ -416,8 +416,9 @@ fn csv_field(s: &str) -> String {
 
 /// What the instructor should look at in a result (`None`: nothing): the number its
 /// `student.toml` claims when the roster says another (a Moodle participant bound to one
-/// student who hands in another's number), an entry not on the roster, the other entries that
-/// claim the same number; for the class table and the progress lines.
+/// student who hands in another's number), an entry not on the roster, a report filled for
+/// another student number ([`crate::report::Facts::claims`]), the other entries that claim the same
+/// number; for the class table and the progress lines.
 #[must_use]
 pub fn flag(result: &Value) -> Option<Text> {
     let cg = &result["cg"];
@@ -431,6 +432,12 @@ pub fn flag(result: &Value) -> Option<Text> {
     }
     if cg["roster"]["listed"] == false {
         parts.push(t("名簿にない", "not on the roster"));
+    }
+    if let Some(other) = cg["report"]["claims"].as_str() {
+        parts.push(Text::new(
+            format!("レポートの学生番号は {other}"),
+            format!("the report is {other}'s"),
+        ));
     }
     if let Some(others) = cg["same_number"].as_array().filter(|a| !a.is_empty()) {
         let others: Vec<&str> = others.iter().filter_map(Value::as_str).collect();
@@ -453,7 +460,9 @@ pub fn class_csv(results: &[Value], lang: Lang) -> String {
     let columns: Vec<&str> = ["student", "submission"]
         .into_iter()
         .chain(crate::submission::MODULES.iter().copied())
-        .chain(["score", "max_score", "report", "report_checked", "report_mistakes", "flag"])
+        .chain(["score", "max_score"])
+        .chain(crate::report::CSV_COLUMNS)
+        .chain(["flag"])
         .collect();
     let mut out = columns.join(",") + "\n";
     for r in results {
@@ -470,9 +479,9 @@ pub fn class_csv(results: &[Value], lang: Lang) -> String {
         }
         row.push(r["score"].as_f64().unwrap_or(0.0).to_string());
         row.push(r["max_score"].as_f64().map(|s| s.to_string()).unwrap_or_default());
-        let [file, checked, mistakes] = crate::report::csv_cells(r);
+        let [file, checked, mistakes, not_checked] = crate::report::csv_cells(r);
         row.push(csv_field(&cg_core::quote::spreadsheet_cell(&file)));
-        row.extend([checked, mistakes]);
+        row.extend([checked, mistakes, not_checked]);
         // A refused entry is marked too: its empty scores read as a graded 0 when sorted.
         let flag = flag(r).or_else(|| problem(r));
         row.push(csv_field(&cg_core::quote::spreadsheet_cell(

@@ -178,6 +178,9 @@ fn run_checks(
     let mut checked = crate::report::Facts { notes: notes.clone(), ..Default::default() };
     if let Some(found) = found {
         let begun = Instant::now();
+        let (claims, note) = crate::report::about(&found.text, student.student.as_str());
+        checked.claims = claims;
+        checked.notes.extend(note);
         let (outcome, _) = crate::report::check(&a, found, worker, options.limits.wall);
         checked.checked = Some(outcome);
         checked.time = Some(begun.elapsed());

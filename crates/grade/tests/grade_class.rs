@@ -372,7 +372,7 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
     let output = results[0]["output"].as_str().unwrap();
     assert!(
         output.contains(&format!(
-            "report (not scored): handin/report/report.md: {} numbers checked; every one follows from the data.",
+            "Report (not scored): handin/report/report.md: {} numbers checked; every one follows from the data.",
             3 * n
         )),
         "{output}"
@@ -406,7 +406,7 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
     // No report: null, and the feedback says where one would be found.
     assert!(results[5]["cg"]["report"].is_null());
     let feedback = std::fs::read_to_string(out.join("feedback/20260007/feedback-en.md")).unwrap();
-    assert!(feedback.contains("the submission holds no report (report/report.md"), "{feedback}");
+    assert!(feedback.contains("The submission holds no report (report/report.md"), "{feedback}");
     let feedback = std::fs::read_to_string(out.join("feedback/20260002/feedback-ja.md")).unwrap();
     assert!(feedback.contains("## レポートの数値（点数には入りません）"), "{feedback}");
     assert!(feedback.contains("6 行目: V1:"), "{feedback}");
@@ -418,7 +418,7 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(
         lines[0],
-        "student,submission,a1,a2,a3,a4,s,score,max_score,report,report_checked,report_mistakes,flag"
+        "student,submission,a1,a2,a3,a4,s,score,max_score,report,report_checked,report_mistakes,report_not_checked,flag"
     );
     assert_eq!(lines.len(), 8, "{csv}");
     for r in &results {
@@ -439,8 +439,9 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         let rep = &r["cg"]["report"];
         let count = |k: &str| rep[k].as_u64().map(|n| n.to_string()).unwrap_or_default();
         // Nobody here is flagged: the flag column is empty.
+        let parts = rep["not_checked"].as_array().map(|a| a.len().to_string()).unwrap_or_default();
         let row = format!(
-            "{},{},{},{},",
+            "{},{},{},{},{parts},",
             row.trim_end_matches(".0"),
             rep["report"].as_str().unwrap_or(""),
             count("checked"),
@@ -449,10 +450,10 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
         assert!(lines.contains(&row.as_str()), "{row} not in\n{csv}");
     }
     assert!(
-        lines.contains(&"20260003,03-a2-syntax,31,0,13,9,22,75,89,report/report.tex,0,0,"),
+        lines.contains(&"20260003,03-a2-syntax,31,0,13,9,22,75,89,report/report.tex,0,0,0,"),
         "{csv}"
     );
-    assert!(lines.iter().any(|l| l.starts_with(",06-slip.zip,,,,,,0,,,,,")), "{csv}");
+    assert!(lines.iter().any(|l| l.starts_with(",06-slip.zip,,,,,,0,,,,,,")), "{csv}");
     let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
     // Most failed first: a1.t2.outward and a1.t2.winding (the loop and the reversed face),
     // then the checks one submission failed; the refused zip is listed.
@@ -465,7 +466,17 @@ fn a_generated_class_gets_exactly_its_expected_grades() {
     assert!(md.contains("06-slip.zip"), "{md}");
     // The reports: four of the six graded hold one, one right; V1 the item most often wrong.
     assert!(
-        md.contains("5 of the 6 graded submissions hold a report; 5 were read, and in 1 every number checked follows"),
+        md.contains(
+            "5 of the 6 graded submissions hold a report; 5 were read. In 0, every part was checked"
+        ),
+        "{md}"
+    );
+    // The correct one's numbers all follow, but it has only the vertex table: listed, with the
+    // notes on the tables it lacks (it was counted as a whole report).
+    let correct_line = md.lines().find(|l| l.starts_with("- `01-correct.zip`")).unwrap_or("");
+    assert!(
+        correct_line.contains("every one follows from the data.")
+            && correct_line.contains(" notes)"),
         "{md}"
     );
     assert!(md.contains("| `V0` | 1 |\n| `V1` | 1 |"), "{md}");

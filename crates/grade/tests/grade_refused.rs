@@ -146,7 +146,7 @@ fn refused_submissions_say_why_and_are_kept() {
     assert_eq!(csv.lines().count(), 13, "{csv}");
     // A refused entry's flag says so (its empty scores read as a graded 0 when sorted).
     assert!(
-        csv.contains("\n,slip.zip,,,,,,0,,,,,refused: zip entry /etc/cron.d/x has an unsafe path"),
+        csv.contains("\n,slip.zip,,,,,,0,,,,,,refused: zip entry /etc/cron.d/x has an unsafe path"),
         "{csv}"
     );
     let md = std::fs::read_to_string(out.join("summary.md")).unwrap();

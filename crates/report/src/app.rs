@@ -684,7 +684,7 @@ impl CheckOutcome {
         } else if wrong == 0 && checked == 0 {
             let none = Text::new(
                 "確かめられた数値は 1 つもありません。キットが読む書き方の表（`V0 (0.0, 1.0, 0.0)` の頂点の行、`F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 }` の面の行、`<!-- cg: s.light.p -->` のようなタグのついた表）が見つかりませんでした。`cargo run --release -- report fill` が書くひな形の書き方に合わせてください",
-                "no number was checked: the report has no table in a form the checker reads (vertex rows `V0 (0.0, 1.0, 0.0)`, face rows `F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 }`, tables after a tag such as `<!-- cg: s.light.p -->`); write them as the template `cargo run --release -- report fill` writes does",
+                "no number was checked: the report has no table in a form the checker reads (vertex rows `V0 (0.0, 1.0, 0.0)`, face rows `F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 }`, tables after a tag such as `<!-- cg: s.light.p -->`); write them as `cargo run --release -- report fill` writes them in the template",
             );
             if parts == 0 {
                 none

@@ -27,7 +27,8 @@ pub fn class(path: &Path, reference: bool) -> Result<Vec<Submission>, Text> {
             match entry.read() {
                 Ok(files) => {
                     if !reference {
-                        let (found, notes) = crate::inside::report(entry);
+                        let (found, notes) =
+                            crate::inside::report(entry, crate::inside::MAX_REPORT_BYTES);
                         if let Some(found) = found {
                             s.report = Some(found.text);
                             s.report_inside = Some(found.path);
@@ -166,7 +167,7 @@ fn text_file(path: &Path, limit: u64) -> Result<String, Text> {
 /// # Errors
 /// The folder cannot be read.
 pub fn reports(dir: &Path, class: &mut [Submission]) -> Result<Vec<String>, Text> {
-    let folder = crate::inside::folder(dir)?;
+    let folder = crate::inside::folder(dir, crate::inside::MAX_REPORT_BYTES)?;
     let mut unmatched = folder.unnamed;
     for (number, (path, found)) in folder.by_student {
         let mut owners = class

@@ -273,7 +273,7 @@ fn the_roster_binds_participants_and_a_mismatch_is_flagged() {
     let csv = result::class_csv(&results, Lang::En);
     assert!(
         csv.starts_with(
-            "student,submission,a1,a2,a3,a4,s,score,max_score,report,report_checked,report_mistakes,flag\n"
+            "student,submission,a1,a2,a3,a4,s,score,max_score,report,report_checked,report_mistakes,report_not_checked,flag\n"
         ),
         "{csv}"
     );

@@ -382,7 +382,8 @@ pub(crate) fn comment(result: &Value, lang: Lang) -> String {
     );
     let mut comment = text.get(lang).to_owned();
     if let Some(line) = crate::report::line(&cg["report"], lang) {
-        comment.push(' ');
+        // Sentences run on in Japanese; a space between them in English.
+        comment.push_str(t("", " ").get(lang));
         comment.push_str(&line);
     }
     html(&comment)

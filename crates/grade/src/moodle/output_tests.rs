@@ -278,7 +278,7 @@ fn a_refusal_a_failed_grading_and_a_report_are_each_said_as_what_they_are() {
     let graded = with_report(result("x", "20260001", None, Lang::En));
     let en = output::comment(&graded, Lang::En);
     assert!(
-        en.ends_with("report (not scored): report/report.md: 12 numbers checked; 1 mistake."),
+        en.ends_with(". Report (not scored): report/report.md: 12 numbers checked; 1 mistake."),
         "{en}"
     );
     let md = output::feedback_md(&graded, Lang::En);
