@@ -132,7 +132,12 @@ pub fn report(entry: &Entry, limit: u64) -> (Option<Found>, Vec<Text>) {
     });
     if let Some(chosen) = chosen {
         // The others a student may have meant (two uploads, a `.tex` edited beside the `.md`).
-        for other in items.iter().filter(|i| candidate(i) && i.rel != chosen.rel) {
+        let folder = |i: &Item| i.rel.rsplit_once('/').map_or(String::new(), |(d, _)| d.to_owned());
+        // Not the fill's other file beside it, older: the one the student changed last is read.
+        let older_sibling = |i: &Item| folder(i) == folder(chosen) && i.time < chosen.time;
+        for other in
+            items.iter().filter(|i| candidate(i) && i.rel != chosen.rel && !older_sibling(i))
+        {
             let (it, that) = (&other.rel, &chosen.rel);
             notes.push(Text::new(
                 format!(
@@ -594,6 +599,14 @@ mod tests {
             "{}",
             notes[0].en
         );
+        // The .md changed later: it is the one written in, and the older .tex is no news.
+        std::fs::File::options()
+            .write(true)
+            .open(dir.join("report/report.md"))
+            .unwrap()
+            .set_modified(std::time::SystemTime::now())
+            .unwrap();
+        assert_eq!(report(&entry, MAX_REPORT_BYTES).1, []);
         // A PDF alone.
         std::fs::remove_file(dir.join("report/report.md")).unwrap();
         std::fs::remove_file(dir.join("report/report.tex")).unwrap();

@@ -109,13 +109,15 @@ pub fn to_json(facts: &Facts, lang: Lang) -> Value {
             v["scored"] = json!(false);
             v["notes_grading"] = json!(notes);
             v["claims"] = json!(facts.claims);
-            // Every part checked and every number right, nothing else to say: what the summary
-            // counts (`ok` alone leaves out the parts not derived and the tables missing).
+            // Every part checked, every number right, no table missing, the student's own: what
+            // the summary counts (`ok` alone leaves out the parts not derived and the tables
+            // missing). The grader's other notes (another file beside it) are the student's to
+            // read, not the report's fault.
             v["whole"] = json!(
                 outcome.ok()
                     && outcome.missing.is_empty()
                     && outcome.verification.notes.is_empty()
-                    && notes.is_empty()
+                    && facts.claims.is_none()
             );
             v
         }
@@ -205,7 +207,7 @@ pub fn csv_cells(result: &Value) -> [String; 4] {
 }
 
 /// The summary's section on the reports: how many submissions held one, how many of those were
-/// whole (every part checked, every number right, nothing noted), the others with what is
+/// whole (every part checked, every number right, no table missing, the student's own), the others with what is
 /// wrong or missing (most mistakes first; one not read with why), and the items the class got
 /// wrong most often. Empty when no graded result has one.
 #[must_use]
@@ -230,10 +232,10 @@ pub fn summary_section(results: &[Value], lang: Lang) -> String {
         "{}\n",
         Text::new(
             format!(
-                "採点した {of} 件のうち {n} 件にレポートがあり、{r} 件を読みました。そのうち {clean} 件は、すべての部分を確かめられ、数値がすべてデータから導かれ、注もありませんでした。"
+                "採点した {of} 件のうち {n} 件にレポートがあり、{r} 件を読みました。そのうち {clean} 件は、すべての部分を確かめられ、数値がすべてデータから導かれ、足りない表もありませんでした。"
             ),
             format!(
-                "{n} of the {of} graded submissions hold a report; {r} were read. In {clean}, every part was checked, every number follows from the data and nothing is noted."
+                "{n} of the {of} graded submissions hold a report; {r} were read. In {clean}, every part was checked, every number follows from the data and no table is missing."
             ),
         )
         .get(lang)
@@ -250,7 +252,11 @@ pub fn summary_section(results: &[Value], lang: Lang) -> String {
             let said = match rep["summary"].as_str() {
                 Some(summary) if notes > 0 => format!(
                     "{summary} {}",
-                    Text::new(format!("（注 {notes} 件）"), format!("({notes} notes)")).get(lang)
+                    Text::new(
+                        format!("（注 {notes} 件）"),
+                        format!("({notes} {})", if notes == 1 { "note" } else { "notes" })
+                    )
+                    .get(lang)
                 ),
                 Some(summary) => summary.to_owned(),
                 // Not read: why.
