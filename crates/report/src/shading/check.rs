@@ -10,7 +10,7 @@ use cg_core::lang::Lang;
 use cg_harness::Text;
 
 use super::fill::value_text;
-use super::{ParsedRow, ParsedTable, canonical, label_matches};
+use super::{ParsedRow, ParsedTable, canonical, kit_row_for, written_row_for};
 use crate::model::Written;
 use crate::parse::{clip, normalize, parse_number};
 use crate::verify::{Checker, Finding};
@@ -222,7 +222,7 @@ fn chosen_point<'a>(
         let Some(k) = kit_row.cells.iter().position(|c| matches!(c, Cell::Chosen(_))) else {
             continue;
         };
-        let row = written.rows.iter().find(|r| label_matches(&r.label, &kit_row.label))?;
+        let row = written_row_for(&written.rows, kit_row, &kit.rows)?;
         let Written3::Numbers(n) = read_cell(row.cells.get(k)?) else { return None };
         let [x, y, z] = n.as_slice() else { return None };
         let p = DVec3::new(x.value, y.value, z.value);
@@ -236,7 +236,7 @@ fn chosen_point<'a>(
 /// note when it holds numbers. Shared by every tagged table ([`crate::periods`] too).
 pub(crate) fn check_table(c: &mut Checker, table: &ParsedTable, kit: &Table) {
     for row in &table.rows {
-        let Some(kit_row) = kit.rows.iter().find(|r| label_matches(&row.label, &r.label)) else {
+        let Some(kit_row) = kit_row_for(&row.label, &kit.rows) else {
             if row.cells.iter().any(|t| matches!(read_cell(t), Written3::Numbers(_))) {
                 let known = |lang: Lang| {
                     kit.rows.iter().map(|r| r.label.get(lang)).collect::<Vec<_>>().join(", ")
@@ -340,7 +340,7 @@ pub(crate) fn check_complete(
     let written_in = written_in(table, kit);
     let last_line = table.rows.last().map_or(table.line, |r| r.line);
     for kit_row in &kit.rows {
-        let Some(row) = table.rows.iter().find(|r| label_matches(&r.label, &kit_row.label)) else {
+        let Some(row) = written_row_for(&table.rows, kit_row, &kit.rows) else {
             let label = kit_row.label.get(written_in);
             c.out.checked += 1;
             c.out.findings.push(Finding {

@@ -229,5 +229,46 @@ fn label_matches(written: &str, label: &cg_harness::Text) -> bool {
     })
 }
 
+/// Whether `written` names `label` once what a Shift_JIS save loses is allowed for: an editor
+/// writes `?` for a character the file cannot keep (`·` of `N·L`, `₁` of `θ₁`), iconv's
+/// transliteration `.` for `·`. Each `?` stands for any one character, a `.` for `·`.
+fn label_matches_loosely(written: &str, label: &cg_harness::Text) -> bool {
+    let w: Vec<char> = canonical(written).chars().collect();
+    if !w.iter().any(|c| matches!(c, '?' | '.')) {
+        return false;
+    }
+    [Lang::Ja, Lang::En].iter().any(|&lang| {
+        let l = label.get(lang);
+        [canonical(l), canonical(&tex_label(l))].iter().any(|l| {
+            let l: Vec<char> = l.chars().collect();
+            l.len() == w.len()
+                && w.iter().zip(&l).all(|(a, b)| a == b || *a == '?' || (*a == '.' && *b == '·'))
+        })
+    })
+}
+
+/// The kit's row a written label names: the one it names ([`label_matches`]), else the only
+/// one it names once a Shift_JIS save's losses are allowed (`θ?` names neither `θ₁` nor `θ₂`
+/// when the table has both).
+pub(crate) fn kit_row_for<'a>(
+    written: &str,
+    rows: &'a [cg_assign::cg_shading::report::Row],
+) -> Option<&'a cg_assign::cg_shading::report::Row> {
+    rows.iter().find(|r| label_matches(written, &r.label)).or_else(|| {
+        let mut loose = rows.iter().filter(|r| label_matches_loosely(written, &r.label));
+        let first = loose.next()?;
+        loose.next().is_none().then_some(first)
+    })
+}
+
+/// The written row that names `kit_row` of `rows` ([`kit_row_for`]).
+pub(crate) fn written_row_for<'a>(
+    written: &'a [ParsedRow],
+    kit_row: &cg_assign::cg_shading::report::Row,
+    rows: &[cg_assign::cg_shading::report::Row],
+) -> Option<&'a ParsedRow> {
+    written.iter().find(|r| kit_row_for(&r.label, rows).is_some_and(|k| std::ptr::eq(k, kit_row)))
+}
+
 #[cfg(test)]
 mod tests;

@@ -481,3 +481,30 @@ fn labels_read_after_a_shift_jis_round_trip() {
     assert!(!label_matches("θ1", &theta) && !label_matches("θ₁", &theta));
     assert!(!label_matches("x 1", &minus) && !label_matches("－ｙ　１", &minus));
 }
+
+/// Labels as a lossy Shift_JIS save leaves them: an editor's `?` for `·` and for `₁`, iconv's
+/// `.` for `·`. Each was a false mistake ("the table has no row `N·L`") and a note on a row the
+/// table does not have; `θ?` names no row when the table has both `θ₁` and `θ₂`.
+#[test]
+fn labels_read_after_a_lossy_shift_jis_save_when_they_name_one_row() {
+    use super::{kit_row_for, written_row_for};
+    use cg_assign::cg_shading::report::Row;
+    let row = |l: &str| Row { label: cg_harness::Text::new(l, l), cells: Vec::new() };
+    let rows = [row("N·L"), row("R·V"), row("θ₁"), row("θ₂"), row("η·sin θ₁")];
+    let named = |w: &str| kit_row_for(w, &rows).map(|r| r.label.en.clone());
+    assert_eq!(named("N?L").as_deref(), Some("N·L"));
+    assert_eq!(named("N.L").as_deref(), Some("N·L"));
+    assert_eq!(named("R?V").as_deref(), Some("R·V"));
+    assert_eq!(named("η?sin θ?").as_deref(), Some("η·sin θ₁"));
+    // Exact first: `θ1` is θ₁; `θ?` could be either.
+    assert_eq!(named("θ1").as_deref(), Some("θ₁"));
+    assert_eq!(named("θ?"), None);
+    assert_eq!(named("X?Y"), None);
+    // The written row of a kit row, the same way.
+    let written = [
+        super::ParsedRow { line: 3, label: "N?L".into(), cells: Vec::new() },
+        super::ParsedRow { line: 4, label: "θ?".into(), cells: Vec::new() },
+    ];
+    assert_eq!(written_row_for(&written, &rows[0], &rows).map(|r| r.line), Some(3));
+    assert!(written_row_for(&written, &rows[2], &rows).is_none());
+}
