@@ -47,8 +47,8 @@ pub struct Facts {
 pub(crate) fn about(text: &str, student: &str) -> (Option<String>, Option<Text>) {
     if text.contains("{{student}}") {
         let note = t(
-            "レポートは cg report fill を実行する前のひな形のままです。cargo run --release -- report fill で表・行列・図を埋めてから書いてください",
-            "The report is the template before cg report fill: run cargo run --release -- report fill to fill in its tables, matrices and figures, then write in it.",
+            "レポートは cg report fill を実行する前のひな形のままです。`cargo run --release -- report fill` で表・行列・図を埋めてから書いてください",
+            "The report is the template before cg report fill: run `cargo run --release -- report fill` to fill in its tables, matrices and figures, then write in it.",
         );
         return (None, Some(note));
     }
