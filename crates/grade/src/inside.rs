@@ -132,9 +132,9 @@ pub fn report(entry: &Entry, limit: u64) -> (Option<Found>, Vec<Text>) {
     });
     if let Some(chosen) = chosen {
         // The others a student may have meant (two uploads, a `.tex` edited beside the `.md`).
-        let folder = |i: &Item| i.rel.rsplit_once('/').map_or(String::new(), |(d, _)| d.to_owned());
         // Not the fill's other file beside it, older: the one the student changed last is read.
-        let older_sibling = |i: &Item| folder(i) == folder(chosen) && i.time < chosen.time;
+        let older_sibling =
+            |i: &Item| parent(&i.rel) == parent(&chosen.rel) && i.time < chosen.time;
         for other in
             items.iter().filter(|i| candidate(i) && i.rel != chosen.rel && !older_sibling(i))
         {
@@ -169,8 +169,12 @@ fn is_pdf(rel: &str) -> bool {
 
 /// Where a report is looked for: in a `report/` folder, or at the top of an upload or a zip.
 fn in_place(item: &Item) -> bool {
-    let folder = item.rel.rsplit_once('/').map_or("", |(d, _)| d);
-    item.top || basename(folder).eq_ignore_ascii_case("report")
+    item.top || basename(parent(&item.rel)).eq_ignore_ascii_case("report")
+}
+
+/// The folder a path lies in (`""` at the top).
+fn parent(rel: &str) -> &str {
+    rel.rsplit_once('/').map_or("", |(d, _)| d)
 }
 
 /// A report [`choose`] may take: `report.md` or `report.tex` where reports are looked for.
@@ -191,12 +195,11 @@ fn choose(items: &[Item]) -> Option<&Item> {
             })
         })
         .min_by_key(|p| (p.len(), p.to_string()));
-    let folder = |rel: &str| rel.rsplit_once('/').map_or("", |(d, _)| d).to_owned();
-    let in_report = |rel: &str| basename(&folder(rel)).eq_ignore_ascii_case("report");
+    let in_report = |rel: &str| basename(parent(rel)).eq_ignore_ascii_case("report");
     let reports: Vec<&Item> = items.iter().filter(|i| candidate(i)).collect();
     let rank = |i: &Item| {
-        let here = base.is_some_and(|b| folder(&i.rel) == format!("{b}report"));
-        (!here, !in_report(&i.rel), i.rel.matches('/').count(), folder(&i.rel))
+        let here = base.is_some_and(|b| parent(&i.rel) == format!("{b}report"));
+        (!here, !in_report(&i.rel), i.rel.matches('/').count(), parent(&i.rel).to_owned())
     };
     let best = reports.iter().map(|i| rank(i)).min()?;
     reports.into_iter().filter(|i| rank(i) == best).min_by_key(|i| {

@@ -66,22 +66,25 @@ pub(crate) fn about(text: &str, student: &str) -> (Option<String>, Option<Text>)
 }
 
 /// Checks `found` against the data `assignment`'s functions give in `worker` (each call within
-/// `per_call`; after one runs out of time the others fail at once, as in `cg report check`).
-/// Nothing is derived for a report without one number in the notation (`report.md` still the
-/// template, say).
+/// `per_call`; after one runs out of time the others fail at once, as in `cg report check`),
+/// with what its text says of itself ([`about`]) added to `notes`. Nothing is derived for a
+/// report without one number in the notation (`report.md` still the template, say).
 pub(crate) fn check(
     assignment: &Variants,
-    found: &Found,
+    (found, notes): (&Found, &[Text]),
     worker: cg_worker::Worker,
     per_call: Duration,
-) -> (CheckOutcome, cg_worker::Worker) {
+) -> Facts {
+    let begun = std::time::Instant::now();
+    let (claims, note) = about(&found.text, assignment.student.as_str());
     let (parsed, problems) = cg_report::parse::parse_report(&found.text);
-    let ((derived, missing), worker) = if parsed.is_empty() {
-        ((Derived::default(), Vec::new()), worker)
+    let (derived, missing) = if parsed.is_empty() {
+        (Derived::default(), Vec::new())
     } else {
         cg_worker::proxy::with_worker_until_timeout(worker, per_call, || {
             assignment.derive(&Impls::worker())
         })
+        .0
     };
     let verification = cg_report::verify::verify_with(&parsed, &derived, Some(assignment));
     let path = PathBuf::from(&found.path);
@@ -93,7 +96,12 @@ pub(crate) fn check(
         read: vec![(path, found.encoding)],
         items: parsed.items(),
     };
-    (outcome, worker)
+    Facts {
+        checked: Some(outcome),
+        notes: notes.iter().cloned().chain(note).collect(),
+        claims,
+        time: Some(begun.elapsed()),
+    }
 }
 
 /// The result's `cg.report`: `null` when the submission holds no report, else the check

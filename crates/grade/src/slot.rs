@@ -175,16 +175,10 @@ fn run_checks(
         .map(|r| (r.assignment.clone(), AssignmentRun::Report(r.to_json())))
         .collect();
     let checks_time = started.elapsed();
-    let mut checked = crate::report::Facts { notes: notes.clone(), ..Default::default() };
-    if let Some(found) = found {
-        let begun = Instant::now();
-        let (claims, note) = crate::report::about(&found.text, student.student.as_str());
-        checked.claims = claims;
-        checked.notes.extend(note);
-        let (outcome, _) = crate::report::check(&a, found, worker, options.limits.wall);
-        checked.checked = Some(outcome);
-        checked.time = Some(begun.elapsed());
-    }
+    let checked = match found {
+        Some(found) => crate::report::check(&a, (found, notes), worker, options.limits.wall),
+        None => crate::report::Facts { notes: notes.clone(), ..Default::default() },
+    };
     (runs, Baseline::new(), checks_time, checked)
 }
 
