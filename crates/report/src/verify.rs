@@ -276,6 +276,7 @@ impl Checker {
     }
 
     fn vertices(&mut self, rows: &[ParsedVertex], data: &[Vec3]) {
+        let mut absent = Vec::new();
         for v in rows {
             match data.get(v.index as usize) {
                 Some(p) => {
@@ -289,24 +290,10 @@ impl Checker {
                         false,
                     );
                 }
-                None => self.note(
-                    format!(
-                        "V{}（{} 行目）: データに V{} はありません（頂点は {} 個）",
-                        v.index,
-                        v.line,
-                        v.index,
-                        data.len()
-                    ),
-                    format!(
-                        "V{} (line {}): the data has no V{} (it has {} vertices)",
-                        v.index,
-                        v.line,
-                        v.index,
-                        data.len()
-                    ),
-                ),
+                None => absent.push((v.index, v.line)),
             }
         }
+        absent::rows(self, 'V', &absent, data.len());
     }
 
     fn normal(&mut self, f: &ParsedFace, derived: Option<DVec3>) {
@@ -380,19 +367,6 @@ impl Checker {
         });
     }
 
-    fn no_face(&mut self, f: &ParsedFace, count: usize) {
-        self.note(
-            format!(
-                "F{}（{} 行目）: データに F{} はありません（面は {count} 個）",
-                f.index, f.line, f.index
-            ),
-            format!(
-                "F{} (line {}): the data has no F{} (it has {count} faces)",
-                f.index, f.line, f.index
-            ),
-        );
-    }
-
     fn matrices(&mut self, written: &[ParsedMatrix], unread: &[String], derived: &Derived) {
         let known = known_matrices(derived);
         // ID → the derived matrix, for the products and (`ID.factors.k`) their factors.
@@ -417,38 +391,12 @@ impl Checker {
             };
             self.entries(m, mat);
         }
-        // Factors written beyond the product's: how many the product has.
+        // Factors written beyond the product's, and tags that name no derived matrix.
         let (extra, unknown): (Vec<&ParsedMatrix>, Vec<&ParsedMatrix>) = unknown
             .into_iter()
             .partition(|m| known.iter().any(|k| m.id.starts_with(&format!("{}{FACTORS}.", k.id))));
-        for m in extra {
-            let product = m.id.rsplit_once('.').map_or("", |(p, _)| p);
-            let have = product
-                .strip_suffix(FACTORS)
-                .and_then(|id| known.iter().find(|k| k.id == id))
-                .map_or(0, |k| k.factors.len());
-            self.note(
-                format!(
-                    "`{product}`（{} 行目）: 積の因子は {have} 個ですが、それより多く書かれています（余分な因子は確かめていません）",
-                    m.line
-                ),
-                format!(
-                    "`{product}` (line {}): the product has {have} factors and more are written (the extra ones are not checked)",
-                    m.line
-                ),
-            );
-        }
-        if !unknown.is_empty() {
-            let ids: Vec<&str> = known.iter().map(|k| k.id.as_str()).collect();
-            let known_list = if ids.is_empty() { "—".to_owned() } else { ids.join(", ") };
-            let tags: Vec<String> = unknown.iter().map(|m| format!("`{}`", m.id)).collect();
-            let lines: Vec<String> = unknown.iter().map(|m| m.line.to_string()).collect();
-            let (tags, lines) = (tags.join(", "), lines.join(", "));
-            self.note(
-                format!("タグ {tags}（{lines} 行目）に対応する導出済みの行列がないので確かめていません（あるのは {known_list}）"),
-                format!("no derived matrix has the tag {tags} (line {lines}), so it was not checked; known: {known_list}"),
-            );
-        }
+        absent::extra_factors(self, &extra, &known);
+        absent::unknown_tags(self, &unknown, &known, derived);
         let missing: Vec<&str> = known
             .iter()
             // A matrix written but not read is a problem at its line already.
@@ -691,9 +639,10 @@ pub fn verify_with(
     match &derived.a1 {
         Some(p) => {
             c.vertices(&report.vertices, &p.vertices);
+            let mut absent = Vec::new();
             for f in &report.faces {
                 let Some(&data) = p.faces.get(f.index as usize) else {
-                    c.no_face(f, p.faces.len());
+                    absent.push((f.index, f.line));
                     continue;
                 };
                 match relation(f.vertices, data) {
@@ -707,6 +656,7 @@ pub fn verify_with(
                 let n = p.derived_normals.get(f.index as usize).copied().flatten();
                 c.normal(f, n.map(Vec3::as_dvec3));
             }
+            absent::rows(&mut c, 'F', &absent, p.faces.len());
             missing::tables_missing(&mut c, report);
             missing::rows_missing(&mut c, report, p);
         }
@@ -745,6 +695,7 @@ pub fn verify_with(
     c.finish()
 }
 
+mod absent;
 mod data;
 mod missing;
 mod outward;

@@ -10,7 +10,7 @@ use cg_core::lang::Lang;
 use cg_harness::Text;
 
 use super::fill::value_text;
-use super::{ParsedRow, ParsedTable, canonical, kit_row_for, written_row_for};
+use super::{ParsedRow, ParsedTable, canonical, kit_row_for, rows_it_could_be, written_row_for};
 use crate::model::Written;
 use crate::parse::{clip, normalize, parse_number};
 use crate::verify::{Checker, Finding};
@@ -237,6 +237,29 @@ fn chosen_point<'a>(
 pub(crate) fn check_table(c: &mut Checker, table: &ParsedTable, kit: &Table) {
     for row in &table.rows {
         let Some(kit_row) = kit_row_for(&row.label, &kit.rows) else {
+            let could_be = rows_it_could_be(&row.label, &kit.rows);
+            if !could_be.is_empty() {
+                let list = |lang: Lang, or: &str| {
+                    could_be.iter().map(|r| r.label.get(lang)).collect::<Vec<_>>().join(or)
+                };
+                c.note(
+                    format!(
+                        "{} 行目: 表 {} の行 `{}` は {} のどれか決められないので確かめていません。`?` は Shift_JIS で保存したとき書けない文字の代わりにエディタが書く文字です。レポートを UTF-8 で保存してください",
+                        row.line,
+                        table.id,
+                        clip(&row.label),
+                        list(Lang::Ja, "・")
+                    ),
+                    format!(
+                        "line {}: the row `{}` of table {} could be {}, so it was not checked: a `?` is what an editor writes for a character Shift_JIS cannot hold; save the report as UTF-8",
+                        row.line,
+                        clip(&row.label),
+                        table.id,
+                        list(Lang::En, " or ")
+                    ),
+                );
+                continue;
+            }
             if row.cells.iter().any(|t| matches!(read_cell(t), Written3::Numbers(_))) {
                 let known = |lang: Lang| {
                     kit.rows.iter().map(|r| r.label.get(lang)).collect::<Vec<_>>().join(", ")
@@ -342,6 +365,24 @@ pub(crate) fn check_complete(
     for kit_row in &kit.rows {
         let Some(row) = written_row_for(&table.rows, kit_row, &kit.rows) else {
             let label = kit_row.label.get(written_in);
+            // A row whose label lost a character in a Shift_JIS save may be this one.
+            let lossy = table.rows.iter().find(|r| {
+                rows_it_could_be(&r.label, &kit.rows).iter().any(|k| std::ptr::eq(*k, kit_row))
+            });
+            let hint = lossy.map_or_else(Text::default, |r| {
+                Text::new(
+                    format!(
+                        "（{} 行目の `{}` がこの行かもしれません。レポートを UTF-8 で保存してください）",
+                        r.line,
+                        clip(&r.label)
+                    ),
+                    format!(
+                        " (the row `{}` at line {} may be it: save the report as UTF-8)",
+                        clip(&r.label),
+                        r.line
+                    ),
+                )
+            });
             c.out.checked += 1;
             c.out.findings.push(Finding {
                 line: last_line,
@@ -351,12 +392,12 @@ pub(crate) fn check_complete(
                 tolerance: None,
                 why: Text::new(
                     format!(
-                        "表に「{}」の行がありません。すべての行を書きます（表は最初の空行までなので、表の途中に空行を入れないでください）",
-                        kit_row.label.ja
+                        "表に「{}」の行がありません{}。すべての行を書きます（表は最初の空行までなので、表の途中に空行を入れないでください）",
+                        kit_row.label.ja, hint.ja
                     ),
                     format!(
-                        "the table has no row `{}`: write every row (a table ends at its first blank line, so keep blank lines out of it)",
-                        kit_row.label.en
+                        "the table has no row `{}`{}: write every row (a table ends at its first blank line, so keep blank lines out of it)",
+                        kit_row.label.en, hint.en
                     ),
                 ),
             });

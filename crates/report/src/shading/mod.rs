@@ -261,6 +261,20 @@ pub(crate) fn kit_row_for<'a>(
     })
 }
 
+/// The kit's rows a written label could name once a Shift_JIS save's losses are allowed, when
+/// it names none exactly and more than one loosely: `θ?` of a table with `θ₁` and `θ₂`. Empty
+/// otherwise.
+pub(crate) fn rows_it_could_be<'a>(
+    written: &str,
+    rows: &'a [cg_assign::cg_shading::report::Row],
+) -> Vec<&'a cg_assign::cg_shading::report::Row> {
+    if rows.iter().any(|r| label_matches(written, &r.label)) {
+        return Vec::new();
+    }
+    let loose: Vec<_> = rows.iter().filter(|r| label_matches_loosely(written, &r.label)).collect();
+    if loose.len() > 1 { loose } else { Vec::new() }
+}
+
 /// The written row that names `kit_row` of `rows` ([`kit_row_for`]).
 pub(crate) fn written_row_for<'a>(
     written: &'a [ParsedRow],

@@ -508,3 +508,35 @@ fn labels_read_after_a_lossy_shift_jis_save_when_they_name_one_row() {
     assert_eq!(written_row_for(&written, &rows[0], &rows).map(|r| r.line), Some(3));
     assert!(written_row_for(&written, &rows[2], &rows).is_none());
 }
+
+/// `θ₂` saved as `θ?` (an editor's `?` for a character Shift_JIS cannot hold) names no row of a
+/// table that has `θc` too: the note says which rows it could be and to save as UTF-8, and the
+/// row said missing points at it. Both said only "the table has no row".
+#[test]
+fn a_lossy_label_that_could_be_two_rows_says_so_and_how_to_keep_it() {
+    let d = derived("12345678");
+    let data = d.s.as_ref().unwrap();
+    for lang in [Lang::Ja, Lang::En] {
+        let worked = by_hand(&filled(&d, lang, Format::Markdown), data, Format::Markdown);
+        let row = worked.lines().find(|l| l.starts_with("| θ₂ |")).expect("a θ₂ row").to_owned();
+        let line = worked.lines().position(|l| l == row).unwrap() + 1;
+        let (parsed, _) = parse_report(&worked.replacen(&row, &row.replacen("θ₂", "θ?", 1), 1));
+        let v = verify(&parsed, &d);
+        let note = v.notes.iter().find(|n| n.en.contains("`θ?`")).expect("a note on θ?");
+        assert!(
+            note.en.starts_with(&format!(
+                "line {line}: the row `θ?` of table s.refraction could be θc or θ₂"
+            )) && note.en.ends_with("save the report as UTF-8"),
+            "{note:?}"
+        );
+        assert!(note.ja.contains("θc・θ₂ のどれか") && note.ja.contains("UTF-8"), "{note:?}");
+        let missing = v.findings.iter().find(|f| f.item == "s.refraction θ₂").expect("θ₂ missing");
+        assert!(
+            missing.why.en.contains(&format!(
+                "(the row `θ?` at line {line} may be it: save the report as UTF-8)"
+            )),
+            "{missing:?}"
+        );
+        assert!(missing.why.ja.contains(&format!("{line} 行目の `θ?` がこの行かもしれません")));
+    }
+}

@@ -5,7 +5,8 @@ use cg_core::normals::face_normal_f64;
 use cg_harness::Text;
 
 use super::{
-    Checker, Finding, Relation, Verification, face_outwardness, face_text, missing, relation,
+    Checker, Finding, Relation, Verification, absent, face_outwardness, face_text, missing,
+    relation,
 };
 use crate::model::PolygonData;
 use crate::parse::ParsedReport;
@@ -23,6 +24,7 @@ pub fn verify_data(polygon: &PolygonData, report: &ParsedReport) -> Verification
     c.vertices(&report.vertices, &polygon.vertices);
     let outward = face_outwardness(&polygon.vertices, &polygon.faces);
     let mut unjudged = Vec::new();
+    let mut absent = Vec::new();
     let n = polygon.vertices.len();
     for f in &report.faces {
         if let Some(&bad) = f.vertices.iter().find(|&&k| k as usize >= n) {
@@ -49,7 +51,7 @@ pub fn verify_data(polygon: &PolygonData, report: &ParsedReport) -> Verification
                 }
             },
             None => {
-                c.no_face(f, polygon.faces.len());
+                absent.push((f.index, f.line));
                 None
             }
         };
@@ -61,6 +63,7 @@ pub fn verify_data(polygon: &PolygonData, report: &ParsedReport) -> Verification
         let [a, b, cc] = f.vertices.map(|k| polygon.vertices[k as usize]);
         c.normal(f, face_normal_f64(a, b, cc));
     }
+    absent::rows(&mut c, 'F', &absent, polygon.faces.len());
     if !unjudged.is_empty() {
         // The first few faces by name and the rest counted: a large open model named every
         // face in one line (megabytes).

@@ -265,7 +265,77 @@ fn factors_beyond_the_products_are_a_note_not_a_mistake() {
     assert!(problems.is_empty(), "{problems:?}");
     let v = verify(&report, &derived());
     assert!(v.findings.is_empty(), "{:#?}", v.findings);
-    assert!(v.notes.iter().any(|n| n.en.contains("the product has 2 factors")), "{:?}", v.notes);
+    assert!(
+        v.notes.iter().any(|n| n.en.contains("the product `a2.view.start` has 2 factors")),
+        "{:?}",
+        v.notes
+    );
+    // Two factors too many: one note naming both, not the same note twice.
+    let text = format!("{}{extra}{extra}{}", &block[..at], &block[at..]);
+    let (report, _) = parse_report(&text);
+    let v = verify(&report, &derived());
+    let extra: Vec<&str> =
+        v.notes.iter().map(|n| n.en.as_str()).filter(|n| n.contains("has 2 factors")).collect();
+    assert_eq!(extra.len(), 1, "{:?}", v.notes);
+    assert!(
+        extra[0].starts_with("`a2.view.start.factors.3`, `a2.view.start.factors.4` (line "),
+        "{extra:?}"
+    );
+}
+
+/// A report copied from a larger model, or filled from functions not written yet, writes many
+/// rows and tags the data does not have: one note per kind, the rows as runs with their lines
+/// (a report from another student's model gave a note per row, 24 of them, and the same
+/// extra-factor note twice; a report filled from the stubs listed 72 tags with "known: —").
+#[test]
+fn rows_and_tags_the_data_lacks_are_one_note_each() {
+    let mut text = String::from("V0 (0.0, 1.0, 0.0)\n");
+    for k in [9, 10, 11, 12, 20] {
+        writeln!(text, "V{k} (1.0, 1.0, 1.0)").unwrap();
+    }
+    for k in 8..=10 {
+        writeln!(text, "F{k} {{ V0, V1, V2 }}").unwrap();
+    }
+    let view = filled_view(crate::template::Format::Markdown);
+    text.push_str(&view.replace("a2.view.start", "a3.object0.t9"));
+    let (report, problems) = parse_report(&text);
+    assert!(problems.is_empty(), "{problems:?}");
+    let v = verify(&report, &derived());
+    let notes: Vec<&str> = v.notes.iter().map(|n| n.en.as_str()).collect();
+    let with = |s: &str| notes.iter().filter(|n| n.contains(s)).copied().collect::<Vec<_>>();
+    assert_eq!(
+        with("the data has no"),
+        [
+            "V9–V12, V20 (lines 2–6): the data has no such vertex (it has 5 vertices: V0–V4; is the table from another model?)",
+            "F8–F10 (lines 7–9): the data has no such face (it has 6 faces: F0–F5; is the table from another model?)",
+        ],
+        "{notes:?}"
+    );
+    let tags = with("no derived matrix");
+    assert_eq!(tags.len(), 1, "{notes:?}");
+    assert!(
+        tags[0]
+            .starts_with("no derived matrix has the tag `a3.object0.t9` (or its factors) (lines "),
+        "{tags:?}"
+    );
+    // The Japanese says the same, once each.
+    let ja: Vec<&str> = v.notes.iter().map(|n| n.ja.as_str()).collect();
+    assert!(
+        ja.iter()
+            .any(|n| n.starts_with("V9〜V12, V20（2〜6 行目）: データにこれらの頂点はありません")),
+        "{ja:?}"
+    );
+
+    // A part not derived (its functions not written): its tags in one note that says so.
+    let d = Derived { a2: None, ..derived() };
+    let (report, _) = parse_report(&view);
+    let v = verify(&report, &d);
+    let notes: Vec<&str> = v.notes.iter().map(|n| n.en.as_str()).collect();
+    assert_eq!(notes.len(), 6, "the tags, and the other parts' missing tables: {notes:?}");
+    let a2 = notes.iter().find(|n| n.contains("a2 could not be derived")).expect("a2's note");
+    assert!(a2.starts_with("`a2.view.start` and its factors (lines "), "{a2}");
+    assert!(!notes.iter().any(|n| n.contains("known:")), "{notes:?}");
+    assert!(v.findings.is_empty() && v.checked == 0, "{:#?}", v.findings);
 }
 
 #[test]
@@ -435,7 +505,14 @@ fn what_the_report_lacks_or_the_data_lacks_is_a_note() {
     let (report, _) = parse_report(CLEAN);
     let v = verify(&report, &Derived::default());
     assert!(v.is_clean() && v.checked == 0);
-    assert_eq!(v.notes.len(), 3, "polygon, matrices (unknown tags), texture: {:?}", v.notes);
+    assert_eq!(v.notes.len(), 3, "polygon, matrices (not derived), texture: {:?}", v.notes);
+    assert!(
+        v.notes[1].en.starts_with(
+            "`a1.transform`, `a2.view.start`, `a3.object0.t1.5` (lines 20, 30, 33): a1, a2 and a3 could not be derived"
+        ),
+        "{:?}",
+        v.notes
+    );
 }
 
 #[test]
