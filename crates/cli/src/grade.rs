@@ -164,6 +164,9 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         )
         .get(lang)
     );
+    if let Some(reports) = cg_grade::progress::reports_line(&graded) {
+        println!("{}", reports.get(lang));
+    }
     let flagged = graded.iter().filter(|g| g.flag.is_some()).count();
     if flagged > 0 {
         println!(
@@ -227,6 +230,7 @@ mod tests {
             flag: None,
             problem: problem
                 .map(|p| Text::new(format!("受け付けられません: {p}"), format!("refused: {p}"))),
+            report: None,
         }
     }
 

@@ -16,6 +16,8 @@ pub fn line(g: &Graded, lang: Lang) -> String {
     let max = g.max_score.map(|m| format!(" / {m}")).unwrap_or_default();
     let note = if g.skipped { t("（前回の結果）", " (kept)") } else { Text::default() };
     let note = note.get(lang);
+    // The report in short (graded entries only): summary.md says the rest.
+    let report = g.report.map(|r| format!(" · {}", r.text().get(lang))).unwrap_or_default();
     let flag = g.flag.as_ref().map(|f| format!(" [{}]", f.get(lang))).unwrap_or_default();
     // Not graded: said on the line, which read as a graded 0.
     let flag = match &g.problem {
@@ -24,7 +26,7 @@ pub fn line(g: &Graded, lang: Lang) -> String {
     };
     // The entry's name is the student's (a zip's name, a Moodle full name): a control character
     // in it (an escape sequence that would drive the instructor's terminal) is shown as its code.
-    let line = format!("{} ({}): {}{max}{note}{flag}", g.name, g.entry, g.score);
+    let line = format!("{} ({}): {}{max}{note}{report}{flag}", g.name, g.entry, g.score);
     cg_core::quote::visible(&line)
 }
 
@@ -135,6 +137,7 @@ mod tests {
             skipped: false,
             flag: None,
             problem: None,
+            report: None,
         };
         let text = line(&g, Lang::En);
         assert!(!text.contains('\u{1b}') && !text.contains('\u{7}'), "{text:?}");
@@ -156,6 +159,7 @@ mod tests {
             skipped: false,
             flag: None,
             problem: cg_grade::result::problem(&value),
+            report: None,
         };
         assert_eq!(line(&g, Lang::En), "_x.zip (x.zip): 0 — refused: no exercises/ found");
         assert_eq!(
@@ -164,5 +168,36 @@ mod tests {
         );
         let graded = Graded { problem: None, ..g };
         assert_eq!(line(&graded, Lang::En), "_x.zip (x.zip): 0");
+    }
+
+    /// A graded entry's line says its report in short: the numbers checked and the mistakes,
+    /// or that there is none.
+    #[test]
+    fn a_graded_entrys_line_says_its_report_in_short() {
+        let mut result = serde_json::json!({
+            "score": 3.0,
+            "max_score": 5.0,
+            "cg": { "report": { "checked": 1806, "mistakes": 4, "not_checked": [], "whole": false } },
+        });
+        let g = |result: &serde_json::Value| Graded {
+            entry: "x.zip".to_owned(),
+            name: "20260001".to_owned(),
+            score: 3.0,
+            max_score: Some(5.0),
+            skipped: false,
+            flag: None,
+            problem: None,
+            report: cg_grade::progress::Brief::of(result),
+        };
+        assert_eq!(
+            line(&g(&result), Lang::En),
+            "20260001 (x.zip): 3 / 5 · report: 1806 numbers, 4 mistakes"
+        );
+        assert_eq!(
+            line(&g(&result), Lang::Ja),
+            "20260001 (x.zip): 3 / 5 · レポート: 数値 1806 個、誤り 4 件"
+        );
+        result["cg"]["report"] = serde_json::Value::Null;
+        assert_eq!(line(&g(&result), Lang::En), "20260001 (x.zip): 3 / 5 · no report");
     }
 }

@@ -105,6 +105,8 @@ pub struct Graded {
     pub flag: Option<Text>,
     /// Why it was not graded ([`result::problem`]): refused, or grading could not finish.
     pub problem: Option<Text>,
+    /// Its report in short ([`progress::Brief::of`]); `None` when it was not graded.
+    pub report: Option<progress::Brief>,
 }
 
 /// Why grading could not start (a single submission's problems go into its result instead).
@@ -416,6 +418,7 @@ pub fn grade_with(
                 skipped: true,
                 flag: result::flag(&v),
                 problem: result::problem(&v),
+                report: progress::Brief::of(&v),
             };
             progress(&g);
             done.push(g);
@@ -452,7 +455,7 @@ pub fn grade_with(
                 let mut slot = Slot::at(out, k);
                 while let Some(p) = next(queue) {
                     let started = Instant::now();
-                    let facts = match &p.files {
+                    let mut facts = match &p.files {
                         Err(why) => {
                             result::Facts { refused: Some(why.clone()), ..result::Facts::default() }
                         }
@@ -465,6 +468,8 @@ pub fn grade_with(
                             launcher,
                         ),
                     };
+                    // Not graded: a report found is said not checked.
+                    report::not_graded(&mut facts, &p.report);
                     // A refused entry on the roster is still its student's.
                     let student = p.files.as_ref().ok().map_or_else(
                         || p.roster.as_ref().and_then(|m| m.student.clone()),
@@ -511,6 +516,7 @@ pub fn grade_with(
                         skipped: false,
                         flag: result::flag(&value),
                         problem: result::problem(&value),
+                        report: progress::Brief::of(&value),
                     };
                     progress(&g);
                     if let Ok(mut r) = results.lock() {

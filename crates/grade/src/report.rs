@@ -104,6 +104,30 @@ pub(crate) fn check(
     }
 }
 
+/// The report of a submission whose grading stopped before the checks (its build failed or ran
+/// over the limit) into `facts`: the report found is said not checked, and why (nothing said
+/// it, and the result, the feedback and class.csv read as if the submission held none), before
+/// the notes on it. Nothing for a report already checked or said (the worker died:
+/// `run_checks` says so), a submission graded, or one refused (its reader looks for no report).
+pub(crate) fn not_graded(
+    facts: &mut crate::result::Facts,
+    (found, notes): &(Option<Found>, Vec<Text>),
+) {
+    let said = facts.report.checked.is_some() || !facts.report.notes.is_empty();
+    if said || facts.fatal.is_none() {
+        return;
+    }
+    let mut all = Vec::new();
+    if let Some(Found { path, .. }) = found {
+        all.push(Text::new(
+            format!("{path} は採点できなかったので確かめていません"),
+            format!("{path} was not checked: grading failed"),
+        ));
+    }
+    all.extend(notes.iter().cloned());
+    facts.report.notes = all;
+}
+
 /// The result's `cg.report`: `null` when the submission holds no report, else the check
 /// ([`CheckOutcome::to_json`], with `text`, its whole account for the feedback) or the notes of
 /// a report not read. Never scored (`"scored": false`).
@@ -217,7 +241,8 @@ pub fn csv_cells(result: &Value) -> [String; 4] {
 /// The summary's section on the reports: how many submissions held one, how many of those were
 /// whole (every part checked, every number right, no table missing, the student's own), the others with what is
 /// wrong or missing (most mistakes first; one not read with why), and the items the class got
-/// wrong most often. Empty when no graded result has one.
+/// wrong most often (the rows the checker could not read as one item; at a tie, in
+/// natural order: `F2` before `F10`). Empty when no graded result has one.
 #[must_use]
 pub fn summary_section(results: &[Value], lang: Lang) -> String {
     let graded: Vec<&Value> = results.iter().filter(|r| r.get("max_score").is_some()).collect();
@@ -293,11 +318,14 @@ pub fn summary_section(results: &[Value], lang: Lang) -> String {
         );
     }
     // The items most often wrong, as the findings name them (`F2 normal`, `a2.view.start (row
-    // 1, column 4)`), each student counted once per item.
+    // 1, column 4)`), each student counted once per item; the rows the checker could not read
+    // (mistakes too) as one item.
     let mut items: BTreeMap<String, usize> = BTreeMap::new();
+    let mut unreadable = 0;
     for r in &read {
+        let rep = &r["cg"]["report"];
         let mut seen = std::collections::BTreeSet::new();
-        for f in r["cg"]["report"]["findings"].as_array().map(Vec::as_slice).unwrap_or_default() {
+        for f in rep["findings"].as_array().map(Vec::as_slice).unwrap_or_default() {
             if let Some(item) = f["item"].as_str() {
                 seen.insert(item.to_owned());
             }
@@ -305,9 +333,18 @@ pub fn summary_section(results: &[Value], lang: Lang) -> String {
         for item in seen {
             *items.entry(item).or_default() += 1;
         }
+        if rep["problems"].as_array().is_some_and(|p| !p.is_empty()) {
+            unreadable += 1;
+        }
     }
-    let mut items: Vec<(String, usize)> = items.into_iter().collect();
-    items.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
+    // Each item's cell: a finding's item as code; the rows not read in words, after the
+    // findings of as many students.
+    let mut items: Vec<(String, usize, bool)> = items
+        .into_iter()
+        .map(|(item, count)| (item, count, false))
+        .chain((unreadable > 0).then(|| (String::new(), unreadable, true)))
+        .collect();
+    items.sort_by(|a, b| b.1.cmp(&a.1).then(a.2.cmp(&b.2)).then_with(|| natural_cmp(&a.0, &b.0)));
     if !items.is_empty() {
         let _ = writeln!(
             out,
@@ -315,8 +352,13 @@ pub fn summary_section(results: &[Value], lang: Lang) -> String {
             t("誤りの多い項目", "item most often wrong").get(lang),
             t("人数", "students").get(lang)
         );
-        for (item, count) in items.iter().take(MOST_COMMON) {
-            let _ = writeln!(out, "| {} | {count} |", md_code(item, lang).replace('|', "\\|"));
+        for (item, count, rows) in items.iter().take(MOST_COMMON) {
+            let cell = if *rows {
+                t("読めなかった行", "a row the checker could not read").get(lang).to_owned()
+            } else {
+                md_code(item, lang).replace('|', "\\|")
+            };
+            let _ = writeln!(out, "| {cell} | {count} |");
         }
         if items.len() > MOST_COMMON {
             let _ = writeln!(
@@ -355,6 +397,36 @@ pub fn unused_section(names: &[String], lang: Lang) -> String {
 
 /// The most items the summary's table of reports' mistakes lists.
 const MOST_COMMON: usize = 20;
+
+/// `a` and `b` in natural order: runs of digits compared as numbers (`F2` before `F10`,
+/// `row 9` before `row 10`), the rest as text.
+fn natural_cmp(a: &str, b: &str) -> std::cmp::Ordering {
+    use std::cmp::Ordering;
+    let (mut a, mut b) = (a, b);
+    loop {
+        let (Some(x), Some(y)) = (a.chars().next(), b.chars().next()) else {
+            return a.len().cmp(&b.len());
+        };
+        if x.is_ascii_digit() && y.is_ascii_digit() {
+            let run = |s: &str| s.find(|c: char| !c.is_ascii_digit()).unwrap_or(s.len());
+            let (da, db) = (&a[..run(a)], &b[..run(b)]);
+            // Leading zeros aside, the longer run is the larger number; at a tie, the digits.
+            let (na, nb) = (da.trim_start_matches('0'), db.trim_start_matches('0'));
+            let order =
+                na.len().cmp(&nb.len()).then_with(|| na.cmp(nb)).then(da.len().cmp(&db.len()));
+            if order != Ordering::Equal {
+                return order;
+            }
+            (a, b) = (&a[da.len()..], &b[db.len()..]);
+        } else {
+            let order = x.cmp(&y);
+            if order != Ordering::Equal {
+                return order;
+            }
+            (a, b) = (&a[x.len_utf8()..], &b[y.len_utf8()..]);
+        }
+    }
+}
 
 #[cfg(test)]
 mod tests {
@@ -431,6 +503,44 @@ mod tests {
         assert!(none.is_null() && line(&none, Lang::En).is_none());
         let cells = csv_cells(&graded("x", read(24, &["V1"], 2)));
         assert_eq!(cells, ["report/report.md".to_owned(), "24".into(), "1".into(), "2".into()]);
+    }
+
+    /// The rows the checker could not read are mistakes: the table of items counts them (each
+    /// student once), as one item in words; items of as many students are in natural order.
+    #[test]
+    fn the_table_of_items_counts_the_rows_not_read_and_orders_numbers_as_numbers() {
+        let with_problems = |items: &[&str], problems: usize| {
+            let mut r = read(24, items, 0);
+            let rows: Vec<Value> = (0..problems)
+                .map(|i| json!({"line": i + 3, "found": "F3 { V0 }", "message": "?"}))
+                .collect();
+            r["problems"] = json!(rows);
+            r["mistakes"] = json!(items.len() + problems);
+            r["ok"] = json!(false);
+            r["whole"] = json!(false);
+            r
+        };
+        let class = [
+            graded("a", with_problems(&["F10 normal", "F2 normal"], 2)),
+            graded("b", with_problems(&["F10 normal", "F2 normal"], 1)),
+            graded("c", with_problems(&["F9 normal"], 0)),
+        ];
+        let md = summary_section(&class, Lang::En);
+        assert!(
+            md.contains(
+                "| `F2 normal` | 2 |\n| `F10 normal` | 2 |\n| a row the checker could not read | 2 |\n| `F9 normal` | 1 |"
+            ),
+            "{md}"
+        );
+        let ja = summary_section(&class, Lang::Ja);
+        assert!(ja.contains("| 読めなかった行 | 2 |"), "{ja}");
+        use std::cmp::Ordering::{Equal, Greater, Less};
+        assert_eq!(natural_cmp("F2", "F10"), Less);
+        assert_eq!(natural_cmp("a2.view (row 10, column 4)", "a2.view (row 9, column 4)"), Greater);
+        assert_eq!(natural_cmp("V01", "V1"), Greater);
+        assert_eq!(natural_cmp("V1", "V1"), Equal);
+        assert_eq!(natural_cmp("V1", "V1 x"), Less);
+        assert_eq!(natural_cmp("s.refraction θ₂", "s.refraction θ₁"), Greater);
     }
 
     /// A report filled for another number is said (a copy's plainest sign), the template not

@@ -124,14 +124,16 @@ fn run_checks(
     // checks against functions that give nothing), so the maximum score is the same.
     let (found, notes) = report;
     let died = |how: Text| {
-        // A report found is said not checked, with why.
-        let mut facts = crate::report::Facts { notes: notes.clone(), ..Default::default() };
+        // A report found is said not checked, with why, before the notes on it (class.csv's
+        // `report` cell shows the first).
+        let mut facts = crate::report::Facts::default();
         if let Some(found) = found {
             facts.notes.push(Text::new(
                 format!("{} は確かめられませんでした: {}", found.path, how.ja),
                 format!("{} was not checked: {}", found.path, how.en),
             ));
         }
+        facts.notes.extend(notes.iter().cloned());
         let run = AssignmentRun::Died { how, stderr: String::new() };
         let nothing = cg_assign::Impls::worker();
         let mut runs = BTreeMap::new();

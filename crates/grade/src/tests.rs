@@ -511,3 +511,48 @@ fn the_summary_names_assignments_worth_more_for_some_students() {
     let md = result::summary_md(&[result(20.0), result(20.0)], &[], Lang::En);
     assert!(!md.contains("worth more"), "{md}");
 }
+
+/// A submission whose grading failed (its build ran over the limit) with a report in it: the
+/// result, its feedback and class.csv say the report was not checked and why (they said
+/// nothing, as for a submission without one). Without a report, nothing is said of one.
+#[test]
+fn a_report_in_a_submission_not_graded_is_said_not_checked() {
+    let found = inside::Found {
+        path: "report/report.md".to_owned(),
+        text: "# Report".to_owned(),
+        encoding: cg_core::text::Encoding::Utf8,
+    };
+    let fatal = || result::Facts {
+        fatal: Some(Text::new("ビルドが制限時間を超えました", "the build ran over its limit")),
+        ..result::Facts::default()
+    };
+    let mut facts = fatal();
+    report::not_graded(&mut facts, &(Some(found.clone()), Vec::new()));
+    let meta = meta(Some("20260001"));
+    let r = result::build(&meta, &facts, &Config::default(), Lang::En);
+    let said = "report/report.md was not checked: grading failed";
+    assert!(r["output"].as_str().unwrap().contains(said), "{}", r["output"]);
+    assert_eq!(report::csv_cells(&r)[0], said);
+    let feedback = moodle::output::feedback_md(&r, Lang::En);
+    assert!(feedback.contains(said), "{feedback}");
+    let ja = result::build(&meta, &facts, &Config::default(), Lang::Ja);
+    let feedback = moodle::output::feedback_md(&ja, Lang::Ja);
+    assert!(
+        feedback.contains("report/report.md は採点できなかったので確かめていません"),
+        "{feedback}"
+    );
+    // Refused: its refusal says why, and its reader looks for no report.
+    let mut refused =
+        result::Facts { refused: Some(Text::new("x", "x")), ..result::Facts::default() };
+    report::not_graded(&mut refused, &(Some(found.clone()), Vec::new()));
+    assert!(refused.report.notes.is_empty());
+    // No report: nothing of one.
+    let mut none = fatal();
+    report::not_graded(&mut none, &(None, Vec::new()));
+    let r = result::build(&meta, &none, &Config::default(), Lang::En);
+    assert!(r["cg"]["report"].is_null() && report::csv_cells(&r)[0].is_empty());
+    // Graded: left to the check.
+    let mut graded = result::Facts::default();
+    report::not_graded(&mut graded, &(Some(found), Vec::new()));
+    assert!(graded.report.notes.is_empty());
+}

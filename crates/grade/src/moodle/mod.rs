@@ -22,6 +22,7 @@
 
 pub mod input;
 pub mod output;
+mod upload;
 
 #[cfg(test)]
 mod download_tests;

@@ -51,6 +51,7 @@ fn graded(entry: &str, name: &str) -> Graded {
         skipped: false,
         flag: None,
         problem: None,
+        report: None,
     }
 }
 
