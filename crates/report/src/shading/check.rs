@@ -236,8 +236,8 @@ fn chosen_point<'a>(
 /// note when it holds numbers. Shared by every tagged table ([`crate::periods`] too).
 pub(crate) fn check_table(c: &mut Checker, table: &ParsedTable, kit: &Table) {
     for row in &table.rows {
-        let Some(kit_row) = kit_row_for(&row.label, &kit.rows) else {
-            let could_be = rows_it_could_be(&row.label, &kit.rows);
+        let Some(kit_row) = kit_row_for(&row.label, &table.rows, &kit.rows) else {
+            let could_be = rows_it_could_be(&row.label, &table.rows, &kit.rows);
             if !could_be.is_empty() {
                 let list = |lang: Lang, or: &str| {
                     could_be.iter().map(|r| r.label.get(lang)).collect::<Vec<_>>().join(or)
@@ -367,7 +367,9 @@ pub(crate) fn check_complete(
             let label = kit_row.label.get(written_in);
             // A row whose label lost a character in a Shift_JIS save may be this one.
             let lossy = table.rows.iter().find(|r| {
-                rows_it_could_be(&r.label, &kit.rows).iter().any(|k| std::ptr::eq(*k, kit_row))
+                rows_it_could_be(&r.label, &table.rows, &kit.rows)
+                    .iter()
+                    .any(|k| std::ptr::eq(*k, kit_row))
             });
             let hint = lossy.map_or_else(Text::default, |r| {
                 Text::new(

@@ -247,31 +247,44 @@ fn label_matches_loosely(written: &str, label: &cg_harness::Text) -> bool {
     })
 }
 
-/// The kit's row a written label names: the one it names ([`label_matches`]), else the only
-/// one it names once a Shift_JIS save's losses are allowed (`θ?` names neither `θ₁` nor `θ₂`
-/// when the table has both).
+/// The kit's row the written label `label` names: the one it names ([`label_matches`]), else
+/// the only one it could name once a Shift_JIS save's losses are allowed ([`rows_it_could_be`]).
 pub(crate) fn kit_row_for<'a>(
-    written: &str,
+    label: &str,
+    written: &[ParsedRow],
     rows: &'a [cg_assign::cg_shading::report::Row],
 ) -> Option<&'a cg_assign::cg_shading::report::Row> {
-    rows.iter().find(|r| label_matches(written, &r.label)).or_else(|| {
-        let mut loose = rows.iter().filter(|r| label_matches_loosely(written, &r.label));
-        let first = loose.next()?;
-        loose.next().is_none().then_some(first)
+    rows.iter().find(|r| label_matches(label, &r.label)).or_else(|| {
+        let loose = loose_rows(label, written, rows);
+        (loose.len() == 1).then(|| loose[0])
     })
 }
 
-/// The kit's rows a written label could name once a Shift_JIS save's losses are allowed, when
-/// it names none exactly and more than one loosely: `θ?` of a table with `θ₁` and `θ₂`. Empty
-/// otherwise.
-pub(crate) fn rows_it_could_be<'a>(
-    written: &str,
+/// The kit's rows the written label `label` could name once a Shift_JIS save's losses are
+/// allowed — each `?` any one character, a `.` for `·` — leaving out those another written row
+/// names exactly (`θ?` is `θ₂` where `θc` is written too). Empty when it names one exactly.
+fn loose_rows<'a>(
+    label: &str,
+    written: &[ParsedRow],
     rows: &'a [cg_assign::cg_shading::report::Row],
 ) -> Vec<&'a cg_assign::cg_shading::report::Row> {
-    if rows.iter().any(|r| label_matches(written, &r.label)) {
+    if rows.iter().any(|r| label_matches(label, &r.label)) {
         return Vec::new();
     }
-    let loose: Vec<_> = rows.iter().filter(|r| label_matches_loosely(written, &r.label)).collect();
+    let named_by_another = |r: &cg_assign::cg_shading::report::Row| {
+        written.iter().any(|w| w.label != label && label_matches(&w.label, &r.label))
+    };
+    rows.iter().filter(|r| label_matches_loosely(label, &r.label) && !named_by_another(r)).collect()
+}
+
+/// The kit's rows a written label could name, when it could name more than one ([`loose_rows`]):
+/// `θ?` of a table with `θ₁` and `θ₂` written as `θ?` both. Empty otherwise.
+pub(crate) fn rows_it_could_be<'a>(
+    label: &str,
+    written: &[ParsedRow],
+    rows: &'a [cg_assign::cg_shading::report::Row],
+) -> Vec<&'a cg_assign::cg_shading::report::Row> {
+    let loose = loose_rows(label, written, rows);
     if loose.len() > 1 { loose } else { Vec::new() }
 }
 
@@ -281,7 +294,9 @@ pub(crate) fn written_row_for<'a>(
     kit_row: &cg_assign::cg_shading::report::Row,
     rows: &[cg_assign::cg_shading::report::Row],
 ) -> Option<&'a ParsedRow> {
-    written.iter().find(|r| kit_row_for(&r.label, rows).is_some_and(|k| std::ptr::eq(k, kit_row)))
+    written
+        .iter()
+        .find(|r| kit_row_for(&r.label, written, rows).is_some_and(|k| std::ptr::eq(k, kit_row)))
 }
 
 #[cfg(test)]
