@@ -30,8 +30,14 @@ use crate::fill::{self, Context, VIEWS, files};
 use crate::model::{Derived, PolygonData};
 use crate::parse::{self, ParseProblem};
 use crate::template::{self, Format};
-use crate::verify::{self, Verification};
+use crate::verify;
 use cg_assign::{Impls, Which};
+
+mod outcome;
+mod written;
+
+pub use outcome::CheckOutcome;
+pub use written::Written;
 
 /// The report commands.
 #[derive(Clone, Debug, clap::Subcommand)]
@@ -354,67 +360,6 @@ pub fn gather(source: &Source, kit: &Kit, lang: Lang) -> Result<Gathered, String
     Ok(Gathered { derived, context, assignment: Some(a), read: Vec::new() })
 }
 
-/// What a command wrote.
-#[derive(Clone, Debug, Default)]
-pub struct Written {
-    /// The output folder.
-    pub folder: PathBuf,
-    /// Files written, relative to the folder.
-    pub files: Vec<String>,
-    /// Files left alone (an existing report without `--force`).
-    pub kept: Vec<String>,
-    /// What could not be derived.
-    pub missing: Vec<Missing>,
-    /// The files read (the data file), each with the encoding it was read in.
-    pub read: Vec<(PathBuf, Encoding)>,
-}
-
-impl Written {
-    /// A summary for the terminal.
-    #[must_use]
-    pub fn summary(&self, lang: Lang) -> String {
-        // What was read first (`table.md: read as Shift_JIS`), then what was written.
-        let mut out = read_notes(&self.read, "", lang);
-        let _ = writeln!(
-            out,
-            "{} {} ({} {})",
-            t("書き出し先:", "written to").get(lang),
-            self.folder.display(),
-            self.files.len(),
-            t("ファイル", "files").get(lang)
-        );
-        for f in &self.files {
-            let _ = writeln!(out, "  {f}");
-        }
-        for f in &self.kept {
-            let _ = writeln!(
-                out,
-                "  {f}: {}",
-                t(
-                    "既にあるので上書きしません（--force で上書き）",
-                    "exists, left alone (--force overwrites it)"
-                )
-                .get(lang)
-            );
-        }
-        if !self.missing.is_empty() {
-            let _ = writeln!(
-                out,
-                "{}",
-                t(
-                    "まだ導出できない部分（レポートには「まだ導出できません」と書かれます）:",
-                    "not derived yet (the report says so where they belong):"
-                )
-                .get(lang)
-            );
-            for m in &self.missing {
-                let _ = writeln!(out, "  {}", m.message(lang));
-            }
-        }
-        out
-    }
-}
-
 /// `folder` and the folders above it, made where missing; an error names it and says why in
 /// `lang`.
 fn make_folder(folder: &Path, lang: Lang) -> Result<(), String> {
@@ -579,190 +524,6 @@ pub fn fill_to(args: &FillArgs, kit: &Kit, lang: Lang) -> Result<Written, String
         write(&args.derive.output, name, text.as_bytes(), &mut written, lang)?;
     }
     Ok(written)
-}
-
-/// What `check` found.
-#[derive(Clone, Debug)]
-pub struct CheckOutcome {
-    /// The report checked (or the data file, checked on its own).
-    pub report: PathBuf,
-    /// Lines that tried to be rows and did not parse.
-    pub problems: Vec<ParseProblem>,
-    /// The numbers that do not follow from the data.
-    pub verification: Verification,
-    /// What could not be derived (those tables were not checked).
-    pub missing: Vec<Missing>,
-    /// The files read (the report, the data file), each with the encoding it was read in.
-    pub read: Vec<(PathBuf, Encoding)>,
-    /// The rows, matrices, tables and formulas read in the notation
-    /// ([`parse::ParsedReport::items`]): with none checked, whether the report had none to read
-    /// or its parts could not be derived.
-    pub items: usize,
-}
-
-impl CheckOutcome {
-    /// Whether the report is free of mistakes the checker can see, and it saw something: a
-    /// report in which no number was checked (no table in a form the checker reads, or an
-    /// empty file) is not a success.
-    #[must_use]
-    pub fn ok(&self) -> bool {
-        self.problems.is_empty()
-            && self.verification.findings.is_empty()
-            && self.verification.checked > 0
-    }
-
-    /// For the terminal.
-    #[must_use]
-    pub fn render(&self, lang: Lang) -> String {
-        let mut out = format!(
-            "{} {}\n",
-            t("レポートの確認:", "checking the report").get(lang),
-            self.report.display()
-        );
-        out.push_str(&read_notes(&self.read, "  · ", lang));
-        for p in &self.problems {
-            let _ = writeln!(out, "  ✗ {}", p.message(lang));
-        }
-        for f in &self.verification.findings {
-            let _ = writeln!(out, "  ✗ {}", f.message(lang));
-        }
-        for n in &self.verification.notes {
-            let _ = writeln!(out, "  · {}", n.get(lang));
-        }
-        for m in &self.missing {
-            let _ = writeln!(
-                out,
-                "  · {} {}",
-                t("確かめられません:", "not checked:").get(lang),
-                m.message(lang)
-            );
-        }
-        let _ = writeln!(out, "{}", self.summary().get(lang));
-        out
-    }
-
-    /// The mistakes found against the numbers checked, and the parts not checked: the last line
-    /// of [`CheckOutcome::render`] (and `cg grade`'s line of a report).
-    #[must_use]
-    pub fn summary(&self) -> Text {
-        let wrong = self.mistakes();
-        let checked = self.verification.checked;
-        let parts = self.missing.len();
-        // The parts not checked, said after the count of mistakes too (it was left out there).
-        let unchecked = Text::new(
-            format!("{parts} 個の部分は確かめられていません（上の「確かめられません」）。"),
-            format!(
-                "{parts} {} not checked (\"not checked\" above).",
-                if parts == 1 { "part was" } else { "parts were" }
-            ),
-        );
-        let items = self.items;
-        if wrong == 0 && checked == 0 && items > 0 {
-            // Rows were read, but nothing to compare them with: their parts not derived (a
-            // function that does not return), or rows of nothing the data has (the notes).
-            if parts > 0 {
-                Text::new(
-                    format!(
-                        "確かめられた数値は 1 つもありません。行・行列・表を {items} 個読みましたが、その部分のデータが導出できませんでした。{}",
-                        unchecked.ja
-                    ),
-                    format!(
-                        "no number was checked: {items} rows, matrices or tables were read, but their parts could not be derived. {}",
-                        unchecked.en
-                    ),
-                )
-            } else {
-                Text::new(
-                    format!(
-                        "確かめられた数値は 1 つもありません。行・行列・表を {items} 個読みましたが、データにあるものはありませんでした（上の注を見てください）。"
-                    ),
-                    format!(
-                        "no number was checked: {items} rows, matrices or tables were read, but none is of the data (see the notes above)."
-                    ),
-                )
-            }
-        } else if wrong == 0 && checked == 0 {
-            let none = Text::new(
-                "確かめられた数値は 1 つもありません。キットが読む書き方の表（`V0 (0.0, 1.0, 0.0)` の頂点の行、`F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 }` の面の行、`<!-- cg: s.light.p -->` のようなタグのついた表）が見つかりませんでした。`cargo run --release -- report fill` が書くひな形の書き方に合わせてください",
-                "no number was checked: the report has no table in a form the checker reads (vertex rows `V0 (0.0, 1.0, 0.0)`, face rows `F0 { V0, V3, V1 } { 0.0, 0.49, 0.87 }`, tables after a tag such as `<!-- cg: s.light.p -->`); write them as `cargo run --release -- report fill` writes them in the template",
-            );
-            if parts == 0 {
-                none
-            } else {
-                Text::new(
-                    format!("{}。{}", none.ja, unchecked.ja),
-                    format!("{}. {}", none.en, unchecked.en),
-                )
-            }
-        } else if wrong == 0 && parts > 0 {
-            // Not a mistake (a part not done yet is no mistake), but not the whole report either.
-            Text::new(
-                format!(
-                    "数値 {checked} 個を確かめ、データから導かれない数値はありませんでした。ただし {}",
-                    unchecked.ja
-                ),
-                format!(
-                    "{checked} numbers checked; every one follows from the data. {}",
-                    unchecked.en
-                ),
-            )
-        } else if wrong == 0 {
-            Text::new(
-                format!("数値 {checked} 個を確かめ、データから導かれない数値はありませんでした。"),
-                format!("{checked} numbers checked; every one follows from the data."),
-            )
-        } else if parts > 0 {
-            Text::new(
-                format!(
-                    "数値 {checked} 個を確かめ、{wrong} 件の誤りがありました。ほかに {}",
-                    unchecked.ja
-                ),
-                format!(
-                    "{checked} numbers checked; {wrong} {}. {}",
-                    if wrong == 1 { "mistake" } else { "mistakes" },
-                    unchecked.en
-                ),
-            )
-        } else {
-            Text::new(
-                format!("数値 {checked} 個を確かめ、{wrong} 件の誤りがありました。"),
-                format!(
-                    "{checked} numbers checked; {wrong} {}.",
-                    if wrong == 1 { "mistake" } else { "mistakes" }
-                ),
-            )
-        }
-    }
-
-    /// The lines that do not read and the numbers that do not follow, together.
-    #[must_use]
-    pub fn mistakes(&self) -> usize {
-        self.problems.len() + self.verification.findings.len()
-    }
-
-    /// For tools.
-    #[must_use]
-    pub fn to_json(&self, lang: Lang) -> serde_json::Value {
-        serde_json::json!({
-            "report": self.report.display().to_string(),
-            "ok": self.ok(),
-            "checked": self.verification.checked,
-            "mistakes": self.mistakes(),
-            "summary": self.summary().get(lang),
-            "problems": self.problems.iter().map(|p| serde_json::json!({
-                "line": p.line, "found": p.found, "message": p.message(lang),
-            })).collect::<Vec<_>>(),
-            "findings": self.verification.findings.iter().map(|f| serde_json::json!({
-                "line": f.line, "item": f.item, "written": f.written, "derived": f.derived,
-                "tolerance": f.tolerance, "message": f.message(lang),
-            })).collect::<Vec<_>>(),
-            "notes": self.verification.notes.iter().map(|n| n.get(lang)).collect::<Vec<_>>(),
-            "not_checked": self.missing.iter().map(|m| m.message(lang)).collect::<Vec<_>>(),
-            "read": self.read.iter().map(|(file, encoding)| serde_json::json!({
-                "file": file.display().to_string(), "encoding": encoding.name(),
-            })).collect::<Vec<_>>(),
-        })
-    }
 }
 
 /// `check`: parses the report and verifies it against the data.

@@ -21,6 +21,16 @@ use cg_harness::Text;
 use crate::model::{Derived, TexRow, TextureData, Written};
 use crate::parse::{FACTORS, ParsedFace, ParsedMatrix, ParsedReport, ParsedTex, ParsedVertex};
 
+/// What a written number must be, said once under the findings that compare numbers (it ended
+/// every one of them).
+#[must_use]
+pub fn accepted() -> Text {
+    Text::new(
+        "数値は、書いた最後の桁まで正しければ（四捨五入でも切り捨てでも）受け付けます",
+        "a number is accepted when it is correct to its last written digit (rounded or cut off)",
+    )
+}
+
 /// A number in a report that does not follow from the data (or a face wound the wrong way).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Finding {
@@ -242,29 +252,22 @@ impl Checker {
         let (mut ja, mut en) = (Vec::new(), Vec::new());
         for &k in &wrong {
             let name = names.get(k).copied().unwrap_or("");
-            // Names of a whole value in Japanese; `x`, `r`, … are the same in both.
+            // Names of a whole value in Japanese (no space before は); `x`, `r`, … are the same
+            // in both.
             let name_ja = match name {
-                "value" => "値",
-                "the entry" => "この成分",
-                other => other,
+                "value" => "値".to_owned(),
+                "the entry" => "この成分".to_owned(),
+                other => format!("{other} "),
             };
             // As many decimals as the derived value shows, so a difference is never "0".
             let digits = (written[k].decimals.saturating_add(1)).clamp(4, 12) as usize;
             let off = trim(format!("{:.digits$}", (written[k].value - derived[k]).abs()));
             let shown = short(&written[k].text);
-            ja.push(format!("{name_ja} は {shown} ですが導出値は {}（差 {off}）", derived_s[k]));
+            ja.push(format!("{name_ja}は {shown} ですが導出値は {}（差 {off}）", derived_s[k]));
             en.push(format!("{name} is {shown} but follows as {} (off by {off})", derived_s[k]));
         }
-        let why = Text::new(
-            format!(
-                "{}。書いた最後の桁まで正しい値（四捨五入でも切り捨てでも）なら受け付けます",
-                ja.join("、")
-            ),
-            format!(
-                "{}; a value correct to its last written digit (rounded or cut off) is accepted",
-                en.join(", ")
-            ),
-        );
+        // What is accepted is said once under the findings ([`accepted`]), not on each.
+        let why = Text::new(ja.join("、"), en.join(", "));
         self.out.findings.push(Finding {
             line,
             item,

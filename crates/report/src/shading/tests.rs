@@ -435,7 +435,7 @@ fn students_ways_of_writing_are_read_and_a_missing_column_is_a_finding() {
         let v = verify(&parsed, &d);
         assert_eq!(v.findings.len(), 1, "{to}: {:#?}", v.findings);
         let m = v.findings[0].message(Lang::Ja);
-        assert!(m.contains("値 は 0.966") && !m.contains("value"), "{m}");
+        assert!(m.contains("値は 0.966") && !m.contains("value"), "{m}");
     }
     // N・L is the row N·L: a wrong value there is found, not a note.
     let nl = worked.lines().find(|l| l.starts_with("| N·L |")).expect("an N·L row").to_owned();

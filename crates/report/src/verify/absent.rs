@@ -174,8 +174,8 @@ pub(super) fn unknown_tags(
         let at = lines(&underived.iter().map(|m| m.line).collect::<Vec<_>>());
         let (ja_factors, en_factors) = match (factors, names.len()) {
             (false, _) => ("", ""),
-            (true, 1) => ("とその因子", " and its factors"),
-            (true, _) => ("とその因子", " and their factors"),
+            (true, 1) => (" とその因子", " and its factors"),
+            (true, _) => (" とその因子", " and their factors"),
         };
         let en_parts = match parts.split_last() {
             Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
