@@ -320,6 +320,12 @@ fn board(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal)
         terminal.say(t("[r] もう一度  [q] 終了", "[r] run again  [q] quit").get(lang));
         return;
     }
+    terminal.say(&board_text(checks, focus, lang));
+}
+
+/// The text of the [`board`] of some checks. Each explanation once: a check whose expected and
+/// actual values are those shown under an earlier one says "（同上）" / "(same as above)".
+fn board_text(checks: &[Check], focus: Option<&str>, lang: Lang) -> String {
     let mut text = String::new();
     let mut line = String::new();
     let mut assignment = "";
@@ -360,13 +366,23 @@ fn board(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal)
             let mut said = std::collections::BTreeSet::new();
             for c in checks.iter().filter(|c| c.task == task) {
                 let title = c.json["title"][t("ja", "en").get(lang)].as_str().unwrap_or_default();
-                text.push_str(&format!("  {} {:<24} {title}\n", mark(&c.status), c.id));
+                let mut values = String::new();
                 for (key, ja, en) in
                     [("expected", "期待する値", "expected"), ("actual", "実際の値", "actual")]
                 {
                     if let Some(v) = c.json[key][t("ja", "en").get(lang)].as_str() {
-                        text.push_str(&format!("      {}: {v}\n", t(ja, en).get(lang)));
+                        values.push_str(&format!("      {}: {v}\n", t(ja, en).get(lang)));
                     }
+                }
+                let same = !values.is_empty() && !said.insert(values.clone());
+                let same = if same {
+                    t("  （同上）", "  (same as above)").get(lang).to_owned()
+                } else {
+                    String::new()
+                };
+                text.push_str(&format!("  {} {:<24} {title}{same}\n", mark(&c.status), c.id));
+                if same.is_empty() {
+                    text.push_str(&values);
                 }
                 // Why it gave no value (a stub not written yet, a panic, a timeout), in the
                 // board's language as `cg check` says it, once, not under each of its checks.
@@ -396,7 +412,7 @@ fn board(checks: &[Check], focus: Option<&str>, lang: Lang, terminal: &Terminal)
         )
         .get(lang),
     );
-    terminal.say(&text);
+    text
 }
 
 /// The usual cause and the hint of the first check of the task in focus that does not pass.
@@ -484,6 +500,47 @@ impl Drop for Terminal {
     fn drop(&mut self) {
         if self.raw {
             let _ = crossterm::terminal::disable_raw_mode();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn check(id: &str, json: Value) -> Check {
+        let task = id.rsplit_once('.').map_or(id, |(task, _)| task).to_owned();
+        let status = json["status"].as_str().unwrap_or_default().to_owned();
+        Check { id: id.to_owned(), task, status, json }
+    }
+
+    /// A wrong face fails the checks that need valid faces with the same values: they are shown
+    /// once, the other checks of the task say "(same as above)", and every ID is still there.
+    #[test]
+    fn the_same_values_are_shown_once_on_the_board() {
+        let failed = |id: &str| {
+            check(
+                id,
+                serde_json::json!({
+                    "id": id, "task": "a1.t2", "status": "fail",
+                    "title": {"ja": id, "en": id},
+                    "expected": {"ja": "a1.t2.indices に合格する面", "en": "faces that pass a1.t2.indices"},
+                    "actual": {"ja": "頂点 V4 はありません", "en": "there is no vertex V4"},
+                    "where": null, "cause": {"ja": "", "en": ""}, "hint": {"ja": "", "en": ""},
+                }),
+            )
+        };
+        let checks = [failed("a1.t2.closed"), failed("a1.t2.winding"), failed("a1.t2.outward")];
+        for (lang, values, same) in [
+            (Lang::En, "there is no vertex V4", "(same as above)"),
+            (Lang::Ja, "頂点 V4 はありません", "（同上）"),
+        ] {
+            let text = board_text(&checks, Some("a1.t2"), lang);
+            assert_eq!(text.matches(values).count(), 1, "{text}");
+            assert_eq!(text.matches(same).count(), 2, "{text}");
+            for c in &checks {
+                assert!(text.contains(&c.id), "{text}");
+            }
         }
     }
 }

@@ -19,7 +19,6 @@
 //! ```
 
 use std::cell::{Cell, RefCell};
-use std::fmt::Write as _;
 use std::panic::{self, AssertUnwindSafe};
 use std::sync::{Mutex, Once};
 use std::time::{Duration, Instant};
@@ -27,7 +26,7 @@ use std::time::{Duration, Instant};
 use cg_core::lang::Lang;
 use serde::{Deserialize, Serialize};
 
-use crate::text::{Text, t};
+use crate::text::Text;
 use cg_worker::CallError;
 
 /// Why a check failed, in the words a student needs — every part in Japanese and English
@@ -99,10 +98,19 @@ pub enum Outcome {
         location: Option<String>,
     },
     /// The student's function ran past the check's time limit (an endless loop?); the worker
-    /// running it was stopped, and the other checks went on in a fresh one.
+    /// running it was stopped, and the other checks went on in a fresh one. Or, with `earlier`,
+    /// the check did not run it at all: it had already run past the limit in an earlier check
+    /// of this run (`cg_worker::proxy`), and would have cost the whole limit again.
     TimedOut {
         /// The check's time limit, in milliseconds.
         limit_ms: u64,
+        /// The worker's function that was running when the time ran out (`a1.face_normals`),
+        /// when known ([`describe`](Outcome::describe) names it with its file).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        function: Option<String>,
+        /// Not run: `function` ran out of time in an earlier check.
+        #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+        earlier: bool,
     },
     /// No value came back, and not for the function's running as such: the worker could not
     /// start, its reply did not read, or a `shade_pixel` asked other questions the second time
@@ -137,9 +145,11 @@ impl Outcome {
             CallError::Panicked { message, location } => {
                 Outcome::of_panic(message.clone(), location.clone())
             }
-            CallError::TimedOut(limit) => {
-                Outcome::TimedOut { limit_ms: u64::try_from(limit.as_millis()).unwrap_or(u64::MAX) }
-            }
+            CallError::TimedOut { limit, function, earlier } => Outcome::TimedOut {
+                limit_ms: u64::try_from(limit.as_millis()).unwrap_or(u64::MAX),
+                function: Some(function.clone()),
+                earlier: *earlier,
+            },
             CallError::Crashed { status, stderr } => {
                 let how = Text::new(status.ja.clone(), status.en.clone());
                 Outcome::Crashed { how, stderr: stderr.clone() }
@@ -182,6 +192,8 @@ impl Outcome {
                     format!("{function} panicked: {message}{at}"),
                 )
             }
+            // It names the function itself, with its file.
+            Outcome::TimedOut { function: Some(_), .. } => self.describe().unwrap_or_default(),
             other @ (Outcome::TimedOut { .. }
             | Outcome::Broken { .. }
             | Outcome::Crashed { .. }
@@ -213,7 +225,34 @@ impl Outcome {
                     format!("your code panicked: {message}{at}"),
                 )
             }
-            Outcome::TimedOut { limit_ms } => {
+            Outcome::TimedOut { limit_ms, function: Some(function), earlier } => {
+                let seconds = seconds(*limit_ms);
+                let (file, names) = student_function(function);
+                if *earlier {
+                    Text::new(
+                        format!(
+                            "実行していません: {file} の {} は前のチェックで制限時間 {seconds} 秒内に終わりませんでした（上を参照）",
+                            names.ja
+                        ),
+                        format!(
+                            "not run: {} ({file}) did not finish in an earlier check (above)",
+                            names.en
+                        ),
+                    )
+                } else {
+                    Text::new(
+                        format!(
+                            "{file} の {} が制限時間 {seconds} 秒を超えても終わらないため止めました。無限ループになっていないか確認してください。",
+                            names.ja
+                        ),
+                        format!(
+                            "{} ({file}) was stopped after the time limit of {seconds} s: does it loop forever?",
+                            names.en
+                        ),
+                    )
+                }
+            }
+            Outcome::TimedOut { limit_ms, function: None, .. } => {
                 let seconds = seconds(*limit_ms);
                 Text::new(
                     format!(
@@ -242,6 +281,19 @@ impl Outcome {
             ),
         })
     }
+}
+
+/// The file and the name, in both languages, of the student's functions a call of the worker's
+/// `function` runs: `a1.face_normals` → `exercises/src/a1.rs`, `face_normals`; `a3.frames` →
+/// `exercises/src/a3.rs`, `idle か display` / `idle or display`.
+fn student_function(function: &str) -> (String, Text) {
+    let module = function.split('.').next().unwrap_or_default();
+    let names: Vec<&str> = cg_worker::proxy::student_functions(function)
+        .into_iter()
+        .map(|f| f.split_once('.').map_or(f, |(_, name)| name))
+        .collect();
+    let file = format!("exercises/src/{module}.rs");
+    (file, Text::new(names.join(" か "), names.join(" or ")))
 }
 
 /// Milliseconds as seconds, without a fraction when there is none.
@@ -354,7 +406,7 @@ pub fn run(id: &str, title: Text, body: impl FnOnce() -> Result<(), Failure>) ->
         return CheckResult { id: id.to_owned(), task, title, outcome: Outcome::Pass };
     }
     let outer = cg_student::take_not_started();
-    let mut result = run_unmarked(id, title, body);
+    let mut result = run_unmarked(id, title, true, body);
     let reached = cg_student::take_not_started();
     // Put back what was reached before this check (a check inside a check's body).
     for task in &outer {
@@ -383,13 +435,24 @@ pub fn marker_message(task: &str, reached: &[String]) -> Option<String> {
     ))
 }
 
-/// [`run`] without the stub markers (the runner of [`guarded`]).
-fn run_unmarked(id: &str, title: Text, body: impl FnOnce() -> Result<(), Failure>) -> CheckResult {
+/// [`run`] without the stub markers (the runner of [`guarded`]); `judged` for a check of [`run`],
+/// whose calls of a function that already ran out of time fail at once
+/// (`cg_worker::proxy::begin_judged_check`).
+fn run_unmarked(
+    id: &str,
+    title: Text,
+    judged: bool,
+    body: impl FnOnce() -> Result<(), Failure>,
+) -> CheckResult {
     install_hook();
     if let Ok(mut current) = CURRENT.lock() {
         *current = Some((id.to_owned(), Instant::now()));
     }
-    cg_worker::proxy::begin_check();
+    if judged {
+        cg_worker::proxy::begin_judged_check();
+    } else {
+        cg_worker::proxy::begin_check();
+    }
     // Set only around `catch_unwind`: a panic the hook keeps quiet is always caught and reported.
     let was_in_check = IN_CHECK.with(|c| c.replace(true));
     let result = panic::catch_unwind(AssertUnwindSafe(body));
@@ -421,9 +484,6 @@ fn run_unmarked(id: &str, title: Text, body: impl FnOnce() -> Result<(), Failure
 /// The name [`guarded`] runs under (what the [`watchdog`] sees).
 const GUARDED: &str = "guarded";
 
-/// How many lines of a file's compiler errors `cg check` shows under its first check.
-const COMPILE_LINES: usize = 24;
-
 /// Calls `f` (a student's function, outside any check) and turns a panic into the [`Outcome`] a
 /// check would report: [`Outcome::NotDone`] for a stub's `todo!()`, [`Outcome::Panicked`]
 /// otherwise. A stub's marker (`cg_student::not_started`) changes nothing here: what the stub
@@ -434,7 +494,7 @@ const COMPILE_LINES: usize = 24;
 /// The outcome when `f` panicked.
 pub fn guarded<T>(f: impl FnOnce() -> T) -> Result<T, Outcome> {
     let mut value = None;
-    let result = run_unmarked(GUARDED, crate::text::Text::default(), || {
+    let result = run_unmarked(GUARDED, crate::text::Text::default(), false, || {
         value = Some(f());
         Ok(())
     });
@@ -603,159 +663,6 @@ impl Report {
         tasks
     }
 
-    /// A line per check (✓ pass, ✗ fail, … not done yet, ! panicked) with, for each problem, what
-    /// was expected and found, where, the usual cause and a hint; then a progress summary.
-    #[must_use]
-    pub fn render(&self, lang: Lang) -> String {
-        let mut out = String::new();
-        let width = self.checks.iter().map(|c| c.id.chars().count()).max().unwrap_or(0);
-        // A file that does not compile: its errors under the first check, once.
-        let mut compile_shown = std::collections::BTreeSet::new();
-        for c in &self.checks {
-            let (mark, detail) = match &c.outcome {
-                Outcome::Pass => ("✓", None),
-                Outcome::Fail(f) => ("✗", Some(f)),
-                Outcome::NotDone { .. } => ("…", None),
-                Outcome::Panicked { .. }
-                | Outcome::TimedOut { .. }
-                | Outcome::Broken { .. }
-                | Outcome::Crashed { .. }
-                | Outcome::DoesNotCompile { .. } => ("!", None),
-            };
-            let _ = writeln!(out, "  {mark} {:<width$}  {}", c.id, c.title.get(lang));
-            match &c.outcome {
-                Outcome::NotDone { message } => {
-                    let _ = writeln!(
-                        out,
-                        "      {}: {}",
-                        t("まだです", "not done yet").get(lang),
-                        stub_message(message, lang)
-                    );
-                }
-                Outcome::Panicked { message, location } => {
-                    let _ = writeln!(
-                        out,
-                        "      {}: {message}",
-                        t("プログラムが異常終了しました（panic）", "your code panicked").get(lang)
-                    );
-                    if let Some(l) = location {
-                        let _ = writeln!(out, "      {}: {l}", t("場所", "at").get(lang));
-                    }
-                }
-                Outcome::DoesNotCompile { module, errors } => {
-                    if compile_shown.insert(module.clone()) {
-                        if let Some(text) = c.outcome.describe() {
-                            let _ = writeln!(out, "      {}", text.get(lang));
-                        }
-                        for line in errors.iter().flat_map(|e| e.lines()).take(COMPILE_LINES) {
-                            let _ = writeln!(out, "        | {line}");
-                        }
-                    } else {
-                        let _ = writeln!(
-                            out,
-                            "      {}",
-                            Text::new(
-                                format!(
-                                    "exercises/src/{module}.rs がコンパイルできません（上を参照）"
-                                ),
-                                format!("exercises/src/{module}.rs does not compile (see above)"),
-                            )
-                            .get(lang)
-                        );
-                    }
-                }
-                Outcome::TimedOut { .. } | Outcome::Broken { .. } | Outcome::Crashed { .. } => {
-                    if let Some(text) = c.outcome.describe() {
-                        let _ = writeln!(out, "      {}", text.get(lang));
-                    }
-                    if let Outcome::Crashed { stderr, .. } = &c.outcome {
-                        for line in
-                            stderr.lines().rev().take(5).collect::<Vec<_>>().into_iter().rev()
-                        {
-                            let _ = writeln!(out, "        | {line}");
-                        }
-                    }
-                }
-                _ => {}
-            }
-            if let Some(f) = detail {
-                let _ = writeln!(
-                    out,
-                    "      {}: {}",
-                    t("期待する値", "expected").get(lang),
-                    f.expected.get(lang)
-                );
-                let _ = writeln!(
-                    out,
-                    "      {}: {}",
-                    t("実際の値  ", "actual  ").get(lang),
-                    f.actual.get(lang)
-                );
-                if let Some(l) = &f.location {
-                    let _ = writeln!(
-                        out,
-                        "      {}: {}",
-                        t("場所      ", "where   ").get(lang),
-                        l.get(lang)
-                    );
-                }
-                if !f.cause.is_empty() {
-                    let _ = writeln!(
-                        out,
-                        "      {}: {}",
-                        t("よくある原因", "usual cause").get(lang),
-                        f.cause.get(lang)
-                    );
-                }
-                if !f.hint.is_empty() {
-                    let _ = writeln!(
-                        out,
-                        "      {}: {}",
-                        t("ヒント", "hint").get(lang),
-                        f.hint.get(lang)
-                    );
-                }
-            }
-        }
-        let _ = write!(
-            out,
-            "{}: {}/{} {}",
-            t("進み具合", "progress").get(lang),
-            self.passed(),
-            self.total(),
-            t("個のチェックに合格", "checks pass").get(lang)
-        );
-        let not_done = self.tasks_not_done();
-        if !not_done.is_empty() {
-            let _ = write!(
-                out,
-                "; {}: {}",
-                t("未完成の課題", "not done yet").get(lang),
-                not_done.join(", ")
-            );
-        }
-        let failing = self.tasks_failing();
-        if !failing.is_empty() {
-            let _ = write!(
-                out,
-                "; {}: {}",
-                t("直すところのある課題", "to fix").get(lang),
-                failing.join(", ")
-            );
-        }
-        let broken = self.files_not_compiling();
-        if !broken.is_empty() {
-            let _ = write!(
-                out,
-                "; {}: {}",
-                t("コンパイルできないファイル", "does not compile").get(lang),
-                broken.join(", ")
-            );
-        }
-        out.push('\n');
-        out
-    }
-
     /// The report as JSON: `{assignment, student, passed, total, checks: [{id, task, title,
     /// status, …}]}`.
     #[must_use]
@@ -769,6 +676,8 @@ impl Report {
         })
     }
 }
+
+mod render;
 
 #[cfg(test)]
 // The stubs students get are `todo!()`s: the runner must understand them.

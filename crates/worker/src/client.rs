@@ -25,8 +25,20 @@ pub enum CallError {
         /// Where, when known.
         location: Option<String>,
     },
-    /// It ran past its time budget; the worker was stopped.
-    TimedOut(Duration),
+    /// It ran past its time budget and the worker was stopped; or, with `earlier`, it was not
+    /// run at all, because `function` had already run past its budget in an earlier check
+    /// ([`crate::proxy`]).
+    TimedOut {
+        /// The time limit.
+        limit: Duration,
+        /// The worker's function that was running when the time ran out (`a1.face_normals`;
+        /// a batch such as `a3.frames` runs several of the student's, see
+        /// [`crate::proxy::student_functions`]).
+        function: String,
+        /// Not run now: `function` ran out of time in an earlier check, and this call would
+        /// have run it again.
+        earlier: bool,
+    },
     /// The worker ended during the call (an abort, a memory limit, a stack overflow): how, and
     /// the end of what it wrote on stderr.
     Crashed {
@@ -284,7 +296,11 @@ impl Worker {
             Err(RecvTimeoutError::Timeout) => {
                 self.stop();
                 self.timeouts += 1;
-                return Err(CallError::TimedOut(budget));
+                return Err(CallError::TimedOut {
+                    limit: budget,
+                    function: function.to_owned(),
+                    earlier: false,
+                });
             }
             Err(RecvTimeoutError::Disconnected) => return Err(self.crashed()),
         };

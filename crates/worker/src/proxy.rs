@@ -20,6 +20,14 @@
 //! time makes every later one fail at once as timed out, instead of costing the budget again
 //! for every part; [`Worker::timeouts`] says afterwards that it happened.
 //!
+//! **A function that ran out of time is not run again by the checks.** In a check started with
+//! [`begin_judged_check`] (`cg_harness::check::run`: the checks of `cg check` and the grader,
+//! not a window's or the report's calls), a call that would run a student's function that already
+//! ran out of time in this session fails at once, [`CallError::TimedOut`] with `earlier` and
+//! the function that ran out, instead of waiting for the whole budget once more: an endless loop
+//! in `face_normals` cost 20 s in each of a1's three checks that call it. Grading waits again
+//! ([`rerun_timed_out`]): a function that loops on one input may answer another.
+//!
 //! **Batches.** Where a check would call a function many times (a3's frames, s's pixels), it
 //! asks [`active`] and, when the functions are the worker's, uses one batch call instead
 //! ([`a3_frames`], [`a3_run_idle`], [`shade_pixels`]): the same calls of the student's functions
@@ -49,17 +57,46 @@ pub struct Session {
     deadline: Option<Instant>,
     /// Whether calls outside a check fail at once after one has timed out.
     until_timeout: bool,
+    /// Whether the running check is one of a check run ([`begin_judged_check`]): a call of a
+    /// function in `timed_out` then fails at once.
+    judged: bool,
+    /// The worker's functions whose calls ran out of time, in order, each once.
+    timed_out: Vec<String>,
+}
+
+impl Session {
+    fn new(worker: Worker, per_check: Duration, until_timeout: bool) -> Session {
+        Session {
+            worker,
+            per_check,
+            deadline: None,
+            until_timeout,
+            judged: false,
+            timed_out: Vec::new(),
+        }
+    }
 }
 
 thread_local! {
     static CURRENT: RefCell<Option<Session>> = const { RefCell::new(None) };
+    /// Whether the checks of this thread run a function again after it ran out of time
+    /// ([`rerun_timed_out`]).
+    static RERUN: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Grading (`cg grade`): whether the checks on this thread call a student's function again after
+/// it ran out of time in an earlier check. A function that loops on one input may answer another,
+/// and a grade counts every check it can pass, so grading waits again; `cg check` does not (an
+/// endless loop cost the student 20 s in each check that called it).
+pub fn rerun_timed_out(on: bool) {
+    RERUN.with(|r| r.set(on));
 }
 
 /// Runs `f` with `worker` as this thread's current worker (the stand-ins' functions call it),
 /// each check's calls sharing `per_check`; gives the worker back afterwards (with what the
 /// student's code printed in [`Worker::printed`]).
 pub fn with_worker<T>(worker: Worker, per_check: Duration, f: impl FnOnce() -> T) -> (T, Worker) {
-    session(Session { worker, per_check, deadline: None, until_timeout: false }, f)
+    session(Session::new(worker, per_check, false), f)
 }
 
 /// [`with_worker`], where a call outside a check that runs out of time makes every later call
@@ -69,7 +106,7 @@ pub fn with_worker_until_timeout<T>(
     per_check: Duration,
     f: impl FnOnce() -> T,
 ) -> (T, Worker) {
-    session(Session { worker, per_check, deadline: None, until_timeout: true }, f)
+    session(Session::new(worker, per_check, true), f)
 }
 
 fn session<T>(session: Session, f: impl FnOnce() -> T) -> (T, Worker) {
@@ -102,10 +139,22 @@ pub fn active() -> bool {
 
 /// A check starts: its calls share the session's budget from now on (nothing without a worker).
 pub fn begin_check() {
+    begin(false);
+}
+
+/// A check of a check run starts (`cg_harness::check::run`): as [`begin_check`], and a call that
+/// would run a student's function that already ran out of time in this session fails at once
+/// (see the module's documentation).
+pub fn begin_judged_check() {
+    begin(true);
+}
+
+fn begin(judged: bool) {
     CURRENT.with(|c| {
         if let Some(s) = c.borrow_mut().as_mut() {
             // A budget past the clock's end is no deadline at all (not a panic).
             s.deadline = Instant::now().checked_add(s.per_check);
+            s.judged = judged;
         }
     });
 }
@@ -115,8 +164,29 @@ pub fn end_check() {
     CURRENT.with(|c| {
         if let Some(s) = c.borrow_mut().as_mut() {
             s.deadline = None;
+            s.judged = false;
         }
     });
+}
+
+/// The student's functions a call of the worker's `function` runs: itself, or for a batch the
+/// functions it runs (`a3.frames`: `a3.idle` and `a3.display`).
+#[must_use]
+pub fn student_functions(function: &str) -> Vec<&str> {
+    match function {
+        "a3.frames" => vec!["a3.idle", "a3.display"],
+        "a3.run_idle" => vec!["a3.idle"],
+        "s.shade_pixels_queries" | "s.shade_pixels" => vec!["s.shade_pixel"],
+        other => vec![other],
+    }
+}
+
+/// Whether a call of `function` runs every student's function that a call of `timed_out` runs
+/// (and so would run out of time again): `a3.frames` after `a3.idle`, not `a3.idle` after
+/// `a3.frames` (it may have been `display` that looped).
+fn runs_again(timed_out: &str, function: &str) -> bool {
+    let now = student_functions(function);
+    student_functions(timed_out).iter().all(|f| now.contains(f))
 }
 
 /// Calls `function` in the current worker within the check's budget: its value, or the
@@ -133,16 +203,41 @@ pub fn call<A: Serialize, R: DeserializeOwned>(function: &str, args: &A) -> R {
                 format!("{function}: no worker is running"),
             )));
         };
+        let limit = session.per_check;
+        let not_run = |function: &str| CallError::TimedOut {
+            limit,
+            function: function.to_owned(),
+            earlier: true,
+        };
+        if session.judged
+            && !RERUN.with(std::cell::Cell::get)
+            && let Some(earlier) = session.timed_out.iter().find(|t| runs_again(t, function))
+        {
+            return Err(not_run(earlier));
+        }
         let budget = match session.deadline {
-            None if session.until_timeout && session.worker.timeouts > 0 => Duration::ZERO,
-            None => session.per_check,
+            None if session.until_timeout && session.worker.timeouts > 0 => {
+                let earlier = session.timed_out.first().map_or(function, String::as_str);
+                return Err(not_run(earlier));
+            }
+            None => limit,
             Some(end) => end.saturating_duration_since(Instant::now()),
         };
         if budget.is_zero() {
-            return Err(CallError::TimedOut(session.per_check));
+            // The check's budget was spent before this call.
+            return Err(CallError::TimedOut {
+                limit,
+                function: function.to_owned(),
+                earlier: false,
+            });
         }
         match session.worker.call(function, args, budget) {
-            Err(CallError::TimedOut(_)) => Err(CallError::TimedOut(session.per_check)),
+            Err(CallError::TimedOut { function, .. }) => {
+                if !session.timed_out.contains(&function) {
+                    session.timed_out.push(function.clone());
+                }
+                Err(CallError::TimedOut { limit, function, earlier: false })
+            }
             other => other,
         }
     });
@@ -275,5 +370,24 @@ pub fn shade_pixels(
             format!("shade_pixel: {}", why.ja),
             format!("shade_pixel: {}", why.en),
         ))),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A batch runs several of the student's functions: it is not run again after one of them
+    /// ran out of time, but that one still runs after the batch did (the batch's other function
+    /// may have been the one that looped).
+    #[test]
+    fn a_batch_is_not_run_after_one_of_its_functions_ran_out_of_time() {
+        assert_eq!(student_functions("a3.frames"), ["a3.idle", "a3.display"]);
+        assert!(runs_again("a1.face_normals", "a1.face_normals"));
+        assert!(!runs_again("a1.face_normals", "a1.faces"));
+        assert!(runs_again("a3.idle", "a3.frames") && runs_again("a3.idle", "a3.run_idle"));
+        assert!(runs_again("a3.frames", "a3.frames"));
+        assert!(!runs_again("a3.frames", "a3.idle") && !runs_again("a3.frames", "a3.display"));
+        assert!(runs_again("s.shade_pixels_queries", "s.shade_pixels"));
     }
 }

@@ -13,6 +13,17 @@ fn worker() -> Worker {
 
 const BUDGET: Duration = Duration::from_secs(5);
 
+/// The fixture's `loop` ran out of `limit` (or, `earlier`, was not run: it had already).
+fn timed_out(limit: Duration, earlier: bool) -> CallError {
+    CallError::TimedOut { limit, function: "loop".to_owned(), earlier }
+}
+
+/// What a call through the proxy gave: its value, or the [`CallError`] it raised.
+fn outcome(f: &dyn Fn() -> i64) -> Result<i64, Option<CallError>> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f))
+        .map_err(|e| e.downcast::<CallError>().map(|e| *e).ok())
+}
+
 #[test]
 fn values_and_changed_arguments_come_back() {
     let mut w = worker();
@@ -69,7 +80,7 @@ fn an_endless_loop_fails_its_own_call_only() {
     let mut w = worker();
     let started = Instant::now();
     let budget = Duration::from_millis(300);
-    assert_eq!(w.call::<_, i64>("loop", &(), budget), Err(CallError::TimedOut(budget)));
+    assert_eq!(w.call::<_, i64>("loop", &(), budget), Err(timed_out(budget, false)));
     assert!(started.elapsed() < Duration::from_secs(3), "{:?}", started.elapsed());
     // The next call runs in a fresh worker.
     assert_eq!(w.call::<_, i64>("add", &(4, 5), BUDGET), Ok(9));
@@ -174,10 +185,6 @@ fn a_module_left_out_is_answered_with_its_errors_and_the_others_still_run() {
 #[test]
 fn after_a_timeout_outside_a_check_later_calls_outside_one_fail_at_once() {
     use cg_worker::proxy;
-    let outcome = |f: &dyn Fn() -> i64| {
-        std::panic::catch_unwind(std::panic::AssertUnwindSafe(f))
-            .map_err(|e| e.downcast::<CallError>().map(|e| *e).ok())
-    };
     let budget = Duration::from_millis(300);
     let (results, w) = proxy::with_worker_until_timeout(worker(), budget, || {
         let first = outcome(&|| proxy::call("loop", &()));
@@ -187,16 +194,65 @@ fn after_a_timeout_outside_a_check_later_calls_outside_one_fail_at_once() {
         proxy::end_check();
         (first, later, in_a_check)
     });
-    assert_eq!(results.0, Err(Some(CallError::TimedOut(budget))));
-    assert_eq!(results.1, Err(Some(CallError::TimedOut(budget))), "would be Ok(9) without");
+    assert_eq!(results.0, Err(Some(timed_out(budget, false))));
+    assert_eq!(results.1, Err(Some(timed_out(budget, true))), "would be Ok(9) without");
     assert_eq!(results.2, Ok(9));
     assert_eq!(w.timeouts, 1);
     let (results, w) = proxy::with_worker(worker(), budget, || {
         let first = outcome(&|| proxy::call("loop", &()));
         (first, outcome(&|| proxy::call("add", &(4, 5))))
     });
-    assert_eq!(results, (Err(Some(CallError::TimedOut(budget))), Ok(9)));
+    assert_eq!(results, (Err(Some(timed_out(budget, false))), Ok(9)));
     assert_eq!(w.timeouts, 1);
+}
+
+/// An endless loop in a student's function costs the time limit once in a check run, not once
+/// per check that calls it (three of a1's checks call `face_normals`: 60 s): in a later check
+/// (`begin_judged_check`, as `cg_harness::check::run` starts them) a call of a function that ran
+/// out of time fails at once, naming it, while the other functions still run; a call outside
+/// such a check (a view's) runs it again.
+#[test]
+fn a_function_that_ran_out_of_time_is_not_run_again_by_later_checks() {
+    use cg_worker::proxy;
+    let limit = Duration::from_millis(300);
+    let check = |f: &dyn Fn() -> i64| {
+        proxy::begin_judged_check();
+        let started = Instant::now();
+        let result = outcome(f);
+        proxy::end_check();
+        (result, started.elapsed())
+    };
+    let (results, w) = proxy::with_worker(worker(), limit, || {
+        let first = check(&|| proxy::call("loop", &()));
+        let again = check(&|| proxy::call("loop", &()));
+        let other = check(&|| proxy::call("add", &(4, 5)));
+        proxy::begin_check();
+        let viewed = outcome(&|| proxy::call("loop", &()));
+        proxy::end_check();
+        (first, again, other, viewed)
+    });
+    let (first, again, other, viewed) = results;
+    assert_eq!(first.0, Err(Some(timed_out(limit, false))));
+    assert!(first.1 >= limit, "{:?}", first.1);
+    assert_eq!(again.0, Err(Some(timed_out(limit, true))), "the function is named");
+    assert!(again.1 < Duration::from_millis(100), "not waited for again: {:?}", again.1);
+    assert_eq!(other.0, Ok(9));
+    assert_eq!(viewed, Err(Some(timed_out(limit, false))), "outside a check run it runs");
+    assert_eq!(w.timeouts, 2);
+
+    // Grading runs it again in every check: it may answer other inputs.
+    let (again, w) = std::thread::spawn(move || {
+        proxy::rerun_timed_out(true);
+        proxy::with_worker(w, limit, || {
+            let _ = check(&|| proxy::call("loop", &()));
+            check(&|| proxy::call("loop", &()))
+        })
+    })
+    .join()
+    .unwrap();
+    assert_eq!(again.0, Err(Some(timed_out(limit, false))), "run again when grading");
+    assert!(again.1 >= limit, "{:?}", again.1);
+    assert_eq!(w.timeouts, 4);
 }
 
 /// A panic's message is the student's: one of 20 MB comes back cut to MAX_MESSAGE_BYTES, with

@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::text::t;
+use std::time::{Duration, Instant};
 
 #[test]
 fn outcomes_are_told_apart() {
@@ -156,7 +157,7 @@ fn the_report_explains_and_summarises() {
     assert_eq!((report.passed(), report.total()), (1, 3));
     assert!(!report.timed_out(), "a failure and a stub are not a timeout");
     let mut late = report.clone();
-    late.checks[1].outcome = Outcome::TimedOut { limit_ms: 5000 };
+    late.checks[1].outcome = Outcome::TimedOut { limit_ms: 5000, function: None, earlier: false };
     assert!(late.timed_out(), "exit status 3 for `cg check`");
     let en = report.render(Lang::En);
     for needle in [
@@ -190,7 +191,7 @@ fn the_report_explains_and_summarises() {
 }
 
 #[test]
-fn a_file_that_does_not_compile_shows_its_errors_once_and_is_not_a_task_to_fix() {
+fn a_file_that_does_not_compile_is_one_line_with_its_errors_once_and_is_not_a_task_to_fix() {
     let errors = vec![
         "error: expected `;`\n  --> exercises/src/a1.rs:12:5".to_owned(),
         "exercises/src/a1.rs:20: mismatched types".to_owned(),
@@ -208,13 +209,29 @@ fn a_file_that_does_not_compile_shows_its_errors_once_and_is_not_a_task_to_fix()
     for lang in [Lang::En, Lang::Ja] {
         let text = report.render(lang);
         assert_eq!(text.matches("expected `;`").count(), 1, "the errors once:\n{text}");
-        assert!(text.contains("| exercises/src/a1.rs:20: mismatched types"), "{text}");
-        assert!(text.contains("! a1.t2.closed"), "{text}");
+        assert!(text.contains("        | exercises/src/a1.rs:20: mismatched types"), "{text}");
+        assert!(text.contains("✗ a1.t3.unit"), "{text}");
     }
+    // One line for the file, with how many checks it stops and which (the IDs stay visible),
+    // instead of "does not compile (see above)" under each of them.
     let en = report.render(Lang::En);
-    assert!(en.contains("exercises/src/a1.rs does not compile (see above)"), "{en}");
+    assert!(
+        en.starts_with(
+            "  ! exercises/src/a1.rs does not compile, so 2 checks of this assignment did not run: a1.t1.count, a1.t2.closed\n        | error: expected `;`\n"
+        ),
+        "{en}"
+    );
+    assert_eq!(en.matches("exercises/src/a1.rs does not compile").count(), 1, "{en}");
+    assert!(!en.contains("see above"), "{en}");
     assert!(en.ends_with("to fix: a1.t3; does not compile: exercises/src/a1.rs\n"), "{en}");
-    assert!(report.render(Lang::Ja).contains("コンパイルできないファイル: exercises/src/a1.rs"));
+    let ja = report.render(Lang::Ja);
+    assert!(
+        ja.starts_with(
+            "  ! exercises/src/a1.rs がコンパイルできないため、この課題のチェック 2 個を実行していません: a1.t1.count, a1.t2.closed\n"
+        ),
+        "{ja}"
+    );
+    assert!(ja.contains("コンパイルできないファイル: exercises/src/a1.rs"));
     let json = report.to_json();
     assert_eq!(json["checks"][0]["status"], "does_not_compile");
     assert_eq!(json["checks"][0]["module"], "a1");
@@ -242,9 +259,256 @@ fn a_call_that_gave_no_value_is_said_in_the_readers_language() {
         serde_json::to_value(&outcome).unwrap()["why"]["ja"],
         "ワーカーに関数 a9.x がありません"
     );
-    let late = Outcome::TimedOut { limit_ms: 20_000 }.of_function("face_normals");
+    let late = Outcome::TimedOut { limit_ms: 20_000, function: None, earlier: false }
+        .of_function("face_normals");
     assert!(late.ja.starts_with("face_normals: 制限時間 20 秒を超えても"), "{}", late.ja);
     assert!(!late.en.contains("panicked"), "{}", late.en);
     let stub = Outcome::NotDone { message: "a1.t3".into() }.of_function("face_normals");
     assert!(stub.en.starts_with("face_normals is not written yet"), "{}", stub.en);
+}
+
+/// The checks of `cg check a1` with a wrong face `[0, 1, 4]` (a student's copy, 2026): the
+/// face fails a1.t2.indices, and six checks that need valid faces fail with the same five lines
+/// each (and the cause the same sentence as "actual"); face_normals panics in a1.t3's three.
+fn wrong_face() -> Report {
+    let missing = t(
+        "面 F0 の 2 番目 (0 から数えて) の頂点番号 V4 は存在しません（頂点は V0–V3 の 4 個です）",
+        "vertex V4 (F0, corner 2) does not exist (the vertices are V0–V3)",
+    );
+    let needs_indices = || {
+        Err(Failure::new(
+            t("a1.t2.indices に合格する面", "faces that pass a1.t2.indices"),
+            missing.clone(),
+        )
+        .at("faces()")
+        .cause(missing.clone())
+        .hint(t("先に a1.t2.indices を直してください", "fix a1.t2.indices first")))
+    };
+    let index_out_of_bounds = || -> Result<(), Failure> {
+        let v = [0u32; 4];
+        let i = v.len();
+        Err(Failure::new(v[i].to_string(), ""))
+    };
+    let mut checks = vec![
+        run("a1.t1.count", t("頂点の数", "vertex count"), || Ok(())),
+        run("a1.t2.indices", t("頂点番号", "indices"), || {
+            Err(Failure::new("0..=3", "F0[2] = 4")
+                .at("F0")
+                .cause(missing.clone())
+                .hint(t("頂点番号は 0 から", "vertex numbers start at 0")))
+        }),
+    ];
+    for id in ["a1.t2.degenerate", "a1.t2.closed", "a1.t2.manifold", "a1.t2.winding"] {
+        checks.push(run(id, t(id, id), needs_indices));
+    }
+    checks.push(run("a1.t2.count", t("面の数", "face count"), || Ok(())));
+    checks.push(run("a1.t2.surface", t("表面", "surface"), needs_indices));
+    for id in ["a1.t3.count", "a1.t3.unit", "a1.t3.normals"] {
+        checks.push(run(id, t(id, id), index_out_of_bounds));
+    }
+    // The same failure again after another explanation came between.
+    checks.push(run("a1.t4.placement", t("配置", "placement"), needs_indices));
+    Report { assignment: "a1".into(), student: None, checks }
+}
+
+/// Each explanation is said once: a check whose explanation was just shown says "(same as
+/// above)", one shown further up names the check it is under; the cause is not repeated when
+/// it is what "actual" says; every ID, the counts and the JSON stay.
+#[test]
+fn the_same_explanation_is_said_once_and_every_check_is_still_named() {
+    let report = wrong_face();
+    let json = report.to_json();
+    for (lang, missing, same, same_as, panicked, hint) in [
+        (
+            Lang::En,
+            "vertex V4 (F0, corner 2) does not exist",
+            "(same as above)",
+            "(same as a1.t2.degenerate)",
+            "your code panicked: index out of bounds",
+            "hint: fix a1.t2.indices first",
+        ),
+        (
+            Lang::Ja,
+            "面 F0 の 2 番目 (0 から数えて) の頂点番号 V4 は存在しません",
+            "（同上）",
+            "（a1.t2.degenerate と同じ）",
+            "プログラムが異常終了しました（panic）: index out of bounds",
+            "ヒント: 先に a1.t2.indices を直してください",
+        ),
+    ] {
+        let text = report.render(lang);
+        for c in &report.checks {
+            assert!(text.contains(&format!(" {} ", c.id)), "{} in:\n{text}", c.id);
+        }
+        // Under a1.t2.indices as its cause, under a1.t2.degenerate as what was found; not again
+        // as the cause there, nor under the four checks after it.
+        assert_eq!(text.matches(missing).count(), 2, "{text}");
+        assert_eq!(text.matches(hint).count(), 1, "{text}");
+        assert_eq!(text.matches(panicked).count(), 1, "{text}");
+        // closed, manifold, winding, surface (after a pass, which explains nothing), and a1.t3's
+        // unit and normals.
+        assert_eq!(text.matches(same).count(), 6, "{text}");
+        let placement = text.lines().find(|l| l.contains("a1.t4.placement")).unwrap();
+        assert!(placement.ends_with(same_as), "{text}");
+        let closed = text.lines().find(|l| l.contains("a1.t2.closed")).unwrap();
+        assert!(closed.starts_with("  ✗ a1.t2.closed") && closed.ends_with(same), "{text}");
+        // A line per check, the explanations of a1.t2.indices (5 lines), a1.t2.degenerate (4:
+        // the cause is what "actual" says) and the panic (2), and the progress.
+        assert_eq!(text.lines().count(), 12 + 5 + 4 + 2 + 1, "{text}");
+    }
+    assert_eq!((report.passed(), report.total()), (2, 12));
+    assert_eq!(report.to_json(), json, "rendering changes nothing");
+    assert_eq!(json["checks"][3]["cause"]["en"], json["checks"][3]["actual"]["en"]);
+    assert_eq!(json["checks"].as_array().unwrap().len(), 12);
+}
+
+/// Stubs not started: one line per task, with every check's ID, instead of "not done yet" under
+/// each check; a task's checks reaching another task's marker say so once.
+#[test]
+fn the_stubs_of_a_task_are_one_line() {
+    let mut checks: Vec<CheckResult> = ["a2.t1.x", "a2.t1.y", "a2.t1.z"]
+        .map(|id| {
+            run(id, t(id, id), || {
+                let _ = marked_stub("a2.t1");
+                Ok(())
+            })
+        })
+        .to_vec();
+    checks.push(run("a2.t2.only", t("ひとつ", "only one"), || todo!("a2.t2: write it")));
+    checks.extend(["a2.t3.p", "a2.t3.q"].map(|id| {
+        run(id, t(id, id), || {
+            let _ = marked_stub("a2.t1");
+            Ok(())
+        })
+    }));
+    let report = Report { assignment: "a2".into(), student: None, checks };
+    let en = report.render(Lang::En);
+    let expected = "  … a2.t1.x, a2.t1.y, a2.t1.z  not done yet: a2.t1: delete the line cg_student::not_started(\"a2.t1\"); when you start writing it
+  … a2.t2.only  not done yet: a2.t2: write it
+  … a2.t3.p, a2.t3.q  not done yet (same as a2.t1.x)
+progress: 0/6 checks pass; not done yet: a2.t1, a2.t2, a2.t3
+";
+    assert_eq!(en, expected);
+    let ja = report.render(Lang::Ja);
+    assert!(
+        ja.starts_with(
+            "  … a2.t1.x, a2.t1.y, a2.t1.z  まだです: a2.t1（書き始めたら cg_student::not_started(\"a2.t1\"); の行を消します）\n"
+        ),
+        "{ja}"
+    );
+    assert!(ja.contains("\n  … a2.t3.p, a2.t3.q  まだです（a2.t1.x と同じ）\n"), "{ja}");
+    assert_eq!(ja.matches("書き始めたら").count(), 1, "{ja}");
+}
+
+/// A timeout names the student's function and its file; a check that did not run it because it
+/// ran out of time earlier says so; and the JSON of a timeout without a function is as before.
+#[test]
+fn a_timeout_names_the_function_and_a_later_check_says_it_did_not_run_it() {
+    let error = CallError::TimedOut {
+        limit: Duration::from_secs(20),
+        function: "a1.face_normals".into(),
+        earlier: false,
+    };
+    let late = Outcome::of_call(&error);
+    let text = late.describe().unwrap();
+    assert_eq!(
+        text.ja,
+        "exercises/src/a1.rs の face_normals が制限時間 20 秒を超えても終わらないため止めました。無限ループになっていないか確認してください。"
+    );
+    assert_eq!(
+        text.en,
+        "face_normals (exercises/src/a1.rs) was stopped after the time limit of 20 s: does it loop forever?"
+    );
+    assert_eq!(late.of_function("face_normals"), text, "named once");
+    let skipped = Outcome::TimedOut {
+        limit_ms: 20_000,
+        function: Some("a1.face_normals".into()),
+        earlier: true,
+    };
+    assert_eq!(
+        skipped.describe().unwrap().en,
+        "not run: face_normals (exercises/src/a1.rs) did not finish in an earlier check (above)"
+    );
+    assert!(
+        skipped
+            .describe()
+            .unwrap()
+            .ja
+            .starts_with("実行していません: exercises/src/a1.rs の face_normals は前のチェックで")
+    );
+    let batch =
+        Outcome::TimedOut { limit_ms: 1500, function: Some("a3.frames".into()), earlier: false };
+    assert!(batch.describe().unwrap().en.starts_with(
+        "idle or display (exercises/src/a3.rs) was stopped after the time limit of 1.5 s"
+    ));
+    // JSON: as before, with the function when there is one; and it reads back (`cg watch`).
+    let bare =
+        serde_json::to_value(Outcome::TimedOut { limit_ms: 5, function: None, earlier: false })
+            .unwrap();
+    assert_eq!(bare, serde_json::json!({"status": "timed_out", "limit_ms": 5}));
+    let json = serde_json::to_value(&skipped).unwrap();
+    assert_eq!(
+        json,
+        serde_json::json!({"status": "timed_out", "limit_ms": 20_000, "function": "a1.face_normals", "earlier": true})
+    );
+    assert_eq!(serde_json::from_value::<Outcome>(json).unwrap(), skipped);
+    assert_eq!(
+        serde_json::from_value::<Outcome>(bare).unwrap(),
+        Outcome::TimedOut { limit_ms: 5, function: None, earlier: false }
+    );
+}
+
+/// A student's function that never returns (a worker that never replies: `sleep`), called by
+/// three checks with a short limit: the first waits for the limit and names the function, the
+/// other two do not wait again and say why; a call outside a check (a view's) still runs it.
+#[cfg(unix)]
+#[test]
+fn a_function_that_ran_out_of_time_is_not_waited_for_again() {
+    let limit = Duration::from_millis(300);
+    let worker = cg_worker::Worker::new("sleep", ["30"]);
+    let normals = || -> Result<(), Failure> {
+        let _: Vec<f32> = cg_worker::proxy::call("a1.face_normals", &());
+        Ok(())
+    };
+    let started = Instant::now();
+    let ((checks, view), worker) = cg_worker::proxy::with_worker(worker, limit, || {
+        let checks =
+            ["a1.t3.count", "a1.t3.unit", "a1.t3.normals"].map(|id| run(id, t(id, id), normals));
+        (checks, guarded(normals))
+    });
+    let took = started.elapsed();
+    assert_eq!(worker.timeouts, 2, "the first check's call and the view's");
+    assert!(took < limit * 2 + Duration::from_millis(1500), "{took:?}: waited once per check?");
+    assert_eq!(
+        checks[0].outcome,
+        Outcome::TimedOut {
+            limit_ms: 300,
+            function: Some("a1.face_normals".into()),
+            earlier: false
+        }
+    );
+    for c in &checks[1..] {
+        assert_eq!(
+            c.outcome,
+            Outcome::TimedOut {
+                limit_ms: 300,
+                function: Some("a1.face_normals".into()),
+                earlier: true
+            }
+        );
+    }
+    assert!(matches!(view, Err(Outcome::TimedOut { earlier: false, .. })), "{view:?}");
+    let report = Report { assignment: "a1".into(), student: None, checks: checks.to_vec() };
+    assert!(report.timed_out());
+    let en = report.render(Lang::En);
+    assert_eq!(
+        en,
+        "  ! a1.t3.count    a1.t3.count
+      face_normals (exercises/src/a1.rs) was stopped after the time limit of 0.3 s: does it loop forever?
+  ! a1.t3.unit     a1.t3.unit
+      not run: face_normals (exercises/src/a1.rs) did not finish in an earlier check (above)
+  ! a1.t3.normals  a1.t3.normals  (same as above)
+progress: 0/3 checks pass; to fix: a1.t3
+"
+    );
 }
