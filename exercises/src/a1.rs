@@ -50,7 +50,9 @@ use cg_student::product::{Axis, Factor, MatrixProduct, Param};
 /// 正 n 角形の k 番目の角は θ = 360°·k/n（cos・sin にはラジアン: `.to_radians()`）。
 /// 配置（平行移動・回転）は含めず、モデル座標系で書きます。
 pub fn vertices(spec: &Spec) -> Vec<Vec3> {
-    todo!("a1.t1: list the vertices of your polyhedron (V0, V1, …) in model space")
+    todo!(
+        "a1.t1: 多面体の頂点 V0, V1, … をモデル座標系で並べる / list the vertices of your polyhedron (V0, V1, …) in model space"
+    )
 }
 
 /// **a1.t2** — the faces (面を構成する頂点番号の配列): triangles as vertex numbers.
@@ -72,7 +74,9 @@ pub fn vertices(spec: &Spec) -> Vec<Vec3> {
 /// ヒント: まず頂点番号を書き込んだ三面図を描き、各面を外側から見て反時計回りに頂点を並べます。
 /// 隣の面とは同じ頂点番号で辺を共有します。
 pub fn faces(spec: &Spec) -> Vec<[u32; 3]> {
-    todo!("a1.t2: list the triangles as vertex numbers, counter-clockwise seen from outside")
+    todo!(
+        "a1.t2: 三角形の面を、外側から見て反時計回りに頂点番号で並べる / list the triangles as vertex numbers, counter-clockwise seen from outside"
+    )
 }
 
 /// **a1.t3** — each face's unit normal (各面の法線), computed by you.
@@ -91,7 +95,9 @@ pub fn faces(spec: &Spec) -> Vec<[u32; 3]> {
 /// 講義の F0 { V0, V3, V1 } の法線は (V3 − V0) × (V1 − V0) = (0, 2, 3.6) を正規化した
 /// { 0.0, 0.4856, 0.8742 } です。
 pub fn face_normals(spec: &Spec) -> Vec<Vec3> {
-    todo!("a1.t3: compute each face's unit normal (Vb − Va) × (Vc − Va), normalised")
+    todo!(
+        "a1.t3: 各面の単位法線を (Vb − Va) × (Vc − Va) の正規化で求める / compute each face's unit normal (Vb − Va) × (Vc − Va), normalised"
+    )
 }
 
 /// **a1.t4** — the placement: model space → world space (モデル座標系→ワールド座標系).
@@ -110,7 +116,9 @@ pub fn face_normals(spec: &Spec) -> Vec<Vec3> {
 /// ヒント: display() で glTranslatef(x, y, z); glRotatef(θ, 0, 1, 0); と書く順に因子を並べます
 /// （角度は度、ラジアンではありません）。
 pub fn model_transform(spec: &Spec) -> MatrixProduct {
-    todo!("a1.t4: the placement T(x, y, z) · Ry(θ) as a MatrixProduct (degrees)")
+    todo!(
+        "a1.t4: 配置 T(x, y, z) · Ry(θ) を角度は度で MatrixProduct にする / the placement T(x, y, z) · Ry(θ) as a MatrixProduct (degrees)"
+    )
 }
 
 /// The functions of this module, for the checks and the view.

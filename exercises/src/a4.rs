@@ -38,7 +38,9 @@ use cg_student::glam::Vec2;
 /// `t = 7/8〜1`）。
 #[must_use]
 pub fn tex_range(spec: &Spec) -> TexRange {
-    todo!("a4.t1: the texture-coordinate range of your region")
+    todo!(
+        "a4.t1: 自分の領域のテクスチャ座標の範囲を返す / the texture-coordinate range of your region"
+    )
 }
 
 /// **a4.t2** — the texture coordinates of the four corners of ground square `(i, j)`
@@ -71,7 +73,9 @@ pub fn tex_range(spec: &Spec) -> TexRange {
 /// の向き、下→上が `j` の**逆**向き（カメラは +z 側から見る）。整数のまま割らない（`i / 10` は 0）。
 #[must_use]
 pub fn tex_coords(spec: &Spec, i: u32, j: u32) -> [Vec2; 4] {
-    todo!("a4.t2: the texture coordinates of the corners of square (i, j)")
+    todo!(
+        "a4.t2: 四角形 (i, j) の 4 頂点のテクスチャ座標を返す / the texture coordinates of the corners of square (i, j)"
+    )
 }
 
 /// **a4.t3** — how the texture is sampled (フィルタと折り返し): glTexParameteri's
@@ -92,7 +96,7 @@ pub fn tex_coords(spec: &Spec, i: u32, j: u32) -> [Vec2; 4] {
 /// 何が起きるかを考える。
 #[must_use]
 pub fn sampler() -> Sampler {
-    todo!("a4.t3: the filter and the wrap modes")
+    todo!("a4.t3: フィルタと折り返しを返す / the filter and the wrap modes")
 }
 
 /// The functions of this module, for the checks and the view.

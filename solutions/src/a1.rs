@@ -280,7 +280,9 @@ pub fn vertices(spec: &Spec) -> Vec<Vec3> {
     v
     // END SOLUTION
     // BEGIN STUB
-    // todo!("a1.t1: list the vertices of your polyhedron (V0, V1, …) in model space")
+    // todo!(
+    //     "a1.t1: 多面体の頂点 V0, V1, … をモデル座標系で並べる / list the vertices of your polyhedron (V0, V1, …) in model space"
+    // )
     // END STUB
 }
 
@@ -308,7 +310,9 @@ pub fn faces(spec: &Spec) -> Vec<[u32; 3]> {
     canonical_faces(&spec.shape).iter().map(|f| f.map(|c| map[c as usize])).collect()
     // END SOLUTION
     // BEGIN STUB
-    // todo!("a1.t2: list the triangles as vertex numbers, counter-clockwise seen from outside")
+    // todo!(
+    //     "a1.t2: 三角形の面を、外側から見て反時計回りに頂点番号で並べる / list the triangles as vertex numbers, counter-clockwise seen from outside"
+    // )
     // END STUB
 }
 
@@ -339,7 +343,9 @@ pub fn face_normals(spec: &Spec) -> Vec<Vec3> {
         .collect()
     // END SOLUTION
     // BEGIN STUB
-    // todo!("a1.t3: compute each face's unit normal (Vb − Va) × (Vc − Va), normalised")
+    // todo!(
+    //     "a1.t3: 各面の単位法線を (Vb − Va) × (Vc − Va) の正規化で求める / compute each face's unit normal (Vb − Va) × (Vc − Va), normalised"
+    // )
     // END STUB
 }
 
@@ -366,7 +372,9 @@ pub fn model_transform(spec: &Spec) -> MatrixProduct {
         .then(Factor::rotate(Axis::Y, Param::sym("theta", p.angle_deg)))
     // END SOLUTION
     // BEGIN STUB
-    // todo!("a1.t4: the placement T(x, y, z) · Ry(θ) as a MatrixProduct (degrees)")
+    // todo!(
+    //     "a1.t4: 配置 T(x, y, z) · Ry(θ) を角度は度で MatrixProduct にする / the placement T(x, y, z) · Ry(θ) as a MatrixProduct (degrees)"
+    // )
     // END STUB
 }
 

@@ -54,7 +54,9 @@ pub fn tex_range(spec: &Spec) -> TexRange {
     }
     // END SOLUTION
     // BEGIN STUB
-    // todo!("a4.t1: the texture-coordinate range of your region")
+    // todo!(
+    //     "a4.t1: 自分の領域のテクスチャ座標の範囲を返す / the texture-coordinate range of your region"
+    // )
     // END STUB
 }
 
@@ -114,7 +116,9 @@ pub fn tex_coords(spec: &Spec, i: u32, j: u32) -> [Vec2; 4] {
     [corner(a, b), corner(a, b + 1), corner(a + 1, b + 1), corner(a + 1, b)]
     // END SOLUTION
     // BEGIN STUB
-    // todo!("a4.t2: the texture coordinates of the corners of square (i, j)")
+    // todo!(
+    //     "a4.t2: 四角形 (i, j) の 4 頂点のテクスチャ座標を返す / the texture coordinates of the corners of square (i, j)"
+    // )
     // END STUB
 }
 
@@ -140,7 +144,7 @@ pub fn sampler() -> Sampler {
     Sampler { filter: Filter::Bilinear, wrap_u: Wrap::Clamp, wrap_v: Wrap::Clamp }
     // END SOLUTION
     // BEGIN STUB
-    // todo!("a4.t3: the filter and the wrap modes")
+    // todo!("a4.t3: フィルタと折り返しを返す / the filter and the wrap modes")
     // END STUB
 }
 

@@ -44,3 +44,30 @@ fn every_exercise_file_comes_from_a_solution_file() {
         }
     }
 }
+
+/// Every stub's `todo!()` says what its task asks in both languages (`a1.t1: 多面体の頂点… /
+/// list the vertices…`), so `check` in Japanese says more than `まだです: a1.t1` (a1's and a4's
+/// stubs were English only).
+#[test]
+fn every_stubs_todo_says_its_task_in_both_languages() {
+    use cg_core::lang::Lang;
+    use cg_harness::check::stub_message;
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let mut seen = 0;
+    for (path, text) in cg_harness::stubs::generate(&root.join("solutions")).unwrap() {
+        let lines: Vec<&str> = text.lines().map(str::trim).collect();
+        for (n, line) in lines.iter().enumerate().filter(|(_, l)| l.starts_with("todo!(")) {
+            // `todo!("…")`, or rustfmt's `todo!(` with the message on the next line.
+            let code = if *line == "todo!(" { lines[n + 1] } else { line };
+            let message = code.split('"').nth(1).unwrap_or_default();
+            let id = message.split(':').next().unwrap_or_default();
+            assert!(id.contains(".t"), "{}: todo!({message:?}) names no task", path.display());
+            for lang in [Lang::Ja, Lang::En] {
+                let said = stub_message(message, lang);
+                assert!(said.len() > id.len() + 3, "{}: {lang} reads {said:?}", path.display());
+            }
+            seen += 1;
+        }
+    }
+    assert!(seen >= 10, "{seen} todo!()s found");
+}

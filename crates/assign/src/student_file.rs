@@ -249,6 +249,31 @@ pub fn write_student_file(path: &Path, record: &StudentFile) -> Result<(), Text>
     cg_core::fs::write_atomic(path, text.as_bytes()).map_err(|e| Text::io_at(path, &e))
 }
 
+/// What recording `new` over the record `old` changes, said to the student: the number (or the
+/// table) it was and is now, and that the assignments, and so the checks, follow from it. `None`
+/// when nothing changes.
+#[must_use]
+pub fn record_change(old: &StudentFile, new: &StudentFile) -> Option<Text> {
+    let follows = Text::new(
+        "課題は学生番号と課題表の版から決まるので、課題もチェックの内容も変わります",
+        "your assignments follow from the number and the table, so they change, and so do the checks",
+    );
+    let (ja, en) = if old.student != new.student {
+        (
+            format!("学生番号を {} から {} に変更しました", old.student, new.student),
+            format!("the student number was {} and is now {}", old.student, new.student),
+        )
+    } else if old.table != new.table {
+        (
+            format!("課題表の版を {} から {} に変更しました", old.table, new.table),
+            format!("the table was {} and is now {}", old.table, new.table),
+        )
+    } else {
+        return None;
+    };
+    Some(Text::new(format!("{ja}。{}", follows.ja), format!("{en}: {}", follows.en)))
+}
+
 /// The student a command is about: `given` (a `--student` option) when there is one, with
 /// `table` or the newest table; else the record in `file` (`exercises/student.toml`), with
 /// `table` replacing its table when given.
@@ -285,6 +310,22 @@ mod tests {
         let d = std::env::temp_dir().join(format!("cg-assign-{name}-{}", std::process::id()));
         std::fs::create_dir_all(&d).unwrap();
         d
+    }
+
+    #[test]
+    fn a_changed_record_says_what_it_was_and_is_now() {
+        let record = |n: &str, table| StudentFile { student: n.parse().unwrap(), table };
+        let old = record("20261234", TableVersion::V1);
+        assert_eq!(record_change(&old, &old.clone()), None);
+        let note = record_change(&old, &record("20261235", TableVersion::V1)).unwrap();
+        assert!(note.en.starts_with("the student number was 20261234 and is now 20261235"));
+        assert!(note.en.contains("so do the checks"), "{}", note.en);
+        assert!(
+            note.ja.starts_with("学生番号を 20261234 から 20261235 に変更しました。"),
+            "{}",
+            note.ja
+        );
+        assert!(note.ja.contains("チェック"), "{}", note.ja);
     }
 
     #[test]

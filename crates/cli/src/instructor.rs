@@ -84,8 +84,28 @@ pub fn run(command: &Command, lang: Lang) -> Result<Ending, String> {
         Command::Autograder(_) => "autograder",
         Command::Similarity(_) => "similarity",
     };
+    let in_kit = std::env::current_dir()
+        .is_ok_and(|here| here.ancestors().any(|d| d.join("solutions/Cargo.toml").is_file()));
     let command = cg_harness::args::rerun_with_features("instructor");
-    Err(left_out(name, &command).get(lang).to_owned())
+    Err(said(name, in_kit, &command).get(lang).to_owned())
+}
+
+/// What the left-out command `name` says, `in_kit`: whether the current folder is in the kit's
+/// own repository (solutions/ at or above it). A handout is made from that repository only: in a
+/// copy without solutions/ (the students') the command that builds it could not help, so it says
+/// where it runs instead.
+#[cfg(not(feature = "instructor"))]
+fn said(name: &str, in_kit: bool, command: &str) -> Text {
+    if name == "handout" && !in_kit { handout_elsewhere() } else { left_out(name, command) }
+}
+
+/// What `handout` says in a copy without solutions/: it is run in the instructor's repository.
+#[cfg(not(feature = "instructor"))]
+pub fn handout_elsewhere() -> Text {
+    Text::new(
+        "`handout` は教員用のコマンドで、学生用のコピーを作るものです。キット本体のリポジトリ（solutions/ があるもの）で教員が実行します。このコピーには solutions/ がないので、ここでは使えません",
+        "`handout` is an instructors' command that makes the students' copy: the instructor runs it in the kit's own repository, the one with solutions/. This copy has no solutions/, so it cannot run here",
+    )
 }
 
 /// What an instructors' command says in a build without them: that it is one, where it runs,
@@ -142,6 +162,20 @@ mod tests {
         }
         assert!(text.en.contains("instructors' command"), "{}", text.en);
         assert!(text.ja.contains("教員用のコマンド"), "{}", text.ja);
+    }
+
+    /// `handout` in a copy without solutions/ (the students') says where it runs instead of a
+    /// build command that could not help; in the kit's own repository it gives the command.
+    #[test]
+    fn handout_outside_the_kit_says_where_it_runs() {
+        let command = "cargo run --release --features instructor -- handout /tmp/x";
+        let outside = said("handout", false, command);
+        assert_eq!(outside, handout_elsewhere());
+        assert_eq!(said("handout", true, command), left_out("handout", command));
+        assert_eq!(said("grade", false, command), left_out("grade", command));
+        for s in [&handout_elsewhere().ja, &handout_elsewhere().en] {
+            assert!(s.contains("solutions/") && !s.contains("--features"), "{s}");
+        }
     }
 }
 

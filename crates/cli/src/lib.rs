@@ -1,7 +1,8 @@
 //! `cg` — the kit's command line.
 //!
 //! A thin front: parse the arguments, load what they name, call the libraries, print. Every
-//! command prints Japanese or English (`--lang ja|en`, default from `CG_LANG` / `LANG`).
+//! command prints Japanese or English (`--lang ja|en`, default from `CG_LANG` / `LANG`, else the
+//! system's language: `cg_core::lang::Lang::from_env`).
 //!
 //! A library with a one-line binary (`src/main.rs`): the library's compilation can start as
 //! soon as its dependencies' interfaces are known, beside theirs, where a binary would wait for
@@ -21,6 +22,7 @@ mod doctor;
 mod grade;
 #[cfg(feature = "instructor")]
 mod gradescope;
+mod handin;
 #[cfg(feature = "instructor")]
 mod handout;
 mod inspect;
@@ -58,7 +60,7 @@ const COURSE_SAMPLE: &str = "assets/scenes/course-sample.toml";
                   コマンドを省略すると、授業のサンプルシーンを 3 種類のシェーディングで描画して out/ に保存します。"
 )]
 struct Cli {
-    /// Language of the output: ja or en (default: from CG_LANG or LANG) / 出力の言語
+    /// Language of the output: ja or en (default: from CG_LANG or LANG, else the system's language) / 出力の言語（省略時は CG_LANG・LANG、なければシステムの言語）
     #[arg(long, global = true, value_name = "ja|en")]
     lang: Option<Lang>,
     #[command(subcommand)]
@@ -83,9 +85,16 @@ enum Command {
     /// Your report: derive its tables and figures, fill the template, check your numbers / レポート: 表・図の導出、ひな形の作成、数値の確認
     #[command(subcommand)]
     Report(cg_report::app::Command),
-    /// Regenerate exercises/ from solutions/ (kit maintainers) / solutions/ から exercises/ を生成（管理者用）
+    /// Put what grading reads (the six files of exercises/ and your report) in one zip to upload / 採点が読むファイル（exercises/ の 6 ファイルとレポート）を提出用の zip に
+    Handin(handin::Args),
+    // The kit maintainers' commands: they work on the kit's own repository (solutions/, docs/).
+    // In a build without the instructors' commands (the students' copy, which has no solutions/)
+    // they are hidden from `cg --help`, as the instructors' commands are.
+    /// Regenerate exercises/ from solutions/ (kit maintainers) / solutions/ から exercises/ を生成（キット管理者用）
+    #[cfg_attr(not(feature = "instructor"), command(hide = true))]
     SyncStubs,
-    /// Measure speed against error and write docs/speed-vs-error.md with its plots / 速度と誤差を測り docs/speed-vs-error.md に書く
+    /// Measure speed against error and write docs/speed-vs-error.md with its plots (kit maintainers) / 速度と誤差を測り docs/speed-vs-error.md に書く（キット管理者用）
+    #[cfg_attr(not(feature = "instructor"), command(hide = true))]
     Bench(bench::Args),
     // The instructors' commands: handout, grade, grade-one, autograder, similarity (feature
     // `instructor`; in a build without it, such as the students' copy, hidden, and each says
@@ -132,7 +141,7 @@ pub fn main() -> ExitCode {
     let result = match cli.command {
         Some(Command::Inspect(args)) => ok(inspect::run(&args, lang)),
         Some(Command::Render(args)) => ok(render::run(&args, lang)),
-        Some(Command::Assignment(args)) => ok(assignments::assignment(&args, lang)),
+        Some(Command::Assignment(args)) => ok(assignment(&args, lang)),
         Some(Command::Check(args)) => assignments::check(&args, lang),
         Some(Command::View(args)) => ok(assignments::view(&args, lang)),
         Some(Command::Watch(args)) => ok(watch::run(&args, lang)),
@@ -142,6 +151,7 @@ pub fn main() -> ExitCode {
         Some(Command::SyncStubs) => ok(assignments::sync_stubs(lang)),
         Some(Command::Bench(args)) => ok(bench::run(&args, lang)),
         Some(Command::Instructor(command)) => instructor::run(&command, lang),
+        Some(Command::Handin(args)) => ok(handin::run(&args, lang)),
         Some(Command::Doctor(args)) => ok(doctor::run(&args, lang)),
         None => ok(render::main_job(lang)),
     };
@@ -149,8 +159,54 @@ pub fn main() -> ExitCode {
     cg_harness::exit::finish(result, lang)
 }
 
+/// `cg assignment`; when it recorded another student number (or table) over the one in
+/// exercises/student.toml (`--save`), says what it was and is now, and that the assignments
+/// and the checks change with it: a number saved over silently changed every check.
+fn assignment(args: &assignments::AssignmentArgs, lang: Lang) -> Result<(), String> {
+    let file = kit_path(None, "exercises").join("student.toml");
+    let before = cg_assign::read_student_file(&file).ok();
+    assignments::assignment(args, lang)?;
+    let after = cg_assign::read_student_file(&file).ok();
+    if let (Some(old), Some(new)) = (before, after)
+        && let Some(note) = cg_assign::record_change(&old, &new)
+    {
+        eprintln!("{}", note.get(lang));
+    }
+    Ok(())
+}
+
 /// Resolves a path the user gave; for the kit's own default files, falls back to the kit's root
 /// when the command runs from another directory.
 fn kit_path(given: Option<&Path>, default: &str) -> PathBuf {
     cg_harness::kit_path(given, default)
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::CommandFactory;
+
+    use super::*;
+
+    /// The kit maintainers' commands are listed, marked as theirs, where the instructors' are
+    /// built (the kit's own repository); in the students' copy (no solutions/) `cg --help`
+    /// leaves them out, as it leaves out the instructors' commands.
+    #[test]
+    fn the_maintainers_commands_are_listed_only_in_the_kits_own_build() {
+        let help = Cli::command().render_long_help().to_string();
+        for name in ["sync-stubs", "bench"] {
+            let line = help.lines().find(|l| l.starts_with(&format!("  {name} ")));
+            if cfg!(feature = "instructor") {
+                let line = line.unwrap_or_else(|| panic!("{name} not in:\n{help}"));
+                assert!(line.contains("(kit maintainers)"), "{line}");
+                assert!(line.contains("（キット管理者用）"), "{line}");
+            } else {
+                assert!(line.is_none(), "{name} in:\n{help}");
+            }
+        }
+        // Hidden, they still run (and say that they need the kit's own repository).
+        assert!(matches!(
+            Cli::try_parse_from(["cg", "sync-stubs"]).map(|c| c.command),
+            Ok(Some(Command::SyncStubs))
+        ));
+    }
 }

@@ -115,7 +115,13 @@ struct Rendered {
 /// `cg render`: loads, draws, writes, reports.
 pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     let path = crate::kit_path(args.scene.as_deref(), crate::COURSE_SAMPLE);
-    let scene = cg_scene::load_encoded(&path, args.encoding).map_err(|e| e.describe(lang))?;
+    let scene = cg_scene::load_encoded(&path, args.encoding).map_err(|e| {
+        let said = e.describe(lang);
+        match args.scene.as_deref().filter(|_| !path.exists()).and_then(assignment_hint) {
+            Some(hint) => format!("{said}\n{}", hint.get(lang)),
+            None => said,
+        }
+    })?;
     let size = size(&scene, args.width, args.height).map_err(|e| e.get(lang).to_owned())?;
     if args.renderer == Renderer::Raster
         && (args.max_depth != 5 || args.fresnel != FresnelArg::Exact || args.no_shadows)
@@ -221,6 +227,40 @@ pub const SHADING_STRIP: &str = "lecture11-shading.png";
 /// Each picture of the strip is this many pixels square.
 const STRIP_SIDE: u32 = 320;
 
+/// The last line of the main job: what to run next. Before a student number is recorded
+/// (`recorded`: exercises/student.toml reads), the guide's next step, the student's own
+/// assignments; then the tour of the scene.
+fn next_steps(recorded: bool) -> Text {
+    let tour = t(
+        "`cargo run --release -- inspect`（頂点・面・法線・変換行列）、`cargo run --release -- render --help`（ほかのシーンや設定）",
+        "`cargo run --release -- inspect` (vertices, faces, normals, matrices), `cargo run --release -- render --help` (other scenes and settings)",
+    );
+    if recorded {
+        Text::new(format!("次に: {}", tour.ja), format!("Next: {}", tour.en))
+    } else {
+        Text::new(
+            format!(
+                "次に、自分の課題を表示し、学生番号を記録します（12345678 を自分の 8 桁の学生番号に）: `cargo run --release -- assignment --student 12345678 --save`。そのあとは {}",
+                tour.ja
+            ),
+            format!(
+                "Next, print your assignments and record your student number (your 8 digits in place of 12345678): `cargo run --release -- assignment --student 12345678 --save`. After that: {}",
+                tour.en
+            ),
+        )
+    }
+}
+
+/// What `render` adds when the scene it was given is no file but an assignment's ID (`a1`): the
+/// command that shows an assignment. `None` for any other name.
+fn assignment_hint(given: &Path) -> Option<Text> {
+    let id = given.to_str().filter(|s| cg_assign::IDS.contains(s))?;
+    Some(Text::new(
+        format!("`{id}` は課題です。課題の結果を見るには: `cargo run --release -- view {id}`"),
+        format!("`{id}` is an assignment: to look at it, run `cargo run --release -- view {id}`"),
+    ))
+}
+
 /// The kit's main job: the course's sample scene drawn in every shading mode to PNG files, and
 /// the shiny sphere in the three modes side by side, labelled.
 pub fn main_job(lang: Lang) -> Result<(), String> {
@@ -284,13 +324,10 @@ pub fn main_job(lang: Lang) -> Result<(), String> {
         .get(lang),
         file.display()
     );
-    println!(
-        "{}",
-        t(
-            "次に: cargo run --release -- inspect（頂点・面・法線・変換行列）、… render --help（ほかのシーンや設定）",
-            "Next: cargo run --release -- inspect (vertices, faces, normals, matrices), … render --help (other scenes and settings)",
-        ).get(lang)
-    );
+    let recorded =
+        cg_assign::read_student_file(&crate::kit_path(None, "exercises").join("student.toml"))
+            .is_ok();
+    println!("{}", next_steps(recorded).get(lang));
     // With a display, the course's program itself: the scene in a window, the sample's mouse
     // mapping and keys (CG_NO_WINDOW=1 keeps to the PNGs).
     if cg_viewer::display_available() && std::env::var_os("CG_NO_WINDOW").is_none() {
@@ -628,6 +665,31 @@ mod tests {
         // Nothing to draw: an empty scene's picture is what it should be.
         scene.objects.clear();
         assert!(!nothing_drawn(&scene, &clear));
+    }
+
+    #[test]
+    fn the_first_run_points_to_the_assignment_until_a_number_is_recorded() {
+        let first = next_steps(false);
+        for s in [&first.ja, &first.en] {
+            assert!(s.contains("`cargo run --release -- assignment --student 12345678 --save`"));
+            assert!(s.contains("`cargo run --release -- inspect`"), "{s}");
+        }
+        let later = next_steps(true);
+        assert!(!later.en.contains("assignment") && !later.ja.contains("--save"), "{later:?}");
+        assert!(later.en.starts_with("Next: `cargo run --release -- inspect`"), "{}", later.en);
+    }
+
+    #[test]
+    fn an_assignments_id_given_as_the_scene_points_to_view() {
+        for id in ["a1", "a2", "a3", "a4", "s"] {
+            let hint = assignment_hint(Path::new(id)).unwrap();
+            let command = format!("`cargo run --release -- view {id}`");
+            assert!(hint.en.contains(&command) && hint.ja.contains(&command), "{hint:?}");
+            assert!(hint.en.starts_with(&format!("`{id}` is an assignment")), "{}", hint.en);
+        }
+        assert_eq!(assignment_hint(Path::new("a5")), None);
+        assert_eq!(assignment_hint(Path::new("scenes/a1")), None);
+        assert_eq!(assignment_hint(Path::new("a1.toml")), None);
     }
 
     #[test]

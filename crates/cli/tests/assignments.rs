@@ -47,6 +47,28 @@ fn the_assignment_follows_from_the_number_and_is_recorded_once() {
     }
 }
 
+/// `--save` over another saved number says what it was and is now, and that the assignment and
+/// the checks change with it (it changed them silently); the same number again says nothing.
+#[test]
+fn saving_another_number_says_what_it_was_and_is_now() {
+    let dir = scratch("renumbered");
+    let save =
+        |n: &str, lang: &str| cg(&dir, &["assignment", "--student", n, "--save", "--lang", lang]);
+    let first = save("20261234", "en");
+    assert!(first.status.success(), "{}", String::from_utf8_lossy(&first.stderr));
+    assert!(!String::from_utf8_lossy(&first.stderr).contains("was"));
+    let same = save("20261234", "en");
+    assert!(!String::from_utf8_lossy(&same.stderr).contains("is now"));
+    let other = save("20261235", "en");
+    let err = String::from_utf8_lossy(&other.stderr);
+    assert!(other.status.success(), "{err}");
+    assert!(err.contains("the student number was 20261234 and is now 20261235"), "{err}");
+    assert!(err.contains("checks"), "{err}");
+    let back = save("20261234", "ja");
+    let err = String::from_utf8_lossy(&back.stderr);
+    assert!(err.contains("学生番号を 20261235 から 20261234 に変更しました"), "{err}");
+}
+
 #[test]
 fn a_bad_or_missing_number_says_what_to_do() {
     let dir = scratch("missing");

@@ -189,6 +189,23 @@ fn the_main_job_draws_the_course_sample_in_every_shading_mode() {
     }
 }
 
+/// `render a1`: an assignment's ID where a scene file goes is said to be one, with the command
+/// that shows it (it was "a1: cannot read the file" alone).
+#[test]
+fn an_assignments_id_as_the_scene_points_to_view() {
+    let dir = scratch("assignment-id");
+    for (lang, said) in [("en", "`a1` is an assignment"), ("ja", "`a1` は課題です")] {
+        let o = cg_in(&dir, &["render", "a1", "--lang", lang]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains(said) && err.contains("`cargo run --release -- view a1`"), "{err}");
+    }
+    // A real file named like an ID is drawn as any scene is.
+    std::fs::copy(root().join("assets/scenes/sphere-phong.toml"), dir.join("s")).unwrap();
+    let o = cg_in(&dir, &["render", "s", "--width", "8", "-o", "s.png", "--lang", "en"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
 #[test]
 fn mistakes_are_clear_errors() {
     let dir = scratch("errors");

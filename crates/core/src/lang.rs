@@ -18,16 +18,38 @@ pub enum Lang {
 }
 
 impl Lang {
-    /// The language from the environment (`CG_LANG`, then `LC_ALL`, `LC_MESSAGES`, `LANG`):
-    /// Japanese when the first one set starts with `ja`, English otherwise.
+    /// The environment variables that choose the language, first one set wins.
+    pub const VARIABLES: [&'static str; 4] = ["CG_LANG", "LC_ALL", "LC_MESSAGES", "LANG"];
+
+    /// The language from the environment: the first of [`Lang::VARIABLES`] (`CG_LANG`, then
+    /// `LC_ALL`, `LC_MESSAGES`, `LANG`) that is set and not empty; when none is, as on Windows,
+    /// whose terminals set none of them, the user's language as the system keeps it (the
+    /// Windows display language, the macOS preferred language, the `LANGUAGE` list on Linux).
+    /// Japanese when it starts with `ja` (`ja_JP.UTF-8`, `ja-JP`), English otherwise
+    /// ([`Lang::choose`]).
     #[must_use]
     pub fn from_env() -> Lang {
-        ["CG_LANG", "LC_ALL", "LC_MESSAGES", "LANG"]
-            .iter()
-            .find_map(|k| std::env::var(k).ok().filter(|v| !v.is_empty()))
-            .map_or(Lang::En, |v| {
-                if v.to_ascii_lowercase().starts_with("ja") { Lang::Ja } else { Lang::En }
-            })
+        let values = Lang::VARIABLES.map(|k| std::env::var(k).ok());
+        Lang::choose(&values, sys_locale::get_locale)
+    }
+
+    /// [`Lang::from_env`] without the environment: `values`, the variables' values in order
+    /// (`None` for one not set); `system`, the system's locale (`ja-JP`), asked only when no
+    /// value is set and not empty. A value set to anything that does not start with `ja`
+    /// (`C`, `C.UTF-8`, `en_US.UTF-8`) chooses English, as it always did.
+    #[must_use]
+    pub fn choose(values: &[Option<String>], system: impl FnOnce() -> Option<String>) -> Lang {
+        let japanese = |v: &str| v.trim().to_ascii_lowercase().starts_with("ja");
+        match values.iter().flatten().find(|v| !v.is_empty()) {
+            Some(v) => {
+                if japanese(v) {
+                    Lang::Ja
+                } else {
+                    Lang::En
+                }
+            }
+            None => system().filter(|l| japanese(l)).map_or(Lang::En, |_| Lang::Ja),
+        }
     }
 }
 
@@ -165,6 +187,38 @@ pub fn t(ja: &str, en: &str) -> Text {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_variables_come_first_and_the_system_only_when_none_is_set() {
+        let set = |v: [Option<&str>; 4]| v.map(|v| v.map(str::to_owned));
+        let asked = |locale: &'static str| move || Some(locale.to_owned());
+        let never =
+            || -> Option<String> { panic!("the system is asked only when no variable is set") };
+        // Windows' PowerShell and cmd set none: the system's locale decides.
+        assert_eq!(Lang::choose(&set([None; 4]), asked("ja-JP")), Lang::Ja);
+        assert_eq!(Lang::choose(&set([None; 4]), asked("en-US")), Lang::En);
+        assert_eq!(Lang::choose(&set([None; 4]), || None), Lang::En);
+        // Empty counts as not set.
+        assert_eq!(Lang::choose(&set([Some(""), None, None, Some("")]), asked("ja")), Lang::Ja);
+        // The first variable set wins, in order, over the system.
+        assert_eq!(
+            Lang::choose(&set([Some("ja"), None, None, Some("en_US.UTF-8")]), never),
+            Lang::Ja
+        );
+        assert_eq!(
+            Lang::choose(&set([Some("en"), None, None, Some("ja_JP.UTF-8")]), never),
+            Lang::En
+        );
+        assert_eq!(Lang::choose(&set([None, None, None, Some("ja_JP.UTF-8")]), never), Lang::Ja);
+        assert_eq!(
+            Lang::choose(&set([None, Some("C"), None, Some("ja_JP.UTF-8")]), never),
+            Lang::En
+        );
+        // `LANG=C` (or C.UTF-8, POSIX) is a choice, as before: English, whatever the system says.
+        for c in ["C", "C.UTF-8", "POSIX"] {
+            assert_eq!(Lang::choose(&set([None, None, None, Some(c)]), never), Lang::En, "{c}");
+        }
+    }
 
     #[test]
     fn parses_both_languages_and_rejects_others() {

@@ -39,7 +39,7 @@ fn mesh_errors_read_in_japanese() {
     );
     assert_eq!(
         cases[0].message(Lang::Ja),
-        "面 F6 の 2 番目 (0 から数えて) の頂点番号 V9 は存在しません（頂点は V0–V4 の 5 個です）"
+        "面 F6 の頂点番号 V9（0 から数えて 2 番目）は存在しません（頂点は V0–V4 の 5 個です）"
     );
     assert!(cases[3].message(Lang::Ja).contains("頂点 V0 の座標 (NaN, 0, 0)"));
 }

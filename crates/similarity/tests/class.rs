@@ -180,8 +180,11 @@ fn vertices(student: &str) -> Vec<[f32; 3]> {
 /// The a1 stub with `vertices`' `todo!` replaced by `body`.
 fn a1_with_vertices(body: &str) -> String {
     let s = stub("a1");
-    let at = s.find("todo!(\"a1.t1").expect("the a1 stub's vertices todo");
-    let end = at + s[at..].find('\n').unwrap();
+    // `todo!("a1.t1: …")`, on one line or, as rustfmt writes a long one, on three.
+    let message = s.find("\"a1.t1").expect("the a1 stub's vertices todo");
+    let at = s[..message].rfind("todo!(").expect("the a1 stub's vertices todo");
+    let closed = message + 1 + s[message + 1..].find('"').unwrap();
+    let end = closed + s[closed..].find(')').unwrap() + 1;
     format!("{}{body}{}", &s[..at], &s[end..])
 }
 

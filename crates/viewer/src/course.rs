@@ -6,6 +6,7 @@
 use cg_core::camera::{MouseButton, MouseState, OrbitCamera};
 use cg_core::glam::Vec3;
 use cg_core::image::Image;
+use cg_core::lang::{Text, t};
 use cg_core::light::{LightModel, Specular};
 use cg_core::product::{Axis, Factor, Param};
 use cg_core::scene::{Camera, Scene, Shading};
@@ -23,21 +24,39 @@ pub enum LightChoice {
     OpenGl,
 }
 
-/// The keys of the course app, for the help text: `(key, what it does)`.
-pub const KEYS: &[(&str, &str, &str)] = &[
-    ("right-drag", "上下で仰角、左右で方位角", "pitch (up/down) and yaw (left/right)"),
-    ("left-drag", "上下で距離", "distance (up/down)"),
-    ("f / g / p", "フラット / グロー / フォンシェーディング", "flat / Gouraud / Phong shading"),
-    ("l", "講義の光のモデル / OpenGL の光のモデル", "lecture / OpenGL light model"),
-    (
-        "r",
-        "次のレンダラ（CPU ラスタライザ / GPU、アダプタがあるとき）",
-        "next renderer (CPU rasterizer / GPU, when an adapter exists)",
-    ),
-    ("space", "アニメーションの一時停止 / 再開", "pause / resume the animation"),
-    ("s", "スクリーンショットを保存（PNG）", "save a screenshot (PNG)"),
-    ("q / Esc", "終了", "quit"),
-];
+/// The keys and drags of the course app, for the help text: `(key, what it does)`, both in
+/// Japanese and English. `gpu`: whether this build has the GPU renderer ([`crate::GPU_BUILT`]);
+/// without it there is no other renderer for `r` to switch to, so `r` is not listed.
+#[must_use]
+pub fn controls(gpu: bool) -> Vec<(Text, Text)> {
+    let mut rows = vec![
+        (
+            t("右ドラッグ", "right-drag"),
+            t("上下で仰角、左右で方位角", "pitch (up/down) and yaw (left/right)"),
+        ),
+        (t("左ドラッグ", "left-drag"), t("上下で距離", "distance (up/down)")),
+        (
+            t("f / g / p", "f / g / p"),
+            t("フラット / グロー / フォンシェーディング", "flat / Gouraud / Phong shading"),
+        ),
+        (t("l", "l"), t("講義の光のモデル / OpenGL の光のモデル", "lecture / OpenGL light model")),
+    ];
+    if gpu {
+        rows.push((
+            t("r", "r"),
+            t(
+                "次のレンダラ（CPU ラスタライザ / GPU、アダプタがあるとき）",
+                "next renderer (CPU rasterizer / GPU, when an adapter exists)",
+            ),
+        ));
+    }
+    rows.extend([
+        (t("space", "space"), t("アニメーションの一時停止 / 再開", "pause / resume the animation")),
+        (t("s", "s"), t("スクリーンショットを保存（PNG）", "save a screenshot (PNG)")),
+        (t("q / Esc", "q / Esc"), t("終了", "quit")),
+    ]);
+    rows
+}
 
 /// The course's sample program as an [`App`]: the scene, the orbit camera, the mouse state, the
 /// shading mode, the light model and the animation angle.
@@ -397,9 +416,24 @@ mod tests {
         let japanese = |s: &str| {
             s.chars().any(|c| matches!(c, '\u{3040}'..='\u{30ff}' | '\u{4e00}'..='\u{9fff}'))
         };
-        for (key, ja, en) in KEYS {
-            assert!(japanese(ja), "{key}: {ja}");
-            assert!(!en.is_empty() && !japanese(en), "{key}: {en}");
+        for gpu in [true, false] {
+            for (key, what) in controls(gpu) {
+                assert!(japanese(&what.ja), "{key}: {}", what.ja);
+                assert!(!what.en.is_empty() && !japanese(&what.en), "{key}: {}", what.en);
+                // The drags are named in the reader's language, the keys are keys.
+                assert!(!key.en.contains(|c: char| japanese(&c.to_string())), "{}", key.en);
+                assert!(!key.ja.contains("drag"), "{}", key.ja);
+            }
         }
+    }
+
+    #[test]
+    fn the_renderer_key_is_listed_only_where_there_is_a_second_renderer() {
+        let keys = |gpu: bool| controls(gpu).into_iter().map(|(k, _)| k.en).collect::<Vec<_>>();
+        assert!(keys(true).contains(&"r".to_owned()));
+        assert!(!keys(false).contains(&"r".to_owned()), "{:?}", keys(false));
+        assert!(
+            controls(false).iter().all(|(_, w)| !w.en.contains("GPU") && !w.ja.contains("GPU"))
+        );
     }
 }

@@ -10,7 +10,7 @@
 //!
 //! The default app ([`CourseApp`]) is the course's sample scene with the sample's mouse mapping
 //! (`cg_core::camera::OrbitCamera`): right-drag changes the pitch (dy) and the yaw (dx),
-//! left-drag the distance; keys: see [`course::KEYS`]. The title shows the mode, the renderer and
+//! left-drag the distance; keys: see [`course::controls`]. The title shows the mode, the renderer and
 //! the frame time.
 //!
 //! Without a display (no `DISPLAY`, or the window cannot be opened) [`run`] renders the view to a
@@ -228,10 +228,30 @@ pub fn run(options: &ViewerOptions) -> Result<(), ViewerError> {
 
 /// Prints the keys and drags the viewer understands.
 pub fn print_keys(lang: Lang) {
-    println!("{}", t("操作:", "controls:").get(lang));
-    for (key, ja, en) in course::KEYS {
-        println!("  {key:<12} {}", t(ja, en).get(lang));
+    print!("{}", keys_text(lang, GPU_BUILT));
+}
+
+/// [`print_keys`]' lines: the controls of [`course::controls`] in `lang`, their names padded
+/// to one column (a full-width character takes two).
+#[must_use]
+pub fn keys_text(lang: Lang, gpu: bool) -> String {
+    let mut out = format!("{}\n", t("操作:", "controls:").get(lang));
+    for (key, what) in course::controls(gpu) {
+        let key = key.get(lang);
+        let width: usize =
+            key.chars()
+                .map(|c| {
+                    if matches!(c, '\u{3000}'..='\u{9fff}' | '\u{ff00}'..='\u{ffef}') {
+                        2
+                    } else {
+                        1
+                    }
+                })
+                .sum();
+        let pad = " ".repeat(12usize.saturating_sub(width));
+        out.push_str(&format!("  {key}{pad} {}\n", what.get(lang)));
     }
+    out
 }
 
 /// Runs `app` (GLUT's `glutMainLoop`) with `backends` (the first draws; `r` switches): in a
@@ -482,6 +502,23 @@ mod tests {
         assert!(w.message(Lang::Ja).contains("lost"));
         // A scene error already comes in the chosen language.
         assert_eq!(ViewerError::Scene("x".into()).message(Lang::Ja), "x");
+    }
+
+    #[test]
+    fn the_controls_are_listed_in_the_readers_language_in_one_column() {
+        let ja = keys_text(Lang::Ja, false);
+        assert!(ja.starts_with("操作:\n"), "{ja}");
+        assert!(
+            ja.contains("  右ドラッグ   上下で仰角") && ja.contains("  左ドラッグ   上下で距離"),
+            "{ja}"
+        );
+        assert!(!ja.contains("drag") && !ja.contains("レンダラ"), "{ja}");
+        assert!(ja.contains("  q / Esc      終了"), "{ja}");
+        let en = keys_text(Lang::En, true);
+        assert!(
+            en.contains("  right-drag   pitch") && en.contains("  r            next renderer"),
+            "{en}"
+        );
     }
 
     /// A backend that fills the frame with one colour.

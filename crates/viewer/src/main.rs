@@ -46,7 +46,7 @@ struct Args {
     /// Threads for the CPU rasterizer (default: all cores)
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
     threads: Option<u16>,
-    /// Language of messages: ja or en (default: from CG_LANG or LANG) / メッセージの言語
+    /// Language of messages: ja or en (default: from CG_LANG or LANG, else the system's language) / メッセージの言語（省略時は CG_LANG・LANG、なければシステムの言語）
     #[arg(long, value_name = "ja|en")]
     lang: Option<Lang>,
 }

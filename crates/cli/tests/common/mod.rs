@@ -20,6 +20,8 @@ pub fn cg(dir: &Path, args: &[&str]) -> Output {
         .env_remove("LANG")
         .env_remove("LC_ALL")
         .env_remove("LC_MESSAGES")
+        // The system's language, where no variable names one (sys-locale reads LANGUAGE on Linux).
+        .env_remove("LANGUAGE")
         // Never a window from the tests (a developer's desktop has a display).
         .env_remove("DISPLAY")
         .output()

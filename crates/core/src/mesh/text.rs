@@ -29,7 +29,7 @@ impl MeshError {
                 };
                 Text::new(
                     format!(
-                        "面 F{face} の {corner} 番目 (0 から数えて) の頂点番号 V{index} は存在しません（{}）",
+                        "面 F{face} の頂点番号 V{index}（0 から数えて {corner} 番目）は存在しません（{}）",
                         range.ja
                     ),
                     format!("face F{face} corner {corner} refers to V{index}, but {}", range.en),

@@ -1,0 +1,102 @@
+//! `cg handin`: the zip holds exactly what grading reads — the six files and the report grading
+//! would choose — reads back with the `zip` crate and (where the instructors' commands are
+//! built) as `cg grade` reads a submission; what grading would refuse, or no student number,
+//! stops it with a message and no zip.
+
+mod common;
+
+use std::path::Path;
+use std::time::{Duration, SystemTime};
+
+use common::{cg, root, scratch};
+
+const MODULES: [&str; 5] = ["a1", "a2", "a3", "a4", "s"];
+
+/// A student's folder: the kit's stubs as exercises/src, a student number, and both reports,
+/// report.tex changed last.
+fn student(dir: &Path) {
+    std::fs::create_dir_all(dir.join("exercises/src")).unwrap();
+    for m in MODULES {
+        let from = root().join(format!("exercises/src/{m}.rs"));
+        std::fs::copy(from, dir.join(format!("exercises/src/{m}.rs"))).unwrap();
+    }
+    std::fs::write(dir.join("exercises/student.toml"), "student = \"20261234\"\n").unwrap();
+    std::fs::create_dir_all(dir.join("report")).unwrap();
+    std::fs::write(dir.join("report/report.md"), "# レポート\n\nV0 (0.0, 1.0, 0.0)\n").unwrap();
+    std::fs::write(dir.join("report/report.tex"), "\\section{レポート}\n").unwrap();
+    let earlier = SystemTime::now() - Duration::from_secs(3600);
+    let md = std::fs::File::options().write(true).open(dir.join("report/report.md")).unwrap();
+    md.set_modified(earlier).unwrap();
+}
+
+fn names(zip: &Path) -> Vec<String> {
+    let mut archive = zip::ZipArchive::new(std::fs::File::open(zip).unwrap()).unwrap();
+    (0..archive.len()).map(|k| archive.by_index(k).unwrap().name().unwrap().into_owned()).collect()
+}
+
+#[test]
+fn the_zip_holds_what_grading_reads_and_reads_back() {
+    let dir = scratch("handin", "reads_back");
+    student(&dir);
+    let out = cg(&dir, &["handin"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}\n{}", String::from_utf8_lossy(&out.stderr));
+    let zip = dir.join("handin/20261234.zip");
+    assert!(stdout.contains("wrote handin/20261234.zip ("), "{stdout}");
+    assert!(stdout.contains("report/report.md is left out"), "{stdout}");
+    assert!(stdout.contains("`cargo run --release -- check`"), "{stdout}");
+    let mut expected: Vec<String> = vec!["exercises/student.toml".to_owned()];
+    expected.extend(MODULES.map(|m| format!("exercises/src/{m}.rs")));
+    expected.push("report/report.tex".to_owned());
+    assert_eq!(names(&zip), expected);
+    // Every file's bytes come back as they are.
+    let mut archive = zip::ZipArchive::new(std::fs::File::open(&zip).unwrap()).unwrap();
+    for name in &expected {
+        let mut bytes = Vec::new();
+        std::io::Read::read_to_end(&mut archive.by_name(name).unwrap(), &mut bytes).unwrap();
+        assert_eq!(bytes, std::fs::read(dir.join(name)).unwrap(), "{name}");
+    }
+    // As `cg grade` reads a submission: all six files.
+    #[cfg(feature = "instructor")]
+    {
+        let files = cg_grade::submission::read(&zip).expect("read as a submission");
+        assert_eq!(files.modules.len(), 5);
+        assert_eq!(files.student_toml.as_deref(), Some(&b"student = \"20261234\"\n"[..]));
+    }
+
+    // In Japanese, to a file of one's choosing; report.md alone is taken.
+    std::fs::remove_file(dir.join("report/report.tex")).unwrap();
+    let out = cg(&dir, &["--lang", "ja", "handin", "--out", "up.zip"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}");
+    assert!(stdout.starts_with("up.zip を書きました（"), "{stdout}");
+    assert!(stdout.contains("次に: この zip を Moodle に上げます"), "{stdout}");
+    assert_eq!(names(&dir.join("up.zip")).last().map(String::as_str), Some("report/report.md"));
+}
+
+#[test]
+fn what_grading_refuses_or_no_student_number_stops_it() {
+    let dir = scratch("handin", "refused");
+    student(&dir);
+    // A file that reads outside itself: grading would score the whole submission 0.
+    let a1 = dir.join("exercises/src/a1.rs");
+    let text = std::fs::read_to_string(&a1).unwrap();
+    std::fs::write(&a1, format!("{text}\nconst X: &str = include_str!(\"../../secret.txt\");\n"))
+        .unwrap();
+    let out = cg(&dir, &["handin"]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("exercises/src/a1.rs:") && stderr.contains("include_str!"), "{stderr}");
+    assert!(!dir.join("handin").exists());
+    // No student number recorded: says how to record it.
+    std::fs::write(&a1, text).unwrap();
+    std::fs::remove_file(dir.join("exercises/student.toml")).unwrap();
+    let out = cg(&dir, &["handin"]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("`cargo run --release -- assignment --student <student number> --save`"),
+        "{stderr}"
+    );
+    assert!(!dir.join("handin").exists());
+}
