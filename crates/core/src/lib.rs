@@ -70,6 +70,7 @@ pub mod stack;
 pub mod student;
 pub mod text;
 pub mod texture;
+pub mod time;
 pub mod toml_syntax;
 pub mod transform;
 

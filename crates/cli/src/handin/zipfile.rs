@@ -23,26 +23,16 @@ pub struct Entry {
 /// MS-DOS time and date of `seconds` since 1970 (UTC), as a zip stores them: 2-second steps,
 /// years 1980–2107 (clamped).
 fn dos_time(seconds: i64) -> (u16, u16) {
-    let days = seconds.div_euclid(86_400);
-    let secs = seconds.rem_euclid(86_400);
-    // Howard Hinnant's days-to-civil.
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = doy - (153 * mp + 2) / 5 + 1;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 };
-    let year = yoe + era * 400 + i64::from(month <= 2);
-    let (year, month, day, secs) = if year < 1980 {
-        (1980, 1, 1, 0)
+    let (year, month, day, hour, minute, second) =
+        cg_core::time::civil(u64::try_from(seconds).unwrap_or(0));
+    let (year, month, day, hour, minute, second) = if year < 1980 {
+        (1980, 1, 1, 0, 0, 0)
     } else if year > 2107 {
-        (2107, 12, 31, 86_398)
+        (2107, 12, 31, 23, 59, 58)
     } else {
-        (year, month, day, secs)
+        (year, month, day, hour, minute, second)
     };
-    let time = ((secs / 3600) << 11) | ((secs % 3600 / 60) << 5) | ((secs % 60) / 2);
+    let time = (hour << 11) | (minute << 5) | (second / 2);
     let date = ((year - 1980) << 9) | (month << 5) | day;
     (u16::try_from(time).unwrap_or(0), u16::try_from(date).unwrap_or(0))
 }

@@ -588,7 +588,7 @@ fn an_upload_without_the_six_files_is_refused_naming_what_it_holds() {
     let mut many: Vec<(String, Vec<u8>)> =
         (1..=8).map(|k| file(&format!("photo{k}.jpg"))).collect();
     many.push(file(".DS_Store"));
-    let why = refused("many", many);
+    let why = refused("many-names", many);
     assert!(
         why.en.contains(
             "; it holds photo1.jpg, photo2.jpg, photo3.jpg, photo4.jpg, photo5.jpg and 3 more: "

@@ -20,6 +20,7 @@ use std::io::Write as _;
 use std::path::Path;
 
 use cg_core::lang::{Lang, Text, t};
+use cg_core::time::civil;
 use serde_json::Value;
 
 use super::Name;
@@ -93,23 +94,6 @@ pub fn identifier(participant: &str, lang: Lang) -> String {
 #[must_use]
 pub fn feedback_file(lang: Lang) -> String {
     format!("feedback-{lang}.md")
-}
-
-/// A Unix time's UTC year, month, day, hour, minute and second (Howard Hinnant's
-/// `civil_from_days`).
-fn civil(unix: u64) -> (i64, i64, i64, u64, u64, u64) {
-    let days = i64::try_from(unix / 86_400).unwrap_or(0);
-    let secs = unix % 86_400;
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z.rem_euclid(146_097);
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = doy - (153 * mp + 2) / 5 + 1;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 };
-    let year = yoe + era * 400 + i64::from(month <= 2);
-    (year, month, day, secs / 3600, secs / 60 % 60, secs % 60)
 }
 
 /// A time as the worksheet writes it: `2026-05-20 05:30:00 UTC` (read by PHP's `strtotime`,
