@@ -14,7 +14,7 @@
 
 use cg_core::lang::Lang;
 #[cfg(not(feature = "instructor"))]
-use cg_core::lang::Text;
+use cg_core::lang::{Text, t};
 use cg_harness::exit::Ending;
 
 /// The instructors' subcommands, as `cg`'s own ([`crate::Command`] flattens them in).
@@ -91,20 +91,32 @@ pub fn run(command: &Command, lang: Lang) -> Result<Ending, String> {
 }
 
 /// What the left-out command `name` says, `in_kit`: whether the current folder is in the kit's
-/// own repository (solutions/ at or above it). A handout is made from that repository only: in a
-/// copy without solutions/ (the students') the command that builds it could not help, so it says
-/// where it runs instead.
+/// own repository (solutions/ at or above it). The instructors' commands work on that repository
+/// only: in a copy without solutions/ (the students') the command that builds them could not
+/// help, so it says where they run instead.
 #[cfg(not(feature = "instructor"))]
 fn said(name: &str, in_kit: bool, command: &str) -> Text {
-    if name == "handout" && !in_kit { handout_elsewhere() } else { left_out(name, command) }
+    if in_kit { left_out(name, command) } else { elsewhere(name) }
 }
 
-/// What `handout` says in a copy without solutions/: it is run in the instructor's repository.
+/// What an instructors' command says in a copy without solutions/: it is run in the kit's own
+/// repository.
 #[cfg(not(feature = "instructor"))]
-pub fn handout_elsewhere() -> Text {
+pub fn elsewhere(name: &str) -> Text {
+    let what = if name == "handout" {
+        t("学生用のコピーを作る", "that makes the students' copy")
+    } else {
+        t("採点などの", "for grading and the like")
+    };
     Text::new(
-        "`handout` は教員用のコマンドで、学生用のコピーを作るものです。キット本体のリポジトリ（solutions/ があるもの）で教員が実行します。このコピーには solutions/ がないので、ここでは使えません",
-        "`handout` is an instructors' command that makes the students' copy: the instructor runs it in the kit's own repository, the one with solutions/. This copy has no solutions/, so it cannot run here",
+        format!(
+            "`{name}` は{}教員用のコマンドで、キット本体のリポジトリ（solutions/ があるもの）で教員が実行します。このコピーには solutions/ がないので、ここでは使えません",
+            what.ja
+        ),
+        format!(
+            "`{name}` is an instructors' command {}: the instructor runs it in the kit's own repository, the one with solutions/. This copy has no solutions/, so it cannot run here",
+            what.en
+        ),
     )
 }
 
@@ -164,16 +176,17 @@ mod tests {
         assert!(text.ja.contains("教員用のコマンド"), "{}", text.ja);
     }
 
-    /// `handout` in a copy without solutions/ (the students') says where it runs instead of a
-    /// build command that could not help; in the kit's own repository it gives the command.
+    /// An instructors' command in a copy without solutions/ (the students') says where it runs
+    /// instead of a build command that could not help; in the kit's own repository it gives the
+    /// command.
     #[test]
-    fn handout_outside_the_kit_says_where_it_runs() {
+    fn an_instructors_command_outside_the_kit_says_where_it_runs() {
         let command = "cargo run --release --features instructor -- handout /tmp/x";
-        let outside = said("handout", false, command);
-        assert_eq!(outside, handout_elsewhere());
+        assert_eq!(said("handout", false, command), elsewhere("handout"));
         assert_eq!(said("handout", true, command), left_out("handout", command));
-        assert_eq!(said("grade", false, command), left_out("grade", command));
-        for s in [&handout_elsewhere().ja, &handout_elsewhere().en] {
+        assert_eq!(said("grade", false, command), elsewhere("grade"));
+        assert!(elsewhere("handout").en.contains("makes the students' copy"));
+        for s in [&elsewhere("grade").ja, &elsewhere("grade").en] {
             assert!(s.contains("solutions/") && !s.contains("--features"), "{s}");
         }
     }
