@@ -54,8 +54,13 @@ pub fn assignment(args: &AssignmentArgs, lang: Lang) -> Result<(), String> {
     let record = student(args.student.as_deref(), args.table, lang)?;
     if args.save {
         let path = exercises_dir().join("student.toml");
+        let before = cg_assign::read_student_file(&path).ok();
         write_student_file(&path, &record).map_err(|e| e.get(lang).to_owned())?;
         eprintln!("{} {}", t("記録しました:", "recorded in").get(lang), path.display());
+        // Another number saved over the one recorded changes every check: said, not silent.
+        if let Some(note) = before.and_then(|old| cg_assign::record_change(&old, &record)) {
+            eprintln!("{}", note.get(lang));
+        }
     }
     let a = Variants::for_student(&record.student, record.table);
     if args.json {

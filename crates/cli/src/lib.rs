@@ -141,7 +141,7 @@ pub fn main() -> ExitCode {
     let result = match cli.command {
         Some(Command::Inspect(args)) => ok(inspect::run(&args, lang)),
         Some(Command::Render(args)) => ok(render::run(&args, lang)),
-        Some(Command::Assignment(args)) => ok(assignment(&args, lang)),
+        Some(Command::Assignment(args)) => ok(assignments::assignment(&args, lang)),
         Some(Command::Check(args)) => assignments::check(&args, lang),
         Some(Command::View(args)) => ok(assignments::view(&args, lang)),
         Some(Command::Watch(args)) => ok(watch::run(&args, lang)),
@@ -157,22 +157,6 @@ pub fn main() -> ExitCode {
     };
     // 0 ok, 1 mistakes found, 2 bad input or usage, 3 the student's code ran out of time.
     cg_harness::exit::finish(result, lang)
-}
-
-/// `cg assignment`; when it recorded another student number (or table) over the one in
-/// exercises/student.toml (`--save`), says what it was and is now, and that the assignments
-/// and the checks change with it: a number saved over silently changed every check.
-fn assignment(args: &assignments::AssignmentArgs, lang: Lang) -> Result<(), String> {
-    let file = kit_path(None, "exercises").join("student.toml");
-    let before = cg_assign::read_student_file(&file).ok();
-    assignments::assignment(args, lang)?;
-    let after = cg_assign::read_student_file(&file).ok();
-    if let (Some(old), Some(new)) = (before, after)
-        && let Some(note) = cg_assign::record_change(&old, &new)
-    {
-        eprintln!("{}", note.get(lang));
-    }
-    Ok(())
 }
 
 /// Resolves a path the user gave; for the kit's own default files, falls back to the kit's root
