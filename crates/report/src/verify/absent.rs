@@ -128,6 +128,14 @@ fn products<'a>(tags: &[&'a ParsedMatrix]) -> (Vec<&'a str>, bool) {
     (out, factors)
 }
 
+/// How a note names `tags`: their products in backticks (`` `a2.view.start`, `a2.view.pan` ``),
+/// how many products, whether a factor was among the tags, and their lines.
+fn said(tags: &[&ParsedMatrix]) -> (String, usize, bool, Text) {
+    let (names, factors) = products(tags);
+    let list = names.iter().map(|p| format!("`{p}`")).collect::<Vec<_>>().join(", ");
+    (list, names.len(), factors, lines(&tags.iter().map(|m| m.line).collect::<Vec<_>>()))
+}
+
 /// The tags written past a product's factors (`a3.object3.t0.factors.4` where the product has
 /// three): one note per product.
 pub(super) fn extra_factors(c: &mut Checker, extra: &[&ParsedMatrix], known: &[Known]) {
@@ -169,10 +177,8 @@ pub(super) fn unknown_tags(
             underived.iter().map(|m| m.id.split('.').next().unwrap_or_default()).collect();
         parts.sort_unstable();
         parts.dedup();
-        let (names, factors) = products(&underived);
-        let list = names.iter().map(|p| format!("`{p}`")).collect::<Vec<_>>().join(", ");
-        let at = lines(&underived.iter().map(|m| m.line).collect::<Vec<_>>());
-        let (ja_factors, en_factors) = match (factors, names.len()) {
+        let (list, names, factors, at) = said(&underived);
+        let (ja_factors, en_factors) = match (factors, names) {
             (false, _) => ("", ""),
             (true, 1) => (" とその因子", " and its factors"),
             (true, _) => (" とその因子", " and their factors"),
@@ -198,10 +204,8 @@ pub(super) fn unknown_tags(
     }
     let ids: Vec<&str> = known.iter().map(|k| k.id.as_str()).collect();
     let known_list = if ids.is_empty() { "—".to_owned() } else { ids.join(", ") };
-    let (names, factors) = products(&unknown);
-    let tags = names.iter().map(|p| format!("`{p}`")).collect::<Vec<_>>().join(", ");
-    let at = lines(&unknown.iter().map(|m| m.line).collect::<Vec<_>>());
-    let (ja_factors, en_factors) = match (factors, names.len()) {
+    let (tags, names, factors, at) = said(&unknown);
+    let (ja_factors, en_factors) = match (factors, names) {
         (false, _) => ("", ""),
         (true, 1) => ("（とその因子）", " (or its factors)"),
         (true, _) => ("（とその因子）", " (or their factors)"),
