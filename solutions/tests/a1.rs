@@ -265,6 +265,11 @@ fn v_duplicated(s: &Spec) -> Vec<Vec3> {
     v.push(v[first as usize]);
     v
 }
+fn v_last_missing(s: &Spec) -> Vec<Vec3> {
+    let mut v = sol::vertices(s);
+    v.pop();
+    v
+}
 fn f_duplicated(s: &Spec) -> Vec<[u32; 3]> {
     // F0 uses the copy instead of sharing the vertex.
     let mut f = sol::faces(s);
@@ -539,9 +544,30 @@ fn broken_answers() -> Vec<Broken> {
         Broken {
             name: "a duplicated vertex instead of a shared index",
             imp: solution_with(Some(v_duplicated), Some(f_duplicated), Some(n_duplicated), None),
-            must: &["a1.t1.count", "a1.t2.closed"],
+            must: &["a1.t1.count", "a1.t1.positions", "a1.t2.closed"],
             may: &[],
-            says: &[("a1.t1.count", "defined twice"), ("a1.t2.closed", "duplicated vertex")],
+            says: &[
+                ("a1.t1.count", "defined twice"),
+                ("a1.t1.positions", "not in the table, is at the same position"),
+                ("a1.t2.closed", "duplicated vertex"),
+            ],
+        },
+        Broken {
+            name: "the last vertex left out",
+            imp: solution_with(Some(v_last_missing), None, None, None),
+            must: &["a1.t1.count", "a1.t1.positions", "a1.t2.indices"],
+            // The faces name the missing vertex: the checks after a1.t2.indices wait for it.
+            may: &[
+                "a1.t2.degenerate",
+                "a1.t2.closed",
+                "a1.t2.manifold",
+                "a1.t2.winding",
+                "a1.t2.outward",
+                "a1.t2.surface",
+                "a1.t2.count",
+                "a1.t3.normals",
+            ],
+            says: &[("a1.t1.positions", "nothing from V")],
         },
         Broken {
             name: "a missing face",

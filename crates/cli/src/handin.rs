@@ -4,8 +4,12 @@
 //! The zip holds `exercises/student.toml`, `exercises/src/a1.rs` … `s.rs` and, when there is
 //! one, the report grading would read (`report/report.md` or `report.tex`: of both, the one
 //! changed last, `report.md` at a tie, as `cg grade` chooses), nothing else: no build output,
-//! no other report for grading to set aside. A file grading refuses (one that reads outside
-//! itself: `include_str!`, `#[path]`, …) stops it, as the whole submission would score 0.
+//! no other report for grading to set aside. Each assignment's file is read as grading reads it
+//! (one saved as Shift_JIS or UTF-16 converted, with a note to save it as UTF-8, which `cg
+//! check` needs) and screened as grading screens it: a file grading refuses (one that reads
+//! outside itself: `include_str!`, `#[path]`, …: the whole submission would score 0), a module
+//! kept in a file of its own (`mod helper;`: it does not compile in grading) or a file that is no
+//! text stops it.
 
 use std::path::{Path, PathBuf};
 use std::time::UNIX_EPOCH;
@@ -84,6 +88,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         path: exercises.join("student.toml"),
     }];
     let mut missing = Vec::new();
+    let mut notes = Vec::new();
     for module in IDS {
         let name = format!("exercises/src/{module}.rs");
         let path = root.join(&name);
@@ -91,12 +96,8 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
             missing.push(name);
             continue;
         }
-        // What grading refuses makes the whole submission score 0: said here, not found there.
-        if let Ok(text) = std::fs::read_to_string(&path) {
-            let refused = cg_assign::screen::screen(&name, &text);
-            if !refused.is_empty() {
-                return Err(cg_assign::screen::message(&refused).get(lang).to_owned());
-            }
+        if let Some(note) = screened(&name, module, &path).map_err(|e| e.get(lang).to_owned())? {
+            notes.push(note);
         }
         taken.push(Taken { name, path });
     }
@@ -146,8 +147,46 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         .get(lang)
         .to_owned()
     })?;
+    for note in &notes {
+        println!("{}", note.get(lang));
+    }
     print!("{}", said(&out, &entries, zip.len(), other.as_deref()).get(lang));
     Ok(())
+}
+
+/// `path` (assignment `module`'s file, `name` in the zip) read as grading reads it — converted
+/// to UTF-8 from Shift_JIS or UTF-16 — and screened as grading screens it.
+///
+/// # Errors
+/// What grading refuses (the whole submission scores 0 for it), a module in a file of its own
+/// (grading reads only the assignments' files: it does not compile there, the assignment scores
+/// 0), a file that is not text: said here, not found there. `Ok(Some(note))` for a file grading
+/// converts, which the student's own `check` cannot build.
+fn screened(name: &str, module: &str, path: &Path) -> Result<Option<Text>, Text> {
+    let bytes = std::fs::read(path).map_err(|e| {
+        Text::new(
+            format!("{} を読めません: {}", path.display(), Text::io(&e).ja),
+            format!("cannot read {}: {}", path.display(), Text::io(&e).en),
+        )
+    })?;
+    let (text, note) = match String::from_utf8(bytes) {
+        Ok(text) => (text, None),
+        Err(e) => {
+            let (text, encoding) = cg_core::text::decode(e.as_bytes(), None).map_err(|e| {
+                let why = e.text_without_option();
+                Text::new(format!("{name}: {}", why.ja), format!("{name}: {}", why.en))
+            })?;
+            (text, Some(cg_assign::local::not_utf8(name, encoding.name())))
+        }
+    };
+    let refused = cg_assign::screen::screen(name, &text);
+    if !refused.is_empty() {
+        return Err(cg_assign::screen::message(&refused));
+    }
+    if let Some(r) = cg_assign::screen::other_files(name, &text).first() {
+        return Err(cg_assign::screen::other_file_message(r, module));
+    }
+    Ok(note)
 }
 
 /// What `run` prints: the zip, its files, and what to do next.

@@ -21,18 +21,11 @@ fn doctor(dir: &Path, args: &[&str], env: &[(&str, Option<&str>)]) -> Output {
     let runtime = dir.join("runtime");
     std::fs::create_dir_all(&runtime).unwrap();
     let mut command = Command::new(env!("CARGO_BIN_EXE_cg"));
+    cg_testkit::no_language_from_the_tester(&mut command);
     command.arg("doctor").args(args).current_dir(dir);
-    for key in [
-        "CG_LANG",
-        "LANG",
-        "LC_ALL",
-        "LC_MESSAGES",
-        "DISPLAY",
-        "WAYLAND_DISPLAY",
-        "VK_DRIVER_FILES",
-        "VK_ADD_DRIVER_FILES",
-        "WGPU_BACKEND",
-    ] {
+    for key in
+        ["DISPLAY", "WAYLAND_DISPLAY", "VK_DRIVER_FILES", "VK_ADD_DRIVER_FILES", "WGPU_BACKEND"]
+    {
         command.env_remove(key);
     }
     command.env("XDG_RUNTIME_DIR", &runtime).env("VK_ICD_FILENAMES", NO_DRIVER);

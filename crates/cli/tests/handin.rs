@@ -88,6 +88,38 @@ fn what_grading_refuses_or_no_student_number_stops_it() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(stderr.contains("exercises/src/a1.rs:") && stderr.contains("include_str!"), "{stderr}");
     assert!(!dir.join("handin").exists());
+    // The same saved as Shift_JIS (grading converts it, then refuses it).
+    // (Its ASCII, and `ー` as Shift_JIS's 81 5B: not UTF-8; the stub's other Japanese left out.)
+    let sjis = |text: &str| {
+        text.chars()
+            .flat_map(|c| match c {
+                'ー' => vec![0x81, 0x5B],
+                c if c.is_ascii() => vec![c as u8],
+                _ => vec![],
+            })
+            .collect::<Vec<u8>>()
+    };
+    let hostile = format!("// ー\n{text}\nconst X: &str = include_str!(\"../../secret.txt\");\n");
+    std::fs::write(&a1, sjis(&hostile)).unwrap();
+    let out = cg(&dir, &["handin"]);
+    assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stdout));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("exercises/src/a1.rs:") && stderr.contains("include_str!"), "{stderr}");
+    assert!(!dir.join("handin").exists());
+    // A module kept in a file of its own: grading reads only the assignments' files.
+    std::fs::write(&a1, format!("{text}\nmod helper;\n")).unwrap();
+    let out = cg(&dir, &["handin"]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("`mod helper;` reads another file"), "{stderr}");
+    assert!(!dir.join("handin").exists());
+    // Shift_JIS with nothing refused: handed in as it is, with the note to save it as UTF-8.
+    std::fs::write(&a1, sjis(&format!("// ー\n{text}"))).unwrap();
+    let out = cg(&dir, &["handin"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}{}", String::from_utf8_lossy(&out.stderr));
+    assert!(stdout.starts_with("exercises/src/a1.rs is saved as Shift_JIS."), "{stdout}");
+    std::fs::remove_dir_all(dir.join("handin")).unwrap();
     // No student number recorded: says how to record it.
     std::fs::write(&a1, text).unwrap();
     std::fs::remove_file(dir.join("exercises/student.toml")).unwrap();

@@ -182,7 +182,8 @@ impl Outcome {
     pub fn of_function(&self, function: &str) -> Text {
         match self {
             Outcome::NotDone { message } => Text::new(
-                format!("{function} はまだ書かれていません（{}）", stub_message(message, Lang::Ja)),
+                // `a1.t3（面の法線）` has its own brackets: after a colon, not inside more.
+                format!("{function} はまだ書かれていません: {}", stub_message(message, Lang::Ja)),
                 format!("{function} is not written yet ({})", stub_message(message, Lang::En)),
             ),
             Outcome::Panicked { message, location } => {

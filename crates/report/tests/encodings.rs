@@ -22,11 +22,8 @@ fn remove(dir: &Path) {
 }
 
 fn report_checker(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_report-checker"))
+    cg_testkit::no_language_from_the_tester(&mut Command::new(env!("CARGO_BIN_EXE_report-checker")))
         .args(args)
-        .env_remove("CG_LANG")
-        .env_remove("LANG")
-        .env_remove("LC_ALL")
         .output()
         .unwrap()
 }

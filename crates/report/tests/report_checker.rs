@@ -9,12 +9,9 @@ fn root() -> std::path::PathBuf {
 }
 
 fn report_checker(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_report-checker"))
+    cg_testkit::no_language_from_the_tester(&mut Command::new(env!("CARGO_BIN_EXE_report-checker")))
         .args(args)
         .current_dir(root())
-        .env_remove("CG_LANG")
-        .env_remove("LANG")
-        .env_remove("LC_ALL")
         .output()
         .unwrap()
 }

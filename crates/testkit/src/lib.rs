@@ -37,6 +37,22 @@ pub fn remove_student_folder(dir: &std::path::Path) {
     }
 }
 
+/// The variables that choose the kit's language, and `LANGUAGE`, which sys-locale reads on Linux.
+const LANGUAGE_VARIABLES: [&str; 4] = ["CG_LANG", "LC_ALL", "LC_MESSAGES", "LANGUAGE"];
+
+/// `command` with no language chosen by the tester's environment: the variables that choose one
+/// removed, and `LANG=C.UTF-8` (English) in place of the system's language, which the kit asks
+/// where no variable is set (a Japanese Mac or Windows would give Japanese). A test sets
+/// `CG_LANG`, `LC_ALL` or `LANG` on top, or passes `--lang`, to choose.
+pub fn no_language_from_the_tester(
+    command: &mut std::process::Command,
+) -> &mut std::process::Command {
+    for key in LANGUAGE_VARIABLES {
+        command.env_remove(key);
+    }
+    command.env("LANG", "C.UTF-8")
+}
+
 use glam::{DVec3, Vec3};
 use rand::rngs::StdRng;
 use rand::{RngExt, SeedableRng};

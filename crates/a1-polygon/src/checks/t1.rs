@@ -70,7 +70,7 @@ pub(super) fn vertex_positions(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let n = v.len().min(e.len());
     let wrong: Vec<usize> = (0..n).filter(|&i| !close(v[i], e[i], VERTEX_TOLERANCE)).collect();
     if wrong.is_empty() {
-        return Ok(());
+        return if v.len() == e.len() { Ok(()) } else { Err(past_the_end(&v, &e)) };
     }
     let expected: Vec<String> = wrong.iter().map(|&i| format!("V{i} {}", v3(e[i]))).collect();
     let actual: Vec<String> = wrong.iter().map(|&i| format!("V{i} {}", v3(v[i]))).collect();
@@ -91,6 +91,62 @@ pub(super) fn vertex_positions(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                 "compute each vertex from the dimensions (each coordinate within {VERTEX_TOLERANCE}). Corner k of a regular n-gon is at the angle θ = 360°·k/n: {ring} (cos and sin take radians: θ.to_radians()). Number them as the table in the assignment says."
             ),
         )))
+}
+
+/// The failure for vertices that are right as far as they go, but too few or too many: the
+/// positions cannot pass while a corner is missing or an extra point is listed.
+fn past_the_end(v: &[Vec3], e: &[Vec3]) -> Failure {
+    let n = v.len().min(e.len());
+    let last = n.saturating_sub(1);
+    let right = if n == 1 { "V0".to_string() } else { format!("V0–V{last}") };
+    let (expected, actual, cause): (Vec<Text>, Vec<Text>, Text) = if v.len() < e.len() {
+        (
+            (n..e.len()).map(|i| format!("V{i} {}", v3(e[i])).into()).collect(),
+            (n..e.len()).map(|i| t(&format!("V{i} なし"), &format!("no V{i}"))).collect(),
+            Text::new(
+                format!(
+                    "{right} の位置は正しいのですが、V{n} から先が返されていません（V{} まで {} 個の角があります）。",
+                    e.len() - 1,
+                    e.len()
+                ),
+                format!(
+                    "{right} are in the right places, but nothing from V{n} on is returned (the table goes on to V{}, {} corners in all).",
+                    e.len() - 1,
+                    e.len()
+                ),
+            ),
+        )
+    } else {
+        (
+            (n..v.len()).map(|i| t(&format!("V{i} なし"), &format!("no V{i}"))).collect(),
+            (n..v.len()).map(|i| format!("V{i} {}", v3(v[i])).into()).collect(),
+            match coincident_vertices(v).into_iter().find(|&(_, b)| b >= n) {
+                Some((a, b)) => Text::new(
+                    format!(
+                        "{right} の位置は正しいのですが、表にない V{b} が V{a} と同じ位置にあります（同じ頂点を 2 回定義しています）。"
+                    ),
+                    format!(
+                        "{right} are in the right places, but V{b}, not in the table, is at the same position as V{a} (the vertex is defined twice)."
+                    ),
+                ),
+                None => Text::new(
+                    format!(
+                        "{right} の位置は正しいのですが、課題の表にない頂点 V{n} から先が加わっています（中心点など）。"
+                    ),
+                    format!(
+                        "{right} are in the right places, but V{n} on are not in the table (an extra point such as a centre?)."
+                    ),
+                ),
+            },
+        )
+    };
+    let location: Vec<String> = (n..v.len().max(e.len())).map(|i| format!("V{i}")).collect();
+    Failure::new(listed(&expected), listed(&actual)).at(listed(&location)).cause(cause).hint(
+        Text::new(
+            format!("課題の頂点番号の表のとおり、V0 から V{} までを返してください。", e.len() - 1),
+            format!("list the vertices of the numbering table, V0 to V{}.", e.len() - 1),
+        ),
+    )
 }
 
 /// The usual cause of wrong vertex positions, found by comparing with what common mistakes give.

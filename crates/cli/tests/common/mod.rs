@@ -11,17 +11,12 @@ pub fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").canonicalize().unwrap()
 }
 
-/// Runs the `cg` binary in `dir` with `args`, with no language taken from the environment.
+/// Runs the `cg` binary in `dir` with `args`, in English unless `args` has `--lang`: no
+/// language taken from the tester's environment or system.
 pub fn cg(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_cg"))
+    cg_testkit::no_language_from_the_tester(&mut Command::new(env!("CARGO_BIN_EXE_cg")))
         .args(args)
         .current_dir(dir)
-        .env_remove("CG_LANG")
-        .env_remove("LANG")
-        .env_remove("LC_ALL")
-        .env_remove("LC_MESSAGES")
-        // The system's language, where no variable names one (sys-locale reads LANGUAGE on Linux).
-        .env_remove("LANGUAGE")
         // Never a window from the tests (a developer's desktop has a display).
         .env_remove("DISPLAY")
         .output()

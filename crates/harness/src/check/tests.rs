@@ -265,6 +265,11 @@ fn a_call_that_gave_no_value_is_said_in_the_readers_language() {
     assert!(!late.en.contains("panicked"), "{}", late.en);
     let stub = Outcome::NotDone { message: "a1.t3".into() }.of_function("face_normals");
     assert!(stub.en.starts_with("face_normals is not written yet"), "{}", stub.en);
+    // A stub's words in their own brackets, not in a second pair.
+    let stub = Outcome::NotDone { message: "a1.t3: 面の法線 / the face normals".into() }
+        .of_function("face_normals");
+    assert_eq!(stub.ja, "face_normals はまだ書かれていません: a1.t3（面の法線）");
+    assert_eq!(stub.en, "face_normals is not written yet (a1.t3: the face normals)");
 }
 
 /// The checks of `cg check a1` with a wrong face `[0, 1, 4]` (a student's copy, 2026): the

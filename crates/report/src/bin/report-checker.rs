@@ -13,7 +13,7 @@ use clap::Parser;
     about = "The report checker: derives your report's tables, figures and matrices, fills the template, checks your numbers / レポートの表・図・行列の導出、ひな形の作成、数値の確認"
 )]
 struct Cli {
-    /// Language of the output: ja or en (default: from CG_LANG or LANG) / 出力の言語
+    /// Language of the output: ja or en (default: from CG_LANG or LANG, else the system's language) / 出力の言語（省略時は CG_LANG・LANG、なければシステムの言語）
     #[arg(long, global = true, value_name = "ja|en")]
     lang: Option<Lang>,
     #[command(subcommand)]
