@@ -213,7 +213,7 @@ pub impl Spec {
     /// `a3.t0`–`a3.t2` and what the report must show.
     fn describe(&self, lang: Lang) -> String {
         let mut out = String::new();
-        let _ = writeln!(out, "{}", t("3. アニメーション（a3）", "3. Animation (a3)").get(lang));
+        let _ = writeln!(out, "{}", t("3. アニメーション (a3)", "3. Animation (a3)").get(lang));
         let _ = writeln!(
             out,
             "{}",

@@ -21,25 +21,48 @@ pub(crate) struct Variation {
     pub reversed: bool,
     /// Another period (frames) in place of the motion's own.
     pub period: Option<u64>,
+    /// What a swing's sine is taken of.
+    pub sine: Sine,
+}
+
+/// What a swing's `θ = A·sin(…)` is evaluated of: the specified radians, or the degrees of the
+/// phase handed to `sin` as they are (`(360.0 * t / T).sin()`, the common mistake: `f64::sin`
+/// takes radians).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Sine {
+    /// `sin(2π·u)`, as specified.
+    Radians,
+    /// `sin(360·u)` of the phase `u = (t/T) mod 1` (reduced by the period first).
+    DegreesOfPhase,
+    /// `sin(360·t/T)` of the time not reduced by the period.
+    DegreesOfTime,
 }
 
 impl Variation {
     /// The motion as specified.
-    pub(crate) const EXACT: Variation =
-        Variation { angle_scale: 1.0, sign: 1.0, reversed: false, period: None };
-    /// Angles in radians handed to a function that takes degrees.
-    pub(crate) const RADIANS: Variation = Variation {
-        angle_scale: std::f64::consts::PI / 180.0,
+    pub(crate) const EXACT: Variation = Variation {
+        angle_scale: 1.0,
         sign: 1.0,
         reversed: false,
         period: None,
+        sine: Sine::Radians,
     };
+    /// Angles in radians handed to a function that takes degrees.
+    pub(crate) const RADIANS: Variation =
+        Variation { angle_scale: std::f64::consts::PI / 180.0, ..Variation::EXACT };
     /// The other way round.
-    pub(crate) const MIRRORED: Variation =
-        Variation { angle_scale: 1.0, sign: -1.0, reversed: false, period: None };
+    pub(crate) const MIRRORED: Variation = Variation { sign: -1.0, ..Variation::EXACT };
     /// Rotation and translation swapped.
-    pub(crate) const REVERSED: Variation =
-        Variation { angle_scale: 1.0, sign: 1.0, reversed: true, period: None };
+    pub(crate) const REVERSED: Variation = Variation { reversed: true, ..Variation::EXACT };
+    /// A swing's sine taken of the degrees of its phase, `sin(360·u)`.
+    pub(crate) const SINE_OF_DEGREES: Variation =
+        Variation { sine: Sine::DegreesOfPhase, ..Variation::EXACT };
+    /// A swing's sine taken of the degrees of the unreduced time, `sin(360·t/T)`.
+    pub(crate) const SINE_OF_DEGREES_OF_TIME: Variation =
+        Variation { sine: Sine::DegreesOfTime, ..Variation::EXACT };
+    /// Both ways of handing degrees to `sin` ([`Sine`]).
+    pub(crate) const SINES_OF_DEGREES: [Variation; 2] =
+        [Variation::SINE_OF_DEGREES, Variation::SINE_OF_DEGREES_OF_TIME];
 }
 
 /// The phase `u ∈ [0, 1)` at `frame` of a motion with a period of `period` frames, exactly.
@@ -74,11 +97,24 @@ pub(crate) fn hop_at(span: f64, height: f64, u: f64) -> (f64, f64) {
 
 /// The motion's own angle (degrees) at phase `u`, or `None` for a hop.
 pub(crate) fn angle_at(motion: &Motion, u: f64) -> Option<f64> {
+    angle_with(motion, u, u, Sine::Radians)
+}
+
+/// [`angle_at`] with a swing's sine taken as `sine` says; `cycles` is the time in periods,
+/// not reduced (`t/T`, of which `u` is the fraction).
+fn angle_with(motion: &Motion, u: f64, cycles: f64, sine: Sine) -> Option<f64> {
     match *motion {
         Motion::Spin { turn, .. } | Motion::Orbit { turn, .. } | Motion::Satellite { turn, .. } => {
             Some(f64::from(turn.sign()) * 360.0 * u)
         }
-        Motion::Swing { amplitude_deg, .. } => Some(f64::from(amplitude_deg) * (TAU * u).sin()),
+        Motion::Swing { amplitude_deg, .. } => {
+            let s = match sine {
+                Sine::Radians => (TAU * u).sin(),
+                Sine::DegreesOfPhase => (360.0 * u).sin(),
+                Sine::DegreesOfTime => (360.0 * cycles).sin(),
+            };
+            Some(f64::from(amplitude_deg) * s)
+        }
         Motion::Hop { .. } => None,
     }
 }
@@ -86,7 +122,13 @@ pub(crate) fn angle_at(motion: &Motion, u: f64) -> Option<f64> {
 /// The motion's matrix relative to its parent (the world for independent objects) at phase
 /// `u`, evaluated with `v`.
 pub(crate) fn local(motion: &Motion, u: f64, v: Variation) -> DMat4 {
-    let angle = angle_at(motion, u).map_or(0.0, |a| a * v.angle_scale * v.sign);
+    local_at(motion, u, u, v)
+}
+
+/// [`local`] at the time `cycles` periods from the start (`t/T`, not reduced; `u` is its
+/// fraction), which a swing's sine of unreduced degrees ([`Sine::DegreesOfTime`]) needs.
+pub(crate) fn local_at(motion: &Motion, u: f64, cycles: f64, v: Variation) -> DMat4 {
+    let angle = angle_with(motion, u, cycles, v.sine).map_or(0.0, |a| a * v.angle_scale * v.sign);
     let pair = |r: DMat4, t: DMat4| if v.reversed { t * r } else { r * t };
     match *motion {
         Motion::Spin { position, axis, .. } => pair(tr(d3(position)), rot(axis, angle)),
@@ -123,8 +165,8 @@ pub(crate) fn expected_model_with(
     depth: usize,
 ) -> DMat4 {
     let Some(object) = spec.objects.get(index) else { return DMat4::IDENTITY };
-    let u = phase_at(frame, v.period.unwrap_or_else(|| object.motion.period_frames()));
-    let own = local(&object.motion, u, v);
+    let period = v.period.unwrap_or_else(|| object.motion.period_frames()).max(1);
+    let own = local_at(&object.motion, phase_at(frame, period), frame as f64 / period as f64, v);
     match object.motion.parent() {
         // A parent never is a child itself; the depth guard keeps a hand-made cycle finite.
         Some(p) if p != index && depth < 8 => {
@@ -141,8 +183,9 @@ pub fn warmup_model(object: &Object, t: f64) -> DMat4 {
 }
 
 pub(crate) fn warmup_model_with(object: &Object, t: f64, v: Variation) -> DMat4 {
-    let u = (t / f64::from(object.motion.period_s())).rem_euclid(1.0);
-    local(&object.motion, if u >= 1.0 { 0.0 } else { u }, v)
+    let cycles = t / f64::from(object.motion.period_s());
+    let u = cycles.rem_euclid(1.0);
+    local_at(&object.motion, if u >= 1.0 { 0.0 } else { u }, cycles, v)
 }
 
 /// Object `index`'s model transform at `frame` as the report writes it, each factor in program
@@ -255,6 +298,37 @@ mod tests {
         };
         let bob = local(&m, 0.0, Variation::EXACT).transform_point3(DVec3::ZERO);
         assert!(bob.abs_diff_eq(DVec3::new(0.0, 1.0, 0.0), 1e-12));
+    }
+
+    /// Degrees handed to `sin` (issue 7): the swing's angle is `A·sin(360·u)` of the reduced
+    /// phase or `A·sin(360·t/T)` of the unreduced time, read as radians; the turns and hops are
+    /// as specified.
+    #[test]
+    fn degrees_in_a_sine_are_read_as_radians() {
+        let swing = Motion::Swing {
+            pivot: [0.0, 1.0, 0.0],
+            axis: WorldAxis::Z,
+            amplitude_deg: 30.0,
+            arm: 0.0,
+            period_s: 2.0,
+        };
+        let rz = |deg: f64| tr(DVec3::Y) * rot(WorldAxis::Z, deg);
+        let (u, cycles) = (0.05, 3.05);
+        let at = |v| local_at(&swing, u, cycles, v);
+        assert!(close(at(Variation::EXACT), rz(30.0 * (TAU * u).sin())));
+        assert!(close(at(Variation::SINE_OF_DEGREES), rz(30.0 * (360.0 * u).sin())));
+        assert!(close(at(Variation::SINE_OF_DEGREES_OF_TIME), rz(30.0 * (360.0 * cycles).sin())));
+        let box2 = &warmup_objects()[1];
+        let t = 0.35;
+        assert!(close(
+            warmup_model_with(box2, t, Variation::SINE_OF_DEGREES_OF_TIME),
+            rz(30.0 * (360.0 * t / 2.0).sin())
+        ));
+        let spin =
+            Motion::Spin { position: [0.0; 3], axis: WorldAxis::Y, turn: Turn::Ccw, period_s: 4.0 };
+        for v in Variation::SINES_OF_DEGREES {
+            assert!(close(local_at(&spin, u, cycles, v), local(&spin, u, Variation::EXACT)));
+        }
     }
 
     #[test]

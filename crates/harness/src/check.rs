@@ -104,8 +104,10 @@ pub enum Outcome {
     TimedOut {
         /// The check's time limit, in milliseconds.
         limit_ms: u64,
-        /// The worker's function that was running when the time ran out (`a1.face_normals`),
-        /// when known ([`describe`](Outcome::describe) names it with its file).
+        /// The worker's function that was running when the time ran out (`a1.face_normals`;
+        /// of a batch such as `a3.frames`, the student's function the worker said it was
+        /// running and its frame, `a3.idle@401`, see `cg_worker::proxy::split_step`), when
+        /// known ([`describe`](Outcome::describe) names it with its file, and the frame).
         #[serde(default, skip_serializing_if = "Option::is_none")]
         function: Option<String>,
         /// Not run: `function` ran out of time in an earlier check.
@@ -229,7 +231,19 @@ impl Outcome {
             Outcome::TimedOut { limit_ms, function: Some(function), earlier } => {
                 let seconds = seconds(*limit_ms);
                 let (file, names) = student_function(function);
-                if *earlier {
+                let frame = cg_worker::proxy::split_step(function).1;
+                if let (Some(frame), false) = (frame, earlier) {
+                    Text::new(
+                        format!(
+                            "{file} の {} がフレーム {frame} で制限時間 {seconds} 秒を超えても終わらないため止めました。無限ループになっていないか確認してください。",
+                            names.ja
+                        ),
+                        format!(
+                            "{} ({file}) was stopped at frame {frame} after the time limit of {seconds} s: does it loop forever?",
+                            names.en
+                        ),
+                    )
+                } else if *earlier {
                     Text::new(
                         format!(
                             "実行していません: {file} の {} は前のチェックで制限時間 {seconds} 秒内に終わりませんでした（上を参照）",
@@ -286,7 +300,8 @@ impl Outcome {
 
 /// The file and the name, in both languages, of the student's functions a call of the worker's
 /// `function` runs: `a1.face_normals` → `exercises/src/a1.rs`, `face_normals`; `a3.frames` →
-/// `exercises/src/a3.rs`, `idle か display` / `idle or display`.
+/// `exercises/src/a3.rs`, `idle か display` / `idle or display`; `a3.idle@401` (the worker said
+/// which one ran, and at which frame) → `exercises/src/a3.rs`, `idle`.
 fn student_function(function: &str) -> (String, Text) {
     let module = function.split('.').next().unwrap_or_default();
     let names: Vec<&str> = cg_worker::proxy::student_functions(function)

@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use std::process::{Child, ChildStdin, Command, Stdio};
 use std::sync::mpsc::{Receiver, RecvTimeoutError, sync_channel};
 use std::sync::{Arc, Mutex};
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use crate::{Call, Reason, Reply, cbor, decode, encode, frame};
 
@@ -33,7 +33,9 @@ pub enum CallError {
         limit: Duration,
         /// The worker's function that was running when the time ran out (`a1.face_normals`;
         /// a batch such as `a3.frames` runs several of the student's, see
-        /// [`crate::proxy::student_functions`]).
+        /// [`crate::proxy::student_functions`]: then the one of them the worker said it was
+        /// running, [`Reply::Running`], with its step when it said one, `a3.idle@401`
+        /// ([`crate::proxy::split_step`]); the batch's name when it said nothing).
         function: String,
         /// Not run now: `function` ran out of time in an earlier check, and this call would
         /// have run it again.
@@ -271,38 +273,56 @@ impl Worker {
         let call = Call { function: function.to_owned(), args };
         let bytes = encode(&call).map_err(unsent)?;
         let running = self.start()?;
-        let sent = frame::write(&mut running.stdin, &bytes);
-        let answer = match sent {
-            Err(_) => Err(RecvTimeoutError::Disconnected),
-            Ok(()) => running.replies.recv_timeout(budget),
-        };
-        let payload = match answer {
-            Ok(Ok((Some(payload), printed))) => {
-                self.keep_printed(&printed);
-                payload
+        let sent = frame::write(&mut running.stdin, &bytes).is_ok();
+        let deadline = Instant::now().checked_add(budget);
+        // The student's function the worker last said it runs (a batch's), and its step.
+        let mut now: Option<(String, Option<u64>)> = None;
+        let payload = loop {
+            let answer = match (sent, &self.running) {
+                (true, Some(r)) => {
+                    let left =
+                        deadline.map_or(budget, |d| d.saturating_duration_since(Instant::now()));
+                    r.replies.recv_timeout(left)
+                }
+                _ => Err(RecvTimeoutError::Disconnected),
+            };
+            match answer {
+                Ok(Ok((Some(payload), printed))) => {
+                    self.keep_printed(&printed);
+                    match running_report(&payload) {
+                        // Kept only when it is one of this call's functions: the worker says,
+                        // this side decides what it names.
+                        Some((f, step)) => {
+                            if crate::proxy::student_functions(function).contains(&f.as_str()) {
+                                now = Some((f, step));
+                            }
+                        }
+                        None => break payload,
+                    }
+                }
+                Ok(Ok((None, printed))) => {
+                    self.keep_printed(&printed);
+                    return Err(self.crashed());
+                }
+                Ok(Err(e)) => {
+                    self.stop();
+                    return Err(CallError::Broken(Reason::with_detail(
+                        "ワーカーの返事を受け取れません",
+                        "cannot take the worker's reply",
+                        &e.to_string(),
+                    )));
+                }
+                Err(RecvTimeoutError::Timeout) => {
+                    self.stop();
+                    self.timeouts += 1;
+                    let function = match now {
+                        Some((f, step)) => crate::proxy::with_step(&f, step),
+                        None => function.to_owned(),
+                    };
+                    return Err(CallError::TimedOut { limit: budget, function, earlier: false });
+                }
+                Err(RecvTimeoutError::Disconnected) => return Err(self.crashed()),
             }
-            Ok(Ok((None, printed))) => {
-                self.keep_printed(&printed);
-                return Err(self.crashed());
-            }
-            Ok(Err(e)) => {
-                self.stop();
-                return Err(CallError::Broken(Reason::with_detail(
-                    "ワーカーの返事を受け取れません",
-                    "cannot take the worker's reply",
-                    &e.to_string(),
-                )));
-            }
-            Err(RecvTimeoutError::Timeout) => {
-                self.stop();
-                self.timeouts += 1;
-                return Err(CallError::TimedOut {
-                    limit: budget,
-                    function: function.to_owned(),
-                    earlier: false,
-                });
-            }
-            Err(RecvTimeoutError::Disconnected) => return Err(self.crashed()),
         };
         let read = read_payload(function, &payload);
         drop(payload);
@@ -440,6 +460,20 @@ fn cut(text: String, max: usize) -> String {
     format!("{}… ({} bytes)", &text[..end], text.len())
 }
 
+/// The largest [`Reply::Running`] read as one: the name of a function and a number.
+const MAX_RUNNING_BYTES: usize = 512;
+
+/// A small payload that is a [`Reply::Running`]: the function and step it names.
+fn running_report(payload: &[u8]) -> Option<(String, Option<u64>)> {
+    if payload.len() > MAX_RUNNING_BYTES {
+        return None;
+    }
+    match decode::<Reply<serde::de::IgnoredAny>>(payload) {
+        Ok(Reply::Running { function, step }) => Some((function, step)),
+        _ => None,
+    }
+}
+
 /// A reply's bytes as `function`'s result: read straight into `R` (no [`Value`](crate::Value)
 /// per number), after its items are counted ([`cbor::items`]: at most [`cbor::MAX_ITEMS`]).
 fn read_payload<R: serde::de::DeserializeOwned>(
@@ -492,6 +526,11 @@ fn read_reply<R>(function: &str, reply: Reply<R>) -> Result<R, CallError> {
                 format!("the worker has no function {name}"),
             )))
         }
+        // Only ever alone in a frame (taken before a reply is read), never the reply.
+        Reply::Running { .. } => Err(CallError::Broken(Reason::new(
+            format!("{function}: 返事の中に実行中の知らせがあります"),
+            format!("{function}: a report of progress inside a reply"),
+        ))),
         Reply::Stub { tasks, reply } => {
             if matches!(*reply, Reply::Stub { .. }) {
                 return Err(CallError::Broken(Reason::new(

@@ -176,6 +176,16 @@ pub enum Reply<V = Value> {
         /// The reply without the markers.
         reply: Box<Reply<V>>,
     },
+    /// Not the reply yet: the call runs one of the student's functions, `function` (`a3.idle`,
+    /// one of a batch's, see [`proxy::student_functions`]) at `step` (a3's frame), and has for a
+    /// while ([`serve::running`]). The caller ([`Worker::call`]) keeps the last one, names it in
+    /// a timeout when it is one of the call's functions, and waits on for the reply.
+    Running {
+        /// The student's function, `<assignment>.<name>`.
+        function: String,
+        /// How far the batch is (a3: the frame), when it says.
+        step: Option<u64>,
+    },
 }
 
 #[cfg(test)]

@@ -169,11 +169,32 @@ pub fn end_check() {
     });
 }
 
+/// A timeout's function with the step the worker said it was at: `a3.idle@401` (a3: the
+/// frame), or the function alone.
+#[must_use]
+pub fn with_step(function: &str, step: Option<u64>) -> String {
+    match step {
+        Some(step) => format!("{function}@{step}"),
+        None => function.to_owned(),
+    }
+}
+
+/// A timeout's function and the step after it, if any ([`with_step`]): `a3.idle@401` →
+/// (`a3.idle`, 401).
+#[must_use]
+pub fn split_step(function: &str) -> (&str, Option<u64>) {
+    match function.rsplit_once('@').map(|(f, step)| (f, step.parse().ok())) {
+        Some((f, Some(step))) => (f, Some(step)),
+        _ => (function, None),
+    }
+}
+
 /// The student's functions a call of the worker's `function` runs: itself, or for a batch the
-/// functions it runs (`a3.frames`: `a3.idle` and `a3.display`).
+/// functions it runs (`a3.frames`: `a3.idle` and `a3.display`). A step after the name
+/// (`a3.idle@401`, [`with_step`]) is left off.
 #[must_use]
 pub fn student_functions(function: &str) -> Vec<&str> {
-    match function {
+    match split_step(function).0 {
         "a3.frames" => vec!["a3.idle", "a3.display"],
         "a3.run_idle" => vec!["a3.idle"],
         "s.shade_pixels_queries" | "s.shade_pixels" => vec!["s.shade_pixel"],
@@ -231,6 +252,8 @@ pub fn call<A: Serialize, R: DeserializeOwned>(function: &str, args: &A) -> R {
                 earlier: false,
             });
         }
+        // `function` (the batch's name) or, when the worker said, the student's function of the
+        // batch that ran out (`a3.idle@401`): a later call that runs that one is not run again.
         match session.worker.call(function, args, budget) {
             Err(CallError::TimedOut { function, .. }) => {
                 if !session.timed_out.contains(&function) {
@@ -389,5 +412,18 @@ mod tests {
         assert!(runs_again("a3.frames", "a3.frames"));
         assert!(!runs_again("a3.frames", "a3.idle") && !runs_again("a3.frames", "a3.display"));
         assert!(runs_again("s.shade_pixels_queries", "s.shade_pixels"));
+        // The function a batch's worker said ran out, with its frame (a3.idle@401).
+        assert!(runs_again("a3.idle@401", "a3.frames") && runs_again("a3.display@2", "a3.frames"));
+        assert!(!runs_again("a3.display@2", "a3.idle") && runs_again("a3.idle@401", "a3.idle"));
+    }
+
+    #[test]
+    fn a_step_follows_the_function_after_an_at_sign() {
+        assert_eq!(with_step("a3.idle", Some(401)), "a3.idle@401");
+        assert_eq!(with_step("a1.faces", None), "a1.faces");
+        assert_eq!(split_step("a3.idle@401"), ("a3.idle", Some(401)));
+        assert_eq!(split_step("a3.frames"), ("a3.frames", None));
+        assert_eq!(split_step("a3.idle@x"), ("a3.idle@x", None));
+        assert_eq!(student_functions("a3.display@7"), ["a3.display"]);
     }
 }

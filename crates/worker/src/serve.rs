@@ -4,6 +4,8 @@
 use std::cell::RefCell;
 use std::io::{self, BufReader};
 use std::panic::{self, AssertUnwindSafe};
+use std::sync::{Mutex, PoisonError};
+use std::time::Duration;
 
 use crate::{Call, Reply, Value, decode, encode, frame, from_value, to_value};
 
@@ -16,9 +18,70 @@ thread_local! {
     static LOCATION: RefCell<Option<String>> = const { RefCell::new(None) };
 }
 
+/// Which of the student's functions the call being served runs now ([`running`]), for the
+/// watcher of [`serve`].
+#[derive(Debug, Default)]
+struct Progress {
+    /// The student's function (`a3.idle`) and its step (a3's frame), while a call runs one.
+    now: Option<(&'static str, Option<u64>)>,
+    /// Counts the changes of `now`: the watcher reports a `now` that has not changed for one
+    /// [`WATCH`] (a function that runs long, or loops), once.
+    changes: u64,
+    /// The change last reported.
+    reported: u64,
+}
+
+static PROGRESS: Mutex<Progress> =
+    Mutex::new(Progress { now: None, changes: 0, reported: u64::MAX });
+
+/// How often the watcher looks at [`PROGRESS`].
+const WATCH: Duration = Duration::from_millis(50);
+
+/// A batch handler ([`crate::tables`]) is about to call the student's `function` (`a3.idle`) at
+/// `step` (a3's frame): said so that, when that call runs long (an endless loop), the caller
+/// can name it and the frame in its timeout instead of the whole batch. Cheap: a lock and two
+/// stores, no output. The worker only reports it ([`Reply::Running`]): the caller decides.
+pub fn running(function: &'static str, step: Option<u64>) {
+    let mut p = PROGRESS.lock().unwrap_or_else(PoisonError::into_inner);
+    p.now = Some((function, step));
+    p.changes = p.changes.wrapping_add(1);
+}
+
+/// The call being served ended: nothing is running.
+fn idle() {
+    let mut p = PROGRESS.lock().unwrap_or_else(PoisonError::into_inner);
+    p.now = None;
+    p.changes = p.changes.wrapping_add(1);
+}
+
+/// The watcher's loop: every [`WATCH`], a [`running`] function that has not changed since the
+/// last look is written as a [`Reply::Running`] frame, once, while [`PROGRESS`] is held (so the
+/// call's own reply, written after [`idle`] takes the lock, always comes after it).
+fn watch() {
+    let mut seen = u64::MAX;
+    loop {
+        std::thread::sleep(WATCH);
+        let mut p = PROGRESS.lock().unwrap_or_else(PoisonError::into_inner);
+        if let Some((function, step)) = p.now
+            && p.changes == seen
+            && p.reported != seen
+        {
+            let reply: Reply = Reply::Running { function: function.to_owned(), step };
+            let Ok(bytes) = encode(&reply) else { return };
+            if frame::write(&mut io::stdout().lock(), &bytes).is_err() {
+                return;
+            }
+            p.reported = seen;
+        }
+        seen = p.changes;
+    }
+}
+
 /// Runs the worker's loop over stdin and stdout until stdin ends: for each [`Call`], the
 /// handler of that name under `catch_unwind`, its [`Reply`] framed on stdout. Panics are
-/// replies, never printed (the hook records only their location).
+/// replies, never printed (the hook records only their location). A watcher thread says which
+/// of the student's functions a batch runs when one runs long ([`running`]); where no thread
+/// can be started, nothing is said and the calls are served all the same.
 ///
 /// # Errors
 /// stdin or stdout failed (the caller went away).
@@ -27,6 +90,10 @@ pub fn serve(handlers: &[(&str, Handler)]) -> io::Result<()> {
         let location = info.location().map(|l| format!("{}:{}:{}", l.file(), l.line(), l.column()));
         LOCATION.with(|l| *l.borrow_mut() = location);
     }));
+    let _ = std::thread::Builder::new()
+        .name("cg-worker-watch".into())
+        .stack_size(64 << 10)
+        .spawn(watch);
     let mut input = BufReader::new(io::stdin().lock());
     loop {
         let (payload, _) = frame::read(&mut input)?;
@@ -48,6 +115,7 @@ pub fn serve(handlers: &[(&str, Handler)]) -> io::Result<()> {
 fn run(handler: &Handler, args: Value) -> Reply {
     let _ = cg_student::take_not_started();
     let reply = run_unmarked(handler, args);
+    idle();
     let tasks = cg_student::take_not_started();
     if tasks.is_empty() { reply } else { Reply::Stub { tasks, reply: Box::new(reply) } }
 }

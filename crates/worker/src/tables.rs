@@ -19,7 +19,7 @@
 //! | `a3.idle` | `(A3Spec, State)` → `State` after the call |
 //! | `a3.display` | `(A3Spec, State, Gl)` → `Gl` after the call |
 //! | `a3.run_idle` | `(A3Spec, State, u64)` → `State` after `n` calls of `idle` |
-//! | `a3.frames` | `(A3Spec, Vec<u64>)` → `Vec<(State, Gl)>`: per frame, idle up to it, then `display` |
+//! | `a3.frames` | `(A3Spec, Vec<u64>)` → `Vec<(State, Gl)>`: per frame, idle up to it, then `display` (each call announced with `serve::running`) |
 //! | `a4.tex_range` | `Spec` → `TexRange` |
 //! | `a4.tex_coords` | `(Spec, u32, u32)` → `[Vec2; 4]` |
 //! | `a4.sampler` | `()` → `Sampler` |
@@ -62,7 +62,7 @@ use cg_student::{Rgb, a1, a2, a3, a4, s};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::Reason;
-use crate::serve::{Handler, handler};
+use crate::serve::{Handler, handler, running};
 
 /// The fields of `a1::Impl`, by hand: [`a1()`] has one handler `a1.<field>` for each.
 pub const A1_FIELDS: &[&str] = &["vertices", "faces", "face_normals", "model_transform"];
@@ -169,7 +169,9 @@ pub fn a3(imp: a3::Impl) -> Vec<(&'static str, Handler)> {
         // The checks' `each_frame` (a3-animation/src/checks/mod.rs) and the view's
         // `record_frame`: one state from the start, idle until each frame count in turn, then
         // display recorded on a fresh recorder (a frame count not above the last one reached is
-        // recorded at the state reached, as `each_frame` does).
+        // recorded at the state reached, as `each_frame` does). Before each call it says which
+        // function runs at which frame (`running`): a timeout then names `idle` or `display`
+        // and the frame, not the batch.
         (
             "a3.frames",
             handler(move |(A3Spec(spec), frames): (A3Spec, Vec<u64>)| {
@@ -178,10 +180,12 @@ pub fn a3(imp: a3::Impl) -> Vec<(&'static str, Handler)> {
                 let mut out = Vec::with_capacity(frames.len());
                 for frame in frames {
                     while done < frame {
+                        running("a3.idle", Some(done + 1));
                         idle(&spec, &mut state);
                         done += 1;
                     }
                     let mut gl = Gl::new();
+                    running("a3.display", Some(done));
                     display(&spec, &state, &mut gl);
                     out.push((state.clone(), gl));
                 }

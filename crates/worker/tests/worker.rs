@@ -86,6 +86,41 @@ fn an_endless_loop_fails_its_own_call_only() {
     assert_eq!(w.call::<_, i64>("add", &(4, 5), BUDGET), Ok(9));
 }
 
+/// a3's batch of frames runs `idle` and `display` in turn: when one of them loops, the timeout
+/// names that one and the frame the worker said it was at (`a3.idle@5`: the call that makes
+/// frame 5; `a3.display@9`: drawing frame 9, the first asked from 5 on), not the batch; the
+/// caller keeps only a function of the call's own batch (the fixture's `a1.faces` says it runs
+/// `a3.display` and is named `a1.faces` all the same).
+#[test]
+fn a_timeout_in_a_batch_names_the_function_and_the_frame_the_worker_said() {
+    let budget = Duration::from_millis(800);
+    let spec = cg_worker::tables::A3Spec(cg_student::a3::Spec { objects: Vec::new(), unit_s: 1.0 });
+    for (which, named) in [("idle", "a3.idle@5"), ("display", "a3.display@9")] {
+        let mut w = Worker::new(env!("CARGO_BIN_EXE_cg-worker-fixture"), ["--a3-loop", which]);
+        // Frames before the loop come back.
+        let early: Vec<(cg_student::a3::State, cg_student::gl::Gl)> =
+            w.call("a3.frames", &(&spec, vec![1u64, 4]), BUDGET).unwrap();
+        assert_eq!(early.iter().map(|(s, _)| s.frame).collect::<Vec<_>>(), [1, 4]);
+        let r = w.call::<_, Vec<(cg_student::a3::State, cg_student::gl::Gl)>>(
+            "a3.frames",
+            &(&spec, vec![1u64, 3, 9]),
+            budget,
+        );
+        assert_eq!(
+            r,
+            Err(CallError::TimedOut { limit: budget, function: named.to_owned(), earlier: false }),
+            "{which}"
+        );
+    }
+    let mut w = worker();
+    assert_eq!(
+        w.call::<_, i64>("a1.faces", &(), budget),
+        Err(CallError::TimedOut { limit: budget, function: "a1.faces".to_owned(), earlier: false })
+    );
+    // The worker's reports never reach a reply: the next call's value is its own.
+    assert_eq!(w.call::<_, i64>("add", &(2, 2), BUDGET), Ok(4));
+}
+
 #[test]
 fn an_abort_is_a_crash_of_that_call_with_the_workers_stderr() {
     let mut w = worker();

@@ -278,7 +278,8 @@ enum Shift {
 }
 
 /// Names the likely mistake behind `found` ≠ `expected` for a draw: a leak from an earlier draw,
-/// the camera missing or twice, radians, the wrong way round, the order reversed, a frame late,
+/// the camera missing or twice, radians for degrees (in glRotatef) or degrees for radians (in
+/// a swing's sine), the wrong way round, the order reversed, a frame late,
 /// the wrong time base, a wrong parabola.
 fn diagnose(
     found: DMat4,
@@ -314,19 +315,11 @@ fn diagnose(
     if let Some(earlier) = leaked_from(found, expected, gl, draw, parent) {
         return leak_diagnosis(&earlier);
     }
-    let checks: [(Variation, Shift, Text, Text); 7] = [
-        (
-            Variation::RADIANS,
-            Shift::Exact,
-            t(
-                "角度をラジアンで渡しています（glRotatef は度）",
-                "the angle is in radians (glRotatef takes degrees)",
-            ),
-            t(
-                "角度は度で: θ = 360°·t/T。sin には度をラジアンに直して渡します",
-                "use degrees: θ = 360°·t/T; convert to radians only for sin",
-            ),
-        ),
+    let (sine, radians) = (sine_of_degrees(), radians_for_degrees());
+    let checks: [(Variation, Shift, Text, Text); 9] = [
+        (Variation::SINE_OF_DEGREES_OF_TIME, Shift::Exact, sine.cause.clone(), sine.hint.clone()),
+        (Variation::SINE_OF_DEGREES, Shift::Exact, sine.cause, sine.hint),
+        (Variation::RADIANS, Shift::Exact, radians.cause, radians.hint),
         (
             Variation::MIRRORED,
             Shift::Exact,
@@ -433,6 +426,35 @@ fn diagnose(
     )
 }
 
+/// Radians handed to glRotatef, which takes degrees ([`Variation::RADIANS`]).
+fn radians_for_degrees() -> Diagnosis {
+    Diagnosis::new(
+        t(
+            "角度をラジアンで渡しています（glRotatef は度）",
+            "the angle is in radians (glRotatef takes degrees)",
+        ),
+        t(
+            "角度は度で: θ = 360°·t/T。sin には度をラジアンに直して渡します",
+            "use degrees: θ = 360°·t/T; convert to radians only for sin",
+        ),
+    )
+}
+
+/// Degrees handed to `sin` as radians (`(360.0 * t / T).sin()`): a swing's angle then follows
+/// `A·sin(360·t/T)` read in radians ([`Variation::SINES_OF_DEGREES`]).
+fn sine_of_degrees() -> Diagnosis {
+    Diagnosis::new(
+        t(
+            "sin・cos に度のまま渡しています（ラジアンに直す: .to_radians()）",
+            "degrees went into sin/cos as radians: convert with .to_radians()",
+        ),
+        t(
+            "θ = A·sin(360°·t/T) の 360°·t/T は度ですが、f64 の sin はラジアンを受け取ります: (360.0 * t / T).to_radians().sin()（または (TAU * t / T).sin()）と書いてください",
+            "the 360°·t/T in θ = A·sin(360°·t/T) is in degrees, and f64's sin takes radians: write (360.0 * t / T).to_radians().sin() (or (TAU * t / T).sin())",
+        ),
+    )
+}
+
 /// An earlier draw whose transform `found` still carries: its factors are a prefix of this
 /// draw's (the transforms were never popped), or numerically `found ≈ M_earlier · expected`.
 /// The draw's `parent` (whose transforms it must carry) does not count.
@@ -443,7 +465,6 @@ fn leaked_from(
     draw: &Draw,
     parent: Option<&str>,
 ) -> Option<String> {
-    let camera_len = camera_factors(draw);
     gl.draws()
         .iter()
         .filter(|d| d.call < draw.call && parent.is_none_or(|p| !name_matches(&d.name, p)))
@@ -451,13 +472,19 @@ fn leaked_from(
         .find(|d| {
             let m = model_of(d);
             let numeric = !is_identity(m) && close(found, m * expected, POSE_TOL);
-            let structural = !is_identity(m)
-                && d.model_view.factors.len() > camera_len
-                && d.model_view.factors.len() < draw.model_view.factors.len()
-                && draw.model_view.factors.starts_with(&d.model_view.factors);
-            numeric || structural
+            numeric || carries_factors_of(draw, d)
         })
         .map(|d| d.name.clone())
+}
+
+/// Whether `draw`'s product starts with all of `earlier`'s (the camera's and more, not the
+/// identity): `earlier`'s transforms were never popped before `draw`.
+fn carries_factors_of(draw: &Draw, earlier: &Draw) -> bool {
+    let (mine, theirs) = (&draw.model_view.factors, &earlier.model_view.factors);
+    !is_identity(model_of(earlier))
+        && theirs.len() > camera_factors(draw)
+        && theirs.len() < mine.len()
+        && mine.starts_with(theirs)
 }
 
 /// How many leading factors of a draw's product are the camera (0 when they are not the

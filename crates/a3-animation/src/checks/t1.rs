@@ -8,9 +8,11 @@ use cg_harness::check::Failure;
 use cg_harness::text::{Text, t};
 
 use super::{
-    POSE_TOL, at_frame, close, each_frame, joined, nothing_drawn, object_label, pair, the_draw,
+    Diagnosis, POSE_TOL, at_frame, carries_factors_of, close, each_frame, joined, leaked_from,
+    nothing_drawn, object_label, pair, radians_for_degrees, sine_of_degrees, the_draw,
 };
-use crate::pose::{model_of, pose_error, seconds};
+use crate::oracle::{Variation, expected_model_with, local_at, phase_at};
+use crate::pose::{draws_named, model_of, pose_error, seconds};
 use crate::{DRIFT_FRAMES, FPS, Impl, Spec, SpecExt};
 
 /// Drift tolerance after 10⁶ frames (docs/numerics.md row 11): how far the pose at frame 10⁶ may be
@@ -37,23 +39,89 @@ fn own_pose(spec: &Spec, gl: &Gl, i: usize, frame: u64) -> Result<DMat4, Failure
     }
 }
 
-/// Object `i`'s pose relative to the draw just before its own in the frame (`M_prev⁻¹ · M`,
-/// NaN when that one's is singular; its own pose when it is drawn first). When `display()`
-/// leaves an object's transforms applied to the next (a missing glPushMatrix / glPopMatrix,
-/// `a3.t2`'s fault), the next object's model matrix is `M_prev · M`, and this takes the leak
-/// off, so `idle()`'s own motion is still measured.
-fn pose_after_previous(spec: &Spec, gl: &Gl, i: usize, frame: u64) -> Result<DMat4, Failure> {
+/// Object `i`'s pose relative to object `j`'s draw (`M_j⁻¹ · M_i`, NaN when `M_j` is
+/// singular) when `i`'s product carries all of `j`'s (`j` is not its parent), else `None`. When
+/// `display()` leaves an object's transforms applied to a later one (a missing glPushMatrix /
+/// glPopMatrix, `a3.t2`'s fault: the one just before, or a parent whose glPopMatrix popped its
+/// child's glPushMatrix instead), the later object's model matrix is `M_j · M_i`, and this takes
+/// the leak off, so `idle()`'s own motion is still measured. Only a leak seen in the products
+/// counts: relative to any earlier object, a motion with a wrong period can seem to have the
+/// right one (a child twice as fast, relative to an object with its parent's period).
+fn pose_after(spec: &Spec, gl: &Gl, i: usize, j: usize) -> Option<DMat4> {
+    if spec.objects[i].motion.parent() == Some(j) {
+        return None;
+    }
+    let (found, earlier) =
+        (draws_named(gl, &spec.objects[i].name), draws_named(gl, &spec.objects[j].name));
+    let ([draw], [before]) = (found.as_slice(), earlier.as_slice()) else { return None };
+    if !carries_factors_of(draw, before) {
+        return None;
+    }
+    let pm = model_of(before);
+    Some(if pm.determinant().abs() > 1e-9 { pm.inverse() * model_of(draw) } else { DMat4::NAN })
+}
+
+/// Whether object `i` is drawn in this frame with the transforms of an object drawn before it
+/// still applied (not its parent's), as `a3.t2.independent` reports it: a missing glPushMatrix /
+/// glPopMatrix in `display()`, which `a3.t2.stack` usually reports too.
+fn carries_a_leak(spec: &Spec, gl: &Gl, i: usize, frame: u64) -> bool {
     let object = &spec.objects[i];
-    let location = pair(&object_label(spec, i), "、", ", ", &at_frame(frame));
-    let draw = the_draw(gl, object, &location)?;
-    let m = model_of(draw);
-    let draws = gl.draws();
-    let previous = draws.iter().position(|d| std::ptr::eq(d, draw)).and_then(|k| k.checked_sub(1));
-    Ok(match previous.map(|k| model_of(&draws[k])) {
-        Some(pm) if pm.determinant().abs() > 1e-9 => pm.inverse() * m,
-        Some(_) => DMat4::NAN,
-        None => m,
-    })
+    let found = draws_named(gl, &object.name);
+    let [draw] = found.as_slice() else { return false };
+    let parent = object.motion.parent().and_then(|p| spec.objects.get(p)).map(|p| p.name.as_str());
+    let (m, expected) = (model_of(draw), expected_model_with(spec, i, frame, Variation::EXACT, 0));
+    !close(m, expected, POSE_TOL) && leaked_from(m, expected, gl, draw, parent).is_some()
+}
+
+/// Whether object `i`'s own poses (`own[frame]`, [`own_pose`]) are its motion evaluated with
+/// `v` at every frame measured, where that is not the specified motion: degrees handed to
+/// `sin` ([`Variation::SINES_OF_DEGREES`]), radians to glRotatef ([`Variation::RADIANS`]).
+fn explained_at_every_frame(spec: &Spec, i: usize, own: &[Option<DMat4>], v: Variation) -> bool {
+    let motion = &spec.objects[i].motion;
+    let p = motion.period_frames().max(1);
+    let frames: Vec<(u64, DMat4)> =
+        own.iter().enumerate().filter_map(|(f, m)| m.map(|m| (f as u64, m))).collect();
+    let at = |f: u64, v: Variation| local_at(motion, phase_at(f, p), f as f64 / p as f64, v);
+    frames.iter().any(|&(f, _)| !close(at(f, v), at(f, Variation::EXACT), POSE_TOL))
+        && frames.iter().all(|&(f, m)| close(m, at(f, v), POSE_TOL))
+}
+
+/// What the periods' measurement found besides the periods: each object's own pose at each
+/// frame measured, and whether `display()` leaks transforms into it ([`carries_a_leak`]).
+struct Measured {
+    /// Each object's period in frames ([`measure_periods`]).
+    periods: Vec<Option<u64>>,
+    /// `own[i][frame]`: object `i`'s own pose ([`own_pose`]).
+    own: Vec<Vec<Option<DMat4>>>,
+    /// `leaked[i]`: whether object `i` carries an earlier object's transforms in some frame
+    /// ([`carries_a_leak`]).
+    leaked: Vec<bool>,
+}
+
+impl Measured {
+    /// The likely cause of a wrong period of object `i` that is not `idle()`'s period: degrees
+    /// handed to `sin`, radians to glRotatef, or `display()`'s leak into it.
+    fn cause_of(&self, spec: &Spec, i: usize) -> Option<Diagnosis> {
+        let explained = |v: Variation| explained_at_every_frame(spec, i, &self.own[i], v);
+        if Variation::SINES_OF_DEGREES.into_iter().any(explained) {
+            return Some(sine_of_degrees());
+        }
+        if explained(Variation::RADIANS) {
+            return Some(radians_for_degrees());
+        }
+        self.leaked[i].then(|| {
+            Diagnosis::new(
+                t(
+                    "display() で glPushMatrix / glPopMatrix が足りず、前に描いた物体の変換が残ったまま描いているためと思われます（a3.t2.stack・a3.t2.independent を参照）。そのせいで、ほかの物体の動きまで重なって周期が変わって見えます。idle() の周期は正しいかもしれません",
+                    "most likely a glPushMatrix / glPopMatrix missing in display(): an earlier object's transforms are still applied when this one is drawn (see a3.t2.stack and a3.t2.independent), so its pose carries that object's motion too and seems to repeat with another period; idle()'s period may well be right",
+                ),
+                t(
+                    "先に a3.t2.stack と a3.t2.independent を直してください（各物体を glPushMatrix と glPopMatrix で囲む）。そのあと、このチェックは idle() の動きだけを測ります",
+                    "fix a3.t2.stack and a3.t2.independent first (each object between its own glPushMatrix and glPopMatrix); then this check measures idle()'s motion alone",
+                ),
+            )
+        })
+    }
 }
 
 /// The smallest `L ≤ max` with `pose(n + L) = pose(n)` at every reference frame `n`.
@@ -68,36 +136,44 @@ fn period_of(signal: &[Option<DMat4>], max: u64) -> Option<u64> {
 
 /// Each object's measured period in frames: the smallest `L ≤ 2·P_max` with
 /// `pose(n + L) = pose(n)` at every reference frame `n` (a child's pose taken relative to its
-/// parent). Where that is not the specified period but the pose relative to the draw before it
-/// has exactly the specified one, `display()` leaks transforms from one object to the next:
-/// that is `a3.t2`'s to report (`a3.t2.independent`), and `idle()`'s motion, measured past the leak,
-/// is right, so the specified period is taken. `Err` when an object is not drawn.
-fn measure_periods(spec: &Spec, imp: &Impl) -> Result<Vec<Option<u64>>, Failure> {
+/// parent). Where that is not the specified period but the pose relative to an object drawn
+/// before it has exactly the specified one ([`pose_after`]), `display()` leaks transforms from
+/// that object to this one: that is `a3.t2`'s to report (`a3.t2.stack`, `a3.t2.independent`),
+/// and `idle()`'s motion, measured past the leak, is right, so the specified period is taken.
+/// `Err` when an object is not drawn.
+fn measure_periods(spec: &Spec, imp: &Impl) -> Result<Measured, Failure> {
+    let n = spec.objects.len();
     let periods: Vec<u64> = spec.objects.iter().map(|o| o.motion.period_frames()).collect();
     let longest = periods.iter().copied().max().unwrap_or(1);
     let last = REPEAT_REFS[REPEAT_REFS.len() - 1] + 2 * longest;
-    // signals[i][frame], own pose and pose after the previous draw
-    let empty = vec![vec![None; last as usize + 1]; spec.objects.len()];
-    let (mut own, mut after) = (empty.clone(), empty);
+    // own[i][frame]: the own pose; after[i][j][frame]: the pose relative to object j's draw
+    let empty = vec![None; last as usize + 1];
+    let mut own = vec![empty.clone(); n];
+    let mut after = vec![vec![empty; n]; n];
+    let mut leaked = vec![false; n];
     each_frame(spec, imp, 1..=last, |frame, gl| {
         if gl.draws().is_empty() {
             return Err(nothing_drawn(at_frame(frame), "a3.t1 / a3.t2"));
         }
-        for i in 0..spec.objects.len() {
+        for i in 0..n {
             own[i][frame as usize] = Some(own_pose(spec, gl, i, frame)?);
-            after[i][frame as usize] = Some(pose_after_previous(spec, gl, i, frame)?);
+            for j in (0..n).filter(|&j| j != i) {
+                after[i][j][frame as usize] = pose_after(spec, gl, i, j);
+            }
+            leaked[i] = leaked[i] || carries_a_leak(spec, gl, i, frame);
         }
         Ok(())
     })?;
-    Ok(periods
+    let periods = periods
         .iter()
         .enumerate()
         .map(|(i, &expected)| {
             let found = period_of(&own[i], 2 * longest);
-            let past_leak = || period_of(&after[i], 2 * longest) == Some(expected);
+            let past_leak = || after[i].iter().any(|a| period_of(a, 2 * longest) == Some(expected));
             if found != Some(expected) && past_leak() { Some(expected) } else { found }
         })
-        .collect())
+        .collect();
+    Ok(Measured { periods, own, leaked })
 }
 
 fn frames_text(frames: u64) -> Text {
@@ -108,7 +184,7 @@ fn frames_text(frames: u64) -> Text {
 pub(super) fn periods(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     let measured = measure_periods(spec, imp)?;
     let longest = spec.objects.iter().map(|o| o.motion.period_frames()).max().unwrap_or(1);
-    for (i, (object, found)) in spec.objects.iter().zip(&measured).enumerate() {
+    for (i, (object, found)) in spec.objects.iter().zip(&measured.periods).enumerate() {
         let expected = object.motion.period_frames();
         if *found == Some(expected) {
             continue;
@@ -170,7 +246,12 @@ pub(super) fn periods(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                 ),
             ),
         };
-        let cause = if object.motion.parent().is_some() {
+        // Degrees or radians mixed up, or display()'s leak, before idle()'s period.
+        let (cause, hint, named) = match measured.cause_of(spec, i) {
+            Some(d) => (d.cause, d.hint, true),
+            None => (cause, hint, false),
+        };
+        let cause = if object.motion.parent().is_some() && !named {
             Text::new(
                 format!(
                     "{}（子の周期は親に対する動きの周期です。a3.t2.hierarchy も参照）",
@@ -199,8 +280,18 @@ pub(super) fn periods(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
 }
 
 pub(super) fn ratios(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
-    let measured = measure_periods(spec, imp)?;
+    let m = measure_periods(spec, imp)?;
+    let measured = &m.periods;
     let expected = spec.period_ratios();
+    // A likely cause that is not the periods in idle(), with the object it is that of: degrees
+    // or radians mixed up, or a leak in display().
+    let named_cause = |i: usize| {
+        m.cause_of(spec, i).map(|d| {
+            let label = object_label(spec, i);
+            let (ja, en) = (d.cause.ja, d.cause.en);
+            (Text::new(format!("{}: {ja}", label.ja), format!("{}: {en}", label.en)), d.hint)
+        })
+    };
     let names: Vec<Text> = (0..spec.objects.len()).map(|i| object_label(spec, i)).collect();
     let join = |v: &[u64]| v.iter().map(u64::to_string).collect::<Vec<_>>().join(" : ");
     let all = joined(&names, " : ");
@@ -209,6 +300,15 @@ pub(super) fn ratios(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         format!("{} = {}", all.en, join(&expected)),
     );
     if let Some(i) = measured.iter().position(|m| m.is_none_or(|l| l <= 1)) {
+        let (cause, hint) = named_cause(i).unwrap_or_else(|| {
+            (
+                t(
+                    "この物体の動きが周期的でない（または動かない）ので、周期の比が測れません",
+                    "this object's motion does not repeat (or does not move), so no ratio can be measured",
+                ),
+                t("先に a3.t1.periods を直してください", "fix a3.t1.periods first"),
+            )
+        });
         return Err(Failure::new(
             expected_text,
             Text::new(
@@ -217,11 +317,8 @@ pub(super) fn ratios(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             ),
         )
         .at(object_label(spec, i))
-        .cause(t(
-            "この物体の動きが周期的でない（または動かない）ので、周期の比が測れません",
-            "this object's motion does not repeat (or does not move), so no ratio can be measured",
-        ))
-        .hint(t("先に a3.t1.periods を直してください", "fix a3.t1.periods first")));
+        .cause(cause)
+        .hint(hint));
     }
     let found: Vec<u64> = measured.iter().map(|m| m.unwrap_or(1)).collect();
     let g = found.iter().copied().fold(0, crate::gcd).max(1);
@@ -230,6 +327,29 @@ pub(super) fn ratios(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         return Ok(());
     }
     let periods = joined(&found.iter().map(|&f| frames_text(f)).collect::<Vec<_>>(), ", ");
+    let own_periods = spec.objects.iter().map(|o| Some(o.motion.period_frames()));
+    // The objects off the specified period.
+    let off: Vec<usize> = own_periods
+        .zip(measured)
+        .enumerate()
+        .filter(|(_, (want, got))| want != *got)
+        .map(|(i, _)| i)
+        .collect();
+    let (cause, hint) = off
+        .iter()
+        .find_map(|&i| named_cause(i))
+        .unwrap_or_else(|| {
+            (
+                t(
+                    "物体同士の周期の比が指定と違います（「動きの周期（物体同士の回転周期）が異なる」はよくある間違い）",
+                    "the ratio of the objects' periods is not the specified one (a common mistake in this assignment)",
+                ),
+                t(
+                    "各物体の周期 T を指定の通りにし、同じ時刻 t から全部の変数を求めてください",
+                    "give each object its own specified period T and compute every variable from the same time t",
+                ),
+            )
+        });
     Err(Failure::new(
         expected_text,
         Text::new(
@@ -238,14 +358,8 @@ pub(super) fn ratios(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         ),
     )
     .at(joined(&names, ", "))
-    .cause(t(
-        "物体同士の周期の比が指定と違います（「動きの周期（物体同士の回転周期）が異なる」はよくある間違い）",
-        "the ratio of the objects' periods is not the specified one (a common mistake in this assignment)",
-    ))
-    .hint(t(
-        "各物体の周期 T を指定の通りにし、同じ時刻 t から全部の変数を求めてください",
-        "give each object its own specified period T and compute every variable from the same time t",
-    )))
+    .cause(cause)
+    .hint(hint))
 }
 
 /// The longest common period [`drift`] compares over: the early frame is then at most this far
@@ -273,7 +387,7 @@ const MAX_COMMON: u64 = DRIFT_FRAMES / 10;
 /// motion repeats, this check measures drift alone, whether or not the period is the specified
 /// one.
 pub(super) fn drift(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
-    let measured = measure_periods(spec, imp)?;
+    let measured = measure_periods(spec, imp)?.periods;
     let common = drift_period(spec, &measured)?;
     let early = match DRIFT_FRAMES % common {
         0 => common,

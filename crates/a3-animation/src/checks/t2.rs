@@ -446,7 +446,7 @@ pub(super) fn hierarchy(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         return Err(Failure::new(
             Text::new(
                 format!(
-                    "M_parent⁻¹ · M_child = Ry(θ)·T(0, 0, {radius}) → {}の座標系で原点 {o_expected}",
+                    "M_親⁻¹ · M_子 = Ry(θ)·T(0, 0, {radius}) → {}の座標系で原点 {o_expected}",
                     object_label(spec, p).ja
                 ),
                 format!(

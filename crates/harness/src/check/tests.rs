@@ -446,6 +446,31 @@ fn a_timeout_names_the_function_and_a_later_check_says_it_did_not_run_it() {
     assert!(batch.describe().unwrap().en.starts_with(
         "idle or display (exercises/src/a3.rs) was stopped after the time limit of 1.5 s"
     ));
+    // A batch whose worker said which function ran out, and at which frame (issue 10): named
+    // as `cg view` names it, with the frame.
+    let error = CallError::TimedOut {
+        limit: Duration::from_secs(20),
+        function: "a3.idle@401".into(),
+        earlier: false,
+    };
+    let text = Outcome::of_call(&error).describe().unwrap();
+    assert_eq!(
+        text.en,
+        "idle (exercises/src/a3.rs) was stopped at frame 401 after the time limit of 20 s: does it loop forever?"
+    );
+    assert_eq!(
+        text.ja,
+        "exercises/src/a3.rs の idle がフレーム 401 で制限時間 20 秒を超えても終わらないため止めました。無限ループになっていないか確認してください。"
+    );
+    let later = Outcome::TimedOut {
+        limit_ms: 20_000,
+        function: Some("a3.display@9".into()),
+        earlier: true,
+    };
+    assert_eq!(
+        later.describe().unwrap().en,
+        "not run: display (exercises/src/a3.rs) did not finish in an earlier check (above)"
+    );
     // JSON: as before, with the function when there is one; and it reads back (`cg watch`).
     let bare =
         serde_json::to_value(Outcome::TimedOut { limit_ms: 5, function: None, earlier: false })

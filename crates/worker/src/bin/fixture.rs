@@ -4,18 +4,25 @@
 // A stub as a student has it: the todo!() is the point.
 #![allow(clippy::todo)]
 
+use cg_student::a3;
 use cg_worker::serve::{Handler, handler, serve};
 
 fn main() -> std::io::Result<()> {
-    // `--memory-mb N`: the worker's own limit, as cg-check-runner sets it.
+    // `--memory-mb N`: the worker's own limit, as cg-check-runner sets it. `--a3-loop idle` or
+    // `--a3-loop display`: a3's table, with that function looping from frame 5 on.
     let args: Vec<String> = std::env::args().skip(1).collect();
-    if let [flag, mb] = args.as_slice()
-        && flag == "--memory-mb"
-    {
-        let mb: u64 = mb.parse().map_err(std::io::Error::other)?;
-        cg_worker::limit_memory(mb)?;
+    let mut a3_loop = None;
+    for pair in args.chunks(2) {
+        match pair {
+            [flag, mb] if flag == "--memory-mb" => {
+                let mb: u64 = mb.parse().map_err(std::io::Error::other)?;
+                cg_worker::limit_memory(mb)?;
+            }
+            [flag, which] if flag == "--a3-loop" => a3_loop = Some(which.clone()),
+            _ => return Err(std::io::Error::other(format!("unknown arguments {pair:?}"))),
+        }
     }
-    let handlers: Vec<(&str, Handler)> = vec![
+    let mut handlers: Vec<(&str, Handler)> = vec![
         ("add", handler(|(a, b): (i64, i64)| a + b)),
         ("todo", handler(|(): ()| -> i64 { todo!("t.t1: write it") })),
         (
@@ -94,8 +101,51 @@ fn main() -> std::io::Result<()> {
                 1
             }),
         ),
+        (
+            // Says it runs another batch's function (a worker's word is only a report: the
+            // caller names its own function), then loops.
+            "a1.faces",
+            handler(|(): ()| -> i64 {
+                cg_worker::serve::running("a3.display", Some(3));
+                loop {
+                    std::hint::spin_loop();
+                }
+            }),
+        ),
     ];
+    match a3_loop.as_deref() {
+        Some("idle") => handlers.extend(cg_worker::tables::a3(a3::Impl {
+            warmup_display: |_, _| {},
+            idle: looping_idle,
+            display: |_, _, _| {},
+        })),
+        Some("display") => handlers.extend(cg_worker::tables::a3(a3::Impl {
+            warmup_display: |_, _| {},
+            idle: |_, state| state.frame += 1,
+            display: looping_display,
+        })),
+        _ => {}
+    }
     serve(&handlers)
+}
+
+/// An `idle` that loops from frame 5 on.
+fn looping_idle(_: &a3::Spec, state: &mut a3::State) {
+    state.frame += 1;
+    if state.frame >= 5 {
+        loop {
+            std::hint::spin_loop();
+        }
+    }
+}
+
+/// A `display` that loops from frame 5 on.
+fn looping_display(_: &a3::Spec, state: &a3::State, _: &mut cg_student::gl::Gl) {
+    if state.frame >= 5 {
+        loop {
+            std::hint::spin_loop();
+        }
+    }
 }
 
 /// Recursion without end in practice (each frame holds 4 KiB), to overflow the stack.
