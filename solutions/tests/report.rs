@@ -28,6 +28,7 @@ fn kit() -> Kit {
         impls: impls(),
         student_file: || PathBuf::from("/nonexistent/student.toml"),
         worker: None,
+        time_limit: app::TIME_LIMIT,
     }
 }
 
@@ -551,8 +552,7 @@ fn a_data_files_report_keeps_the_recorded_student_number() {
     let dir = recorded();
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join("student.toml"), "student = \"20250017\"\ntable = 1\n").unwrap();
-    let kit =
-        Kit { impls: impls(), student_file: || recorded().join("student.toml"), worker: None };
+    let kit = Kit { student_file: || recorded().join("student.toml"), ..self::kit() };
     let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/report/lecture-pyramid.md");
     let source = Source { student: None, table: None, data: Some(data), encoding: None };
     let gathered = app::gather(&source, &kit, Lang::En).unwrap();
@@ -561,4 +561,71 @@ fn a_data_files_report_keeps_the_recorded_student_number() {
     let gathered = app::gather(&source, &self::kit(), Lang::En).unwrap();
     assert_eq!(gathered.context.student, None, "nothing recorded");
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `report fill --no-render`: the places of the rendered images say that drawing was turned off
+/// (they said "not derived yet: a2" of a correct student), and each fragment ends its line.
+#[test]
+fn no_render_says_the_images_are_not_drawn_not_that_they_are_not_derived() {
+    for lang in [Lang::Ja, Lang::En] {
+        let dir = scratch(&format!("no-render-{lang}"));
+        let args = FillArgs {
+            derive: DeriveArgs {
+                source: Source { student: Some(STUDENTS[2].to_owned()), ..Source::default() },
+                output: dir.clone(),
+                no_render: true,
+            },
+            force: false,
+        };
+        let written = app::fill_to(&args, &kit(), lang).unwrap();
+        assert!(written.missing.is_empty(), "{:?}", written.missing);
+        let said = t("（描いていません: --no-render）", "(not drawn: --no-render)");
+        let said = said.get(lang);
+        for id in ["a1", "a2", "a3", "a4", "s"] {
+            let md =
+                std::fs::read_to_string(dir.join(format!("fragments/{id}.render.md"))).unwrap();
+            assert_eq!(md, format!("> {said}\n"), "{lang} {id}");
+            let tex =
+                std::fs::read_to_string(dir.join(format!("fragments/{id}.render.tex"))).unwrap();
+            assert!(tex.ends_with('\n') && tex.contains("-{}-no-render"), "{lang} {id}: {tex:?}");
+        }
+        let report = std::fs::read_to_string(dir.join("report.md")).unwrap();
+        assert!(report.contains(said), "{lang}");
+        for name in written.files.iter().filter(|f| f.starts_with("fragments/")) {
+            let text = std::fs::read_to_string(dir.join(name)).unwrap();
+            assert!(text.ends_with('\n'), "{lang} {name}: {text:?}");
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
+
+/// a4's sampler (a4.t3) needs nothing of a4.t1 and a4.t2: with texture coordinates that are not
+/// finite, its fragment still shows the student's sampler (it said "not derived yet: a4.t2: …
+/// not finite"); with a sampler not written either, it says that of the sampler.
+#[test]
+fn the_sampler_fragment_needs_only_the_sampler() {
+    let mut impls = impls();
+    impls.a4.tex_coords = |_, _, _| [cg_student::glam::Vec2::NAN; 4];
+    let source = Source { student: Some(STUDENTS[0].to_owned()), ..Source::default() };
+    let g = app::gather(&source, &Kit { impls, ..kit() }, Lang::En).unwrap();
+    assert!(g.derived.a4.is_none());
+    let tasks: Vec<&str> = g.context.missing.iter().map(|m| m.task.as_str()).collect();
+    assert_eq!(tasks, ["a4.t2"], "{:?}", g.context.missing);
+    for (lang, format) in [(Lang::En, Format::Markdown), (Lang::Ja, Format::Latex)] {
+        let values = fill::values(&g.derived, &g.context, lang, format);
+        let sampler = &values["a4.sampler"];
+        let wrap = t("GL\\_CLAMP\\_TO\\_EDGE (Wrap::Clamp)", "GL_CLAMP_TO_EDGE (Wrap::Clamp)");
+        assert!(sampler.contains(wrap.get(lang)), "{lang}: {sampler}");
+        assert!(!sampler.contains("a4.t2:"), "{lang}: {sampler}");
+        // The rest of a4 is still not derived, and says why.
+        assert!(values["a4.table"].contains("a4.t2"), "{lang}");
+    }
+    impls.a4.sampler = || panic!("no sampler yet");
+    let g = app::gather(&source, &Kit { impls, ..kit() }, Lang::En).unwrap();
+    let sampler = &fill::values(&g.derived, &g.context, Lang::En, Format::Markdown)["a4.sampler"];
+    assert!(
+        sampler.starts_with("> (not derived yet: a4.t3: sampler() panicked: no sampler yet"),
+        "{sampler}"
+    );
+    assert!(!sampler.contains("a4.t2"), "{sampler}");
 }

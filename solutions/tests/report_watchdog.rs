@@ -18,7 +18,12 @@ fn kit() -> Kit {
     impls.a1.vertices = |_| loop {
         std::hint::spin_loop();
     };
-    Kit { impls, student_file: || PathBuf::from("/nonexistent/student.toml"), worker: None }
+    Kit {
+        impls,
+        student_file: || PathBuf::from("/nonexistent/student.toml"),
+        worker: None,
+        time_limit: app::TIME_LIMIT,
+    }
 }
 
 /// In the child: derive the report with the looping function, under a 1-second watchdog. Run

@@ -13,9 +13,11 @@
 //! (UTF-8, UTF-16 with or without a BOM, or Shift_JIS, detected; `--encoding` names it), and
 //! the summary says when it was not UTF-8 ("read as Shift_JIS"). Everything written is UTF-8.
 
+use std::cell::RefCell;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+use std::time::Duration;
 
 use cg_assign::Variants;
 use cg_core::lang::{Lang, t};
@@ -109,7 +111,8 @@ pub struct CheckArgs {
     pub json: bool,
 }
 
-/// How long one of the student's functions may run while a report command calls it.
+/// How long one of the student's functions may run while a report command calls it
+/// ([`Kit::exercises`]'s [`Kit::time_limit`]).
 pub const TIME_LIMIT: std::time::Duration = cg_assign::local::CALL_LIMIT;
 
 /// For a [`Kit`] whose functions run in this process (no [`Kit::worker`]): a student's function
@@ -130,6 +133,9 @@ pub struct Kit {
     /// Starts the worker that `impls` call when they are the worker's ([`Impls::worker`]);
     /// `None` when they run in this process (the kit's tests, with its reference solutions).
     pub worker: Option<fn(Lang) -> Result<cg_worker::Worker, String>>,
+    /// How long one of the student's functions may run in the worker ([`TIME_LIMIT`]; the
+    /// tests' worker is given less).
+    pub time_limit: std::time::Duration,
 }
 
 impl Kit {
@@ -143,14 +149,16 @@ impl Kit {
             worker: Some(|lang| {
                 cg_assign::local::worker_for_this_kit(cg_assign::local::MEMORY_MB, lang)
             }),
+            time_limit: TIME_LIMIT,
         }
     }
 }
 
 /// Runs a report command: [`Ending::Mistakes`] when a check found mistakes,
 /// [`Ending::TimedOut`] when one of the student's functions ran out of its time (said on
-/// standard error; the parts it and the functions after it were for are missing, each call
-/// after it failing at once).
+/// standard error). The assignments are derived (and drawn) one at a time, each in a session of
+/// its own with the worker: a function that ran out of time leaves out the parts of its own
+/// assignment that call it, and holds up no other assignment's.
 ///
 /// # Errors
 /// What could not be read or written, as a message in `lang`.
@@ -164,21 +172,19 @@ pub fn run(command: &Command, kit: &Kit, lang: Lang) -> Result<Ending, String> {
     match kit.worker.filter(|_| source.data.is_none()) {
         Some(start) => {
             let worker = start(lang)?;
-            let (passed, worker) =
-                cg_worker::proxy::with_worker_until_timeout(worker, TIME_LIMIT, || {
-                    run_here(command, kit, lang)
-                });
+            let (passed, timeouts) =
+                with_parts(worker, kit.time_limit, || run_here(command, kit, lang));
             let passed = passed?;
-            if worker.timeouts > 0 {
-                let seconds = TIME_LIMIT.as_secs();
+            if timeouts > 0 {
+                let seconds = kit.time_limit.as_secs_f64();
                 eprintln!(
                     "{}",
                     Text::new(
                         format!(
-                            "あなたの関数が {seconds} 秒たっても戻りませんでした。無限ループになっていないか確認してください（その関数の部分と、そのあとの関数の部分は導出していません）"
+                            "あなたの関数が {seconds} 秒たっても戻りませんでした。無限ループになっていないか確認してください（その関数を呼ぶ部分は導出・描画していません。ほかの部分は導出しました）"
                         ),
                         format!(
-                            "one of your functions did not return within {seconds} s: does it loop forever? (its part, and the parts of the functions after it, were not derived)"
+                            "one of your functions did not return within {seconds} s: does it loop forever? (the parts that call it were not derived or drawn; the others were)"
                         ),
                     )
                     .get(lang)
@@ -189,6 +195,51 @@ pub fn run(command: &Command, kit: &Kit, lang: Lang) -> Result<Ending, String> {
         }
         None => run_here(command, kit, lang).map(Ending::passed),
     }
+}
+
+thread_local! {
+    /// The worker of the running report command ([`with_parts`]) and its time limit, between
+    /// the sessions of [`in_part`]; `None` when the student's functions run in this process.
+    static WORKER: RefCell<Option<(cg_worker::Worker, Duration)>> = const { RefCell::new(None) };
+}
+
+/// Runs `f` (a report command) with `worker` at hand for [`in_part`]: its value, and how many
+/// of the student's calls ran out of `limit`.
+fn with_parts<T>(worker: cg_worker::Worker, limit: Duration, f: impl FnOnce() -> T) -> (T, usize) {
+    /// Takes the worker back, also when `f` panics (dropping it stops it).
+    struct Taken;
+    impl Drop for Taken {
+        fn drop(&mut self) {
+            WORKER.with(|w| w.borrow_mut().take());
+        }
+    }
+    let taken = Taken;
+    WORKER.with(|w| *w.borrow_mut() = Some((worker, limit)));
+    let value = f();
+    let timeouts = WORKER.with(|w| w.borrow().as_ref().map_or(0, |(worker, _)| worker.timeouts));
+    drop(taken);
+    (value, timeouts)
+}
+
+/// Runs `f`, one part of a report command (one assignment derived and drawn), in a session of
+/// its own with the worker of [`with_parts`] (`cg_worker::proxy::with_worker_until_timeout`);
+/// just `f` when there is none (the functions run in this process).
+///
+/// The session is the part's alone: a call outside a check that comes after one of its calls
+/// ran out of time fails at once, but only within the part. A function of a3 that loops leaves
+/// a2's parts alone (they were "not run" because of it when the whole command was one session),
+/// and the worker it stopped is started afresh by the next call.
+fn in_part<T>(f: impl FnOnce() -> T) -> T {
+    let Some((mut worker, limit)) = WORKER.with(|w| w.borrow_mut().take()) else {
+        return f();
+    };
+    // The session counts this part's timeouts alone (a count above 0 fails its calls outside
+    // a check at once); the command's total is kept on the worker.
+    let before = std::mem::take(&mut worker.timeouts);
+    let (value, mut worker) = cg_worker::proxy::with_worker_until_timeout(worker, limit, f);
+    worker.timeouts += before;
+    WORKER.with(|w| *w.borrow_mut() = Some((worker, limit)));
+    value
 }
 
 /// [`run`], the student's functions being ready to call.
@@ -313,6 +364,29 @@ fn polygon_from(path: &Path, text: &str, lang: Lang) -> Result<PolygonData, Stri
 /// # Errors
 /// A bad student number or student file, or an unreadable data file.
 pub fn gather(source: &Source, kit: &Kit, lang: Lang) -> Result<Gathered, String> {
+    gather_drawing(source, kit, None, lang)
+}
+
+/// Where [`gather_drawing`] draws each assignment's result.
+struct Drawing<'a> {
+    /// The output folder.
+    folder: &'a Path,
+    /// What was written.
+    written: &'a mut Written,
+}
+
+/// [`gather`], and with `drawing`, each assignment's result drawn ([`render_one`]) right after
+/// it is derived, in the same part ([`in_part`]): a function that ran out of time while it was
+/// derived is not waited for again while it is drawn.
+///
+/// # Errors
+/// As [`gather`]; an image that cannot be drawn or written.
+fn gather_drawing(
+    source: &Source,
+    kit: &Kit,
+    mut drawing: Option<Drawing<'_>>,
+    lang: Lang,
+) -> Result<Gathered, String> {
     if let Some(path) = &source.data {
         let (polygon, encoding) = read_data_in(path, source.encoding, lang)?;
         // The data is not the assignment's, but the report is still the student's: their
@@ -343,7 +417,6 @@ pub fn gather(source: &Source, kit: &Kit, lang: Lang) -> Result<Gathered, String
         lang,
     )?;
     let a = Variants::for_student(&record.student, record.table);
-    let (derived, missing) = derive::derive(&a, &kit.impls);
     let assignments: BTreeMap<String, String> = Which::ALL
         .iter()
         .filter(|w| w.in_report())
@@ -353,11 +426,36 @@ pub fn gather(source: &Source, kit: &Kit, lang: Lang) -> Result<Gathered, String
         student: Some(record.student.to_string()),
         table: Some(record.table.to_string()),
         assignments,
-        renders: Vec::new(),
-        missing,
         variants: Some(a.clone()),
+        ..Context::default()
     };
-    Ok(Gathered { derived, context, assignment: Some(a), read: Vec::new() })
+    let derived = Derived { student: Some(record.student.to_string()), ..Derived::default() };
+    let mut g = Gathered { derived, context, assignment: Some(a.clone()), read: Vec::new() };
+    for which in Which::ALL.iter().copied().filter(|w| w.in_report()) {
+        in_part(|| {
+            let (derived, missing) = (&mut g.derived, &mut g.context.missing);
+            derive::derive_one(&a, which, &kit.impls, derived, missing);
+            if which == Which::a4 && g.derived.a4.is_none() {
+                sampler_alone(&kit.impls, &mut g.context);
+            }
+            match drawing.as_mut() {
+                Some(d) => render_one(&mut g, &a, which, &kit.impls, d, lang),
+                None => Ok(()),
+            }
+        })?;
+    }
+    Ok(g)
+}
+
+/// a4's sampler (a4.t3) when the rest of a4 did not derive (a4's part stops before it at a
+/// failing a4.t1 or a4.t2): it needs neither, so its fragment shows it, or why not, on its own.
+fn sampler_alone(impls: &Impls, context: &mut Context) {
+    match guarded(impls.a4.sampler) {
+        Ok(s) => context.sampler = Some(cg_assign::cg_a4::core_sampler(s)),
+        // A file that does not compile is said once, for the whole of a4.
+        Err(Outcome::DoesNotCompile { .. }) => {}
+        Err(o) => context.missing.push(Missing::from_outcome("a4.t3", "sampler()", o)),
+    }
 }
 
 /// `folder` and the folders above it, made where missing; an error names it and says why in
@@ -387,50 +485,94 @@ fn write(
     Ok(())
 }
 
-/// Draws each assignment's result to `render-aN.png`; what cannot be drawn goes to `missing`.
-fn render_all(
+/// Draws `which`'s result to `render-aN.png`; what cannot be drawn goes to `missing`.
+///
+/// # Errors
+/// The image cannot be rendered or written.
+fn render_one(
     g: &mut Gathered,
+    a: &Variants,
+    which: Which,
     impls: &Impls,
-    folder: &Path,
-    written: &mut Written,
+    to: &mut Drawing<'_>,
     lang: Lang,
 ) -> Result<(), String> {
-    let Some(a) = g.assignment.clone() else { return Ok(()) };
-    for which in Which::ALL.iter().copied().filter(|w| w.in_report()) {
-        let id = which.id();
-        let scene = match guarded(|| a.view(which, impls, which.report_time())) {
-            Ok(Ok(scene)) => scene,
-            Ok(Err(why)) => {
+    let id = which.id();
+    let scene = match drawn(|| a.view(which, impls, which.report_time())) {
+        Ok(Ok(scene)) => scene,
+        Ok(Err(why)) => {
+            g.context.missing.push(Missing { task: id.to_owned(), why });
+            return Ok(());
+        }
+        // A function that ran out of time above (while the part was derived): said there, and
+        // not waited for again.
+        Err(Outcome::TimedOut { function: Some(function), earlier: true, .. }) => {
+            g.context
+                .missing
+                .push(Missing { task: id.to_owned(), why: timed_out_above(&function) });
+            return Ok(());
+        }
+        Err(outcome) => {
+            let why = match outcome {
+                Outcome::NotDone { message } => Text::new(
+                    cg_harness::check::stub_message(&message, Lang::Ja),
+                    cg_harness::check::stub_message(&message, Lang::En),
+                ),
+                other => other
+                    .describe()
+                    .unwrap_or_else(|| Text::new("結果が得られませんでした", "it gave no result")),
+            };
+            if !g.context.missing.iter().any(|m| m.task.starts_with(id)) {
                 g.context.missing.push(Missing { task: id.to_owned(), why });
-                continue;
             }
-            Err(outcome) => {
-                let why = match outcome {
-                    Outcome::NotDone { message } => Text::new(
-                        cg_harness::check::stub_message(&message, Lang::Ja),
-                        cg_harness::check::stub_message(&message, Lang::En),
-                    ),
-                    other => other.describe().unwrap_or_else(|| {
-                        Text::new("結果が得られませんでした", "it gave no result")
-                    }),
-                };
-                if !g.context.missing.iter().any(|m| m.task.starts_with(id)) {
-                    g.context.missing.push(Missing { task: id.to_owned(), why });
-                }
-                continue;
-            }
-        };
-        let image = cg_raster::render(&scene, &cg_raster::Options::default())
-            .map_err(|e| e.message(lang))?
-            .image;
-        let name = files::render_png(id);
-        let path = folder.join(&name);
-        make_folder(folder, lang)?;
-        cg_scene::save_png(&path, &image).map_err(|e| e.describe(lang))?;
-        written.files.push(name);
-        g.context.renders.push(id.to_owned());
-    }
+            return Ok(());
+        }
+    };
+    let image = cg_raster::render(&scene, &cg_raster::Options::default())
+        .map_err(|e| e.message(lang))?
+        .image;
+    let name = files::render_png(id);
+    let path = to.folder.join(&name);
+    make_folder(to.folder, lang)?;
+    cg_scene::save_png(&path, &image).map_err(|e| e.describe(lang))?;
+    to.written.files.push(name);
+    g.context.renders.push(id.to_owned());
     Ok(())
+}
+
+/// `f` (an assignment's view) with the student's functions guarded ([`guarded`]); in a worker,
+/// its calls are judged as a check's are (`cg_harness::check::run`): a call of a function that
+/// already ran out of time in this part fails at once, [`Outcome::TimedOut`] with `earlier`,
+/// instead of waiting the whole time limit once more. A stub's marker changes nothing, as with
+/// [`guarded`]: what the stub returned is drawn.
+fn drawn<T>(f: impl FnOnce() -> T) -> Result<T, Outcome> {
+    if !cg_worker::proxy::active() {
+        return guarded(f);
+    }
+    let mut value = None;
+    let result = cg_harness::check::run("report.render", Text::default(), || {
+        value = Some(f());
+        Ok(())
+    });
+    value.ok_or(result.outcome)
+}
+
+/// Why a result is not drawn: the worker's `function` (`a3.idle`; a batch names the student's
+/// functions it runs) ran out of time above, while its part was derived.
+fn timed_out_above(function: &str) -> Text {
+    let module = function.split('.').next().unwrap_or_default();
+    let names: Vec<&str> = cg_worker::proxy::student_functions(function)
+        .into_iter()
+        .map(|f| f.split_once('.').map_or(f, |(_, name)| name))
+        .collect();
+    let file = format!("exercises/src/{module}.rs");
+    Text::new(
+        format!(
+            "図を描いていません: {file} の {} が上で制限時間内に終わりませんでした",
+            names.join(" か ")
+        ),
+        format!("not drawn: {} ({file}) ran out of time above", names.join(" or ")),
+    )
 }
 
 /// A texture (rows from the bottom up) as an image (rows from the top down).
@@ -478,7 +620,10 @@ fn write_derived(
         };
         let values = fill::values(&g.derived, &g.context, lang, format);
         for (key, value) in &values {
-            write(folder, &format!("fragments/{key}.{ext}"), value.as_bytes(), written, lang)?;
+            // A file of its own ends its last line (a table's does; "not derived yet" did not).
+            let line_end = if value.ends_with('\n') { "" } else { "\n" };
+            let text = format!("{value}{line_end}");
+            write(folder, &format!("fragments/{key}.{ext}"), text.as_bytes(), written, lang)?;
         }
         all.push((format, values));
     }
@@ -495,11 +640,12 @@ pub fn derive_to(args: &DeriveArgs, kit: &Kit, lang: Lang) -> Result<Written, St
 }
 
 fn derive_gathered(args: &DeriveArgs, kit: &Kit, lang: Lang) -> Result<(Values, Written), String> {
-    let mut g = gather(&args.source, kit, lang)?;
     let mut written = Written { folder: args.output.clone(), ..Written::default() };
-    if !args.no_render {
-        render_all(&mut g, &kit.impls, &args.output, &mut written, lang)?;
-    }
+    let drawing =
+        (!args.no_render).then(|| Drawing { folder: &args.output, written: &mut written });
+    let mut g = gather_drawing(&args.source, kit, drawing, lang)?;
+    // Drawing was turned off: the images' places say so, not "not derived yet".
+    g.context.no_render = args.no_render;
     let values = write_derived(&g, &args.output, lang, &mut written)?;
     written.missing = g.context.missing;
     written.read = g.read;

@@ -8,7 +8,7 @@
 //! from the assignment alone — and names each of the student's functions it could not call. A data file gives the polygon model alone
 //! ([`polygon_from_data`]).
 
-use cg_assign::{Derived, Impls, Variants};
+use cg_assign::{Derived, Impls, Variants, Which};
 
 pub use cg_assign::cg_a1::report::polygon_from_data;
 pub use cg_harness::report::Missing;
@@ -19,6 +19,33 @@ pub fn derive(assignment: &Variants, impls: &Impls) -> (Derived, Vec<Missing>) {
     assignment.derive(impls)
 }
 
+macro_rules! derive_one_from_list {
+    (() $($id:ident : $unit:path,)*) => {
+        /// One assignment's part of [`derive()`] into `derived` (nothing for one without a
+        /// section in the report), what it could not derive added to `missing`: the report
+        /// derives (and draws) one assignment at a time, so that a function of one assignment
+        /// that ran out of time holds up none of the others' (`crate::app`).
+        pub fn derive_one(
+            assignment: &Variants,
+            which: Which,
+            impls: &Impls,
+            derived: &mut Derived,
+            missing: &mut Vec<Missing>,
+        ) {
+            match which {
+                $(Which::$id => if <$unit as cg_harness::Assignment>::IN_REPORT {
+                    derived.$id = cg_harness::report::take(
+                        <$unit as cg_harness::Assignment>::report(&assignment.$id, &impls.$id),
+                        missing,
+                    );
+                },)*
+            }
+        }
+    };
+}
+
+cg_assign::for_each_assignment!(derive_one_from_list!());
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -28,6 +55,21 @@ mod tests {
     use cg_harness::{StudentNumber, TableVersion};
 
     // --- the pristine stubs --------------------------------------------------------------
+
+    /// The assignments derived one at a time ([`derive_one`], as the report does) give what
+    /// [`derive()`] gives, the missing parts in the same order.
+    #[test]
+    fn one_at_a_time_is_the_same_as_all_at_once() {
+        let student: StudentNumber = "20260002".parse().unwrap();
+        let assignment = Variants::for_student(&student, TableVersion::V1);
+        let impls = cg_assign::impls!(cg_exercises);
+        let mut derived = Derived { student: Some(student.to_string()), ..Derived::default() };
+        let mut missing = Vec::new();
+        for &which in Which::ALL {
+            derive_one(&assignment, which, &impls, &mut derived, &mut missing);
+        }
+        assert_eq!((derived, missing), derive(&assignment, &impls));
+    }
 
     #[test]
     fn the_stubs_leave_every_part_missing_with_its_task_and_nothing_panics() {

@@ -14,7 +14,7 @@ use crate::model::Derived;
 use crate::periods;
 use crate::shading;
 use crate::tables;
-use crate::template::{Format, latex_escape, not_yet};
+use crate::template::{Format, latex_escape, not_drawn, not_yet};
 
 /// The files the figures and images of a filled report refer to, relative to the report (they
 /// are written next to it by [`crate::app`]).
@@ -58,6 +58,12 @@ pub struct Context {
     pub assignments: BTreeMap<String, String>,
     /// The assignments whose rendered image was written (`a1` … `a4`, `s`).
     pub renders: Vec<String>,
+    /// Whether drawing was turned off (`--no-render`): the rendered images' places say so,
+    /// instead of "not derived yet".
+    pub no_render: bool,
+    /// The student's sampler (a4.t3) when the rest of a4 did not derive: it needs nothing of
+    /// a4.t1 or a4.t2, so its fragment shows it all the same.
+    pub sampler: Option<cg_core::texture::Sampler>,
     /// What could not be derived, and why.
     pub missing: Vec<Missing>,
     /// The student's assignment, when known: what follows from it alone (the periods of `a3`,
@@ -145,6 +151,8 @@ pub fn values(
                 _ => t("実行結果", "the result"),
             };
             image(&files::render_png(id), caption.get(lang), format)
+        } else if ctx.no_render {
+            not_drawn("--no-render", lang, format)
         } else {
             missing_text(ctx, id, lang, format)
         };
@@ -231,9 +239,18 @@ pub fn values(
             );
         }
         None => {
-            for k in ["a4.formula", "a4.table", "a4.figure", "a4.sampler"] {
+            for k in ["a4.formula", "a4.table", "a4.figure"] {
                 put(k, missing_text(ctx, "a4", lang, format));
             }
+            // The sampler needs nothing of the rest: said on its own.
+            let sampler = match ctx.sampler {
+                Some(s) => tables::sampler_text(s, None, lang, format),
+                None if ctx.missing.iter().any(|m| m.task.starts_with("a4.t3")) => {
+                    missing_text(ctx, "a4.t3", lang, format)
+                }
+                None => missing_text(ctx, "a4", lang, format),
+            };
+            put("a4.sampler", sampler);
         }
     }
 

@@ -14,7 +14,7 @@
 use cg_core::glam::{Mat4, Vec2, Vec3};
 use cg_core::lang::{Lang, t};
 use cg_core::product::{MatrixProduct, format_number};
-use cg_core::texture::{Filter, Wrap};
+use cg_core::texture::{Filter, Sampler, Wrap};
 use cg_harness::Text;
 
 use crate::model::{NamedMatrix, PolygonData, TextureData};
@@ -556,7 +556,19 @@ pub(crate) fn formula_words(words: &Text, tex: &TextureData, lang: Lang, format:
 /// ground square shows (for the choice of filter); `None` when a4.t3 did not derive.
 #[must_use]
 pub fn sampler(tex: &TextureData, lang: Lang, format: Format) -> Option<String> {
-    let s = tex.sampler?;
+    Some(sampler_text(tex.sampler?, Some(tex.texels_per_square), lang, format))
+}
+
+/// The sampler `s` (a4.t3) with the OpenGL names; with `texels_per_square`, how many pixels of
+/// the image one ground square shows; without it (a4.t1 or a4.t2 did not derive: the sampler
+/// does not need them), that this follows once they derive.
+#[must_use]
+pub fn sampler_text(
+    s: Sampler,
+    texels_per_square: Option<Vec2>,
+    lang: Lang,
+    format: Format,
+) -> String {
     let filter = match s.filter {
         Filter::Nearest => "GL_NEAREST (Filter::Nearest)",
         Filter::Bilinear => "GL_LINEAR (Filter::Bilinear)",
@@ -566,20 +578,28 @@ pub fn sampler(tex: &TextureData, lang: Lang, format: Format) -> Option<String> 
         Wrap::Clamp => "GL_CLAMP_TO_EDGE (Wrap::Clamp)",
     };
     let (u, v) = (wrap(s.wrap_u), wrap(s.wrap_v));
-    let (x, y) = (format_number(tex.texels_per_square.x), format_number(tex.texels_per_square.y));
+    let pixels = match texels_per_square {
+        Some(t) => {
+            let (x, y) = (format_number(t.x), format_number(t.y));
+            Text::new(
+                format!("地面の四角形 1 つに画像の {x} × {y} 画素が貼られる。"),
+                format!("One ground square shows {x} × {y} pixels of the image."),
+            )
+        }
+        None => t(
+            "（地面の四角形 1 つに貼られる画素の数は、a4.t1 と a4.t2 が導出できると書かれます）",
+            "(How many pixels of the image one ground square shows is written once a4.t1 and a4.t2 derive.)",
+        ),
+    };
     let text = Text::new(
-        format!(
-            "フィルタ: {filter}。折り返し: s 方向 {u}、t 方向 {v}。地面の四角形 1 つに画像の {x} × {y} 画素が貼られる。"
-        ),
-        format!(
-            "Filter: {filter}. Wrap: {u} along s, {v} along t. One ground square shows {x} × {y} pixels of the image."
-        ),
+        format!("フィルタ: {filter}。折り返し: s 方向 {u}、t 方向 {v}。{}", pixels.ja),
+        format!("Filter: {filter}. Wrap: {u} along s, {v} along t. {}", pixels.en),
     );
     let text = text.get(lang);
-    Some(match format {
+    match format {
         Format::Markdown => format!("{text}\n"),
         Format::Latex => format!("{}\n", tex_text(text)),
-    })
+    }
 }
 
 #[cfg(test)]

@@ -115,6 +115,18 @@ pub fn not_yet(why: &str, lang: Lang, format: Format) -> String {
     }
 }
 
+/// The text put where an assignment's result is not drawn (`why`: `--no-render`), in the
+/// report's language and format, as visible as [`not_yet`]'s.
+#[must_use]
+pub fn not_drawn(why: &str, lang: Lang, format: Format) -> String {
+    let text = Text::new(format!("（描いていません: {why}）"), format!("(not drawn: {why})"));
+    let text = text.get(lang);
+    match format {
+        Format::Markdown => format!("> {text}"),
+        Format::Latex => format!("\\textbf{{{}}}", latex_escape(text)),
+    }
+}
+
 /// Text made safe for LaTeX: `\ { } $ & # ^ _ % ~` escaped, `--` kept as two hyphens (a command
 /// line's `--release`, not an en dash), and the symbols the text fonts lack (`≤ ≥ θ φ ω π η ⁶ ⁿ
 /// ₁ …`) set in math or as super- and subscripts.
