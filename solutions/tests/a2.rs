@@ -346,8 +346,104 @@ fn the_view_draws_the_students_frame() {
         // The scripted drags turn the camera by 40° from the start (and 30° per second).
         let later = cg_a2::view(&spec, &cg_solutions::a2::implementation(), 2.0).expect("a scene");
         assert_ne!(scene.objects[0].transform, later.objects[0].transform, "time turns the view");
-        // The stubs draw nothing yet: the view says so instead of an empty picture.
-        let why = cg_a2::view(&spec, &cg_exercises::a2::implementation(), 0.0).unwrap_err();
-        assert!(why.ja.contains("a2.t3") && why.en.contains("a2.t3"), "{why:?}");
+        // The stubs draw nothing yet: the view says so instead of an empty picture, as a
+        // stub's `todo!()` would ("not done yet", which `cg view` ends with 0).
+        let stubs = cg_exercises::a2::implementation();
+        let Err(why) = cg_harness::check::guarded(|| cg_a2::view(&spec, &stubs, 0.0)) else {
+            panic!("the stubs' view is not \"not done yet\"");
+        };
+        assert!(
+            matches!(&why, Outcome::NotDone { message } if message.starts_with("a2.t3: ")),
+            "{why:?}"
+        );
+        // Without its marker, a display() that draws nothing is a mistake, said as one.
+        let empty = Impl { display: |gl, _| gl.load_identity(), ..stubs };
+        let Err(why) = cg_a2::view(&spec, &empty, 0.0) else { panic!("a picture of nothing") };
+        assert!(why.en.starts_with("nothing is drawn: display() (a2.t3)"), "{why:?}");
     }
+}
+
+/// A motion() that panics on a drag of the view's script: no picture (it showed the camera
+/// where it started, beside the reference, and `cg view` ended with 0), and the reason names
+/// motion(), its message and place, and the drag with the state it started from. A stub's
+/// `todo!()` there still leaves the camera where it starts.
+#[test]
+fn a_motion_that_panics_gives_no_picture_and_says_on_which_drag() {
+    fn too_far(spec: &Spec, s: &mut CameraState, drag: &cg_a2::Drag) {
+        assert!(drag.dx.abs() <= 10.0 && drag.dy.abs() <= 10.0, "too far: {}", drag.dx);
+        cg_solutions::a2::motion(spec, s, drag);
+    }
+    // What `todo!("a2.t1: motion")` panics with.
+    fn not_yet(_: &Spec, _: &mut CameraState, _: &cg_a2::Drag) {
+        panic!("not yet implemented: a2.t1: motion")
+    }
+    let spec = spec_of("20260021");
+    let imp = Impl { motion: too_far, ..cg_solutions::a2::implementation() };
+    let Ok(Err(why)) = cg_harness::check::guarded(|| cg_a2::view(&spec, &imp, 0.0)) else {
+        panic!("a picture, or a panic out of the view");
+    };
+    let start =
+        format!("from camera_yaw = {}°", cg_core::product::format_number(spec.start.camera_yaw));
+    for needle in [
+        "motion() panicked: too far: ",
+        "solutions/tests/a2.rs:",
+        "on the drag ",
+        &start,
+        "the view's drag 1 of ",
+    ] {
+        assert!(why.en.contains(needle), "{needle:?} not in {:?}", why.en);
+    }
+    for needle in ["motion() が異常終了しました（panic）: too far", "ドラッグ: ", "1 回目"]
+    {
+        assert!(why.ja.contains(needle), "{needle:?} not in {:?}", why.ja);
+    }
+    let stub = Impl { motion: not_yet, ..imp };
+    let still = cg_a2::view(&spec, &stub, 0.0).expect("the starting camera's picture");
+    let unmoved = Impl { motion: |_, _, _| {}, ..imp };
+    assert_eq!(still, cg_a2::view(&spec, &unmoved, 0.0).unwrap());
+}
+
+/// A motion() call that gave no value for another reason than its own panic (out of time, a
+/// worker that crashed, a file that does not compile) goes on out of the view as it came, so
+/// that `cg view` says so as for display() (it was taken for a panic, and the camera stayed
+/// where it started beside the reference).
+#[test]
+fn a_motion_call_without_a_value_goes_on_out_of_the_view_as_it_came() {
+    fn not_compiled(_: &Spec, _: &mut CameraState, _: &cg_a2::Drag) {
+        std::panic::panic_any(cg_worker::CallError::DoesNotCompile {
+            module: "a2".to_owned(),
+            errors: vec!["exercises/src/a2.rs:3: expected `;`".to_owned()],
+        });
+    }
+    let spec = spec_of("20260021");
+    let imp = Impl { motion: not_compiled, ..cg_solutions::a2::implementation() };
+    let Err(outcome) = cg_harness::check::guarded(|| cg_a2::view(&spec, &imp, 0.0)) else {
+        panic!("a picture, or no reason");
+    };
+    assert_eq!(
+        outcome,
+        Outcome::DoesNotCompile {
+            module: "a2".into(),
+            errors: vec!["exercises/src/a2.rs:3: expected `;`".into()]
+        }
+    );
+}
+
+/// Each variable's line in the assignment text says the drag as English says it: "drag up and
+/// down (dy) with the right button and Shift held", not "drag the Shift + right button up and
+/// down".
+#[test]
+fn the_drags_read_naturally_in_english() {
+    // 20260021: camera_distance on Shift + left, left and right; camera_yaw on the left button.
+    let spec = spec_of("20260021");
+    let text = spec.describe(Lang::En);
+    for needle in [
+        "camera_distance (from the target to the camera): drag left and right (dx) with the left button and Shift held — ",
+        "camera_yaw (turn about the Y axis, degrees): drag left and right (dx) with the left button — ",
+    ] {
+        assert!(text.contains(needle), "{needle:?} not in\n{text}");
+    }
+    assert!(!text.contains("drag the "), "{text}");
+    let ja = spec.describe(Lang::Ja);
+    assert!(ja.contains("Shift + 左ボタンで左右に（dx）ドラッグ"), "{ja}");
 }

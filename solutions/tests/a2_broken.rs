@@ -47,6 +47,7 @@ const ELSE_IF: u8 = 9; // a diagonal drag changes only one of yaw and pitch
 const ONLY_LOWER_LIMIT: u8 = 10; // distance limited only from below (一定値以上は近づかない)
 const PAN_SIGN: u8 = 11; // target_x the wrong way
 const PAN_NO_CLAMP: u8 = 12; // the target leaves the ground
+const DISTANCE_UNREACHABLE: u8 = 13; // distance in an `else if` after a block taking its button
 
 /// The reference's motion(), written the way students do (a block per variable), with `BUG`.
 fn motion_with<const BUG: u8>(spec: &Spec, s: &mut CameraState, drag: &Drag) {
@@ -89,6 +90,10 @@ fn motion_with<const BUG: u8>(spec: &Spec, s: &mut CameraState, drag: &Drag) {
             .find(|g| !used.contains(g))
             .unwrap();
         drag.button == free.button && drag.shift == free.shift
+    } else if BUG == DISTANCE_UNREACHABLE {
+        // `if drag.button == Left { … } else if drag.button == Left && drag.shift { distance }`:
+        // the first block takes every drag of the rotation's button, Shift or not.
+        matches(&spec.distance) && drag.button != spec.yaw.gesture.button
     } else {
         matches(&spec.distance)
     };
@@ -118,11 +123,20 @@ const CAMERA_TRANSLATE_LAST: u8 = 23; // the distance after the rotations
 const CAMERA_PITCH_SIGN: u8 = 24; // Rx(+camera_pitch)
 const CAMERA_LOOK_AT: u8 = 25; // a look-at with up = +Y (undefined at the poles)
 const CAMERA_NO_TARGET: u8 = 26; // the target's translation forgotten
+const CAMERA_TRANSPOSED: u8 = 27; // the view matrix written row by row into glam's Mat4
 
 /// The reference's camera() with `BUG`.
 fn camera_with<const BUG: u8>(gl: &mut Gl, s: &CameraState) {
     let angle = |x: f32| if BUG == CAMERA_RADIANS { x.to_radians() } else { x };
     match BUG {
+        CAMERA_TRANSPOSED => {
+            use cg_core::glam::Mat4;
+            let v = Mat4::from_translation(Vec3::new(0.0, 0.0, -s.camera_distance))
+                * Mat4::from_rotation_x((-s.camera_pitch).to_radians())
+                * Mat4::from_rotation_y((-s.camera_yaw).to_radians())
+                * Mat4::from_translation(Vec3::new(-s.target_x, 0.0, -s.target_z));
+            gl.mult(Factor::named("V", v.transpose()).into());
+        }
         CAMERA_LOOK_AT => {
             let target = Vec3::new(s.target_x, 0.0, s.target_z);
             let (sp, cp) = s.camera_pitch.to_radians().sin_cos();
@@ -265,6 +279,16 @@ fn broken() -> Vec<(&'static str, Impl, Vec<&'static str>)> {
             "no target clamp",
             m(motion_with::<PAN_NO_CLAMP>),
             vec!["a2.t1.pan_range", "a2.t1.sequence"],
+        ),
+        (
+            "distance behind an else-if that never comes",
+            m(motion_with::<DISTANCE_UNREACHABLE>),
+            vec!["a2.t1.distance", "a2.t1.distance_range", "a2.t1.sequence"],
+        ),
+        (
+            "the view matrix transposed",
+            c(camera_with::<CAMERA_TRANSPOSED>, display_calling::<CAMERA_TRANSPOSED>),
+            camera_and_display(&["a2.t2.view", "a2.t2.pole"]),
         ),
         (
             "glRotatef given radians",
@@ -433,6 +457,16 @@ fn the_causes_name_the_mistake() {
             "a2.t1.buttons",
             "Shift is not tested",
         ),
+        (
+            Impl { motion: motion_with::<DISTANCE_WRONG_BUTTON>, ..reference() },
+            "a2.t1.buttons",
+            "camera_distance stays 15 (this drag changes nothing)",
+        ),
+        (
+            Impl { motion: motion_with::<DISTANCE_UNREACHABLE>, ..reference() },
+            "a2.t1.distance",
+            "camera_distance does not change with any drag: motion() never changes it (is the code for it behind an else if",
+        ),
         (Impl { motion: motion_with::<ELSE_IF>, ..reference() }, "a2.t1.sequence", "else-if"),
         (Impl { motion: motion_with::<NO_WRAP>, ..reference() }, "a2.t1.sequence", "not wrapped"),
         (
@@ -514,6 +548,15 @@ fn the_causes_name_the_mistake() {
             "fix a2.t2 first",
         ),
         (
+            Impl {
+                camera: camera_with::<CAMERA_TRANSPOSED>,
+                display: display_calling::<CAMERA_TRANSPOSED>,
+                ..reference()
+            },
+            "a2.t2.view",
+            "the matrix is transposed: the translation is in the bottom row",
+        ),
+        (
             Impl { display: display_with::<LIGHT_BEFORE_CAMERA>, ..reference() },
             "a2.t3.light",
             "set before the camera",
@@ -545,13 +588,88 @@ fn the_causes_name_the_mistake() {
     }
 }
 
+/// A transposed view matrix is named as such, and no eye is computed from it: its bottom row is
+/// said instead (it read "eye at (0, 0, 0)" and "the rotation part is off").
+#[test]
+fn a_transposed_view_shows_its_bottom_row_not_an_eye() {
+    let imp = Impl {
+        camera: camera_with::<CAMERA_TRANSPOSED>,
+        display: display_calling::<CAMERA_TRANSPOSED>,
+        ..reference()
+    };
+    let text = cause(&imp, "a2.t2.view");
+    let actual = text.split(" | ").nth(2).unwrap();
+    assert!(!actual.contains("eye at"), "{actual}");
+    assert!(actual.contains("bottom row ("), "{actual}");
+    assert!(actual.contains("not (0, 0, 0, 1)"), "{actual}");
+}
+
+/// The product a2.t2.view shows is the student's at the state its "where" names: camera_pitch
+/// in radians shows that state's radians (0.5236 for −30°), not a hidden probe state's
+/// (0.4014 for −23°), with the report's names where they apply.
+#[test]
+fn the_shown_product_is_at_the_state_named_in_where() {
+    let imp = Impl {
+        camera: camera_with::<CAMERA_RADIANS>,
+        display: display_calling::<CAMERA_RADIANS>,
+        ..reference()
+    };
+    let text = cause(&imp, "a2.t2.view");
+    let (actual, location) = (text.split(" | ").nth(2).unwrap(), text.split(" | ").nth(3).unwrap());
+    // The first state is the spec's start.
+    let s = spec().start;
+    assert!(location.starts_with("state 1 of "), "{location}");
+    let radians = |deg: f32| cg_core::product::format_number(deg.to_radians());
+    let pitch = format!("Rx({}°)", radians(-s.camera_pitch));
+    assert!(actual.contains(&pitch), "{pitch} not in {actual}");
+    assert!(
+        actual.contains("at this state your camera() builds T(0, 0, -camera_distance) · "),
+        "{actual}"
+    );
+    assert!(!actual.contains("0.4014") && !actual.contains("0.6458"), "{actual}");
+}
+
+/// A panic in the student's function during a check names the call and its input (the state
+/// and the drag), as every ✗ line says where, and keeps the panic's place.
+#[test]
+fn a_panic_in_a_check_names_the_input() {
+    fn too_far(spec: &Spec, s: &mut CameraState, drag: &Drag) {
+        assert!(drag.dx.abs() < 10.0, "too far: {}", drag.dx);
+        motion_with::<NONE>(spec, s, drag);
+    }
+    let results = cg_a2::checks(&spec(), &Impl { motion: too_far, ..reference() });
+    let yaw = results.iter().find(|r| r.id == "a2.t1.yaw").unwrap();
+    let Outcome::Panicked { message, location } = &yaw.outcome else { panic!("{:?}", yaw.outcome) };
+    assert!(message.starts_with("too far: "), "{message}");
+    assert!(
+        message.contains(" ← motion(spec, &mut CameraState { camera_yaw: 100.0, "),
+        "{message}"
+    );
+    assert!(message.contains(", &Drag { button: "), "{message}");
+    assert!(location.as_deref().is_some_and(|l| l.contains("a2_broken.rs:")), "{location:?}");
+    // The camera's too: a look-at at the pole.
+    let look_at = Impl {
+        camera: camera_with::<CAMERA_LOOK_AT>,
+        display: display_calling::<CAMERA_LOOK_AT>,
+        ..reference()
+    };
+    let results = cg_a2::checks(&spec(), &look_at);
+    let pole = results.iter().find(|r| r.id == "a2.t2.pole").unwrap();
+    let Outcome::Panicked { message, .. } = &pole.outcome else { panic!("{:?}", pole.outcome) };
+    assert!(
+        message.contains(" ← camera(gl, &CameraState { camera_yaw: 0.0, camera_pitch: -90.0"),
+        "{message}"
+    );
+}
+
 /// The identifiers that are plain words and that the Japanese report and assignment text
 /// really use, as code: the student's functions and their parameters (`motion(spec, state,
-/// drag)`, `camera(gl, state)`, `display()`), Rust's `else`, and the `Shift` key. (Identifiers
+/// drag)`, `camera(gl, state)`, `display()`), Rust's `else`, the `Shift` key, and `glam` (the
+/// math library whose `Mat4` the students' code uses). (Identifiers
 /// shaped like code — `camera_pitch`, `gl.translate`, `GL_LIGHT0` — need no listing; see
 /// `common::english_words`.)
 const CODE_WORDS: &[&str] =
-    &["motion", "spec", "state", "drag", "camera", "display", "else", "Shift"];
+    &["motion", "spec", "state", "drag", "camera", "display", "else", "Shift", "glam"];
 
 /// Students of other layouts (Middle and Right buttons, no pan, other ranges), for the texts
 /// that depend on the spec.
@@ -572,7 +690,8 @@ fn reports_read_in_one_language() {
             };
             let context = format!("{name} / {student}");
             problems.extend(common::report_problems(&context, &report, CODE_WORDS));
-            if let Err(why) = cg_a2::view(&spec, &imp, 0.0) {
+            // The stubs' view is "not done yet" (a stub's panic), no words of its own.
+            if let Ok(Err(why)) = cg_harness::check::guarded(|| cg_a2::view(&spec, &imp, 0.0)) {
                 problems.extend(common::language_problems(
                     &format!("view: {context}"),
                     &why.ja,

@@ -118,9 +118,23 @@ fn with(s: &CameraState, var: Var, f: impl Fn(f32) -> f32) -> Mat4 {
     view_matrix(&s)
 }
 
+/// Whether `m`'s bottom row is (0, 0, 0, 1) within `1e-4`, as every product of rotations and
+/// translations has: only then is it a view transform with an eye to compute.
+pub(crate) fn bottom_row_is_0001(m: &Mat4) -> bool {
+    (m.row(3) - cg_core::glam::Vec4::W).abs().max_element() <= 1e-4
+}
+
+fn transposed() -> Text {
+    t(
+        "行列が転置されています: 平行移動が 4 列目ではなく下の行に入っています。glam の Mat4 は列優先（Mat4::from_cols_array は列ごとに読み、glMultMatrixf と同じ）なので、行ごとに書いた行列なら .transpose() してから渡すか、gl.translate / gl.rotate で作ってください",
+        "the matrix is transposed: the translation is in the bottom row instead of the 4th column. glam's Mat4 is column-major (Mat4::from_cols_array reads column by column, as glMultMatrixf does): transpose a matrix written row by row before passing it, or build the view with gl.translate / gl.rotate",
+    )
+}
+
 /// The hypotheses, most specific first.
 pub(crate) fn hypotheses() -> Vec<Hypothesis> {
     vec![
+        Hypothesis { matrix: |s| view_matrix(s).transpose(), cause: transposed },
         Hypothesis {
             matrix: |s| {
                 let (d, rx, ry, tt) = parts(s);
@@ -336,6 +350,17 @@ pub(crate) fn diagnose_view(states: &[CameraState], actual: &[Mat4]) -> Text {
     let Some((s, m)) = pairs.into_iter().find(|(s, m)| !matrices_close(m, &view_matrix(s))) else {
         return Text::default();
     };
+    if !bottom_row_is_0001(m) {
+        // The translation in the bottom row and none in the 4th column: written row by row.
+        let (row, column) = (m.row(3).truncate(), m.col(3).truncate());
+        if row.abs().max_element() > 1e-4 && column.abs().max_element() <= 1e-4 {
+            return transposed();
+        }
+        return t(
+            "下の行が (0, 0, 0, 1) ではありません: 回転と平行移動の積なら必ず (0, 0, 0, 1) です（行列が転置されているか、射影などほかの変換が入っていませんか）",
+            "the bottom row is not (0, 0, 0, 1), as it is for every product of rotations and translations: is the matrix transposed, or does it hold another transform (a projection)?",
+        );
+    }
     let e = view_matrix(s);
     let rotation_ok = (0..3).all(|c| {
         let (a, b) = (m.col(c).truncate(), e.col(c).truncate());

@@ -87,9 +87,9 @@ fn camera_steps(spec: &Spec) -> Vec<CameraStep> {
                 ja.push(words.ja);
                 en.push(words.en);
             } else {
-                let g = crate::show::gesture(op.gesture);
-                ja.push(format!("{}で{}", g.ja, words.ja));
-                en.push(format!("{} with the {}", words.en, g.en));
+                let g = crate::show::gesture_held(op.gesture);
+                ja.push(format!("{}{}", g.ja, words.ja));
+                en.push(format!("{} {}", words.en, g.en));
             }
             last = Some(op.gesture);
         }

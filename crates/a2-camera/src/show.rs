@@ -112,6 +112,20 @@ pub(crate) fn gesture(g: Gesture) -> Text {
     if g.shift { Text::new(format!("Shift + {ja}"), format!("Shift + {en}")) } else { t(ja, en) }
 }
 
+/// How a drag is made with `g`, after the drag's direction: "Shift + 左ボタンで" / "with the left
+/// button and Shift held" ("drag up and down (dy) with the left button and Shift held").
+pub(crate) fn gesture_held(g: Gesture) -> Text {
+    let words = gesture(Gesture { shift: false, ..g });
+    if g.shift {
+        Text::new(
+            format!("Shift + {}で", words.ja),
+            format!("with the {} and Shift held", words.en),
+        )
+    } else {
+        Text::new(format!("{}で", words.ja), format!("with the {}", words.en))
+    }
+}
+
 /// "左右に (dx)" / "left and right (dx)".
 pub(crate) fn axis_words(axis: DragAxis) -> Text {
     match axis {
@@ -271,10 +285,57 @@ pub(crate) fn symbolize(product: &MatrixProduct, s: &CameraState) -> MatrixProdu
 /// # Errors
 /// What keeps the product from being read (a stub not written yet, a panic), in words.
 pub fn camera_product(imp: &Impl) -> Result<MatrixProduct, Text> {
-    let probe = PROBE;
+    run_camera(imp, &PROBE).map(|product| symbolize(&product, &PROBE))
+}
+
+/// The view transform the student's [`Impl::camera`] builds at `s`, with the report's names
+/// where [`camera_product`] finds them: each number that the run at [`PROBE`] names keeps its
+/// name, with its value at `s`. So a check that names the state `s` shows the numbers of `s`
+/// (`Rx(0.5236°)` for camera_pitch = −30° given in radians), never the probe's. When the two
+/// runs build different factors (a camera() that branches on the state), the numbers alone.
+///
+/// # Errors
+/// As [`camera_product`], for the run at `s`.
+pub(crate) fn camera_product_at(imp: &Impl, s: &CameraState) -> Result<MatrixProduct, Text> {
+    let at_s = run_camera(imp, s)?;
+    let named = camera_product(imp).ok().and_then(|named| named_like(&at_s, &named));
+    Ok(named.unwrap_or(at_s))
+}
+
+/// `product` with the symbols of `named`, factor by factor, where both have the same factors
+/// (kinds and axes); `None` where they do not.
+fn named_like(product: &MatrixProduct, named: &MatrixProduct) -> Option<MatrixProduct> {
+    if product.factors.len() != named.factors.len() {
+        return None;
+    }
+    let name = |p: &Param, n: &Param| match (&p.symbol, &n.symbol) {
+        (None, Some(symbol)) => Param::sym(symbol.clone(), p.value),
+        _ => p.clone(),
+    };
+    let three = |p: &[Param; 3], n: &[Param; 3]| {
+        [name(&p[0], &n[0]), name(&p[1], &n[1]), name(&p[2], &n[2])]
+    };
+    let factors = product.factors.iter().zip(&named.factors).map(|(f, n)| match (f, n) {
+        (Factor::Translate(p), Factor::Translate(n)) => Some(Factor::Translate(three(p, n))),
+        (Factor::Scale(p), Factor::Scale(n)) => Some(Factor::Scale(three(p, n))),
+        (
+            Factor::Rotate { axis, angle_deg },
+            Factor::Rotate { axis: named_axis, angle_deg: named_angle },
+        ) if axis == named_axis => {
+            Some(Factor::Rotate { axis: *axis, angle_deg: name(angle_deg, named_angle) })
+        }
+        (Factor::Matrix { .. }, Factor::Matrix { .. })
+        | (Factor::Perspective { .. }, Factor::Perspective { .. }) => Some(f.clone()),
+        _ => None,
+    });
+    Some(MatrixProduct { factors: factors.collect::<Option<Vec<_>>>()? })
+}
+
+/// The product the student's camera() leaves on a fresh context at `s`, or why there is none.
+fn run_camera(imp: &Impl, s: &CameraState) -> Result<MatrixProduct, Text> {
     let mut rec = cg_student::gl::Gl::new();
-    match cg_harness::check::guarded(|| (imp.camera)(&mut rec, &probe)) {
-        Ok(()) => Ok(symbolize(crate::replay(&rec).model_view(), &probe)),
+    match cg_harness::check::guarded(|| (imp.camera)(&mut rec, s)) {
+        Ok(()) => Ok(crate::replay(&rec).model_view().clone()),
         Err(Outcome::NotDone { message }) => {
             Err(Text::new(format!("まだです: {message}"), format!("not done yet: {message}")))
         }

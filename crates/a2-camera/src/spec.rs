@@ -165,13 +165,13 @@ pub impl Spec {
         self.operations()
             .into_iter()
             .map(|(var, op)| {
-                let (meaning, gesture) = (var.meaning(), show::gesture(op.gesture));
+                let (meaning, gesture) = (var.meaning(), show::gesture_held(op.gesture));
                 let (axis, direction) =
                     (show::axis_words(op.axis), show::direction_words(var, &op));
                 let (formula, range) = (show::formula(var, &op), self.range_text(var));
                 let text = Text::new(
                     format!(
-                        "{}（{}）: {}で{}ドラッグ — {formula}（{}）。{}",
+                        "{}（{}）: {}{}ドラッグ — {formula}（{}）。{}",
                         var.name(),
                         meaning.ja,
                         gesture.ja,
@@ -180,11 +180,11 @@ pub impl Spec {
                         range.ja,
                     ),
                     format!(
-                        "{} ({}): drag the {} {} — {formula} ({}); {}",
+                        "{} ({}): drag {} {} — {formula} ({}); {}",
                         var.name(),
                         meaning.en,
-                        gesture.en,
                         axis.en,
+                        gesture.en,
                         direction.en,
                         range.en,
                     ),

@@ -2,6 +2,8 @@
 //! ([`reference()`]), the course's objects ([`draw_course_objects`]) and the replay of a recorded
 //! frame ([`replay`]) that the checks and the report use too.
 
+use std::any::Any;
+use std::panic::AssertUnwindSafe;
 use std::sync::LazyLock;
 
 use cg_core::Rgb;
@@ -10,10 +12,12 @@ use cg_core::mesh::Mesh;
 use cg_core::product::MatrixProduct;
 use cg_core::scene::Scene;
 use cg_harness::Text;
+use cg_harness::check::{Outcome, guarded};
 use cg_harness::text::t;
+use cg_worker::CallError;
 
-use crate::oracle;
 use crate::{Impl, LIGHT0_POSITION, Spec};
+use crate::{oracle, show};
 
 /// The objects of the course's sample scene (the ground and the pyramid), from
 /// `cg_harness::course::scene()`: name, polygon model, colour and model transform.
@@ -56,28 +60,91 @@ pub fn replay(recorded: &cg_student::gl::Gl) -> Gl {
 /// `display()` draws the frame. A wrong sign or speed shows as another viewpoint than the
 /// reference's; a light set before the camera as other shading on the ground and the pyramid.
 ///
+/// A `motion()` not written yet (a `todo!()`) leaves the camera where it starts. One that
+/// panics on a drag gives no picture (it would show the camera before that drag, unlike the
+/// reference for no reason the student could see): the error names `motion()`, its message and
+/// place, and the drag with the state it started from. A call that ran out of time, crashed the
+/// worker or found the file not compiling goes on as it came (a panic with the call's
+/// [`CallError`]), as `display()`'s would, so that `cg view` says so.
+///
+/// While `display()` is the stub with its marker (`cg_student::not_started("a2.t3")`) and draws
+/// nothing, the view panics as a stub's `todo!()` does (quietly, with `resume_unwind`): a
+/// `guarded` call around it reads "not done yet" ([`Outcome::NotDone`]).
+///
 /// # Errors
-/// What keeps the result from being drawn, in words for the student: nothing drawn yet.
+/// What keeps the result from being drawn, in words for the student: a `display()` that draws
+/// nothing, or a `motion()` that panicked.
 pub fn view(spec: &Spec, imp: &Impl, time_s: f64) -> Result<Scene, Text> {
     let mut state = spec.start;
-    for drag in oracle::demo_drags(spec, time_s) {
+    let drags = oracle::demo_drags(spec, time_s);
+    for (k, drag) in drags.iter().enumerate() {
         let mut next = state;
-        // A motion() not written yet (or panicking) leaves the camera where it starts.
-        if cg_harness::check::guarded(|| (imp.motion)(spec, &mut next, &drag)).is_err() {
-            break;
+        match guarded(|| panics_only(|| (imp.motion)(spec, &mut next, drag))) {
+            Ok(Ok(())) => state = next,
+            // Out of time, a crash, …: on as it came.
+            Ok(Err(payload)) => std::panic::resume_unwind(payload),
+            Err(Outcome::NotDone { .. }) => break,
+            // A panic (`panics_only` lets nothing else through).
+            Err(panicked) => {
+                let on = show::drag(drag);
+                let from = show::state(&state, spec.pan.is_some());
+                let (n, why) = (drags.len(), panicked.of_function("motion()"));
+                return Err(Text::new(
+                    format!(
+                        "{}。ドラッグ: {}（開始時 {from}。表示のためのドラッグ {n} 回中 {} 回目）。このドラッグより前のカメラの絵になってしまうので描きません",
+                        why.ja,
+                        on.ja,
+                        k + 1
+                    ),
+                    format!(
+                        "{}, on the drag {} from {from} (the view's drag {} of {n}); not drawn, as it would show the camera before that drag",
+                        why.en,
+                        on.en,
+                        k + 1
+                    ),
+                ));
+            }
         }
-        state = next;
     }
     let mut rec = cg_student::gl::Gl::new();
+    let before = cg_student::take_not_started();
     (imp.display)(&mut rec, &state);
+    let reached = cg_student::take_not_started();
+    // Put back for a check around the view (the report's), as the markers were.
+    for task in before.iter().chain(&reached) {
+        cg_student::not_started(task);
+    }
     let gl = replay(&rec);
     if gl.draws().is_empty() {
+        if reached.iter().any(|task| task == "a2.t3") {
+            // The stub with its marker: not done yet, as a `todo!()` in it would say (and no
+            // mistake: `cg view` ends with 0).
+            let not_yet = t(
+                "まだ何も描かれていません。display() で視点の変換・光源・物体を設定してください",
+                "nothing is drawn yet: display() sets the camera, the light and the objects",
+            );
+            let message = format!("not yet implemented: a2.t3: {} / {}", not_yet.ja, not_yet.en);
+            std::panic::resume_unwind(Box::new(message));
+        }
         return Err(t(
-            "まだ何も描かれていません: display()（a2.t3）で視点の変換・光源・物体を設定してください",
-            "nothing is drawn yet: display() (a2.t3) sets the camera, the light and the objects",
+            "何も描かれていません: display()（a2.t3）で視点の変換・光源・物体を設定し、draw_course_objects(gl) で描きます",
+            "nothing is drawn: display() (a2.t3) sets the camera, the light and the objects, and draws them with draw_course_objects(gl)",
         ));
     }
     Ok(gl.to_scene(&cg_harness::course::stage()))
+}
+
+/// Calls `f`, a student's function: a panic of its own code (on this thread, or the worker's
+/// [`CallError::Panicked`]) goes on, for the `guarded` around to read with its place; any other
+/// end of the call (out of time, a crash, a file that does not compile) comes back as its
+/// payload, to go on unchanged after that `guarded`.
+fn panics_only(f: impl FnOnce()) -> Result<(), Box<dyn Any + Send>> {
+    std::panic::catch_unwind(AssertUnwindSafe(f)).or_else(|payload| {
+        match payload.downcast_ref::<CallError>() {
+            Some(CallError::Panicked { .. }) | None => std::panic::resume_unwind(payload),
+            Some(_) => Err(payload),
+        }
+    })
 }
 
 /// The kit's reference picture ([`cg_harness::Assignment::reference_view`]): [`view`]'s scene

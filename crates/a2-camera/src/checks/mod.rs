@@ -6,12 +6,16 @@ mod t1;
 mod t2;
 mod t3;
 
+use std::any::Any;
+use std::panic::{self, AssertUnwindSafe};
+
 use cg_core::glam::Mat4;
 use cg_core::lang::Lang;
 use cg_harness::check;
 use cg_harness::text::t;
 use cg_harness::{CheckResult, Text};
 use cg_student::gl::Gl as Recorder;
+use cg_worker::CallError;
 
 use crate::show::Var;
 use crate::spec::SpecVars;
@@ -152,10 +156,51 @@ pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
     out
 }
 
+/// Calls one of the student's functions, `f`, for a check. A panic in it goes on to the check
+/// with the call written after its message — `too far ← motion(spec, &mut CameraState { … },
+/// &Drag { … })` — so that the check's "your code panicked" line names the input, as a ✗ line's
+/// "where" does; the panic's place (`exercises/src/a2.rs:64:32`) is kept. `call` writes the
+/// call as Rust (it reads the same in both languages). A stub's `todo!()`, a call that ran out
+/// of time and the worker's other ends of a call go on unchanged.
+pub(crate) fn calling<T>(call: impl FnOnce() -> String, f: impl FnOnce() -> T) -> T {
+    match panic::catch_unwind(AssertUnwindSafe(f)) {
+        Ok(value) => value,
+        Err(payload) => panic::resume_unwind(with_call(payload, call)),
+    }
+}
+
+/// A panic's `payload` with `call` after its message: a worker's [`CallError::Panicked`] (the
+/// place inside it), or the message of a panic on this thread (the check's panic hook has kept
+/// its place). Any other payload, and a stub's `todo!()`, as it is.
+fn with_call(payload: Box<dyn Any + Send>, call: impl FnOnce() -> String) -> Box<dyn Any + Send> {
+    let panicked = match payload.downcast_ref::<CallError>() {
+        Some(CallError::Panicked { message, location }) => {
+            Some((message.clone(), Some(location.clone())))
+        }
+        Some(_) => None,
+        None => payload
+            .downcast_ref::<String>()
+            .cloned()
+            .or_else(|| payload.downcast_ref::<&str>().map(|s| (*s).to_owned()))
+            .map(|message| (message, None)),
+    };
+    let stub = |m: &str| m.starts_with("not yet implemented") || m.starts_with("not implemented");
+    match panicked {
+        Some((message, in_worker)) if !stub(&message) => {
+            let message = format!("{message} ← {}", call());
+            match in_worker {
+                Some(location) => Box::new(CallError::Panicked { message, location }),
+                None => Box::new(message),
+            }
+        }
+        _ => payload,
+    }
+}
+
 /// What the student's camera leaves on a fresh context at `s`: the matrix, or what went wrong.
 pub(crate) fn student_view(imp: &Impl, s: &CameraState) -> Result<Mat4, (Text, Text)> {
     let mut rec = Recorder::new();
-    (imp.camera)(&mut rec, s);
+    calling(|| format!("camera(gl, &{s:?})"), || (imp.camera)(&mut rec, s));
     let gl = crate::replay(&rec);
     if let Some(e) = gl.errors().first() {
         return Err((

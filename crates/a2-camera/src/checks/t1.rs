@@ -19,10 +19,14 @@ use crate::{CameraState, Drag, DragAxis, Gesture, Impl, Operation, Spec};
 /// Tolerance for camera variables after a drag (degrees or scene units).
 pub(crate) const TOL: f32 = 1e-3;
 
-/// The student's `motion()` applied to a copy of `s`.
+/// The student's `motion()` applied to a copy of `s` (a panic names the state and the drag:
+/// [`super::calling`]).
 fn motion(spec: &Spec, imp: &Impl, s: &CameraState, drag: &Drag) -> CameraState {
     let mut out = *s;
-    (imp.motion)(spec, &mut out, drag);
+    super::calling(
+        || format!("motion(spec, &mut {s:?}, &{drag:?})"),
+        || (imp.motion)(spec, &mut out, drag),
+    );
     out
 }
 
@@ -204,9 +208,14 @@ fn amount_cause(
                 );
             }
         }
+        // Not "not yet": the code may be there and never reached.
         return t(
-            &format!("{name} がどのドラッグでも変わりません（motion() でまだ変えていない）"),
-            &format!("{name} changes with no drag at all (motion() does not change it yet)"),
+            &format!(
+                "{name} がどのドラッグでも変わりません: motion() が {name} を変えるところに一度も来ていません（その処理が else if の後ろや、先にそのドラッグを受け取るもっと広い if の中にありませんか）"
+            ),
+            &format!(
+                "{name} does not change with any drag: motion() never changes it (is the code for it behind an else if, or a broader if that catches the drag first?)"
+            ),
         );
     }
     if close(actual, -expected) {
@@ -301,8 +310,8 @@ pub(super) fn only_listed_drags(spec: &Spec, imp: &Impl) -> Result<(), Failure> 
                     let (name, stays) = (var.name(), show::value(var, var.get(&base)));
                     let expected = if listed.is_empty() {
                         Text::new(
-                            format!("{name} は {stays} のまま（このドラッグでは何も変わらない）"),
-                            format!("{name} stays {stays} (this drag changes only: -)"),
+                            format!("{name} は {stays} のまま（このドラッグでは何も変わりません）"),
+                            format!("{name} stays {stays} (this drag changes nothing)"),
                         )
                     } else {
                         let listed = listed.join(", ");

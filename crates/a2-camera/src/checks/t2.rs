@@ -67,10 +67,11 @@ pub(crate) fn pole_states(spec: &Spec) -> Vec<CameraState> {
 }
 
 /// Where the camera is in world space for a view matrix `m` (`m⁻¹ · (0, 0, 0, 1)`), if `m` is
-/// invertible.
+/// invertible and a view transform at all (its bottom row (0, 0, 0, 1): a transposed matrix's
+/// "eye" would be a point of no meaning).
 fn eye(m: &Mat4) -> Option<String> {
     let det = m.determinant();
-    if !det.is_finite() || det.abs() < 1e-6 {
+    if !det.is_finite() || det.abs() < 1e-6 || !oracle::bottom_row_is_0001(m) {
         return None;
     }
     let p = m.inverse() * Vec4::W;
@@ -102,7 +103,15 @@ pub(super) fn view_matches(spec: &Spec, imp: &Impl, states: &[CameraState]) -> R
     };
     let expected = oracle::view_matrix(s);
     let product = oracle::view_product(with_target, s);
-    let written = crate::camera_product(imp).map_or_else(|e| e, |p| p.symbolic().into());
+    // The student's product at the state named in "where" (the report's names where the
+    // probe's run finds them): its numbers are the ones the student can work out by hand.
+    let written = show::camera_product_at(imp, s).map_or_else(
+        |e| e,
+        |p| {
+            let (symbolic, numeric) = (p.symbolic(), p.numeric());
+            if symbolic == numeric { symbolic } else { format!("{symbolic} = {numeric}") }.into()
+        },
+    );
     let mut cause = oracle::diagnose_view(states, &matrices);
     if !m.is_finite() {
         cause = t(
@@ -116,20 +125,32 @@ pub(super) fn view_matches(spec: &Spec, imp: &Impl, states: &[CameraState]) -> R
         product.simplified().numeric(),
         show::matrix(&expected)
     );
-    let (eye_expected, eye_actual) =
-        (eye(&expected).unwrap_or_default(), eye(m).unwrap_or_else(|| "-".to_owned()));
+    let eye_expected = eye(&expected).unwrap_or_default();
+    // No eye for a matrix that is no view transform: its bottom row says what it is instead.
+    let eye_actual = if oracle::bottom_row_is_0001(m) {
+        let at = eye(m).unwrap_or_else(|| "-".to_owned());
+        Text::new(format!("視点の位置 {at}"), format!("eye at {at}"))
+    } else {
+        let row = show::vec4(m.row(3));
+        Text::new(
+            format!("下の行が {row} で (0, 0, 0, 1) ではない"),
+            format!("bottom row {row}, not (0, 0, 0, 1)"),
+        )
+    };
     let (state, n) = (show::state(s, with_target), states.len());
     Err(Failure::new(
         Text::new(format!("{v}; 視点の位置 {eye_expected}"), format!("{v}; eye at {eye_expected}")),
         Text::new(
             format!(
-                "{}; 視点の位置 {eye_actual}; あなたの camera() の変換は {}",
+                "{}; {}; この状態であなたの camera() が作る変換は {}",
                 show::matrix(m),
+                eye_actual.ja,
                 written.ja
             ),
             format!(
-                "{}; eye at {eye_actual}; your camera() builds {}",
+                "{}; {}; at this state your camera() builds {}",
                 show::matrix(m),
+                eye_actual.en,
                 written.en
             ),
         ),

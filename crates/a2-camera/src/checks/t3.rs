@@ -38,8 +38,13 @@ fn display_states(spec: &Spec) -> Vec<CameraState> {
 /// One frame of the student's display() on a fresh context.
 fn frame(imp: &Impl, s: &CameraState) -> Gl {
     let mut rec = Recorder::new();
-    (imp.display)(&mut rec, s);
+    display(imp, &mut rec, s);
     crate::replay(&rec)
+}
+
+/// The student's display() at `s` on `gl` (a panic names the state: [`super::calling`]).
+fn display(imp: &Impl, gl: &mut Recorder, s: &CameraState) {
+    super::calling(|| format!("display(gl, &{s:?})"), || (imp.display)(gl, s));
 }
 
 /// Component-wise within `1e-4 · (1 + |expected|)`.
@@ -310,12 +315,12 @@ pub(super) fn starts_from_identity(spec: &Spec, imp: &Impl) -> Result<(), Failur
     let mut leftover = Recorder::new();
     leftover.translate(3.0, -2.0, 7.0);
     leftover.rotate(25.0, 0.0, 0.0, 1.0);
-    (imp.display)(&mut leftover, &s);
+    display(imp, &mut leftover, &s);
     let leftover = crate::replay(&leftover);
     let mut twice = Recorder::new();
-    (imp.display)(&mut twice, &s);
+    display(imp, &mut twice, &s);
     let first_draws = crate::replay(&twice).draws().len();
-    (imp.display)(&mut twice, &s);
+    display(imp, &mut twice, &s);
     let twice = crate::replay(&twice);
     for (gl, from, situation) in [
         (
