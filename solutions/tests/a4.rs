@@ -417,6 +417,43 @@ fn failures_explain_themselves_in_both_languages_and_say_where() {
     }
 }
 
+/// a4.t1 wrong, and tex_coords built on it (as the hint of the stub says to): the a4.t2 checks
+/// that fail say to fix a4.t1 first; with a4.t1 right, an a4.t2 failure does not.
+#[test]
+fn a4_t2_failures_that_follow_from_a4_t1_say_so() {
+    fn range_flipped(spec: &Spec, i: u32, j: u32) -> [Vec2; 4] {
+        let (right, flipped) =
+            (cg_solutions::a4::tex_range(spec), tex_range_with::<FLIPPED_ROWS>(spec));
+        cg_solutions::a4::tex_coords(spec, i, j).map(|v| {
+            let y = (v.y - right.t_min) / (right.t_max - right.t_min);
+            Vec2::new(v.x, flipped.t_min + y * (flipped.t_max - flipped.t_min))
+        })
+    }
+    let both = Impl {
+        tex_range: tex_range_with::<FLIPPED_ROWS>,
+        tex_coords: range_flipped,
+        ..reference()
+    };
+    let only_t2 = Impl { tex_coords: tex_coords_with::<OFF_BY_ONE>, ..reference() };
+    let mut shown = 0;
+    for (who, spec) in specs().into_iter().filter(|(_, s)| 2 * s.region.row + s.region.rows != 8) {
+        let t2: Vec<CheckResult> =
+            cg_a4::checks(&spec, &both).into_iter().filter(|c| c.task == "a4.t2").collect();
+        let failing: Vec<&CheckResult> = t2.iter().filter(|c| !c.passed()).collect();
+        assert!(!failing.is_empty(), "{who}: no a4.t2 check fails");
+        for c in failing {
+            let text = failure_text(c);
+            assert!(text.contains("fix a4.t1 first"), "{who}: {}: {text}", c.id);
+            assert!(text.contains("先に a4.t1 を直してください"), "{who}: {}: {text}", c.id);
+        }
+        for c in cg_a4::checks(&spec, &only_t2).iter().filter(|c| !c.passed()) {
+            assert!(!failure_text(c).contains("a4.t1"), "{who}: {}: {}", c.id, failure_text(c));
+        }
+        shown += 1;
+    }
+    assert!(shown >= 2, "only {shown} students show it");
+}
+
 /// What the orientation check says the viewer sees, for mistakes whose picture is known.
 #[test]
 fn the_orientation_check_says_what_the_viewer_sees() {

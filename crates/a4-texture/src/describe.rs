@@ -155,6 +155,12 @@ pub(crate) fn describe(spec: &Spec, lang: Lang) -> String {
     for line in report {
         let _ = writeln!(out, "    - {}", line.get(lang));
     }
+    let _ = writeln!(
+        out,
+        "  {}: cargo run --release -- check a4    {}: cargo run --release -- view a4",
+        t("確認", "Check").get(lang),
+        t("表示", "View").get(lang)
+    );
     out
 }
 
@@ -202,6 +208,13 @@ mod tests {
                 assert!(text.contains(needle), "{needle:?} missing from:\n{text}");
             }
         }
+        // It ends as a1's, a2's and a3's do: the commands that check and show it.
+        let en = s.describe(Lang::En);
+        let last = en.lines().last().unwrap_or_default();
+        assert_eq!(
+            last,
+            "  Check: cargo run --release -- check a4    View: cargo run --release -- view a4"
+        );
         assert!(s.describe(Lang::Ja).contains("鏡文字"));
         assert!(s.describe(Lang::En).contains("counter-clockwise"));
     }

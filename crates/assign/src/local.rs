@@ -405,12 +405,19 @@ fn not_gradable(root: &Path, lang: Lang) -> BTreeMap<String, Vec<String>> {
 /// reads only UTF-8, and how to save it so.
 #[must_use]
 pub fn not_utf8(file: &str, encoding: &str) -> cg_core::lang::Text {
+    // What VS Code's status bar shows for it.
+    let shown = match encoding {
+        "Shift_JIS" => "Shift JIS",
+        "UTF-16LE" => "UTF-16 LE",
+        "UTF-16BE" => "UTF-16 BE",
+        other => other,
+    };
     cg_core::lang::Text::new(
         format!(
-            "{file} は {encoding} で保存されています。Rust のソースファイルは UTF-8 でなければならないので、このままではビルドできません。エディタで文字コードを UTF-8 にして保存し直してください（VS Code: 右下の文字コードの表示（「Shift JIS」など）→「エンコード付きで保存」→「UTF-8」。メモ帳: 「名前を付けて保存」の文字コードで「UTF-8」）。採点では UTF-8 に直して読みます"
+            "{file} は {encoding} で保存されています。Rust のソースファイルは UTF-8 でなければならないので、このままではビルドできません。エディタで文字コードを UTF-8 にして保存し直してください（VS Code: 右下の文字コードの表示「{shown}」→「エンコード付きで保存」→「UTF-8」。メモ帳: 「名前を付けて保存」の文字コードで「UTF-8」）。採点では UTF-8 に直して読みます"
         ),
         format!(
-            "{file} is saved as {encoding}. Rust source files must be UTF-8, so it cannot be built as it is: save it again as UTF-8 in your editor (VS Code: click the encoding at the bottom right, \"Shift JIS\" say → \"Save with Encoding\" → \"UTF-8\"; Notepad: \"Save as\" with the encoding \"UTF-8\"). Grading reads it converted to UTF-8"
+            "{file} is saved as {encoding}. Rust source files must be UTF-8, so it cannot be built as it is: save it again as UTF-8 in your editor (VS Code: click \"{shown}\" at the bottom right → \"Save with Encoding\" → \"UTF-8\"; Notepad: \"Save as\" with the encoding \"UTF-8\"). Grading reads it converted to UTF-8"
         ),
     )
 }
@@ -482,6 +489,23 @@ pub fn worker_program() -> PathBuf {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The encoding is named as VS Code's status bar shows it, whichever it is (it said "Shift
+    /// JIS" for a UTF-16 file too).
+    #[test]
+    fn a_file_not_in_utf8_is_named_as_the_editor_shows_it() {
+        let sjis = not_utf8("exercises/src/a3.rs", "Shift_JIS");
+        assert!(sjis.en.contains("click \"Shift JIS\" at the bottom right"), "{}", sjis.en);
+        assert!(sjis.ja.contains("右下の文字コードの表示「Shift JIS」"), "{}", sjis.ja);
+        let utf16 = not_utf8("exercises/src/a3.rs", "UTF-16LE");
+        assert!(utf16.en.starts_with("exercises/src/a3.rs is saved as UTF-16LE."), "{}", utf16.en);
+        assert!(
+            utf16.en.contains("click \"UTF-16 LE\"") && !utf16.en.contains("Shift"),
+            "{}",
+            utf16.en
+        );
+        assert!(utf16.ja.contains("「UTF-16 LE」") && !utf16.ja.contains("Shift"), "{}", utf16.ja);
+    }
 
     #[test]
     fn a_window_runs_its_worker_from_a_copy_and_old_copies_go() {

@@ -10,12 +10,18 @@
 //! outside itself: `include_str!`, `#[path]`, …: the whole submission would score 0), a module
 //! kept in a file of its own (`mod helper;`: it does not compile in grading) or a file that is no
 //! text stops it.
+//!
+//! Then, unless `--no-check`, the checks run as `cg check` runs them (and grading will), and one
+//! line an assignment says how many pass and which tasks are not done; a file that does not
+//! compile (grading scores its assignment 0) is said, the zip still written, and the exit status
+//! is 1.
 
 use std::path::{Path, PathBuf};
-use std::time::UNIX_EPOCH;
+use std::time::{Duration, UNIX_EPOCH};
 
-use cg_assign::IDS;
+use cg_assign::{IDS, Variants, Which};
 use cg_core::lang::{Lang, Text, t};
+use cg_harness::exit::Ending;
 
 mod zipfile;
 
@@ -25,6 +31,9 @@ pub struct Args {
     /// Where to write the zip (default: `handin/<student number>.zip`) / zip の書き出し先（既定: `handin/<学生番号>.zip`）
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
+    /// Do not run the checks first (they run as `check` runs them, and say what grading would stop) / 先にチェックを実行しない
+    #[arg(long)]
+    pub no_check: bool,
 }
 
 /// A file put in the zip: its name there and where it is.
@@ -67,7 +76,7 @@ fn report(root: &Path) -> (Option<Taken>, Option<String>) {
 /// # Errors
 /// No student number recorded; a file missing, unreadable or one that grading refuses; the zip
 /// cannot be written. Each as a message in `lang`.
-pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
+pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
     let exercises = crate::kit_path(None, "exercises");
     let root = exercises.parent().map_or_else(|| PathBuf::from("."), Path::to_path_buf);
     let record = cg_assign::read_student_file(&exercises.join("student.toml")).map_err(|e| {
@@ -89,6 +98,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     }];
     let mut missing = Vec::new();
     let mut notes = Vec::new();
+    let mut converted = Vec::new();
     for module in IDS {
         let name = format!("exercises/src/{module}.rs");
         let path = root.join(&name);
@@ -98,6 +108,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         }
         if let Some(note) = screened(&name, module, &path).map_err(|e| e.get(lang).to_owned())? {
             notes.push(note);
+            converted.push(name.clone());
         }
         taken.push(Taken { name, path });
     }
@@ -115,6 +126,7 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         .get(lang)
         .to_owned());
     }
+    let checked = if args.no_check { None } else { Some(checks(&record, &converted, lang)?) };
     let (report, other) = report(&root);
     taken.extend(report);
     let mut entries = Vec::new();
@@ -150,8 +162,94 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
     for note in &notes {
         println!("{}", note.get(lang));
     }
-    print!("{}", said(&out, &entries, zip.len(), other.as_deref()).get(lang));
-    Ok(())
+    if let Some(checked) = &checked {
+        print!("{}", checked.said.get(lang));
+    }
+    print!("{}", said(&out, &entries, zip.len(), other.as_deref(), checked.is_some()).get(lang));
+    Ok(match &checked {
+        Some(c) if c.stopped => {
+            eprintln!("{}", t(
+                "zip は書きましたが、コンパイルできないファイルがあります。その課題は採点で 0 点です。直してからもう一度 handin してください",
+                "the zip is written, but a file does not compile: its assignment scores 0 in grading. Fix it and hand in again",
+            ).get(lang));
+            Ending::Mistakes
+        }
+        _ => Ending::Ok,
+    })
+}
+
+/// What the checks said, one line an assignment, and whether a file grading would build does
+/// not compile.
+struct Checked {
+    said: Text,
+    stopped: bool,
+}
+
+/// Runs every check as `cg check` does (the student's functions built into a worker, 20 s a
+/// check, 2 GiB), and says per assignment how far it is: what grading will score. A file saved
+/// as Shift_JIS or UTF-16 (`converted`: grading converts it) is said to be unchecked here, not
+/// to fail to compile.
+///
+/// # Errors
+/// The worker cannot be built (a crate added to exercises/Cargo.toml, an error outside the
+/// assignments' files), as `cg check` says it.
+fn checks(
+    record: &cg_assign::StudentFile,
+    converted: &[String],
+    lang: Lang,
+) -> Result<Checked, String> {
+    eprintln!("{}", t(
+        "採点と同じチェックを実行しています（初回はあなたの関数のビルドに時間がかかります）…",
+        "running the checks as grading runs them (the first time, building your functions takes a while)…",
+    ).get(lang));
+    let variants = Variants::for_student(&record.student, record.table);
+    let worker = cg_assign::local::worker_for_this_kit(2048, lang)?;
+    let (reports, _) = variants.reports_in_worker(Which::ALL, worker, Duration::from_secs(20));
+    let mut said = t("チェック（採点と同じもの）:\n", "the checks (as grading runs them):\n");
+    let mut stopped = false;
+    for r in &reports {
+        let file = format!("exercises/src/{}.rs", r.assignment);
+        let line = if !r.files_not_compiling().is_empty() && converted.contains(&file) {
+            Text::new(
+                format!(
+                    "ここではチェックしていません（{file} が UTF-8 でないため。上を参照）。採点では UTF-8 に直して読みます"
+                ),
+                format!(
+                    "not checked here ({file} is not UTF-8: see above); grading reads it converted"
+                ),
+            )
+        } else if !r.files_not_compiling().is_empty() {
+            stopped = true;
+            Text::new(
+                format!(
+                    "{file} がコンパイルできません。採点ではこの課題が 0 点です。`cargo run --release -- check {}` で場所が分かります",
+                    r.assignment
+                ),
+                format!(
+                    "{file} does not compile: grading scores this assignment 0. `cargo run --release -- check {}` shows where",
+                    r.assignment
+                ),
+            )
+        } else {
+            let mut line = Text::new(
+                format!("{}/{} 個のチェックに合格", r.passed(), r.total()),
+                format!("{}/{} checks pass", r.passed(), r.total()),
+            );
+            let not_done = r.tasks_not_done();
+            if !not_done.is_empty() {
+                line.ja.push_str(&format!("、未完成: {}", not_done.join(", ")));
+                line.en.push_str(&format!("; not done yet: {}", not_done.join(", ")));
+            }
+            if r.timed_out() {
+                line.ja.push_str("、制限時間を超えた関数があります（採点でも同じく止められます）");
+                line.en.push_str("; a function ran out of time (grading stops it too)");
+            }
+            line
+        };
+        said.ja.push_str(&format!("  {:<3} {}\n", r.assignment, line.ja));
+        said.en.push_str(&format!("  {:<3} {}\n", r.assignment, line.en));
+    }
+    Ok(Checked { said, stopped })
 }
 
 /// `path` (assignment `module`'s file, `name` in the zip) read as grading reads it — converted
@@ -190,7 +288,13 @@ fn screened(name: &str, module: &str, path: &Path) -> Result<Option<Text>, Text>
 }
 
 /// What `run` prints: the zip, its files, and what to do next.
-fn said(out: &Path, entries: &[zipfile::Entry], size: usize, other: Option<&str>) -> Text {
+fn said(
+    out: &Path,
+    entries: &[zipfile::Entry],
+    size: usize,
+    other: Option<&str>,
+    checked: bool,
+) -> Text {
     let list: String =
         entries.iter().map(|e| format!("  {} ({} B)\n", e.name, e.bytes.len())).collect();
     let mut text = Text::new(
@@ -210,10 +314,17 @@ fn said(out: &Path, entries: &[zipfile::Entry], size: usize, other: Option<&str>
             "no report (report/report.md or report.tex) to put in: hand in the report as the course says\n",
         ),
     };
-    let next = t(
-        "次に: この zip を Moodle に上げます（出し直すときは前のファイルを消してから）。その前に `cargo run --release -- check` で、止まる・外されるファイルがないことを確かめてください。\n",
-        "next: upload this zip to Moodle (to hand in again, delete the old file first). Before that, make sure with `cargo run --release -- check` that no file is stopped or left out.\n",
-    );
+    let next = if checked {
+        t(
+            "次に: この zip を Moodle に上げます（出し直すときは前のファイルを消してから）。\n",
+            "next: upload this zip to Moodle (to hand in again, delete the old file first).\n",
+        )
+    } else {
+        t(
+            "次に: この zip を Moodle に上げます（出し直すときは前のファイルを消してから）。その前に `cargo run --release -- check` で、止まる・外されるファイルがないことを確かめてください。\n",
+            "next: upload this zip to Moodle (to hand in again, delete the old file first). Before that, make sure with `cargo run --release -- check` that no file is stopped or left out.\n",
+        )
+    };
     for part in [report, next] {
         text.ja.push_str(&part.ja);
         text.en.push_str(&part.en);

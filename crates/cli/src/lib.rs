@@ -36,6 +36,7 @@ mod reload;
 mod render;
 #[cfg(feature = "instructor")]
 mod similarity;
+mod view;
 mod watch;
 
 /// The seconds `--time-limit` may give one check: from one to a day. A larger value overflowed
@@ -81,7 +82,7 @@ enum Command {
     /// Check again on every save of your exercises (keys: h hint, n next, r rerun, q quit) / 保存するたびにチェック
     Watch(watch::Args),
     /// Draw your result (and the reference) to PNG files / 自分の結果（と参考解答）を描画
-    View(assignments::ViewArgs),
+    View(view::ViewArgs),
     /// Your report: derive its tables and figures, fill the template, check your numbers / レポート: 表・図の導出、ひな形の作成、数値の確認
     #[command(subcommand)]
     Report(cg_report::app::Command),
@@ -143,7 +144,7 @@ pub fn main() -> ExitCode {
         Some(Command::Render(args)) => ok(render::run(&args, lang)),
         Some(Command::Assignment(args)) => ok(assignments::assignment(&args, lang)),
         Some(Command::Check(args)) => assignments::check(&args, lang),
-        Some(Command::View(args)) => ok(assignments::view(&args, lang)),
+        Some(Command::View(args)) => view::run(&args, lang),
         Some(Command::Watch(args)) => ok(watch::run(&args, lang)),
         Some(Command::Report(command)) => {
             cg_report::app::run(&command, &cg_report::app::Kit::exercises(), lang)
@@ -151,7 +152,7 @@ pub fn main() -> ExitCode {
         Some(Command::SyncStubs) => ok(assignments::sync_stubs(lang)),
         Some(Command::Bench(args)) => ok(bench::run(&args, lang)),
         Some(Command::Instructor(command)) => instructor::run(&command, lang),
-        Some(Command::Handin(args)) => ok(handin::run(&args, lang)),
+        Some(Command::Handin(args)) => handin::run(&args, lang),
         Some(Command::Doctor(args)) => ok(doctor::run(&args, lang)),
         None => ok(render::main_job(lang)),
     };

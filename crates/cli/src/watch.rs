@@ -352,11 +352,15 @@ fn board_text(checks: &[Check], focus: Option<&str>, lang: Lang) -> String {
     text.push_str(&line);
     text.push('\n');
     let passed = checks.iter().filter(|c| c.status == "pass").count();
-    text.push_str(&format!(
-        "{} {passed}/{}\n",
-        t("進み具合: 通ったチェック", "progress: checks passing").get(lang),
-        checks.len()
-    ));
+    // Worded as `cg check`'s summary.
+    let total = checks.len();
+    text.push_str(
+        Text::new(
+            format!("進み具合: {passed}/{total} 個のチェックに合格\n"),
+            format!("progress: {passed}/{total} checks pass\n"),
+        )
+        .get(lang),
+    );
     match focused(checks, focus) {
         None => {
             text.push_str(t("すべてのチェックが通りました！\n", "Every check passes!\n").get(lang))
@@ -536,6 +540,10 @@ mod tests {
             (Lang::Ja, "頂点 V4 はありません", "（同上）"),
         ] {
             let text = board_text(&checks, Some("a1.t2"), lang);
+            // The progress worded as `cg check` words it.
+            let progress =
+                Text::new("進み具合: 0/3 個のチェックに合格", "progress: 0/3 checks pass");
+            assert!(text.contains(progress.get(lang)), "{text}");
             assert_eq!(text.matches(values).count(), 1, "{text}");
             assert_eq!(text.matches(same).count(), 2, "{text}");
             for c in &checks {

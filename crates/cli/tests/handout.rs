@@ -211,6 +211,13 @@ fn the_handout_builds_and_checks_on_its_own_and_a_students_day_runs_in_it() {
     }
     let (code, text) = run(&["report", "check"]);
     assert_eq!(code, Some(0), "the untouched filled report must check clean:\n{text}");
+    // Handing in: the checks run as grading runs them, then the zip.
+    let (code, text) = run(&["handin"]);
+    assert_eq!(code, Some(0), "{text}");
+    for needle in ["  a1  14/14 checks pass\n", "  s   ", "wrote handin/12345678.zip"] {
+        assert!(text.contains(needle), "{needle:?} in:\n{text}");
+    }
+    assert!(!text.contains("not done yet") && !text.contains("does not compile"), "{text}");
     // The Japanese template too, filled into a folder of its own.
     let o = cargo(&[
         "run",
@@ -282,12 +289,25 @@ fn the_handout_builds_and_checks_on_its_own_and_a_students_day_runs_in_it() {
             assert_eq!(c["status"], want, "{c}");
         }
     }
+    // Handing in says which assignments grading would score 0, and ends 1, the zip written.
+    let (code, text) = run(&["handin", "--out", "out-broken/handin.zip"]);
+    assert_eq!(code, Some(1), "{text}");
+    for needle in [
+        "  a1  exercises/src/a1.rs does not compile: grading scores this assignment 0. `cargo run --release -- check a1` shows where",
+        "  a3  exercises/src/a3.rs does not compile",
+        "  a2  ",
+        "a file does not compile: its assignment scores 0 in grading",
+    ] {
+        assert!(text.contains(needle), "{needle:?} in:\n{text}");
+    }
+    assert!(dir.join("out-broken/handin.zip").exists(), "{text}");
     // The view draws the assignments that compile and says why it cannot draw a1.
     let (code, text) = run(&["view", "a4", "--png", "-o", "out-broken"]);
     assert_eq!(code, Some(0), "{text}");
     assert!(dir.join("out-broken/view-a4-yours.png").exists(), "{text}");
+    // No picture of the student's side: exit status 1, as for a panic.
     let (code, text) = run(&["view", "a1", "--png", "-o", "out-broken"]);
-    assert_eq!(code, Some(0), "{text}");
+    assert_eq!(code, Some(1), "{text}");
     assert!(text.contains("exercises/src/a1.rs does not compile"), "{text}");
     assert!(!dir.join("out-broken/view-a1-yours.png").exists(), "{text}");
     // The report derives every other part, and names the two files.

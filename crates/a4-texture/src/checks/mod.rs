@@ -10,8 +10,8 @@
 //! and refuses every mistake a viewer could see.
 
 use cg_harness::CheckResult;
-use cg_harness::check;
-use cg_harness::text::t;
+use cg_harness::check::{self, Failure};
+use cg_harness::text::{Text, t};
 
 use crate::Impl;
 use crate::spec::Spec;
@@ -19,6 +19,28 @@ use crate::spec::Spec;
 mod t1;
 mod t2;
 mod t3;
+
+/// An `a4.t2` failure while `a4.t1` fails too: `tex_coords` usually takes the region's corners
+/// from `tex_range`, so the hint says to fix a4.t1 first (every a4.t2 failure of a student whose
+/// t range was upside down came from it).
+fn after_t1(spec: &Spec, imp: &Impl, result: Result<(), Failure>) -> Result<(), Failure> {
+    result.map_err(|f| {
+        if t1::s_range(spec, imp).is_ok() && t1::t_range(spec, imp).is_ok() {
+            return f;
+        }
+        let hint = Text::new(
+            format!(
+                "あなたの tex_range（a4.t1）がまだ正しくありません。tex_coords がそれを使っているなら、先に a4.t1 を直してください。{}",
+                f.hint.ja
+            ),
+            format!(
+                "your tex_range (a4.t1) is not right yet: if tex_coords uses it, fix a4.t1 first. {}",
+                f.hint.en
+            ),
+        );
+        f.hint(hint)
+    })
+}
 
 /// Every check of this assignment for `spec`, run against `imp`.
 #[must_use]
@@ -40,27 +62,27 @@ pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
                 "地面の 4 隅に範囲の正しい角が来る",
                 "the ground's 4 corners get the right corners of the region",
             ),
-            || t2::corners(spec, imp),
+            || after_t1(spec, imp, t2::corners(spec, imp)),
         ),
         check::run(
             "a4.t2.range",
             t("まとまりごとに範囲をちょうど覆う", "each block covers exactly the region"),
-            || t2::block_range(spec, imp),
+            || after_t1(spec, imp, t2::block_range(spec, imp)),
         ),
         check::run(
             "a4.t2.shared",
             t("共有する頂点は同じ座標", "shared vertices share coordinates"),
-            || t2::shared(spec, imp),
+            || after_t1(spec, imp, t2::shared(spec, imp)),
         ),
         check::run(
             "a4.t2.linear",
             t("i と j の 1 次式（特別扱いなし）", "a linear formula in i and j (no special cases)"),
-            || t2::linear(spec, imp),
+            || after_t1(spec, imp, t2::linear(spec, imp)),
         ),
         check::run(
             "a4.t2.orientation",
             t("向き（回転・反転）", "orientation (turn and mirror)"),
-            || t2::orientation(spec, imp),
+            || after_t1(spec, imp, t2::orientation(spec, imp)),
         ),
         check::run(
             "a4.t2.cells",
@@ -68,7 +90,7 @@ pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
                 "どの四角形にも範囲の正しい場所が映る",
                 "every square shows the right place of the region",
             ),
-            || t2::cells(spec, imp),
+            || after_t1(spec, imp, t2::cells(spec, imp)),
         ),
         check::run(
             "a4.t3.wrap",
