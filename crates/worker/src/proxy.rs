@@ -15,7 +15,10 @@
 //!
 //! **Budgets.** A check's calls share one budget, [`Session::per_check`], from the moment the
 //! check starts ([`begin_check`], called by `check::run`); a call outside any check has the
-//! whole budget to itself. Under [`with_worker_until_timeout`] (the report, which calls the
+//! whole budget to itself. A check begun inside another (`guarded`, a view's call of `motion()`,
+//! inside a check or a report's drawing) goes on with the outer one's budget and judgement, and
+//! its end gives them back (it ended them both, so that the rest of the outer check ran with no
+//! budget at all). Under [`with_worker_until_timeout`] (the report, which calls the
 //! student's functions outside checks, part after part) a call outside a check that ran out of
 //! time makes every later one fail at once as timed out, instead of costing the budget again
 //! for every part; [`Worker::timeouts`] says afterwards that it happened.
@@ -25,8 +28,10 @@
 //! not a window's or the report's calls), a call that would run a student's function that already
 //! ran out of time in this session fails at once, [`CallError::TimedOut`] with `earlier` and
 //! the function that ran out, instead of waiting for the whole budget once more: an endless loop
-//! in `face_normals` cost 20 s in each of a1's three checks that call it. Grading waits again
-//! ([`rerun_timed_out`]): a function that loops on one input may answer another.
+//! in `face_normals` cost 20 s in each of a1's three checks that call it. So do all the calls
+//! under [`with_worker_until_timeout`] (the report: a looping shading function was waited for in
+//! every cell of its table). Grading waits again ([`rerun_timed_out`]): a function that loops on
+//! one input may answer another.
 //!
 //! **Batches.** Where a check would call a function many times (a3's frames, s's pixels), it
 //! asks [`active`] and, when the functions are the worker's, uses one batch call instead
@@ -62,6 +67,9 @@ pub struct Session {
     judged: bool,
     /// The worker's functions whose calls ran out of time, in order, each once.
     timed_out: Vec<String>,
+    /// The checks around the running one, innermost last: each one's deadline and judged flag,
+    /// put back when the check inside it ends ([`end_check`]).
+    outer: Vec<(Option<Instant>, bool)>,
 }
 
 impl Session {
@@ -73,6 +81,7 @@ impl Session {
             until_timeout,
             judged: false,
             timed_out: Vec::new(),
+            outer: Vec::new(),
         }
     }
 }
@@ -152,19 +161,27 @@ pub fn begin_judged_check() {
 fn begin(judged: bool) {
     CURRENT.with(|c| {
         if let Some(s) = c.borrow_mut().as_mut() {
-            // A budget past the clock's end is no deadline at all (not a panic).
-            s.deadline = Instant::now().checked_add(s.per_check);
-            s.judged = judged;
+            if !s.outer.is_empty() {
+                // Inside a check (a `guarded` call of a view inside a check or a report's
+                // drawing): the calls go on sharing that check's budget and its judgement.
+                s.outer.push((s.deadline, s.judged));
+                s.judged |= judged;
+            } else {
+                s.outer.push((None, false));
+                // A budget past the clock's end is no deadline at all (not a panic).
+                s.deadline = Instant::now().checked_add(s.per_check);
+                s.judged = judged;
+            }
         }
     });
 }
 
-/// The check ended: calls outside a check get the whole budget again.
+/// The check ended: the check around it, if any, goes on with its own budget; calls outside a
+/// check get the whole budget again.
 pub fn end_check() {
     CURRENT.with(|c| {
         if let Some(s) = c.borrow_mut().as_mut() {
-            s.deadline = None;
-            s.judged = false;
+            (s.deadline, s.judged) = s.outer.pop().unwrap_or((None, false));
         }
     });
 }
@@ -230,7 +247,7 @@ pub fn call<A: Serialize, R: DeserializeOwned>(function: &str, args: &A) -> R {
             function: function.to_owned(),
             earlier: true,
         };
-        if session.judged
+        if (session.judged || session.until_timeout)
             && !RERUN.with(std::cell::Cell::get)
             && let Some(earlier) = session.timed_out.iter().find(|t| runs_again(t, function))
         {

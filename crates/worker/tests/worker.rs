@@ -226,12 +226,18 @@ fn after_a_timeout_outside_a_check_later_calls_outside_one_fail_at_once() {
         let later = outcome(&|| proxy::call("add", &(4, 5)));
         proxy::begin_check();
         let in_a_check = outcome(&|| proxy::call("add", &(4, 5)));
+        // The report's table cell, in a check of its own, that runs the looping function again.
+        let started = Instant::now();
+        let looped = outcome(&|| proxy::call("loop", &()));
+        let took = started.elapsed();
         proxy::end_check();
-        (first, later, in_a_check)
+        (first, later, in_a_check, looped, took)
     });
     assert_eq!(results.0, Err(Some(timed_out(budget, false))));
     assert_eq!(results.1, Err(Some(timed_out(budget, true))), "would be Ok(9) without");
     assert_eq!(results.2, Ok(9));
+    assert_eq!(results.3, Err(Some(timed_out(budget, true))), "not waited for again");
+    assert!(results.4 < Duration::from_millis(100), "{:?}", results.4);
     assert_eq!(w.timeouts, 1);
     let (results, w) = proxy::with_worker(worker(), budget, || {
         let first = outcome(&|| proxy::call("loop", &()));
@@ -288,6 +294,56 @@ fn a_function_that_ran_out_of_time_is_not_run_again_by_later_checks() {
     assert_eq!(again.0, Err(Some(timed_out(limit, false))), "run again when grading");
     assert!(again.1 >= limit, "{:?}", again.1);
     assert_eq!(w.timeouts, 4);
+}
+
+/// A check begun inside a check (`guarded` around a view's call of `motion()`, inside a check or
+/// the report's drawing) shares the outer one's budget and judgement, and its end gives them back:
+/// a function that already ran out of time fails at once inside it, the loop inside it stops at
+/// the outer check's deadline, and after it the outer check still has its deadline. (The inner
+/// end cleared both: the loop was waited for again, and the rest of the check had no budget.)
+#[test]
+fn a_check_inside_a_check_shares_its_budget_and_judgement() {
+    use cg_worker::proxy;
+    let limit = Duration::from_millis(1000);
+    let (results, w) = proxy::with_worker(worker(), limit, || {
+        proxy::begin_judged_check();
+        let first = outcome(&|| proxy::call("loop", &()));
+        proxy::end_check();
+        proxy::begin_judged_check();
+        proxy::begin_check();
+        let started = Instant::now();
+        let inside = outcome(&|| proxy::call("loop", &()));
+        let inside_took = started.elapsed();
+        proxy::end_check();
+        let after = outcome(&|| proxy::call("loop", &()));
+        proxy::end_check();
+        // A fresh check with a check inside begun 500 ms on: the loop inside stops at the outer
+        // check's deadline, 500 ms later, not a whole budget (1 s) after.
+        let (loop_took, w) = std::thread::spawn(move || {
+            proxy::with_worker(worker(), limit, || {
+                proxy::begin_judged_check();
+                std::thread::sleep(Duration::from_millis(500));
+                proxy::begin_check();
+                let started = Instant::now();
+                let _ = outcome(&|| proxy::call("loop", &()));
+                let took = started.elapsed();
+                proxy::end_check();
+                proxy::end_check();
+                took
+            })
+        })
+        .join()
+        .unwrap();
+        assert_eq!(w.timeouts, 1);
+        (first, inside, inside_took, after, loop_took)
+    });
+    let (first, inside, inside_took, after, loop_took) = results;
+    assert_eq!(first, Err(Some(timed_out(limit, false))));
+    assert_eq!(inside, Err(Some(timed_out(limit, true))), "judged inside the judged check");
+    assert!(inside_took < Duration::from_millis(200), "not waited for again: {inside_took:?}");
+    assert_eq!(after, Err(Some(timed_out(limit, true))), "the outer check goes on judged");
+    assert!(loop_took < Duration::from_millis(800), "the outer deadline: {loop_took:?}");
+    assert_eq!(w.timeouts, 1);
 }
 
 /// A panic's message is the student's: one of 20 MB comes back cut to MAX_MESSAGE_BYTES, with
