@@ -37,7 +37,7 @@ static PROGRESS: Mutex<Progress> =
 /// How often the watcher looks at [`PROGRESS`].
 const WATCH: Duration = Duration::from_millis(50);
 
-/// A batch handler ([`crate::tables`]) is about to call the student's `function` (`a3.idle`) at
+/// A batch handler ([`crate::tables`](mod@crate::tables)) is about to call the student's `function` (`a3.idle`) at
 /// `step` (a3's frame): said so that, when that call runs long (an endless loop), the caller
 /// can name it and the frame in its timeout instead of the whole batch. Cheap: a lock and two
 /// stores, no output. The worker only reports it ([`Reply::Running`]): the caller decides.
