@@ -302,7 +302,8 @@ impl Outcome {
 /// `function` runs: `a1.face_normals` → `exercises/src/a1.rs`, `face_normals`; `a3.frames` →
 /// `exercises/src/a3.rs`, `idle か display` / `idle or display`; `a3.idle@401` (the worker said
 /// which one ran, and at which frame) → `exercises/src/a3.rs`, `idle`.
-fn student_function(function: &str) -> (String, Text) {
+#[must_use]
+pub fn student_function(function: &str) -> (String, Text) {
     let module = function.split('.').next().unwrap_or_default();
     let names: Vec<&str> = cg_worker::proxy::student_functions(function)
         .into_iter()

@@ -560,18 +560,10 @@ fn drawn<T>(f: impl FnOnce() -> T) -> Result<T, Outcome> {
 /// Why a result is not drawn: the worker's `function` (`a3.idle`; a batch names the student's
 /// functions it runs) ran out of time above, while its part was derived.
 fn timed_out_above(function: &str) -> Text {
-    let module = function.split('.').next().unwrap_or_default();
-    let names: Vec<&str> = cg_worker::proxy::student_functions(function)
-        .into_iter()
-        .map(|f| f.split_once('.').map_or(f, |(_, name)| name))
-        .collect();
-    let file = format!("exercises/src/{module}.rs");
+    let (file, names) = cg_harness::check::student_function(function);
     Text::new(
-        format!(
-            "図を描いていません: {file} の {} が上で制限時間内に終わりませんでした",
-            names.join(" か ")
-        ),
-        format!("not drawn: {} ({file}) ran out of time above", names.join(" or ")),
+        format!("図を描いていません: {file} の {} が上で制限時間内に終わりませんでした", names.ja),
+        format!("not drawn: {} ({file}) ran out of time above", names.en),
     )
 }
 
