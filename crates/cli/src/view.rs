@@ -303,7 +303,12 @@ fn view_in_worker(args: &ViewArgs, lang: Lang) -> Result<Ending, String> {
         .get(lang)
         .to_owned());
     }
-    let name = if args.warmup { format!("{}-warmup", args.which) } else { args.which.to_string() };
+    let mut name =
+        if args.warmup { format!("{}-warmup", args.which) } else { args.which.to_string() };
+    // A strip has names of its own: it does not replace the single frame's pictures.
+    if args.strip.is_some() {
+        name.push_str("-strip");
+    }
     let times = strip_times(args, &a, lang)?;
     let mut drawn = Vec::new();
     let mut ending = Ending::Ok;

@@ -112,7 +112,9 @@ fn a_strip_lays_out_one_period_of_the_animation() {
     let out = dir.to_str().unwrap();
     let o = cg(&root(), &["view", "a3", "--student", "12345678", "-o", out, "--strip", "4"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let strip = image::open(dir.join("view-a3-reference.png")).unwrap().to_rgba8();
+    // Named as a strip: the single frame's pictures (view-a3-*.png) stay as they are.
+    assert!(!dir.join("view-a3-reference.png").exists(), "a strip has names of its own");
+    let strip = image::open(dir.join("view-a3-strip-reference.png")).unwrap().to_rgba8();
     // Four half-size frames (320 × 320) in one row, each over its time's label strip.
     assert_eq!(strip.dimensions(), (4 * 320, 320 + 24));
     let frame = |k: u32| -> Vec<[u8; 4]> {
