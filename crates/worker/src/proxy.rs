@@ -16,9 +16,11 @@
 //! **Budgets.** A check's calls share one budget, [`Session::per_check`], from the moment the
 //! check starts ([`begin_check`], called by `check::run`); a call outside any check has the
 //! whole budget to itself. A check begun inside another (`guarded`, a view's call of `motion()`,
-//! inside a check or a report's drawing) goes on with the outer one's budget and judgement, and
-//! its end gives them back (it ended them both, so that the rest of the outer check ran with no
-//! budget at all). Under [`with_worker_until_timeout`] (the report, which calls the
+//! inside a check or a report's drawing) is judged as the outer one is, and its end gives the
+//! outer one its judgement back (it ended it, so that a function that had already run out of time
+//! was waited for again). Its budget is its own, and after it the outer check's calls have the
+//! whole budget each, as a view's many calls inside one `guarded` need (the s view's pixels take
+//! longer than one budget on a loaded machine). Under [`with_worker_until_timeout`] (the report, which calls the
 //! student's functions outside checks, part after part) a call outside a check that ran out of
 //! time makes every later one fail at once as timed out, instead of costing the budget again
 //! for every part; [`Worker::timeouts`] says afterwards that it happened.
@@ -67,9 +69,9 @@ pub struct Session {
     judged: bool,
     /// The worker's functions whose calls ran out of time, in order, each once.
     timed_out: Vec<String>,
-    /// The checks around the running one, innermost last: each one's deadline and judged flag,
-    /// put back when the check inside it ends ([`end_check`]).
-    outer: Vec<(Option<Instant>, bool)>,
+    /// The checks around the running one, innermost last: each one's judged flag, put back
+    /// when the check inside it ends ([`end_check`]).
+    outer: Vec<bool>,
 }
 
 impl Session {
@@ -161,27 +163,24 @@ pub fn begin_judged_check() {
 fn begin(judged: bool) {
     CURRENT.with(|c| {
         if let Some(s) = c.borrow_mut().as_mut() {
-            if !s.outer.is_empty() {
-                // Inside a check (a `guarded` call of a view inside a check or a report's
-                // drawing): the calls go on sharing that check's budget and its judgement.
-                s.outer.push((s.deadline, s.judged));
-                s.judged |= judged;
-            } else {
-                s.outer.push((None, false));
-                // A budget past the clock's end is no deadline at all (not a panic).
-                s.deadline = Instant::now().checked_add(s.per_check);
-                s.judged = judged;
-            }
+            // Inside a check (a `guarded` call of a view inside a check or a report's drawing)
+            // the calls stay judged as that check's are.
+            let outer_judged = !s.outer.is_empty() && s.judged;
+            s.outer.push(s.judged);
+            // A budget past the clock's end is no deadline at all (not a panic).
+            s.deadline = Instant::now().checked_add(s.per_check);
+            s.judged = judged || outer_judged;
         }
     });
 }
 
-/// The check ended: the check around it, if any, goes on with its own budget; calls outside a
-/// check get the whole budget again.
+/// The check ended: calls outside a check get the whole budget again, and the check around it,
+/// if any, its judgement.
 pub fn end_check() {
     CURRENT.with(|c| {
         if let Some(s) = c.borrow_mut().as_mut() {
-            (s.deadline, s.judged) = s.outer.pop().unwrap_or((None, false));
+            s.deadline = None;
+            s.judged = s.outer.pop().unwrap_or(false);
         }
     });
 }
