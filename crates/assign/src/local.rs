@@ -473,10 +473,12 @@ fn run_from_a_copy(worker: Worker) -> Result<Worker, String> {
     Ok(worker.with_program(copy))
 }
 
-/// The memory a worker of `cg view` and `cg report` may use, in MiB (as `cg check`'s default).
+/// The memory a worker of `cg view`, `cg report` and `cg handin` may use, in MiB, and the default
+/// of `--memory-limit` (`cg check`, `cg grade`, `cg grade-one`).
 pub const MEMORY_MB: u64 = 2048;
 
-/// The time one call of a student's function may take in `cg view` and `cg report`.
+/// The time one call of a student's function may take in `cg view`, `cg report` and `cg handin`,
+/// and the default of `--time-limit` (`cg check`, `cg grade`, `cg grade-one`).
 pub const CALL_LIMIT: Duration = Duration::from_secs(20);
 
 /// The worker program [`worker_for_this_kit`] builds: what a window watches for a rebuild.

@@ -113,10 +113,10 @@ pub struct CheckArgs {
     #[arg(long)]
     json: bool,
     /// Seconds one check may spend in your functions before it is taken for an endless loop / 1 つのチェックの制限時間（秒）
-    #[arg(long, value_name = "S", default_value_t = 20, value_parser = clap::value_parser!(u64).range(crate::TIME_LIMIT_S))]
+    #[arg(long, value_name = "S", default_value_t = cg_assign::local::CALL_LIMIT.as_secs(), value_parser = clap::value_parser!(u64).range(crate::TIME_LIMIT_S))]
     time_limit: u64,
     /// MiB of memory your functions may use (Linux and Windows; set on macOS) / あなたの関数が使えるメモリ（MiB、Linux と Windows。macOS では設定のみ）
-    #[arg(long, value_name = "MIB", default_value_t = 2048, value_parser = clap::value_parser!(u64).range(crate::MEMORY_LIMIT_MIB))]
+    #[arg(long, value_name = "MIB", default_value_t = cg_assign::local::MEMORY_MB, value_parser = clap::value_parser!(u64).range(crate::MEMORY_LIMIT_MIB))]
     memory_limit: u64,
 }
 

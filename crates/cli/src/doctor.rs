@@ -516,11 +516,7 @@ fn local_x_display(display: &str) -> Option<u32> {
 /// Runs `f`, a panic caught as its message.
 fn guarded<T>(f: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or_else(|payload| {
-        let message = payload
-            .downcast_ref::<String>()
-            .cloned()
-            .or_else(|| payload.downcast_ref::<&str>().map(|s| (*s).to_owned()))
-            .unwrap_or_default();
+        let message = cg_worker::panic_message(payload.as_ref()).unwrap_or_default();
         Err(format!("panic: {message}"))
     })
 }

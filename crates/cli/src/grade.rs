@@ -22,10 +22,10 @@ pub struct Args {
     #[arg(long, value_name = "N")]
     jobs: Option<usize>,
     /// Seconds one check may spend in a submission's functions / 1 つのチェックが提出物の関数に使える時間（秒）
-    #[arg(long, value_name = "S", default_value_t = 20, value_parser = clap::value_parser!(u64).range(crate::TIME_LIMIT_S))]
+    #[arg(long, value_name = "S", default_value_t = cg_assign::local::CALL_LIMIT.as_secs(), value_parser = clap::value_parser!(u64).range(crate::TIME_LIMIT_S))]
     time_limit: u64,
     /// Memory the worker running a submission's functions may use, in MB / 提出物の関数を動かすプロセスのメモリ上限（MB）
-    #[arg(long, value_name = "MB", default_value_t = 2048, value_parser = clap::value_parser!(u64).range(crate::MEMORY_LIMIT_MIB))]
+    #[arg(long, value_name = "MB", default_value_t = cg_assign::local::MEMORY_MB, value_parser = clap::value_parser!(u64).range(crate::MEMORY_LIMIT_MIB))]
     memory_limit: u64,
     /// The class roster (CSV: student, name, entry = the entry's folder or zip name, or its Moodle participant ID): binds each entry to its student / 名簿（CSV: 学生番号・氏名・提出物のフォルダ名か Moodle の参加者 ID）
     #[arg(long, value_name = "CSV")]

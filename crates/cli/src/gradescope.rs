@@ -25,10 +25,10 @@ pub struct GradeOneArgs {
     #[arg(long, value_name = "TOML")]
     config: Option<PathBuf>,
     /// Seconds one check may spend in the submission's functions / 1 つのチェックが提出物の関数に使える時間（秒）
-    #[arg(long, value_name = "S", default_value_t = 20, value_parser = clap::value_parser!(u64).range(crate::TIME_LIMIT_S))]
+    #[arg(long, value_name = "S", default_value_t = cg_assign::local::CALL_LIMIT.as_secs(), value_parser = clap::value_parser!(u64).range(crate::TIME_LIMIT_S))]
     time_limit: u64,
     /// Memory the worker running the submission's functions may use, in MB / 提出物の関数を動かすプロセスのメモリ上限（MB）
-    #[arg(long, value_name = "MB", default_value_t = 2048, value_parser = clap::value_parser!(u64).range(crate::MEMORY_LIMIT_MIB))]
+    #[arg(long, value_name = "MB", default_value_t = cg_assign::local::MEMORY_MB, value_parser = clap::value_parser!(u64).range(crate::MEMORY_LIMIT_MIB))]
     memory_limit: u64,
     /// Grade even without bubblewrap: the student's code then runs unisolated (the result says so) / bubblewrap なしでも採点する（学生のコードが隔離されずに動きます）
     #[arg(long)]

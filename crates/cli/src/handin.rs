@@ -17,7 +17,7 @@
 //! is 1.
 
 use std::path::{Path, PathBuf};
-use std::time::{Duration, UNIX_EPOCH};
+use std::time::UNIX_EPOCH;
 
 use cg_assign::{IDS, Variants, Which};
 use cg_core::lang::{Lang, Text, t};
@@ -203,8 +203,8 @@ fn checks(
         "running the checks as grading runs them (the first time, building your functions takes a while)…",
     ).get(lang));
     let variants = Variants::for_student(&record.student, record.table);
-    let worker = cg_assign::local::worker_for_this_kit(2048, lang)?;
-    let (reports, _) = variants.reports_in_worker(Which::ALL, worker, Duration::from_secs(20));
+    let worker = cg_assign::local::worker_for_this_kit(cg_assign::local::MEMORY_MB, lang)?;
+    let (reports, _) = variants.reports_in_worker(Which::ALL, worker, cg_assign::local::CALL_LIMIT);
     let mut said = t("チェック（採点と同じもの）:\n", "the checks (as grading runs them):\n");
     let mut stopped = false;
     for r in &reports {

@@ -112,12 +112,7 @@ enum Command {
 fn quiet_on_closed_pipe() {
     let default = std::panic::take_hook();
     std::panic::set_hook(Box::new(move |info| {
-        let message = info
-            .payload()
-            .downcast_ref::<String>()
-            .map(String::as_str)
-            .or_else(|| info.payload().downcast_ref::<&str>().copied())
-            .unwrap_or("");
+        let message = cg_worker::panic_message(info.payload()).unwrap_or_default();
         let printing = message.contains("failed printing to stdout")
             || message.contains("failed printing to stderr");
         if printing && message.contains("Broken pipe") {

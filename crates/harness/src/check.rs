@@ -169,12 +169,9 @@ impl Outcome {
     /// [`Outcome::Panicked`] for any other.
     #[must_use]
     pub fn of_panic(message: String, location: Option<String>) -> Outcome {
-        if let Some(rest) = message.strip_prefix("not yet implemented") {
-            Outcome::NotDone { message: rest.trim_start_matches(':').trim().to_owned() }
-        } else if let Some(rest) = message.strip_prefix("not implemented") {
-            Outcome::NotDone { message: rest.trim_start_matches(':').trim().to_owned() }
-        } else {
-            Outcome::Panicked { message, location }
+        match cg_worker::stub_text(&message) {
+            Some(text) => Outcome::NotDone { message: text.to_owned() },
+            None => Outcome::Panicked { message, location },
         }
     }
 
@@ -462,9 +459,9 @@ fn run_unmarked(
     body: impl FnOnce() -> Result<(), Failure>,
 ) -> CheckResult {
     install_hook();
-    if let Ok(mut current) = CURRENT.lock() {
-        *current = Some((id.to_owned(), Instant::now()));
-    }
+    // A check inside a check (a `guarded` call in a check's body) is watched while it runs; then
+    // the outer one again, from its own start.
+    let outer = CURRENT.lock().ok().and_then(|mut c| c.replace((id.to_owned(), Instant::now())));
     if judged {
         cg_worker::proxy::begin_judged_check();
     } else {
@@ -476,7 +473,7 @@ fn run_unmarked(
     IN_CHECK.with(|c| c.set(was_in_check));
     cg_worker::proxy::end_check();
     if let Ok(mut current) = CURRENT.lock() {
-        *current = None;
+        *current = outer;
     }
     let outcome = match result {
         Ok(Ok(())) => Outcome::Pass,
@@ -486,10 +483,7 @@ fn run_unmarked(
             if let Some(error) = payload.downcast_ref::<CallError>() {
                 Outcome::of_call(error)
             } else {
-                let message = payload
-                    .downcast_ref::<String>()
-                    .cloned()
-                    .or_else(|| payload.downcast_ref::<&str>().map(|s| (*s).to_owned()))
+                let message = cg_worker::panic_message(payload.as_ref())
                     .unwrap_or_else(|| "(no message)".to_owned());
                 Outcome::of_panic(message, location)
             }

@@ -68,6 +68,27 @@ pub fn limit_memory(mb: u64) -> std::io::Result<bool> {
 
 pub use serve::{Handler, serve};
 
+/// The message of a panic's `payload`: the `String` of `panic!("{x}")` or the `&str` of
+/// `panic!("text")`; `None` for any other payload (`std::panic::panic_any` of another type).
+#[must_use]
+pub fn panic_message(payload: &(dyn std::any::Any + Send)) -> Option<String> {
+    payload
+        .downcast_ref::<String>()
+        .cloned()
+        .or_else(|| payload.downcast_ref::<&str>().map(|s| (*s).to_owned()))
+}
+
+/// The text of a stub's panic: what follows `not yet implemented` (`todo!()`) or `not
+/// implemented` (`unimplemented!()`), its colon and spaces taken off (`""` for a bare
+/// `todo!()`); `None` when `message` is any other panic's.
+#[must_use]
+pub fn stub_text(message: &str) -> Option<&str> {
+    ["not yet implemented", "not implemented"]
+        .iter()
+        .find_map(|stub| message.strip_prefix(stub))
+        .map(|rest| rest.trim_start_matches(':').trim())
+}
+
 use serde::{Deserialize, Serialize};
 
 /// Why a call gave no value when it is no fault of the function's own code as such (the worker
@@ -215,5 +236,23 @@ mod tests {
         let value = to_value(&args).unwrap();
         let through = encode(&Call { function: "s.test".to_owned(), args: value }).unwrap();
         assert_eq!(direct, through);
+    }
+
+    /// A panic's message from either payload, none from another; a stub's text from `todo!()`
+    /// and `unimplemented!()` with or without a text, none from any other message.
+    #[test]
+    fn panic_messages_and_stub_texts() {
+        let owned: Box<dyn std::any::Any + Send> = Box::new(format!("index {} out of range", 3));
+        let borrowed: Box<dyn std::any::Any + Send> = Box::new("attempt to divide by zero");
+        let other: Box<dyn std::any::Any + Send> = Box::new(7u32);
+        assert_eq!(panic_message(owned.as_ref()).as_deref(), Some("index 3 out of range"));
+        assert_eq!(panic_message(borrowed.as_ref()).as_deref(), Some("attempt to divide by zero"));
+        assert_eq!(panic_message(other.as_ref()), None);
+
+        assert_eq!(stub_text("not yet implemented: a1.t1: write it"), Some("a1.t1: write it"));
+        assert_eq!(stub_text("not yet implemented"), Some(""));
+        assert_eq!(stub_text("not implemented: s.t2"), Some("s.t2"));
+        assert_eq!(stub_text("index out of bounds: not yet implemented"), None);
+        assert_eq!(stub_text("attempt to divide by zero"), None);
     }
 }

@@ -125,10 +125,7 @@ fn run_unmarked(handler: &Handler, args: Value) -> Reply {
         Ok(Ok(value)) => Reply::Value(value),
         Ok(Err(why)) => Reply::BadArguments(why),
         Err(payload) => Reply::Panicked {
-            message: payload
-                .downcast_ref::<String>()
-                .cloned()
-                .or_else(|| payload.downcast_ref::<&str>().map(|s| (*s).to_owned()))
+            message: crate::panic_message(payload.as_ref())
                 .unwrap_or_else(|| "(no message)".to_owned()),
             location: LOCATION.with(|l| l.borrow_mut().take()),
         },

@@ -178,15 +178,10 @@ fn with_call(payload: Box<dyn Any + Send>, call: impl FnOnce() -> String) -> Box
             Some((message.clone(), Some(location.clone())))
         }
         Some(_) => None,
-        None => payload
-            .downcast_ref::<String>()
-            .cloned()
-            .or_else(|| payload.downcast_ref::<&str>().map(|s| (*s).to_owned()))
-            .map(|message| (message, None)),
+        None => cg_worker::panic_message(payload.as_ref()).map(|message| (message, None)),
     };
-    let stub = |m: &str| m.starts_with("not yet implemented") || m.starts_with("not implemented");
     match panicked {
-        Some((message, in_worker)) if !stub(&message) => {
+        Some((message, in_worker)) if cg_worker::stub_text(&message).is_none() => {
             let message = format!("{message} ← {}", call());
             match in_worker {
                 Some(location) => Box::new(CallError::Panicked { message, location }),
