@@ -418,7 +418,8 @@ fn failures_explain_themselves_in_both_languages_and_say_where() {
 }
 
 /// a4.t1 wrong, and tex_coords built on it (as the hint of the stub says to): the a4.t2 checks
-/// that fail say to fix a4.t1 first; with a4.t1 right, an a4.t2 failure does not.
+/// that fail say to fix a4.t1 first; with a4.t1 right, an a4.t2 failure does not; with a4.t1 not
+/// written yet, the a4.t2 checks still judge tex_coords.
 #[test]
 fn a4_t2_failures_that_follow_from_a4_t1_say_so() {
     fn range_flipped(spec: &Spec, i: u32, j: u32) -> [Vec2; 4] {
@@ -435,6 +436,7 @@ fn a4_t2_failures_that_follow_from_a4_t1_say_so() {
         ..reference()
     };
     let only_t2 = Impl { tex_coords: tex_coords_with::<OFF_BY_ONE>, ..reference() };
+    let stubs = cg_exercises::a4::implementation();
     let mut shown = 0;
     for (who, spec) in specs().into_iter().filter(|(_, s)| 2 * s.region.row + s.region.rows != 8) {
         let t2: Vec<CheckResult> =
@@ -448,6 +450,16 @@ fn a4_t2_failures_that_follow_from_a4_t1_say_so() {
         }
         for c in cg_a4::checks(&spec, &only_t2).iter().filter(|c| !c.passed()) {
             assert!(!failure_text(c).contains("a4.t1"), "{who}: {}: {}", c.id, failure_text(c));
+        }
+        // tex_range not written yet, tex_coords written (wrong) without it: each a4.t2 check is
+        // judged on tex_coords alone, with the hint, not "a4.t1 is not written yet".
+        let t1_stub = Impl { tex_range: stubs.tex_range, ..only_t2 };
+        let t2: Vec<CheckResult> =
+            cg_a4::checks(&spec, &t1_stub).into_iter().filter(|c| c.task == "a4.t2").collect();
+        assert!(t2.iter().any(|c| !c.passed()), "{who}: no a4.t2 check fails");
+        for c in t2.iter().filter(|c| !c.passed()) {
+            assert!(matches!(c.outcome, Outcome::Fail(_)), "{who}: {}: {:?}", c.id, c.outcome);
+            assert!(failure_text(c).contains("fix a4.t1 first"), "{who}: {}", c.id);
         }
         shown += 1;
     }
