@@ -39,9 +39,8 @@ pub(crate) fn pose_distance(a: DMat4, b: DMat4) -> f64 {
 /// A time in seconds as the messages and the report's IDs print it: at most 3 decimals,
 /// trailing zeros dropped (`2.5`, `0.017`, `1`).
 pub(crate) fn seconds(x: f64) -> String {
-    let s = format!("{x:.3}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    s.to_owned()
+    let s = cg_core::notation::fixed64(x, 3);
+    s.trim_end_matches('0').trim_end_matches('.').to_owned()
 }
 
 /// Whether a draw's name means `object`: the same ignoring case, spaces, `_` and `-`; `物体2`

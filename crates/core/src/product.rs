@@ -124,9 +124,8 @@ pub fn format_number(x: f32) -> String {
         // The shortest digits that round-trip: 15, -15, 100000000000000000000.
         return format!("{x}");
     }
-    let s = format!("{x:.4}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" { "0".to_owned() } else { s.to_owned() }
+    let s = crate::notation::fixed(x, 4);
+    s.trim_end_matches('0').trim_end_matches('.').to_owned()
 }
 
 /// `x` as a LaTeX matrix entry: [`format_number`], with `\infty` and `\mathrm{NaN}` for

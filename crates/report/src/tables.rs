@@ -25,21 +25,12 @@ use crate::template::{Format, latex_escape};
 pub const NORMAL_NOTE_TOLERANCE: f32 = 0.001;
 
 /// `x` with exactly three decimals, as the kit's tables print numbers: `0.486`, `-0.800`,
-/// `1.000`; values that round to zero print as `0.000`, never `-0.000`. Non-finite values print
-/// as `NaN`, `inf`, `-inf`.
+/// `1.000`, a 5 rounded up as by hand (`0.3125` → `0.313`, [`cg_core::notation::fixed`]); values
+/// that round to zero print as `0.000`, never `-0.000`. Non-finite values print as `NaN`, `inf`,
+/// `-inf`.
 #[must_use]
 pub fn fixed(x: f32) -> String {
-    if x.is_nan() {
-        return "NaN".to_owned();
-    }
-    if x.is_infinite() {
-        return if x > 0.0 { "inf" } else { "-inf" }.to_owned();
-    }
-    let s = format!("{:.3}", f64::from(x));
-    match s.strip_prefix('-') {
-        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_owned(),
-        _ => s,
-    }
+    cg_core::notation::fixed(x, 3)
 }
 
 /// `(x, y, z)` with [`fixed`] components: `(0.000, 1.000, 0.000)`.
@@ -582,8 +573,12 @@ pub fn sampler_text(
         Some(t) => {
             let (x, y) = (format_number(t.x), format_number(t.y));
             Text::new(
-                format!("地面の四角形 1 つに画像の {x} × {y} 画素が貼られる。"),
-                format!("One ground square shows {x} × {y} pixels of the image."),
+                format!(
+                    "地面の四角形 1 つに画像の {x} × {y} 画素（画像の横 × 縦、s 方向 × t 方向）が貼られる。"
+                ),
+                format!(
+                    "One ground square shows {x} × {y} pixels of the image (across × up the image, along s × along t)."
+                ),
             )
         }
         None => t(

@@ -52,14 +52,7 @@ impl Inputs {
 
 /// A number with 4 decimals (NaN and infinities spelled out).
 pub(crate) fn num(x: f32) -> String {
-    if x.is_nan() {
-        "NaN".to_owned()
-    } else if x.is_infinite() {
-        if x > 0.0 { "inf".to_owned() } else { "-inf".to_owned() }
-    } else {
-        let s = format!("{x:.4}");
-        if s == "-0.0000" { "0.0000".to_owned() } else { s }
-    }
+    cg_core::notation::fixed(x, 4)
 }
 
 /// A vector or colour as `(x, y, z)` with 4 decimals.

@@ -385,11 +385,7 @@ pub fn layout(p: &PolygonData, view: View) -> Figure {
 
 /// `1.50`: a coordinate with two decimals (never `-0.00`).
 fn num(x: f32) -> String {
-    let s = format!("{x:.2}");
-    match s.strip_prefix('-') {
-        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_owned(),
-        _ => s,
-    }
+    cg_core::notation::fixed(x, 2)
 }
 
 /// Text made safe for XML content and attribute values.

@@ -21,9 +21,8 @@ fn show(x: f64) -> String {
     if !x.is_finite() {
         return "NaN".to_owned();
     }
-    let s = format!("{x:.4}");
-    let s = s.trim_end_matches('0').trim_end_matches('.').to_owned();
-    if s == "-0" { "0".to_owned() } else { s }
+    let s = cg_core::notation::fixed64(x, 4);
+    s.trim_end_matches('0').trim_end_matches('.').to_owned()
 }
 
 fn component(v: Vec2, name: char) -> f64 {

@@ -10,16 +10,9 @@ use super::tex_label;
 use crate::tables::{md_cell, table};
 use crate::template::{Format, not_yet};
 
-/// `x` with exactly three decimals, never `-0.000`.
+/// `x` with exactly three decimals, a 5 rounded up as by hand, never `-0.000`.
 pub(crate) fn fixed(x: f64) -> String {
-    if !x.is_finite() {
-        return if x.is_nan() { "NaN".to_owned() } else { format!("{x}") };
-    }
-    let s = format!("{x:.3}");
-    match s.strip_prefix('-') {
-        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_owned(),
-        _ => s,
-    }
+    cg_core::notation::fixed64(x, 3)
 }
 
 /// A value as the tables write it: `0.577`, `(0.577, 0.577, 0.577)`, `None`.

@@ -306,9 +306,5 @@ pub(super) fn refraction_table(spec: &Spec, student: &mut Student) -> Table {
 
 /// `x` with three decimals, `0.000` for a value that rounds to zero.
 fn tables_fixed(x: f32) -> String {
-    let s = format!("{:.3}", f64::from(x));
-    match s.strip_prefix('-') {
-        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_owned(),
-        _ => s,
-    }
+    cg_core::notation::fixed(x, 3)
 }
