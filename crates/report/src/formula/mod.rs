@@ -233,7 +233,30 @@ pub fn values(tex: &TextureData, lang: Lang, format: Format) -> String {
         "i と j で書いた式（report check がすべての格子点で確かめます）:",
         "In i and j (report check evaluates it at every grid vertex):",
     );
-    format!("{words}\n{}\n\n{b}", lead.get(lang))
+    let edge = far_edge(tex).map(|e| format!("\n{}\n", e.get(lang))).unwrap_or_default();
+    format!("{words}\n{}\n\n{b}{edge}", lead.get(lang))
+}
+
+/// For a formula with `mod` (a repeated region): how it reads at a block's far edge, where the
+/// `mod` is 0 but the squares before the edge take its divisor (the assignment's `i % k + 1` for
+/// a square's far corners), with the ground's far corner as the example, its coordinates from
+/// the table. Read literally there, the formula would give the corner (0, 0)'s coordinates.
+fn far_edge(tex: &TextureData) -> Option<Text> {
+    let (s, t) = kit_formula(tex)?;
+    if !s.contains(" mod ") && !t.contains(" mod ") {
+        return None;
+    }
+    let corner = tex.rows.iter().max_by_key(|r| (r.i, r.j))?;
+    let (i, j) = (corner.i, corner.j);
+    let st = tables::tuple2(*corner.tex.first()?);
+    Some(Text::new(
+        format!(
+            "まとまりの奥・右の端の格子点（i や j は 0 でないのに mod が 0 になる所）では、端の手前の四角形については、その mod を割る数（mod 2 なら 2）と読みます（課題のとおり四角形の右・奥の頂点は (i mod k) + 1。report check もそう読みます）。例えば地面の角 ({i}, {j}) は (s, t) = {st} です。"
+        ),
+        format!(
+            "At a grid vertex on a block's far edge (where a mod is 0 although i or j is not), read that mod as its divisor (2 for mod 2) for the squares before the edge (a square's far corners use (i mod k) + 1, as the assignment says; report check reads it so too): the ground's corner ({i}, {j}), for example, has (s, t) = {st}."
+        ),
+    ))
 }
 
 #[cfg(test)]

@@ -105,6 +105,32 @@ fn the_filled_formula_reads_back_and_checks_clean() {
     assert!(text.contains("t &= 0.625 - 0.05 \\cdot (i \\bmod 5)"), "{text}");
 }
 
+/// With a repeat, the formula's mod reads as its divisor at a block's far edge: said after it,
+/// with the ground's far corner from the table (read literally, the formula gives (0.5, 0.625)
+/// there, the corner (0, 0)'s). Without a repeat nothing is said.
+#[test]
+fn a_formula_with_mod_says_how_it_reads_at_a_blocks_far_edge() {
+    let corner = |d: &Derived| {
+        let rows = &d.a4.as_ref().unwrap().rows;
+        rows.iter().find(|r| (r.i, r.j) == (10, 10)).unwrap().tex.clone()
+    };
+    // turned_coords at square (9, 9)'s far corner: p = q = 1.
+    assert_eq!(corner(&derived(true)), vec![Vec2::new(0.25, 0.375)]);
+    for (lang, format) in CASES {
+        let text = filled(&derived(true), lang, format);
+        let said = t(
+            "地面の角 (10, 10) は (s, t) = (0.250, 0.375)",
+            "(10, 10), for example, has (s, t) = (0.250, 0.375)",
+        );
+        assert!(text.contains(said.get(lang)), "{lang} {format:?}: {text}");
+        // Plain text in both formats: no `%` (a LaTeX comment) and no backquotes.
+        let line = text.lines().find(|l| l.contains("(10, 10)")).unwrap();
+        assert!(!line.contains(['%', '`']), "{line}");
+        let plain = filled(&derived(false), lang, format);
+        assert!(!plain.contains("(10, 10)"), "{lang} {format:?}: {plain}");
+    }
+}
+
 #[test]
 fn a_wrong_formula_is_named_at_its_first_wrong_vertex() {
     let d = derived(false);
