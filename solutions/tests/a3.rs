@@ -286,7 +286,7 @@ fn broken_answers_fail_the_checks_that_name_their_mistake() {
     }
     // The messages name the mistake and the place: (answer, check, words in the cause, expected
     // or actual, words in the location).
-    let named: [(Bug, &str, &str, &str); 24] = [
+    let named: [(Bug, &str, &str, &str); 25] = [
         (Bug::NoPushPop, "a3.t2.independent", "still apply", "object"),
         (Bug::ExtraPop, "a3.t2.stack", "GL_STACK_UNDERFLOW", "display()"),
         (Bug::MissingPop, "a3.t2.stack", "glPopMatrix missing", "display()"),
@@ -299,6 +299,9 @@ fn broken_answers_fail_the_checks_that_name_their_mistake() {
         (Bug::ChildOutsideParent, "a3.t2.hierarchy", "world's origin", "object 3"),
         (Bug::LightBeforeCamera, "a3.t2.light", "before the camera", "GL_LIGHT0"),
         (Bug::OneFrameLate, "a3.t2.poses", "one frame late", "frame"),
+        // The origin shown beside a product with the camera is the world's (the camera taken
+        // off), and says so.
+        (Bug::OneFrameLate, "a3.t2.poses", "in the world (the camera's factors taken off)", "t = "),
         (Bug::WrongPeriod, "a3.t1.periods", "the period is 10 s instead of 2.5 s", "object 1"),
         (Bug::WrongPeriod, "a3.t2.poses", "period of 10 s instead of 2.5 s", "object 1"),
         (Bug::ThirtyFps, "a3.t2.poses", "twice as fast", "t = "),

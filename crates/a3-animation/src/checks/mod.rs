@@ -520,7 +520,9 @@ fn leak_diagnosis(earlier: &str) -> Diagnosis {
     )
 }
 
-/// The failure for a wrong pose: the expected and found products and origins.
+/// The failure for a wrong pose: the expected and found products (the camera's factors first,
+/// as `display()` multiplies them) and the object's origin in the world (the model matrix's, the
+/// camera taken off, as the poses are compared).
 fn pose_failure(
     expected_product: &MatrixProduct,
     expected: DMat4,
@@ -542,12 +544,18 @@ fn pose_failure(
     let (mv, rot, pos) = (draw.model_view.numeric(), rot.to_degrees(), format_number(pos as f32));
     Failure::new(
         Text::new(
-            format!("{product} → 原点 {o_expected}"),
-            format!("{product} → origin {o_expected}"),
+            format!("{product} → 物体の原点は世界座標で {o_expected}（カメラの因子を除いて）"),
+            format!(
+                "{product} → the object's origin at {o_expected} in the world (the camera's factors taken off)"
+            ),
         ),
         Text::new(
-            format!("{mv} → 原点 {o_found}（回転のずれ {rot:.3}°、位置のずれ {pos}{also_ja}）"),
-            format!("{mv} → origin {o_found} (off by {rot:.3}° and {pos} units{also_en})"),
+            format!(
+                "{mv} → 物体の原点は世界座標で {o_found}（回転のずれ {rot:.3}°、位置のずれ {pos}{also_ja}）"
+            ),
+            format!(
+                "{mv} → the object's origin at {o_found} in the world (off by {rot:.3}° and {pos} units{also_en})"
+            ),
         ),
     )
     .at(location)
