@@ -49,12 +49,28 @@ pub(crate) fn describe(spec: &Spec, lang: Lang) -> String {
         (column_name(r.column), column_name(r.column + r.columns - 1));
     let (first_row, last_row) = (r.row + 1, r.row + r.rows);
     let name = r.name();
+    // One column or one row is named alone (`column A`), not as a range from it to itself.
+    let columns = if r.columns == 1 {
+        Text::new(format!("列 {first_column}"), format!("column {first_column}"))
+    } else {
+        Text::new(
+            format!("列 {first_column}〜{last_column}"),
+            format!("columns {first_column}–{last_column}"),
+        )
+    };
+    let rows = if r.rows == 1 {
+        Text::new(format!("行 {first_row}"), format!("row {first_row}"))
+    } else {
+        Text::new(format!("行 {first_row}〜{last_row}"), format!("rows {first_row}–{last_row}"))
+    };
     let region = Text::new(
         format!(
-            "  範囲: {name}（列 {first_column}〜{last_column}、行 {first_row}〜{last_row}）= 画像の左上の角から画素 x = {x0}〜{x1}、y = {y0}〜{y1}"
+            "  範囲: {name}（{}、{}）= 画像の左上の角から画素 x = {x0}〜{x1}、y = {y0}〜{y1}",
+            columns.ja, rows.ja
         ),
         format!(
-            "  Region: {name} (columns {first_column}–{last_column}, rows {first_row}–{last_row}) = pixels x = {x0}…{x1}, y = {y0}…{y1} from the image's top-left corner"
+            "  Region: {name} ({}, {}) = pixels x = {x0}…{x1}, y = {y0}…{y1} from the image's top-left corner",
+            columns.en, rows.en
         ),
     );
     let _ = writeln!(out, "{}", region.get(lang));
