@@ -332,11 +332,11 @@ fn the_sampler_line_names_the_opengl_modes_and_the_pixels_per_square() {
         en,
         "Filter: GL_NEAREST (Filter::Nearest). Wrap: GL_CLAMP_TO_EDGE (Wrap::Clamp) along s, \
          GL_REPEAT (Wrap::Repeat) along t. One ground square shows 10 × 5 pixels of \
-         the image.\n"
+         the image (across × up the image, along s × along t).\n"
     );
     let ja = sampler(&t, Lang::Ja, Format::Latex).unwrap();
     assert!(ja.contains("s 方向 GL\\_CLAMP\\_TO\\_EDGE"), "{ja}");
-    assert!(ja.contains("10 × 5 画素"), "{ja}");
+    assert!(ja.contains("10 × 5 画素（画像の横 × 縦、s 方向 × t 方向）"), "{ja}");
     t.sampler = None;
     assert_eq!(sampler(&t, Lang::En, Format::Markdown), None);
 }
