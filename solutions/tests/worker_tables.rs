@@ -503,14 +503,6 @@ fn a3_through_the_pipe_is_the_direct_call() {
                 same("a3.display", &gl, &pipe(&table, "a3.display", &(&wire, &direct, Gl::new())));
             }
         }
-        // run_idle: the drift check's 10⁶ frames in one call, and a run from a state part-way.
-        for (from, n) in [(State::new(), a3::DRIFT_FRAMES), (direct.clone(), 1234)] {
-            let mut state = from.clone();
-            for _ in 0..n {
-                (imp.idle)(&spec, &mut state);
-            }
-            same(&format!("{n} frames"), &state, &pipe(&table, "a3.run_idle", &(&wire, &from, n)));
-        }
         // frames: the checks' each_frame, mirrored.
         let frames = vec![0u64, 1, 2, 59, 60, 61, 150, 1000, 1000, 4321];
         let mut state = State::new();

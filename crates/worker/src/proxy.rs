@@ -37,7 +37,7 @@
 //!
 //! **Batches.** Where a check would call a function many times (a3's frames, s's pixels), it
 //! asks [`active`] and, when the functions are the worker's, uses one batch call instead
-//! ([`a3_frames`], [`a3_run_idle`], [`shade_pixels`]): the same calls of the student's functions
+//! ([`a3_frames`], [`shade_pixels`]): the same calls of the student's functions
 //! in the same order, run in the worker, one round trip.
 
 use std::cell::RefCell;
@@ -212,7 +212,6 @@ pub fn split_step(function: &str) -> (&str, Option<u64>) {
 pub fn student_functions(function: &str) -> Vec<&str> {
     match split_step(function).0 {
         "a3.frames" => vec!["a3.idle", "a3.display"],
-        "a3.run_idle" => vec!["a3.idle"],
         "s.shade_pixels_queries" | "s.shade_pixels" => vec!["s.shade_pixel"],
         other => vec![other],
     }
@@ -365,15 +364,6 @@ pub fn a3_frames(spec: &a3::Spec, frames: &[u64]) -> Vec<(a3::State, Gl)> {
     out
 }
 
-/// a3: `idle` called `n` times on `state` (the worker's `a3.run_idle`).
-///
-/// # Panics
-/// With a [`CallError`] payload, as [`call`].
-#[must_use]
-pub fn a3_run_idle(spec: &a3::Spec, state: &a3::State, n: u64) -> a3::State {
-    call("a3.run_idle", &(A3Spec(spec.clone()), state, n))
-}
-
 /// s: `shade_pixel` of each pixel in `mode` with the kit's `light`, in two round trips for any
 /// number of pixels: the worker lists what each pixel asks `light`, the kit lights those points
 /// here, and the worker runs the function again with those answers (see [`crate::tables`](mod@crate::tables)).
@@ -424,7 +414,7 @@ mod tests {
         assert_eq!(student_functions("a3.frames"), ["a3.idle", "a3.display"]);
         assert!(runs_again("a1.face_normals", "a1.face_normals"));
         assert!(!runs_again("a1.face_normals", "a1.faces"));
-        assert!(runs_again("a3.idle", "a3.frames") && runs_again("a3.idle", "a3.run_idle"));
+        assert!(runs_again("a3.idle", "a3.frames"));
         assert!(runs_again("a3.frames", "a3.frames"));
         assert!(!runs_again("a3.frames", "a3.idle") && !runs_again("a3.frames", "a3.display"));
         assert!(runs_again("s.shade_pixels_queries", "s.shade_pixels"));

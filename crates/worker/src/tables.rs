@@ -18,7 +18,6 @@
 //! | `a3.warmup_display` | `(Gl, f64)` → `Gl` after the call |
 //! | `a3.idle` | `(A3Spec, State)` → `State` after the call |
 //! | `a3.display` | `(A3Spec, State, Gl)` → `Gl` after the call |
-//! | `a3.run_idle` | `(A3Spec, State, u64)` → `State` after `n` calls of `idle` |
 //! | `a3.frames` | `(A3Spec, Vec<u64>)` → `Vec<(State, Gl)>`: per frame, idle up to it, then `display` (each call announced with `serve::running`) |
 //! | `a4.tex_range` | `Spec` → `TexRange` |
 //! | `a4.tex_coords` | `(Spec, u32, u32)` → `[Vec2; 4]` |
@@ -71,7 +70,7 @@ pub const A2_FIELDS: &[&str] = &["motion", "camera", "display"];
 /// The fields of `a3::Impl`.
 pub const A3_FIELDS: &[&str] = &["warmup_display", "idle", "display"];
 /// a3's batch operations.
-pub const A3_BATCH: &[&str] = &["run_idle", "frames"];
+pub const A3_BATCH: &[&str] = &["frames"];
 /// The fields of `a4::Impl`.
 pub const A4_FIELDS: &[&str] = &["tex_range", "tex_coords", "sampler"];
 /// The fields of `s::Impl`.
@@ -131,7 +130,7 @@ pub fn a2(imp: a2::Impl) -> Vec<(&'static str, Handler)> {
     ]
 }
 
-/// a3's table, with the batch operations `a3.run_idle` and `a3.frames`.
+/// a3's table, with the batch operation `a3.frames`.
 pub fn a3(imp: a3::Impl) -> Vec<(&'static str, Handler)> {
     let a3::Impl { warmup_display, idle, display } = imp;
     vec![
@@ -154,16 +153,6 @@ pub fn a3(imp: a3::Impl) -> Vec<(&'static str, Handler)> {
             handler(move |(A3Spec(spec), state, mut gl): (A3Spec, a3::State, Gl)| {
                 display(&spec, &state, &mut gl);
                 gl
-            }),
-        ),
-        // The drift check's 10⁶ frames in one call.
-        (
-            "a3.run_idle",
-            handler(move |(A3Spec(spec), mut state, n): (A3Spec, a3::State, u64)| {
-                for _ in 0..n {
-                    idle(&spec, &mut state);
-                }
-                state
             }),
         ),
         // The checks' `each_frame` (a3-animation/src/checks/mod.rs) and the view's
