@@ -34,7 +34,7 @@ fn kit() -> Kit {
 
 fn assignment(student: &str) -> Variants {
     let n: StudentNumber = student.parse().unwrap();
-    Variants::for_student(&n, TableVersion::LATEST)
+    Variants::for_student(&n, TableVersion::DEFAULT)
 }
 
 /// The filled Markdown report of a correct student, with its derived data: as `cg report fill`

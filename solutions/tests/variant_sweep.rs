@@ -23,8 +23,12 @@ fn impls() -> Impls {
 }
 
 fn variants(n: u32) -> Variants {
+    variants_in(n, TableVersion::V1)
+}
+
+fn variants_in(n: u32, table: TableVersion) -> Variants {
     let s: StudentNumber = format!("{n:08}").parse().unwrap();
-    Variants::for_student(&s, TableVersion::V1)
+    Variants::for_student(&s, table)
 }
 
 /// `count` student numbers spread over 00000000–99999999: the edge ones first, then a
@@ -292,19 +296,19 @@ fn a_spread_of_students_passes_everything() {
     let imp = impls();
     let mut bad = Vec::new();
     let mut odd = Odd::default();
-    for n in numbers(40) {
-        let v = variants(n);
+    for (n, table) in numbers(40).into_iter().flat_map(|n| TableVersion::ALL.map(|t| (n, t))) {
+        let v = variants_in(n, table);
         for &w in Which::ALL {
             if w == Which::a3 || w == Which::s {
                 continue; // slow: the dedicated sweeps below
             }
             for f in failures(&v.checks(w, &imp)) {
-                bad.push(format!("{n:08} {}: {f}", w.id()));
+                bad.push(format!("{n:08} table {table} {}: {f}", w.id()));
             }
         }
         for &w in Which::ALL {
             for lang in [Lang::Ja, Lang::En] {
-                odd.add(w.id(), lang, &format!("{n:08}"), &v.describe_one(w, lang));
+                odd.add(w.id(), lang, &format!("{n:08}/{table}"), &v.describe_one(w, lang));
             }
         }
     }
@@ -467,6 +471,32 @@ fn a2_sampled_students_pass() {
 // ---------------------------------------------------------------------------------------------
 // a3: sampled (slow: ~1 s a variant in debug).
 
+/// Table 2's layouts (the parent hopping through the centre, the orbit around the pair) pass
+/// every check of the reference, for a few students of each layout.
+#[test]
+fn a3_table_2_layouts_pass() {
+    let imp = cg_solutions::a3::implementation();
+    let mut tally = Tally::new("a3 table 2");
+    let mut layouts = std::collections::HashMap::new();
+    for n in numbers(200) {
+        let spec = variants_in(n, TableVersion::V2).a3;
+        let layout: Vec<String> = spec
+            .objects
+            .iter()
+            .map(|o| format!("{:?}", o.motion).split_whitespace().next().unwrap_or("").to_owned())
+            .collect();
+        let seen = layouts.entry(layout.join(" ")).or_insert(0);
+        *seen += 1;
+        if *seen == 1 {
+            tally.run(&format!("{n:08}"), || cg_a3::checks(&spec, &imp));
+        }
+        if layouts.len() >= 8 {
+            break;
+        }
+    }
+    tally.assert_clean();
+}
+
 #[test]
 #[ignore]
 fn a3_sampled_students_pass() {
@@ -475,8 +505,10 @@ fn a3_sampled_students_pass() {
     let mut tally = Tally::new("a3");
     let mut seen = HashSet::new();
     let mut longest = (0.0, String::new());
-    for n in numbers(sweep_n(2_000)) {
-        let spec = variants(n).a3;
+    for (n, table) in
+        numbers(sweep_n(2_000)).into_iter().flat_map(|n| TableVersion::ALL.map(|t| (n, t)))
+    {
+        let spec = variants_in(n, table).a3;
         let common = spec.common_period_s();
         assert!(common.is_finite() && common > 0.0 && common <= 36.0, "{n:08}: {common}");
         for o in &spec.objects {
@@ -496,12 +528,17 @@ fn a3_sampled_students_pass() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// a4: the whole space enumerated (6 984 distinct specs).
+// a4: the whole space enumerated (6 984 distinct specs in table 1, 20 952 in table 2).
 
-fn a4_space() -> Vec<cg_a4::Spec> {
+fn a4_space(table: TableVersion) -> Vec<cg_a4::Spec> {
     let mut out = Vec::new();
     for repeat in [1u32, 2, 5] {
-        let sizes: &[u32] = if repeat == 5 { &[1, 2] } else { &[2, 3, 4] };
+        let sizes: &[u32] = match (table, repeat == 5) {
+            (TableVersion::V1, true) => &[1, 2],
+            (TableVersion::V1, false) => &[2, 3, 4],
+            (TableVersion::V2, true) => &[1, 2, 3],
+            (TableVersion::V2, false) => &[1, 2, 3, 4, 5, 6],
+        };
         for &columns in sizes {
             for &rows in sizes {
                 for column in 0..=(8 - columns) {
@@ -526,20 +563,40 @@ fn a4_space() -> Vec<cg_a4::Spec> {
 
 #[test]
 fn a4_the_enumeration_is_the_space() {
-    let space = a4_space();
-    assert_eq!(space.len(), 6984);
-    for n in numbers(3000) {
-        let s = variants(n).a4;
-        assert!(space.contains(&s), "{n:08}: {s:?}");
+    for (table, size) in [(TableVersion::V1, 6984), (TableVersion::V2, 20_952)] {
+        let space: HashSet<String> = a4_space(table).iter().map(|s| format!("{s:?}")).collect();
+        assert_eq!(space.len(), size, "table {table}");
+        let mut drawn = HashSet::new();
+        for n in numbers(3000) {
+            let s = format!("{:?}", variants_in(n, table).a4);
+            assert!(space.contains(&s), "{n:08}, table {table}: {s}");
+            drawn.insert(s);
+        }
+        // The draws spread over the space (table 2's is three times as wide).
+        assert!(drawn.len() > 3000 * 7 / 10, "table {table}: {} distinct of 3000", drawn.len());
     }
 }
 
+/// Every a4 variant of table 1 (6 984) and every third of table 2 (6 984 of 20 952, every size,
+/// place, orientation and repeat among them): the reference passes every check, and the texts
+/// print no odd number. The whole of table 2: `a4_table_2_whole_space_passes` (ignored).
 #[test]
 fn a4_every_variant_passes() {
+    a4_passes(TableVersion::V1, 1);
+    a4_passes(TableVersion::V2, 3);
+}
+
+#[test]
+#[ignore]
+fn a4_table_2_whole_space_passes() {
+    a4_passes(TableVersion::V2, 1);
+}
+
+fn a4_passes(table: TableVersion, step: usize) {
     let imp = cg_solutions::a4::implementation();
-    let mut tally = Tally::new("a4 (all 6984)");
+    let mut tally = Tally::new(if table == TableVersion::V1 { "a4 table 1" } else { "a4 table 2" });
     let mut odd = Odd::default();
-    for spec in a4_space() {
+    for spec in a4_space(table).into_iter().step_by(step) {
         tally.run(&format!("{spec:?}"), || cg_a4::checks(&spec, &imp));
         for lang in [Lang::Ja, Lang::En] {
             use cg_a4::SpecExt as _;
@@ -655,9 +712,10 @@ fn report_derives_and_fills_for_many_students() {
     };
     let count = sweep_n(1_000);
     let t0 = Instant::now();
-    for n in numbers(count) {
+    // Every other student on table 2.
+    for (i, n) in numbers(count).into_iter().enumerate() {
         let student = format!("{n:08}");
-        let a = variants(n);
+        let a = variants_in(n, TableVersion::ALL[i % TableVersion::ALL.len()]);
         let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| derive::derive(&a, &imp)));
         let Ok((derived, missing)) = r else {
             note("derive panicked".into(), student.clone());

@@ -49,7 +49,7 @@ fn in_worker(a: &Variants, tables: &str, per_check: Duration) -> Vec<Report> {
 /// equal; `check` is told each local report.
 fn same_in_worker_and_in_process(impls: &Impls, tables: &str, check: impl Fn(&str, &Report)) {
     for student in STUDENTS {
-        let a = Variants::for_student(&student.parse().unwrap(), TableVersion::LATEST);
+        let a = Variants::for_student(&student.parse().unwrap(), TableVersion::DEFAULT);
         let local: Vec<Report> = Which::ALL.iter().map(|&w| a.report(w, impls)).collect();
         let remote = in_worker(&a, tables, Duration::from_secs(120));
         assert_eq!(local, remote, "{student}");
@@ -115,7 +115,7 @@ fn hostile() -> Vec<(&'static str, cg_worker::Handler)> {
 
 #[test]
 fn a_hostile_function_fails_only_the_checks_that_call_it() {
-    let a = Variants::for_student(&STUDENTS[0].parse().unwrap(), TableVersion::LATEST);
+    let a = Variants::for_student(&STUDENTS[0].parse().unwrap(), TableVersion::DEFAULT);
     let per_check = Duration::from_secs(2);
     let local = a.report(Which::a1, &cg_assign::impls!(cg_solutions));
     let started = Instant::now();
@@ -162,7 +162,7 @@ fn the_worker_impls_panic_with_a_call_error_outside_a_worker() {
     // A stand-in called with no worker is a check that got no result, not a pass: said so in
     // both languages.
     let impls = Impls::worker();
-    let a = Variants::for_student(&STUDENTS[0].parse().unwrap(), TableVersion::LATEST);
+    let a = Variants::for_student(&STUDENTS[0].parse().unwrap(), TableVersion::DEFAULT);
     let r = a.report(Which::a4, &impls);
     assert_eq!(r.passed(), 0);
     assert!(

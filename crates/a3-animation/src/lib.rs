@@ -31,6 +31,7 @@ mod oracle;
 mod pose;
 pub mod report;
 mod spec;
+mod table2;
 mod view;
 
 pub use cg_student::a3::{

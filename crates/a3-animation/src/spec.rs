@@ -7,7 +7,7 @@ use cg_core::glam::Vec3;
 use cg_core::mesh::Mesh;
 use cg_core::product::{Factor, MatrixProduct};
 use cg_core::shapes;
-use cg_harness::VariantRng;
+use cg_harness::{TableVersion, VariantRng};
 use easy_ext::ext;
 
 use crate::{
@@ -121,80 +121,87 @@ pub fn camera_product() -> MatrixProduct {
 // ---------------------------------------------------------------------------------------------
 
 /// The unit of time (s); periods are 1–4 units.
-const UNITS_S: [f32; 4] = [1.5, 2.0, 2.5, 3.0];
+pub(crate) const UNITS_S: [f32; 4] = [1.5, 2.0, 2.5, 3.0];
 /// The four corner slots of fixed-position motions (x, z).
-const CORNERS: [[f32; 2]; 4] = [[-3.5, -3.5], [3.5, -3.5], [-3.5, 3.5], [3.5, 3.5]];
+pub(crate) const CORNERS: [[f32; 2]; 4] = [[-3.5, -3.5], [3.5, -3.5], [-3.5, 3.5], [3.5, 3.5]];
 /// Object colours by number: orange, blue, red, yellow.
-const COLORS: [[f32; 3]; 4] =
+pub(crate) const COLORS: [[f32; 3]; 4] =
     [[1.0, 0.6, 0.2], [0.3, 0.5, 1.0], [0.9, 0.3, 0.4], [0.95, 0.85, 0.3]];
 
-const SPIN_SHAPES: [Shape; 4] = [
+pub(crate) const SPIN_SHAPES: [Shape; 4] = [
     Shape::Box { size: [1.2, 0.4, 0.6] },
     Shape::Box { size: [1.0, 0.6, 0.3] },
     Shape::Pyramid { sides: 4, radius: 0.6, height: 1.0 },
     Shape::Pyramid { sides: 3, radius: 0.6, height: 1.0 },
 ];
-const SWING_IN_PLACE_SHAPES: [Shape; 2] =
+pub(crate) const SWING_IN_PLACE_SHAPES: [Shape; 2] =
     [Shape::Box { size: [1.4, 0.3, 0.5] }, Shape::Box { size: [1.2, 0.5, 0.3] }];
-const BOB_SHAPES: [Shape; 3] = [
+pub(crate) const BOB_SHAPES: [Shape; 3] = [
     Shape::Box { size: [0.6, 0.6, 0.6] },
     Shape::Sphere { radius: 0.4 },
     Shape::Octahedron { radius: 0.45 },
 ];
-const HOP_SHAPES: [Shape; 3] = [
+pub(crate) const HOP_SHAPES: [Shape; 3] = [
     Shape::Sphere { radius: 0.4 },
     Shape::Box { size: [0.6, 0.6, 0.6] },
     Shape::Octahedron { radius: 0.45 },
 ];
-const ORBIT_SHAPES: [Shape; 4] = [
+pub(crate) const ORBIT_SHAPES: [Shape; 4] = [
     Shape::Sphere { radius: 0.4 },
     Shape::Box { size: [0.6, 0.6, 0.6] },
     Shape::Octahedron { radius: 0.45 },
     Shape::Pyramid { sides: 4, radius: 0.5, height: 0.8 },
 ];
-const PARENT_SHAPES: [Shape; 3] = [
+pub(crate) const PARENT_SHAPES: [Shape; 3] = [
     Shape::Sphere { radius: 0.5 },
     Shape::Box { size: [0.7, 0.7, 0.7] },
     Shape::Octahedron { radius: 0.6 },
 ];
-const CHILD_SHAPES: [Shape; 3] = [
+pub(crate) const CHILD_SHAPES: [Shape; 3] = [
     Shape::Sphere { radius: 0.25 },
     Shape::Octahedron { radius: 0.3 },
     Shape::Box { size: [0.4, 0.4, 0.4] },
 ];
-const AXES: [WorldAxis; 3] = [WorldAxis::X, WorldAxis::Y, WorldAxis::Z];
-const HORIZONTAL: [WorldAxis; 2] = [WorldAxis::X, WorldAxis::Z];
-const TURNS: [Turn; 2] = [Turn::Ccw, Turn::Cw];
-const AMPLITUDES_DEG: [f32; 3] = [30.0, 45.0, 60.0];
+pub(crate) const AXES: [WorldAxis; 3] = [WorldAxis::X, WorldAxis::Y, WorldAxis::Z];
+pub(crate) const HORIZONTAL: [WorldAxis; 2] = [WorldAxis::X, WorldAxis::Z];
+pub(crate) const TURNS: [Turn; 2] = [Turn::Ccw, Turn::Cw];
+pub(crate) const AMPLITUDES_DEG: [f32; 3] = [30.0, 45.0, 60.0];
 const ARMS: [f32; 2] = [1.0, 1.5];
 const SPANS: [f32; 3] = [2.0, 2.5, 3.0];
-const HEIGHTS: [f32; 3] = [1.0, 1.5, 2.0];
+pub(crate) const HEIGHTS: [f32; 3] = [1.0, 1.5, 2.0];
 const ORBIT_RADII: [f32; 3] = [1.5, 2.0, 2.5];
 const PARENT_ORBIT_RADII: [f32; 2] = [2.0, 2.5];
 const SATELLITE_RADII: [f32; 3] = [1.0, 1.2, 1.4];
 /// The lecture's example: two orbits about the same centre with radii 1.5 and 3.
 const LECTURE_RADII: (f32, f32) = (1.5, 3.0);
 /// Height of orbit centres and spinning objects.
-const LIFT: f32 = 1.0;
+pub(crate) const LIFT: f32 = 1.0;
 
 /// The kinds of motion an independent object can have.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Kind {
+pub(crate) enum Kind {
     Spin,
     Swing,
     Hop,
     Orbit,
 }
 
-/// The student's variant, drawn from the frozen stream of their number and table version.
-///
-/// Draws, in this order (table version 1, frozen): the time unit; the number of independent
-/// objects (1 or 2); the period multipliers (a shuffle of 1–4); the independent motions (a
+/// The student's variant, drawn from the frozen stream of their number and table version:
+/// version 1 below, version 2 in `table2.rs` (the objects kept apart and over the ground).
+#[must_use]
+pub fn variant(rng: &mut VariantRng) -> Spec {
+    match rng.table() {
+        TableVersion::V1 => variant_v1(rng),
+        TableVersion::V2 => crate::table2::variant(rng),
+    }
+}
+
+/// Table version 1's variant. Draws, in this order (frozen): the time unit; the number of
+/// independent objects (1 or 2); the period multipliers (a shuffle of 1–4); the independent motions (a
 /// shuffle of spin, swing, hop, orbit); the parent's motion (orbit or hop); where the parent and
 /// child stand in the list; the corner slots (a shuffle); then each object's parameters in list
 /// order.
-#[must_use]
-pub fn variant(rng: &mut VariantRng) -> Spec {
+fn variant_v1(rng: &mut VariantRng) -> Spec {
     let unit_s = *rng.pick(&UNITS_S);
     let independent = rng.range(1, 2) as usize;
     let mut multipliers = [1u32, 2, 3, 4];
@@ -324,8 +331,14 @@ pub fn warmup_objects() -> Vec<Object> {
 /// Student `n`'s spec in table 1 (for the crate's tests).
 #[cfg(test)]
 pub(crate) fn spec_of(n: u32) -> Spec {
+    spec_in(n, TableVersion::V1)
+}
+
+/// Student `n`'s spec in `table` (for the crate's tests).
+#[cfg(test)]
+pub(crate) fn spec_in(n: u32, table: TableVersion) -> Spec {
     let s: cg_harness::StudentNumber = format!("{n:08}").parse().unwrap();
-    variant(&mut VariantRng::new(&s, cg_harness::TableVersion::V1, crate::ID))
+    variant(&mut VariantRng::new(&s, table, crate::ID))
 }
 
 #[cfg(test)]
@@ -335,8 +348,8 @@ mod tests {
 
     #[test]
     fn every_variant_is_well_formed() {
-        for n in 0..500 {
-            let spec = spec_of(20_260_000 + n);
+        for (n, table) in (0..500).flat_map(|n| TableVersion::ALL.map(|t| (n, t))) {
+            let spec = spec_in(20_260_000 + n, table);
             let k = spec.objects.len();
             assert!((3..=4).contains(&k), "{spec:?}");
             let children: Vec<usize> =
@@ -359,7 +372,7 @@ mod tests {
             let ratios = spec.period_ratios();
             assert!(ratios.iter().all(|&r| (1..=4).contains(&r)), "{ratios:?}");
             // Deterministic.
-            assert_eq!(spec, spec_of(20_260_000 + n));
+            assert_eq!(spec, spec_in(20_260_000 + n, table));
         }
     }
 

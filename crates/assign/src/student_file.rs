@@ -88,13 +88,24 @@ impl StudentFileError {
             }
             StudentFileError::Table { path, given } => Text::new(
                 format!(
-                    "{path}: table = {} という課題表はありません（1 を使ってください）",
-                    shown(given, Lang::Ja)
+                    "{path}: table = {} という課題表の版はありません（{} を使ってください）",
+                    shown(given, Lang::Ja),
+                    known_tables(" か ")
                 ),
-                format!("{path}: there is no table {} (use 1)", shown(given, Lang::En)),
+                format!(
+                    "{path}: there is no table {} (use {})",
+                    shown(given, Lang::En),
+                    known_tables(" or ")
+                ),
             ),
         }
     }
+}
+
+/// The table versions there are, as a student writes them (`1 or 2`).
+fn known_tables(or: &str) -> String {
+    let n: Vec<String> = TableVersion::ALL.iter().map(ToString::to_string).collect();
+    n.join(or)
 }
 
 /// The largest `student.toml` read (a record is two short lines; anything larger is the wrong
@@ -211,7 +222,7 @@ pub fn parse_student_file(bytes: &[u8], file: &str) -> Result<StudentFile, Stude
     let student =
         digits.parse().map_err(|error| StudentFileError::Number { path: file.clone(), error })?;
     let table = match doc.get("table") {
-        None => TableVersion::LATEST,
+        None => TableVersion::DEFAULT,
         Some(v) => {
             // As written (`9`, `"1"`, `99999999999999999999`).
             let given = text.get(v.span()).unwrap_or_default().to_owned();
@@ -275,7 +286,7 @@ pub fn record_change(old: &StudentFile, new: &StudentFile) -> Option<Text> {
 }
 
 /// The student a command is about: `given` (a `--student` option) when there is one, with
-/// `table` or the newest table; else the record in `file` (`exercises/student.toml`), with
+/// `table` or the default table (version 1); else the record in `file` (`exercises/student.toml`), with
 /// `table` replacing its table when given.
 ///
 /// # Errors
@@ -290,7 +301,7 @@ pub fn resolve_student(
         Some(n) => {
             let student: StudentNumber =
                 n.parse().map_err(|e: cg_harness::variant::StudentNumberError| e.message(lang))?;
-            Ok(StudentFile { student, table: table.unwrap_or(TableVersion::LATEST) })
+            Ok(StudentFile { student, table: table.unwrap_or(TableVersion::DEFAULT) })
         }
         None => {
             let mut record = read_student_file(file).map_err(|e| e.message(lang))?;

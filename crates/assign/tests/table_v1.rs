@@ -1,11 +1,11 @@
-//! Table version 1 is frozen: a published table never changes under a student.
+//! Table versions 1 and 2 are frozen: a published table never changes under a student.
 //!
 //! This is deliberately a snapshot. Its expected values are not derived independently — the
-//! point is the opposite: they were written once, when table 1 was published, and must never
+//! point is the opposite: they were written once, when each table was published, and must never
 //! change. Every assignment's variant for 64 student numbers (the extremes and a spread) is
-//! compared with `table-v1.json`. If this test fails, a change altered table 1: undo it, or put
-//! the change into a new table version that students opt into. (`CG_BLESS=1` writes the file
-//! only when it does not exist yet.)
+//! compared with `table-v1.json` and `table-v2.json`. If this test fails, a change altered a
+//! published table: undo it, or put the change into a new table version that students opt into.
+//! (`CG_BLESS=1` writes a file only when it does not exist yet.)
 
 use std::path::Path;
 
@@ -30,9 +30,27 @@ fn students() -> Vec<StudentNumber> {
 
 #[test]
 fn table_1_never_changes() {
+    never_changes(TableVersion::V1);
+}
+
+#[test]
+fn table_2_never_changes() {
+    never_changes(TableVersion::V2);
+}
+
+/// Every version has its snapshot (a new version is published with one).
+#[test]
+fn every_table_has_its_snapshot() {
+    for v in TableVersion::ALL {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("tests/table-v{v}.json"));
+        assert!(path.exists(), "{}: table {v} has no snapshot", path.display());
+    }
+}
+
+fn never_changes(version: TableVersion) {
     let table: serde_json::Value =
-        students().iter().map(|s| Variants::for_student(s, TableVersion::V1).to_json()).collect();
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/table-v1.json");
+        students().iter().map(|s| Variants::for_student(s, version).to_json()).collect();
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("tests/table-v{version}.json"));
     let text = serde_json::to_string_pretty(&table).unwrap() + "\n";
     if !path.exists() && std::env::var("CG_BLESS").is_ok_and(|v| v == "1") {
         std::fs::write(&path, &text).unwrap();
@@ -46,8 +64,8 @@ fn table_1_never_changes() {
     if frozen != text {
         let first = frozen.lines().zip(text.lines()).position(|(a, b)| a != b);
         panic!(
-            "table 1 changed (first difference at line {}): a published table must never change \
-             under a student. Undo the change, or make it a new table version.\n  frozen: {:?}\n  now:    {:?}",
+            "table {version} changed (first difference at line {}): a published table must never \
+             change under a student. Undo the change, or make it a new table version.\n  frozen: {:?}\n  now:    {:?}",
             first.map_or(0, |l| l + 1),
             first.and_then(|l| frozen.lines().nth(l)),
             first.and_then(|l| text.lines().nth(l))
@@ -57,14 +75,29 @@ fn table_1_never_changes() {
 
 #[test]
 fn the_64_students_cover_every_assignment_with_different_variants() {
-    let all: Vec<serde_json::Value> =
+    for version in TableVersion::ALL {
+        covers(version);
+    }
+    // Version 2 draws every assignment from streams of its own.
+    let v1: Vec<serde_json::Value> =
         students().iter().map(|s| Variants::for_student(s, TableVersion::V1).to_json()).collect();
+    let v2: Vec<serde_json::Value> =
+        students().iter().map(|s| Variants::for_student(s, TableVersion::V2).to_json()).collect();
+    for id in ["a1", "a2", "a3", "a4", "s"] {
+        let same = v1.iter().zip(&v2).filter(|(a, b)| a[id] == b[id]).count();
+        assert!(same < 16, "{id}: {same} of 64 students have the same variant in tables 1 and 2");
+    }
+}
+
+fn covers(version: TableVersion) {
+    let all: Vec<serde_json::Value> =
+        students().iter().map(|s| Variants::for_student(s, version).to_json()).collect();
     for id in ["a1", "a2", "a3", "a4", "s"] {
         let distinct: std::collections::BTreeSet<String> =
             all.iter().map(|a| a[id].to_string()).collect();
         assert!(
             distinct.len() >= 32,
-            "{id}: only {} distinct variants among 64 students",
+            "table {version}, {id}: only {} distinct variants among 64 students",
             distinct.len()
         );
     }

@@ -31,7 +31,7 @@ pub struct AssignmentArgs {
     /// Your 8-digit student number (default: the one in exercises/student.toml) / 学生番号（8 桁）
     #[arg(long, value_name = "NUMBER", allow_hyphen_values = true)]
     student: Option<String>,
-    /// The variant table (default: the newest, or the one in exercises/student.toml) / 課題表の版
+    /// The variant table: 1 or 2 (default: the one in exercises/student.toml, else 1) / 課題表の版
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     table: Option<TableVersion>,
     /// Only this assignment / この課題だけ表示

@@ -301,17 +301,20 @@ pub(crate) fn not_json(path: &Path, e: &serde_json::Error) -> GradeError {
     ))
 }
 
-/// Every check ID of the kit, as the checks name them for a few students (their lists are the
-/// same for every student; a few, so that one that depended on a variant would still be named).
+/// Every check ID of the kit, as the checks name them for a few students in every table version
+/// (their lists are the same for every student; a few, so that one that depended on a variant
+/// would still be named).
 #[must_use]
 pub fn check_ids() -> std::collections::BTreeSet<String> {
     let nothing = cg_assign::Impls::worker();
     let mut ids = std::collections::BTreeSet::new();
     for number in ["12345678", "20260001", "99999999"] {
         let Ok(student) = number.parse() else { continue };
-        let a = cg_assign::Variants::for_student(&student, cg_harness::TableVersion::LATEST);
-        for &w in cg_assign::Which::ALL {
-            ids.extend(a.report(w, &nothing).checks.into_iter().map(|c| c.id));
+        for table in cg_harness::TableVersion::ALL {
+            let a = cg_assign::Variants::for_student(&student, table);
+            for &w in cg_assign::Which::ALL {
+                ids.extend(a.report(w, &nothing).checks.into_iter().map(|c| c.id));
+            }
         }
     }
     ids
@@ -478,6 +481,7 @@ pub fn grade_with(
                     let meta = result::Meta {
                         entry: &p.entry,
                         student: student.as_deref(),
+                        table: p.files.as_ref().ok().map(|(_, s)| s.table),
                         // A machine's problem is not the submission's: not kept.
                         hash: if facts.retry { "" } else { &p.hash },
                         isolation: options.isolation,

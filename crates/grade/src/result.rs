@@ -64,6 +64,9 @@ pub struct Meta<'a> {
     pub entry: &'a str,
     /// The student number, when the submission had a readable one.
     pub student: Option<&'a str>,
+    /// The variant table the submission's `student.toml` names (its variants were graded),
+    /// when it had a readable one.
+    pub table: Option<cg_harness::TableVersion>,
     /// The submission's hash (files, config, kit).
     pub hash: &'a str,
     /// The isolation of the runs.
@@ -193,6 +196,10 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
         t("提出物", "submission").get(lang),
         meta.entry
     );
+    // A table other than the default is said: the student's variants are that table's.
+    if let Some(table) = meta.table.filter(|&v| v != cg_harness::TableVersion::DEFAULT) {
+        let _ = writeln!(output, "{}: {table}", t("課題表の版", "table").get(lang));
+    }
     let mut tests = Vec::new();
     let mut per: BTreeMap<String, (f64, f64)> = BTreeMap::new();
     let ended_early = facts.refused.as_ref().or(facts.fatal.as_ref());
@@ -318,6 +325,7 @@ pub fn build(meta: &Meta<'_>, facts: &Facts, config: &Config, lang: Lang) -> Val
         "tests": tests,
         "cg": {
             "student": meta.student,
+            "table": meta.table.map(|v| v.number()),
             "submission": meta.entry,
             "hash": meta.hash,
             "isolation": meta.isolation.describe(Lang::En),
@@ -590,6 +598,14 @@ pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) ->
             list.join("\n")
         );
     }
+    let tables = tables_section(results, lang);
+    if !tables.is_empty() {
+        let _ = write!(
+            out,
+            "\n## {}\n\n{tables}",
+            t("課題表の版が違う提出物", "Submissions on different tables").get(lang)
+        );
+    }
     let roster = roster_section(results, absent, lang);
     if !roster.is_empty() {
         let _ =
@@ -603,6 +619,51 @@ pub fn summary_md(results: &[Value], absent: &[(String, String)], lang: Lang) ->
             problems.join("\n")
         );
     }
+    out
+}
+
+/// When the class's submissions name more than one variant table: how many are on each, and
+/// which are on the fewer (a student who saved their number with another `--table` than the
+/// class was told is graded on that table's variants). Empty when all name one table.
+fn tables_section(results: &[Value], lang: Lang) -> String {
+    let mut on: BTreeMap<u64, Vec<String>> = BTreeMap::new();
+    for r in results {
+        let cg = &r["cg"];
+        let Some(table) = cg["table"].as_u64() else { continue };
+        let who = format!(
+            "{} ({})",
+            md_code(cg["student"].as_str().unwrap_or("?"), lang),
+            md_code(cg["submission"].as_str().unwrap_or(""), lang)
+        );
+        on.entry(table).or_default().push(who);
+    }
+    if on.len() < 2 {
+        return String::new();
+    }
+    let most =
+        on.iter().max_by_key(|(v, who)| (who.len(), std::cmp::Reverse(**v))).map(|(v, _)| *v);
+    let mut out = String::new();
+    for (table, who) in &on {
+        let _ = write!(
+            out,
+            "- {}: {}",
+            Text::new(format!("課題表 {table}"), format!("table {table}")).get(lang),
+            Text::new(format!("{} 件", who.len()), format!("{}", who.len())).get(lang),
+        );
+        if Some(*table) != most {
+            let _ = write!(out, ": {}", who.join(", "));
+        }
+        out.push('\n');
+    }
+    let _ = writeln!(
+        out,
+        "\n{}",
+        t(
+            "各提出物はその student.toml の課題表の版で採点しました。クラスで使う版と違う学生は記録し直せます（版 2 なら cargo run --release -- assignment --table 2 --save。docs/instructor-guide.md）。",
+            "Each submission was graded on the table its student.toml names. A student on another table than the class's can record it again (for table 2: cargo run --release -- assignment --table 2 --save), as docs/instructor-guide.md says.",
+        )
+        .get(lang)
+    );
     out
 }
 

@@ -98,6 +98,7 @@ fn the_roster_binds_entries_and_flags_the_rest() {
             let meta = result::Meta {
                 entry: &p.entry,
                 student: Some(p.name.as_str()),
+                table: None,
                 hash: "",
                 isolation: Isolation::Bubblewrap,
                 same_number: &[],
@@ -316,6 +317,7 @@ fn names_from_a_submission_are_code_in_markdown() {
 fn meta(student: Option<&str>) -> result::Meta<'_> {
     result::Meta {
         student,
+        table: Some(cg_harness::TableVersion::V1),
         entry: "a.zip",
         hash: "",
         isolation: Isolation::Bubblewrap,
@@ -510,6 +512,37 @@ fn the_summary_names_assignments_worth_more_for_some_students() {
     assert!(md.contains("## 学生によって満点が違う課題"), "{md}");
     let md = result::summary_md(&[result(20.0), result(20.0)], &[], Lang::En);
     assert!(!md.contains("worth more"), "{md}");
+}
+
+/// The table a submission's variants came from is in its result; table 2 is said in its
+/// feedback, and summary.md lists the students on the fewer tables when a class mixes them (one
+/// table: no section).
+#[test]
+fn a_class_on_two_tables_is_said() {
+    use cg_harness::TableVersion;
+    let facts = result::Facts::default();
+    let on = |student: &'static str, table| {
+        let meta = result::Meta { table: Some(table), ..meta(Some(student)) };
+        result::build(&meta, &facts, &Config::default(), Lang::En)
+    };
+    let (a, b, c) = (
+        on("20260001", TableVersion::V1),
+        on("20260002", TableVersion::V1),
+        on("20260003", TableVersion::V2),
+    );
+    assert_eq!(
+        (&a["cg"]["table"], &c["cg"]["table"]),
+        (&serde_json::json!(1), &serde_json::json!(2))
+    );
+    assert!(!a["output"].as_str().unwrap().contains("table"), "{}", a["output"]);
+    assert!(c["output"].as_str().unwrap().contains("table: 2\n"), "{}", c["output"]);
+    let md = result::summary_md(&[a.clone(), b.clone(), c.clone()], &[], Lang::En);
+    assert!(md.contains("## Submissions on different tables\n\n- table 1: 2\n- table 2: 1: `20260003` (`a.zip`)\n"), "{md}");
+    assert!(md.contains("assignment --table 2 --save"), "{md}");
+    let md = result::summary_md(&[a.clone(), b.clone(), c], &[], Lang::Ja);
+    assert!(md.contains("- 課題表 2: 1 件: `20260003`"), "{md}");
+    let md = result::summary_md(&[a, b], &[], Lang::En);
+    assert!(!md.contains("different tables"), "{md}");
 }
 
 /// A submission whose grading failed (its build ran over the limit) with a report in it: the

@@ -95,27 +95,36 @@ impl FromStr for StudentNumber {
     }
 }
 
-/// A version of the variant tables. A published version never changes; a new one is opt-in.
+/// A version of the variant tables. A published version never changes; a new one is opt-in
+/// (`table = 2` in `exercises/student.toml`, or `--table 2`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize)]
 pub enum TableVersion {
     /// The first table (2026).
     #[default]
     #[serde(rename = "1")]
     V1,
+    /// The second table (2026-11): a3's objects keep apart and stay over the ground (in version
+    /// 1 about 15 % of the students' children pass through another object, and hops and
+    /// satellites reach up to 6.6 beyond the ±5 ground); a4 draws from 20 952 variants (6 984
+    /// in version 1). a1, a2 and s draw as in version 1, from their own streams of this version.
+    #[serde(rename = "2")]
+    V2,
 }
 
 impl TableVersion {
-    /// The newest version: what a student gets when they do not name one.
-    pub const LATEST: TableVersion = TableVersion::V1;
+    /// What a student gets when they do not name a version: version 1, the tables every
+    /// published assignment was drawn from. A newer version is opt-in.
+    pub const DEFAULT: TableVersion = TableVersion::V1;
 
     /// Every version, oldest first.
-    pub const ALL: [TableVersion; 1] = [TableVersion::V1];
+    pub const ALL: [TableVersion; 2] = [TableVersion::V1, TableVersion::V2];
 
     /// The version's number.
     #[must_use]
     pub fn number(self) -> u32 {
         match self {
             TableVersion::V1 => 1,
+            TableVersion::V2 => 2,
         }
     }
 }
@@ -133,7 +142,7 @@ impl FromStr for TableVersion {
         TableVersion::ALL.into_iter().find(|v| v.number().to_string() == n).ok_or_else(|| {
             let known: Vec<String> = TableVersion::ALL.iter().map(ToString::to_string).collect();
             format!(
-                "unknown table version {s:?} (known: {}) / 表の版 {s:?} はありません",
+                "unknown table version {s:?} (known: {}) / 課題表の版 {s:?} はありません",
                 known.join(", ")
             )
         })
@@ -157,6 +166,7 @@ pub fn fnv1a64(bytes: &[u8]) -> u64 {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct VariantRng {
     state: u64,
+    table: TableVersion,
 }
 
 impl VariantRng {
@@ -164,13 +174,20 @@ impl VariantRng {
     #[must_use]
     pub fn new(student: &StudentNumber, version: TableVersion, assignment: &str) -> VariantRng {
         let key = format!("cg-kit/v{}/{assignment}/{}", version.number(), student.as_str());
-        VariantRng::from_seed(fnv1a64(key.as_bytes()))
+        VariantRng { state: fnv1a64(key.as_bytes()), table: version }
     }
 
-    /// A stream from a raw seed (tests).
+    /// A stream from a raw seed (tests), drawing as table version 1.
     #[must_use]
     pub fn from_seed(seed: u64) -> VariantRng {
-        VariantRng { state: seed }
+        VariantRng { state: seed, table: TableVersion::V1 }
+    }
+
+    /// The table version the stream draws for: an assignment whose tables differ between
+    /// versions draws by this.
+    #[must_use]
+    pub fn table(&self) -> TableVersion {
+        self.table
     }
 
     /// The next 64 random bits (SplitMix64).
@@ -285,6 +302,12 @@ mod tests {
         assert_eq!(a, VariantRng::new(&s, TableVersion::V1, "a1"), "deterministic");
         assert_ne!(a, VariantRng::new(&t, TableVersion::V1, "a1"));
         assert_ne!(a, VariantRng::new(&s, TableVersion::V1, "a2"));
+        // Each version its own stream; the version travels with it.
+        let v2 = VariantRng::new(&s, TableVersion::V2, "a1");
+        assert_ne!(a, v2);
+        assert_eq!((a.table(), v2.table()), (TableVersion::V1, TableVersion::V2));
+        assert_eq!("2".parse::<TableVersion>(), Ok(TableVersion::V2));
+        assert_eq!(VariantRng::from_seed(1).table(), TableVersion::DEFAULT);
     }
 
     #[test]

@@ -37,7 +37,7 @@ fn solution(m: &str) -> String {
 
 /// `student`'s report as `cg report fill` writes it from the reference solutions.
 fn filled(student: &StudentNumber, lang: Lang, format: Format) -> String {
-    let a = cg_assign::Variants::for_student(student, TableVersion::LATEST);
+    let a = cg_assign::Variants::for_student(student, TableVersion::DEFAULT);
     let (derived, _missing) = cg_report::derive::derive(&a, &cg_assign::impls!(cg_solutions));
     let assignments = cg_assign::Which::ALL
         .iter()
@@ -132,7 +132,7 @@ fn main() {
         (0..n).map(|i| format!("{}", 20260001 + i * 7).parse().unwrap()).collect();
     let files: Vec<cg_assign::StudentFile> = students
         .iter()
-        .map(|s| cg_assign::StudentFile { student: s.clone(), table: TableVersion::LATEST })
+        .map(|s| cg_assign::StudentFile { student: s.clone(), table: TableVersion::DEFAULT })
         .collect();
     let langs = [Lang::Ja, Lang::En];
     let reports: Vec<String> = students
@@ -180,7 +180,7 @@ fn main() {
         .map(|(s, r)| Submission {
             student: Some(cg_assign::StudentFile {
                 student: s.clone(),
-                table: TableVersion::LATEST,
+                table: TableVersion::DEFAULT,
             }),
             modules: honest.clone(),
             report: Some(r.clone()),

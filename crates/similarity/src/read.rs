@@ -95,7 +95,7 @@ pub fn bind(class: &mut [Submission], roster: &cg_grade::roster::Roster) -> Vec<
                 }
                 s.student = Some(cg_assign::StudentFile {
                     student: row.student.clone(),
-                    table: TableVersion::LATEST,
+                    table: TableVersion::DEFAULT,
                 });
                 s.refused = None;
                 s.refused_student_toml = false;

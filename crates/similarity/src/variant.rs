@@ -413,7 +413,7 @@ mod tests {
         let mut raw = BTreeMap::new();
         for i in 0..80u32 {
             let s: StudentNumber = format!("{}", 20250000 + i * 7).parse().unwrap();
-            raw.insert(s.clone(), raw_numbers(&s, TableVersion::LATEST));
+            raw.insert(s.clone(), raw_numbers(&s, TableVersion::DEFAULT));
         }
         let class = class_numbers(&raw);
         let w = weights(&class);
@@ -439,7 +439,7 @@ mod tests {
             ["20260001", "20260002", "20260003", "20260004"].iter().map(|s| number(s)).collect();
         let mut raw = BTreeMap::new();
         for s in &students {
-            raw.insert(s.clone(), raw_numbers(s, TableVersion::LATEST));
+            raw.insert(s.clone(), raw_numbers(s, TableVersion::DEFAULT));
         }
         let class = class_numbers(&raw);
         let w = weights(&class);

@@ -173,7 +173,7 @@ fn number(s: &str) -> StudentNumber {
 
 /// `student`'s expected a1 vertices.
 fn vertices(student: &str) -> Vec<[f32; 3]> {
-    let v = Variants::for_student(&number(student), TableVersion::LATEST);
+    let v = Variants::for_student(&number(student), TableVersion::DEFAULT);
     cg_a1::SpecExt::expected_vertices(&v.a1).iter().map(|p| [p.x, p.y, p.z]).collect()
 }
 

@@ -89,7 +89,7 @@ fn number(s: &str) -> StudentNumber {
 
 /// A report's vertex table of `student`'s a1 vertices.
 fn report(student: &str) -> String {
-    let v = Variants::for_student(&number(student), TableVersion::LATEST);
+    let v = Variants::for_student(&number(student), TableVersion::DEFAULT);
     let mut r = "# レポート\n\n| 頂点 | x | y | z |\n|---|---|---|---|\n".to_owned();
     for (k, p) in cg_a1::SpecExt::expected_vertices(&v.a1).iter().enumerate() {
         r.push_str(&format!("| V{k} | {:.3} | {:.3} | {:.3} |\n", p.x, p.y, p.z));

@@ -164,7 +164,7 @@ fn honest_class(n: usize) -> Vec<Submission> {
             );
             Submission {
                 name: format!("s{i}"),
-                student: Some(StudentFile { student: s, table: TableVersion::LATEST }),
+                student: Some(StudentFile { student: s, table: TableVersion::DEFAULT }),
                 modules,
                 ..Submission::default()
             }
@@ -225,7 +225,7 @@ fn the_solutions_with_the_students_own_numbers_are_not_flagged() {
 /// A report as a student writes it from the template: the kit's fixed numbers (a 512 × 512
 /// texture of 64-pixel cells) and `student`'s own assignment, quoted.
 fn report(student: &StudentNumber) -> String {
-    let v = Variants::for_student(student, TableVersion::LATEST);
+    let v = Variants::for_student(student, TableVersion::DEFAULT);
     let mut r =
         "# Report\n\nThe texture is 512 × 512 pixels, 8 × 8 cells of 64 pixels; the ground \
                  has 10 × 10 squares and 121 vertices.\n\n"

@@ -57,6 +57,7 @@ fn kit_result() -> Value {
     let meta = Meta {
         entry: "taro.zip",
         student: Some("20260001"),
+        table: Some(cg_harness::TableVersion::V1),
         hash: "h",
         isolation: Isolation::Bubblewrap,
         same_number: &[],

@@ -251,6 +251,7 @@ fn the_roster_binds_participants_and_a_mismatch_is_flagged() {
             let meta = result::Meta {
                 entry: &p.entry,
                 student: student.as_deref(),
+                table: p.files.as_ref().ok().map(|(_, s)| s.table),
                 hash: "",
                 isolation: Isolation::Bubblewrap,
                 same_number: &p.same_number,

@@ -7,7 +7,7 @@ use cg_similarity::variant;
 /// The numbers of `student`'s variant whose label `pick` takes (the spec's JSON paths, `a1 V3.x`,
 /// `a4 s_min`): what a program written for that variant has as literals.
 pub fn picked(student: &StudentNumber, part: &str, pick: fn(&str) -> bool) -> Vec<f64> {
-    let raw = variant::raw_numbers(student, TableVersion::LATEST);
+    let raw = variant::raw_numbers(student, TableVersion::DEFAULT);
     raw[part].iter().filter(|(l, _)| pick(l)).map(|(_, v)| *v).collect()
 }
 

@@ -1,0 +1,199 @@
+//! a3's variant tables, version 2: the objects keep apart and stay over the ground.
+//!
+//! In version 1 (frozen, [`crate::spec`]) about 15 % of the students' children pass through
+//! another object (a satellite of 1.0–1.4 around a parent whose orbit or hop comes near another
+//! orbit or a corner), and 63 % of the variants have a vertex beyond the ±5 ground (hops of span
+//! 3 at a corner reach 5.4, a satellite around them 6.6). Version 2 keeps version 1's motions,
+//! shapes, periods and draw order and lays the scene out so that no two objects can meet, by
+//! construction:
+//!
+//! - **The corners** (±3.5, ±3.5) hold the independent spins, swings and hops. Each stays
+//!   within 1.45 of its corner, its shape's bounding sphere included (a swing's arm 0.8 or 1.0
+//!   at up to 60° moves its bob ≤ 0.87, a hop's span is at most 1.8), so within the ground
+//!   (3.5 + 1.45 = 4.95) and at least 4.95 − 1.45 = 3.5 from the centre.
+//! - **The centre** holds the parent with its child, and the independent orbit when there is
+//!   one: everything there stays within 3.40 of the vertical through the origin, 0.1 short of
+//!   the corners. The parent orbits the centre or hops through it (in version 1 it hopped at a
+//!   corner); its child goes round it at 1.0 or 1.2, clear of it (parent ≤ 0.61 + child ≤ 0.35 <
+//!   1.0).
+//! - **An independent orbit with the pair**: the orbit is the outer ring (radius 2.75, its
+//!   shape within 0.64: from 2.11 to 3.39) and the pair keeps within 2.06 inside it (a parent
+//!   orbit of 0.7, or a hop of span 1.2, with its child at 1.0), like the lecture's two orbits
+//!   about one centre.
+//!
+//! The bounds are bounding spheres, so the real gaps are wider; `tests/tables.rs` moves every
+//! object of thousands of students through their whole common period and checks both. FROZEN
+//! once published, as version 1.
+
+use cg_harness::VariantRng;
+
+use crate::spec::{
+    AMPLITUDES_DEG, AXES, BOB_SHAPES, CHILD_SHAPES, COLORS, CORNERS, HEIGHTS, HOP_SHAPES,
+    HORIZONTAL, Kind, LIFT, ORBIT_SHAPES, PARENT_SHAPES, SPIN_SHAPES, SWING_IN_PLACE_SHAPES, TURNS,
+    UNITS_S,
+};
+use crate::{Motion, Object, ShapeExt, Spec, new_object};
+
+/// A swinging bob's arm (version 1: 1.0 and 1.5).
+const ARMS: [f32; 2] = [0.8, 1.0];
+/// The span of a hop at a corner (version 1: 2.0–3.0, for every hop).
+const CORNER_SPANS: [f32; 3] = [1.2, 1.5, 1.8];
+/// The span of the parent's hop through the centre, alone there.
+const CENTRE_SPANS: [f32; 3] = [2.0, 2.5, 3.0];
+/// The radius of the parent's orbit, alone in the centre.
+const PARENT_ORBIT_RADII: [f32; 2] = [1.5, 1.8];
+/// The child's distance from the parent, the pair alone in the centre.
+const SATELLITE_RADII: [f32; 2] = [1.0, 1.2];
+/// With an independent orbit: its radius, the parent's orbit or hop span, the child's radius.
+const RING: f32 = 2.75;
+const INNER_PARENT_ORBIT: f32 = 0.7;
+const INNER_HOP_SPAN: f32 = 1.2;
+const INNER_SATELLITE: f32 = 1.0;
+
+/// The student's variant in table version 2. Draws in version 1's order: the time unit; the
+/// number of independent objects (1 or 2); the period multipliers; the independent motions; the
+/// parent's motion (orbit or hop); where the pair stands in the list; the corner slots; then
+/// each object's parameters in list order.
+pub(crate) fn variant(rng: &mut VariantRng) -> Spec {
+    let unit_s = *rng.pick(&UNITS_S);
+    let independent = rng.range(1, 2) as usize;
+    let mut multipliers = [1u32, 2, 3, 4];
+    rng.shuffle(&mut multipliers);
+    let mut kinds = [Kind::Spin, Kind::Swing, Kind::Hop, Kind::Orbit];
+    rng.shuffle(&mut kinds);
+    let parent_kind = *rng.pick(&[Kind::Orbit, Kind::Hop]);
+    let pair_at = rng.range(0, independent as i64) as usize;
+    let mut corners = CORNERS;
+    rng.shuffle(&mut corners);
+
+    let mut roles: Vec<Option<Kind>> = kinds[..independent].iter().map(|&k| Some(k)).collect();
+    roles.insert(pair_at, Some(parent_kind));
+    roles.insert(pair_at + 1, None); // the child
+    // An independent orbit shares the centre with the pair: it is the outer ring.
+    let ring = kinds[..independent].contains(&Kind::Orbit);
+
+    let mut next_corner = 0;
+    let mut corner = |y: f32| {
+        let [x, z] = corners[next_corner % corners.len()];
+        next_corner += 1;
+        [x, y, z]
+    };
+    let mut objects: Vec<Object> = Vec::with_capacity(roles.len());
+    for (i, role) in roles.iter().enumerate() {
+        let period_s = unit_s * multipliers[i] as f32;
+        let is_parent = i == pair_at;
+        let (shape, motion) = match role {
+            None => {
+                let shape = *rng.pick(&CHILD_SHAPES);
+                let radius = if ring { INNER_SATELLITE } else { *rng.pick(&SATELLITE_RADII) };
+                let turn = *rng.pick(&TURNS);
+                (shape, Motion::Satellite { parent_index: pair_at, radius, turn, period_s })
+            }
+            Some(Kind::Spin) => {
+                let shape = *rng.pick(&SPIN_SHAPES);
+                let axis = *rng.pick(&AXES);
+                let turn = *rng.pick(&TURNS);
+                (shape, Motion::Spin { position: corner(LIFT), axis, turn, period_s })
+            }
+            Some(Kind::Swing) => {
+                let axis = *rng.pick(&AXES);
+                let amplitude_deg = *rng.pick(&AMPLITUDES_DEG);
+                let (shape, arm) = if axis == crate::WorldAxis::Y {
+                    (*rng.pick(&SWING_IN_PLACE_SHAPES), 0.0)
+                } else {
+                    (*rng.pick(&BOB_SHAPES), *rng.pick(&ARMS))
+                };
+                let pivot = corner(LIFT + arm);
+                (shape, Motion::Swing { pivot, axis, amplitude_deg, arm, period_s })
+            }
+            Some(Kind::Hop) => {
+                let shape = *rng.pick(if is_parent { &PARENT_SHAPES[..] } else { &HOP_SHAPES[..] });
+                let along = *rng.pick(&HORIZONTAL);
+                let span = match (is_parent, ring) {
+                    (false, _) => *rng.pick(&CORNER_SPANS),
+                    (true, false) => *rng.pick(&CENTRE_SPANS),
+                    (true, true) => INNER_HOP_SPAN,
+                };
+                let height = *rng.pick(&HEIGHTS);
+                let center = if is_parent {
+                    [0.0, shape.half_height(), 0.0]
+                } else {
+                    corner(shape.half_height())
+                };
+                (shape, Motion::Hop { center, along, span, height, period_s })
+            }
+            Some(Kind::Orbit) => {
+                let shape =
+                    *rng.pick(if is_parent { &PARENT_SHAPES[..] } else { &ORBIT_SHAPES[..] });
+                let radius = match (is_parent, ring) {
+                    (false, _) => RING,
+                    (true, false) => *rng.pick(&PARENT_ORBIT_RADII),
+                    (true, true) => INNER_PARENT_ORBIT,
+                };
+                let turn = *rng.pick(&TURNS);
+                (shape, Motion::Orbit { center: [0.0, LIFT, 0.0], radius, turn, period_s })
+            }
+        };
+        objects.push(new_object(
+            format!("object {}", i + 1),
+            shape,
+            COLORS[i % COLORS.len()],
+            motion,
+        ));
+    }
+    Spec { objects, unit_s }
+}
+
+#[cfg(test)]
+mod tests {
+    use cg_harness::TableVersion;
+
+    use crate::Motion;
+    use crate::spec::spec_in;
+
+    /// Every entry of version 2's own tables is drawn for somebody, and each of the three
+    /// layouts of the centre (the pair alone, with an orbit around it; the parent orbiting or
+    /// hopping) occurs.
+    #[test]
+    fn every_entry_of_the_second_table_is_drawn() {
+        let mut seen = std::collections::BTreeSet::new();
+        for n in 0..200 {
+            let spec = spec_in(20_260_000 + n, TableVersion::V2);
+            for (i, o) in spec.objects.iter().enumerate() {
+                let parent = !spec.children(i).is_empty();
+                seen.insert(match o.motion {
+                    Motion::Swing { arm, .. } => format!("arm{arm}"),
+                    Motion::Hop { span, center, .. } => {
+                        format!("hop{span}-parent{parent}-{center:?}")
+                    }
+                    Motion::Orbit { radius, .. } => format!("orbit{radius}-parent{parent}"),
+                    Motion::Satellite { radius, .. } => format!("sat{radius}"),
+                    Motion::Spin { .. } => "spin".to_owned(),
+                });
+            }
+        }
+        for e in [
+            "arm0",
+            "arm0.8",
+            "arm1",
+            "sat1",
+            "sat1.2",
+            "orbit2.75-parentfalse",
+            "orbit0.7-parenttrue",
+            "orbit1.5-parenttrue",
+            "orbit1.8-parenttrue",
+            "hop1.2-parentfalse",
+            "hop1.5-parentfalse",
+            "hop1.8-parentfalse",
+        ] {
+            assert!(seen.iter().any(|s| s.starts_with(e)), "{e} never drawn: {seen:?}");
+        }
+        // The parent hops through the centre: 2, 2.5 or 3 alone there, 1.2 inside the orbit.
+        for span in ["1.2", "2", "2.5", "3"] {
+            assert!(
+                seen.iter().any(|s| s.starts_with(&format!("hop{span}-parenttrue-[0.0, "))),
+                "no parent hop of span {span} at the centre: {seen:?}"
+            );
+        }
+    }
+}
