@@ -101,7 +101,7 @@ pub fn idle(spec: &Spec, state: &mut State) {
 /// The checks compare each object's model-view matrix at its draw with `T(0, 0, -15) · Rx(30°) ·
 /// (your spec's motion)` at sampled times.
 ///
-/// display(): カメラの変換、光源の位置、各物体（glPushMatrix → 変換 → 描画 → glPopMatrix）。
+/// display(): 視点の変換、光源の位置、各物体（glPushMatrix → 変換 → 描画 → glPopMatrix）。
 /// 子は親の変換の後、親の glPopMatrix の前に描く。
 ///
 /// Hint: `let [x, y, z] = position; gl.translate(x, y, z);` — glam-free. For the report, prefer

@@ -1,6 +1,6 @@
 //! # 課題 4: テクスチャマッピング / Assignment 4: texture mapping
 //!
-//! 用意された画像（`assets/textures/a4-prepared.png`、512 × 512 画素、8 × 8 のマス）の一部を、
+//! 用意された画像（`assets/textures/a4-prepared.png`、512 × 512 ピクセル、8 × 8 のマス）の一部を、
 //! 授業の地面（10 × 10 の四角形）に貼ります。どの範囲を、どの向きで、何回繰り返すかは学生番号ごと
 //! に違います: `cargo run --release -- assignment --only a4` で表示されます。
 //!

@@ -244,7 +244,7 @@ pub fn vertex_normals_area(mesh: &Mesh) -> Vec<Vec3> {
 /// falls back when the length is zero.
 ///
 /// フラット: 面の法線で面の色を 1 回計算。グロー: 頂点の法線で頂点の色を計算し、重みで補間。
-/// フォン: 頂点の法線を重みで補間して正規化 (N' = N/|N|) し、画素ごとに光源処理。補間した法線の長さが
+/// フォン: 頂点の法線を重みで補間して正規化 (N' = N/|N|) し、ピクセルごとに光源処理。補間した法線の長さが
 /// 0 なら面の法線を使います。
 pub fn shade_pixel(mode: Shading, pixel: &Pixel, light: &dyn Fn(Vec3, Vec3) -> Rgb) -> Rgb {
     // BEGIN SOLUTION

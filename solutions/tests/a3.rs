@@ -297,7 +297,7 @@ fn broken_answers_fail_the_checks_that_name_their_mistake() {
         (Bug::ThirtyFps, "a3.t2.hierarchy", "twice as fast", "object 3"),
         (Bug::ChildReversed, "a3.t2.hierarchy", "reversed", "object 3"),
         (Bug::ChildOutsideParent, "a3.t2.hierarchy", "world's origin", "object 3"),
-        (Bug::LightBeforeCamera, "a3.t2.light", "before the camera", "GL_LIGHT0"),
+        (Bug::LightBeforeCamera, "a3.t2.light", "before the view transform", "GL_LIGHT0"),
         (Bug::OneFrameLate, "a3.t2.poses", "one frame late", "frame"),
         // The origin shown beside a product with the camera is the world's (the camera taken
         // off), and says so.

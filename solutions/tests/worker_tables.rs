@@ -715,7 +715,7 @@ fn a_function_that_asks_the_light_otherwise_the_second_time_is_told_not_answered
                 let err = piped.expect_err("a different question is no answer");
                 assert!(err.en.starts_with("pixel 0: ") && err.en.contains(why), "{err:?}");
                 assert!(
-                    err.ja.starts_with("画素 0: ") && err.ja.contains("同じ画素で 2 回"),
+                    err.ja.starts_with("ピクセル 0: ") && err.ja.contains("同じピクセルで 2 回"),
                     "{err:?}"
                 );
             }

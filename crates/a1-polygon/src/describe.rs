@@ -376,7 +376,7 @@ pub impl Spec {
         let _ = writeln!(
             out,
             "  {}: cargo run --release -- check a1    {}: cargo run --release -- view a1",
-            t("確認", "Check").get(lang),
+            t("チェック", "Check").get(lang),
             t("表示", "View").get(lang)
         );
         out

@@ -60,15 +60,15 @@ pub(crate) fn describe(spec: &Spec, lang: Lang) -> String {
                  \x20   (x, y, z, 1) → (x', y', z', 1)）。どの行列が何をするかも説明する。\n\
                  \x20 - 各変数の説明: どのような操作により、どのように変化する変数か（上の各行、範囲を含む）。\n\
                  \x20 - 光源の位置を視点の変換の後に設定する理由。\n\
-                 確認: cargo run --release -- check a2    表示: cargo run --release -- view a2\n",
+                 チェック: cargo run --release -- check a2    表示: cargo run --release -- view a2\n",
         "Tasks:\n\
                  \x20 a2.t1  motion(spec, state, drag): change the variables as listed (clamps and wrap included).\n\
-                 \x20 a2.t2  camera(gl, state): the view transform (world → camera coordinates) with gl.translate /\n\
+                 \x20 a2.t2  camera(gl, state): the view transform (world → camera space) with gl.translate /\n\
                  \x20        gl.rotate (glTranslatef / glRotatef). The camera looks at the target from camera_distance\n\
                  \x20        away, raised by camera_pitch and turned by camera_yaw about the Y axis.\n\
                  \x20 a2.t3  display(gl, state): identity → the view transform (camera) → the light position\n\
                  \x20        (10, 10, 10, 1) → the ground and the pyramid (draw_course_objects). Set the light after\n\
-                 \x20        the view transform, so it stays fixed in world coordinates.\n\n\
+                 \x20        the view transform, so it stays fixed in world space.\n\n\
                  The report shows:\n\
                  \x20 - the view transform as a product of rotations and translations (the 4×4 matrices side by\n\
                  \x20   side, (x, y, z, 1) → (x', y', z', 1)), and what each factor does;\n\

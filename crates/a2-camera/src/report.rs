@@ -273,11 +273,11 @@ pub fn camera_part(spec: &Spec, imp: &Impl) -> Part<CameraData> {
             let state = camera_state_text(spec, s);
             let title = match words {
                 None => Text::new(
-                    format!("視野変換行列（初期状態: {state}）"),
+                    format!("視点の変換行列（初期状態: {state}）"),
                     format!("view matrix (at the start: {state})"),
                 ),
                 Some(w) => Text::new(
-                    format!("視野変換行列（初期状態から{}ドラッグした後: {state}）", w.ja),
+                    format!("視点の変換行列（初期状態から{}ドラッグした後: {state}）", w.ja),
                     format!("view matrix (after dragging {} from the start: {state})", w.en),
                 ),
             };

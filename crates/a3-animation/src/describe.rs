@@ -292,15 +292,15 @@ pub impl Spec {
             out,
             "{}",
             t(
-                "a3.t2 display(spec, state, gl): カメラの変換、光源の位置、各物体の変換と描画。独立した物体はそれぞれ glPushMatrix / glPopMatrix で囲み、子は親の変換の後に描く。",
-                "a3.t2 display(spec, state, gl): the camera transform, the light's position, each object's transform and draw call. Enclose each independent object in glPushMatrix / glPopMatrix; draw the child after its parent's transforms.",
+                "a3.t2 display(spec, state, gl): 視点の変換、光源の位置、各物体の変換と描画。独立した物体はそれぞれ glPushMatrix / glPopMatrix で囲み、子は親の変換の後に描く。",
+                "a3.t2 display(spec, state, gl): the view transform, the light's position, each object's transform and draw call. Enclose each independent object in glPushMatrix / glPopMatrix; draw the child after its parent's transforms.",
             ).get(lang)
         );
         let _ = writeln!(
             out,
             "\n{}",
             t(
-                "レポートに書くこと（課題2と同様）:\n  - 各物体の変換行列を回転・平行移動の積で示す（ワールド座標系→カメラ座標系の T(0, 0, -15)·Rx(30°) は共通）。子の行列は、親の行列に続く積になる。\n  - 各物体がどのような運動をするかの説明、使用する変数（θ1 など）とそれぞれの変化（式、範囲、周期）。\n  - 物体同士の周期の比（上の比と一致すること）と、その確かめ方。\n確認: cargo run --release -- check a3    表示: cargo run --release -- view a3 --time 1.5",
+                "レポートに書くこと（課題2と同様）:\n  - 各物体の変換行列を回転・平行移動の積で示す（ワールド座標系→カメラ座標系の T(0, 0, -15)·Rx(30°) は共通）。子の行列は、親の行列に続く積になる。\n  - 各物体がどのような運動をするかの説明、使用する変数（θ1 など）とそれぞれの変化（式、範囲、周期）。\n  - 物体同士の周期の比（上の比と一致すること）と、その確かめ方。\nチェック: cargo run --release -- check a3    表示: cargo run --release -- view a3 --time 1.5",
                 "The report (as for assignment 2):\n  - each object's transform as a product of rotations and translations (world → camera, T(0, 0, -15)·Rx(30°), is common); the child's product continues its parent's.\n  - what motion each object makes, the variables used (θ1, …) and how each changes (formula, range, period).\n  - the ratio of the objects' periods (it must match the one above) and how you checked it.\nCheck: cargo run --release -- check a3    View: cargo run --release -- view a3 --time 1.5",
             ).get(lang)
         );

@@ -37,7 +37,7 @@ pub(crate) fn describe(spec: &Spec, lang: Lang) -> String {
     let _ = writeln!(out);
     let image = Text::new(
         format!(
-            "  用意された画像: assets/textures/a4-prepared.png（{IMAGE_PIXELS} × {IMAGE_PIXELS} 画素）。{CELLS} × {CELLS} のマス（各 {CELL_PIXELS} × {CELL_PIXELS} 画素）に\n    表計算ソフトのように名前がある: 列 A〜H は左から右、行 1〜8 は上から下（A1 が左上）。各マスの矢印は画像の上を指す。\n  地面: 授業の 10 × 10 の四角形。頂点 (i, j)（i, j = 0〜10）の位置は (i*1 - 5, 0, j*1 - 5)。"
+            "  用意された画像: assets/textures/a4-prepared.png（{IMAGE_PIXELS} × {IMAGE_PIXELS} ピクセル）。{CELLS} × {CELLS} のマス（各 {CELL_PIXELS} × {CELL_PIXELS} ピクセル）に\n    表計算ソフトのように名前がある: 列 A〜H は左から右、行 1〜8 は上から下（A1 が左上）。各マスの矢印は画像の上を指す。\n  地面: 授業の 10 × 10 の四角形。頂点 (i, j)（i, j = 0〜10）の位置は (i*1 - 5, 0, j*1 - 5)。"
         ),
         format!(
             "  The prepared image: assets/textures/a4-prepared.png ({IMAGE_PIXELS} × {IMAGE_PIXELS} pixels), {CELLS} × {CELLS} cells of {CELL_PIXELS} × {CELL_PIXELS} pixels\n    named like a spreadsheet: columns A–H from left to right, rows 1–8 from top to bottom (A1 is the top-left cell); the arrow in each cell points to the image's top.\n  The ground: the course's 10 × 10 squares; vertex (i, j) (i, j = 0…10) is at (i*1 - 5, 0, j*1 - 5)."
@@ -65,7 +65,7 @@ pub(crate) fn describe(spec: &Spec, lang: Lang) -> String {
     };
     let region = Text::new(
         format!(
-            "  範囲: {name}（{}、{}）= 画像の左上の角から画素 x = {x0}〜{x1}、y = {y0}〜{y1}",
+            "  範囲: {name}（{}、{}）= 画像の左上の角からピクセル x = {x0}〜{x1}、y = {y0}〜{y1}",
             columns.ja, rows.ja
         ),
         format!(
@@ -148,7 +148,7 @@ pub(crate) fn describe(spec: &Spec, lang: Lang) -> String {
     let _ = writeln!(out, "  {}", t("レポートに書くこと:", "The report shows:").get(lang));
     let report = [
         t(
-            "テクスチャ座標の範囲（s_min〜s_max、t_min〜t_max の表）と、マス・画素からの求め方（a4.t1）",
+            "テクスチャ座標の範囲（s_min〜s_max、t_min〜t_max の表）と、マス・ピクセルからの求め方（a4.t1）",
             "the range of the texture coordinates (a table of s_min…s_max, t_min…t_max) and how it follows from the cells and pixels (a4.t1)",
         ),
         t(
@@ -174,7 +174,7 @@ pub(crate) fn describe(spec: &Spec, lang: Lang) -> String {
     let _ = writeln!(
         out,
         "  {}: cargo run --release -- check a4    {}: cargo run --release -- view a4",
-        t("確認", "Check").get(lang),
+        t("チェック", "Check").get(lang),
         t("表示", "View").get(lang)
     );
     out

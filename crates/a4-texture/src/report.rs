@@ -165,7 +165,7 @@ fn texture_formula(spec: &Spec) -> Text {
     };
     Text::new(
         format!(
-            "頂点 (i, j)（位置 (i − 5, 0, j − 5)）のテクスチャ座標: s = {s_pq}、t = {t_pq}、{pq_ja}。i と j で書くと s = {s_ij}、t = {t_ij}。範囲: {} ≤ s ≤ {}、{} ≤ t ≤ {}（マス {region}、画素 x = {x0}〜{x1}、y = {y0}〜{y1}、{mirror_ja}{}、{repeat_ja}）",
+            "頂点 (i, j)（位置 (i − 5, 0, j − 5)）のテクスチャ座標: s = {s_pq}、t = {t_pq}、{pq_ja}。i と j で書くと s = {s_ij}、t = {t_ij}。範囲: {} ≤ s ≤ {}、{} ≤ t ≤ {}（マス {region}、ピクセル x = {x0}〜{x1}、y = {y0}〜{y1}、{mirror_ja}{}、{repeat_ja}）",
             n(s_min),
             n(s_max),
             n(t_min),

@@ -256,7 +256,7 @@ impl Variants {
         let _ = writeln!(
             out,
             "{}: {}  ({} {})",
-            t("学生番号", "Student ID").get(lang),
+            t("学生番号", "Student number").get(lang),
             self.student,
             t("課題表", "table").get(lang),
             self.table

@@ -148,7 +148,8 @@ fn report(
     let _ = writeln!(
         w,
         "  {}:",
-        t("視野変換行列（ワールド座標系→カメラ座標系）", "view matrix (world → camera)").get(lang)
+        t("視点の変換行列（ワールド座標系→カメラ座標系）", "view matrix (world → camera)")
+            .get(lang)
     );
     let _ = writeln!(w, "    V = {}", view.simplified());
     let _ = writeln!(w, "      = {}", view.symbolic());

@@ -67,10 +67,10 @@ pub struct Args {
     #[arg(short, long, value_name = "PNG")]
     output: Option<PathBuf>,
     /// Image width in pixels, 1–16384 (default: the scene's; alone, the height follows the
-    /// scene's aspect ratio) / 画像の幅（画素、1〜16384。省略時はシーンの幅。幅だけ指定すると高さはシーンの縦横比から決まります）
+    /// scene's aspect ratio) / 画像の幅（ピクセル、1〜16384。省略時はシーンの幅。幅だけ指定すると高さはシーンの縦横比から決まります）
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=16384))]
     width: Option<u32>,
-    /// Image height in pixels, 1–16384 / 画像の高さ（画素、1〜16384）
+    /// Image height in pixels, 1–16384 / 画像の高さ（ピクセル、1〜16384）
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=16384))]
     height: Option<u32>,
     /// Threads, 1–256 (default: all cores; the image is the same for any count) / スレッド数（1〜256。省略時はすべてのコア。結果は同じです）
@@ -193,12 +193,12 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
 fn trace_shading_note(asked: Shading) -> Text {
     if asked == Shading::Gouraud {
         t(
-            "注意: レイトレーサにはグローシェーディングがありません（補間する頂点の色を持たないため）。当たった点ごとに光源計算をするフォンシェーディングで描きます",
+            "注意: レイトレーサにはグローシェーディングがありません（補間する頂点の色を持たないため）。当たった点ごとに光源処理をするフォンシェーディングで描きます",
             "note: the ray tracer has no Gouraud shading (it has no vertex colours to interpolate): it lights every point a ray hits, as Phong shading",
         )
     } else {
         t(
-            "注意: レイトレーサのフラットシェーディングは三角形の面ごとに 1 回光源計算をします。正確な球と平面（sphere・grid）には面がないので、当たった点ごとに光源計算をします",
+            "注意: レイトレーサのフラットシェーディングは三角形の面ごとに 1 回光源処理をします。正確な球と平面（sphere・grid）には面がないので、当たった点ごとに光源処理をします",
             "note: the ray tracer's flat shading lights each triangle once; exact spheres and planes (sphere, grid shapes) have no faces and are lit at every point a ray hits",
         )
     }

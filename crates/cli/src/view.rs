@@ -350,7 +350,7 @@ fn view_in_worker(args: &ViewArgs, lang: Lang) -> Result<Ending, String> {
             } else {
                 t(
                     &format!(
-                        "{total} 画素中 {differ} 画素が 2/255 より違います（4 倍に強調して {}）",
+                        "{total} ピクセル中 {differ} ピクセルが 2/255 より違います（4 倍に強調して {}）",
                         diff_path.display()
                     ),
                     &format!(

@@ -20,7 +20,7 @@ fn the_assignment_follows_from_the_number_and_is_recorded_once() {
     let o = cg(&dir, &["assignment", "--student", "12345678", "--save", "--lang", "en"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let text = String::from_utf8_lossy(&o.stdout);
-    assert!(text.starts_with("Student ID: 12345678"), "{text}");
+    assert!(text.starts_with("Student number: 12345678"), "{text}");
     for task in ["a1.t1", "a2.t1", "a3.t1", "a4.t1", "s.t1"] {
         assert!(text.contains(task), "{task} missing from the assignment text");
     }

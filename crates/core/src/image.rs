@@ -58,13 +58,13 @@ impl SizeError {
     pub fn text(&self) -> Text {
         let ja = match *self {
             SizeError::ZeroSize { width, height } => format!(
-                "画像の大きさ {width}×{height} には画素がありません。幅と高さは 1 以上にしてください"
+                "画像の大きさ {width}×{height} にはピクセルがありません。幅と高さは 1 以上にしてください"
             ),
             SizeError::TooLarge { width, height } => format!(
                 "画像の大きさ {width}×{height} は大きすぎます。幅と高さは {MAX_SIDE} 以下にしてください"
             ),
             SizeError::TooManyPixels { width, height } => format!(
-                "画像の大きさ {width}×{height} は画素が多すぎます。画素数は全部で {MAX_PIXELS}（8192×8192）以下にしてください"
+                "画像の大きさ {width}×{height} はピクセルが多すぎます。ピクセル数は全部で {MAX_PIXELS}（8192×8192）以下にしてください"
             ),
         };
         Text::new(ja, self.to_string())
@@ -188,7 +188,7 @@ mod tests {
         let e = check_size(MAX_SIDE, 4097).unwrap_err();
         assert_eq!(e, SizeError::TooManyPixels { width: MAX_SIDE, height: 4097 });
         assert!(e.message(Lang::En).contains("16384×4097"), "{}", e.message(Lang::En));
-        assert!(e.message(Lang::Ja).contains("画素数"), "{}", e.message(Lang::Ja));
+        assert!(e.message(Lang::Ja).contains("ピクセル数"), "{}", e.message(Lang::Ja));
     }
 
     #[test]

@@ -9,7 +9,7 @@ use cg_core::transform::TransformError;
 #[must_use]
 pub fn install_hint() -> Text {
     t(
-        "C コンパイラーと Mesa のオフスクリーンレンダラー OSMesa が必要です: \
+        "C コンパイラーと Mesa のオフスクリーンレンダラ OSMesa が必要です: \
          `bash scripts/setup.sh` を実行してください（Debian/Ubuntu では gcc, libc6-dev, \
          libosmesa6-dev を入れます）。C コンパイラーは環境変数 CC でも指定できます",
         "It needs a C compiler and Mesa's off-screen renderer OSMesa: run `bash scripts/setup.sh` \
@@ -121,12 +121,12 @@ impl GlRefError {
     pub fn text(&self) -> Text {
         match self {
             GlRefError::NotAvailable { detail } => Text::new(
-                format!("OpenGL の参照レンダラーが使えません: {detail}。{}", install_hint().ja),
+                format!("OpenGL の参照レンダラが使えません: {detail}。{}", install_hint().ja),
                 format!("the OpenGL reference is not available: {detail}. {}", install_hint().en),
             ),
             GlRefError::LectureLightModel => t(
                 "シーンが講義の光のモデル (light_model = \"lecture\") \
-                 を使っていますが、OpenGL 1.x にはありません。OpenGL の参照レンダラーが描けるのは \
+                 を使っていますが、OpenGL 1.x にはありません。OpenGL の参照レンダラが描けるのは \
                  light_model = \"opengl\" だけです",
                 "the scene uses the lecture's light model (light_model = \"lecture\"), which OpenGL 1.x \
                  does not have: the OpenGL reference draws only light_model = \"opengl\"",

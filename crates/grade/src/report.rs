@@ -35,7 +35,7 @@ pub struct Facts {
     /// report filled for another student number.
     pub notes: Vec<Text>,
     /// The student number the report says it is for, when it is not the graded student's (its
-    /// template line `- Student ID: …`, `\author{学生番号 …}`): a flag.
+    /// template line `- Student number: …`, `\author{学生番号 …}`): a flag.
     pub claims: Option<String>,
     /// The time its check took (deriving the data in the worker, and verifying).
     pub time: Option<Duration>,
@@ -52,7 +52,11 @@ pub(crate) fn about(text: &str, student: &str) -> (Option<String>, Option<Text>)
         );
         return (None, Some(note));
     }
-    let line = text.lines().take(60).find(|l| l.contains("Student ID") || l.contains("学生番号"));
+    // "Student ID" is the label of the templates before 2026-11-29; reports filled from them
+    // are still read.
+    let line = text.lines().take(60).find(|l| {
+        l.contains("Student number") || l.contains("Student ID") || l.contains("学生番号")
+    });
     let number = line.and_then(crate::inside::eight_digits).filter(|n| *n != student);
     let note = number.map(|n| {
         Text::new(
@@ -547,14 +551,16 @@ mod tests {
     /// filled is told what to run, and a report of the student's own number says nothing.
     #[test]
     fn what_a_report_says_of_itself_is_noted() {
-        let other = "# Report\n\n- Student ID: 20260011\n";
+        let other = "# Report\n\n- Student number: 20260011\n";
         let (claims, note) = about(other, "20260010");
         assert_eq!(claims.as_deref(), Some("20260011"));
         assert!(note.unwrap().en.contains("for student 20260011, not for the student graded"));
         let latex = "\\author{学生番号 20260011\\quad 氏名}";
         assert_eq!(about(latex, "20260010").0.as_deref(), Some("20260011"));
         assert_eq!(about(other, "20260011"), (None, None));
-        let (claims, note) = about("- Student ID: {{student}}\n", "20260010");
+        // A report filled from the template before "Student number" was its label.
+        assert_eq!(about("- Student ID: 20260011\n", "20260010").0.as_deref(), Some("20260011"));
+        let (claims, note) = about("- Student number: {{student}}\n", "20260010");
         assert!(claims.is_none());
         assert!(note.unwrap().ja.contains("cargo run --release -- report fill"));
     }

@@ -359,7 +359,7 @@ fn a_broken_call_is_explained_in_the_feedbacks_language() {
     };
     let mut check = serde_json::to_value(&outcome).unwrap();
     check["id"] = "s.t9".into();
-    check["title"] = serde_json::json!({ "ja": "画素", "en": "pixel" });
+    check["title"] = serde_json::json!({ "ja": "ピクセル", "en": "pixel" });
     let facts = result::Facts {
         runs: [("s".to_owned(), AssignmentRun::Report(serde_json::json!({ "checks": [check] })))]
             .into(),

@@ -125,7 +125,7 @@ impl Stats {
             (t("クリッピング", "triangles clipped"), self.triangles_clipped),
             (t("裏面で除去", "triangles culled"), self.triangles_culled),
             (t("面積ゼロ", "triangles degenerate"), self.triangles_degenerate),
-            (t("画素中心を含まない", "triangles too small"), self.triangles_too_small),
+            (t("ピクセル中心を含まない", "triangles too small"), self.triangles_too_small),
             (t("ラスタライズした三角形", "triangles drawn"), self.triangles_drawn),
             (t("フラグメント", "fragments"), self.fragments),
             (t("深度テストで棄却", "depth rejects"), self.depth_rejects),

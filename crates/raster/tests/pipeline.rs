@@ -472,13 +472,13 @@ fn bad_scenes_give_errors_that_name_the_problem() {
 
     let e = err(&scene, &small(0));
     assert!(matches!(e, RenderError::ZeroSize { width: 0, height: 0 }), "{e}");
-    assert!(e.message(Lang::Ja).contains("画素"), "{}", e.message(Lang::Ja));
+    assert!(e.message(Lang::Ja).contains("ピクセル"), "{}", e.message(Lang::Ja));
     let e = err(&scene, &Options { size: Some((100_000, 10)), ..Options::default() });
     assert!(matches!(e, RenderError::TooLarge { .. }), "{e}");
     // 16384 × 4097 pixels: each side allowed, but more than 64 M pixels in all.
     let e = err(&scene, &Options { size: Some((16_384, 4097)), ..Options::default() });
     assert!(matches!(e, RenderError::TooManyPixels { width: 16_384, height: 4097 }), "{e}");
-    assert!(e.message(Lang::Ja).contains("画素数"), "{}", e.message(Lang::Ja));
+    assert!(e.message(Lang::Ja).contains("ピクセル数"), "{}", e.message(Lang::Ja));
     assert!(e.to_string().contains("too many pixels"), "{e}");
 
     let mut bad = scene.clone();

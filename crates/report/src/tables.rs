@@ -407,7 +407,7 @@ pub fn transform(p: &PolygonData, lang: Lang, format: Format) -> String {
             "a1.transform",
             &Text::new(
                 "モデル変換行列（モデル座標系 → ワールド座標系）",
-                "the model matrix (model coordinates → world coordinates)",
+                "the model matrix (model space → world space)",
             ),
             t,
             t,
@@ -574,7 +574,7 @@ pub fn sampler_text(
             let (x, y) = (format_number(t.x), format_number(t.y));
             Text::new(
                 format!(
-                    "地面の四角形 1 つに画像の {x} × {y} 画素（画像の横 × 縦、s 方向 × t 方向）が貼られる。"
+                    "地面の四角形 1 つに画像の {x} × {y} ピクセル（画像の横 × 縦、s 方向 × t 方向）が貼られる。"
                 ),
                 format!(
                     "One ground square shows {x} × {y} pixels of the image (across × up the image, along s × along t)."
@@ -582,7 +582,7 @@ pub fn sampler_text(
             )
         }
         None => t(
-            "（地面の四角形 1 つに貼られる画素の数は、a4.t1 と a4.t2 が導出できると書かれます）",
+            "（地面の四角形 1 つに貼られるピクセルの数は、a4.t1 と a4.t2 が導出できると書かれます）",
             "(How many pixels of the image one ground square shows is written once a4.t1 and a4.t2 derive.)",
         ),
     };

@@ -735,7 +735,7 @@ fn a_png_too_large_to_decode_says_so_with_its_size() {
     );
     assert_eq!(
         e.describe(Lang::Ja),
-        "huge.png: PNG 画像が大きすぎます（100000×100000。テクスチャは縦横とも 8192 画素まで）"
+        "huge.png: PNG 画像が大きすぎます（100000×100000。テクスチャは縦横とも 8192 ピクセルまで）"
     );
     // Over the side limit one way only, and a size whose pixels fit the side limit but whose
     // header lies about the data: refused from the header, nothing decoded.

@@ -93,7 +93,7 @@ fn japanese(s: &Spec) -> String {
     );
     let _ = writeln!(
         out,
-        "  s.t6 フラット／グロー／フォンシェーディング: shade_pixel(mode, pixel, light) — 画素の色を、面の法線・頂点の色・補間して正規化した法線のどれから決めるか"
+        "  s.t6 フラット／グロー／フォンシェーディング: shade_pixel(mode, pixel, light) — ピクセルの色を、面の法線・頂点の色・補間して正規化した法線のどれから決めるか"
     );
     let _ = writeln!(out, "  s.t7 鏡面反射（大域照明）の方向: reflect(i, n) = i − 2(i·n)n");
     let _ = writeln!(
@@ -128,7 +128,7 @@ fn japanese(s: &Spec) -> String {
     );
     let _ = writeln!(
         out,
-        "  確認: cargo run --release -- check s    表示: cargo run --release -- view s"
+        "  チェック: cargo run --release -- check s    表示: cargo run --release -- view s"
     );
     out
 }

@@ -21,7 +21,7 @@ pub enum MouseButton {
 }
 
 /// The course's light position, `light0_position = { 10.0, 10.0, 10.0, 1.0 }` (a point light:
-/// w = 1), in world coordinates. `display()` (a2.t3) sets it *after* the camera, so OpenGL
+/// w = 1), in world space. `display()` (a2.t3) sets it *after* the camera, so OpenGL
 /// multiplies it by the view matrix and the light stays fixed in the world.
 pub const LIGHT0_POSITION: [f32; 4] = [10.0, 10.0, 10.0, 1.0];
 

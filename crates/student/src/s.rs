@@ -3,7 +3,7 @@
 //! ([`Impl`]). Plain data: the kit computes the expected light terms, normals, images and
 //! directions on its own side, out of your crate's reach.
 //!
-//! 課題 `s`（シェーディング）: シェーディングの種類、画素の情報、あなたが書く関数の表。
+//! 課題 `s`（シェーディング）: シェーディングの種類、ピクセルの情報、あなたが書く関数の表。
 //! 答えを計算する関数はここにはありません。
 
 use crate::left_out;
@@ -29,7 +29,7 @@ pub enum Shading {
 /// (ワールド座標系), where the light is.
 ///
 /// The corners are the face's corners in its own order (`F { V0, V1, V2 }` of the report); the
-/// weights say how much of each corner there is at the pixel (画素と頂点の距離により決まるウェイト):
+/// weights say how much of each corner there is at the pixel (ピクセルと頂点の距離により決まるウェイト):
 /// `w₀ + w₁ + w₂ = 1`, each in `[0, 1]`, already corrected for perspective — the weights the
 /// renderer itself interpolates with.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

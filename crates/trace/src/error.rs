@@ -112,7 +112,7 @@ impl TraceError {
             TraceError::Camera(e) => {
                 let e = e.text();
                 Text::new(
-                    format!("カメラ（視野変換）: {}", e.ja),
+                    format!("カメラ（視点の変換）: {}", e.ja),
                     format!("camera (view transform): {}", e.en),
                 )
             }

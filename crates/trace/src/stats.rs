@@ -89,7 +89,7 @@ impl Stats {
             (t("全反射", "total internal reflections"), self.total_internal_reflections),
             (t("省略したレイ（重みが小さい）", "pruned rays (small weight)"), self.pruned_rays),
             (
-                t("省略したレイ（画素ごとの上限）", "rays over the per-pixel budget"),
+                t("省略したレイ（ピクセルごとの上限）", "rays over the per-pixel budget"),
                 self.rays_over_budget,
             ),
             (t("光源処理", "lighting evaluations"), self.lighting_evaluations),

@@ -161,13 +161,15 @@ fn bad_input_is_an_error_with_a_message_in_both_languages() {
 
     let e = err(&scene, &Options { size: Some((0, 10)), ..Options::default() });
     assert_eq!(e, TraceError::ZeroSize { width: 0, height: 10 });
-    assert!(e.message(Lang::En).contains("0×10") && e.message(Lang::Ja).contains("画素"));
+    assert!(e.message(Lang::En).contains("0×10") && e.message(Lang::Ja).contains("ピクセル"));
     let e = err(&scene, &Options { size: Some((100_000, 10)), ..Options::default() });
     assert!(matches!(e, TraceError::TooLarge { .. }), "{e}");
     // Each side allowed, but more than 64 M pixels in all.
     let e = err(&scene, &Options { size: Some((16_384, 4097)), ..Options::default() });
     assert_eq!(e, TraceError::TooManyPixels { width: 16_384, height: 4097 });
-    assert!(e.message(Lang::Ja).contains("画素数") && e.to_string().contains("too many pixels"));
+    assert!(
+        e.message(Lang::Ja).contains("ピクセル数") && e.to_string().contains("too many pixels")
+    );
     let e = err(&scene, &Options { max_depth: 1000, ..Options::default() });
     assert!(matches!(e, TraceError::MaxDepth { max_depth: 1000 }), "{e}");
     let e = err(&scene, &Options { min_weight: f32::NAN, ..Options::default() });

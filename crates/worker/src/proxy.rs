@@ -381,7 +381,9 @@ pub fn shade_pixels(
     if queries.len() != pixels.len() {
         let (got, asked) = (queries.len(), pixels.len());
         std::panic::panic_any(CallError::Broken(Reason::new(
-            format!("s.shade_pixels_queries: 画素 {asked} 個に問い合わせの列が {got} 個返りました"),
+            format!(
+                "s.shade_pixels_queries: ピクセル {asked} 個に問い合わせの列が {got} 個返りました"
+            ),
             format!("s.shade_pixels_queries: {got} lists for {asked} pixels"),
         )));
     }
@@ -392,7 +394,7 @@ pub fn shade_pixels(
     match colours {
         Ok(c) if c.len() == pixels.len() => c,
         Ok(c) => std::panic::panic_any(CallError::Broken(Reason::new(
-            format!("s.shade_pixels: 画素 {} 個に色が {} 個返りました", pixels.len(), c.len()),
+            format!("s.shade_pixels: ピクセル {} 個に色が {} 個返りました", pixels.len(), c.len()),
             format!("s.shade_pixels: {} colours for {} pixels", c.len(), pixels.len()),
         ))),
         Err(why) => std::panic::panic_any(CallError::Broken(Reason::new(

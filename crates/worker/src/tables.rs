@@ -259,7 +259,9 @@ pub fn s(imp: s::Impl) -> Vec<(&'static str, Handler)> {
                     let (p, q, a) = (pixels.len(), queries.len(), answers.len());
                     if q != p || a != p {
                         return Err(Reason::new(
-                            format!("画素 {p} 個に、問い合わせの列が {q} 個、答えの列が {a} 個"),
+                            format!(
+                                "ピクセル {p} 個に、問い合わせの列が {q} 個、答えの列が {a} 個"
+                            ),
                             format!("{p} pixels, {q} lists of queries and {a} lists of answers"),
                         ));
                     }
@@ -270,7 +272,7 @@ pub fn s(imp: s::Impl) -> Vec<(&'static str, Handler)> {
                         .map(|(i, (p, (q, a)))| {
                             answered(shade_pixel, mode, p, q, a).map_err(|why| {
                                 Reason::new(
-                                    format!("画素 {i}: {}", why.ja),
+                                    format!("ピクセル {i}: {}", why.ja),
                                     format!("pixel {i}: {}", why.en),
                                 )
                             })
@@ -304,7 +306,7 @@ fn asked(shade_pixel: ShadePixel, mode: Shading, pixel: &Pixel) -> Queries {
 
 /// What a `shade_pixel` that asked other questions the second time is told: it ran twice on the
 /// same pixel (once to list what it asks `light`, once with the answers), so it must ask the same.
-const SAME_QUESTIONS_JA: &str = "（shade_pixel は同じ画素で 2 回実行されます。乱数や呼び出しをまたいで残る状態を使わず、同じ順に同じ light を呼んでください）";
+const SAME_QUESTIONS_JA: &str = "（shade_pixel は同じピクセルで 2 回実行されます。乱数や呼び出しをまたいで残る状態を使わず、同じ順に同じ light を呼んでください）";
 const SAME_QUESTIONS_EN: &str = " (shade_pixel runs twice on the same pixel: ask light the same questions in the same order, with no randomness and no state kept between calls)";
 
 /// Phase 2: the pixel's colour with a light that answers the `k`-th query with `answers[k]`,
@@ -461,7 +463,7 @@ mod tests {
         let queries = asked(moving, Shading::Phong, &pixel);
         let why = answered(moving, Shading::Phong, &pixel, &queries, &answer).unwrap_err();
         assert!(why.ja.contains("light の 0 番目の呼び出し"), "{why:?}");
-        assert!(why.ja.contains("同じ画素で 2 回実行されます"), "{why:?}");
+        assert!(why.ja.contains("同じピクセルで 2 回実行されます"), "{why:?}");
         assert!(
             why.en.contains("light query 0 was") && why.en.contains("no randomness"),
             "{why:?}"

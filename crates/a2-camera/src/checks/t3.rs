@@ -88,8 +88,8 @@ pub(super) fn light_after_camera(spec: &Spec, imp: &Impl) -> Result<(), Failure>
                 gl.lights().iter().map(|l| format!("GL_LIGHT{}", l.light)).collect();
             return Err(Failure::new(
                 Text::new(
-                    format!("視点座標系で GL_LIGHT0 の位置が {}", show::vec4(expected)),
-                    format!("GL_LIGHT0 at {} in eye space", show::vec4(expected)),
+                    format!("カメラ座標系で GL_LIGHT0 の位置が {}", show::vec4(expected)),
+                    format!("GL_LIGHT0 at {} in camera space", show::vec4(expected)),
                 ),
                 if others.is_empty() {
                     t("光源の位置の設定なし", "no light position set")
@@ -144,8 +144,8 @@ pub(super) fn light_after_camera(spec: &Spec, imp: &Impl) -> Result<(), Failure>
         let (eye, model_view) = (show::vec4(light.eye), light.model_view.numeric());
         return Err(Failure::new(
             Text::new(
-                format!("視点座標系での位置 V · (10, 10, 10, 1) = {}", show::vec4(expected)),
-                format!("eye-space position V · (10, 10, 10, 1) = {}", show::vec4(expected)),
+                format!("カメラ座標系での位置 V · (10, 10, 10, 1) = {}", show::vec4(expected)),
+                format!("camera-space position V · (10, 10, 10, 1) = {}", show::vec4(expected)),
             ),
             Text::new(
                 format!("{eye}（設定したときのモデルビュー行列は {model_view}）"),

@@ -75,7 +75,7 @@ pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
         ),
         check::run(
             "a3.t2.light",
-            t("光源をカメラの変換の直後に設定", "the light set right after the camera"),
+            t("光源を視点の変換の直後に設定", "the light set right after the view transform"),
             || t2::light(spec, imp),
         ),
         check::run(
@@ -294,20 +294,20 @@ fn diagnose(
     if close(found, v.inverse() * expected, POSE_TOL) {
         return Diagnosis::new(
             t(
-                "カメラの変換 T(0, 0, -15)·Rx(30°) がかかっていません",
-                "the camera transform T(0, 0, -15)·Rx(30°) is missing",
+                "視点の変換 T(0, 0, -15)·Rx(30°) がかかっていません",
+                "the view transform T(0, 0, -15)·Rx(30°) is missing",
             ),
             t(
-                "display() の最初に glLoadIdentity、カメラの変換を置き、その後に物体を描いてください",
-                "start display() with glLoadIdentity and the camera transform, then draw the objects",
+                "display() の最初に glLoadIdentity、視点の変換を置き、その後に物体を描いてください",
+                "start display() with glLoadIdentity and the view transform, then draw the objects",
             ),
         );
     }
     if close(found, v * expected, POSE_TOL) {
         return Diagnosis::new(
-            t("カメラの変換が 2 回かかっています", "the camera transform is applied twice"),
+            t("視点の変換が 2 回かかっています", "the view transform is applied twice"),
             t(
-                "カメラの変換は 1 回だけ（glLoadIdentity の直後に）",
+                "視点の変換は 1 回だけ（glLoadIdentity の直後に）",
                 "apply the camera once, right after glLoadIdentity",
             ),
         );
@@ -544,14 +544,14 @@ fn pose_failure(
     let (mv, rot, pos) = (draw.model_view.numeric(), rot.to_degrees(), format_number(pos as f32));
     Failure::new(
         Text::new(
-            format!("{product} → 物体の原点は世界座標で {o_expected}（カメラの因子を除いて）"),
+            format!("{product} → 物体の原点はワールド座標系で {o_expected}（カメラの因子を除いて）"),
             format!(
                 "{product} → the object's origin at {o_expected} in the world (the camera's factors taken off)"
             ),
         ),
         Text::new(
             format!(
-                "{mv} → 物体の原点は世界座標で {o_found}（回転のずれ {rot:.3}°、位置のずれ {pos}{also_ja}）"
+                "{mv} → 物体の原点はワールド座標系で {o_found}（回転のずれ {rot:.3}°、位置のずれ {pos}{also_ja}）"
             ),
             format!(
                 "{mv} → the object's origin at {o_found} in the world (off by {rot:.3}° and {pos} units{also_en})"

@@ -81,16 +81,25 @@ pub(super) fn light(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         let Some(l) = gl.lights().iter().find(|l| l.light == 0) else {
             return Err(Failure::new(
                 Text::new(
-                    format!("gl.light_position(0, [10, 10, 10, 1]) → 視点座標で {}", show(expected)),
-                    format!("gl.light_position(0, [10, 10, 10, 1]) → eye {}", show(expected)),
+                    format!(
+                        "gl.light_position(0, [10, 10, 10, 1]) → カメラ座標系で {}",
+                        show(expected)
+                    ),
+                    format!(
+                        "gl.light_position(0, [10, 10, 10, 1]) → {} in camera space",
+                        show(expected)
+                    ),
                 ),
                 t("光源の位置が設定されていない", "no light set"),
             )
             .at(location)
-            .cause(t("display() で光源の位置を設定していません", "display() does not set the light's position"))
+            .cause(t(
+                "display() で光源の位置を設定していません",
+                "display() does not set the light's position",
+            ))
             .hint(t(
-                "カメラの変換の直後に gl.light_position(0, [10.0, 10.0, 10.0, 1.0]) を呼んでください",
-                "call gl.light_position(0, [10.0, 10.0, 10.0, 1.0]) right after the camera transform",
+                "視点の変換の直後に gl.light_position(0, [10.0, 10.0, 10.0, 1.0]) を呼んでください",
+                "call gl.light_position(0, [10.0, 10.0, 10.0, 1.0]) right after the view transform",
             )));
         };
         let eye = l.eye.as_dvec4();
@@ -100,8 +109,8 @@ pub(super) fn light(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         let before = (eye - given.as_dvec4()).abs().max_element() <= 1e-4;
         let cause = if before {
             t(
-                "光源をカメラの変換の前に設定しています（光源がカメラと一緒に動き、ワールドに固定されない）",
-                "the light is set before the camera transform (it moves with the camera instead of staying in the world)",
+                "光源を視点の変換の前に設定しています（光源がカメラと一緒に動き、ワールドに固定されない）",
+                "the light is set before the view transform (it moves with the camera instead of staying in the world)",
             )
         } else if l.given.as_dvec4() != given.as_dvec4() {
             t(
@@ -110,26 +119,26 @@ pub(super) fn light(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             )
         } else {
             t(
-                "光源を設定したときの変換がカメラの変換だけではありません（物体の変換の後に設定している？）",
+                "光源を設定したときの変換が視点の変換だけではありません（物体の変換の後に設定している？）",
                 "the model-view matrix when the light is set is not just the camera's (set after an object's transforms?)",
             )
         };
         let (expected, eye, mv) = (show(expected), show(eye), l.model_view.numeric());
         Err(Failure::new(
             Text::new(
-                format!("視点座標で {expected}（= V · (10, 10, 10, 1)）"),
-                format!("eye {expected} (= V · (10, 10, 10, 1))"),
+                format!("カメラ座標系で {expected}（= V · (10, 10, 10, 1)）"),
+                format!("{expected} in camera space (= V · (10, 10, 10, 1))"),
             ),
             Text::new(
-                format!("視点座標で {eye}（モデルビュー行列 {mv}）"),
-                format!("eye {eye} (model-view {mv})"),
+                format!("カメラ座標系で {eye}（モデルビュー行列 {mv}）"),
+                format!("{eye} in camera space (model-view {mv})"),
             ),
         )
         .at(location)
         .cause(cause)
         .hint(t(
-            "glLoadIdentity → カメラの変換 → gl.light_position(0, …) → 物体、の順にしてください",
-            "use the order glLoadIdentity → camera transform → gl.light_position(0, …) → objects",
+            "glLoadIdentity → 視点の変換 → gl.light_position(0, …) → 物体、の順にしてください",
+            "use the order glLoadIdentity → view transform → gl.light_position(0, …) → objects",
         )))
     })
 }

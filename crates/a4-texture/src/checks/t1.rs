@@ -31,7 +31,7 @@ pub(super) fn s_range(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         t("画像全体の範囲になっている", "this is the whole image, not the region")
     } else if is(x0 as f32, x1 as f32) {
         t(
-            "画素の値のまま: テクスチャ座標は画像の幅 512 で割った 0〜1 の値",
+            "ピクセルの値のまま: テクスチャ座標は画像の幅 512 で割った 0〜1 の値",
             "these are pixels: texture coordinates are 0…1, the pixels divided by the image's width 512",
         )
     } else if is(want.t_min, want.t_max) {
@@ -83,7 +83,7 @@ pub(super) fn t_range(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         t("画像全体の範囲になっている", "this is the whole image, not the region")
     } else if is(y0 as f32, y1 as f32) || is(512.0 - y1 as f32, 512.0 - y0 as f32) {
         t(
-            "画素の値のまま: テクスチャ座標は画像の高さ 512 で割った 0〜1 の値",
+            "ピクセルの値のまま: テクスチャ座標は画像の高さ 512 で割った 0〜1 の値",
             "these are pixels: texture coordinates are 0…1, the pixels divided by the image's height 512",
         )
     } else if is(want.s_min, want.s_max) {
@@ -111,7 +111,7 @@ pub(super) fn t_range(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     })
     .cause(cause)
     .hint(t(
-        "画素の y は上から、t は下から数える: t = 1 − y / 512",
+        "ピクセルの y は上から、t は下から数える: t = 1 − y / 512",
         "pixel y counts from the top, t from the bottom: t = 1 − y / 512",
     )))
 }

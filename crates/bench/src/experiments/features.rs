@@ -216,7 +216,7 @@ mod gpu {
                     ""
                 };
                 format!(
-                    "GPU の行 ({adapter}) は {g}×{g} 画素: 用意したフレーム (`cg_gpu::Frame`) への \
+                    "GPU の行 ({adapter}) は {g}×{g} ピクセル: 用意したフレーム (`cg_gpu::Frame`) への \
                      {k} 回の描画と 1 回の待ちの時間を {k} で割ったもので、読み戻しは含まない \
                      (小さな画像では提出ごとの固定費が時間の大半になるため、CPU の行より大きな画像で\
                      測る)。RMS は GPU 自身の「なし」の画像との差。GPU のシェーダ (WGSL) は \
@@ -322,7 +322,7 @@ pub fn run(config: &Config) -> Result<Experiment, BenchError> {
         about: format!(
             "球と床、点光源 1 つの基本シーンに機能を 1 つずつ加える。係数がごく小さい行 (k_s = 1e-6、\
              k_l = 1e-7、白いテクスチャ、範囲 180° のスポット) は画像がほぼ変わらないのに項を計算する: \
-             「なし」の行との時間差が、使わない項を省くことで節約している時間。{s}×{s} 画素、Phong \
+             「なし」の行との時間差が、使わない項を省くことで節約している時間。{s}×{s} ピクセル、Phong \
              シェーディング、CPU の描画は 1 スレッド。\n\n\
              A sphere on a ground under one point light, then one feature at a time. The rows \
              with a coefficient too small to see (k_s = 1e-6, k_l = 1e-7, a white texture, a \

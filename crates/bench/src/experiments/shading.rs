@@ -89,9 +89,9 @@ pub fn run(config: &Config) -> Result<Experiment, BenchError> {
         id: "shading",
         title: "シェーディング方式 / Shading modes",
         about: format!(
-            "単位球 (頂点法線は厳密な球の法線) を点光源 1 つ・局所視点・講義の Phong モデルで描き、\
-             レイトレーサが厳密な球を画素ごとに照らした画像と比べる。鏡面反射光は青チャネルだけに入れ、\
-             ハイライトのピークはその最大値。{s}×{s} 画素、ラスタライザ 1 スレッド。\n\n\
+            "単位球 (頂点の法線は厳密な球の法線) を点光源 1 つ・局所視点・講義の Phong モデルで描き、\
+             レイトレーサが厳密な球をピクセルごとに照らした画像と比べる。鏡面反射光は青チャンネルだけに入れ、\
+             ハイライトのピークはその最大値。{s}×{s} ピクセル、ラスタライザ 1 スレッド。\n\n\
              A unit sphere (icosphere; vertex normals the exact sphere normals) under one point \
              light, local viewer, the lecture's Phong model, against the ray tracer's exact sphere \
              lit at every pixel. The specular term alone is in the blue channel, so the highlight \

@@ -88,7 +88,7 @@ pub fn area_light(config: &Config) -> Result<Experiment, BenchError> {
         id: "area-light",
         title: "面光源のサンプル数 / Area-light samples",
         about: format!(
-            "2×2 の面光源を k×k 個の点光源で近似し (影あり)、{r}×{r} の画像との RMS 差。{s}×{s} 画素、1 スレッド。\n\n\
+            "2×2 の面光源を k×k 個の点光源で近似し (影あり)、{r}×{r} の画像との RMS 差。{s}×{s} ピクセル、1 スレッド。\n\n\
              A 2 × 2 area light approximated by k × k point lights (the lecture's 面光源), with \
              shadows, against the same scene at {r} × {r} samples: RMS difference over all \
              pixels in [0, 1] colour units. The ray tracer at {s} × {s} pixels on one thread.",
@@ -136,7 +136,7 @@ pub fn ray_depth(config: &Config) -> Result<Experiment, BenchError> {
         title: "レイの深さ / Ray depth",
         about: format!(
             "鏡の球、ガラスの球 (η = 1.5)、反射する床。最大深さ d の画像と深さ {r} の画像との RMS 差。\
-             {s}×{s} 画素、1 スレッド。\n\n\
+             {s}×{s} ピクセル、1 スレッド。\n\n\
              A mirror sphere, a glass sphere (η = 1.5, exact Fresnel) and a reflective floor: \
              the image at maximum depth d against depth {r} (same adaptive pruning, weight < \
              1/1024): RMS difference in [0, 1] colour units. The ray tracer at {s} × {s} pixels \

@@ -119,8 +119,8 @@ pub fn run(config: &Config) -> Result<Experiment, BenchError> {
     }
     Ok(Experiment {
         id: "vertex-normals",
-        title: "頂点法線の重み / Vertex-normal weights",
-        about: "各重み付けの頂点法線 (`cg_core::normals::vertex_normals`) と解析的な曲面の法線との角度 [度]。\
+        title: "頂点の法線の重み / Vertex-normal weights",
+        about: "各重み付けの頂点の法線 (`cg_core::normals::vertex_normals`) と解析的な曲面の法線との角度 [度]。\
                 UV 球、トーラス、楕円体、頂点を球面上でずらした icosphere。時間は 1 三角形あたり。\n\n\
                 The angle in degrees between `cg_core::normals::vertex_normals` under each \
                 weighting and the surface's analytic normal, at every vertex: a UV sphere, a torus, \

@@ -25,7 +25,7 @@ fn utf16_without_a_bom_is_recognised_by_its_zero_bytes() {
     assert_eq!(utf16_without_bom(REPORT.as_bytes()), None);
     assert_eq!(utf16_without_bom(&shift_jis(REPORT)), None);
     // Kanji alone have no zero byte either: not recognised (named with --encoding).
-    let kanji = utf16("頂点法線", true)[2..].to_vec();
+    let kanji = utf16("頂点の法線", true)[2..].to_vec();
     assert_eq!(utf16_without_bom(&kanji), None);
     assert_eq!(utf16_without_bom(b"a"), None);
 }

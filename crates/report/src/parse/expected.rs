@@ -17,7 +17,7 @@ pub(super) fn detail(e: &GroupError, what_ja: &str, what_en: &str) -> Text {
         }
         GroupError::Count(k, true) => Text::new(
             format!(
-                "（{what_ja}が {k} 個あります。小数点にカンマを使っていませんか。0.5 のようにピリオドで書きます）"
+                "（{what_ja}が {k} 個あります。小数点にコンマを使っていませんか。0.5 のようにピリオドで書きます）"
             ),
             format!(
                 " (found {k} {what_en}: is a comma used as the decimal point? Write decimals with a point, such as 0.5)"

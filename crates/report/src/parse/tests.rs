@@ -745,7 +745,7 @@ fn a_decimal_comma_is_named() {
         let p = &problems[0];
         messages_name(p, 1);
         assert_eq!(p.expected.en.contains("comma used as the decimal point"), hinted, "{p:?}");
-        assert_eq!(p.expected.ja.contains("小数点にカンマ"), hinted, "{p:?}");
+        assert_eq!(p.expected.ja.contains("小数点にコンマ"), hinted, "{p:?}");
     }
 }
 

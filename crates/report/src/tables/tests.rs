@@ -32,7 +32,7 @@ pub(crate) fn camera() -> NamedMatrix {
     NamedMatrix {
         id: "a2.view.start".to_owned(),
         title: Text::new(
-            "視野変換行列（初期状態、100% の_距離）",
+            "視点の変換行列（初期状態、100% の_距離）",
             "view matrix (start, 100% of_distance)",
         ),
         symbolic: product(-15.0, 30.0),
@@ -336,7 +336,7 @@ fn the_sampler_line_names_the_opengl_modes_and_the_pixels_per_square() {
     );
     let ja = sampler(&t, Lang::Ja, Format::Latex).unwrap();
     assert!(ja.contains("s 方向 GL\\_CLAMP\\_TO\\_EDGE"), "{ja}");
-    assert!(ja.contains("10 × 5 画素（画像の横 × 縦、s 方向 × t 方向）"), "{ja}");
+    assert!(ja.contains("10 × 5 ピクセル（画像の横 × 縦、s 方向 × t 方向）"), "{ja}");
     t.sampler = None;
     assert_eq!(sampler(&t, Lang::En, Format::Markdown), None);
 }

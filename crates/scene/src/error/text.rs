@@ -465,7 +465,7 @@ impl ErrorKind {
                 let side = crate::MAX_TEXTURE_SIDE;
                 Text::new(
                     format!(
-                        "PNG 画像が大きすぎます（{width}×{height}。テクスチャは縦横とも {side} 画素まで）"
+                        "PNG 画像が大きすぎます（{width}×{height}。テクスチャは縦横とも {side} ピクセルまで）"
                     ),
                     format!(
                         "PNG image too large ({width}×{height}; a texture is at most {side} pixels each way)"

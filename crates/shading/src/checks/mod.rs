@@ -134,7 +134,7 @@ pub fn checks(spec: &Spec, imp: &Impl) -> Vec<CheckResult> {
         run(
             "s.t6.phong",
             t(
-                "フォンシェーディング: 法線を補間・正規化して画素ごとに光源処理",
+                "フォンシェーディング: 法線を補間・正規化してピクセルごとに光源処理",
                 "Phong shading: normals interpolated, renormalised and lit per pixel",
             ),
             &|| t6::unit(spec, imp, crate::Shading::Phong),

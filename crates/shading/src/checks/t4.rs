@@ -97,7 +97,7 @@ pub(super) fn spot(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
             })
             .collect();
     cases.push((
-        t("カットオフ 180°（円錐なし）、α = 135°", "cut-off 180° (no cone), α = 135°"),
+        t("広がり 180°（円錐なし）、α = 135°", "cut-off 180° (no cone), α = 135°"),
         at(135.0),
         down,
         180.0,
@@ -172,10 +172,7 @@ pub(super) fn spot(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         let (l, s, c, e) = (vec(l), vec(s), num(c), num(e));
         return Err(Failure::new(num(expected), num(actual))
             .at(Text::new(
-                format!(
-                    "{}: L = {l}, S = {s}, カットオフ角 {c}°、指数 {e}（α = {alpha:.2}°）",
-                    name.ja
-                ),
+                format!("{}: L = {l}, S = {s}, 広がり {c}°、指数 {e}（α = {alpha:.2}°）", name.ja),
                 format!(
                     "{}: L = {l}, S = {s}, cutoff = {c}°, exponent = {e} (α = {alpha:.2}°)",
                     name.en

@@ -207,7 +207,7 @@ fn explain(
         ),
         Shading::Flat if same(actual, phong) && !same(phong, expected) => (
             t(
-                "画素ごとに補間した法線で計算しています（フォンシェーディング）。",
+                "ピクセルごとに補間した法線で計算しています（フォンシェーディング）。",
                 "each pixel is lit with an interpolated normal (that is Phong shading).",
             ),
             t(
@@ -237,7 +237,7 @@ fn explain(
         {
             (
                 t(
-                    "面の法線は正しいですが、光を当てる位置が画素ごとに変わっています。",
+                    "面の法線は正しいですが、光を当てる位置がピクセルごとに変わっています。",
                     "the face normal is right, but the lit point moves with the pixel.",
                 ),
                 t(
@@ -248,7 +248,7 @@ fn explain(
         }
         Shading::Gouraud if same(actual, phong) && !same(phong, expected) => (
             t(
-                "画素ごとに光源処理をしています。それはフォンシェーディングです。",
+                "ピクセルごとに光源処理をしています。それはフォンシェーディングです。",
                 "every pixel is lit: that is Phong shading.",
             ),
             t(
@@ -488,7 +488,7 @@ pub(super) fn image(spec: &Spec, imp: &Impl, mode: Shading) -> Result<(), Failur
     Err(Failure::new(
         Text::new(
             format!(
-                "球の {seen} 画素の ≥ {pct:.1} % が kit の{ja}の画像と {IMAGE_TOLERANCE}/255 以内"
+                "球の {seen} ピクセルの ≥ {pct:.1} % が kit の{ja}の画像と {IMAGE_TOLERANCE}/255 以内"
             ),
             format!(
                 "≥ {pct:.1} % of the sphere's {seen} pixels within {IMAGE_TOLERANCE}/255 of the kit's {en} image"
@@ -496,7 +496,7 @@ pub(super) fn image(spec: &Spec, imp: &Impl, mode: Shading) -> Result<(), Failur
         ),
         Text::new(
             format!(
-                "{IMAGE_TOLERANCE}/255 以内は {within} 画素（{share:.1} %）、超えるのは {off} 画素（うちハイライト内 {off_in_highlight}）、x {x0}–{x1}、y {y0}–{y1}; 最大の差 {d}/255（画素 ({x}, {y})）: kit ({er}, {eg}, {eb})、あなた ({ar}, {ag}, {ab})"
+                "{IMAGE_TOLERANCE}/255 以内は {within} ピクセル（{share:.1} %）、超えるのは {off} ピクセル（うちハイライト内 {off_in_highlight}）、x {x0}–{x1}、y {y0}–{y1}; 最大の差 {d}/255（ピクセル ({x}, {y})）: kit ({er}, {eg}, {eb})、あなた ({ar}, {ag}, {ab})"
             ),
             format!(
                 "{within} ({share:.1} %) within; {off} differ ({off_in_highlight} in the highlight), x {x0}–{x1}, y {y0}–{y1}; the largest difference {d}/255 at pixel ({x}, {y}): kit ({er}, {eg}, {eb}), yours ({ar}, {ag}, {ab})"
@@ -505,7 +505,7 @@ pub(super) fn image(spec: &Spec, imp: &Impl, mode: Shading) -> Result<(), Failur
     )
     .at(Text::new(
         format!(
-            "{w}×{h} の画像（{ja}）の画素 ({x}, {y})、面 F{face}{}",
+            "{w}×{h} の画像（{ja}）のピクセル ({x}, {y})、面 F{face}{}",
             weights.as_ref().map_or_else(String::new, |w| format!("、重み {w}"))
         ),
         format!(
@@ -579,7 +579,7 @@ pub(super) fn highlight(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     } else if gouraud_shows * 2 > n {
         (
             t(
-                "グローシェーディングの画像にもハイライトがあります: 画素ごとに光源処理をしていませんか（それはフォンです）。",
+                "グローシェーディングの画像にもハイライトがあります: ピクセルごとに光源処理をしていませんか（それはフォンです）。",
                 "your Gouraud image shows the highlight too: is every pixel lit? (That is Phong.)",
             ),
             t(
@@ -594,7 +594,7 @@ pub(super) fn highlight(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
                 "your Phong image loses the highlight: are colours interpolated?",
             ),
             t(
-                "フォンでは法線 N = Σ wᵢ·Nᵢ を補間して正規化し、画素ごとに light(P, N) を計算します。",
+                "フォンでは法線 N = Σ wᵢ·Nᵢ を補間して正規化し、ピクセルごとに light(P, N) を計算します。",
                 "Phong interpolates the normal N = Σ wᵢ·Nᵢ, renormalises it and lights every pixel: light(P, N).",
             ),
         )
@@ -616,7 +616,7 @@ pub(super) fn highlight(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
     Err(Failure::new(
         Text::new(
             format!(
-                "ハイライトの {n} 画素の ≥ {pct:.0} % で、あなたのフォンがグローより {KEEP_MARGIN} 以上明るい"
+                "ハイライトの {n} ピクセルの ≥ {pct:.0} % で、あなたのフォンがグローより {KEEP_MARGIN} 以上明るい"
             ),
             format!(
                 "your Phong brighter than your Gouraud by > {KEEP_MARGIN} in ≥ {pct:.0} % of the {n} highlight pixels"
@@ -624,7 +624,7 @@ pub(super) fn highlight(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         ),
         Text::new(
             format!(
-                "{kept} / {n}（{share:.0} %）; kit のフォンのハイライトがあなたのグローに出た画素: {gouraud_shows}、あなたのフォンが kit のグローのようになった画素: {phong_loses}"
+                "{kept} / {n}（{share:.0} %）; kit のフォンのハイライトがあなたのグローに出たピクセル: {gouraud_shows}、あなたのフォンが kit のグローのようになったピクセル: {phong_loses}"
             ),
             format!(
                 "{kept} / {n} ({share:.0} %); your Gouraud shows the kit's Phong highlight: {gouraud_shows}, your Phong looks like the kit's Gouraud: {phong_loses}"
@@ -632,7 +632,7 @@ pub(super) fn highlight(spec: &Spec, imp: &Impl) -> Result<(), Failure> {
         ),
     )
     .at(Text::new(
-        format!("ハイライト: {w}×{w} の画像の画素 ({x}, {y}) のまわりの {n} 画素"),
+        format!("ハイライト: {w}×{w} の画像のピクセル ({x}, {y}) のまわりの {n} ピクセル"),
         format!("the highlight: {n} pixels around pixel ({x}, {y}) of the {w}×{w} image"),
     ))
     .cause(cause)
