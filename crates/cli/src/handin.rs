@@ -3,8 +3,10 @@
 //!
 //! The zip holds `exercises/student.toml`, `exercises/src/a1.rs` … `s.rs` and, when there is
 //! one, the report grading would read (`report/report.md` or `report.tex`: of both, the one
-//! changed last, `report.md` at a tie, as `cg grade` chooses), nothing else: no build output,
-//! no other report for grading to set aside. Each assignment's file is read as grading reads it
+//! changed last, `report.md` at a tie, as `cg grade` chooses) with its PDF (`report/report.pdf`,
+//! what the teacher reads; grading sets a PDF beside a text report aside), nothing else: no
+//! build output, no other report for grading to set aside. A PDF older than the report is said
+//! (made before the last change), one over [`MAX_PDF_BYTES`] left out with what to do. Each assignment's file is read as grading reads it
 //! (one saved as Shift_JIS or UTF-16 converted, with a note to save it as UTF-8, which `cg
 //! check` needs) and screened as grading screens it: a file grading refuses (one that reads
 //! outside itself: `include_str!`, `#[path]`, …: the whole submission would score 0), a module
@@ -70,6 +72,47 @@ fn report(root: &Path) -> (Option<Taken>, Option<String>) {
     }
 }
 
+/// The largest report PDF put in the zip (a report's PDF is some hundreds of KiB; scanned pages
+/// or full-size screenshots make tens of MiB, more than a Moodle course usually takes).
+pub const MAX_PDF_BYTES: u64 = 20 << 20;
+
+/// The report's PDF, `report/report.pdf`, when there is one: taken, or left out (too big) with
+/// why; and a note when it is older than `text`, the report taken (the PDF was made before the
+/// report's last change).
+fn report_pdf(root: &Path, text: Option<&Taken>) -> (Option<Taken>, Option<Text>) {
+    let pdf = Taken { name: "report/report.pdf".to_owned(), path: root.join("report/report.pdf") };
+    let Some(meta) = std::fs::metadata(&pdf.path).ok().filter(std::fs::Metadata::is_file) else {
+        return (None, None);
+    };
+    if meta.len() > MAX_PDF_BYTES {
+        let (mib, max) = (meta.len() as f64 / f64::from(1 << 20), MAX_PDF_BYTES >> 20);
+        let mib = cg_core::notation::fixed64(mib, 1);
+        return (
+            None,
+            Some(Text::new(
+                format!(
+                    "report/report.pdf は {mib} MiB あり、zip には入れていません（上限 {max} MiB）。画像を小さくして PDF を作り直すか、授業の指示どおりに別に提出してください"
+                ),
+                format!(
+                    "report/report.pdf is {mib} MiB and is left out of the zip (at most {max} MiB): make the PDF again with smaller images, or hand it in as the course says"
+                ),
+            )),
+        );
+    }
+    let stale = text.filter(|t| modified(&t.path) > modified(&pdf.path)).map(|t| {
+        let name = &t.name;
+        Text::new(
+            format!(
+                "report/report.pdf は {name} より古いファイルです。{name} を直した後なら、PDF を作り直してからもう一度 handin してください"
+            ),
+            format!(
+                "report/report.pdf is older than {name}: if you changed {name} after making the PDF, make it again and hand in again"
+            ),
+        )
+    });
+    (Some(pdf), stale)
+}
+
 /// Writes the zip for the student of `exercises/student.toml` under the kit's `root` (or at
 /// `args.out`) and says what it holds and what to do with it.
 ///
@@ -128,7 +171,10 @@ pub fn run(args: &Args, lang: Lang) -> Result<Ending, String> {
     }
     let checked = if args.no_check { None } else { Some(checks(&record, &converted, lang)?) };
     let (report, other) = report(&root);
+    let (pdf, pdf_note) = report_pdf(&root, report.as_ref());
     taken.extend(report);
+    taken.extend(pdf);
+    notes.extend(pdf_note);
     let mut entries = Vec::new();
     for f in &taken {
         let bytes = std::fs::read(&f.path).map_err(|e| {
@@ -301,7 +347,10 @@ fn said(
         format!("{} を書きました（{size} B）:\n{list}", out.display()),
         format!("wrote {} ({size} B):\n{list}", out.display()),
     );
-    let report = match (entries.iter().any(|e| e.name.starts_with("report/")), other) {
+    let text_report =
+        |e: &&zipfile::Entry| e.name.starts_with("report/") && !e.name.ends_with(".pdf");
+    let pdf = entries.iter().any(|e| e.name == "report/report.pdf");
+    let report = match (entries.iter().find(text_report).is_some(), other) {
         (true, Some(other)) => Text::new(
             format!(
                 "{other} は入れていません（採点が読むのは変更の新しいほうのレポートだけです）\n"
@@ -309,6 +358,10 @@ fn said(
             format!("{other} is left out (grading reads the report changed last only)\n"),
         ),
         (true, None) => Text::default(),
+        (false, _) if pdf => t(
+            "report/report.md も report.tex もないので、レポートは PDF だけです。採点は PDF の数値を確かめられないので、PDF の元のファイル（report.md か report.tex）も report/ に置いてもう一度 handin してください\n",
+            "neither report/report.md nor report.tex is there, only the PDF: grading cannot check the numbers of a PDF, so put the file you made it from (report.md or report.tex) in report/ too and hand in again\n",
+        ),
         (false, _) => t(
             "レポート（report/report.md か report.tex）がないので入れていません。レポートは授業の指示どおりに提出してください\n",
             "no report (report/report.md or report.tex) to put in: hand in the report as the course says\n",

@@ -27,7 +27,14 @@ fn student(dir: &Path) {
     let earlier = SystemTime::now() - Duration::from_secs(3600);
     let md = std::fs::File::options().write(true).open(dir.join("report/report.md")).unwrap();
     md.set_modified(earlier).unwrap();
+    // The PDF made from report.md before report.tex was changed: older than the report taken.
+    std::fs::write(dir.join("report/report.pdf"), PDF).unwrap();
+    let pdf = std::fs::File::options().write(true).open(dir.join("report/report.pdf")).unwrap();
+    pdf.set_modified(earlier).unwrap();
 }
+
+/// A report's PDF: bytes that are no text.
+const PDF: &[u8] = b"%PDF-1.7\n%\xe2\xe3\xcf\xd3\n1 0 obj\n<< >>\nendobj\n\x00\xff%%EOF\n";
 
 fn names(zip: &Path) -> Vec<String> {
     let mut archive = zip::ZipArchive::new(std::fs::File::open(zip).unwrap()).unwrap();
@@ -49,7 +56,9 @@ fn the_zip_holds_what_grading_reads_and_reads_back() {
     let mut expected: Vec<String> = vec!["exercises/student.toml".to_owned()];
     expected.extend(MODULES.map(|m| format!("exercises/src/{m}.rs")));
     expected.push("report/report.tex".to_owned());
+    expected.push("report/report.pdf".to_owned());
     assert_eq!(names(&zip), expected);
+    assert!(stdout.contains("report/report.pdf is older than report/report.tex"), "{stdout}");
     // Every file's bytes come back as they are.
     let mut archive = zip::ZipArchive::new(std::fs::File::open(&zip).unwrap()).unwrap();
     for name in &expected {
@@ -63,6 +72,11 @@ fn the_zip_holds_what_grading_reads_and_reads_back() {
         let files = cg_grade::submission::read(&zip).expect("read as a submission");
         assert_eq!(files.modules.len(), 5);
         assert_eq!(files.student_toml.as_deref(), Some(&b"student = \"20261234\"\n"[..]));
+        // The report read is the text one; the PDF beside it is set aside without a note.
+        let entry = cg_grade::moodle::input::Entry::single(&zip);
+        let (found, notes) = cg_grade::inside::report(&entry, cg_grade::inside::MAX_REPORT_BYTES);
+        assert_eq!(found.map(|f| f.path), Some("report/report.tex".to_owned()), "{notes:?}");
+        assert!(notes.is_empty(), "{notes:?}");
     }
 
     // In Japanese, to a file of one's choosing; report.md alone is taken.
@@ -72,7 +86,49 @@ fn the_zip_holds_what_grading_reads_and_reads_back() {
     assert!(out.status.success(), "{stdout}");
     assert!(stdout.starts_with("up.zip を書きました（"), "{stdout}");
     assert!(stdout.contains("次に: この zip を Moodle に上げます"), "{stdout}");
-    assert_eq!(names(&dir.join("up.zip")).last().map(String::as_str), Some("report/report.md"));
+    // Made at the same time as report.md: not older.
+    assert!(!stdout.contains("より古いファイル"), "{stdout}");
+    let names = names(&dir.join("up.zip"));
+    assert_eq!(names[names.len() - 2..], ["report/report.md", "report/report.pdf"]);
+}
+
+/// A PDF alone is said to be unchecked by grading; a PDF too big for the zip is left out, with
+/// what to do; a PDF newer than the report is taken without a note.
+#[test]
+fn the_reports_pdf_goes_in_when_it_can() {
+    let dir = scratch("handin", "pdf");
+    student(&dir);
+    std::fs::remove_file(dir.join("report/report.md")).unwrap();
+    std::fs::remove_file(dir.join("report/report.tex")).unwrap();
+    let out = cg(&dir, &["handin", "--no-check"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}");
+    assert!(stdout.contains("only the PDF: grading cannot check the numbers of a PDF"), "{stdout}");
+    assert_eq!(
+        names(&dir.join("handin/20261234.zip")).last().map(String::as_str),
+        Some("report/report.pdf")
+    );
+
+    // Made after the report: no note. Too big: left out, the zip still written.
+    std::fs::write(dir.join("report/report.md"), "# Report\n").unwrap();
+    let pdf = std::fs::File::options().write(true).open(dir.join("report/report.pdf")).unwrap();
+    pdf.set_modified(SystemTime::now() + Duration::from_secs(60)).unwrap();
+    let out = cg(&dir, &["handin", "--no-check"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success() && !stdout.contains("older"), "{stdout}");
+    pdf.set_len((20 << 20) + 1).unwrap();
+    let out = cg(&dir, &["--lang", "ja", "handin", "--no-check"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}");
+    assert!(
+        stdout
+            .contains("report/report.pdf は 20.0 MiB あり、zip には入れていません（上限 20 MiB）"),
+        "{stdout}"
+    );
+    assert_eq!(
+        names(&dir.join("handin/20261234.zip")).last().map(String::as_str),
+        Some("report/report.md")
+    );
 }
 
 #[test]
