@@ -121,65 +121,65 @@ pub fn camera_product() -> MatrixProduct {
 // ---------------------------------------------------------------------------------------------
 
 /// The unit of time (s); periods are 1–4 units.
-pub(crate) const UNITS_S: [f32; 4] = [1.5, 2.0, 2.5, 3.0];
+const UNITS_S: [f32; 4] = [1.5, 2.0, 2.5, 3.0];
 /// The four corner slots of fixed-position motions (x, z).
-pub(crate) const CORNERS: [[f32; 2]; 4] = [[-3.5, -3.5], [3.5, -3.5], [-3.5, 3.5], [3.5, 3.5]];
+const CORNERS: [[f32; 2]; 4] = [[-3.5, -3.5], [3.5, -3.5], [-3.5, 3.5], [3.5, 3.5]];
 /// Object colours by number: orange, blue, red, yellow.
-pub(crate) const COLORS: [[f32; 3]; 4] =
+const COLORS: [[f32; 3]; 4] =
     [[1.0, 0.6, 0.2], [0.3, 0.5, 1.0], [0.9, 0.3, 0.4], [0.95, 0.85, 0.3]];
 
-pub(crate) const SPIN_SHAPES: [Shape; 4] = [
+const SPIN_SHAPES: [Shape; 4] = [
     Shape::Box { size: [1.2, 0.4, 0.6] },
     Shape::Box { size: [1.0, 0.6, 0.3] },
     Shape::Pyramid { sides: 4, radius: 0.6, height: 1.0 },
     Shape::Pyramid { sides: 3, radius: 0.6, height: 1.0 },
 ];
-pub(crate) const SWING_IN_PLACE_SHAPES: [Shape; 2] =
+const SWING_IN_PLACE_SHAPES: [Shape; 2] =
     [Shape::Box { size: [1.4, 0.3, 0.5] }, Shape::Box { size: [1.2, 0.5, 0.3] }];
-pub(crate) const BOB_SHAPES: [Shape; 3] = [
+const BOB_SHAPES: [Shape; 3] = [
     Shape::Box { size: [0.6, 0.6, 0.6] },
     Shape::Sphere { radius: 0.4 },
     Shape::Octahedron { radius: 0.45 },
 ];
-pub(crate) const HOP_SHAPES: [Shape; 3] = [
+const HOP_SHAPES: [Shape; 3] = [
     Shape::Sphere { radius: 0.4 },
     Shape::Box { size: [0.6, 0.6, 0.6] },
     Shape::Octahedron { radius: 0.45 },
 ];
-pub(crate) const ORBIT_SHAPES: [Shape; 4] = [
+const ORBIT_SHAPES: [Shape; 4] = [
     Shape::Sphere { radius: 0.4 },
     Shape::Box { size: [0.6, 0.6, 0.6] },
     Shape::Octahedron { radius: 0.45 },
     Shape::Pyramid { sides: 4, radius: 0.5, height: 0.8 },
 ];
-pub(crate) const PARENT_SHAPES: [Shape; 3] = [
+const PARENT_SHAPES: [Shape; 3] = [
     Shape::Sphere { radius: 0.5 },
     Shape::Box { size: [0.7, 0.7, 0.7] },
     Shape::Octahedron { radius: 0.6 },
 ];
-pub(crate) const CHILD_SHAPES: [Shape; 3] = [
+const CHILD_SHAPES: [Shape; 3] = [
     Shape::Sphere { radius: 0.25 },
     Shape::Octahedron { radius: 0.3 },
     Shape::Box { size: [0.4, 0.4, 0.4] },
 ];
-pub(crate) const AXES: [WorldAxis; 3] = [WorldAxis::X, WorldAxis::Y, WorldAxis::Z];
-pub(crate) const HORIZONTAL: [WorldAxis; 2] = [WorldAxis::X, WorldAxis::Z];
-pub(crate) const TURNS: [Turn; 2] = [Turn::Ccw, Turn::Cw];
-pub(crate) const AMPLITUDES_DEG: [f32; 3] = [30.0, 45.0, 60.0];
+const AXES: [WorldAxis; 3] = [WorldAxis::X, WorldAxis::Y, WorldAxis::Z];
+const HORIZONTAL: [WorldAxis; 2] = [WorldAxis::X, WorldAxis::Z];
+const TURNS: [Turn; 2] = [Turn::Ccw, Turn::Cw];
+const AMPLITUDES_DEG: [f32; 3] = [30.0, 45.0, 60.0];
 const ARMS: [f32; 2] = [1.0, 1.5];
 const SPANS: [f32; 3] = [2.0, 2.5, 3.0];
-pub(crate) const HEIGHTS: [f32; 3] = [1.0, 1.5, 2.0];
+const HEIGHTS: [f32; 3] = [1.0, 1.5, 2.0];
 const ORBIT_RADII: [f32; 3] = [1.5, 2.0, 2.5];
 const PARENT_ORBIT_RADII: [f32; 2] = [2.0, 2.5];
 const SATELLITE_RADII: [f32; 3] = [1.0, 1.2, 1.4];
 /// The lecture's example: two orbits about the same centre with radii 1.5 and 3.
 const LECTURE_RADII: (f32, f32) = (1.5, 3.0);
 /// Height of orbit centres and spinning objects.
-pub(crate) const LIFT: f32 = 1.0;
+const LIFT: f32 = 1.0;
 
 /// The kinds of motion an independent object can have.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Kind {
+enum Kind {
     Spin,
     Swing,
     Hop,
@@ -196,12 +196,34 @@ pub fn variant(rng: &mut VariantRng) -> Spec {
     }
 }
 
-/// Table version 1's variant. Draws, in this order (frozen): the time unit; the number of
-/// independent objects (1 or 2); the period multipliers (a shuffle of 1–4); the independent motions (a
-/// shuffle of spin, swing, hop, orbit); the parent's motion (orbit or hop); where the parent and
-/// child stand in the list; the corner slots (a shuffle); then each object's parameters in list
-/// order.
+/// Table version 1's variant (frozen): [`plan`], then each object's parameters in list order
+/// ([`objects`]) from version 1's tables.
 fn variant_v1(rng: &mut VariantRng) -> Spec {
+    let plan = plan(rng);
+    let both_orbit = plan.parent_kind == Kind::Orbit && plan.independent_orbit;
+    objects(rng, &plan, &V1 { both_orbit })
+}
+
+/// What both table versions draw first, in this order (frozen): the time unit; the number of
+/// independent objects (1 or 2); the period multipliers (a shuffle of 1–4); the independent
+/// motions (a shuffle of spin, swing, hop, orbit); the parent's motion (orbit or hop); where the
+/// parent and child stand in the list; the corner slots (a shuffle).
+pub(crate) struct Plan {
+    unit_s: f32,
+    multipliers: [u32; 4],
+    /// The list: the independent kinds with the (parent, child) pair at `pair_at` (the child is
+    /// `None`).
+    roles: Vec<Option<Kind>>,
+    pair_at: usize,
+    corners: [[f32; 2]; 4],
+    /// The parent's motion.
+    parent_kind: Kind,
+    /// Whether an independent object orbits (the centre is shared with it).
+    pub(crate) independent_orbit: bool,
+}
+
+/// Draws the [`Plan`].
+pub(crate) fn plan(rng: &mut VariantRng) -> Plan {
     let unit_s = *rng.pick(&UNITS_S);
     let independent = rng.range(1, 2) as usize;
     let mut multipliers = [1u32, 2, 3, 4];
@@ -212,29 +234,77 @@ fn variant_v1(rng: &mut VariantRng) -> Spec {
     let pair_at = rng.range(0, independent as i64) as usize;
     let mut corners = CORNERS;
     rng.shuffle(&mut corners);
-
-    // The list: the independent kinds with the (parent, child) pair inserted at `pair_at`.
     let mut roles: Vec<Option<Kind>> = kinds[..independent].iter().map(|&k| Some(k)).collect();
     roles.insert(pair_at, Some(parent_kind));
     roles.insert(pair_at + 1, None); // the child
-    let both_orbit = parent_kind == Kind::Orbit && kinds[..independent].contains(&Kind::Orbit);
+    let independent_orbit = kinds[..independent].contains(&Kind::Orbit);
+    Plan { unit_s, multipliers, roles, pair_at, corners, parent_kind, independent_orbit }
+}
 
+/// Where a table version puts things and how far they move: the draws that differ between
+/// versions. Each method draws from `rng` exactly what its version's table says (or nothing).
+pub(crate) trait Layout {
+    /// The child's distance from its parent.
+    fn satellite_radius(&self, rng: &mut VariantRng) -> f32;
+    /// A swinging bob's arm.
+    fn arm(&self, rng: &mut VariantRng) -> f32;
+    /// A hop's span.
+    fn hop_span(&self, rng: &mut VariantRng, is_parent: bool) -> f32;
+    /// Whether the parent's hop goes through the centre (else it stands at a corner).
+    fn parent_hops_at_centre(&self) -> bool;
+    /// An orbit's radius.
+    fn orbit_radius(&self, rng: &mut VariantRng, is_parent: bool) -> f32;
+}
+
+/// Version 1's layout: everything but the orbits at the corners, the lecture's two radii when
+/// both the parent and an independent object orbit.
+struct V1 {
+    both_orbit: bool,
+}
+
+impl Layout for V1 {
+    fn satellite_radius(&self, rng: &mut VariantRng) -> f32 {
+        *rng.pick(&SATELLITE_RADII)
+    }
+    fn arm(&self, rng: &mut VariantRng) -> f32 {
+        *rng.pick(&ARMS)
+    }
+    fn hop_span(&self, rng: &mut VariantRng, _is_parent: bool) -> f32 {
+        *rng.pick(&SPANS)
+    }
+    fn parent_hops_at_centre(&self) -> bool {
+        false
+    }
+    fn orbit_radius(&self, rng: &mut VariantRng, is_parent: bool) -> f32 {
+        match (self.both_orbit, is_parent) {
+            (true, false) => LECTURE_RADII.0,
+            (true, true) => LECTURE_RADII.1,
+            (false, false) => *rng.pick(&ORBIT_RADII),
+            (false, true) => *rng.pick(&PARENT_ORBIT_RADII),
+        }
+    }
+}
+
+/// Each object's parameters in list order, the tables that differ taken from `layout`. Frozen
+/// for every published version: the order of the draws below never changes.
+pub(crate) fn objects(rng: &mut VariantRng, plan: &Plan, layout: &dyn Layout) -> Spec {
     let mut next_corner = 0;
     let mut corner = |y: f32| {
-        let [x, z] = corners[next_corner % corners.len()];
+        let [x, z] = plan.corners[next_corner % plan.corners.len()];
         next_corner += 1;
         [x, y, z]
     };
-    let mut objects: Vec<Object> = Vec::with_capacity(roles.len());
-    for (i, role) in roles.iter().enumerate() {
-        let period_s = unit_s * multipliers[i] as f32;
-        let is_parent = i == pair_at;
+    let mut objects: Vec<Object> = Vec::with_capacity(plan.roles.len());
+    for (i, role) in plan.roles.iter().enumerate() {
+        let period_s = plan.unit_s * plan.multipliers[i] as f32;
+        let is_parent = i == plan.pair_at;
         let (shape, motion) = match role {
             None => {
                 let shape = *rng.pick(&CHILD_SHAPES);
-                let radius = *rng.pick(&SATELLITE_RADII);
+                let radius = layout.satellite_radius(rng);
                 let turn = *rng.pick(&TURNS);
-                (shape, Motion::Satellite { parent_index: pair_at, radius, turn, period_s })
+                let parent_index = plan.pair_at;
+                (shape, Motion::Satellite { parent_index, radius, turn, period_s })
             }
             Some(Kind::Spin) => {
                 let shape = *rng.pick(&SPIN_SHAPES);
@@ -248,7 +318,7 @@ fn variant_v1(rng: &mut VariantRng) -> Spec {
                 let (shape, arm) = if axis == WorldAxis::Y {
                     (*rng.pick(&SWING_IN_PLACE_SHAPES), 0.0)
                 } else {
-                    (*rng.pick(&BOB_SHAPES), *rng.pick(&ARMS))
+                    (*rng.pick(&BOB_SHAPES), layout.arm(rng))
                 };
                 let pivot = corner(LIFT + arm);
                 (shape, Motion::Swing { pivot, axis, amplitude_deg, arm, period_s })
@@ -256,32 +326,27 @@ fn variant_v1(rng: &mut VariantRng) -> Spec {
             Some(Kind::Hop) => {
                 let shape = *rng.pick(if is_parent { &PARENT_SHAPES[..] } else { &HOP_SHAPES[..] });
                 let along = *rng.pick(&HORIZONTAL);
-                let span = *rng.pick(&SPANS);
+                let span = layout.hop_span(rng, is_parent);
                 let height = *rng.pick(&HEIGHTS);
-                let center = corner(shape.half_height());
+                let center = if is_parent && layout.parent_hops_at_centre() {
+                    [0.0, shape.half_height(), 0.0]
+                } else {
+                    corner(shape.half_height())
+                };
                 (shape, Motion::Hop { center, along, span, height, period_s })
             }
             Some(Kind::Orbit) => {
                 let shape =
                     *rng.pick(if is_parent { &PARENT_SHAPES[..] } else { &ORBIT_SHAPES[..] });
-                let radius = match (both_orbit, is_parent) {
-                    (true, false) => LECTURE_RADII.0,
-                    (true, true) => LECTURE_RADII.1,
-                    (false, false) => *rng.pick(&ORBIT_RADII),
-                    (false, true) => *rng.pick(&PARENT_ORBIT_RADII),
-                };
+                let radius = layout.orbit_radius(rng, is_parent);
                 let turn = *rng.pick(&TURNS);
                 (shape, Motion::Orbit { center: [0.0, LIFT, 0.0], radius, turn, period_s })
             }
         };
-        objects.push(new_object(
-            format!("object {}", i + 1),
-            shape,
-            COLORS[i % COLORS.len()],
-            motion,
-        ));
+        let name = format!("object {}", i + 1);
+        objects.push(new_object(name, shape, COLORS[i % COLORS.len()], motion));
     }
-    Spec { objects, unit_s }
+    Spec { objects, unit_s: plan.unit_s }
 }
 
 /// The warm-up's three boxes (演習課題), the same for everybody: box 1 spins (回転運動), box 2

@@ -27,12 +27,8 @@
 
 use cg_harness::VariantRng;
 
-use crate::spec::{
-    AMPLITUDES_DEG, AXES, BOB_SHAPES, CHILD_SHAPES, COLORS, CORNERS, HEIGHTS, HOP_SHAPES,
-    HORIZONTAL, Kind, LIFT, ORBIT_SHAPES, PARENT_SHAPES, SPIN_SHAPES, SWING_IN_PLACE_SHAPES, TURNS,
-    UNITS_S,
-};
-use crate::{Motion, Object, ShapeExt, Spec, new_object};
+use crate::Spec;
+use crate::spec::{Layout, objects, plan};
 
 /// A swinging bob's arm (version 1: 1.0 and 1.5).
 const ARMS: [f32; 2] = [0.8, 1.0];
@@ -50,98 +46,43 @@ const INNER_PARENT_ORBIT: f32 = 0.7;
 const INNER_HOP_SPAN: f32 = 1.2;
 const INNER_SATELLITE: f32 = 1.0;
 
-/// The student's variant in table version 2. Draws in version 1's order: the time unit; the
-/// number of independent objects (1 or 2); the period multipliers; the independent motions; the
-/// parent's motion (orbit or hop); where the pair stands in the list; the corner slots; then
-/// each object's parameters in list order.
+/// The student's variant in table version 2: version 1's draws in version 1's order
+/// ([`plan`], then [`objects`]), from this version's layout.
 pub(crate) fn variant(rng: &mut VariantRng) -> Spec {
-    let unit_s = *rng.pick(&UNITS_S);
-    let independent = rng.range(1, 2) as usize;
-    let mut multipliers = [1u32, 2, 3, 4];
-    rng.shuffle(&mut multipliers);
-    let mut kinds = [Kind::Spin, Kind::Swing, Kind::Hop, Kind::Orbit];
-    rng.shuffle(&mut kinds);
-    let parent_kind = *rng.pick(&[Kind::Orbit, Kind::Hop]);
-    let pair_at = rng.range(0, independent as i64) as usize;
-    let mut corners = CORNERS;
-    rng.shuffle(&mut corners);
+    let plan = plan(rng);
+    objects(rng, &plan, &V2 { ring: plan.independent_orbit })
+}
 
-    let mut roles: Vec<Option<Kind>> = kinds[..independent].iter().map(|&k| Some(k)).collect();
-    roles.insert(pair_at, Some(parent_kind));
-    roles.insert(pair_at + 1, None); // the child
-    // An independent orbit shares the centre with the pair: it is the outer ring.
-    let ring = kinds[..independent].contains(&Kind::Orbit);
+/// Version 2's layout; `ring`: an independent orbit shares the centre with the pair, as the
+/// outer ring.
+struct V2 {
+    ring: bool,
+}
 
-    let mut next_corner = 0;
-    let mut corner = |y: f32| {
-        let [x, z] = corners[next_corner % corners.len()];
-        next_corner += 1;
-        [x, y, z]
-    };
-    let mut objects: Vec<Object> = Vec::with_capacity(roles.len());
-    for (i, role) in roles.iter().enumerate() {
-        let period_s = unit_s * multipliers[i] as f32;
-        let is_parent = i == pair_at;
-        let (shape, motion) = match role {
-            None => {
-                let shape = *rng.pick(&CHILD_SHAPES);
-                let radius = if ring { INNER_SATELLITE } else { *rng.pick(&SATELLITE_RADII) };
-                let turn = *rng.pick(&TURNS);
-                (shape, Motion::Satellite { parent_index: pair_at, radius, turn, period_s })
-            }
-            Some(Kind::Spin) => {
-                let shape = *rng.pick(&SPIN_SHAPES);
-                let axis = *rng.pick(&AXES);
-                let turn = *rng.pick(&TURNS);
-                (shape, Motion::Spin { position: corner(LIFT), axis, turn, period_s })
-            }
-            Some(Kind::Swing) => {
-                let axis = *rng.pick(&AXES);
-                let amplitude_deg = *rng.pick(&AMPLITUDES_DEG);
-                let (shape, arm) = if axis == crate::WorldAxis::Y {
-                    (*rng.pick(&SWING_IN_PLACE_SHAPES), 0.0)
-                } else {
-                    (*rng.pick(&BOB_SHAPES), *rng.pick(&ARMS))
-                };
-                let pivot = corner(LIFT + arm);
-                (shape, Motion::Swing { pivot, axis, amplitude_deg, arm, period_s })
-            }
-            Some(Kind::Hop) => {
-                let shape = *rng.pick(if is_parent { &PARENT_SHAPES[..] } else { &HOP_SHAPES[..] });
-                let along = *rng.pick(&HORIZONTAL);
-                let span = match (is_parent, ring) {
-                    (false, _) => *rng.pick(&CORNER_SPANS),
-                    (true, false) => *rng.pick(&CENTRE_SPANS),
-                    (true, true) => INNER_HOP_SPAN,
-                };
-                let height = *rng.pick(&HEIGHTS);
-                let center = if is_parent {
-                    [0.0, shape.half_height(), 0.0]
-                } else {
-                    corner(shape.half_height())
-                };
-                (shape, Motion::Hop { center, along, span, height, period_s })
-            }
-            Some(Kind::Orbit) => {
-                let shape =
-                    *rng.pick(if is_parent { &PARENT_SHAPES[..] } else { &ORBIT_SHAPES[..] });
-                let radius = match (is_parent, ring) {
-                    (false, _) => RING,
-                    (true, false) => *rng.pick(&PARENT_ORBIT_RADII),
-                    (true, true) => INNER_PARENT_ORBIT,
-                };
-                let turn = *rng.pick(&TURNS);
-                (shape, Motion::Orbit { center: [0.0, LIFT, 0.0], radius, turn, period_s })
-            }
-        };
-        objects.push(new_object(
-            format!("object {}", i + 1),
-            shape,
-            COLORS[i % COLORS.len()],
-            motion,
-        ));
+impl Layout for V2 {
+    fn satellite_radius(&self, rng: &mut VariantRng) -> f32 {
+        if self.ring { INNER_SATELLITE } else { *rng.pick(&SATELLITE_RADII) }
     }
-    Spec { objects, unit_s }
+    fn arm(&self, rng: &mut VariantRng) -> f32 {
+        *rng.pick(&ARMS)
+    }
+    fn hop_span(&self, rng: &mut VariantRng, is_parent: bool) -> f32 {
+        match (is_parent, self.ring) {
+            (false, _) => *rng.pick(&CORNER_SPANS),
+            (true, false) => *rng.pick(&CENTRE_SPANS),
+            (true, true) => INNER_HOP_SPAN,
+        }
+    }
+    fn parent_hops_at_centre(&self) -> bool {
+        true
+    }
+    fn orbit_radius(&self, rng: &mut VariantRng, is_parent: bool) -> f32 {
+        match (is_parent, self.ring) {
+            (false, _) => RING,
+            (true, false) => *rng.pick(&PARENT_ORBIT_RADII),
+            (true, true) => INNER_PARENT_ORBIT,
+        }
+    }
 }
 
 #[cfg(test)]

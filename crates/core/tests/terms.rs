@@ -3,7 +3,7 @@
 //! the string literals of every Rust file of the kit and fails on the variants that were removed,
 //! naming the word to use instead. Comments are not read.
 
-use std::path::{Path, PathBuf};
+mod sources;
 
 /// The removed variants and the word to use instead. A variant is looked for in the literal
 /// between its quotes (`"確認"` is the whole literal `確認`); where the word to use contains the
@@ -33,21 +33,6 @@ const FORBIDDEN: [(&str, &str); 23] = [
     ("camera transform", "view transform"),
     ("Gourad", "Gouraud"),
 ];
-
-fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    let Ok(entries) = std::fs::read_dir(dir) else { return };
-    for entry in entries.flatten() {
-        let path = entry.path();
-        let name = entry.file_name().to_string_lossy().into_owned();
-        if path.is_dir() {
-            if name != "target" && !name.starts_with('.') {
-                rust_files(&path, out);
-            }
-        } else if name.ends_with(".rs") {
-            out.push(path);
-        }
-    }
-}
 
 /// The string literals of `source` with the line each starts on, as written (quotes and escapes
 /// kept), read with Rust's own lexer (`proc-macro2`): comments, doc comments (`#[doc = …]` to the
@@ -123,23 +108,11 @@ fn findings_but(source: &str, kept: &[&str]) -> Vec<String> {
 
 #[test]
 fn one_word_for_each_term() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
-    let mut files = Vec::new();
-    for dir in ["crates", "exercises", "solutions"] {
-        rust_files(&root.join(dir), &mut files);
-    }
-    assert!(files.len() > 100, "the kit's sources were not found under {}", root.display());
-    let this = Path::new(file!()).file_name().unwrap();
-    let mut found = Vec::new();
-    for file in files.iter().filter(|f| f.file_name() != Some(this)) {
-        let source = std::fs::read_to_string(file).unwrap();
-        let name = file.strip_prefix(&root).unwrap_or(file).to_string_lossy().replace('\\', "/");
+    let found = sources::scan(file!(), |name, source| {
         let kept: Vec<&str> =
             KEPT.iter().filter(|(f, ..)| *f == name).map(|(_, variant, _)| *variant).collect();
-        for f in findings_but(&source, &kept) {
-            found.push(format!("{name}:{f}"));
-        }
-    }
+        findings_but(source, &kept)
+    });
     assert!(
         found.is_empty(),
         "write each term one way (docs/conventions.md, \"Terms / 用語\"):\n{}",

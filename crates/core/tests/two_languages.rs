@@ -4,22 +4,7 @@
 //! `if lang == Lang::Ja { … }`, and a `match` that writes the same sentence twice, once per
 //! language (`Lang::Ja => format!(…)`).
 
-use std::path::{Path, PathBuf};
-
-fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    let Ok(entries) = std::fs::read_dir(dir) else { return };
-    for entry in entries.flatten() {
-        let path = entry.path();
-        let name = entry.file_name().to_string_lossy().into_owned();
-        if path.is_dir() {
-            if name != "target" && !name.starts_with('.') {
-                rust_files(&path, out);
-            }
-        } else if name.ends_with(".rs") {
-            out.push(path);
-        }
-    }
-}
+mod sources;
 
 /// The forbidden forms found in `source`, as `line: text`.
 fn findings(source: &str) -> Vec<String> {
@@ -46,20 +31,7 @@ fn findings(source: &str) -> Vec<String> {
 
 #[test]
 fn one_way_to_write_two_languages() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
-    let mut files = Vec::new();
-    for dir in ["crates", "exercises", "solutions"] {
-        rust_files(&root.join(dir), &mut files);
-    }
-    assert!(files.len() > 100, "the kit's sources were not found under {}", root.display());
-    let this = Path::new(file!()).file_name().unwrap();
-    let mut found = Vec::new();
-    for file in files.iter().filter(|f| f.file_name() != Some(this)) {
-        let source = std::fs::read_to_string(file).unwrap();
-        for f in findings(&source) {
-            found.push(format!("{}:{f}", file.strip_prefix(&root).unwrap_or(file).display()));
-        }
-    }
+    let found = sources::scan(file!(), |_, source| findings(source));
     assert!(
         found.is_empty(),
         "write both languages as one Text (docs/conventions.md, \"Two languages\"):\n{}",
