@@ -27,8 +27,8 @@ mod student_file;
 mod units;
 
 pub use student_file::{
-    StudentFile, StudentFileError, parse_student_file, read_student_file, record_change,
-    resolve_student, write_student_file,
+    COURSE_FILE, StudentFile, StudentFileError, course_table, parse_student_file,
+    read_student_file, record_change, resolve_student, write_student_file,
 };
 pub use units::{Derived, IDS, Impls, Variants, Which};
 

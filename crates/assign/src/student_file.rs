@@ -221,18 +221,73 @@ pub fn parse_student_file(bytes: &[u8], file: &str) -> Result<StudentFile, Stude
     };
     let student =
         digits.parse().map_err(|error| StudentFileError::Number { path: file.clone(), error })?;
-    let table = match doc.get("table") {
-        None => TableVersion::DEFAULT,
-        Some(v) => {
-            // As written (`9`, `"1"`, `99999999999999999999`).
-            let given = text.get(v.span()).unwrap_or_default().to_owned();
-            given
-                .trim_matches('"')
-                .parse()
-                .map_err(|_| StudentFileError::Table { path: file, given })?
+    let table = table_in(doc, &text, &file)?.unwrap_or(TableVersion::DEFAULT);
+    Ok(StudentFile { student, table })
+}
+
+/// The `table = N` of a record or a course file, when it has one.
+fn table_in(
+    doc: &toml::de::DeTable<'_>,
+    text: &str,
+    file: &str,
+) -> Result<Option<TableVersion>, StudentFileError> {
+    let Some(v) = doc.get("table") else { return Ok(None) };
+    // As written (`9`, `"1"`, `99999999999999999999`).
+    let given = text.get(v.span()).unwrap_or_default().to_owned();
+    let table = given.trim_matches('"').parse();
+    table.map(Some).map_err(|_| StudentFileError::Table { path: file.to_owned(), given })
+}
+
+/// The course's file beside the record, `exercises/course.toml`: the table version the class
+/// uses (`table = 2`), written by `cg handout --table 2` into the students' copy.
+pub const COURSE_FILE: &str = "course.toml";
+
+/// The course's table version from [`COURSE_FILE`] beside `record` (`exercises/student.toml`):
+/// what a student gets when they name none and have no record of their own. `None` without
+/// the file.
+///
+/// # Errors
+/// An unreadable or malformed course file, a key other than `table`, an unknown table: each
+/// with the file and the line.
+pub fn course_table(record: &Path) -> Result<Option<TableVersion>, StudentFileError> {
+    use cg_core::text::ReadError;
+    let path = record.with_file_name(COURSE_FILE);
+    let file = path.display().to_string();
+    let bytes = match cg_core::text::read_bounded(&path, MAX_STUDENT_FILE_BYTES) {
+        Ok(bytes) => bytes,
+        Err(_) if !path.exists() => return Ok(None),
+        Err(ReadError::TooLarge { .. }) => return Err(too_large(file)),
+        Err(e) => {
+            return Err(StudentFileError::Unreadable { path: file, why: e.text_without_option() });
         }
     };
-    Ok(StudentFile { student, table })
+    let unreadable = |why: Text| StudentFileError::Unreadable { path: file.clone(), why };
+    let (text, _) = cg_core::text::decode(&bytes, None)
+        .map_err(|e| unreadable(ReadError::from(e).text_without_option()))?;
+    let invalid = |reason: Text| StudentFileError::Invalid { path: file.clone(), reason };
+    let doc = toml::de::DeTable::parse(&text).map_err(|e| {
+        let said = cg_core::toml_syntax::at(&text, e.message(), e.span());
+        invalid(Text::new(
+            format!("TOML の書き方の誤りです（構文エラー）: {}", said.ja),
+            format!("TOML syntax error: {}", said.en),
+        ))
+    })?;
+    let doc = doc.get_ref();
+    if let Some((key, _)) = doc
+        .iter()
+        .filter(|(k, _)| k.get_ref().as_ref() != "table")
+        .min_by_key(|(k, _)| k.span().start)
+    {
+        let said = Text::new(
+            format!(
+                "`{}` というキーはありません（書けるのは table だけ）",
+                shown(key.get_ref(), Lang::Ja)
+            ),
+            format!("there is no key `{}` (the only key is table)", shown(key.get_ref(), Lang::En)),
+        );
+        return Err(invalid(cg_core::toml_syntax::located(&text, key.span().start, &said)));
+    }
+    table_in(doc, &text, &file)
 }
 
 /// The digits of a `student = 0123…` line without quotes, as written.
@@ -286,7 +341,8 @@ pub fn record_change(old: &StudentFile, new: &StudentFile) -> Option<Text> {
 }
 
 /// The student a command is about: `given` (a `--student` option) when there is one, with
-/// `table` or the default table (version 1); else the record in `file` (`exercises/student.toml`), with
+/// `table`, else the table of their own record in `file` (`exercises/student.toml`), else the
+/// course's ([`course_table`]), else version 1; without `given`, the record in `file`, with
 /// `table` replacing its table when given.
 ///
 /// # Errors
@@ -301,7 +357,18 @@ pub fn resolve_student(
         Some(n) => {
             let student: StudentNumber =
                 n.parse().map_err(|e: cg_harness::variant::StudentNumberError| e.message(lang))?;
-            Ok(StudentFile { student, table: table.unwrap_or(TableVersion::DEFAULT) })
+            // The student's own record keeps its table; else the course's; else version 1.
+            let recorded = || {
+                let record = read_student_file(file).ok()?;
+                (record.student == student).then_some(record.table)
+            };
+            let table = match table.or_else(recorded) {
+                Some(t) => t,
+                None => course_table(file)
+                    .map_err(|e| e.message(lang))?
+                    .unwrap_or(TableVersion::DEFAULT),
+            };
+            Ok(StudentFile { student, table })
         }
         None => {
             let mut record = read_student_file(file).map_err(|e| e.message(lang))?;
@@ -321,6 +388,40 @@ mod tests {
         let d = std::env::temp_dir().join(format!("cg-assign-{name}-{}", std::process::id()));
         std::fs::create_dir_all(&d).unwrap();
         d
+    }
+
+    /// The course's table (exercises/course.toml, from `cg handout --table 2`) is what a
+    /// student without a record of their own gets; their own record keeps its table; a
+    /// malformed course file is named with its line.
+    #[test]
+    fn the_courses_table_is_the_default_and_a_record_keeps_its_own() {
+        let d = dir("course");
+        let record = d.join("student.toml");
+        let resolve = |n: Option<&str>| resolve_student(n, None, &record, Lang::En);
+        // Neither file: version 1.
+        assert_eq!(resolve(Some("20261234")).unwrap().table, TableVersion::V1);
+        std::fs::write(d.join(COURSE_FILE), "# the course\ntable = 2\n").unwrap();
+        assert_eq!(course_table(&record), Ok(Some(TableVersion::V2)));
+        assert_eq!(resolve(Some("20261234")).unwrap().table, TableVersion::V2);
+        // A record of one's own keeps its table; another number's record does not lend its.
+        std::fs::write(&record, "student = \"20261234\"\ntable = 1\n").unwrap();
+        assert_eq!(resolve(Some("20261234")).unwrap().table, TableVersion::V1);
+        assert_eq!(resolve(None).unwrap().table, TableVersion::V1);
+        assert_eq!(resolve(Some("20269999")).unwrap().table, TableVersion::V2);
+        // `--table` wins over both.
+        let given = resolve_student(Some("20261234"), Some(TableVersion::V2), &record, Lang::En);
+        assert_eq!(given.unwrap().table, TableVersion::V2);
+        // Mistakes in the course file: named, with the line.
+        for (text, en) in [
+            ("table = 9\n", "there is no table 9 (use 1 or 2)"),
+            ("\ntables = 2\n", "line 2"),
+            ("table = \n", "TOML syntax error"),
+        ] {
+            std::fs::write(d.join(COURSE_FILE), text).unwrap();
+            let e = resolve(Some("20269999")).unwrap_err();
+            assert!(e.contains("course.toml") && e.contains(en), "{text:?}: {e}");
+        }
+        let _ = std::fs::remove_dir_all(&d);
     }
 
     #[test]

@@ -1,10 +1,11 @@
 //! `cg handout <DIR>`: the student's copy of the kit — everything but `solutions/`, with the
 //! stubs freshly generated, the manifests' solution-only lines dropped and the lock file without
-//! the solutions crate — which builds, runs and checks on its own.
+//! the solutions crate — which builds, runs and checks on its own. With `--table 2`, the copy's
+//! `exercises/course.toml` makes version 2 of the variant tables what its students get.
 
 use std::path::{Path, PathBuf};
 
-use cg_core::lang::{Lang, t};
+use cg_core::lang::{Lang, Text, t};
 use cg_grade::handout::write_handout;
 
 /// Options of `cg handout`.
@@ -12,6 +13,9 @@ use cg_grade::handout::write_handout;
 pub struct Args {
     /// The folder to write the student's copy into (must not exist, or be empty) / 出力先のフォルダ
     dir: PathBuf,
+    /// The variant table the class uses: what the copy's students get without naming one (default: 1) / 授業で使う課題表の版
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    table: Option<cg_harness::TableVersion>,
 }
 
 /// `cg handout <DIR>`.
@@ -67,6 +71,24 @@ pub fn run(args: &Args, lang: Lang) -> Result<(), String> {
         t("学生用のコピーを書きました:", "wrote the student's copy to").get(lang),
         t("ファイル", "files").get(lang)
     );
+    if let Some(table) = args.table {
+        let course = dir.join("exercises").join(cg_assign::COURSE_FILE);
+        let text = format!(
+            "# The variant table this class uses (cg handout --table {table}): what a student gets\n\
+             # when they record their number. 授業で使う課題表の版（学生番号を記録するときに使われます）。\n\
+             table = {table}\n"
+        );
+        cg_core::fs::write_atomic(&course, text.as_bytes())
+            .map_err(|e| Text::io_at(&course, &e).get(lang).to_owned())?;
+        println!(
+            "{}",
+            Text::new(
+                format!("課題表の版 {table} を、このコピーの学生の既定にしました（exercises/course.toml）"),
+                format!("table {table} is what this copy's students get (exercises/course.toml)"),
+            )
+            .get(lang)
+        );
+    }
     if let Some(note) = cg_grade::handout::untracked_note(&root) {
         eprintln!("{}", note.get(lang));
     }

@@ -318,3 +318,32 @@ fn the_handout_builds_and_checks_on_its_own_and_a_students_day_runs_in_it() {
     assert!(!text.contains("a4.t1"), "a4 derives: {text}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `cg handout --table 2`: the copy's students get table 2 when they record their number
+/// (exercises/course.toml), the same variants as `--table 2` gives in the kit; without it, 1.
+#[test]
+fn a_handout_for_table_2_gives_its_students_table_2() {
+    let dir = common::scratch("handout", "table_2");
+    let copy = dir.join("copy");
+    let out = common::cg(&dir, &["handout", "--table", "2", copy.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}{}", String::from_utf8_lossy(&out.stderr));
+    assert!(stdout.contains("table 2 is what this copy's students get"), "{stdout}");
+    let course = std::fs::read_to_string(copy.join("exercises/course.toml")).unwrap();
+    assert!(course.ends_with("\ntable = 2\n"), "{course}");
+    let save = ["assignment", "--student", "20261234", "--save", "--only", "a3", "--json"];
+    let out = common::cg(&copy, &save);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let record = std::fs::read_to_string(copy.join("exercises/student.toml")).unwrap();
+    assert!(record.contains("student = \"20261234\"\ntable = 2\n"), "{record}");
+    let kit = ["assignment", "--student", "20261234", "--table", "2", "--only", "a3", "--json"];
+    assert_eq!(out.stdout, common::cg(&root(), &kit).stdout);
+    // Without `--table`, no course file: the students get table 1.
+    let plain = dir.join("plain");
+    assert!(common::cg(&dir, &["handout", plain.to_str().unwrap()]).status.success());
+    assert!(!plain.join("exercises/course.toml").exists());
+    let out = common::cg(&plain, &["assignment", "--student", "20261234", "--only", "a3"]);
+    assert!(
+        String::from_utf8_lossy(&out.stdout).starts_with("Student number: 20261234  (table 1)")
+    );
+}
