@@ -173,13 +173,7 @@ pub fn parse_student_file(bytes: &[u8], file: &str) -> Result<StudentFile, Stude
         )));
     }
     // Read with each key's and value's place, so that every mistake names its line.
-    let doc = toml::de::DeTable::parse(&text).map_err(|e| {
-        let said = cg_core::toml_syntax::at(&text, e.message(), e.span());
-        invalid(Text::new(
-            format!("TOML の書き方の誤りです（構文エラー）: {}", said.ja),
-            format!("TOML syntax error: {}", said.en),
-        ))
-    })?;
+    let doc = toml::de::DeTable::parse(&text).map_err(|e| invalid(syntax_error(&text, &e)))?;
     let at =
         |offset: usize, said: Text| invalid(cg_core::toml_syntax::located(&text, offset, &said));
     let doc = doc.get_ref();
@@ -225,6 +219,15 @@ pub fn parse_student_file(bytes: &[u8], file: &str) -> Result<StudentFile, Stude
     Ok(StudentFile { student, table })
 }
 
+/// A TOML syntax error of a record or a course file, with its line.
+fn syntax_error(text: &str, e: &toml::de::Error) -> Text {
+    let said = cg_core::toml_syntax::at(text, e.message(), e.span());
+    Text::new(
+        format!("TOML の書き方の誤りです（構文エラー）: {}", said.ja),
+        format!("TOML syntax error: {}", said.en),
+    )
+}
+
 /// The `table = N` of a record or a course file, when it has one.
 fn table_in(
     doc: &toml::de::DeTable<'_>,
@@ -265,13 +268,7 @@ pub fn course_table(record: &Path) -> Result<Option<TableVersion>, StudentFileEr
     let (text, _) = cg_core::text::decode(&bytes, None)
         .map_err(|e| unreadable(ReadError::from(e).text_without_option()))?;
     let invalid = |reason: Text| StudentFileError::Invalid { path: file.clone(), reason };
-    let doc = toml::de::DeTable::parse(&text).map_err(|e| {
-        let said = cg_core::toml_syntax::at(&text, e.message(), e.span());
-        invalid(Text::new(
-            format!("TOML の書き方の誤りです（構文エラー）: {}", said.ja),
-            format!("TOML syntax error: {}", said.en),
-        ))
-    })?;
+    let doc = toml::de::DeTable::parse(&text).map_err(|e| invalid(syntax_error(&text, &e)))?;
     let doc = doc.get_ref();
     if let Some((key, _)) = doc
         .iter()
