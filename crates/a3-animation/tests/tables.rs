@@ -17,8 +17,8 @@ const GROUND: f64 = 5.0;
 /// edge (the tables' own margin is 0.05).
 const ROOM: f64 = 0.01;
 
-/// What goes wrong in a variant: the first frame where two objects meet or one leaves the
-/// ground, and the closest gap and edge seen.
+/// What goes wrong in a variant: the first frame where two objects meet, and the first where one
+/// leaves the ground.
 #[derive(Debug, Default)]
 struct Layout {
     meet: Option<String>,

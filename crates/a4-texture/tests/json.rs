@@ -1,7 +1,7 @@
 //! a4's spec as `cg assignment --json` shows it: the plain data lives in the students' crate
 //! (which cannot work out the cell names, pixels or corners), and [`cg_a4::Presented`] adds the
 //! worked-out fields. That the whole output is still table version 1 as frozen is
-//! `crates/assign/tests/table_v1.rs`'s test (it serialises through `serialize_spec`).
+//! `crates/assign/tests/tables.rs`'s test (it serialises through `serialize_spec`).
 
 use cg_a4::{Corner, Presented, Region, Spec};
 

@@ -119,17 +119,32 @@ const MAX_STUDENT_FILE_BYTES: u64 = 64 << 10;
 /// A missing, unreadable or malformed file, a bad number, an unknown table — each with what to
 /// do.
 pub fn read_student_file(path: &Path) -> Result<StudentFile, StudentFileError> {
+    let file = path.display().to_string();
+    match read_bytes(path)? {
+        Some(bytes) => parse_student_file(&bytes, &file),
+        None => Err(StudentFileError::Missing { path: file }),
+    }
+}
+
+/// The bytes of a record or a course file, at most 64 KiB; `None` when there is no file.
+fn read_bytes(path: &Path) -> Result<Option<Vec<u8>>, StudentFileError> {
     use cg_core::text::ReadError;
     let file = path.display().to_string();
-    let bytes = match cg_core::text::read_bounded(path, MAX_STUDENT_FILE_BYTES) {
-        Ok(bytes) => bytes,
-        Err(_) if !path.exists() => return Err(StudentFileError::Missing { path: file }),
-        Err(ReadError::TooLarge { .. }) => return Err(too_large(file)),
-        Err(e) => {
-            return Err(StudentFileError::Unreadable { path: file, why: e.text_without_option() });
-        }
-    };
-    parse_student_file(&bytes, &file)
+    match cg_core::text::read_bounded(path, MAX_STUDENT_FILE_BYTES) {
+        Ok(bytes) => Ok(Some(bytes)),
+        Err(_) if !path.exists() => Ok(None),
+        Err(ReadError::TooLarge { .. }) => Err(too_large(file)),
+        Err(e) => Err(StudentFileError::Unreadable { path: file, why: e.text_without_option() }),
+    }
+}
+
+/// The text of a record's or a course file's bytes, in UTF-8, UTF-16 or Shift_JIS.
+fn decoded(bytes: &[u8], file: &str) -> Result<String, StudentFileError> {
+    let (text, _) = cg_core::text::decode(bytes, None).map_err(|e| {
+        let why = cg_core::text::ReadError::from(e).text_without_option();
+        StudentFileError::Unreadable { path: file.to_owned(), why }
+    })?;
+    Ok(text)
 }
 
 fn too_large(path: String) -> StudentFileError {
@@ -154,14 +169,11 @@ fn too_large(path: String) -> StudentFileError {
 /// # Errors
 /// As [`read_student_file`], but for a missing file.
 pub fn parse_student_file(bytes: &[u8], file: &str) -> Result<StudentFile, StudentFileError> {
-    use cg_core::text::ReadError;
     let file = file.to_owned();
     if bytes.len() as u64 > MAX_STUDENT_FILE_BYTES {
         return Err(too_large(file));
     }
-    let unreadable = |why: Text| StudentFileError::Unreadable { path: file.clone(), why };
-    let (text, _) = cg_core::text::decode(bytes, None)
-        .map_err(|e| unreadable(ReadError::from(e).text_without_option()))?;
+    let text = decoded(bytes, &file)?;
     let invalid = |reason: Text| StudentFileError::Invalid { path: file.clone(), reason };
     // A number without quotes (`student = 01234567`) is refused before TOML reads it: TOML
     // drops its leading zeros, or calls a leading zero an error.
@@ -253,20 +265,10 @@ pub const COURSE_FILE: &str = "course.toml";
 /// An unreadable or malformed course file, a key other than `table`, an unknown table: each
 /// with the file and the line.
 pub fn course_table(record: &Path) -> Result<Option<TableVersion>, StudentFileError> {
-    use cg_core::text::ReadError;
     let path = record.with_file_name(COURSE_FILE);
     let file = path.display().to_string();
-    let bytes = match cg_core::text::read_bounded(&path, MAX_STUDENT_FILE_BYTES) {
-        Ok(bytes) => bytes,
-        Err(_) if !path.exists() => return Ok(None),
-        Err(ReadError::TooLarge { .. }) => return Err(too_large(file)),
-        Err(e) => {
-            return Err(StudentFileError::Unreadable { path: file, why: e.text_without_option() });
-        }
-    };
-    let unreadable = |why: Text| StudentFileError::Unreadable { path: file.clone(), why };
-    let (text, _) = cg_core::text::decode(&bytes, None)
-        .map_err(|e| unreadable(ReadError::from(e).text_without_option()))?;
+    let Some(bytes) = read_bytes(&path)? else { return Ok(None) };
+    let text = decoded(&bytes, &file)?;
     let invalid = |reason: Text| StudentFileError::Invalid { path: file.clone(), reason };
     let doc = toml::de::DeTable::parse(&text).map_err(|e| invalid(syntax_error(&text, &e)))?;
     let doc = doc.get_ref();

@@ -348,9 +348,9 @@ fn said(
         format!("wrote {} ({size} B):\n{list}", out.display()),
     );
     let text_report =
-        |e: &&zipfile::Entry| e.name.starts_with("report/") && !e.name.ends_with(".pdf");
+        entries.iter().any(|e| e.name.starts_with("report/") && !e.name.ends_with(".pdf"));
     let pdf = entries.iter().any(|e| e.name == "report/report.pdf");
-    let report = match (entries.iter().find(text_report).is_some(), other) {
+    let report = match (text_report, other) {
         (true, Some(other)) => Text::new(
             format!(
                 "{other} は入れていません（採点が読むのは変更の新しいほうのレポートだけです）\n"
